@@ -1,0 +1,16 @@
+#pragma once
+#include <memory>
+#include <string>
+
+#include "backends/backend.h"
+
+namespace candela {
+
+// The backends this build contains, for --help.
+std::string availableBackends();
+
+// `name` is "auto", "cpu" or "optix". For "auto", `why` receives one sentence saying which backend was chosen
+// and why. Throws std::runtime_error when the requested backend cannot run here.
+std::unique_ptr<Backend> createBackend(const std::string& name, std::string& why);
+
+}  // namespace candela

@@ -1,0 +1,37 @@
+#pragma once
+#include <memory>
+
+#include "backends/backend.h"
+#include "backends/cpu/embree_scene.h"
+#include "scene/flat_scene.h"
+
+namespace candela {
+
+// Embree traversal, TBB-parallel over image tiles.
+class CpuBackend final : public Backend {
+ public:
+  CpuBackend();
+
+  std::string name() const override { return "cpu"; }
+  std::string deviceName() const override;
+
+  void setScene(const Scene& scene) override;
+  void setCamera(const Camera& camera) override;
+  void setSettings(const RenderSettings& settings) override;
+
+  FrameStats render(uint32_t samplesPerPixel) override;
+  uint32_t accumulatedSamples() const override { return accumulated_; }
+  Image readImage() const override;
+
+ private:
+  void restart();
+
+  FlatScene flat_;
+  EmbreeScene embree_;
+  Camera camera_;
+  RenderSettings settings_;
+  std::vector<Vec3> sum_;
+  uint32_t accumulated_ = 0;
+};
+
+}  // namespace candela

@@ -1,0 +1,77 @@
+#include "backends/cpu/embree_scene.h"
+
+#include <cstring>
+#include <stdexcept>
+
+namespace candela {
+
+namespace {
+
+void check(RTCDevice device, const char* what) {
+  RTCError error = rtcGetDeviceError(device);
+  if (error != RTC_ERROR_NONE)
+    throw std::runtime_error(std::string("Embree failed while ") + what + " (error " + std::to_string(error) + ")");
+}
+
+}  // namespace
+
+EmbreeScene::EmbreeScene() {
+  device_ = rtcNewDevice(nullptr);
+  if (!device_) throw std::runtime_error("Embree could not create a device (error " +
+                                         std::to_string(rtcGetDeviceError(nullptr)) + ")");
+}
+
+EmbreeScene::~EmbreeScene() {
+  release();
+  rtcReleaseDevice(device_);
+}
+
+void EmbreeScene::release() {
+  for (RTCScene s : meshScenes_) rtcReleaseScene(s);
+  meshScenes_.clear();
+  if (top_) rtcReleaseScene(top_);
+  top_ = nullptr;
+}
+
+void EmbreeScene::build(const FlatScene& flat) {
+  release();
+  for (const MeshRecord& mesh : flat.meshes) {
+    RTCScene meshScene = rtcNewScene(device_);
+    RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+    // Embree's own buffers carry the padding its SIMD loads need past the last vertex.
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                                 RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                                                                 mesh.vertexCount));
+    auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0,
+                                                                   RTC_FORMAT_UINT3, 3 * sizeof(uint32_t),
+                                                                   mesh.triangleCount));
+    check(device_, "allocating mesh buffers");
+    if (mesh.vertexCount > 0)
+      std::memcpy(vertices, flat.positions.data() + mesh.firstVertex, mesh.vertexCount * sizeof(Vec3));
+    if (mesh.triangleCount > 0)
+      std::memcpy(indices, flat.indices.data() + 3 * size_t(mesh.firstTriangle),
+                  3 * size_t(mesh.triangleCount) * sizeof(uint32_t));
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometry(meshScene, geometry);
+    rtcReleaseGeometry(geometry);
+    rtcSetSceneBuildQuality(meshScene, RTC_BUILD_QUALITY_HIGH);
+    rtcCommitScene(meshScene);
+    check(device_, "building a mesh BVH");
+    meshScenes_.push_back(meshScene);
+  }
+
+  top_ = rtcNewScene(device_);
+  for (uint32_t i = 0; i < flat.instances.size(); ++i) {
+    const InstanceRecord& inst = flat.instances[i];
+    RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(geometry, meshScenes_[inst.meshId]);
+    rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, inst.objectToWorld.m);
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometryByID(top_, geometry, i);
+    rtcReleaseGeometry(geometry);
+  }
+  rtcCommitScene(top_);
+  check(device_, "building the instance BVH");
+}
+
+}  // namespace candela

@@ -1,0 +1,71 @@
+#pragma once
+#include "core/math.h"
+
+namespace candela {
+
+// Concentric mapping of the unit square to the unit disk (Shirley and Chiu 1997).
+CANDELA_FN Vec2 sampleUniformDiskConcentric(Vec2 u) {
+  float ox = 2.0f * u.x - 1.0f, oy = 2.0f * u.y - 1.0f;
+  if (ox == 0.0f && oy == 0.0f) return {0.0f, 0.0f};
+  float r, theta;
+  if (fabsf(ox) > fabsf(oy)) {
+    r = ox;
+    theta = 0.25f * kPi * (oy / ox);
+  } else {
+    r = oy;
+    theta = 0.5f * kPi - 0.25f * kPi * (ox / oy);
+  }
+  return {r * cosf(theta), r * sinf(theta)};
+}
+
+// Cosine-weighted direction about +z (Malley's method).
+CANDELA_FN Vec3 sampleCosineHemisphere(Vec2 u) {
+  Vec2 d = sampleUniformDiskConcentric(u);
+  float z = sqrtf(fmaxf(0.0f, 1.0f - d.x * d.x - d.y * d.y));
+  return {d.x, d.y, z};
+}
+CANDELA_FN float cosineHemispherePdf(float cosTheta) { return cosTheta > 0.0f ? cosTheta * kInvPi : 0.0f; }
+
+CANDELA_FN Vec3 sampleUniformSphere(Vec2 u) {
+  float z = 1.0f - 2.0f * u.x;
+  float r = sqrtf(fmaxf(0.0f, 1.0f - z * z));
+  float phi = 2.0f * kPi * u.y;
+  return {r * cosf(phi), r * sinf(phi), z};
+}
+CANDELA_FN float uniformSpherePdf() { return 1.0f / (4.0f * kPi); }
+
+// Barycentrics (b0, b1) of a uniformly distributed point on a triangle (Heitz 2019, low-distortion map).
+CANDELA_FN Vec2 sampleUniformTriangle(Vec2 u) {
+  float b0, b1;
+  if (u.x < u.y) {
+    b0 = u.x / 2.0f;
+    b1 = u.y - b0;
+  } else {
+    b1 = u.y / 2.0f;
+    b0 = u.x - b1;
+  }
+  return {b0, b1};
+}
+
+// Veach's power heuristic with beta = 2, for nf samples of f against ng samples of g (here always 1 and 1).
+CANDELA_FN float powerHeuristic(float pdfF, float pdfG) {
+  if (pdfF >= kInf) return 1.0f;  // a delta distribution always wins
+  float f2 = pdfF * pdfF, g2 = pdfG * pdfG;
+  if (f2 + g2 == 0.0f) return 0.0f;
+  return f2 / (f2 + g2);
+}
+
+// Finds the bucket of a sorted cumulative table (cdf[0] = 0, cdf[n] = 1) that holds u.
+CANDELA_FN int findInterval(const float* cdf, int n, float u) {
+  int lo = 0, hi = n;  // invariant: cdf[lo] <= u < cdf[hi]
+  while (hi - lo > 1) {
+    int mid = (lo + hi) / 2;
+    if (cdf[mid] <= u)
+      lo = mid;
+    else
+      hi = mid;
+  }
+  return lo;
+}
+
+}  // namespace candela

@@ -1,0 +1,26 @@
+#pragma once
+#include "core/math.h"
+
+namespace candela {
+
+enum class ToneMapper { AcesFilmic, Clamp };
+
+// Narkowicz's fit of the ACES filmic curve, applied per channel.
+CANDELA_FN float acesFilmic(float x) {
+  constexpr float a = 2.51f, b = 0.03f, c = 2.43f, d = 0.59f, e = 0.14f;
+  return clampf((x * (a * x + b)) / (x * (c * x + d) + e), 0.0f, 1.0f);
+}
+
+CANDELA_FN float linearToSrgb(float x) {
+  x = clampf(x, 0.0f, 1.0f);
+  return x <= 0.0031308f ? 12.92f * x : 1.055f * powf(x, 1.0f / 2.4f) - 0.055f;
+}
+
+// Linear radiance to display-referred sRGB in [0, 1]. `exposure` is in stops.
+CANDELA_FN Vec3 toneMap(Vec3 radiance, float exposure, ToneMapper mapper) {
+  Vec3 c = radiance * exp2f(exposure);
+  if (mapper == ToneMapper::AcesFilmic) c = {acesFilmic(c.x), acesFilmic(c.y), acesFilmic(c.z)};
+  return {linearToSrgb(c.x), linearToSrgb(c.y), linearToSrgb(c.z)};
+}
+
+}  // namespace candela

@@ -1,0 +1,27 @@
+#pragma once
+#include "core/sampling.h"
+#include "kernel/bsdf/bsdf_sample.h"
+
+namespace candela {
+
+// Ideal diffuse reflection. Directions are in the local shading frame (normal = +z), wo on the +z side.
+struct LambertianBsdf {
+  Vec3 albedo;
+
+  CANDELA_FN Vec3 eval(Vec3 wo, Vec3 wi) const {
+    return (wo.z > 0.0f && wi.z > 0.0f) ? albedo * kInvPi : Vec3{0, 0, 0};
+  }
+  CANDELA_FN float pdf(Vec3 wo, Vec3 wi) const { return wo.z > 0.0f ? cosineHemispherePdf(wi.z) : 0.0f; }
+  CANDELA_FN BsdfSample sample(Vec3 wo, Vec2 u) const {
+    BsdfSample s;
+    if (wo.z <= 0.0f) return s;
+    s.wi = sampleCosineHemisphere(u);
+    s.pdf = cosineHemispherePdf(s.wi.z);
+    if (s.pdf <= 0.0f) return s;
+    s.f = albedo * kInvPi;
+    s.valid = true;
+    return s;
+  }
+};
+
+}  // namespace candela

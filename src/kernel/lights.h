@@ -1,0 +1,62 @@
+#pragma once
+#include "core/sampling.h"
+#include "kernel/scene_view.h"
+
+namespace candela {
+
+struct LightSample {
+  Vec3 wi;                // unit direction from the shading point to the light
+  float distance = kInf;  // to the sampled point; infinite for the environment
+  Vec3 radiance;          // emitted towards the shading point
+  float pdf = 0.0f;       // solid angle density of wi, light selection included
+  bool valid = false;
+};
+
+// Environment radiance arriving along `direction` (pointing away from the scene).
+CANDELA_FN Vec3 environmentRadiance(const SceneView& scene, Vec3 /*direction*/) {
+  return scene.environment.radiance;
+}
+
+CANDELA_FN float environmentPdf(const SceneView& scene, Vec3 /*direction*/) {
+  return scene.environmentSelectProbability * uniformSpherePdf();
+}
+
+// Solid-angle density with which sampleLight() picks a point on an emissive triangle seen from `from`.
+// Choosing a triangle by power and then a point by area gives an area density of pi * luminance(Le) / total
+// power, independent of which triangle it is.
+CANDELA_FN float triangleLightPdf(const SceneView& scene, Vec3 emittedRadiance, float distance, float cosAtLight) {
+  if (cosAtLight <= 0.0f) return 0.0f;
+  float areaPdf = (1.0f - scene.environmentSelectProbability) * scene.lightAreaPdfScale * luminance(emittedRadiance);
+  return areaPdf * distance * distance / cosAtLight;
+}
+
+// Samples the environment or one emissive triangle (one-sided: emits along its geometric normal).
+CANDELA_FN LightSample sampleLight(const SceneView& scene, Vec3 from, float uSelect, Vec2 u) {
+  LightSample ls;
+  float pEnv = scene.environmentSelectProbability;
+  if (uSelect < pEnv) {
+    ls.wi = sampleUniformSphere(u);
+    ls.radiance = environmentRadiance(scene, ls.wi);
+    ls.pdf = environmentPdf(scene, ls.wi);
+    ls.valid = ls.pdf > 0.0f;
+    return ls;
+  }
+  if (scene.lightCount == 0) return ls;
+  float uTri = fminf((uSelect - pEnv) / (1.0f - pEnv), 0.99999994f);
+  const LightTriangle& light = scene.lights[findInterval(scene.lightCdf, int(scene.lightCount), uTri)];
+  Vec2 b = sampleUniformTriangle(u);
+  Vec3 p = light.p0 + light.edge1 * b.x + light.edge2 * b.y;
+  Vec3 toLight = p - from;
+  float dist2 = dot(toLight, toLight);
+  if (dist2 <= 0.0f) return ls;
+  ls.distance = sqrtf(dist2);
+  ls.wi = toLight / ls.distance;
+  Vec3 n = normalize(cross(light.edge1, light.edge2));
+  float cosAtLight = -dot(n, ls.wi);
+  ls.pdf = triangleLightPdf(scene, light.radiance, ls.distance, cosAtLight);
+  ls.radiance = light.radiance;
+  ls.valid = ls.pdf > 0.0f;
+  return ls;
+}
+
+}  // namespace candela

@@ -1,0 +1,26 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace candela {
+
+// The Cornell box as measured at the Cornell Program of Computer Graphics (geometry in metres, camera with a
+// 35 mm lens on a 25 mm film), with the usual RGB fits of the measured reflectances and light spectrum.
+Scene makeCornellBox();
+
+// The inside of a closed sphere whose every point reflects diffusely with `albedo` and emits `emission`:
+// radiance is emission / (1 - albedo) everywhere, the camera sits at the centre.
+Scene makeClosedEmissiveSphere(float albedo, float emission);
+
+// A white (albedo 1) diffuse sphere under a uniform environment of radiance 1: every pixel is 1.
+Scene makeWhiteFurnace();
+
+// Names accepted by makeBuiltinScene, for --help and error messages.
+std::vector<std::string> builtinSceneNames();
+
+// Returns true and fills `scene` when `name` is a built-in scene.
+bool makeBuiltinScene(const std::string& name, Scene& scene);
+
+}  // namespace candela

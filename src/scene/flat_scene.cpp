@@ -1,0 +1,90 @@
+#include "scene/flat_scene.h"
+
+#include "scene/transform.h"
+
+namespace candela {
+
+namespace {
+
+void buildLightTable(const Scene& scene, FlatScene& flat) {
+  double totalPower = 0.0;
+  std::vector<double> powers;
+  for (const InstanceRecord& inst : flat.instances) {
+    const Mesh& mesh = scene.meshes[inst.meshId];
+    for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+      const Material& m = scene.materials[mesh.triangleMaterials[t]];
+      if (luminance(m.emission) <= 0.0f) continue;
+      Vec3 p0 = inst.objectToWorld.point(mesh.positions[mesh.indices[3 * t]]);
+      Vec3 p1 = inst.objectToWorld.point(mesh.positions[mesh.indices[3 * t + 1]]);
+      Vec3 p2 = inst.objectToWorld.point(mesh.positions[mesh.indices[3 * t + 2]]);
+      LightTriangle light{p0, p1 - p0, p2 - p0, m.emission, 0.5f * length(cross(p1 - p0, p2 - p0))};
+      if (!(light.area > 0.0f)) continue;  // degenerate: can neither be sampled nor hit
+      double power = double(light.area) * kPi * luminance(m.emission);
+      flat.lights.push_back(light);
+      powers.push_back(power);
+      totalPower += power;
+    }
+  }
+  flat.lightCdf.assign(1, 0.0f);
+  double running = 0.0;
+  for (double p : powers) {
+    running += p;
+    flat.lightCdf.push_back(float(running / totalPower));
+  }
+  if (!flat.lights.empty()) {
+    flat.lightCdf.back() = 1.0f;
+    flat.lightAreaPdfScale = float(kPi / totalPower);
+  }
+  bool environmentEmits = !isBlack(flat.environment.radiance);
+  flat.environmentSelectProbability = environmentEmits ? (flat.lights.empty() ? 1.0f : 0.5f) : 0.0f;
+}
+
+}  // namespace
+
+FlatScene FlatScene::build(const Scene& scene) {
+  validateScene(scene);
+  FlatScene flat;
+  flat.materials = scene.materials;
+  flat.environment = scene.environment;
+  for (const Mesh& mesh : scene.meshes) {
+    MeshRecord record;
+    record.firstVertex = uint32_t(flat.positions.size());
+    record.vertexCount = uint32_t(mesh.positions.size());
+    record.firstTriangle = uint32_t(flat.triangleMaterials.size());
+    record.triangleCount = uint32_t(mesh.triangleCount());
+    record.hasNormals = mesh.normals.empty() ? 0u : 1u;
+    flat.meshes.push_back(record);
+    flat.positions.insert(flat.positions.end(), mesh.positions.begin(), mesh.positions.end());
+    if (mesh.normals.empty())
+      flat.normals.resize(flat.positions.size());
+    else
+      flat.normals.insert(flat.normals.end(), mesh.normals.begin(), mesh.normals.end());
+    flat.indices.insert(flat.indices.end(), mesh.indices.begin(), mesh.indices.end());
+    flat.triangleMaterials.insert(flat.triangleMaterials.end(), mesh.triangleMaterials.begin(),
+                                  mesh.triangleMaterials.end());
+  }
+  for (const Instance& inst : scene.instances)
+    flat.instances.push_back({inst.meshId, inst.objectToWorld, normalTransform(inst.objectToWorld)});
+  buildLightTable(scene, flat);
+  return flat;
+}
+
+SceneView FlatScene::hostView() const {
+  SceneView v;
+  v.positions = positions.data();
+  v.normals = normals.data();
+  v.indices = indices.data();
+  v.triangleMaterials = triangleMaterials.data();
+  v.meshes = meshes.data();
+  v.instances = instances.data();
+  v.materials = materials.data();
+  v.lights = lights.data();
+  v.lightCdf = lightCdf.data();
+  v.lightCount = uint32_t(lights.size());
+  v.lightAreaPdfScale = lightAreaPdfScale;
+  v.environmentSelectProbability = environmentSelectProbability;
+  v.environment = environment;
+  return v;
+}
+
+}  // namespace candela

@@ -1,0 +1,31 @@
+#pragma once
+#include <vector>
+
+#include "kernel/scene_view.h"
+#include "scene/scene.h"
+
+namespace candela {
+
+// A Scene packed into the flat arrays kernel code reads, with the light table built. Backends either point
+// a SceneView at these arrays (CPU) or copy them to device memory (GPU).
+struct FlatScene {
+  std::vector<Vec3> positions;
+  std::vector<Vec3> normals;
+  std::vector<uint32_t> indices;
+  std::vector<uint32_t> triangleMaterials;
+  std::vector<MeshRecord> meshes;
+  std::vector<InstanceRecord> instances;
+  std::vector<Material> materials;
+  std::vector<LightTriangle> lights;
+  std::vector<float> lightCdf;
+  float lightAreaPdfScale = 0.0f;
+  float environmentSelectProbability = 0.0f;
+  Environment environment;
+
+  static FlatScene build(const Scene& scene);
+
+  // A view whose pointers refer to this object's host arrays.
+  SceneView hostView() const;
+};
+
+}  // namespace candela

@@ -1,0 +1,12 @@
+#pragma once
+#include "scene/scene.h"
+
+namespace candela {
+
+// A latitude-longitude sphere; normals point outwards, or inwards (with matching winding) when `inward`.
+Mesh makeUvSphere(float radius, int segments, int rings, uint32_t materialId, bool inward);
+
+// Appends the planar quad (a, b, c, d) as two triangles wound so that the geometric normal faces `towards`.
+void appendQuad(Mesh& mesh, Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 towards, uint32_t materialId);
+
+}  // namespace candela

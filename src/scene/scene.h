@@ -1,0 +1,53 @@
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/math.h"
+#include "kernel/camera.h"
+#include "kernel/material.h"
+#include "kernel/scene_view.h"
+
+namespace candela {
+
+struct Mesh {
+  std::string name;
+  std::vector<Vec3> positions;
+  std::vector<Vec3> normals;  // empty, or one per position
+  std::vector<uint32_t> indices;  // 3 per triangle
+  std::vector<uint32_t> triangleMaterials;  // one per triangle
+
+  size_t triangleCount() const { return indices.size() / 3; }
+};
+
+struct Instance {
+  uint32_t meshId = 0;
+  Affine3x4 objectToWorld;
+};
+
+struct CameraDescription {
+  Vec3 eye{0, 0, 0};
+  Vec3 target{0, 0, 1};
+  Vec3 up{0, 1, 0};
+  float verticalFovDegrees = 40.0f;
+
+  Camera toCamera(float aspect) const { return Camera::lookAt(eye, target, up, verticalFovDegrees, aspect); }
+};
+
+// A scene as loaders produce it and backends consume it.
+struct Scene {
+  std::string name;
+  std::vector<Mesh> meshes;
+  std::vector<Instance> instances;
+  std::vector<Material> materials;
+  Environment environment;
+  CameraDescription camera;
+
+  size_t triangleCount() const;  // over instances
+};
+
+// Checks the invariants backends rely on (index ranges, material ids, finite numbers); throws
+// std::runtime_error naming the first problem.
+void validateScene(const Scene& scene);
+
+}  // namespace candela
