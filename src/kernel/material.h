@@ -5,13 +5,58 @@
 
 namespace candela {
 
-enum class MaterialType : uint32_t { Diffuse = 0 };
+// The shading models a material can use; kernel code dispatches on this tag with a switch.
+enum class MaterialType : uint32_t {
+  Diffuse = 0,  // Lambertian
+  BlinnPhong,   // energy-normalised diffuse + Blinn-Phong specular (baseColor, specularColor, shininess)
+  Pbr,          // glTF metallic-roughness: diffuse + GGX specular
+  Disney,       // Burley's principled BSDF with the 2015 transmission extension
+  Mirror,       // perfect specular reflection tinted by specularColor
+  Glass,        // smooth dielectric with index `ior`, transmission tinted by baseColor
+};
 
-// Flat parameters that a device buffer can hold; kernel code dispatches on `type`.
+enum class AlphaMode : uint32_t { Opaque = 0, Mask, Blend };
+
+constexpr int32_t kNoTexture = -1;
+
+// Flat parameters that a device buffer can hold. Not every model reads every field.
 struct Material {
   MaterialType type = MaterialType::Diffuse;
   Vec3 baseColor{0.8f, 0.8f, 0.8f};
-  Vec3 emission{0.0f, 0.0f, 0.0f};  // emitted radiance, W/(m^2 sr)
+  Vec3 emission{0.0f, 0.0f, 0.0f};  // emitted radiance, W/(m^2 sr), already scaled by any strength factor
+
+  // Blinn-Phong and mirror.
+  Vec3 specularColor{0.04f, 0.04f, 0.04f};
+  float shininess = 32.0f;
+
+  // Metallic-roughness and Disney.
+  float metallic = 0.0f;
+  float roughness = 0.5f;
+  float anisotropic = 0.0f;
+  float specular = 0.5f;
+  float specularTint = 0.0f;
+  float subsurface = 0.0f;
+  float sheen = 0.0f;
+  float sheenTint = 0.5f;
+  float clearcoat = 0.0f;
+  float clearcoatGloss = 1.0f;
+  float specTrans = 0.0f;
+  float ior = 1.5f;
+
+  // Coverage.
+  AlphaMode alphaMode = AlphaMode::Opaque;
+  float opacity = 1.0f;
+  float alphaCutoff = 0.5f;
+  uint32_t doubleSided = 1;
+
+  // Indices into the scene's textures, kNoTexture when absent.
+  int32_t baseColorTexture = kNoTexture;          // sRGB; alpha channel multiplies opacity
+  int32_t metallicRoughnessTexture = kNoTexture;  // glTF packing: G = roughness, B = metallic
+  int32_t roughnessTexture = kNoTexture;          // R
+  int32_t metallicTexture = kNoTexture;           // R
+  int32_t emissionTexture = kNoTexture;           // sRGB, multiplies emission
+  int32_t normalTexture = kNoTexture;             // tangent space
+  int32_t opacityTexture = kNoTexture;            // R
 };
 
 }  // namespace candela

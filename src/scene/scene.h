@@ -14,10 +14,25 @@ struct Mesh {
   std::string name;
   std::vector<Vec3> positions;
   std::vector<Vec3> normals;  // empty, or one per position
+  std::vector<Vec2> uvs;      // empty, or one per position
   std::vector<uint32_t> indices;  // 3 per triangle
   std::vector<uint32_t> triangleMaterials;  // one per triangle
 
   size_t triangleCount() const { return indices.size() / 3; }
+};
+
+enum class TextureWrap : uint32_t { Repeat = 0, Clamp, Mirror };
+
+// An image a material samples. 8-bit images keep their bytes; `srgb` says whether they encode sRGB colour.
+struct Texture {
+  std::string name;  // file path or a description, for messages
+  uint32_t width = 0;
+  uint32_t height = 0;
+  uint32_t channels = 4;
+  bool srgb = false;
+  TextureWrap wrap = TextureWrap::Repeat;
+  std::vector<uint8_t> bytes;   // 8-bit images: width * height * channels
+  std::vector<float> floats;    // float images: width * height * channels
 };
 
 struct Instance {
@@ -40,6 +55,7 @@ struct Scene {
   std::vector<Mesh> meshes;
   std::vector<Instance> instances;
   std::vector<Material> materials;
+  std::vector<Texture> textures;
   Environment environment;
   CameraDescription camera;
 
