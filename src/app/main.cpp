@@ -57,6 +57,8 @@ void addRenderOptions(CLI::App& cmd, RenderJob& job) {
   cmd.add_option_function<std::vector<std::string>>("--override", [&job](const std::vector<std::string>& list) {
         for (const std::string& assignment : list) parseOverride(job.materialOverrides, assignment);
       }, "Set a material parameter on every material, name=value in [0, 1]; repeatable. Names: " + overrideNames)
+      ->type_size(1)
+      ->allow_extra_args(false)
       ->check(validated([](const std::string& assignment) {
         MaterialOverrides scratch;
         parseOverride(scratch, assignment);

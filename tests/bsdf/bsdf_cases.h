@@ -37,6 +37,21 @@ inline Material disneyMaterial(float roughness) {
   return m;
 }
 
+// Directional albedo (luminance) by deterministic midpoint quadrature of eval() |cos| over the hemisphere in (cos theta, phi):
+// independent of every sampling routine. Only for lobes smooth enough for the grid (roughness >= 0.3).
+inline double albedoByQuadrature(const BsdfCase& c, Vec3 wo) {
+  constexpr int kN = 400;
+  double sum = 0.0;
+  for (int i = 0; i < kN; ++i)
+    for (int j = 0; j < 2 * kN; ++j) {
+      double mu = (i + 0.5) / kN, phi = 2 * kPi * (j + 0.5) / (2 * kN);
+      double st = std::sqrt(1 - mu * mu);
+      Vec3 wi{float(st * std::cos(phi)), float(st * std::sin(phi)), float(mu)};
+      sum += luminance(c.eval(wo, wi)) * mu;
+    }
+  return sum * (1.0 / kN) * (2 * kPi / (2 * kN));
+}
+
 // Every non-delta lobe and model at one roughness, with wo on the +z side.
 inline std::vector<BsdfCase> casesAtRoughness(float r) {
   std::vector<BsdfCase> cases;

@@ -28,21 +28,6 @@ Estimate albedo(const BsdfCase& c, Vec3 wo, int samples, uint32_t seed = 11) {
   return {mean, std::sqrt(std::max(0.0, sum2 / samples - mean * mean) / samples)};
 }
 
-// The same albedo by deterministic midpoint quadrature of eval() |cos| over the hemisphere in (cos theta, phi):
-// independent of every sampling routine. Only for lobes smooth enough for the grid (roughness >= 0.3).
-double albedoByQuadrature(const BsdfCase& c, Vec3 wo) {
-  constexpr int kN = 400;
-  double sum = 0.0;
-  for (int i = 0; i < kN; ++i)
-    for (int j = 0; j < 2 * kN; ++j) {
-      double mu = (i + 0.5) / kN, phi = 2 * kPi * (j + 0.5) / (2 * kN);
-      double st = std::sqrt(1 - mu * mu);
-      Vec3 wi{float(st * std::cos(phi)), float(st * std::sin(phi)), float(mu)};
-      sum += luminance(c.eval(wo, wi)) * mu;
-    }
-  return sum * (1.0 / kN) * (2 * kPi / (2 * kN));
-}
-
 constexpr float kAngles[] = {0.0f, 45.0f, 75.0f, 89.0f};
 
 TEST(BsdfEnergy, WhiteLambertianReflectsEverything) {
