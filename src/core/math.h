@@ -19,6 +19,10 @@ struct Vec3 {
   CANDELA_FN float operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
 };
 
+struct Vec4 {
+  float x = 0, y = 0, z = 0, w = 0;
+};
+
 CANDELA_FN Vec3 operator+(Vec3 a, Vec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
 CANDELA_FN Vec3 operator-(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 CANDELA_FN Vec3 operator-(Vec3 a) { return {-a.x, -a.y, -a.z}; }
