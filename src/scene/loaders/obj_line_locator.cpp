@@ -16,19 +16,24 @@ bool startsWith(const char* s, const char* keyword) {
 const char* skipSpace(const char* s) { return s + std::strspn(s, " \t"); }
 
 // Checks one OBJ reference ("7", "-2", "") against `count` elements; returns an explanation when it is bad.
-std::optional<std::string> checkReference(const char* begin, const char* end, size_t count, const char* kind) {
+struct ElementKind {
+  const char* one;
+  const char* many;
+};
+
+std::optional<std::string> checkReference(const char* begin, const char* end, size_t count, ElementKind kind) {
   std::string text(begin, end);
   if (text.empty()) return std::nullopt;
   errno = 0;
   char* stop = nullptr;
   long long value = std::strtoll(text.c_str(), &stop, 10);
   if (stop == text.c_str() || *stop != '\0' || errno == ERANGE)
-    return std::string(kind) + " reference '" + text + "' is not a number";
-  if (value == 0) return std::string(kind) + " reference 0 (OBJ counts from 1)";
+    return std::string(kind.one) + " reference '" + text + "' is not a number";
+  if (value == 0) return std::string(kind.one) + " reference 0 (OBJ counts from 1)";
   long long resolved = value > 0 ? value : (long long)count + value + 1;
   if (resolved < 1 || resolved > (long long)count)
-    return std::string(kind) + " reference " + text + " but only " + std::to_string(count) + " " + kind +
-           (count == 1 ? "" : "s") + " are defined so far";
+    return std::string(kind.one) + " reference " + text + " but " + std::to_string(count) + " " +
+           (count == 1 ? kind.one : kind.many) + (count == 1 ? " is" : " are") + " defined before it";
   return std::nullopt;
 }
 
@@ -51,7 +56,8 @@ std::optional<ObjProblem> findBadReference(std::istream& obj) {
         const char* end = s + len;
         const char* field = s;
         const size_t counts[3] = {positions, uvs, normals};
-        const char* kinds[3] = {"vertex", "texture coordinate", "normal"};
+        const ElementKind kinds[3] = {{"vertex", "vertices"}, {"texture coordinate", "texture coordinates"},
+                                      {"normal", "normals"}};
         for (int k = 0; k < 3 && field <= end; ++k) {
           const char* slash = static_cast<const char*>(std::memchr(field, '/', size_t(end - field)));
           const char* fieldEnd = slash ? slash : end;

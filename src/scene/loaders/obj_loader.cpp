@@ -8,11 +8,13 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "scene/loaders/mtl_materials.h"
 #include "scene/loaders/normal_generation.h"
 #include "scene/loaders/obj_line_locator.h"
+#include "scene/loaders/obj_text_buffer.h"
 #include "scene/loaders/texture_table.h"
 
 namespace candela {
@@ -20,14 +22,6 @@ namespace candela {
 namespace {
 
 namespace fs = std::filesystem;
-
-class MemoryBuffer : public std::streambuf {
- public:
-  MemoryBuffer(const char* data, size_t size) {
-    char* p = const_cast<char*>(data);
-    setg(p, p, p + size);
-  }
-};
 
 // Finds the MTL libraries next to the OBJ file and remembers which file each material came from.
 class MtlLibraryReader : public tinyobj::MaterialReader {
@@ -59,7 +53,10 @@ class MtlLibraryReader : public tinyobj::MaterialReader {
     std::string line;
     while (std::getline(lines, line)) {
       while (!line.empty() && (line.back() == '.' || line.back() == ' ' || line.back() == '\r')) line.pop_back();
-      if (line.empty() || line.rfind("Failed to load material file", 0) == 0) continue;
+      // Missing material files and out-of-range references are reported by the loader itself, with more detail.
+      if (line.empty() || line.rfind("Failed to load material file", 0) == 0 ||
+          line.find("indices out of bounds") != std::string::npos)
+        continue;
       if (counts[line]++ == 0) order.push_back(line);
     }
     for (const std::string& l : order)
@@ -84,21 +81,16 @@ struct ParsedObj {
 class ObjSource {
  public:
   virtual ~ObjSource() = default;
-  virtual std::unique_ptr<std::istream> open() const = 0;
+  virtual std::unique_ptr<ObjTextBuffer> open() const = 0;
 };
 
 class FileSource : public ObjSource {
  public:
   explicit FileSource(std::string path) : path_(std::move(path)) {}
-  std::unique_ptr<std::istream> open() const override {
-    struct BufferedFile : std::ifstream {
-      explicit BufferedFile(const std::string& path) : buffer(size_t(1) << 20) {
-        rdbuf()->pubsetbuf(buffer.data(), std::streamsize(buffer.size()));
-        std::ifstream::open(path, std::ios::binary);
-      }
-      std::vector<char> buffer;
-    };
-    return std::make_unique<BufferedFile>(path_);
+  std::unique_ptr<ObjTextBuffer> open() const override {
+    auto buffer = ObjTextBuffer::openFile(path_);
+    if (!buffer) failLoad(path_, "cannot open");
+    return buffer;
   }
 
  private:
@@ -108,13 +100,7 @@ class FileSource : public ObjSource {
 class TextSource : public ObjSource {
  public:
   explicit TextSource(std::string_view text) : text_(text) {}
-  std::unique_ptr<std::istream> open() const override {
-    struct Stream : std::istream {
-      explicit Stream(std::string_view t) : std::istream(nullptr), buffer(t.data(), t.size()) { rdbuf(&buffer); }
-      MemoryBuffer buffer;
-    };
-    return std::make_unique<Stream>(text_);
-  }
+  std::unique_ptr<ObjTextBuffer> open() const override { return std::make_unique<ObjTextBuffer>(text_); }
 
  private:
   std::string_view text_;
@@ -122,12 +108,20 @@ class TextSource : public ObjSource {
 
 [[noreturn]] void failAtLine(const std::string& name, const ObjSource& source, const char* keyword, size_t ordinal,
                              const std::string& what) {
-  if (auto line = lineOfStatement(*source.open(), keyword, ordinal)) failLoad(name, *line, what);
+  auto buffer = source.open();
+  std::istream in(buffer.get());
+  if (auto line = lineOfStatement(in, keyword, ordinal)) failLoad(name, *line, what);
   failLoad(name, what);
 }
 
+std::optional<ObjProblem> locateBadReference(const ObjSource& source) {
+  auto buffer = source.open();
+  std::istream in(buffer.get());
+  return findBadReference(in);
+}
+
 [[noreturn]] void failBadReference(const std::string& name, const ObjSource& source, const std::string& fallback) {
-  if (auto problem = findBadReference(*source.open())) failLoad(name, problem->line, problem->what);
+  if (auto problem = locateBadReference(source)) failLoad(name, problem->line, problem->what);
   failLoad(name, fallback);
 }
 
@@ -137,16 +131,34 @@ void checkFinite(const std::string& name, const ObjSource& text, const std::vect
     if (!std::isfinite(values[i])) failAtLine(name, text, keyword, i / stride, std::string("non-finite ") + what);
 }
 
-void checkReferences(const std::string& name, const ObjSource& text, const ParsedObj& obj) {
+// A face that refers to a missing vertex is an error. One that refers to a missing normal or texture coordinate
+// (some exporters write "# 6 normals" and then none) loses that reference, with a warning.
+void checkReferences(const std::string& name, const ObjSource& text, ParsedObj& obj, LoadWarnings& warnings) {
   const long long nv = (long long)obj.attrib.vertices.size() / 3, nn = (long long)obj.attrib.normals.size() / 3,
                   nt = (long long)obj.attrib.texcoords.size() / 2;
-  for (const tinyobj::shape_t& shape : obj.shapes) {
-    for (const tinyobj::index_t& i : shape.mesh.indices)
-      if (i.vertex_index < 0 || i.vertex_index >= nv || i.normal_index < -1 || i.normal_index >= nn ||
-          i.texcoord_index < -1 || i.texcoord_index >= nt)
-        failBadReference(name, text, "a face refers to a missing vertex, normal or texture coordinate");
+  size_t dropped = 0;
+  for (tinyobj::shape_t& shape : obj.shapes) {
+    for (tinyobj::index_t& i : shape.mesh.indices) {
+      if (i.vertex_index < 0 || i.vertex_index >= nv)
+        failBadReference(name, text, "a face refers to a missing vertex");
+      if (i.normal_index < -1 || i.normal_index >= nn) {
+        i.normal_index = -1;
+        ++dropped;
+      }
+      if (i.texcoord_index < -1 || i.texcoord_index >= nt) {
+        i.texcoord_index = -1;
+        ++dropped;
+      }
+    }
     for (unsigned char n : shape.mesh.num_face_vertices)
       if (n != 3) failLoad(name, "a polygon could not be triangulated");
+  }
+  if (dropped > 0) {
+    auto problem = locateBadReference(text);
+    std::string where = problem ? name + ":" + std::to_string(problem->line) : name;
+    warnings.messages.push_back(where + ": " + (problem ? problem->what + "; " : std::string()) +
+                                std::to_string(dropped) +
+                                " references to missing normals or texture coordinates are ignored");
   }
 }
 
@@ -249,8 +261,13 @@ Mesh buildMesh(const std::string& meshName, ParsedObj& obj, const std::vector<ui
 Scene loadParsed(const std::string& name, const ObjSource& text, MtlLibraryReader* mtlReader, LoadWarnings& warnings) {
   ParsedObj obj;
   std::string warn, err;
-  bool ok = tinyobj::LoadObj(&obj.attrib, &obj.shapes, &obj.materials, &warn, &err, text.open().get(), mtlReader,
+  std::unique_ptr<ObjTextBuffer> buffer = text.open();
+  std::istream in(buffer.get());
+  bool ok = tinyobj::LoadObj(&obj.attrib, &obj.shapes, &obj.materials, &warn, &err, &in, mtlReader,
                              /*triangulate=*/true, /*default_vcols_fallback=*/false);
+  if (buffer->readFailed()) failLoad(name, "read error");
+  if (auto line = buffer->firstLineWithBadNumber()) failLoad(name, *line, "a coordinate is not a number");
+  buffer.reset();
   if (!ok) {
     std::string first = err.substr(0, err.find('\n'));
     failBadReference(name, text, first.empty() ? "cannot be parsed" : first);
@@ -264,7 +281,7 @@ Scene loadParsed(const std::string& name, const ObjSource& text, MtlLibraryReade
   checkFinite(name, text, obj.attrib.vertices, 3, "v", "vertex position");
   checkFinite(name, text, obj.attrib.normals, 3, "vn", "normal");
   checkFinite(name, text, obj.attrib.texcoords, 2, "vt", "texture coordinate");
-  checkReferences(name, text, obj);
+  checkReferences(name, text, obj, warnings);
 
   size_t triangles = 0, otherElements = 0;
   for (const auto& s : obj.shapes) {
@@ -298,7 +315,7 @@ Scene loadParsed(const std::string& name, const ObjSource& text, MtlLibraryReade
 }  // namespace
 
 Scene loadObj(const std::string& path, LoadWarnings& warnings) {
-  if (fs::is_directory(path) || !std::ifstream(path, std::ios::binary)) failLoad(path, "cannot open");
+  if (fs::is_directory(path)) failLoad(path, "is a directory");
   MtlLibraryReader reader(fs::path(path).parent_path(), path, warnings);
   return loadParsed(path, FileSource(path), &reader, warnings);
 }
