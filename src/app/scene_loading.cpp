@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "scene/builtin_scenes.h"
+#include "scene/loaders/gltf_loader.h"
 #include "scene/loaders/image_decoding.h"
 #include "scene/loaders/load_diagnostics.h"
 #include "scene/loaders/obj_loader.h"
@@ -23,11 +24,12 @@ std::string lowerExtension(const std::string& path) {
 Scene loadSceneFile(const std::string& path, LoadWarnings& warnings) {
   std::string ext = lowerExtension(path);
   if (ext == ".obj") return loadObj(path, warnings);
+  if (ext == ".gltf" || ext == ".glb") return loadGltf(path, warnings);
   std::string names;
   for (const std::string& n : builtinSceneNames()) names += (names.empty() ? "" : ", ") + n;
   if (!std::filesystem::exists(path))
     throw std::runtime_error("unknown scene '" + path + "': not a file, nor a built-in scene (" + names + ")");
-  throw std::runtime_error(path + ": unknown scene format '" + ext + "' (use .obj, or a built-in scene: " + names +
+  throw std::runtime_error(path + ": unknown scene format '" + ext + "' (use .obj, .gltf or .glb, or a built-in scene: " + names +
                            ")");
 }
 
