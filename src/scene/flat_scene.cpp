@@ -13,12 +13,18 @@ void buildLightTable(const Scene& scene, FlatScene& flat) {
   std::vector<double> powers;
   for (const InstanceRecord& inst : flat.instances) {
     const Mesh& mesh = scene.meshes[inst.meshId];
+    // Kernel code takes a triangle's front from its object-space winding carried by the normal transform, which
+    // a mirroring transform does not flip; the world-space corners here must be wound the same way.
+    const float* a = inst.objectToWorld.m;
+    float det = a[0] * (a[5] * a[10] - a[6] * a[9]) - a[1] * (a[4] * a[10] - a[6] * a[8]) +
+                a[2] * (a[4] * a[9] - a[5] * a[8]);
+    const int second = det < 0.0f ? 2 : 1, third = det < 0.0f ? 1 : 2;
     for (size_t t = 0; t < mesh.triangleCount(); ++t) {
       const Material& m = scene.materials[mesh.triangleMaterials[t]];
       if (luminance(m.emission) <= 0.0f) continue;
       Vec3 p0 = inst.objectToWorld.point(mesh.positions[mesh.indices[3 * t]]);
-      Vec3 p1 = inst.objectToWorld.point(mesh.positions[mesh.indices[3 * t + 1]]);
-      Vec3 p2 = inst.objectToWorld.point(mesh.positions[mesh.indices[3 * t + 2]]);
+      Vec3 p1 = inst.objectToWorld.point(mesh.positions[mesh.indices[3 * t + second]]);
+      Vec3 p2 = inst.objectToWorld.point(mesh.positions[mesh.indices[3 * t + third]]);
       LightTriangle light{p0, p1 - p0, p2 - p0, m.emission, 0.5f * length(cross(p1 - p0, p2 - p0))};
       if (!(light.area > 0.0f)) continue;  // degenerate: can neither be sampled nor hit
       double power = double(light.area) * kPi * luminance(m.emission);
