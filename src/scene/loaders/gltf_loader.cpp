@@ -134,6 +134,7 @@ class GltfSceneBuilder {
       GltfMaterial m = materialFromGltf(model_, int(i), file_, [this](int t, bool srgb) { return texture(t, srgb); },
                                         warnings_);
       scene_.materials.push_back(m.material);
+      scene_.materialNames.push_back(model_.materials[i].name);
       uvTransforms_.push_back(m.uvTransform);
     }
     std::vector<int> roots;
@@ -239,6 +240,7 @@ class GltfSceneBuilder {
       m.doubleSided = 0;
       defaultMaterial_ = uint32_t(scene_.materials.size());
       scene_.materials.push_back(m);
+      scene_.materialNames.push_back("default");
     }
     return *defaultMaterial_;
   }
