@@ -11,6 +11,7 @@ namespace candela {
 
 RenderOutcome runRenderJob(const RenderJob& job, bool showProgress) {
   Scene scene = loadScene(job.sceneSpec, {job.environmentPath});
+  applyOverrides(scene.materials, job.materialOverrides);
   RenderJob hinted = job;
   const RenderHints& hints = scene.renderHints;
   if (hints.width && !job.given.width) hinted.settings.width = *hints.width;

@@ -2,6 +2,7 @@
 #include <string>
 
 #include "backends/backend.h"
+#include "scene/material_overrides.h"
 #include "scene/scene.h"
 
 namespace candela {
@@ -16,6 +17,7 @@ struct RenderJob {
   RenderSettings settings;
   uint32_t samplesPerPixel = 64;
   std::string backend = "auto";
+  MaterialOverrides materialOverrides;
 };
 
 struct RenderOutcome {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "scene/tangents.h"
 #include "scene/transform.h"
 
 namespace candela {
@@ -11,21 +12,23 @@ namespace {
 void buildLightTable(const Scene& scene, FlatScene& flat) {
   double totalPower = 0.0;
   std::vector<double> powers;
-  for (const InstanceRecord& inst : flat.instances) {
+  for (uint32_t instanceId = 0; instanceId < flat.instances.size(); ++instanceId) {
+    const InstanceRecord& inst = flat.instances[instanceId];
     const Mesh& mesh = scene.meshes[inst.meshId];
     // Kernel code takes a triangle's front from its object-space winding carried by the normal transform, which
-    // a mirroring transform does not flip; the world-space corners here must be wound the same way.
+    // a mirroring transform does not flip, while it reverses the world-space winding of the corners kept here.
     const float* a = inst.objectToWorld.m;
     float det = a[0] * (a[5] * a[10] - a[6] * a[9]) - a[1] * (a[4] * a[10] - a[6] * a[8]) +
                 a[2] * (a[4] * a[9] - a[5] * a[8]);
-    const int second = det < 0.0f ? 2 : 1, third = det < 0.0f ? 1 : 2;
+    const float frontSign = det < 0.0f ? -1.0f : 1.0f;
     for (size_t t = 0; t < mesh.triangleCount(); ++t) {
       const Material& m = scene.materials[mesh.triangleMaterials[t]];
       if (luminance(m.emission) <= 0.0f) continue;
       Vec3 p0 = inst.objectToWorld.point(mesh.positions[mesh.indices[3 * t]]);
-      Vec3 p1 = inst.objectToWorld.point(mesh.positions[mesh.indices[3 * t + second]]);
-      Vec3 p2 = inst.objectToWorld.point(mesh.positions[mesh.indices[3 * t + third]]);
-      LightTriangle light{p0, p1 - p0, p2 - p0, m.emission, 0.5f * length(cross(p1 - p0, p2 - p0))};
+      Vec3 p1 = inst.objectToWorld.point(mesh.positions[mesh.indices[3 * t + 1]]);
+      Vec3 p2 = inst.objectToWorld.point(mesh.positions[mesh.indices[3 * t + 2]]);
+      LightTriangle light{p0, p1 - p0, p2 - p0, m.emission, 0.5f * length(cross(p1 - p0, p2 - p0)), instanceId,
+                          uint32_t(t), frontSign};
       if (!(light.area > 0.0f)) continue;  // degenerate: can neither be sampled nor hit
       double power = double(light.area) * kPi * luminance(m.emission);
       flat.lights.push_back(light);
@@ -47,6 +50,37 @@ void buildLightTable(const Scene& scene, FlatScene& flat) {
                                                          : flat.environmentDistribution.funcAverage > 0.0f &&
                                                                !isBlack(flat.environment.scale);
   flat.environmentSelectProbability = environmentEmits ? (flat.lights.empty() ? 1.0f : 0.5f) : 0.0f;
+}
+
+// Tangents are needed where a normal map or an anisotropic lobe must be oriented on the surface.
+bool needsTangents(const Scene& scene, const Mesh& mesh) {
+  if (mesh.uvs.empty()) return false;
+  for (uint32_t id : mesh.triangleMaterials) {
+    const Material& m = scene.materials[id];
+    if (m.normalTexture != kNoTexture || (m.type == MaterialType::Disney && m.anisotropic > 0.0f)) return true;
+  }
+  return false;
+}
+
+void packTextures(const Scene& scene, FlatScene& flat) {
+  for (const Texture& t : scene.textures) {
+    TextureView view;
+    view.width = t.width;
+    view.height = t.height;
+    view.channels = t.channels;
+    view.srgb = t.srgb ? 1u : 0u;
+    view.wrap = t.wrap;
+    if (!t.bytes.empty()) {
+      view.format = TexelFormat::Unorm8;
+      view.offset = flat.texelBytes.size();
+      flat.texelBytes.insert(flat.texelBytes.end(), t.bytes.begin(), t.bytes.end());
+    } else {
+      view.format = TexelFormat::Float32;
+      view.offset = flat.texelFloats.size();
+      flat.texelFloats.insert(flat.texelFloats.end(), t.floats.begin(), t.floats.end());
+    }
+    flat.textures.push_back(view);
+  }
 }
 
 void buildEnvironment(const Environment& env, FlatScene& flat) {
@@ -81,12 +115,25 @@ FlatScene FlatScene::build(const Scene& scene) {
     record.firstTriangle = uint32_t(flat.triangleMaterials.size());
     record.triangleCount = uint32_t(mesh.triangleCount());
     record.hasNormals = mesh.normals.empty() ? 0u : 1u;
-    flat.meshes.push_back(record);
+    record.hasUvs = mesh.uvs.empty() ? 0u : 1u;
     flat.positions.insert(flat.positions.end(), mesh.positions.begin(), mesh.positions.end());
     if (mesh.normals.empty())
       flat.normals.resize(flat.positions.size());
     else
       flat.normals.insert(flat.normals.end(), mesh.normals.begin(), mesh.normals.end());
+    if (mesh.uvs.empty())
+      flat.uvs.resize(flat.positions.size());
+    else
+      flat.uvs.insert(flat.uvs.end(), mesh.uvs.begin(), mesh.uvs.end());
+    std::vector<Vec4> generated;
+    const std::vector<Vec4>* meshTangents = &mesh.tangents;
+    if (mesh.tangents.empty() && needsTangents(scene, mesh)) meshTangents = &(generated = generateTangents(mesh));
+    record.hasTangents = meshTangents->empty() ? 0u : 1u;
+    if (meshTangents->empty())
+      flat.tangents.resize(flat.positions.size());
+    else
+      flat.tangents.insert(flat.tangents.end(), meshTangents->begin(), meshTangents->end());
+    flat.meshes.push_back(record);
     flat.indices.insert(flat.indices.end(), mesh.indices.begin(), mesh.indices.end());
     flat.triangleMaterials.insert(flat.triangleMaterials.end(), mesh.triangleMaterials.begin(),
                                   mesh.triangleMaterials.end());
@@ -94,6 +141,9 @@ FlatScene FlatScene::build(const Scene& scene) {
   for (const Instance& inst : scene.instances)
     flat.instances.push_back({inst.meshId, inst.objectToWorld, normalTransform(inst.objectToWorld)});
   buildLightTable(scene, flat);
+  packTextures(scene, flat);
+  for (const Material& m : flat.materials)
+    if (m.alphaMode != AlphaMode::Opaque || !m.doubleSided) flat.hasCutouts = true;
   return flat;
 }
 
@@ -101,11 +151,15 @@ SceneView FlatScene::hostView() const {
   SceneView v;
   v.positions = positions.data();
   v.normals = normals.data();
+  v.uvs = uvs.data();
+  v.tangents = tangents.data();
   v.indices = indices.data();
   v.triangleMaterials = triangleMaterials.data();
   v.meshes = meshes.data();
   v.instances = instances.data();
   v.materials = materials.data();
+  v.texels = {textures.data(), uint32_t(textures.size()), texelBytes.data(), texelFloats.data()};
+  v.hasCutouts = hasCutouts ? 1u : 0u;
   v.lights = lights.data();
   v.lightCdf = lightCdf.data();
   v.lightCount = uint32_t(lights.size());

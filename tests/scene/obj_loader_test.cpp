@@ -226,7 +226,9 @@ TEST(ObjLoaderSharedScenes, EdgeCases) {
       Scene s = loadObj(entry.path().string(), warnings);
       validateScene(s);
       EXPECT_FALSE(invalid != invalidRejected.end() && invalid->second) << file << " should have been rejected";
-      if (invalid != invalidRejected.end()) EXPECT_FALSE(warnings.messages.empty()) << file << " loaded silently";
+      if (invalid != invalidRejected.end()) {
+        EXPECT_FALSE(warnings.messages.empty()) << file << " loaded silently";
+      }
       if (invalid == invalidRejected.end()) ++valid;
       EXPECT_GT(s.triangleCount(), 0u) << file;
     } catch (const LoadError& e) {
@@ -276,7 +278,9 @@ TEST(ObjLoaderSharedScenes, CornellBoxes) {
     Scene s = loadObj((scenes / "cornell_box" / e.file).string(), w);
     validateScene(s);
     EXPECT_EQ(s.triangleCount(), e.triangles) << e.file;
-    if (e.materials) EXPECT_EQ(s.materials.size(), e.materials) << e.file;
+    if (e.materials) {
+      EXPECT_EQ(s.materials.size(), e.materials) << e.file;
+    }
     size_t emissive = 0;
     for (const Material& m : s.materials) emissive += !isBlack(m.emission);
     EXPECT_EQ(emissive, 1u) << e.file;
