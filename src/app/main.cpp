@@ -159,6 +159,13 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  for (auto [cmd, job] : {std::pair{render, &renderJob}, std::pair{bench, &benchJob}}) {
+    job->given.width = cmd->count("--width") > 0;
+    job->given.height = cmd->count("--height") > 0;
+    job->given.samplesPerPixel = cmd->count("--spp") > 0;
+    job->given.maxDepth = cmd->count("--max-depth") > 0;
+  }
+
   try {
     if (*render) {
       display.toneMapper = toneMapper == "clamp" ? ToneMapper::Clamp : ToneMapper::AcesFilmic;
