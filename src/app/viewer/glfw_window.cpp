@@ -4,6 +4,7 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -56,12 +57,12 @@ std::string GlfwWindow::glRenderer() const {
   return std::string(renderer ? renderer : "unknown renderer") + ", OpenGL " + (version ? version : "?");
 }
 
-ImGuiLayer::ImGuiLayer(GLFWwindow* window) {
+ImGuiLayer::ImGuiLayer(GLFWwindow* window) : window_(window) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // the layout is fixed; nothing to remember between runs
   ImGui::StyleColorsDark();
-  ImGui_ImplGlfw_InitForOpenGL(window, /*install_callbacks=*/true);
+  ImGui_ImplGlfw_InitForOpenGL(window, /*install_callbacks=*/false);
   ImGui_ImplOpenGL3_Init("#version 330 core");
 }
 
@@ -72,10 +73,47 @@ ImGuiLayer::~ImGuiLayer() {
 }
 
 void ImGuiLayer::beginFrame() {
+  deliverOneFramesKeyboardEvents();
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
 }
+
+void ImGuiLayer::deliverOneFramesKeyboardEvents() {
+  std::vector<int> pressed;
+  bool typed = false;
+  size_t next = 0;
+  for (; next < queue_.size(); ++next) {
+    const InputEvent& e = queue_[next];
+    if (e.isChar) {
+      if (!pressed.empty()) break;
+      ImGui_ImplGlfw_CharCallback(window_, e.codepoint);
+      typed = true;
+      continue;
+    }
+    if (e.action == GLFW_PRESS) {
+      if (typed) break;
+      pressed.push_back(e.key);
+    } else if (e.action == GLFW_RELEASE && std::find(pressed.begin(), pressed.end(), e.key) != pressed.end()) {
+      break;
+    }
+    ImGui_ImplGlfw_KeyCallback(window_, e.key, e.scancode, e.action, e.mods);
+  }
+  queue_.erase(queue_.begin(), queue_.begin() + ptrdiff_t(next));
+}
+
+void ImGuiLayer::onKey(int key, int scancode, int action, int mods) {
+  queue_.push_back({false, 0, key, scancode, action, mods});
+}
+
+void ImGuiLayer::onChar(unsigned int codepoint) { queue_.push_back({true, codepoint, 0, 0, 0, 0}); }
+
+void ImGuiLayer::onMouseButton(int button, int action, int mods) {
+  ImGui_ImplGlfw_MouseButtonCallback(window_, button, action, mods);
+}
+void ImGuiLayer::onScroll(double dx, double dy) { ImGui_ImplGlfw_ScrollCallback(window_, dx, dy); }
+void ImGuiLayer::onFocus(int focused) { ImGui_ImplGlfw_WindowFocusCallback(window_, focused); }
+void ImGuiLayer::onCursorEnter(int entered) { ImGui_ImplGlfw_CursorEnterCallback(window_, entered); }
 
 void ImGuiLayer::render() {
   ImGui::Render();

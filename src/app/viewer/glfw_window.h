@@ -1,5 +1,6 @@
 #pragma once
 #include <string>
+#include <vector>
 
 #include "app/viewer/gl.h"
 
@@ -21,7 +22,8 @@ class GlfwWindow {
   GLFWwindow* window_ = nullptr;
 };
 
-// Dear ImGui's context and its GLFW and OpenGL 3 backends for one window.
+// Dear ImGui's context and its GLFW and OpenGL 3 backends for one window. It installs no GLFW callbacks: the
+// window's owner passes every event on through the on...() functions.
 class ImGuiLayer {
  public:
   explicit ImGuiLayer(GLFWwindow* window);
@@ -29,8 +31,32 @@ class ImGuiLayer {
   ImGuiLayer(const ImGuiLayer&) = delete;
   ImGuiLayer& operator=(const ImGuiLayer&) = delete;
 
+  // Hands ImGui the keyboard events that fit in one frame (see InputEvent), then starts the frame.
   void beginFrame();
   void render();
+
+  void onKey(int key, int scancode, int action, int mods);
+  void onChar(unsigned int codepoint);
+  void onMouseButton(int button, int action, int mods);
+  void onScroll(double dx, double dy);
+  void onFocus(int focused);
+  void onCursorEnter(int entered);
+
+ private:
+  // ImGui 1.86 reads keys as up/down states once per frame and handles a frame's typed characters before its
+  // keys. At a few frames per second a key pressed and released between two frames would never be seen down,
+  // and Backspace after typing would erase what came before it. So keyboard events wait in a queue, and each
+  // frame takes them in order only while they keep their meaning: no release of a key pressed in the same
+  // frame, no typing after a key press, no key press after typing.
+  struct InputEvent {
+    bool isChar;
+    unsigned int codepoint;
+    int key, scancode, action, mods;
+  };
+  void deliverOneFramesKeyboardEvents();
+
+  GLFWwindow* window_;
+  std::vector<InputEvent> queue_;
 };
 
 }  // namespace candela

@@ -18,6 +18,7 @@
 #include "app/viewer/render_session.h"
 #include "app/viewer/viewer_files.h"
 #include "app/viewer/viewer_panel.h"
+#include "app/viewer/window_capture.h"
 
 namespace candela {
 
@@ -66,6 +67,7 @@ class Viewer {
   FramePlan lastPlan_;
   Camera lastCamera_;
   bool stateRequested_ = false;
+  Vec2 openSceneField_;
   bool sceneJustShown_ = true;
   int framebufferWidth_ = 0;
   int framebufferHeight_ = 0;
@@ -94,15 +96,16 @@ Viewer::Viewer(const ViewerOptions& options)
 }
 
 void Viewer::installCallbacks() {
-  // Installed after ImGui's, which pass every event on to these.
+  // Every event goes to ImGui first; the camera takes what ImGui does not want.
   GLFWwindow* w = window_.handle();
   glfwSetWindowUserPointer(w, this);
-  glfwSetMouseButtonCallback(w, [](GLFWwindow* window, int button, int action, int) {
+  glfwSetMouseButtonCallback(w, [](GLFWwindow* window, int button, int action, int mods) {
     Viewer& v = of(window);
+    v.imgui_.onMouseButton(button, action, mods);
+    if (button > GLFW_MOUSE_BUTTON_MIDDLE) return;
     MouseButton b = button == GLFW_MOUSE_BUTTON_MIDDLE ? MouseButton::Middle
                     : button == GLFW_MOUSE_BUTTON_RIGHT ? MouseButton::Right
                                                         : MouseButton::Left;
-    if (button > GLFW_MOUSE_BUTTON_MIDDLE) return;
     double x = 0.0, y = 0.0;
     glfwGetCursorPos(window, &x, &y);
     if (action == GLFW_PRESS)
@@ -111,20 +114,26 @@ void Viewer::installCallbacks() {
       v.input_.buttonReleased(b);
   });
   glfwSetCursorPosCallback(w, [](GLFWwindow* window, double x, double y) { of(window).input_.cursorMoved(x, y); });
-  glfwSetScrollCallback(w, [](GLFWwindow* window, double, double dy) {
+  glfwSetScrollCallback(w, [](GLFWwindow* window, double dx, double dy) {
     Viewer& v = of(window);
+    v.imgui_.onScroll(dx, dy);
     double x = 0.0, y = 0.0;
     glfwGetCursorPos(window, &x, &y);
     v.input_.wheel(dy, v.cursorOverImage(x));
   });
-  glfwSetKeyCallback(w, [](GLFWwindow* window, int key, int, int action, int) {
+  glfwSetKeyCallback(w, [](GLFWwindow* window, int key, int scancode, int action, int mods) {
     Viewer& v = of(window);
-    if (action != GLFW_PRESS || ImGui::GetIO().WantCaptureKeyboard) return;
+    v.imgui_.onKey(key, scancode, action, mods);
+    if (action != GLFW_PRESS) return;
+    if (key == GLFW_KEY_F12) v.stateRequested_ = true;  // text fields have no use for it
+    if (ImGui::GetIO().WantCaptureKeyboard) return;
     if (key == GLFW_KEY_F) v.camera_->frameScene();
     if (key == GLFW_KEY_R) v.camera_->reset();
-    if (key == GLFW_KEY_F12) v.stateRequested_ = true;
     if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(window, GLFW_TRUE);
   });
+  glfwSetCharCallback(w, [](GLFWwindow* window, unsigned int c) { of(window).imgui_.onChar(c); });
+  glfwSetWindowFocusCallback(w, [](GLFWwindow* window, int focused) { of(window).imgui_.onFocus(focused); });
+  glfwSetCursorEnterCallback(w, [](GLFWwindow* window, int entered) { of(window).imgui_.onCursorEnter(entered); });
 }
 
 // Over the image, not over the panel or an ImGui popup.
@@ -224,7 +233,12 @@ void Viewer::frame(double now, double seconds) {
   updateStatus(seconds);
   imgui_.beginFrame();
   // The panel's edits take effect from the next frame on; its actions act on this frame's image.
-  handle(drawPanel(status_, controls_, float(imageWidth), float(kPanelWidth), float(framebufferHeight_)));
+  // ImGui lays out in window coordinates, which differ from framebuffer pixels on high-density displays.
+  const float scale = ImGui::GetIO().DisplayFramebufferScale.x > 0.0f ? ImGui::GetIO().DisplayFramebufferScale.x : 1.0f;
+  PanelRequests requests = drawPanel(status_, controls_, float(imageWidth) / scale, float(kPanelWidth) / scale,
+                                     float(framebufferHeight_) / scale);
+  openSceneField_ = requests.openSceneField;
+  handle(requests);
   imgui_.render();
 }
 
@@ -258,6 +272,9 @@ void Viewer::writeState() {
   state.cameraForward = camera_->forward();
   state.cameraTarget = camera_->target();
   state.cameraDistance = camera_->distance();
+  state.message = status_.message;
+  state.messageIsError = status_.messageIsError;
+  state.openSceneField = openSceneField_;
   try {
     writeStateFile(options_.stateFile, state);
   } catch (const std::exception& e) {

@@ -1,15 +1,11 @@
 #include "app/viewer/viewer_files.h"
 
 #include <nlohmann/json.hpp>
-#include <stb/stb_image_write.h>
 
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
-#include <vector>
 
-#include "app/viewer/gl.h"
 #include "image/filters/bilateral.h"
 #include "image/image_io.h"
 
@@ -32,19 +28,6 @@ void saveScreenshot(const std::string& path, const Image& accumulated, const Pos
     writeImage(path, bilateralFilter(accumulated, post.bilateralParams), post.display);
   else
     writeImage(path, accumulated, post.display);
-}
-
-void captureWindow(const std::string& path, int framebufferWidth, int framebufferHeight) {
-  const size_t rowBytes = size_t(framebufferWidth) * 3;
-  std::vector<unsigned char> pixels(rowBytes * size_t(framebufferHeight));
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  glReadBuffer(GL_BACK);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, framebufferWidth, framebufferHeight, GL_RGB, GL_UNSIGNED_BYTE, pixels.data());
-  // OpenGL's rows run bottom to top; stb writes them top to bottom when given a negative stride from the end.
-  const unsigned char* lastRow = pixels.data() + rowBytes * size_t(framebufferHeight - 1);
-  if (!stbi_write_png(path.c_str(), framebufferWidth, framebufferHeight, 3, lastRow, -int(rowBytes)))
-    throw std::runtime_error("cannot write '" + path + "': the file could not be created or written");
 }
 
 void writeViewFile(const std::string& path, const std::string& sceneSpec, const CameraDescription& camera,
@@ -92,6 +75,9 @@ void writeStateFile(const std::string& path, const ViewerState& s) {
         {"forward", vec(s.cameraForward)},
         {"target", vec(s.cameraTarget)},
         {"distance", s.cameraDistance}}},
+      {"message", s.message},
+      {"message_is_error", s.messageIsError},
+      {"open_scene_field", {s.openSceneField.x, s.openSceneField.y}},
   };
   const std::string temporary = path + ".partial";
   writeJson(temporary, json);

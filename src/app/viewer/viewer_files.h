@@ -14,9 +14,6 @@ namespace candela {
 // mapped with the panel's settings, an .exr or .pfm stays linear.
 void saveScreenshot(const std::string& path, const Image& accumulated, const PostSettings& post);
 
-// The window's pixels as they are now in the back buffer (image and panel), as a PNG.
-void captureWindow(const std::string& path, int framebufferWidth, int framebufferHeight);
-
 // The scene it came from, the camera and the render and display settings, as JSON.
 void writeViewFile(const std::string& path, const std::string& sceneSpec, const CameraDescription& camera,
                    const RenderSettings& settings, const ViewerControls& controls);
@@ -34,6 +31,9 @@ struct ViewerState {
   std::string backend;
   Vec3 cameraPosition, cameraForward, cameraTarget;
   float cameraDistance = 0.0f;
+  std::string message;  // the panel's last message
+  bool messageIsError = false;
+  Vec2 openSceneField;
 };
 void writeStateFile(const std::string& path, const ViewerState& state);
 

@@ -66,9 +66,12 @@ void drawActions(ViewerControls& c, PanelRequests& requests) {
   ImGui::InputText("##file", &c.sceneFilePath);
   ImGui::SameLine();
   requests.saveSceneFile = ImGui::Button("Save camera");
-  ImGui::InputTextWithHint("##open", "scene name or file", &c.openSpec);
+  const bool entered = ImGui::InputTextWithHint("##open", "scene name or file", &c.openSpec,
+                                                ImGuiInputTextFlags_EnterReturnsTrue);
+  const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+  requests.openSceneField = {0.5f * (lo.x + hi.x), 0.5f * (lo.y + hi.y)};
   ImGui::SameLine();
-  requests.openScene = ImGui::Button("Open scene");
+  requests.openScene = ImGui::Button("Open scene") || entered;
 }
 
 }  // namespace

@@ -29,7 +29,8 @@ struct PanelRequests {
   bool applyEnvironment = false;  // the intensity slider was released after a change
   bool saveScreenshot = false;
   bool saveSceneFile = false;
-  bool openScene = false;
+  bool openScene = false;  // the Open button, or Enter in the scene field
+  Vec2 openSceneField;     // the centre of the scene field in window coordinates, for scripts that drive the window
 };
 
 // The docked panel at the right edge of the window: status, render settings, post-processing and actions.
