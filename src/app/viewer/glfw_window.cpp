@@ -73,19 +73,25 @@ ImGuiLayer::~ImGuiLayer() {
 }
 
 void ImGuiLayer::beginFrame() {
-  deliverOneFramesKeyboardEvents();
+  deliverOneFramesEvents();
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
 }
 
-void ImGuiLayer::deliverOneFramesKeyboardEvents() {
+void ImGuiLayer::deliverOneFramesEvents() {
   std::vector<int> pressed;
   bool typed = false;
   size_t next = 0;
   for (; next < queue_.size(); ++next) {
     const InputEvent& e = queue_[next];
-    if (e.isChar) {
+    if (e.kind == EventKind::MouseButton) {
+      if (next > 0) break;
+      ImGui_ImplGlfw_MouseButtonCallback(window_, e.key, e.action, e.mods);
+      ++next;
+      break;
+    }
+    if (e.kind == EventKind::Char) {
       if (!pressed.empty()) break;
       ImGui_ImplGlfw_CharCallback(window_, e.codepoint);
       typed = true;
@@ -103,13 +109,14 @@ void ImGuiLayer::deliverOneFramesKeyboardEvents() {
 }
 
 void ImGuiLayer::onKey(int key, int scancode, int action, int mods) {
-  queue_.push_back({false, 0, key, scancode, action, mods});
+  queue_.push_back({EventKind::Key, 0, key, scancode, action, mods});
 }
 
-void ImGuiLayer::onChar(unsigned int codepoint) { queue_.push_back({true, codepoint, 0, 0, 0, 0}); }
+void ImGuiLayer::onChar(unsigned int codepoint) { queue_.push_back({EventKind::Char, codepoint, 0, 0, 0, 0}); }
 
+// Releases need no queueing: ImGui polls whether a button is down and only remembers presses.
 void ImGuiLayer::onMouseButton(int button, int action, int mods) {
-  ImGui_ImplGlfw_MouseButtonCallback(window_, button, action, mods);
+  if (action == GLFW_PRESS) queue_.push_back({EventKind::MouseButton, 0, button, 0, action, mods});
 }
 void ImGuiLayer::onScroll(double dx, double dy) { ImGui_ImplGlfw_ScrollCallback(window_, dx, dy); }
 void ImGuiLayer::onFocus(int focused) { ImGui_ImplGlfw_WindowFocusCallback(window_, focused); }

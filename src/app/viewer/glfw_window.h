@@ -31,7 +31,7 @@ class ImGuiLayer {
   ImGuiLayer(const ImGuiLayer&) = delete;
   ImGuiLayer& operator=(const ImGuiLayer&) = delete;
 
-  // Hands ImGui the keyboard events that fit in one frame (see InputEvent), then starts the frame.
+  // Hands ImGui the input events that fit in one frame (see InputEvent), then starts the frame.
   void beginFrame();
   void render();
 
@@ -43,17 +43,19 @@ class ImGuiLayer {
   void onCursorEnter(int entered);
 
  private:
-  // ImGui 1.86 reads keys as up/down states once per frame and handles a frame's typed characters before its
-  // keys. At a few frames per second a key pressed and released between two frames would never be seen down,
-  // and Backspace after typing would erase what came before it. So keyboard events wait in a queue, and each
-  // frame takes them in order only while they keep their meaning: no release of a key pressed in the same
-  // frame, no typing after a key press, no key press after typing.
+  // ImGui 1.86 reads keys as up/down states once per frame, handles a frame's typed characters before its keys
+  // and a click before either. At a few frames per second a key pressed and released between two frames would
+  // never be seen down, Backspace after typing would erase what came before it, and text typed right after a
+  // click on a field would be lost. So these events wait in a queue, and each frame takes them in order only
+  // while they keep their meaning: no release of a key pressed in the same frame, no typing after a key press,
+  // no key press after typing, and a click only at the start of a frame, ending it.
+  enum class EventKind { Key, Char, MouseButton };
   struct InputEvent {
-    bool isChar;
+    EventKind kind;
     unsigned int codepoint;
-    int key, scancode, action, mods;
+    int key, scancode, action, mods;  // `key` is the button for MouseButton
   };
-  void deliverOneFramesKeyboardEvents();
+  void deliverOneFramesEvents();
 
   GLFWwindow* window_;
   std::vector<InputEvent> queue_;
