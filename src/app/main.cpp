@@ -138,8 +138,8 @@ int runView(ViewerOptions options, const std::string& toneMapper) {
   return runViewer(options);
 #else
   throw std::runtime_error(
-      "this build has no viewer: install libglfw3-dev, libimgui-dev and libgl-dev (scripts/install-dependencies.sh) "
-      "and configure again");
+      "this build has no viewer: configure with CANDELA_BUILD_VIEWER=ON once libglfw3-dev, libimgui-dev and "
+      "libgl-dev are installed (scripts/install-dependencies.sh)");
 #endif
 }
 
