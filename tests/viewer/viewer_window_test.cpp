@@ -272,8 +272,11 @@ TEST_F(ViewerWindow, ALoadErrorIsShownInTheWindow) {
   ASSERT_GT(fieldX, 96.0f);
   ASSERT_LT(fieldY, 640.0f);
 
+  // The pointer leaves the field straight after the click, before the viewer's next frame: the click still
+  // lands on the field.
   viewer.pointAt(fieldX, fieldY);
-  RunningViewer::xdotool("click 1 sleep 0.1 type --delay 20 no-such-scene");
+  RunningViewer::xdotool("click 1 mousemove_relative -- -200 -300");
+  RunningViewer::xdotool("type --delay 20 no-such-scene");
   RunningViewer::xdotool("key Return");
   json t = viewer.stateWhen([](const json& j) { return !j["message"].get<std::string>().empty(); }, 5.0);
   EXPECT_TRUE(t["message_is_error"]);

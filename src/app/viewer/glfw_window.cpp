@@ -64,6 +64,9 @@ ImGuiLayer::ImGuiLayer(GLFWwindow* window) : window_(window) {
   ImGui::StyleColorsDark();
   ImGui_ImplGlfw_InitForOpenGL(window, /*install_callbacks=*/false);
   ImGui_ImplOpenGL3_Init("#version 330 core");
+  // A window that opens under the pointer gets no enter event, and without a window manager no focus either;
+  // ImGui would then not see the pointer until it left and came back.
+  if (glfwGetWindowAttrib(window, GLFW_HOVERED)) ImGui_ImplGlfw_CursorEnterCallback(window, GLFW_TRUE);
 }
 
 ImGuiLayer::~ImGuiLayer() {
@@ -73,13 +76,15 @@ ImGuiLayer::~ImGuiLayer() {
 }
 
 void ImGuiLayer::beginFrame() {
-  deliverOneFramesEvents();
+  std::optional<ImVec2> pointerAtClick = deliverOneFramesEvents();
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
+  if (pointerAtClick) ImGui::GetIO().MousePos = *pointerAtClick;
   ImGui::NewFrame();
 }
 
-void ImGuiLayer::deliverOneFramesEvents() {
+std::optional<ImVec2> ImGuiLayer::deliverOneFramesEvents() {
+  std::optional<ImVec2> pointer;
   std::vector<int> pressed;
   bool typed = false;
   size_t next = 0;
@@ -88,6 +93,7 @@ void ImGuiLayer::deliverOneFramesEvents() {
     if (e.kind == EventKind::MouseButton) {
       if (next > 0) break;
       ImGui_ImplGlfw_MouseButtonCallback(window_, e.key, e.action, e.mods);
+      pointer = ImVec2(float(e.x), float(e.y));
       ++next;
       break;
     }
@@ -106,17 +112,17 @@ void ImGuiLayer::deliverOneFramesEvents() {
     ImGui_ImplGlfw_KeyCallback(window_, e.key, e.scancode, e.action, e.mods);
   }
   queue_.erase(queue_.begin(), queue_.begin() + ptrdiff_t(next));
+  return pointer;
 }
 
 void ImGuiLayer::onKey(int key, int scancode, int action, int mods) {
-  queue_.push_back({EventKind::Key, 0, key, scancode, action, mods});
+  queue_.push_back({EventKind::Key, 0, key, scancode, action, mods, 0.0, 0.0});
 }
 
-void ImGuiLayer::onChar(unsigned int codepoint) { queue_.push_back({EventKind::Char, codepoint, 0, 0, 0, 0}); }
+void ImGuiLayer::onChar(unsigned int codepoint) { queue_.push_back({EventKind::Char, codepoint, 0, 0, 0, 0, 0.0, 0.0}); }
 
-// Releases need no queueing: ImGui polls whether a button is down and only remembers presses.
-void ImGuiLayer::onMouseButton(int button, int action, int mods) {
-  if (action == GLFW_PRESS) queue_.push_back({EventKind::MouseButton, 0, button, 0, action, mods});
+void ImGuiLayer::onMouseButton(int button, int action, int mods, double x, double y) {
+  queue_.push_back({EventKind::MouseButton, 0, button, 0, action, mods, x, y});
 }
 void ImGuiLayer::onScroll(double dx, double dy) { ImGui_ImplGlfw_ScrollCallback(window_, dx, dy); }
 void ImGuiLayer::onFocus(int focused) { ImGui_ImplGlfw_WindowFocusCallback(window_, focused); }

@@ -1,4 +1,7 @@
 #pragma once
+#include <imgui.h>
+
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,25 +40,30 @@ class ImGuiLayer {
 
   void onKey(int key, int scancode, int action, int mods);
   void onChar(unsigned int codepoint);
-  void onMouseButton(int button, int action, int mods);
+  // (x, y): where the pointer was when the button changed, as the cursor events before it said.
+  void onMouseButton(int button, int action, int mods, double x, double y);
   void onScroll(double dx, double dy);
   void onFocus(int focused);
   void onCursorEnter(int entered);
 
  private:
   // ImGui 1.86 reads keys as up/down states once per frame, handles a frame's typed characters before its keys
-  // and a click before either. At a few frames per second a key pressed and released between two frames would
-  // never be seen down, Backspace after typing would erase what came before it, and text typed right after a
-  // click on a field would be lost. So these events wait in a queue, and each frame takes them in order only
-  // while they keep their meaning: no release of a key pressed in the same frame, no typing after a key press,
-  // no key press after typing, and a click only at the start of a frame, ending it.
+  // and a click before either, and takes the pointer's position when the frame starts, not when a button went
+  // down. At a few frames per second a key pressed and released between two frames would never be seen down,
+  // Backspace after typing would erase what came before it, text typed right after a click on a field would be
+  // lost, and a click would land wherever the pointer had moved to since. So these events wait in a queue, and
+  // each frame takes them in order only while they keep their meaning: no release of a key pressed in the same
+  // frame, no typing after a key press, no key press after typing, and a mouse button event only at the start
+  // of a frame, ending it, with the pointer where it was at the time.
   enum class EventKind { Key, Char, MouseButton };
   struct InputEvent {
     EventKind kind;
     unsigned int codepoint;
     int key, scancode, action, mods;  // `key` is the button for MouseButton
+    double x, y;                      // the pointer, for MouseButton
   };
-  void deliverOneFramesEvents();
+  // Returns the pointer position of the mouse button event it delivered, if any.
+  std::optional<ImVec2> deliverOneFramesEvents();
 
   GLFWwindow* window_;
   std::vector<InputEvent> queue_;

@@ -67,6 +67,7 @@ class Viewer {
   FramePlan lastPlan_;
   Camera lastCamera_;
   bool stateRequested_ = false;
+  double pointerX_ = 0.0, pointerY_ = 0.0;  // as of the last cursor event
   Vec2 openSceneField_;
   bool sceneJustShown_ = true;
   int framebufferWidth_ = 0;
@@ -92,6 +93,7 @@ Viewer::Viewer(const ViewerOptions& options)
   status_.device = session_.backend().deviceName();
   glfwSetWindowSizeLimits(window_.handle(), kPanelWidth + kMinImageSide, kMinImageSide, GLFW_DONT_CARE,
                           GLFW_DONT_CARE);
+  glfwGetCursorPos(window_.handle(), &pointerX_, &pointerY_);
   installCallbacks();
 }
 
@@ -101,25 +103,28 @@ void Viewer::installCallbacks() {
   glfwSetWindowUserPointer(w, this);
   glfwSetMouseButtonCallback(w, [](GLFWwindow* window, int button, int action, int mods) {
     Viewer& v = of(window);
-    v.imgui_.onMouseButton(button, action, mods);
+    v.imgui_.onMouseButton(button, action, mods, v.pointerX_, v.pointerY_);
     if (button > GLFW_MOUSE_BUTTON_MIDDLE) return;
     MouseButton b = button == GLFW_MOUSE_BUTTON_MIDDLE ? MouseButton::Middle
                     : button == GLFW_MOUSE_BUTTON_RIGHT ? MouseButton::Right
                                                         : MouseButton::Left;
-    double x = 0.0, y = 0.0;
-    glfwGetCursorPos(window, &x, &y);
     if (action == GLFW_PRESS)
-      v.input_.buttonPressed(b, x, y, v.cursorOverImage(x));
+      v.input_.buttonPressed(b, v.pointerX_, v.pointerY_, v.cursorOverImage(v.pointerX_));
     else if (action == GLFW_RELEASE)
       v.input_.buttonReleased(b);
   });
-  glfwSetCursorPosCallback(w, [](GLFWwindow* window, double x, double y) { of(window).input_.cursorMoved(x, y); });
+  // Events reach the viewer once per frame; where the pointer was at a click or a wheel step is where the
+  // cursor events before it had taken it, not where it is now.
+  glfwSetCursorPosCallback(w, [](GLFWwindow* window, double x, double y) {
+    Viewer& v = of(window);
+    v.pointerX_ = x;
+    v.pointerY_ = y;
+    v.input_.cursorMoved(x, y);
+  });
   glfwSetScrollCallback(w, [](GLFWwindow* window, double dx, double dy) {
     Viewer& v = of(window);
     v.imgui_.onScroll(dx, dy);
-    double x = 0.0, y = 0.0;
-    glfwGetCursorPos(window, &x, &y);
-    v.input_.wheel(dy, v.cursorOverImage(x));
+    v.input_.wheel(dy, v.cursorOverImage(v.pointerX_));
   });
   glfwSetKeyCallback(w, [](GLFWwindow* window, int key, int scancode, int action, int mods) {
     Viewer& v = of(window);
