@@ -10,7 +10,8 @@
 namespace candela {
 
 RenderOutcome runRenderJob(const RenderJob& job, bool showProgress) {
-  Scene scene = loadScene(job.sceneSpec);
+  Scene scene = loadScene(job.sceneSpec, {job.environmentPath});
+  applyOverrides(scene.materials, job.materialOverrides);
   std::string why;
   std::unique_ptr<Backend> backend = createBackend(job.backend, why);
   std::fprintf(stderr, "%s\n", why.c_str());

@@ -2,14 +2,17 @@
 #include <string>
 
 #include "backends/backend.h"
+#include "scene/material_overrides.h"
 
 namespace candela {
 
 struct RenderJob {
   std::string sceneSpec = "cornell-box";
+  std::string environmentPath;  // replaces the scene's environment when set
   RenderSettings settings;
   uint32_t samplesPerPixel = 64;
   std::string backend = "auto";
+  MaterialOverrides materialOverrides;
 };
 
 struct RenderOutcome {

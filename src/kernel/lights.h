@@ -10,15 +10,19 @@ struct LightSample {
   Vec3 radiance;          // emitted towards the shading point
   float pdf = 0.0f;       // solid angle density of wi, light selection included
   bool valid = false;
+  uint32_t lightIndex = 0;  // the triangle sampled, and the point's barycentrics of its vertices 1 and 2
+  Vec2 barycentrics;
 };
 
 // Environment radiance arriving along `direction` (pointing away from the scene).
-CANDELA_FN Vec3 environmentRadiance(const SceneView& scene, Vec3 /*direction*/) {
-  return scene.environment.radiance;
+CANDELA_FN Vec3 environmentRadiance(const SceneView& scene, Vec3 direction) {
+  return environmentRadiance(scene.environment, direction);
 }
 
-CANDELA_FN float environmentPdf(const SceneView& scene, Vec3 /*direction*/) {
-  return scene.environmentSelectProbability * uniformSpherePdf();
+// Solid-angle density with which sampleLight() picks `direction` on the environment, selection included.
+CANDELA_FN float environmentPdf(const SceneView& scene, Vec3 direction) {
+  if (scene.environmentSelectProbability == 0.0f) return 0.0f;
+  return scene.environmentSelectProbability * environmentDirectionPdf(scene.environment, direction);
 }
 
 // Solid-angle density with which sampleLight() picks a point on an emissive triangle seen from `from`.
@@ -35,16 +39,19 @@ CANDELA_FN LightSample sampleLight(const SceneView& scene, Vec3 from, float uSel
   LightSample ls;
   float pEnv = scene.environmentSelectProbability;
   if (uSelect < pEnv) {
-    ls.wi = sampleUniformSphere(u);
+    EnvironmentSample es = sampleEnvironment(scene.environment, u);
+    ls.wi = es.direction;
     ls.radiance = environmentRadiance(scene, ls.wi);
-    ls.pdf = environmentPdf(scene, ls.wi);
+    ls.pdf = pEnv * es.pdf;
     ls.valid = ls.pdf > 0.0f;
     return ls;
   }
   if (scene.lightCount == 0) return ls;
   float uTri = fminf((uSelect - pEnv) / (1.0f - pEnv), 0.99999994f);
-  const LightTriangle& light = scene.lights[findInterval(scene.lightCdf, int(scene.lightCount), uTri)];
+  ls.lightIndex = uint32_t(findInterval(scene.lightCdf, int(scene.lightCount), uTri));
+  const LightTriangle& light = scene.lights[ls.lightIndex];
   Vec2 b = sampleUniformTriangle(u);
+  ls.barycentrics = b;
   Vec3 p = light.p0 + light.edge1 * b.x + light.edge2 * b.y;
   Vec3 toLight = p - from;
   float dist2 = dot(toLight, toLight);

@@ -2,6 +2,7 @@
 #include <vector>
 
 #include "kernel/scene_view.h"
+#include "scene/environment_distribution.h"
 #include "scene/scene.h"
 
 namespace candela {
@@ -11,16 +12,26 @@ namespace candela {
 struct FlatScene {
   std::vector<Vec3> positions;
   std::vector<Vec3> normals;
+  std::vector<Vec2> uvs;
+  std::vector<Vec4> tangents;
   std::vector<uint32_t> indices;
   std::vector<uint32_t> triangleMaterials;
   std::vector<MeshRecord> meshes;
   std::vector<InstanceRecord> instances;
   std::vector<Material> materials;
+  std::vector<TextureView> textures;
+  std::vector<uint8_t> texelBytes;  // every 8-bit texture back to back
+  std::vector<float> texelFloats;   // every float texture back to back
+  bool hasCutouts = false;
   std::vector<LightTriangle> lights;
   std::vector<float> lightCdf;
   float lightAreaPdfScale = 0.0f;
   float environmentSelectProbability = 0.0f;
-  Environment environment;
+  // The environment's parameters; its pointers are set by hostView() (or by a backend, to device copies of
+  // the arrays below).
+  EnvironmentView environment;
+  std::vector<Vec3> environmentTexels;  // empty for a constant environment
+  EnvironmentDistribution environmentDistribution;
 
   static FlatScene build(const Scene& scene);
 

@@ -7,6 +7,7 @@
 #include "kernel/camera.h"
 #include "kernel/material.h"
 #include "kernel/scene_view.h"
+#include "kernel/texture.h"
 
 namespace candela {
 
@@ -14,14 +15,13 @@ struct Mesh {
   std::string name;
   std::vector<Vec3> positions;
   std::vector<Vec3> normals;  // empty, or one per position
-  std::vector<Vec2> uvs;      // empty, or one per position
+  std::vector<Vec2> uvs;      // empty, or one per position; v runs down the image rows (glTF's convention)
+  std::vector<Vec4> tangents;  // empty, or one per position: unit tangent along +u and the bitangent sign
   std::vector<uint32_t> indices;  // 3 per triangle
   std::vector<uint32_t> triangleMaterials;  // one per triangle
 
   size_t triangleCount() const { return indices.size() / 3; }
 };
-
-enum class TextureWrap : uint32_t { Repeat = 0, Clamp, Mirror };
 
 // An image a material samples. 8-bit images keep their bytes; `srgb` says whether they encode sRGB colour.
 struct Texture {
@@ -45,8 +45,27 @@ struct CameraDescription {
   Vec3 target{0, 0, 1};
   Vec3 up{0, 1, 0};
   float verticalFovDegrees = 40.0f;
+  float apertureRadius = 0.0f;  // 0: pinhole
+  float focusDistance = 0.0f;   // 0: the distance from eye to target
 
-  Camera toCamera(float aspect) const { return Camera::lookAt(eye, target, up, verticalFovDegrees, aspect); }
+  Camera toCamera(float aspect) const {
+    Camera c = Camera::lookAt(eye, target, up, verticalFovDegrees, aspect);
+    c.lensRadius = apertureRadius;
+    c.focusDistance = focusDistance > 0.0f ? focusDistance : length(target - eye);
+    return c;
+  }
+};
+
+// Light from infinitely far away: a constant `radiance`, or an equirectangular `map` (float RGB, top row the
+// zenith, see kernel/environment.h for the orientation) scaled by `intensity` and turned about +Y.
+struct Environment {
+  Vec3 radiance{0, 0, 0};  // used when `map` is empty
+  Texture map;
+  float intensity = 1.0f;
+  float rotationDegrees = 0.0f;
+  bool visibleToCamera = true;
+
+  bool hasMap() const { return map.width > 0 && map.height > 0; }
 };
 
 // A scene as loaders produce it and backends consume it.
@@ -58,6 +77,7 @@ struct Scene {
   std::vector<Texture> textures;
   Environment environment;
   CameraDescription camera;
+  bool cameraMissing = false;  // the input had no camera: `camera` is to be framed around the scene's bounds
 
   size_t triangleCount() const;  // over instances
 };
