@@ -9,6 +9,7 @@
 
 #include "app/backend_factory.h"
 #include "app/render_job.h"
+#include "app/viewer/viewer.h"
 #include "image/image_io.h"
 #include "scene/builtin_scenes.h"
 
@@ -121,13 +122,65 @@ int runBench(const RenderJob& job) {
   return 0;
 }
 
+void addViewOptions(CLI::App& cmd, ViewerOptions& options, std::string& toneMapper) {
+  std::string scenes;
+  for (const std::string& n : builtinSceneNames()) scenes += (scenes.empty() ? "" : ", ") + n;
+  cmd.add_option("scene", options.sceneSpec, "Built-in scene name (" + scenes + ")")->capture_default_str();
+  cmd.add_option("--backend", options.backend, "auto, cpu or optix (in this build: " + availableBackends() + ")")
+      ->check(CLI::IsMember({"auto", "cpu", "optix"}))
+      ->capture_default_str();
+  cmd.add_option("--width", options.width, "Image width in pixels; the panel sits beside the image")
+      ->check(CLI::Range(64u, 16384u))
+      ->capture_default_str();
+  cmd.add_option("--height", options.height, "Image height in pixels")
+      ->check(CLI::Range(64u, 16384u))
+      ->capture_default_str();
+  cmd.add_option("--max-depth", options.maxDepth, "Longest path in bounces after the camera ray")
+      ->check(CLI::Range(1u, 1024u))
+      ->capture_default_str();
+  cmd.add_option("--seed", options.seed, "Seed of the random sequence")->capture_default_str();
+  cmd.add_option("--spp-per-frame", options.samplesPerFrame, "Samples per pixel added each frame at rest")
+      ->check(CLI::Range(1u, 1024u))
+      ->capture_default_str();
+  cmd.add_option("--exposure", options.post.display.exposure, "Exposure in stops")->capture_default_str();
+  cmd.add_option("--tonemap", toneMapper, "Tone mapper: aces or clamp")
+      ->check(CLI::IsMember({"aces", "clamp"}))
+      ->capture_default_str();
+  CLI::Option* frames =
+      cmd.add_option("--frames", options.frames, "Render this many frames, then exit (0: until the window closes)")
+          ->capture_default_str();
+  cmd.add_option("--screenshot", options.screenshot, "On exit, write the accumulated image (.png, .exr or .pfm)");
+  cmd.add_option("--window-capture", options.windowCapture, "After --frames, write the whole window as a .png")
+      ->needs(frames);
+  cmd.add_option("--state-file", options.stateFile, "Where F12 writes the viewer's state as JSON")
+      ->capture_default_str();
+}
+
+int runView(ViewerOptions options, const std::string& toneMapper) {
+  options.post.display.toneMapper = toneMapper == "clamp" ? ToneMapper::Clamp : ToneMapper::AcesFilmic;
+  if (!options.screenshot.empty()) checkOutputPath(options.screenshot);
+  if (!options.windowCapture.empty()) {
+    checkOutputPath(options.windowCapture);
+    if (std::filesystem::path(options.windowCapture).extension() != ".png")
+      throw std::runtime_error("cannot write '" + options.windowCapture + "': a window capture is a .png file");
+  }
+#ifdef CANDELA_HAS_VIEWER
+  return runViewer(options);
+#else
+  throw std::runtime_error(
+      "this build has no viewer: configure with CANDELA_BUILD_VIEWER=ON once libglfw3-dev, libimgui-dev and "
+      "libgl-dev are installed (scripts/install-dependencies.sh)");
+#endif
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"candela: a physically based path tracer.\n"
                "  candela render                 render the built-in Cornell box to candela.png\n"
                "  candela render -o box.exr --spp 256\n"
-               "  candela bench --spp 16         print one JSON line of timings"};
+               "  candela bench --spp 16         print one JSON line of timings\n"
+               "  candela view                   open the interactive viewer"};
   app.require_subcommand(1);
 
   RenderJob renderJob;
@@ -147,6 +200,11 @@ int main(int argc, char** argv) {
   benchJob.samplesPerPixel = 16;
   CLI::App* bench = app.add_subcommand("bench", "Time a render and print the numbers as one JSON object");
   addRenderOptions(*bench, benchJob);
+
+  ViewerOptions viewOptions;
+  std::string viewToneMapper = "aces";
+  CLI::App* view = app.add_subcommand("view", "Open a window that refines the image while you move the camera");
+  addViewOptions(*view, viewOptions, viewToneMapper);
 
   try {
     app.parse(argc, argv);
@@ -171,6 +229,7 @@ int main(int argc, char** argv) {
       display.toneMapper = toneMapper == "clamp" ? ToneMapper::Clamp : ToneMapper::AcesFilmic;
       return runRender(renderJob, output, display);
     }
+    if (*view) return runView(viewOptions, viewToneMapper);
     return runBench(benchJob);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "candela: %s\n", e.what());
