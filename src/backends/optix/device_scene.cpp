@@ -1,0 +1,25 @@
+#include "backends/optix/device_scene.h"
+
+namespace candela::optix {
+
+void DeviceScene::upload(const FlatScene& flat) {
+  buffers_.clear();
+  view_ = flat.hostView();  // scalars and counts; the pointers are replaced below, one line per array
+  view_.positions = copy(flat.positions, "vertex positions");
+  view_.normals = copy(flat.normals, "vertex normals");
+  view_.indices = copy(flat.indices, "triangle indices");
+  view_.triangleMaterials = copy(flat.triangleMaterials, "triangle materials");
+  view_.meshes = copy(flat.meshes, "mesh records");
+  view_.instances = copy(flat.instances, "instance records");
+  view_.materials = copy(flat.materials, "materials");
+  view_.lights = copy(flat.lights, "the light table");
+  view_.lightCdf = copy(flat.lightCdf, "the light distribution");
+}
+
+size_t DeviceScene::deviceBytes() const {
+  size_t total = 0;
+  for (const DeviceBuffer& b : buffers_) total += b.size();
+  return total;
+}
+
+}  // namespace candela::optix
