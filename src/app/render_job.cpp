@@ -26,9 +26,10 @@ void timeRawTrace([[maybe_unused]] Backend& backend, [[maybe_unused]] const Rend
 #endif
 }
 
-void denoise(const RenderJob& job, RenderOutcome& outcome) {
-  if (job.denoiser != "optix") return;
+// Builds without OptiX refuse --denoise optix before rendering (runRenderJob).
+void denoise([[maybe_unused]] const RenderJob& job, [[maybe_unused]] RenderOutcome& outcome) {
 #if CANDELA_HAS_OPTIX
+  if (job.denoiser != "optix") return;
   try {
     outcome.image = denoiseWithOptix(outcome.image);
   } catch (const std::runtime_error& e) {
