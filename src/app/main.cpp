@@ -36,6 +36,32 @@ void addRenderOptions(CLI::App& cmd, RenderJob& job) {
       ->capture_default_str();
   cmd.add_option("--seed", job.settings.seed, "Seed of the random sequence; same seed, same image")
       ->capture_default_str();
+  // Validated while parsing, so a bad value is a usage error (exit status 2) like any other.
+  auto validated = [](auto apply) {
+    return CLI::Validator(
+        [apply](std::string& text) {
+          try {
+            apply(text);
+          } catch (const std::invalid_argument& e) {
+            return std::string(e.what());
+          }
+          return std::string();
+        },
+        "", "");
+  };
+  cmd.add_option_function<std::string>("--shading", [&job](const std::string& name) {
+        job.materialOverrides.shading = parseShadingModel(name);
+      }, "Render every material with one shading model: phong, pbr or disney (default: each material's own)")
+      ->check(validated([](const std::string& name) { parseShadingModel(name); }));
+  std::string overrideNames;
+  for (const OverrideParameter& p : overrideParameters()) overrideNames += (overrideNames.empty() ? "" : ", ") + std::string(p.name);
+  cmd.add_option_function<std::vector<std::string>>("--override", [&job](const std::vector<std::string>& list) {
+        for (const std::string& assignment : list) parseOverride(job.materialOverrides, assignment);
+      }, "Set a material parameter on every material, name=value in [0, 1]; repeatable. Names: " + overrideNames)
+      ->check(validated([](const std::string& assignment) {
+        MaterialOverrides scratch;
+        parseOverride(scratch, assignment);
+      }));
   cmd.add_option("--backend", job.backend, "auto, cpu or optix (in this build: " + availableBackends() + ")")
       ->check(CLI::IsMember({"auto", "cpu", "optix"}))
       ->capture_default_str();

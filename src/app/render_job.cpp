@@ -47,6 +47,7 @@ RenderOutcome runRenderJob(const RenderJob& job, bool showProgress) {
                              "'GPU backend')");
 #endif
   Scene scene = loadScene(job.sceneSpec);
+  applyOverrides(scene.materials, job.materialOverrides);
   std::string why;
   std::unique_ptr<Backend> backend = createBackend(job.backend, why);
   std::fprintf(stderr, "%s\n", why.c_str());

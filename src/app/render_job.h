@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "backends/backend.h"
+#include "scene/material_overrides.h"
 
 namespace candela {
 
@@ -11,6 +12,7 @@ struct RenderJob {
   RenderSettings settings;
   uint32_t samplesPerPixel = 64;
   std::string backend = "auto";
+  MaterialOverrides materialOverrides;
   uint32_t warmupFrames = 0;      // untimed launches before the timed ones
   bool rawTrace = false;          // also time the backend's raw-trace mode (optix only)
   std::string denoiser = "none";  // "none" or "optix"

@@ -19,6 +19,11 @@ struct Vec3 {
   CANDELA_FN float operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
 };
 
+// RGBA texels, and tangents as (direction, bitangent sign) the way glTF and MikkTSpace store them.
+struct Vec4 {
+  float x = 0, y = 0, z = 0, w = 0;
+};
+
 CANDELA_FN Vec3 operator+(Vec3 a, Vec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
 CANDELA_FN Vec3 operator-(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 CANDELA_FN Vec3 operator-(Vec3 a) { return {-a.x, -a.y, -a.z}; }
@@ -49,6 +54,8 @@ CANDELA_FN bool isFinite(float x) {
 CANDELA_FN bool isFinite(Vec3 c) { return isFinite(c.x) && isFinite(c.y) && isFinite(c.z); }
 CANDELA_FN float sqr(float x) { return x * x; }
 CANDELA_FN float clampf(float x, float lo, float hi) { return fminf(fmaxf(x, lo), hi); }
+CANDELA_FN float lerp(float t, float a, float b) { return a + t * (b - a); }
+CANDELA_FN Vec3 lerp(float t, Vec3 a, Vec3 b) { return a + (b - a) * t; }
 CANDELA_FN Vec3 faceForward(Vec3 n, Vec3 v) { return dot(n, v) < 0.0f ? -n : n; }
 
 // Row-major 3x4 affine transform: the layout Embree and OptiX instances take.

@@ -5,6 +5,7 @@
 #include "kernel/interaction.h"
 #include "kernel/lights.h"
 #include "kernel/render_settings.h"
+#include "kernel/textured_material.h"
 
 namespace candela {
 
@@ -13,17 +14,76 @@ struct PathResult {
   uint32_t rays = 0;  // camera, bounce and shadow rays traced for this path
 };
 
+// Surfaces crossed without scattering along one ray before it counts as blocked: bounds the work a stack of
+// cut-outs can cost.
+constexpr uint32_t kMaxPassThroughs = 64;
+
+// Whether a ray arriving from wo goes through this surface point untouched: a back face of a single-sided
+// opaque material, a texel under the alpha cutoff, or (alpha blending) with probability 1 - alpha, which is
+// stochastic transparency: unbiased for the blended result.
+template <class NextRandom>
+CANDELA_FN bool passesThrough(const SceneView& scene, const Material& m, const SurfaceInteraction& si, Vec3 wo,
+                              NextRandom&& nextRandom) {
+  bool transmissive = m.type == MaterialType::Glass || (m.type == MaterialType::Disney && m.specTrans > 0.0f);
+  if (!m.doubleSided && !transmissive && dot(wo, si.geometricNormal) < 0.0f) return true;
+  if (m.alphaMode == AlphaMode::Opaque) return false;
+  float alpha = materialAlpha(scene, m, si.uv);
+  if (m.alphaMode == AlphaMode::Mask) return alpha < m.alphaCutoff;
+  return alpha < 1.0f && nextRandom() >= alpha;
+}
+
+// A shadow ray's query: the tracer's any-hit query when nothing can be seen through, otherwise closest hits
+// stepped through cut-outs.
+template <class Tracer>
+CANDELA_FN bool occludedThroughCutouts(const SceneView& scene, const Tracer& tracer, Ray shadow,
+                                       PathSampler& sampler, uint32_t& rays) {
+  ++rays;
+  if (!scene.hasCutouts) return tracer.occluded(shadow);
+  for (uint32_t i = 0; i < kMaxPassThroughs; ++i) {
+    Hit hit;
+    if (i > 0) ++rays;
+    if (!tracer.intersect(shadow, hit)) return false;
+    SurfaceInteraction si = makeInteraction(scene, hit);
+    if (!passesThrough(scene, scene.materials[si.materialId], si, -shadow.direction, [&] { return sampler.next1D(); }))
+      return true;
+    shadow.origin = offsetRayOrigin(si.position, si.geometricNormal, shadow.direction);
+    shadow.tMax = shadow.tMax >= kInf ? kInf : shadow.tMax - hit.t;
+  }
+  return true;
+}
+
+// Radiance a sampled light point emits, with the emission texture of its material applied.
+CANDELA_FN Vec3 texturedLightRadiance(const SceneView& scene, const LightSample& ls) {
+  const LightTriangle& light = scene.lights[ls.lightIndex];
+  Hit hit;
+  hit.b1 = ls.barycentrics.x;
+  hit.b2 = ls.barycentrics.y;
+  hit.instanceId = light.instanceId;
+  hit.primitiveId = light.primitiveId;
+  SurfaceInteraction si = makeInteraction(scene, hit);
+  const Material& m = scene.materials[si.materialId];
+  if (m.emissionTexture == kNoTexture) return ls.radiance;
+  Vec4 c = lookup(scene, m.emissionTexture, si.uv);
+  return ls.radiance * Vec3{c.x, c.y, c.z};
+}
+
 // Unidirectional path tracing with next-event estimation and BSDF sampling combined by MIS (power heuristic),
 // Russian roulette after `rouletteDepth` bounces. `Tracer` answers the two ray queries:
 //   bool intersect(const Ray&, Hit&) const;  bool occluded(const Ray&) const;
+// Delta lobes (mirror, smooth glass) skip light sampling and take the emission they hit at full weight; rays
+// that refract continue on the far side of the surface.
 template <class Tracer>
 CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ray ray, PathSampler& sampler,
                                 const RenderSettings& settings) {
   PathResult result;
   Vec3 beta{1, 1, 1};
+  float etaScale = 1.0f;  // product of eta^2 over refractions: undoes their radiance scaling for roulette
   bool specularBounce = false;
-  float bsdfPdf = 0.0f;  // solid-angle pdf of the BSDF sample that produced `ray`
-  for (uint32_t depth = 0;; ++depth) {
+  float bsdfPdf = 0.0f;        // solid-angle pdf of the BSDF sample that produced `ray`
+  Vec3 lastScatter = ray.origin;  // where that sample was taken (cut-outs move the ray's origin on)
+  uint32_t passThroughs = 0;
+  auto nextRandom = [&] { return sampler.next1D(); };
+  for (uint32_t depth = 0;;) {
     Hit hit;
     ++result.rays;
     if (!tracer.intersect(ray, hit)) {
@@ -35,14 +95,22 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
       break;
     }
     SurfaceInteraction si = makeInteraction(scene, hit);
-    const Material& material = scene.materials[si.materialId];
+    const Material& stored = scene.materials[si.materialId];
     Vec3 wo = -ray.direction;
+    if (scene.hasCutouts && passesThrough(scene, stored, si, wo, nextRandom)) {
+      if (++passThroughs > kMaxPassThroughs) break;
+      ray = {offsetRayOrigin(si.position, si.geometricNormal, ray.direction), ray.direction, 0.0f, kInf};
+      continue;
+    }
+    Material material = evaluateMaterial(scene, stored, si.uv);
+    applyNormalMap(scene, material, si);
 
     float cosAtSurface = dot(si.geometricNormal, wo);
     if (!isBlack(material.emission) && cosAtSurface > 0.0f) {
       float w = 1.0f;
       if (depth > 0 && !specularBounce) {
-        float lightPdf = triangleLightPdf(scene, material.emission, hit.t * length(ray.direction), cosAtSurface);
+        // The light sampler chose this triangle by its untextured emission; its density must be the same here.
+        float lightPdf = triangleLightPdf(scene, stored.emission, length(si.position - lastScatter), cosAtSurface);
         w = powerHeuristic(bsdfPdf, lightPdf);
       }
       result.radiance += beta * material.emission * w;
@@ -51,36 +119,45 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
 
     Bsdf bsdf(material, si, wo);
     float woSide = dot(wo, si.geometricNormal);
+    // A direction counts only when the shading and geometric normals agree on which side of the surface it is.
+    auto sidesAgree = [&](Vec3 wi) { return (dot(wi, si.geometricNormal) * woSide > 0.0f) == (dot(wi, bsdf.normal()) > 0.0f); };
 
     // Next-event estimation.
     float uSelect = sampler.next1D();
     Vec2 uLight{sampler.next1D(), sampler.next1D()};
-    LightSample ls = sampleLight(scene, si.position, uSelect, uLight);
-    if (ls.valid && dot(ls.wi, si.geometricNormal) * woSide > 0.0f) {
-      Vec3 f = bsdf.eval(wo, ls.wi);
-      if (!isBlack(f)) {
-        Ray shadow{offsetRayOrigin(si.position, si.geometricNormal, ls.wi), ls.wi, 0.0f,
-                   ls.distance >= kInf ? kInf : ls.distance * (1.0f - 1e-4f)};
-        ++result.rays;
-        if (!tracer.occluded(shadow)) {
-          float w = powerHeuristic(ls.pdf, bsdf.pdf(wo, ls.wi));
-          result.radiance += beta * f * ls.radiance * (fabsf(dot(ls.wi, bsdf.normal())) * w / ls.pdf);
+    if (!bsdf.isDelta()) {
+      LightSample ls = sampleLight(scene, si.position, uSelect, uLight);
+      bool reachable = dot(ls.wi, si.geometricNormal) * woSide > 0.0f || bsdf.hasTransmission();
+      if (ls.valid && reachable && sidesAgree(ls.wi)) {
+        Vec3 f = bsdf.eval(wo, ls.wi);
+        if (!isBlack(f)) {
+          Ray shadow{offsetRayOrigin(si.position, si.geometricNormal, ls.wi), ls.wi, 0.0f,
+                     ls.distance >= kInf ? kInf : ls.distance * (1.0f - 1e-4f)};
+          if (!occludedThroughCutouts(scene, tracer, shadow, sampler, result.rays)) {
+            Vec3 le = ls.distance >= kInf ? ls.radiance : texturedLightRadiance(scene, ls);
+            float w = powerHeuristic(ls.pdf, bsdf.pdf(wo, ls.wi));
+            result.radiance += beta * f * le * (fabsf(dot(ls.wi, bsdf.normal())) * w / ls.pdf);
+          }
         }
       }
     }
 
     // Continue the path by sampling the BSDF.
+    float uChoice = sampler.next1D();
     Vec2 uBsdf{sampler.next1D(), sampler.next1D()};
-    BsdfSample bs = bsdf.sample(wo, uBsdf);
-    if (!bs.valid || dot(bs.wi, si.geometricNormal) * woSide <= 0.0f) break;
+    BsdfSample bs = bsdf.sample(wo, uChoice, uBsdf);
+    if (!bs.valid || isBlack(bs.f) || !sidesAgree(bs.wi)) break;
     beta *= bs.f * (fabsf(dot(bs.wi, bsdf.normal())) / bs.pdf);
+    etaScale *= bs.eta * bs.eta;
     specularBounce = bs.isDelta;
     bsdfPdf = bs.pdf;
+    lastScatter = si.position;
     ray = {offsetRayOrigin(si.position, si.geometricNormal, bs.wi), bs.wi, 0.0f, kInf};
+    ++depth;
 
     float uRoulette = sampler.next1D();
-    if (depth + 1 >= settings.rouletteDepth) {
-      float survive = fminf(0.95f, maxComponent(beta));
+    if (depth >= settings.rouletteDepth) {
+      float survive = fminf(0.95f, maxComponent(beta) * etaScale);
       if (uRoulette >= survive) break;
       beta = beta / survive;
     }

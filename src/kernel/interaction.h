@@ -11,6 +11,9 @@ struct SurfaceInteraction {
   Vec3 position;
   Vec3 geometricNormal;  // unit, as wound by the mesh
   Vec3 shadingNormal;    // unit, on the same side as geometricNormal
+  Vec3 tangent;          // world space, not normalised; zero when the mesh has no tangents
+  float bitangentSign = 1.0f;
+  Vec2 uv;
   uint32_t materialId = 0;
 };
 
@@ -32,6 +35,17 @@ CANDELA_FN SurfaceInteraction makeInteraction(const SceneView& scene, const Hit&
     Vec3 ns = inst.normalToWorld.vector(n[i0] * b0 + n[i1] * hit.b1 + n[i2] * hit.b2);
     float len = length(ns);
     if (len > 0.0f) si.shadingNormal = faceForward(ns / len, si.geometricNormal);
+  }
+  if (mesh.hasUvs) {
+    const Vec2* uv = scene.uvs + mesh.firstVertex;
+    si.uv = {uv[i0].x * b0 + uv[i1].x * hit.b1 + uv[i2].x * hit.b2, uv[i0].y * b0 + uv[i1].y * hit.b1 + uv[i2].y * hit.b2};
+  }
+  if (mesh.hasTangents) {
+    const Vec4* t = scene.tangents + mesh.firstVertex;
+    Vec3 objectTangent = Vec3{t[i0].x, t[i0].y, t[i0].z} * b0 + Vec3{t[i1].x, t[i1].y, t[i1].z} * hit.b1 +
+                         Vec3{t[i2].x, t[i2].y, t[i2].z} * hit.b2;
+    si.tangent = inst.objectToWorld.vector(objectTangent);
+    si.bitangentSign = t[i0].w < 0.0f ? -1.0f : 1.0f;
   }
   si.materialId = scene.triangleMaterials[tri];
   return si;

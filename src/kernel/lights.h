@@ -10,6 +10,8 @@ struct LightSample {
   Vec3 radiance;          // emitted towards the shading point
   float pdf = 0.0f;       // solid angle density of wi, light selection included
   bool valid = false;
+  uint32_t lightIndex = 0;  // the triangle sampled, and the point's barycentrics of its vertices 1 and 2
+  Vec2 barycentrics;
 };
 
 // Environment radiance arriving along `direction` (pointing away from the scene).
@@ -43,8 +45,10 @@ CANDELA_FN LightSample sampleLight(const SceneView& scene, Vec3 from, float uSel
   }
   if (scene.lightCount == 0) return ls;
   float uTri = fminf((uSelect - pEnv) / (1.0f - pEnv), 0.99999994f);
-  const LightTriangle& light = scene.lights[findInterval(scene.lightCdf, int(scene.lightCount), uTri)];
+  ls.lightIndex = uint32_t(findInterval(scene.lightCdf, int(scene.lightCount), uTri));
+  const LightTriangle& light = scene.lights[ls.lightIndex];
   Vec2 b = sampleUniformTriangle(u);
+  ls.barycentrics = b;
   Vec3 p = light.p0 + light.edge1 * b.x + light.edge2 * b.y;
   Vec3 toLight = p - from;
   float dist2 = dot(toLight, toLight);

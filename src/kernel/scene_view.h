@@ -3,6 +3,7 @@
 
 #include "core/math.h"
 #include "kernel/material.h"
+#include "kernel/texture.h"
 
 namespace candela {
 
@@ -13,6 +14,8 @@ struct MeshRecord {
   uint32_t firstTriangle = 0;  // into `indices` (3 per triangle) and `triangleMaterials`
   uint32_t triangleCount = 0;
   uint32_t hasNormals = 0;
+  uint32_t hasUvs = 0;
+  uint32_t hasTangents = 0;
 };
 
 struct InstanceRecord {
@@ -26,6 +29,8 @@ struct LightTriangle {
   Vec3 p0, edge1, edge2;
   Vec3 radiance;
   float area = 0.0f;
+  uint32_t instanceId = 0;  // where it came from, for textured emission
+  uint32_t primitiveId = 0;
 };
 
 struct Environment {
@@ -36,11 +41,15 @@ struct Environment {
 struct SceneView {
   const Vec3* positions = nullptr;  // object space, all meshes back to back
   const Vec3* normals = nullptr;
+  const Vec2* uvs = nullptr;       // per vertex, alongside positions (zeros where a mesh has none)
+  const Vec4* tangents = nullptr;  // per vertex: unit tangent and bitangent sign (MikkTSpace convention)
   const uint32_t* indices = nullptr;  // mesh-local vertex indices, 3 per triangle
   const uint32_t* triangleMaterials = nullptr;
   const MeshRecord* meshes = nullptr;
   const InstanceRecord* instances = nullptr;
   const Material* materials = nullptr;
+  TexelArrays texels;
+  uint32_t hasCutouts = 0;  // some material is alpha-tested, alpha-blended or back-face culled
 
   const LightTriangle* lights = nullptr;
   const float* lightCdf = nullptr;  // lightCount + 1 entries, by emitted power

@@ -21,6 +21,15 @@ Scene makeClosedEmissiveSphere(float albedo, float emission);
 // A white (albedo 1) diffuse sphere under a uniform environment of radiance 1: every pixel is 1.
 Scene makeWhiteFurnace();
 
+// Rows of spheres with the Disney BSDF, each row sweeping one parameter from 0 (left) to 1 (right): roughness
+// (gold metal), metallic, sheen, clearcoat, subsurface and specular transmission, top to bottom, on a grey floor
+// under an area light and a dim uniform sky.
+Scene makeMaterialGallery();
+
+// Two parallel mirrors facing each other across a lit floor with a few spheres between them: the camera sees
+// the reflections recede through many bounces (render with --max-depth 100).
+Scene makeMirrorCorridor();
+
 // Names accepted by makeBuiltinScene, for --help and error messages.
 std::vector<std::string> builtinSceneNames();
 

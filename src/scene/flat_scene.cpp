@@ -1,5 +1,6 @@
 #include "scene/flat_scene.h"
 
+#include "scene/tangents.h"
 #include "scene/transform.h"
 
 namespace candela {
@@ -9,7 +10,8 @@ namespace {
 void buildLightTable(const Scene& scene, FlatScene& flat) {
   double totalPower = 0.0;
   std::vector<double> powers;
-  for (const InstanceRecord& inst : flat.instances) {
+  for (uint32_t instanceId = 0; instanceId < flat.instances.size(); ++instanceId) {
+    const InstanceRecord& inst = flat.instances[instanceId];
     const Mesh& mesh = scene.meshes[inst.meshId];
     for (size_t t = 0; t < mesh.triangleCount(); ++t) {
       const Material& m = scene.materials[mesh.triangleMaterials[t]];
@@ -17,7 +19,8 @@ void buildLightTable(const Scene& scene, FlatScene& flat) {
       Vec3 p0 = inst.objectToWorld.point(mesh.positions[mesh.indices[3 * t]]);
       Vec3 p1 = inst.objectToWorld.point(mesh.positions[mesh.indices[3 * t + 1]]);
       Vec3 p2 = inst.objectToWorld.point(mesh.positions[mesh.indices[3 * t + 2]]);
-      LightTriangle light{p0, p1 - p0, p2 - p0, m.emission, 0.5f * length(cross(p1 - p0, p2 - p0))};
+      LightTriangle light{p0, p1 - p0, p2 - p0, m.emission, 0.5f * length(cross(p1 - p0, p2 - p0)), instanceId,
+                          uint32_t(t)};
       if (!(light.area > 0.0f)) continue;  // degenerate: can neither be sampled nor hit
       double power = double(light.area) * kPi * luminance(m.emission);
       flat.lights.push_back(light);
@@ -39,6 +42,37 @@ void buildLightTable(const Scene& scene, FlatScene& flat) {
   flat.environmentSelectProbability = environmentEmits ? (flat.lights.empty() ? 1.0f : 0.5f) : 0.0f;
 }
 
+// Tangents are needed where a normal map or an anisotropic lobe must be oriented on the surface.
+bool needsTangents(const Scene& scene, const Mesh& mesh) {
+  if (mesh.uvs.empty()) return false;
+  for (uint32_t id : mesh.triangleMaterials) {
+    const Material& m = scene.materials[id];
+    if (m.normalTexture != kNoTexture || (m.type == MaterialType::Disney && m.anisotropic > 0.0f)) return true;
+  }
+  return false;
+}
+
+void packTextures(const Scene& scene, FlatScene& flat) {
+  for (const Texture& t : scene.textures) {
+    TextureView view;
+    view.width = t.width;
+    view.height = t.height;
+    view.channels = t.channels;
+    view.srgb = t.srgb ? 1u : 0u;
+    view.wrap = t.wrap;
+    if (!t.bytes.empty()) {
+      view.format = TexelFormat::Unorm8;
+      view.offset = flat.texelBytes.size();
+      flat.texelBytes.insert(flat.texelBytes.end(), t.bytes.begin(), t.bytes.end());
+    } else {
+      view.format = TexelFormat::Float32;
+      view.offset = flat.texelFloats.size();
+      flat.texelFloats.insert(flat.texelFloats.end(), t.floats.begin(), t.floats.end());
+    }
+    flat.textures.push_back(view);
+  }
+}
+
 }  // namespace
 
 FlatScene FlatScene::build(const Scene& scene) {
@@ -53,12 +87,25 @@ FlatScene FlatScene::build(const Scene& scene) {
     record.firstTriangle = uint32_t(flat.triangleMaterials.size());
     record.triangleCount = uint32_t(mesh.triangleCount());
     record.hasNormals = mesh.normals.empty() ? 0u : 1u;
-    flat.meshes.push_back(record);
+    record.hasUvs = mesh.uvs.empty() ? 0u : 1u;
     flat.positions.insert(flat.positions.end(), mesh.positions.begin(), mesh.positions.end());
     if (mesh.normals.empty())
       flat.normals.resize(flat.positions.size());
     else
       flat.normals.insert(flat.normals.end(), mesh.normals.begin(), mesh.normals.end());
+    if (mesh.uvs.empty())
+      flat.uvs.resize(flat.positions.size());
+    else
+      flat.uvs.insert(flat.uvs.end(), mesh.uvs.begin(), mesh.uvs.end());
+    std::vector<Vec4> generated;
+    const std::vector<Vec4>* meshTangents = &mesh.tangents;
+    if (mesh.tangents.empty() && needsTangents(scene, mesh)) meshTangents = &(generated = generateTangents(mesh));
+    record.hasTangents = meshTangents->empty() ? 0u : 1u;
+    if (meshTangents->empty())
+      flat.tangents.resize(flat.positions.size());
+    else
+      flat.tangents.insert(flat.tangents.end(), meshTangents->begin(), meshTangents->end());
+    flat.meshes.push_back(record);
     flat.indices.insert(flat.indices.end(), mesh.indices.begin(), mesh.indices.end());
     flat.triangleMaterials.insert(flat.triangleMaterials.end(), mesh.triangleMaterials.begin(),
                                   mesh.triangleMaterials.end());
@@ -66,6 +113,9 @@ FlatScene FlatScene::build(const Scene& scene) {
   for (const Instance& inst : scene.instances)
     flat.instances.push_back({inst.meshId, inst.objectToWorld, normalTransform(inst.objectToWorld)});
   buildLightTable(scene, flat);
+  packTextures(scene, flat);
+  for (const Material& m : flat.materials)
+    if (m.alphaMode != AlphaMode::Opaque || !m.doubleSided) flat.hasCutouts = true;
   return flat;
 }
 
@@ -73,11 +123,15 @@ SceneView FlatScene::hostView() const {
   SceneView v;
   v.positions = positions.data();
   v.normals = normals.data();
+  v.uvs = uvs.data();
+  v.tangents = tangents.data();
   v.indices = indices.data();
   v.triangleMaterials = triangleMaterials.data();
   v.meshes = meshes.data();
   v.instances = instances.data();
   v.materials = materials.data();
+  v.texels = {textures.data(), uint32_t(textures.size()), texelBytes.data(), texelFloats.data()};
+  v.hasCutouts = hasCutouts ? 1u : 0u;
   v.lights = lights.data();
   v.lightCdf = lightCdf.data();
   v.lightCount = uint32_t(lights.size());

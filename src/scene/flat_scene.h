@@ -11,11 +11,17 @@ namespace candela {
 struct FlatScene {
   std::vector<Vec3> positions;
   std::vector<Vec3> normals;
+  std::vector<Vec2> uvs;
+  std::vector<Vec4> tangents;
   std::vector<uint32_t> indices;
   std::vector<uint32_t> triangleMaterials;
   std::vector<MeshRecord> meshes;
   std::vector<InstanceRecord> instances;
   std::vector<Material> materials;
+  std::vector<TextureView> textures;
+  std::vector<uint8_t> texelBytes;  // every 8-bit texture back to back
+  std::vector<float> texelFloats;   // every float texture back to back
+  bool hasCutouts = false;
   std::vector<LightTriangle> lights;
   std::vector<float> lightCdf;
   float lightAreaPdfScale = 0.0f;

@@ -23,6 +23,12 @@ void validateScene(const Scene& scene) {
     if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size())
       fail("mesh '" + mesh.name + "' has " + std::to_string(mesh.normals.size()) + " normals for " +
            std::to_string(mesh.positions.size()) + " positions");
+    if (!mesh.uvs.empty() && mesh.uvs.size() != mesh.positions.size())
+      fail("mesh '" + mesh.name + "' has " + std::to_string(mesh.uvs.size()) + " texture coordinates for " +
+           std::to_string(mesh.positions.size()) + " positions");
+    if (!mesh.tangents.empty() && mesh.tangents.size() != mesh.positions.size())
+      fail("mesh '" + mesh.name + "' has " + std::to_string(mesh.tangents.size()) + " tangents for " +
+           std::to_string(mesh.positions.size()) + " positions");
     for (uint32_t index : mesh.indices)
       if (index >= mesh.positions.size()) fail("mesh '" + mesh.name + "' indexes past its vertices");
     for (uint32_t id : mesh.triangleMaterials)
@@ -32,8 +38,19 @@ void validateScene(const Scene& scene) {
   }
   for (const Instance& inst : scene.instances)
     if (inst.meshId >= scene.meshes.size()) fail("an instance refers to a missing mesh");
-  for (const Material& m : scene.materials)
+  for (const Material& m : scene.materials) {
     if (!finite(m.baseColor) || !finite(m.emission)) fail("a material has non-finite parameters");
+    for (int32_t t : {m.baseColorTexture, m.metallicRoughnessTexture, m.roughnessTexture, m.metallicTexture,
+                      m.emissionTexture, m.normalTexture, m.opacityTexture})
+      if (t != kNoTexture && (t < 0 || size_t(t) >= scene.textures.size())) fail("a material uses a missing texture");
+  }
+  for (const Texture& t : scene.textures) {
+    size_t texels = size_t(t.width) * t.height * t.channels;
+    if (t.width == 0 || t.height == 0 || t.channels < 1 || t.channels > 4)
+      fail("texture '" + t.name + "' has no texels or an unsupported channel count");
+    if (t.bytes.size() != texels && t.floats.size() != texels)
+      fail("texture '" + t.name + "' holds the wrong number of values for its size");
+  }
 }
 
 }  // namespace candela

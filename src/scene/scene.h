@@ -7,6 +7,7 @@
 #include "kernel/camera.h"
 #include "kernel/material.h"
 #include "kernel/scene_view.h"
+#include "kernel/texture.h"
 
 namespace candela {
 
@@ -14,14 +15,13 @@ struct Mesh {
   std::string name;
   std::vector<Vec3> positions;
   std::vector<Vec3> normals;  // empty, or one per position
-  std::vector<Vec2> uvs;      // empty, or one per position
+  std::vector<Vec2> uvs;      // empty, or one per position; v runs down the image rows (glTF's convention)
+  std::vector<Vec4> tangents;  // empty, or one per position: unit tangent along +u and the bitangent sign
   std::vector<uint32_t> indices;  // 3 per triangle
   std::vector<uint32_t> triangleMaterials;  // one per triangle
 
   size_t triangleCount() const { return indices.size() / 3; }
 };
-
-enum class TextureWrap : uint32_t { Repeat = 0, Clamp, Mirror };
 
 // An image a material samples. 8-bit images keep their bytes; `srgb` says whether they encode sRGB colour.
 struct Texture {

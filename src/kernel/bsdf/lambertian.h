@@ -4,7 +4,7 @@
 
 namespace candela {
 
-// Ideal diffuse reflection. Directions are in the local shading frame (normal = +z), wo on the +z side.
+// Ideal diffuse reflection, sampled by the cosine.
 struct LambertianBsdf {
   Vec3 albedo;
 
@@ -12,7 +12,7 @@ struct LambertianBsdf {
     return (wo.z > 0.0f && wi.z > 0.0f) ? albedo * kInvPi : Vec3{0, 0, 0};
   }
   CANDELA_FN float pdf(Vec3 wo, Vec3 wi) const { return wo.z > 0.0f ? cosineHemispherePdf(wi.z) : 0.0f; }
-  CANDELA_FN BsdfSample sample(Vec3 wo, Vec2 u) const {
+  CANDELA_FN BsdfSample sample(Vec3 wo, float /*uChoice*/, Vec2 u) const {
     BsdfSample s;
     if (wo.z <= 0.0f) return s;
     s.wi = sampleCosineHemisphere(u);

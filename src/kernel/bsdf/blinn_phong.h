@@ -1,0 +1,80 @@
+#pragma once
+#include "core/sampling.h"
+#include "kernel/bsdf/fresnel.h"
+#include "kernel/bsdf/lambertian.h"
+#include "kernel/bsdf/lobe_mixture.h"
+
+namespace candela {
+
+// The Blinn-Phong specular lobe normalised as in Ashikhmin and Shirley 2000 (without their Fresnel term):
+//   f = ks (n + 1) / (8 pi) cos^n(theta_h) / ((wo.h) max(cos theta_o, cos theta_i)).
+// Half vectors are sampled with density (n + 1) / (2 pi) cos^n(theta_h), so f cos(theta_i) / pdf =
+// ks cos(theta_i) / max(cos theta_o, cos theta_i) <= ks: the lobe never reflects more than ks, and it is
+// reciprocal.
+struct BlinnPhongSpecular {
+  Vec3 ks;
+  float exponent = 32.0f;
+
+  CANDELA_FN float halfVectorPdf(float cosThetaH) const {
+    return cosThetaH > 0.0f ? (exponent + 1.0f) * (0.5f * kInvPi) * powf(cosThetaH, exponent) : 0.0f;
+  }
+  CANDELA_FN Vec3 eval(Vec3 wo, Vec3 wi) const {
+    if (wo.z <= 0.0f || wi.z <= 0.0f) return {0, 0, 0};
+    Vec3 h = normalize(wo + wi);
+    return ks * (halfVectorPdf(h.z) / (4.0f * dot(wo, h) * fmaxf(wo.z, wi.z)));
+  }
+  CANDELA_FN float pdf(Vec3 wo, Vec3 wi) const {
+    if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
+    Vec3 h = normalize(wo + wi);
+    return halfVectorPdf(h.z) / (4.0f * dot(wo, h));
+  }
+  CANDELA_FN BsdfSample sample(Vec3 wo, float /*uChoice*/, Vec2 u) const {
+    BsdfSample s;
+    if (wo.z <= 0.0f) return s;
+    float cosThetaH = powf(u.x, 1.0f / (exponent + 1.0f));
+    float sinThetaH = sqrtf(fmaxf(0.0f, 1.0f - cosThetaH * cosThetaH));
+    float phi = 2.0f * kPi * u.y;
+    Vec3 h{sinThetaH * cosf(phi), sinThetaH * sinf(phi), cosThetaH};
+    if (dot(wo, h) <= 0.0f) return s;
+    s.wi = reflect(wo, h);
+    if (s.wi.z <= 0.0f) return s;
+    s.pdf = pdf(wo, s.wi);
+    s.f = eval(wo, s.wi);
+    s.valid = s.pdf > 0.0f;
+    return s;
+  }
+};
+
+// Energy-normalised Blinn-Phong: a Lambertian lobe scaled by (1 - max(ks)) under the specular lobe above, so the
+// albedo never exceeds 1 for any kd, ks <= 1.
+struct BlinnPhongBsdf {
+  LambertianBsdf diffuse;
+  BlinnPhongSpecular specular;
+
+  CANDELA_FN BlinnPhongBsdf(Vec3 kd, Vec3 ks, float exponent)
+      : diffuse{kd * (1.0f - clampf(maxComponent(ks), 0.0f, 1.0f))}, specular{ks, fmaxf(0.0f, exponent)} {}
+
+  CANDELA_FN LobeChoice<2> choice() const {
+    return LobeChoice<2>::fromEstimates({luminance(diffuse.albedo), luminance(specular.ks)});
+  }
+  CANDELA_FN Vec3 eval(Vec3 wo, Vec3 wi) const { return diffuse.eval(wo, wi) + specular.eval(wo, wi); }
+  CANDELA_FN float pdf(Vec3 wo, Vec3 wi) const {
+    LobeChoice<2> c = choice();
+    return c.p[0] * diffuse.pdf(wo, wi) + c.p[1] * specular.pdf(wo, wi);
+  }
+  CANDELA_FN BsdfSample sample(Vec3 wo, float uChoice, Vec2 u) const {
+    BsdfSample proposal = choice().choose(uChoice) == 0 ? diffuse.sample(wo, 0.0f, u) : specular.sample(wo, 0.0f, u);
+    if (!proposal.valid) return proposal;
+    return mixtureSample(*this, wo, proposal.wi, 1.0f);
+  }
+};
+
+// Blinn-Phong exponent with about the highlight of a GGX lobe of this roughness (Walter et al. 2007: n = 2 /
+// alpha^2 - 2 for Beckmann's alpha, with alpha = roughness^2), and back.
+CANDELA_FN float roughnessToPhongExponent(float roughness) {
+  float alpha = fmaxf(1e-3f, roughness * roughness);
+  return fmaxf(0.0f, 2.0f / (alpha * alpha) - 2.0f);
+}
+CANDELA_FN float phongExponentToRoughness(float exponent) { return sqrtf(sqrtf(2.0f / (fmaxf(0.0f, exponent) + 2.0f))); }
+
+}  // namespace candela

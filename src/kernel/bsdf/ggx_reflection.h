@@ -1,0 +1,42 @@
+#pragma once
+#include "kernel/bsdf/bsdf_sample.h"
+#include "kernel/bsdf/fresnel.h"
+#include "kernel/bsdf/ggx.h"
+
+namespace candela {
+
+// Microfacet reflection: GGX normals, height-correlated Smith masking-shadowing, Schlick's Fresnel with a
+// coloured normal-incidence reflectance f0. Sampled by visible normals, so f cos / pdf = F G2 / G1(wo) <= 1.
+struct GgxReflection {
+  GgxDistribution distribution;
+  Vec3 f0;
+
+  CANDELA_FN Vec3 eval(Vec3 wo, Vec3 wi) const {
+    if (wo.z <= 0.0f || wi.z <= 0.0f) return {0, 0, 0};
+    Vec3 h = wo + wi;
+    if (dot(h, h) == 0.0f) return {0, 0, 0};
+    h = normalize(h);
+    float value = distribution.d(h) * distribution.g2(wo, wi) / (4.0f * wo.z * wi.z);
+    return fresnelSchlick(f0, dot(wi, h)) * value;
+  }
+  CANDELA_FN float pdf(Vec3 wo, Vec3 wi) const {
+    if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
+    Vec3 h = wo + wi;
+    if (dot(h, h) == 0.0f) return 0.0f;
+    h = normalize(h);
+    return distribution.visibleNormalPdf(wo, h) / (4.0f * dot(wo, h));
+  }
+  CANDELA_FN BsdfSample sample(Vec3 wo, float /*uChoice*/, Vec2 u) const {
+    BsdfSample s;
+    if (wo.z <= 0.0f) return s;
+    Vec3 h = distribution.sampleVisibleNormal(wo, u);
+    s.wi = reflect(wo, h);
+    if (s.wi.z <= 0.0f) return s;
+    s.pdf = pdf(wo, s.wi);
+    s.f = eval(wo, s.wi);
+    s.valid = s.pdf > 0.0f;
+    return s;
+  }
+};
+
+}  // namespace candela

@@ -1,0 +1,55 @@
+#pragma once
+#include "core/sampling.h"
+#include "kernel/bsdf/ggx_reflection.h"
+#include "kernel/bsdf/lobe_mixture.h"
+
+namespace candela {
+
+// glTF 2.0's metallic-roughness BRDF (specification, appendix B):
+//   f = (1 - metallic) (1 - F_d(wo.h)) baseColor / pi + F(wo.h) D G2 / (4 cos_o cos_i),
+// with F Schlick's Fresnel at f0 = lerp(metallic, 0.08 specular, baseColor) (0.04 at the default specular 0.5)
+// and F_d the dielectric part of it. Because Schlick's form is linear in f0, this equals glTF's
+// mix(dielectric_brdf, metal_brdf, metallic). The diffuse term is sampled by the cosine, the specular by GGX
+// visible normals; both combined as a mixture (see lobe_mixture.h).
+struct PbrBsdf {
+  Vec3 diffuseColor;  // (1 - metallic) baseColor
+  float dielectricF0 = 0.04f;
+  GgxReflection specular;
+
+  CANDELA_FN PbrBsdf(Vec3 baseColor, float metallic, float roughness, float specularLevel) {
+    metallic = clampf(metallic, 0.0f, 1.0f);
+    diffuseColor = baseColor * (1.0f - metallic);
+    dielectricF0 = 0.08f * clampf(specularLevel, 0.0f, 1.0f);
+    specular = {GgxDistribution::isotropic(roughness), lerp(metallic, Vec3{dielectricF0, dielectricF0, dielectricF0}, baseColor)};
+  }
+
+  CANDELA_FN Vec3 evalDiffuse(Vec3 wo, Vec3 wi) const {
+    if (wo.z <= 0.0f || wi.z <= 0.0f) return {0, 0, 0};
+    Vec3 h = normalize(wo + wi);
+    return diffuseColor * ((1.0f - fresnelSchlick(dielectricF0, dot(wo, h))) * kInvPi);
+  }
+  CANDELA_FN LobeChoice<2> choice(Vec3 wo) const {
+    return LobeChoice<2>::fromEstimates({luminance(diffuseColor) * (1.0f - fresnelSchlick(dielectricF0, wo.z)),
+                                         luminance(fresnelSchlick(specular.f0, wo.z))});
+  }
+  CANDELA_FN Vec3 eval(Vec3 wo, Vec3 wi) const { return evalDiffuse(wo, wi) + specular.eval(wo, wi); }
+  CANDELA_FN float pdf(Vec3 wo, Vec3 wi) const {
+    if (wo.z <= 0.0f) return 0.0f;
+    LobeChoice<2> c = choice(wo);
+    return c.p[0] * cosineHemispherePdf(wi.z) + c.p[1] * specular.pdf(wo, wi);
+  }
+  CANDELA_FN BsdfSample sample(Vec3 wo, float uChoice, Vec2 u) const {
+    if (wo.z <= 0.0f) return {};
+    Vec3 wi;
+    if (choice(wo).choose(uChoice) == 0) {
+      wi = sampleCosineHemisphere(u);
+    } else {
+      BsdfSample s = specular.sample(wo, 0.0f, u);
+      if (!s.valid) return s;
+      wi = s.wi;
+    }
+    return mixtureSample(*this, wo, wi, 1.0f);
+  }
+};
+
+}  // namespace candela

@@ -1,0 +1,59 @@
+#pragma once
+#include "kernel/bsdf/bsdf_sample.h"
+#include "kernel/bsdf/fresnel.h"
+
+namespace candela {
+
+// Delta lobes. eval() and pdf() are zero for every pair of directions (the chance that a sampled or light
+// direction is exactly the reflected one is zero); sample() returns the direction with its discrete
+// probability and a value f with f |cos| / pdf equal to the lobe's weight.
+
+// Perfect mirror reflecting `reflectance` of the light.
+struct MirrorBsdf {
+  Vec3 reflectance;
+
+  CANDELA_FN Vec3 eval(Vec3, Vec3) const { return {0, 0, 0}; }
+  CANDELA_FN float pdf(Vec3, Vec3) const { return 0.0f; }
+  CANDELA_FN BsdfSample sample(Vec3 wo, float /*uChoice*/, Vec2 /*u*/) const {
+    BsdfSample s;
+    if (wo.z <= 0.0f) return s;
+    s.wi = {-wo.x, -wo.y, wo.z};
+    s.f = reflectance / wo.z;
+    s.pdf = 1.0f;
+    s.isDelta = true;
+    s.valid = true;
+    return s;
+  }
+};
+
+// Smooth dielectric interface: reflects with the Fresnel reflectance, refracts the rest, choosing between the two
+// with those probabilities. `eta` is the index of the far side over that of wo's side. Refracted radiance is
+// scaled by 1 / eta^2 (radiance is compressed into the denser medium) and tinted by `transmissionTint`.
+struct SmoothDielectricBsdf {
+  float eta = 1.5f;
+  Vec3 transmissionTint{1, 1, 1};
+
+  CANDELA_FN Vec3 eval(Vec3, Vec3) const { return {0, 0, 0}; }
+  CANDELA_FN float pdf(Vec3, Vec3) const { return 0.0f; }
+  CANDELA_FN BsdfSample sample(Vec3 wo, float uChoice, Vec2 /*u*/) const {
+    BsdfSample s;
+    if (wo.z <= 0.0f) return s;
+    float r = fresnelDielectric(wo.z, eta);
+    s.isDelta = true;
+    if (uChoice < r) {
+      s.wi = {-wo.x, -wo.y, wo.z};
+      s.pdf = r;
+      s.f = Vec3{r, r, r} / wo.z;
+    } else {
+      if (!refract(wo, {0, 0, 1}, eta, s.wi)) return s;  // cannot happen: r = 1 under total reflection
+      float t = 1.0f - r;
+      s.pdf = t;
+      s.eta = eta;
+      s.f = transmissionTint * (t / (eta * eta * fabsf(s.wi.z)));
+    }
+    s.valid = s.pdf > 0.0f;
+    return s;
+  }
+};
+
+}  // namespace candela

@@ -1,0 +1,102 @@
+#pragma once
+#include <cstdint>
+
+#include "core/math.h"
+
+namespace candela {
+
+enum class TextureWrap : uint32_t { Repeat = 0, Clamp, Mirror };
+enum class TexelFormat : uint32_t { Unorm8 = 0, Float32 };
+
+// One texture as kernel code sees it. On the host its texels sit in the SceneView's shared texel arrays from
+// `offset` on (row 0 first, `channels` values per texel). A GPU backend may instead create a CUDA texture object
+// (normalised coordinates, linear filtering, the same address mode, sRGB reads for `srgb`, four channels) and
+// store its handle in `deviceTexture`; device code then samples through the texture unit.
+struct TextureView {
+  uint64_t deviceTexture = 0;  // cudaTextureObject_t, 0 when absent
+  uint64_t offset = 0;         // first element in SceneView::texelBytes or texelFloats
+  uint32_t width = 0;
+  uint32_t height = 0;
+  uint32_t channels = 4;
+  TexelFormat format = TexelFormat::Unorm8;
+  uint32_t srgb = 0;  // 8-bit colour channels encode sRGB; alpha is always linear
+  TextureWrap wrap = TextureWrap::Repeat;
+};
+
+struct TexelArrays {
+  const TextureView* textures = nullptr;
+  uint32_t textureCount = 0;
+  const uint8_t* texelBytes = nullptr;
+  const float* texelFloats = nullptr;
+};
+
+CANDELA_FN float srgbToLinear(float c) {
+  return c <= 0.04045f ? c * (1.0f / 12.92f) : powf((c + 0.055f) * (1.0f / 1.055f), 2.4f);
+}
+
+// Maps an integer texel coordinate into [0, size).
+CANDELA_FN int wrapTexel(int i, int size, TextureWrap wrap) {
+  switch (wrap) {
+    case TextureWrap::Clamp: return i < 0 ? 0 : (i >= size ? size - 1 : i);
+    case TextureWrap::Mirror: {
+      int period = 2 * size;
+      int m = i % period;
+      if (m < 0) m += period;
+      return m < size ? m : period - 1 - m;
+    }
+    case TextureWrap::Repeat: break;
+  }
+  int m = i % size;
+  return m < 0 ? m + size : m;
+}
+
+// One texel as linear RGBA: grey images repeat their channel, two-channel images are grey + alpha.
+CANDELA_FN Vec4 fetchTexel(const TexelArrays& arrays, const TextureView& t, int x, int y) {
+  uint64_t index = t.offset + (uint64_t(y) * t.width + uint64_t(x)) * t.channels;
+  float c[4] = {0, 0, 0, 1};
+  for (uint32_t k = 0; k < t.channels && k < 4; ++k) {
+    if (t.format == TexelFormat::Float32) {
+      c[k] = arrays.texelFloats[index + k];
+    } else {
+      float v = float(arrays.texelBytes[index + k]) * (1.0f / 255.0f);
+      bool isAlpha = (t.channels == 4 && k == 3) || (t.channels == 2 && k == 1);
+      c[k] = t.srgb && !isAlpha ? srgbToLinear(v) : v;
+    }
+  }
+  switch (t.channels) {
+    case 1: return {c[0], c[0], c[0], 1.0f};
+    case 2: return {c[0], c[0], c[0], c[1]};
+    case 3: return {c[0], c[1], c[2], 1.0f};
+    default: return {c[0], c[1], c[2], c[3]};
+  }
+}
+
+// Bilinear lookup at texture coordinates uv: u to the right, v down the rows (glTF's convention), texel
+// centres at half-integers as in OpenGL and CUDA.
+CANDELA_FN Vec4 sampleTexture(const TexelArrays& arrays, int32_t index, Vec2 uv) {
+  const TextureView& t = arrays.textures[index];
+#if defined(__CUDA_ARCH__)
+  if (t.deviceTexture != 0) {
+    float4 v = tex2D<float4>(cudaTextureObject_t(t.deviceTexture), uv.x, uv.y);
+    return {v.x, v.y, v.z, v.w};
+  }
+#endif
+  if (t.width == 0 || t.height == 0) return {1, 1, 1, 1};
+  float x = uv.x * float(t.width) - 0.5f, y = uv.y * float(t.height) - 0.5f;
+  if (!isFinite(x) || !isFinite(y)) return fetchTexel(arrays, t, 0, 0);
+  float fx0 = floorf(x), fy0 = floorf(y);
+  float fx = x - fx0, fy = y - fy0;
+  // Far-away coordinates would overflow int; a few periods in, every mode has repeated itself.
+  constexpr float kLimit = 1 << 24;
+  int x0 = int(clampf(fx0, -kLimit, kLimit)), y0 = int(clampf(fy0, -kLimit, kLimit));
+  int w = int(t.width), h = int(t.height);
+  int xa = wrapTexel(x0, w, t.wrap), xb = wrapTexel(x0 + 1, w, t.wrap);
+  int ya = wrapTexel(y0, h, t.wrap), yb = wrapTexel(y0 + 1, h, t.wrap);
+  Vec4 c00 = fetchTexel(arrays, t, xa, ya), c10 = fetchTexel(arrays, t, xb, ya);
+  Vec4 c01 = fetchTexel(arrays, t, xa, yb), c11 = fetchTexel(arrays, t, xb, yb);
+  auto mix = [&](float a, float b, float c, float d) { return (a * (1 - fx) + b * fx) * (1 - fy) + (c * (1 - fx) + d * fx) * fy; };
+  return {mix(c00.x, c10.x, c01.x, c11.x), mix(c00.y, c10.y, c01.y, c11.y), mix(c00.z, c10.z, c01.z, c11.z),
+          mix(c00.w, c10.w, c01.w, c11.w)};
+}
+
+}  // namespace candela

@@ -1,0 +1,61 @@
+#pragma once
+#include "kernel/interaction.h"
+#include "kernel/material.h"
+#include "kernel/scene_view.h"
+#include "kernel/texture.h"
+
+namespace candela {
+
+CANDELA_FN Vec4 lookup(const SceneView& scene, int32_t texture, Vec2 uv) {
+  return sampleTexture(scene.texels, texture, uv);
+}
+
+// Coverage at uv: opacity times the base colour texture's alpha times the opacity texture.
+CANDELA_FN float materialAlpha(const SceneView& scene, const Material& m, Vec2 uv) {
+  float alpha = m.opacity;
+  if (m.baseColorTexture != kNoTexture) alpha *= lookup(scene, m.baseColorTexture, uv).w;
+  if (m.opacityTexture != kNoTexture) alpha *= lookup(scene, m.opacityTexture, uv).x;
+  return alpha;
+}
+
+// The material's parameters at uv with its textures applied; factors multiply texels as in glTF.
+CANDELA_FN Material evaluateMaterial(const SceneView& scene, const Material& stored, Vec2 uv) {
+  Material m = stored;
+  if (m.baseColorTexture != kNoTexture) {
+    Vec4 c = lookup(scene, m.baseColorTexture, uv);
+    m.baseColor *= Vec3{c.x, c.y, c.z};
+  }
+  if (m.metallicRoughnessTexture != kNoTexture) {
+    Vec4 c = lookup(scene, m.metallicRoughnessTexture, uv);
+    m.roughness *= c.y;
+    m.metallic *= c.z;
+  }
+  if (m.roughnessTexture != kNoTexture) m.roughness *= lookup(scene, m.roughnessTexture, uv).x;
+  if (m.metallicTexture != kNoTexture) m.metallic *= lookup(scene, m.metallicTexture, uv).x;
+  if (m.emissionTexture != kNoTexture) {
+    Vec4 c = lookup(scene, m.emissionTexture, uv);
+    m.emission *= Vec3{c.x, c.y, c.z};
+  }
+  return m;
+}
+
+// Bends the shading normal by a tangent-space normal map, the way MikkTSpace-baked maps expect: bitangent =
+// sign * cross(normal, tangent) from the interpolated vectors, texel (r, g, b) in [0, 1] as (x, y, z) in
+// [-1, 1]. The tangent is re-orthogonalised against the new normal so anisotropic lobes follow it. A perturbed
+// normal that would face away from the geometric normal is ignored.
+CANDELA_FN void applyNormalMap(const SceneView& scene, const Material& m, SurfaceInteraction& si) {
+  if (m.normalTexture == kNoTexture || dot(si.tangent, si.tangent) == 0.0f) return;
+  Vec4 c = lookup(scene, m.normalTexture, si.uv);
+  Vec3 tn{2.0f * c.x - 1.0f, 2.0f * c.y - 1.0f, 2.0f * c.z - 1.0f};
+  Vec3 n = si.shadingNormal;
+  Vec3 b = cross(n, si.tangent) * si.bitangentSign;
+  Vec3 mapped = si.tangent * tn.x + b * tn.y + n * tn.z;
+  float len = length(mapped);
+  if (!(len > 0.0f)) return;
+  mapped = mapped / len;
+  if (dot(mapped, si.geometricNormal) <= 0.0f) return;
+  si.shadingNormal = mapped;
+  si.tangent = si.tangent - mapped * dot(mapped, si.tangent);
+}
+
+}  // namespace candela

@@ -1,0 +1,113 @@
+#include "scene/material_overrides.h"
+
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+#include "kernel/bsdf/blinn_phong.h"
+
+namespace candela {
+
+namespace {
+
+constexpr std::array<OverrideParameter, 9> kParameters = {{
+    {"specular", &MaterialOverrides::specular, &Material::specular, 0.0f, 1.0f},
+    {"roughness", &MaterialOverrides::roughness, &Material::roughness, 0.0f, 1.0f},
+    {"metallic", &MaterialOverrides::metallic, &Material::metallic, 0.0f, 1.0f},
+    {"subsurface", &MaterialOverrides::subsurface, &Material::subsurface, 0.0f, 1.0f},
+    {"specularTint", &MaterialOverrides::specularTint, &Material::specularTint, 0.0f, 1.0f},
+    {"sheen", &MaterialOverrides::sheen, &Material::sheen, 0.0f, 1.0f},
+    {"sheenTint", &MaterialOverrides::sheenTint, &Material::sheenTint, 0.0f, 1.0f},
+    {"clearcoat", &MaterialOverrides::clearcoat, &Material::clearcoat, 0.0f, 1.0f},
+    {"clearcoatGloss", &MaterialOverrides::clearcoatGloss, &Material::clearcoatGloss, 0.0f, 1.0f},
+}};
+
+std::string parameterList() {
+  std::string list;
+  for (const OverrideParameter& p : kParameters) list += (list.empty() ? "" : ", ") + std::string(p.name);
+  return list;
+}
+
+MaterialType modelType(ShadingModel model) {
+  switch (model) {
+    case ShadingModel::BlinnPhong: return MaterialType::BlinnPhong;
+    case ShadingModel::Pbr: return MaterialType::Pbr;
+    case ShadingModel::Disney: return MaterialType::Disney;
+    case ShadingModel::Own: break;
+  }
+  throw std::logic_error("no material type for the material's own model");
+}
+
+}  // namespace
+
+std::span<const OverrideParameter> overrideParameters() { return kParameters; }
+
+void setOverride(MaterialOverrides& overrides, const std::string& name, float value) {
+  for (const OverrideParameter& p : kParameters) {
+    if (name != p.name) continue;
+    if (!(value >= p.min && value <= p.max))
+      throw std::invalid_argument("override '" + name + "' must lie in [" + std::to_string(p.min) + ", " +
+                                  std::to_string(p.max) + "]");
+    overrides.*p.field = value;
+    return;
+  }
+  throw std::invalid_argument("unknown override '" + name + "' (known: " + parameterList() + ")");
+}
+
+void parseOverride(MaterialOverrides& overrides, const std::string& assignment) {
+  size_t eq = assignment.find('=');
+  if (eq == std::string::npos) throw std::invalid_argument("override '" + assignment + "' is not name=value");
+  std::string name = assignment.substr(0, eq), text = assignment.substr(eq + 1);
+  size_t used = 0;
+  float value = 0.0f;
+  try {
+    value = std::stof(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (text.empty() || used != text.size() || !std::isfinite(value))
+    throw std::invalid_argument("override '" + name + "' needs a number, not '" + text + "'");
+  setOverride(overrides, name, value);
+}
+
+ShadingModel parseShadingModel(const std::string& name) {
+  if (name == "phong") return ShadingModel::BlinnPhong;
+  if (name == "pbr") return ShadingModel::Pbr;
+  if (name == "disney") return ShadingModel::Disney;
+  throw std::invalid_argument("unknown shading model '" + name + "' (phong, pbr or disney)");
+}
+
+Material applyOverrides(Material m, const MaterialOverrides& o) {
+  if (m.type == MaterialType::Mirror || m.type == MaterialType::Glass) return m;
+  MaterialType target = o.shading == ShadingModel::Own ? m.type : modelType(o.shading);
+  bool fromPhong = m.type == MaterialType::BlinnPhong;
+  if (fromPhong && target != MaterialType::BlinnPhong) {
+    m.roughness = phongExponentToRoughness(m.shininess);
+    m.specular = clampf(luminance(m.specularColor) / 0.08f, 0.0f, 1.0f);
+    m.metallic = 0.0f;
+  }
+  for (const OverrideParameter& p : kParameters)
+    if (o.*p.field) m.*p.materialField = *(o.*p.field);
+  if (target == MaterialType::BlinnPhong) {
+    if (!fromPhong) {
+      m.specularColor = lerp(m.metallic, Vec3{1, 1, 1} * (0.08f * m.specular), m.baseColor);
+      m.baseColor *= 1.0f - m.metallic;
+      m.shininess = roughnessToPhongExponent(m.roughness);
+    } else {
+      if (o.roughness) m.shininess = roughnessToPhongExponent(*o.roughness);
+      if (o.specular) m.specularColor = Vec3{1, 1, 1} * (0.08f * *o.specular);
+      if (o.metallic) {
+        m.specularColor = lerp(*o.metallic, m.specularColor, m.baseColor);
+        m.baseColor *= 1.0f - *o.metallic;
+      }
+    }
+  }
+  m.type = target;
+  return m;
+}
+
+void applyOverrides(std::vector<Material>& materials, const MaterialOverrides& overrides) {
+  for (Material& m : materials) m = applyOverrides(m, overrides);
+}
+
+}  // namespace candela
