@@ -20,7 +20,9 @@ namespace {
 void addRenderOptions(CLI::App& cmd, RenderJob& job) {
   std::string scenes;
   for (const std::string& n : builtinSceneNames()) scenes += (scenes.empty() ? "" : ", ") + n;
-  cmd.add_option("scene", job.sceneSpec, "Built-in scene name (" + scenes + ")")->capture_default_str();
+  cmd.add_option("scene", job.sceneSpec, "Scene file (.obj, .gltf, .glb, .json) or built-in scene (" + scenes + ")")
+      ->capture_default_str();
+  cmd.add_option("--env", job.environmentPath, "Environment map (.hdr or .exr) that lights the scene");
   cmd.add_option("--spp", job.samplesPerPixel, "Samples per pixel")
       ->check(CLI::Range(1u, 1u << 24))
       ->capture_default_str();

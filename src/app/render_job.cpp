@@ -46,7 +46,7 @@ RenderOutcome runRenderJob(const RenderJob& job, bool showProgress) {
     throw std::runtime_error("--denoise optix needs the OptiX backend, which is not in this build (see README, "
                              "'GPU backend')");
 #endif
-  Scene scene = loadScene(job.sceneSpec);
+  Scene scene = loadScene(job.sceneSpec, {job.environmentPath});
   applyOverrides(scene.materials, job.materialOverrides);
   std::string why;
   std::unique_ptr<Backend> backend = createBackend(job.backend, why);

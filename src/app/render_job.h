@@ -9,6 +9,7 @@ namespace candela {
 
 struct RenderJob {
   std::string sceneSpec = "cornell-box";
+  std::string environmentPath;  // replaces the scene's environment when set
   RenderSettings settings;
   uint32_t samplesPerPixel = 64;
   std::string backend = "auto";

@@ -1,17 +1,74 @@
 #include "app/scene_loading.h"
 
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
 #include <stdexcept>
 
 #include "scene/builtin_scenes.h"
+#include "scene/loaders/gltf_loader.h"
+#include "scene/loaders/image_decoding.h"
+#include "scene/loaders/load_diagnostics.h"
+#include "scene/loaders/obj_loader.h"
 
 namespace candela {
 
-Scene loadScene(const std::string& spec) {
-  Scene scene;
-  if (makeBuiltinScene(spec, scene)) return scene;
+namespace {
+
+std::string lowerExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+Scene loadSceneFile(const std::string& path, LoadWarnings& warnings) {
+  std::string ext = lowerExtension(path);
+  if (ext == ".obj") return loadObj(path, warnings);
+  if (ext == ".gltf" || ext == ".glb") return loadGltf(path, warnings);
   std::string names;
   for (const std::string& n : builtinSceneNames()) names += (names.empty() ? "" : ", ") + n;
-  throw std::runtime_error("unknown scene '" + spec + "' (built-in scenes: " + names + ")");
+  if (!std::filesystem::exists(path))
+    throw std::runtime_error("unknown scene '" + path + "': not a file, nor a built-in scene (" + names + ")");
+  throw std::runtime_error(path + ": unknown scene format '" + ext + "' (use .obj, .gltf or .glb, or a built-in scene: " + names +
+                           ")");
+}
+
+}  // namespace
+
+void frameSceneBounds(Scene& scene) {
+  Vec3 lo{kInf, kInf, kInf}, hi{-kInf, -kInf, -kInf};
+  for (const Instance& inst : scene.instances)
+    for (Vec3 p : scene.meshes[inst.meshId].positions) {
+      Vec3 w = inst.objectToWorld.point(p);
+      lo = {std::min(lo.x, w.x), std::min(lo.y, w.y), std::min(lo.z, w.z)};
+      hi = {std::max(hi.x, w.x), std::max(hi.y, w.y), std::max(hi.z, w.z)};
+    }
+  if (!(lo.x <= hi.x)) return;  // nothing to frame
+  Vec3 centre = (lo + hi) * 0.5f;
+  float radius = std::max(0.5f * length(hi - lo), 1e-3f);
+  CameraDescription& c = scene.camera;
+  c.verticalFovDegrees = 40.0f;
+  float distance = 1.1f * radius / std::sin(0.5f * c.verticalFovDegrees * kPi / 180.0f);
+  c.target = centre;
+  c.eye = centre + normalize(Vec3{0.0f, 0.3f, 1.0f}) * distance;
+  c.up = {0, 1, 0};
+  c.apertureRadius = 0.0f;
+  c.focusDistance = 0.0f;
+  scene.cameraMissing = false;
+}
+
+Scene loadScene(const std::string& spec, const SceneLoadOptions& options) {
+  Scene scene;
+  LoadWarnings warnings;
+  if (!makeBuiltinScene(spec, scene)) scene = loadSceneFile(spec, warnings);
+  if (!options.environmentPath.empty()) {
+    Environment env;
+    env.map = loadEnvironmentImage(options.environmentPath);
+    scene.environment = std::move(env);
+  }
+  for (const std::string& w : warnings.messages) std::fprintf(stderr, "candela: warning: %s\n", w.c_str());
+  if (scene.cameraMissing) frameSceneBounds(scene);
+  return scene;
 }
 
 }  // namespace candela

@@ -88,7 +88,7 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
     ++result.rays;
     if (!tracer.intersect(ray, hit)) {
       Vec3 le = environmentRadiance(scene, ray.direction);
-      if (!isBlack(le)) {
+      if (!isBlack(le) && (depth > 0 || scene.environment.visibleToCamera)) {
         float w = (depth == 0 || specularBounce) ? 1.0f : powerHeuristic(bsdfPdf, environmentPdf(scene, ray.direction));
         result.radiance += beta * le * w;
       }
@@ -175,7 +175,9 @@ CANDELA_HD PathResult renderPixelSample(const SceneView& scene, const Tracer& tr
                                         uint32_t sampleIndex) {
   PathSampler sampler(y * settings.width + x, sampleIndex, settings.seed);
   float jx = sampler.next1D(), jy = sampler.next1D();
-  Ray ray = camera.generateRay(float(x) + jx, float(y) + jy, int(settings.width), int(settings.height));
+  Vec2 uLens;
+  if (camera.lensRadius > 0.0f) uLens = {sampler.next1D(), sampler.next1D()};
+  Ray ray = camera.generateRay(float(x) + jx, float(y) + jy, int(settings.width), int(settings.height), uLens);
   return tracePath(scene, tracer, ray, sampler, settings);
 }
 

@@ -15,12 +15,14 @@ struct LightSample {
 };
 
 // Environment radiance arriving along `direction` (pointing away from the scene).
-CANDELA_FN Vec3 environmentRadiance(const SceneView& scene, Vec3 /*direction*/) {
-  return scene.environment.radiance;
+CANDELA_FN Vec3 environmentRadiance(const SceneView& scene, Vec3 direction) {
+  return environmentRadiance(scene.environment, direction);
 }
 
-CANDELA_FN float environmentPdf(const SceneView& scene, Vec3 /*direction*/) {
-  return scene.environmentSelectProbability * uniformSpherePdf();
+// Solid-angle density with which sampleLight() picks `direction` on the environment, selection included.
+CANDELA_FN float environmentPdf(const SceneView& scene, Vec3 direction) {
+  if (scene.environmentSelectProbability == 0.0f) return 0.0f;
+  return scene.environmentSelectProbability * environmentDirectionPdf(scene.environment, direction);
 }
 
 // Solid-angle density with which sampleLight() picks a point on an emissive triangle seen from `from`.
@@ -37,9 +39,10 @@ CANDELA_FN LightSample sampleLight(const SceneView& scene, Vec3 from, float uSel
   LightSample ls;
   float pEnv = scene.environmentSelectProbability;
   if (uSelect < pEnv) {
-    ls.wi = sampleUniformSphere(u);
+    EnvironmentSample es = sampleEnvironment(scene.environment, u);
+    ls.wi = es.direction;
     ls.radiance = environmentRadiance(scene, ls.wi);
-    ls.pdf = environmentPdf(scene, ls.wi);
+    ls.pdf = pEnv * es.pdf;
     ls.valid = ls.pdf > 0.0f;
     return ls;
   }

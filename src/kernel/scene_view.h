@@ -2,6 +2,7 @@
 #include <cstdint>
 
 #include "core/math.h"
+#include "kernel/environment.h"
 #include "kernel/material.h"
 #include "kernel/texture.h"
 
@@ -33,10 +34,6 @@ struct LightTriangle {
   uint32_t primitiveId = 0;
 };
 
-struct Environment {
-  Vec3 radiance{0, 0, 0};  // constant radiance from every direction
-};
-
 // Everything kernel code reads about a scene: plain pointers into host or device memory.
 struct SceneView {
   const Vec3* positions = nullptr;  // object space, all meshes back to back
@@ -56,7 +53,7 @@ struct SceneView {
   uint32_t lightCount = 0;
   float lightAreaPdfScale = 0.0f;  // pi / total emitted power: triangle area pdf = scale * luminance(Le)
   float environmentSelectProbability = 0.0f;
-  Environment environment;
+  EnvironmentView environment;
 };
 
 }  // namespace candela

@@ -1,5 +1,7 @@
 #include "scene/flat_scene.h"
 
+#include <cmath>
+
 #include "scene/tangents.h"
 #include "scene/transform.h"
 
@@ -38,7 +40,9 @@ void buildLightTable(const Scene& scene, FlatScene& flat) {
     flat.lightCdf.back() = 1.0f;
     flat.lightAreaPdfScale = float(kPi / totalPower);
   }
-  bool environmentEmits = !isBlack(flat.environment.radiance);
+  bool environmentEmits = flat.environmentTexels.empty() ? !isBlack(flat.environment.scale)
+                                                         : flat.environmentDistribution.funcAverage > 0.0f &&
+                                                               !isBlack(flat.environment.scale);
   flat.environmentSelectProbability = environmentEmits ? (flat.lights.empty() ? 1.0f : 0.5f) : 0.0f;
 }
 
@@ -73,13 +77,31 @@ void packTextures(const Scene& scene, FlatScene& flat) {
   }
 }
 
+void buildEnvironment(const Environment& env, FlatScene& flat) {
+  EnvironmentView& view = flat.environment;
+  float angle = env.rotationDegrees * kPi / 180.0f;
+  view.rotationCos = std::cos(angle);
+  view.rotationSin = std::sin(angle);
+  view.visibleToCamera = env.visibleToCamera ? 1u : 0u;
+  if (!env.hasMap()) {
+    view.scale = env.radiance * env.intensity;
+    return;
+  }
+  view.scale = Vec3{1, 1, 1} * env.intensity;
+  view.width = env.map.width;
+  view.height = env.map.height;
+  flat.environmentTexels = environmentTexels(env.map);
+  flat.environmentDistribution = EnvironmentDistribution::build(flat.environmentTexels, view.width, view.height);
+  view.funcAverage = flat.environmentDistribution.funcAverage;
+}
+
 }  // namespace
 
 FlatScene FlatScene::build(const Scene& scene) {
   validateScene(scene);
   FlatScene flat;
   flat.materials = scene.materials;
-  flat.environment = scene.environment;
+  buildEnvironment(scene.environment, flat);
   for (const Mesh& mesh : scene.meshes) {
     MeshRecord record;
     record.firstVertex = uint32_t(flat.positions.size());
@@ -138,6 +160,12 @@ SceneView FlatScene::hostView() const {
   v.lightAreaPdfScale = lightAreaPdfScale;
   v.environmentSelectProbability = environmentSelectProbability;
   v.environment = environment;
+  if (!environmentTexels.empty()) {
+    v.environment.texels = environmentTexels.data();
+    v.environment.func = environmentDistribution.func.data();
+    v.environment.conditionalCdf = environmentDistribution.conditionalCdf.data();
+    v.environment.marginalCdf = environmentDistribution.marginalCdf.data();
+  }
   return v;
 }
 

@@ -2,6 +2,7 @@
 #include <vector>
 
 #include "kernel/scene_view.h"
+#include "scene/environment_distribution.h"
 #include "scene/scene.h"
 
 namespace candela {
@@ -26,7 +27,11 @@ struct FlatScene {
   std::vector<float> lightCdf;
   float lightAreaPdfScale = 0.0f;
   float environmentSelectProbability = 0.0f;
-  Environment environment;
+  // The environment's parameters; its pointers are set by hostView() (or by a backend, to device copies of
+  // the arrays below).
+  EnvironmentView environment;
+  std::vector<Vec3> environmentTexels;  // empty for a constant environment
+  EnvironmentDistribution environmentDistribution;
 
   static FlatScene build(const Scene& scene);
 

@@ -45,8 +45,27 @@ struct CameraDescription {
   Vec3 target{0, 0, 1};
   Vec3 up{0, 1, 0};
   float verticalFovDegrees = 40.0f;
+  float apertureRadius = 0.0f;  // 0: pinhole
+  float focusDistance = 0.0f;   // 0: the distance from eye to target
 
-  Camera toCamera(float aspect) const { return Camera::lookAt(eye, target, up, verticalFovDegrees, aspect); }
+  Camera toCamera(float aspect) const {
+    Camera c = Camera::lookAt(eye, target, up, verticalFovDegrees, aspect);
+    c.lensRadius = apertureRadius;
+    c.focusDistance = focusDistance > 0.0f ? focusDistance : length(target - eye);
+    return c;
+  }
+};
+
+// Light from infinitely far away: a constant `radiance`, or an equirectangular `map` (float RGB, top row the
+// zenith, see kernel/environment.h for the orientation) scaled by `intensity` and turned about +Y.
+struct Environment {
+  Vec3 radiance{0, 0, 0};  // used when `map` is empty
+  Texture map;
+  float intensity = 1.0f;
+  float rotationDegrees = 0.0f;
+  bool visibleToCamera = true;
+
+  bool hasMap() const { return map.width > 0 && map.height > 0; }
 };
 
 // A scene as loaders produce it and backends consume it.
@@ -58,6 +77,7 @@ struct Scene {
   std::vector<Texture> textures;
   Environment environment;
   CameraDescription camera;
+  bool cameraMissing = false;  // the input had no camera: `camera` is to be framed around the scene's bounds
 
   size_t triangleCount() const;  // over instances
 };

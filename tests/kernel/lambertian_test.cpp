@@ -35,7 +35,7 @@ TEST_P(LambertianAtAngle, SamplesMatchThePdf) {
   // Bins are laid out in the shading frame so that the hemisphere boundary falls on a bin edge.
   test::Chi2Result r = test::chi2TestSphere(
       [&](double u1, double u2, double) -> std::optional<Vec3> {
-        BsdfSample s = bsdf.sample(wo, {float(u1), float(u2)});
+        BsdfSample s = bsdf.sample(wo, 0.5f, {float(u1), float(u2)});
         if (!s.valid) return std::nullopt;
         return frame.toLocal(s.wi);
       },
@@ -49,7 +49,7 @@ TEST_P(LambertianAtAngle, SampleAgreesWithEvalAndPdf) {
   Bsdf bsdf = whiteLambertian(n);
   Vec3 wo = directionAt(GetParam());
   for (uint32_t i = 0; i < 1000; ++i) {
-    BsdfSample s = bsdf.sample(wo, {randomUniform(i, 0, 0, 1), randomUniform(i, 0, 1, 1)});
+    BsdfSample s = bsdf.sample(wo, 0.5f, {randomUniform(i, 0, 0, 1), randomUniform(i, 0, 1, 1)});
     ASSERT_TRUE(s.valid);
     EXPECT_NEAR(s.pdf, bsdf.pdf(wo, s.wi), 1e-5f);
     Vec3 f = bsdf.eval(wo, s.wi);
@@ -65,7 +65,7 @@ TEST_P(LambertianAtAngle, WhiteAlbedoIsOne) {
   double sum = 0.0;
   const int n = 10000;
   for (uint32_t i = 0; i < n; ++i) {
-    BsdfSample s = bsdf.sample(wo, {randomUniform(i, 0, 0, 2), randomUniform(i, 0, 1, 2)});
+    BsdfSample s = bsdf.sample(wo, 0.5f, {randomUniform(i, 0, 0, 2), randomUniform(i, 0, 1, 2)});
     if (s.valid) sum += double(s.f.x) * s.wi.z / s.pdf;
   }
   EXPECT_NEAR(sum / n, 1.0, 1e-4);

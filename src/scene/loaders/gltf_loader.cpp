@@ -1,0 +1,460 @@
+#include "scene/loaders/gltf_loader.h"
+
+#include <tiny_gltf.h>
+
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/mat4x4.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <map>
+#include <sstream>
+
+#include "scene/loaders/file_bytes.h"
+#include "scene/loaders/gltf_accessors.h"
+#include "scene/loaders/gltf_materials.h"
+#include "scene/loaders/texture_table.h"
+#include "scene/transform.h"
+
+namespace candela {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kMaxJsonDepth = 128;     // deeper JSON is not a plausible glTF and would exhaust the stack
+constexpr int kMaxNodeDepth = 1024;    // a deeper node hierarchy is taken for a cycle
+
+// The deepest nesting of arrays and objects in JSON text (strings skipped).
+int jsonDepth(const char* p, size_t n) {
+  int depth = 0, deepest = 0;
+  bool inString = false;
+  for (size_t i = 0; i < n; ++i) {
+    char c = p[i];
+    if (inString) {
+      if (c == '\\') ++i;
+      else if (c == '"') inString = false;
+    } else if (c == '"') {
+      inString = true;
+    } else if (c == '[' || c == '{') {
+      deepest = std::max(deepest, ++depth);
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+  return deepest;
+}
+
+bool isGlb(const uint8_t* data, size_t size) { return size >= 4 && std::memcmp(data, "glTF", 4) == 0; }
+
+// The JSON chunk of a .glb, or nothing when the header is too short to say.
+std::pair<const char*, size_t> glbJson(const uint8_t* data, size_t size) {
+  if (size < 20) return {nullptr, 0};
+  uint32_t length;
+  std::memcpy(&length, data + 12, 4);
+  return {reinterpret_cast<const char*>(data + 20), std::min<size_t>(length, size - 20)};
+}
+
+std::string firstLine(const std::string& s) {
+  std::string line = s.substr(0, s.find('\n'));
+  while (!line.empty() && (line.back() == ' ' || line.back() == '.')) line.pop_back();
+  return line;
+}
+
+std::string percentDecode(const std::string& uri) {
+  std::string out;
+  for (size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit((unsigned char)uri[i + 1]) &&
+        std::isxdigit((unsigned char)uri[i + 2])) {
+      out += char(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    } else {
+      out += uri[i];
+    }
+  }
+  return out;
+}
+
+struct FileAccess {
+  std::string baseDir;  // empty: nothing outside the given bytes may be read
+};
+
+bool fileExists(const std::string& path, void* user) {
+  auto* access = static_cast<FileAccess*>(user);
+  std::error_code ec;
+  return !access->baseDir.empty() && fs::is_regular_file(path, ec);
+}
+std::string expandFilePath(const std::string& path, void*) { return path; }
+bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+  if (static_cast<FileAccess*>(user)->baseDir.empty()) return false;
+  try {
+    *out = readFileBytes(path);
+    return true;
+  } catch (const LoadError& e) {
+    if (err) *err += e.what();
+    return false;
+  }
+}
+bool writeWholeFile(std::string*, const std::string&, const std::vector<unsigned char>&, void*) { return false; }
+
+// Keeps the encoded image; TextureTable decodes it later, in parallel with the other textures.
+bool keepEncodedImage(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                      const unsigned char* bytes, int size, void*) {
+  image->image.assign(bytes, bytes + size);
+  image->as_is = true;
+  return true;
+}
+
+glm::mat4 localTransform(const tinygltf::Node& node) {
+  if (node.matrix.size() == 16) {
+    float m[16];
+    for (int i = 0; i < 16; ++i) m[i] = float(node.matrix[size_t(i)]);
+    return glm::make_mat4(m);
+  }
+  glm::mat4 t(1.0f), r(1.0f), s(1.0f);
+  if (node.translation.size() == 3)
+    t = glm::translate(glm::mat4(1.0f), glm::vec3(node.translation[0], node.translation[1], node.translation[2]));
+  if (node.rotation.size() == 4)
+    r = glm::mat4_cast(glm::quat(float(node.rotation[3]), float(node.rotation[0]), float(node.rotation[1]),
+                                 float(node.rotation[2])));
+  if (node.scale.size() == 3) s = glm::scale(glm::mat4(1.0f), glm::vec3(node.scale[0], node.scale[1], node.scale[2]));
+  return t * r * s;
+}
+
+class GltfSceneBuilder {
+ public:
+  GltfSceneBuilder(const tinygltf::Model& model, std::string file, std::string baseDir, LoadWarnings& warnings)
+      : model_(model), file_(std::move(file)), baseDir_(std::move(baseDir)), warnings_(warnings), accessors_(model, file_) {}
+
+  Scene build() {
+    scene_.name = fs::path(file_).stem().string();
+    for (size_t i = 0; i < model_.materials.size(); ++i) {
+      GltfMaterial m = materialFromGltf(model_, int(i), file_, [this](int t, bool srgb) { return texture(t, srgb); },
+                                        warnings_);
+      scene_.materials.push_back(m.material);
+      uvTransforms_.push_back(m.uvTransform);
+    }
+    std::vector<int> roots;
+    int sceneIndex = model_.defaultScene >= 0 ? model_.defaultScene : (model_.scenes.empty() ? -1 : 0);
+    if (sceneIndex >= 0 && size_t(sceneIndex) < model_.scenes.size()) {
+      roots = model_.scenes[size_t(sceneIndex)].nodes;
+    } else {
+      // No scene: every node that is nobody's child is a root.
+      std::vector<bool> isChild(model_.nodes.size());
+      for (const auto& n : model_.nodes)
+        for (int c : n.children)
+          if (c >= 0 && size_t(c) < isChild.size()) isChild[size_t(c)] = true;
+      for (size_t i = 0; i < model_.nodes.size(); ++i)
+        if (!isChild[i]) roots.push_back(int(i));
+    }
+    for (int r : roots) visit(r, glm::mat4(1.0f), 0, "scenes[" + std::to_string(std::max(sceneIndex, 0)) + "].nodes");
+    if (scene_.instances.empty()) failLoad(file_, "has no meshes to render");
+    if (punctualLights_ > 0)
+      warnings_.add(file_, std::to_string(punctualLights_) +
+                               " KHR_lights_punctual lights are ignored: only emissive surfaces and the environment "
+                               "emit light in candela");
+    if (skinned_) warnings_.add(file_, "skins are ignored; meshes are loaded in their bind pose");
+    textures_.finish(scene_, 0, warnings_);
+    scene_.cameraMissing = !cameraFound_;
+    return std::move(scene_);
+  }
+
+ private:
+  void visit(int index, const glm::mat4& parent, int depth, const std::string& from) {
+    if (index < 0 || size_t(index) >= model_.nodes.size())
+      failLoad(file_, from + ": node " + std::to_string(index) + " does not exist");
+    std::string where = "nodes[" + std::to_string(index) + "]";
+    if (depth > kMaxNodeDepth) failLoad(file_, where + ": the node hierarchy is too deep or has a cycle");
+    const tinygltf::Node& node = model_.nodes[size_t(index)];
+    glm::mat4 world = parent * localTransform(node);
+    for (int i = 0; i < 16; ++i)
+      if (!std::isfinite(glm::value_ptr(world)[i])) failLoad(file_, where + ": transform is not finite");
+    if (node.mesh >= 0) {
+      if (size_t(node.mesh) >= model_.meshes.size())
+        failLoad(file_, where + ".mesh: mesh " + std::to_string(node.mesh) + " does not exist");
+      bool mirrored = glm::determinant(glm::mat3(world)) < 0.0f;
+      if (std::optional<uint32_t> mesh = meshFor(node.mesh, mirrored)) scene_.instances.push_back({*mesh, toAffine(world)});
+    }
+    if (node.camera >= 0 && !cameraFound_) takeCamera(node.camera, world, where);
+    if (node.extensions.count("KHR_lights_punctual")) ++punctualLights_;
+    if (node.skin >= 0) skinned_ = true;
+    for (size_t c = 0; c < node.children.size(); ++c)
+      visit(node.children[c], world, depth + 1, where + ".children");
+  }
+
+  void takeCamera(int index, const glm::mat4& world, const std::string& where) {
+    if (size_t(index) >= model_.cameras.size())
+      failLoad(file_, where + ".camera: camera " + std::to_string(index) + " does not exist");
+    const tinygltf::Camera& c = model_.cameras[size_t(index)];
+    if (c.type != "perspective") {
+      warnings_.add(file_, "cameras[" + std::to_string(index) + "] is " + c.type + "; only perspective cameras are used");
+      return;
+    }
+    glm::vec3 eye = world * glm::vec4(0, 0, 0, 1);
+    glm::vec3 forward = glm::normalize(glm::vec3(world * glm::vec4(0, 0, -1, 0)));
+    glm::vec3 up = glm::normalize(glm::vec3(world * glm::vec4(0, 1, 0, 0)));
+    float yfov = float(c.perspective.yfov) * 180.0f / kPi;
+    CameraDescription& d = scene_.camera;
+    d.eye = {eye.x, eye.y, eye.z};
+    d.target = {eye.x + forward.x, eye.y + forward.y, eye.z + forward.z};
+    d.up = {up.x, up.y, up.z};
+    d.verticalFovDegrees = std::isfinite(yfov) && yfov > 0.0f && yfov < 180.0f ? yfov : 40.0f;
+    if (!isFinite(d.eye) || !isFinite(d.target) || !isFinite(d.up)) return;
+    cameraFound_ = true;
+  }
+
+  std::optional<uint32_t> meshFor(int gltfMesh, bool mirrored) {
+    auto& cache = mirrored ? mirroredMeshes_ : meshes_;
+    auto it = cache.find(gltfMesh);
+    if (it != cache.end()) return it->second;
+    std::optional<uint32_t> id;
+    auto plain = meshes_.find(gltfMesh);
+    Mesh mesh;
+    if (plain != meshes_.end() && plain->second) {
+      mesh = scene_.meshes[*plain->second];
+    } else {
+      mesh = convertMesh(gltfMesh);
+    }
+    if (mesh.triangleCount() > 0) {
+      if (mirrored) {
+        for (size_t t = 0; t < mesh.triangleCount(); ++t) std::swap(mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]);
+        mesh.name += " (mirrored)";
+      }
+      id = uint32_t(scene_.meshes.size());
+      scene_.meshes.push_back(std::move(mesh));
+    }
+    cache[gltfMesh] = id;
+    return id;
+  }
+
+  uint32_t defaultMaterial() {
+    if (!defaultMaterial_) {
+      Material m;  // glTF's default material: white, fully metallic, fully rough
+      m.type = MaterialType::Pbr;
+      m.baseColor = {1, 1, 1};
+      m.metallic = 1.0f;
+      m.roughness = 1.0f;
+      m.doubleSided = 0;
+      defaultMaterial_ = uint32_t(scene_.materials.size());
+      scene_.materials.push_back(m);
+    }
+    return *defaultMaterial_;
+  }
+
+  Mesh convertMesh(int meshIndex) {
+    const tinygltf::Mesh& gm = model_.meshes[size_t(meshIndex)];
+    struct Part {
+      std::vector<Vec3> positions, normals;
+      std::vector<Vec2> uvs;
+      std::vector<Vec4> tangents;
+      std::vector<uint32_t> indices;
+      uint32_t material;
+    };
+    std::vector<Part> parts;
+    for (size_t p = 0; p < gm.primitives.size(); ++p) {
+      const tinygltf::Primitive& prim = gm.primitives[p];
+      std::string where = "meshes[" + std::to_string(meshIndex) + "].primitives[" + std::to_string(p) + "]";
+      if (prim.mode < TINYGLTF_MODE_TRIANGLES && prim.mode >= 0) {
+        warnings_.add(file_, where + ": points and lines are not rendered");
+        continue;
+      }
+      if (prim.mode > TINYGLTF_MODE_TRIANGLE_FAN) failLoad(file_, where + ".mode: unknown mode " + std::to_string(prim.mode));
+      if (!prim.targets.empty()) warnings_.add(file_, where + ": morph targets are ignored");
+      auto attribute = [&](const char* name) {
+        auto it = prim.attributes.find(name);
+        return it == prim.attributes.end() ? -1 : it->second;
+      };
+      int positionAccessor = attribute("POSITION");
+      if (positionAccessor < 0) failLoad(file_, where + ".attributes: POSITION is missing");
+      Part part;
+      part.positions = accessors_.readVec3(positionAccessor, where + ".attributes.POSITION");
+      size_t n = part.positions.size();
+      auto sameCount = [&](size_t count, const char* what) {
+        if (count != n)
+          failLoad(file_, where + ".attributes." + what + ": " + std::to_string(count) + " elements for " +
+                              std::to_string(n) + " positions");
+      };
+      if (int a = attribute("NORMAL"); a >= 0) {
+        part.normals = accessors_.readVec3(a, where + ".attributes.NORMAL");
+        sameCount(part.normals.size(), "NORMAL");
+      }
+      if (int a = attribute("TEXCOORD_0"); a >= 0) {
+        part.uvs = accessors_.readTexcoords(a, where + ".attributes.TEXCOORD_0");
+        sameCount(part.uvs.size(), "TEXCOORD_0");
+      }
+      if (int a = attribute("TANGENT"); a >= 0) {
+        part.tangents = accessors_.readVec4(a, where + ".attributes.TANGENT");
+        sameCount(part.tangents.size(), "TANGENT");
+      }
+      std::vector<uint32_t> indices;
+      if (prim.indices >= 0) {
+        indices = accessors_.readIndices(prim.indices, where + ".indices");
+        for (size_t i = 0; i < indices.size(); ++i)
+          if (indices[i] >= n)
+            failLoad(file_, where + ".indices: index " + std::to_string(indices[i]) + " (element " + std::to_string(i) +
+                                ") is beyond the " + std::to_string(n) + " vertices");
+      } else {
+        indices.resize(n);
+        for (size_t i = 0; i < n; ++i) indices[i] = uint32_t(i);
+      }
+      part.indices = toTriangleList(indices, prim.mode);
+      if (prim.material >= 0 && size_t(prim.material) >= model_.materials.size())
+        failLoad(file_, where + ".material: material " + std::to_string(prim.material) + " does not exist");
+      part.material = prim.material >= 0 ? uint32_t(prim.material) : defaultMaterial();
+      if (prim.material >= 0 && uvTransforms_[size_t(prim.material)])
+        for (Vec2& uv : part.uvs) uv = uvTransforms_[size_t(prim.material)]->apply(uv);
+      if (!part.indices.empty()) parts.push_back(std::move(part));
+    }
+
+    Mesh mesh;
+    mesh.name = gm.name.empty() ? "meshes[" + std::to_string(meshIndex) + "]" : gm.name;
+    bool anyNormals = false, allNormals = true, anyUvs = false, allTangents = !parts.empty();
+    for (const Part& p : parts) {
+      anyNormals |= !p.normals.empty();
+      allNormals &= !p.normals.empty();
+      anyUvs |= !p.uvs.empty();
+      allTangents &= !p.tangents.empty();
+    }
+    for (Part& p : parts) {
+      // glTF asks for flat shading where normals are missing; when other primitives of the mesh have normals,
+      // this primitive's triangles get their own vertices with the face normal.
+      if (anyNormals && !allNormals && p.normals.empty()) unweldWithFaceNormals(p.positions, p.uvs, p.tangents, p.indices, p.normals);
+      if (mesh.positions.size() + p.positions.size() > uint64_t(UINT32_MAX))
+        failLoad(file_, "meshes[" + std::to_string(meshIndex) + "]: too many vertices");
+      uint32_t base = uint32_t(mesh.positions.size());
+      mesh.positions.insert(mesh.positions.end(), p.positions.begin(), p.positions.end());
+      if (anyNormals) mesh.normals.insert(mesh.normals.end(), p.normals.begin(), p.normals.end());
+      if (anyUvs) {
+        if (p.uvs.empty()) p.uvs.resize(p.positions.size());
+        mesh.uvs.insert(mesh.uvs.end(), p.uvs.begin(), p.uvs.end());
+      }
+      if (allTangents) mesh.tangents.insert(mesh.tangents.end(), p.tangents.begin(), p.tangents.end());
+      for (uint32_t i : p.indices) mesh.indices.push_back(base + i);
+      mesh.triangleMaterials.insert(mesh.triangleMaterials.end(), p.indices.size() / 3, p.material);
+    }
+    return mesh;
+  }
+
+  static std::vector<uint32_t> toTriangleList(const std::vector<uint32_t>& in, int mode) {
+    std::vector<uint32_t> out;
+    if (mode == TINYGLTF_MODE_TRIANGLES || mode < 0) {
+      out.assign(in.begin(), in.begin() + std::ptrdiff_t(in.size() / 3 * 3));
+    } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+      for (size_t i = 2; i < in.size(); ++i) {
+        bool odd = i % 2 == 1;
+        out.insert(out.end(), {in[i - 2], odd ? in[i] : in[i - 1], odd ? in[i - 1] : in[i]});
+      }
+    } else {
+      for (size_t i = 2; i < in.size(); ++i) out.insert(out.end(), {in[0], in[i - 1], in[i]});
+    }
+    return out;
+  }
+
+  static void unweldWithFaceNormals(std::vector<Vec3>& positions, std::vector<Vec2>& uvs, std::vector<Vec4>& tangents,
+                                    std::vector<uint32_t>& indices, std::vector<Vec3>& normals) {
+    std::vector<Vec3> p;
+    std::vector<Vec2> uv;
+    std::vector<Vec4> tg;
+    for (size_t t = 0; t < indices.size() / 3; ++t) {
+      const uint32_t* c = &indices[3 * t];
+      Vec3 n = cross(positions[c[1]] - positions[c[0]], positions[c[2]] - positions[c[0]]);
+      float len = length(n);
+      for (int k = 0; k < 3; ++k) {
+        p.push_back(positions[c[k]]);
+        if (!uvs.empty()) uv.push_back(uvs[c[k]]);
+        if (!tangents.empty()) tg.push_back(tangents[c[k]]);
+        normals.push_back(len > 0.0f ? n / len : Vec3{});
+      }
+    }
+    for (size_t i = 0; i < indices.size(); ++i) indices[i] = uint32_t(i);
+    positions = std::move(p);
+    uvs = std::move(uv);
+    tangents = std::move(tg);
+  }
+
+  int32_t texture(int index, bool srgb) {
+    std::string where = "textures[" + std::to_string(index) + "]";
+    if (index < 0 || size_t(index) >= model_.textures.size()) {
+      warnings_.add(file_, where + " does not exist; the material is left untextured");
+      return kNoTexture;
+    }
+    const tinygltf::Texture& t = model_.textures[size_t(index)];
+    TextureWrap wrap = TextureWrap::Repeat;
+    if (t.sampler >= 0 && size_t(t.sampler) < model_.samplers.size()) {
+      int w = model_.samplers[size_t(t.sampler)].wrapS;
+      wrap = w == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE ? TextureWrap::Clamp
+             : w == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT ? TextureWrap::Mirror
+                                                          : TextureWrap::Repeat;
+    }
+    if (t.source < 0 || size_t(t.source) >= model_.images.size()) {
+      std::string ext = t.extensions.empty() ? "" : " (it uses " + t.extensions.begin()->first + ", which is not supported)";
+      warnings_.add(file_, where + " has no image" + ext + "; the material is left untextured");
+      return kNoTexture;
+    }
+    const tinygltf::Image& image = model_.images[size_t(t.source)];
+    std::string imageWhere = "images[" + std::to_string(t.source) + "]";
+    if (!image.image.empty())
+      return textures_.fromMemory(imageWhere, file_ + ": " + imageWhere, image.image, srgb, wrap);
+    if (!image.uri.empty() && !baseDir_.empty()) {
+      fs::path path = fs::path(baseDir_) / percentDecode(image.uri);
+      return textures_.fromFile(path.lexically_normal().string(), srgb, wrap);
+    }
+    warnings_.add(file_, imageWhere + " has no data; the material is left untextured");
+    return kNoTexture;
+  }
+
+  const tinygltf::Model& model_;
+  std::string file_;
+  std::string baseDir_;
+  LoadWarnings& warnings_;
+  GltfAccessorReader accessors_;
+  Scene scene_;
+  TextureTable textures_;
+  std::vector<std::optional<UvTransform>> uvTransforms_;
+  std::map<int, std::optional<uint32_t>> meshes_, mirroredMeshes_;
+  std::optional<uint32_t> defaultMaterial_;
+  bool cameraFound_ = false;
+  size_t punctualLights_ = 0;
+  bool skinned_ = false;
+};
+
+Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, const std::string& baseDir,
+                    LoadWarnings& warnings) {
+  if (size == 0) failLoad(name, "file is empty");
+  bool binary = isGlb(data, size);
+  auto [json, jsonSize] = binary ? glbJson(data, size) : std::pair{reinterpret_cast<const char*>(data), size};
+  if (json && jsonDepth(json, jsonSize) > kMaxJsonDepth)
+    failLoad(name, "JSON nests deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+
+  tinygltf::TinyGLTF loader;
+  FileAccess access{baseDir};
+  loader.SetFsCallbacks({&fileExists, &expandFilePath, &readWholeFile, &writeWholeFile, &access});
+  loader.SetImageLoader(&keepEncodedImage, nullptr);
+  tinygltf::Model model;
+  std::string err, warn;
+  bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, data, unsigned(std::min<size_t>(size, UINT32_MAX)), baseDir)
+                   : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(data),
+                                                unsigned(std::min<size_t>(size, UINT32_MAX)), baseDir);
+  if (!ok) failLoad(name, err.empty() ? "not a valid glTF file" : firstLine(err));
+  std::istringstream lines(warn);
+  std::string line;
+  while (std::getline(lines, line))
+    if (!firstLine(line).empty()) warnings.add(name, firstLine(line));
+  return GltfSceneBuilder(model, name, baseDir, warnings).build();
+}
+
+}  // namespace
+
+Scene loadGltf(const std::string& path, LoadWarnings& warnings) {
+  std::vector<uint8_t> bytes = readFileBytes(path);
+  std::string baseDir = fs::path(path).parent_path().string();
+  return loadFromBytes(path, bytes.data(), bytes.size(), baseDir.empty() ? "." : baseDir, warnings);
+}
+
+Scene loadGltfBytes(const std::string& name, const uint8_t* data, size_t size, LoadWarnings& warnings) {
+  return loadFromBytes(name, data, size, "", warnings);
+}
+
+}  // namespace candela

@@ -1,0 +1,24 @@
+#pragma once
+#include <cstdint>
+#include <string>
+
+#include "scene/loaders/load_diagnostics.h"
+#include "scene/scene.h"
+
+namespace candela {
+
+// Loads a glTF 2.0 file (.gltf with external or data-URI buffers and images, or binary .glb) through tinygltf.
+// Each glTF mesh becomes one Mesh (its primitives' triangles with per-triangle materials) and every node that
+// uses it an Instance with the node's world transform, so shared meshes are not copied; a node whose transform
+// mirrors (negative determinant) uses a copy of the mesh with its winding reversed, so that front faces and
+// emission sides stay as glTF defines them. The first camera met in the node hierarchy becomes the scene's camera.
+// KHR_lights_punctual lights cannot be rendered by the area-light model and are ignored with a warning; so are
+// skins and morph targets (the static pose is loaded). Materials: see gltf_materials.h. Invalid input throws
+// LoadError naming the file and the JSON path of the problem.
+Scene loadGltf(const std::string& path, LoadWarnings& warnings);
+
+// The same for a .gltf or .glb held in memory; external buffers and images are not read. `name` stands for the
+// file in messages.
+Scene loadGltfBytes(const std::string& name, const uint8_t* data, size_t size, LoadWarnings& warnings);
+
+}  // namespace candela

@@ -1,0 +1,167 @@
+#include "scene/loaders/gltf_materials.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace candela {
+
+bool UvTransform::operator==(const UvTransform& o) const { return std::equal(m, m + 6, o.m); }
+
+namespace {
+
+const tinygltf::Value* extension(const tinygltf::ExtensionMap& map, const char* name) {
+  auto it = map.find(name);
+  return it == map.end() ? nullptr : &it->second;
+}
+
+double number(const tinygltf::Value& object, const char* key, double fallback) {
+  if (!object.IsObject() || !object.Has(key)) return fallback;
+  const tinygltf::Value& v = object.Get(key);
+  return v.IsNumber() ? v.GetNumberAsDouble() : fallback;
+}
+
+std::vector<double> numbers(const tinygltf::Value& object, const char* key, std::vector<double> fallback) {
+  if (!object.IsObject() || !object.Has(key)) return fallback;
+  const tinygltf::Value& v = object.Get(key);
+  if (!v.IsArray() || v.ArrayLen() != fallback.size()) return fallback;
+  for (size_t i = 0; i < fallback.size(); ++i)
+    if (v.Get(int(i)).IsNumber()) fallback[i] = v.Get(int(i)).GetNumberAsDouble();
+  return fallback;
+}
+
+bool hasTexture(const tinygltf::Value& object, const char* key) {
+  return object.IsObject() && object.Has(key) && object.Get(key).IsObject();
+}
+
+float finiteOr(double x, float fallback) { return std::isfinite(x) ? float(x) : fallback; }
+
+UvTransform transformOf(const tinygltf::Value& t) {
+  std::vector<double> offset = numbers(t, "offset", {0, 0}), scale = numbers(t, "scale", {1, 1});
+  double rotation = number(t, "rotation", 0);
+  float c = float(std::cos(rotation)), s = float(std::sin(rotation));
+  float sx = finiteOr(scale[0], 1), sy = finiteOr(scale[1], 1);
+  // translation * rotation * scale, as the extension defines it.
+  UvTransform u;
+  u.m[0] = c * sx;
+  u.m[1] = s * sy;
+  u.m[2] = finiteOr(offset[0], 0);
+  u.m[3] = -s * sx;
+  u.m[4] = c * sy;
+  u.m[5] = finiteOr(offset[1], 0);
+  return u;
+}
+
+class TextureRefs {
+ public:
+  TextureRefs(const std::string& file, const std::string& where, const GltfTextureResolver& resolve,
+              LoadWarnings& warnings)
+      : file_(file), where_(where), resolve_(resolve), warnings_(warnings) {}
+
+  int32_t use(int index, int texCoord, const tinygltf::ExtensionMap& extensions, bool srgb, const char* slot) {
+    if (index < 0) return kNoTexture;
+    if (texCoord != 0) warn(std::string(slot) + " reads TEXCOORD_" + std::to_string(texCoord) + "; TEXCOORD_0 is used");
+    const tinygltf::Value* t = extension(extensions, "KHR_texture_transform");
+    transforms_.push_back(t ? transformOf(*t) : UvTransform{});
+    if (t && number(*t, "texCoord", 0) != 0) warn(std::string(slot) + "'s texture transform names another TEXCOORD");
+    return resolve_(index, srgb);
+  }
+
+  std::optional<UvTransform> commonTransform() {
+    if (transforms_.empty()) return std::nullopt;
+    for (const UvTransform& t : transforms_)
+      if (!(t == transforms_[0])) {
+        warn("textures have different KHR_texture_transform values, which are ignored");
+        return std::nullopt;
+      }
+    if (transforms_[0] == UvTransform{}) return std::nullopt;
+    return transforms_[0];
+  }
+
+  void warn(const std::string& what) { warnings_.add(file_, where_ + ": " + what); }
+
+ private:
+  const std::string& file_;
+  std::string where_;
+  const GltfTextureResolver& resolve_;
+  LoadWarnings& warnings_;
+  std::vector<UvTransform> transforms_;
+};
+
+}  // namespace
+
+GltfMaterial materialFromGltf(const tinygltf::Model& model, int index, const std::string& file,
+                              const GltfTextureResolver& texture, LoadWarnings& warnings) {
+  const tinygltf::Material& g = model.materials[size_t(index)];
+  TextureRefs refs(file, "materials[" + std::to_string(index) + "]", texture, warnings);
+  GltfMaterial out;
+  Material& m = out.material;
+  const auto& pbr = g.pbrMetallicRoughness;
+  m.type = MaterialType::Pbr;
+  if (pbr.baseColorFactor.size() == 4) {
+    m.baseColor = {finiteOr(pbr.baseColorFactor[0], 1), finiteOr(pbr.baseColorFactor[1], 1),
+                   finiteOr(pbr.baseColorFactor[2], 1)};
+    m.opacity = std::clamp(finiteOr(pbr.baseColorFactor[3], 1), 0.0f, 1.0f);
+  } else {
+    m.baseColor = {1, 1, 1};
+  }
+  m.metallic = std::clamp(finiteOr(pbr.metallicFactor, 1), 0.0f, 1.0f);
+  m.roughness = std::clamp(finiteOr(pbr.roughnessFactor, 1), 0.0f, 1.0f);
+  m.baseColorTexture = refs.use(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
+                                pbr.baseColorTexture.extensions, true, "baseColorTexture");
+  m.metallicRoughnessTexture = refs.use(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
+                                        pbr.metallicRoughnessTexture.extensions, false, "metallicRoughnessTexture");
+  m.normalTexture = refs.use(g.normalTexture.index, g.normalTexture.texCoord, g.normalTexture.extensions, false,
+                             "normalTexture");
+  if (g.normalTexture.index >= 0 && g.normalTexture.scale != 1.0)
+    refs.warn("normalTexture.scale " + std::to_string(g.normalTexture.scale) + " is ignored");
+  m.emissionTexture = refs.use(g.emissiveTexture.index, g.emissiveTexture.texCoord, g.emissiveTexture.extensions,
+                               true, "emissiveTexture");
+
+  float strength = 1.0f;
+  if (const tinygltf::Value* e = extension(g.extensions, "KHR_materials_emissive_strength"))
+    strength = std::max(finiteOr(number(*e, "emissiveStrength", 1), 1), 0.0f);
+  if (g.emissiveFactor.size() == 3)
+    m.emission = Vec3{std::max(finiteOr(g.emissiveFactor[0], 0), 0.0f), std::max(finiteOr(g.emissiveFactor[1], 0), 0.0f),
+                      std::max(finiteOr(g.emissiveFactor[2], 0), 0.0f)} * strength;
+
+  m.alphaMode = g.alphaMode == "MASK" ? AlphaMode::Mask : g.alphaMode == "BLEND" ? AlphaMode::Blend : AlphaMode::Opaque;
+  m.alphaCutoff = finiteOr(g.alphaCutoff, 0.5f);
+  m.doubleSided = g.doubleSided ? 1u : 0u;
+
+  auto disneyOnly = [&](const char* name, std::initializer_list<const char*> textures) -> const tinygltf::Value* {
+    const tinygltf::Value* e = extension(g.extensions, name);
+    if (!e) return nullptr;
+    m.type = MaterialType::Disney;
+    for (const char* t : textures)
+      if (hasTexture(*e, t)) refs.warn(std::string(name) + "." + t + " is ignored: the material model has no such texture");
+    return e;
+  };
+  if (const tinygltf::Value* e = disneyOnly("KHR_materials_transmission", {"transmissionTexture"}))
+    m.specTrans = std::clamp(finiteOr(number(*e, "transmissionFactor", 0), 0), 0.0f, 1.0f);
+  if (const tinygltf::Value* e = disneyOnly("KHR_materials_ior", {}))
+    m.ior = std::max(finiteOr(number(*e, "ior", 1.5), 1.5f), 1.0f);
+  if (const tinygltf::Value* e = disneyOnly("KHR_materials_clearcoat",
+                                            {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"})) {
+    m.clearcoat = std::clamp(finiteOr(number(*e, "clearcoatFactor", 0), 0), 0.0f, 1.0f);
+    m.clearcoatGloss = 1.0f - std::clamp(finiteOr(number(*e, "clearcoatRoughnessFactor", 0), 0), 0.0f, 1.0f);
+  }
+  if (const tinygltf::Value* e = disneyOnly("KHR_materials_sheen", {"sheenColorTexture", "sheenRoughnessTexture"})) {
+    // Disney's sheen is a weight with a tint towards the base colour; glTF gives a colour. The weight is the
+    // colour's brightest channel; a grey sheen is untinted.
+    std::vector<double> c = numbers(*e, "sheenColorFactor", {0, 0, 0});
+    Vec3 colour{std::max(finiteOr(c[0], 0), 0.0f), std::max(finiteOr(c[1], 0), 0.0f), std::max(finiteOr(c[2], 0), 0.0f)};
+    m.sheen = maxComponent(colour);
+    m.sheenTint = m.sheen > 0.0f && (colour.x != colour.y || colour.y != colour.z) ? 1.0f : 0.0f;
+  }
+  if (const tinygltf::Value* e = disneyOnly("KHR_materials_specular", {"specularTexture", "specularColorTexture"})) {
+    // Disney's specular 0.5 is glTF's default F0 of 0.04 (ior 1.5) at specularFactor 1.
+    m.specular = 0.5f * std::clamp(finiteOr(number(*e, "specularFactor", 1), 1), 0.0f, 1.0f);
+    std::vector<double> c = numbers(*e, "specularColorFactor", {1, 1, 1});
+    m.specularTint = (c[0] != c[1] || c[1] != c[2]) ? 1.0f : 0.0f;
+  }
+  out.uvTransform = refs.commonTransform();
+  return out;
+}
+
+}  // namespace candela

@@ -1,0 +1,135 @@
+#include "scene/loaders/image_decoding.h"
+
+#include <stb/stb_image.h>
+
+#include <OpenEXR/ImfArray.h>
+#include <OpenEXR/ImfRgbaFile.h>
+
+#include <algorithm>
+#include <cmath>
+#include <climits>
+#include <filesystem>
+
+#include "scene/loaders/file_bytes.h"
+#include "scene/loaders/load_diagnostics.h"
+
+namespace candela {
+
+namespace {
+
+std::string lowerExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+void checkSize(const std::string& name, int width, int height, size_t bytesPerPixel) {
+  if (width <= 0 || height <= 0) failLoad(name, "image has no pixels");
+  if (double(width) * double(height) * double(bytesPerPixel) > double(kMaxDecodedImageBytes))
+    failLoad(name, "image of " + std::to_string(width) + "x" + std::to_string(height) +
+                       " pixels is larger than the loader accepts");
+}
+
+struct StbFree {
+  void operator()(void* p) const { stbi_image_free(p); }
+};
+
+// Radiance HDR and the float images of OpenEXR may hold NaN, infinite or negative values that would poison
+// every estimate that sees them; they become 0.
+size_t zeroInvalid(std::vector<float>& floats) {
+  size_t replaced = 0;
+  for (float& f : floats)
+    if (!std::isfinite(f) || f < 0.0f) {
+      f = 0.0f;
+      ++replaced;
+    }
+  return replaced;
+}
+
+}  // namespace
+
+Texture decodeImage(const std::string& name, const uint8_t* data, size_t size, bool srgb) {
+  if (size == 0) failLoad(name, "image file is empty");
+  if (size > size_t(INT_MAX)) failLoad(name, "image file is too large");
+  int len = int(size), width = 0, height = 0, components = 0;
+  if (!stbi_info_from_memory(data, len, &width, &height, &components))
+    failLoad(name, std::string("not a readable image (") + stbi_failure_reason() + ")");
+  bool hdr = stbi_is_hdr_from_memory(data, len) != 0;
+  int channels = (components == 1 && !hdr) ? 1 : 4;
+  checkSize(name, width, height, size_t(channels) * (hdr ? sizeof(float) : 1));
+
+  Texture t;
+  t.name = name;
+  t.channels = uint32_t(channels);
+  if (hdr) {
+    std::unique_ptr<float, StbFree> pixels(stbi_loadf_from_memory(data, len, &width, &height, &components, channels));
+    if (!pixels) failLoad(name, std::string("cannot decode image (") + stbi_failure_reason() + ")");
+    t.floats.assign(pixels.get(), pixels.get() + size_t(width) * height * channels);
+    zeroInvalid(t.floats);
+    t.srgb = false;
+  } else {
+    std::unique_ptr<uint8_t, StbFree> pixels(stbi_load_from_memory(data, len, &width, &height, &components, channels));
+    if (!pixels) failLoad(name, std::string("cannot decode image (") + stbi_failure_reason() + ")");
+    t.bytes.assign(pixels.get(), pixels.get() + size_t(width) * height * channels);
+    t.srgb = srgb;
+  }
+  t.width = uint32_t(width);
+  t.height = uint32_t(height);
+  return t;
+}
+
+namespace {
+
+Texture loadExr(const std::string& path) {
+  Texture t;
+  t.name = path;
+  t.channels = 3;
+  try {
+    Imf::RgbaInputFile file(path.c_str());
+    Imath::Box2i window = file.dataWindow();
+    int width = window.max.x - window.min.x + 1, height = window.max.y - window.min.y + 1;
+    checkSize(path, width, height, sizeof(Imf::Rgba) + 3 * sizeof(float));
+    Imf::Array2D<Imf::Rgba> pixels(height, width);
+    file.setFrameBuffer(&pixels[0][0] - window.min.x - window.min.y * width, 1, size_t(width));
+    file.readPixels(window.min.y, window.max.y);
+    t.width = uint32_t(width);
+    t.height = uint32_t(height);
+    t.floats.resize(size_t(width) * height * 3);
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) {
+        const Imf::Rgba& p = pixels[y][x];
+        float* out = &t.floats[(size_t(y) * width + x) * 3];
+        out[0] = p.r;
+        out[1] = p.g;
+        out[2] = p.b;
+      }
+  } catch (const LoadError&) {
+    throw;
+  } catch (const std::exception& e) {
+    failLoad(path, std::string("cannot read OpenEXR image (") + e.what() + ")");
+  }
+  zeroInvalid(t.floats);
+  return t;
+}
+
+}  // namespace
+
+Texture loadEnvironmentImage(const std::string& path) {
+  std::string ext = lowerExtension(path);
+  if (ext == ".exr") return loadExr(path);
+  std::vector<uint8_t> bytes = readFileBytes(path);
+  if (!stbi_is_hdr_from_memory(bytes.data(), int(std::min(bytes.size(), size_t(INT_MAX)))))
+    failLoad(path, "an environment map must be a Radiance .hdr or an OpenEXR .exr image");
+  Texture rgba = decodeImage(path, bytes.data(), bytes.size(), false);
+  Texture t;
+  t.name = path;
+  t.width = rgba.width;
+  t.height = rgba.height;
+  t.channels = 3;
+  t.floats.resize(size_t(t.width) * t.height * 3);
+  for (size_t i = 0; i < size_t(t.width) * t.height; ++i)
+    for (int c = 0; c < 3; ++c) t.floats[3 * i + c] = rgba.floats[4 * i + c];
+  return t;
+}
+
+}  // namespace candela

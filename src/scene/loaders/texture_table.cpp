@@ -1,0 +1,74 @@
+#include "scene/loaders/texture_table.h"
+
+#include <tbb/parallel_for.h>
+
+#include <optional>
+
+#include "scene/loaders/file_bytes.h"
+#include "scene/loaders/image_decoding.h"
+
+namespace candela {
+
+int32_t TextureTable::add(const std::string& key, Request request) {
+  auto [it, inserted] = index_.try_emplace({key, request.srgb, request.wrap}, int32_t(requests_.size()));
+  if (inserted) requests_.push_back(std::move(request));
+  return it->second;
+}
+
+int32_t TextureTable::fromFile(const std::string& path, bool srgb, TextureWrap wrap) {
+  Request r;
+  r.name = path;
+  r.path = path;
+  r.srgb = srgb;
+  r.wrap = wrap;
+  return add("file:" + path, std::move(r));
+}
+
+int32_t TextureTable::fromMemory(const std::string& key, const std::string& name, std::vector<uint8_t> bytes,
+                                 bool srgb, TextureWrap wrap) {
+  Request r;
+  r.name = name;
+  r.bytes = std::move(bytes);
+  r.srgb = srgb;
+  r.wrap = wrap;
+  return add("memory:" + key, std::move(r));
+}
+
+void TextureTable::finish(Scene& scene, size_t firstMaterial, LoadWarnings& warnings) {
+  std::vector<std::optional<Texture>> decoded(requests_.size());
+  std::vector<std::string> failures(requests_.size());
+  tbb::parallel_for(size_t(0), requests_.size(), [&](size_t i) {
+    Request& r = requests_[i];
+    try {
+      if (!r.path.empty()) r.bytes = readFileBytes(r.path);
+      decoded[i] = decodeImage(r.name, r.bytes.data(), r.bytes.size(), r.srgb);
+      decoded[i]->wrap = r.wrap;
+    } catch (const LoadError& e) {
+      failures[i] = e.what();
+    }
+    r.bytes = {};
+  });
+
+  std::vector<int32_t> finalIndex(requests_.size(), kNoTexture);
+  for (size_t i = 0; i < requests_.size(); ++i) {
+    if (!decoded[i]) {
+      warnings.messages.push_back(failures[i] + " (the texture is left out)");
+      continue;
+    }
+    finalIndex[i] = int32_t(scene.textures.size());
+    scene.textures.push_back(std::move(*decoded[i]));
+  }
+  auto remap = [&](int32_t& t) {
+    if (t != kNoTexture) t = finalIndex[size_t(t)];
+  };
+  for (size_t m = firstMaterial; m < scene.materials.size(); ++m) {
+    Material& mat = scene.materials[m];
+    for (int32_t* t : {&mat.baseColorTexture, &mat.metallicRoughnessTexture, &mat.roughnessTexture,
+                       &mat.metallicTexture, &mat.emissionTexture, &mat.normalTexture, &mat.opacityTexture})
+      remap(*t);
+  }
+  requests_.clear();
+  index_.clear();
+}
+
+}  // namespace candela

@@ -1,0 +1,144 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "kernel/environment.h"
+#include "scene/environment_distribution.h"
+#include "support/chi2.h"
+
+namespace candela {
+namespace {
+
+using test::Chi2Options;
+using test::chi2TestSphere;
+
+constexpr int kChi2Tests = 4;
+
+// A small sky: a gradient from the horizon up, a bright sun, and a black band, so that the distribution has
+// smooth parts, a sharp peak and holes.
+std::vector<Vec3> skyTexels(uint32_t w, uint32_t h) {
+  std::vector<Vec3> t(size_t(w) * h);
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x) {
+      Vec3 c = Vec3{0.3f, 0.5f, 1.0f} * (0.2f + float(y) / float(h));
+      if (x >= 40 && x < 43 && y >= 8 && y < 10) c = {200.0f, 180.0f, 150.0f};
+      if (y >= 20 && y < 23) c = {0, 0, 0};
+      t[size_t(y) * w + x] = c;
+    }
+  return t;
+}
+
+struct MapFixture {
+  uint32_t width = 64, height = 32;
+  std::vector<Vec3> texels;
+  EnvironmentDistribution distribution;
+  EnvironmentView view;
+
+  MapFixture(float rotationDegrees, std::vector<Vec3> samplingTexels = {}) : texels(skyTexels(width, height)) {
+    distribution = EnvironmentDistribution::build(samplingTexels.empty() ? texels : samplingTexels, width, height);
+    view.scale = {1, 1, 1};
+    view.texels = texels.data();
+    view.width = width;
+    view.height = height;
+    view.rotationCos = std::cos(rotationDegrees * kPi / 180.0f);
+    view.rotationSin = std::sin(rotationDegrees * kPi / 180.0f);
+    view.func = distribution.func.data();
+    view.conditionalCdf = distribution.conditionalCdf.data();
+    view.marginalCdf = distribution.marginalCdf.data();
+    view.funcAverage = distribution.funcAverage;
+  }
+
+  test::Chi2Result chi2(const EnvironmentView& pdfView) const {
+    Chi2Options options;
+    options.testCount = kChi2Tests;
+    return chi2TestSphere(
+        [&](double u1, double u2, double) -> std::optional<Vec3> {
+          EnvironmentSample s = sampleEnvironment(view, {float(u1), float(u2)});
+          if (!(s.pdf > 0.0f)) return std::nullopt;
+          return s.direction;
+        },
+        [&](Vec3 d) { return double(environmentDirectionPdf(pdfView, d)); }, options);
+  }
+};
+
+TEST(EnvironmentSampling, MapSamplerMatchesItsPdf) {
+  MapFixture f(0.0f);
+  auto r = f.chi2(f.view);
+  EXPECT_TRUE(r.passed) << r.message;
+  EXPECT_NEAR(r.integral, 1.0, 2e-3);
+}
+
+TEST(EnvironmentSampling, RotatedMapSamplerMatchesItsPdf) {
+  MapFixture f(117.0f);
+  auto r = f.chi2(f.view);
+  EXPECT_TRUE(r.passed) << r.message;
+  EXPECT_NEAR(r.integral, 1.0, 2e-3);
+}
+
+// Building the distribution without the sin(theta) factor (here: from texels divided by it, which the builder
+// then multiplies back to plain luminance) over-samples the poles; the test must notice.
+TEST(EnvironmentSampling, Chi2RejectsADistributionWithoutSinTheta) {
+  std::vector<Vec3> texels = skyTexels(64, 32);
+  for (uint32_t y = 0; y < 32; ++y)
+    for (uint32_t x = 0; x < 64; ++x) texels[y * 64 + x] = texels[y * 64 + x] / std::sin(kPi * (float(y) + 0.5f) / 32.0f);
+  MapFixture broken(0.0f, texels);
+  MapFixture right(0.0f);
+  auto r = broken.chi2(right.view);
+  EXPECT_FALSE(r.passed) << r.message;
+}
+
+TEST(EnvironmentSampling, ConstantEnvironmentSamplesTheSphereUniformly) {
+  EnvironmentView constant;
+  constant.scale = {1, 1, 1};
+  Chi2Options options;
+  options.testCount = kChi2Tests;
+  auto r = chi2TestSphere(
+      [&](double u1, double u2, double) -> std::optional<Vec3> {
+        return sampleEnvironment(constant, {float(u1), float(u2)}).direction;
+      },
+      [&](Vec3 d) { return double(environmentDirectionPdf(constant, d)); }, options);
+  EXPECT_TRUE(r.passed) << r.message;
+  EXPECT_FLOAT_EQ(environmentRadiance(constant, {0, 1, 0}).x, 1.0f);
+}
+
+TEST(EnvironmentSampling, DirectionsAndMapCoordinatesRoundTrip) {
+  MapFixture f(33.0f);
+  for (float u : {0.01f, 0.25f, 0.5f, 0.8f, 0.99f})
+    for (float v : {0.02f, 0.3f, 0.5f, 0.97f}) {
+      Vec2 back = environmentUv(f.view, environmentDirection(f.view, {u, v}));
+      EXPECT_NEAR(back.x, u, 1e-4f);
+      EXPECT_NEAR(back.y, v, 1e-4f);
+    }
+}
+
+// The middle of the map is what a camera looking down -Z sees; the top row is the zenith; rotating the map by
+// +90 degrees about +Y brings its middle to -X.
+TEST(EnvironmentSampling, MapOrientation) {
+  MapFixture f(0.0f);
+  Vec2 ahead = environmentUv(f.view, {0, 0, -1});
+  EXPECT_NEAR(ahead.x, 0.5f, 1e-6f);
+  EXPECT_NEAR(ahead.y, 0.5f, 1e-6f);
+  EXPECT_NEAR(environmentUv(f.view, {1, 0, 0}).x, 0.75f, 1e-6f);
+  EXPECT_NEAR(environmentUv(f.view, {0, 1, 0}).y, 0.0f, 1e-6f);
+  MapFixture turned(90.0f);
+  Vec2 left = environmentUv(turned.view, {-1, 0, 0});
+  EXPECT_NEAR(left.x, 0.5f, 1e-5f);
+}
+
+TEST(EnvironmentSampling, BlackMapIsNeverSampled) {
+  std::vector<Vec3> black(64 * 32);
+  EnvironmentDistribution d = EnvironmentDistribution::build(black, 64, 32);
+  EXPECT_EQ(d.funcAverage, 0.0f);
+  EnvironmentView view;
+  view.texels = black.data();
+  view.width = 64;
+  view.height = 32;
+  view.func = d.func.data();
+  view.conditionalCdf = d.conditionalCdf.data();
+  view.marginalCdf = d.marginalCdf.data();
+  EXPECT_EQ(sampleEnvironment(view, {0.3f, 0.6f}).pdf, 0.0f);
+  EXPECT_EQ(environmentDirectionPdf(view, {0, 0, 1}), 0.0f);
+}
+
+}  // namespace
+}  // namespace candela

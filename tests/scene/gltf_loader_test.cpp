@@ -1,0 +1,314 @@
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cstring>
+#include <set>
+
+#include "scene/loaders/file_bytes.h"
+#include "scene/loaders/gltf_loader.h"
+#include "scene/scene_test_files.h"
+
+namespace candela {
+namespace {
+
+using nlohmann::json;
+using test::TempFolder;
+
+std::string base64(const std::vector<uint8_t>& bytes) {
+  static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (size_t i = 0; i < bytes.size(); i += 3) {
+    uint32_t v = uint32_t(bytes[i]) << 16 | (i + 1 < bytes.size() ? uint32_t(bytes[i + 1]) << 8 : 0) |
+                 (i + 2 < bytes.size() ? bytes[i + 2] : 0);
+    out += table[(v >> 18) & 63];
+    out += table[(v >> 12) & 63];
+    out += i + 1 < bytes.size() ? table[(v >> 6) & 63] : '=';
+    out += i + 2 < bytes.size() ? table[v & 63] : '=';
+  }
+  return out;
+}
+
+template <class T>
+void append(std::vector<uint8_t>& bytes, const std::vector<T>& values) {
+  size_t at = bytes.size();
+  bytes.resize(at + values.size() * sizeof(T));
+  std::memcpy(bytes.data() + at, values.data(), values.size() * sizeof(T));
+}
+
+// A glTF with one triangle mesh (positions, normals, uvs, indices in one data-URI buffer) and whatever nodes,
+// materials and extensions a test adds.
+json triangleGltf() {
+  std::vector<uint8_t> buffer;
+  append(buffer, std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0});  // 36 bytes of positions
+  append(buffer, std::vector<float>{0, 0, 1, 0, 0, 1, 0, 0, 1});  // normals
+  append(buffer, std::vector<float>{0, 0, 1, 0, 0, 1});           // 24 bytes of uvs
+  append(buffer, std::vector<uint16_t>{0, 1, 2});                 // 6 bytes of indices
+  return {
+      {"asset", {{"version", "2.0"}}},
+      {"buffers", {{{"byteLength", buffer.size()}, {"uri", "data:application/octet-stream;base64," + base64(buffer)}}}},
+      {"bufferViews",
+       {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 72}},
+        {{"buffer", 0}, {"byteOffset", 72}, {"byteLength", 24}},
+        {{"buffer", 0}, {"byteOffset", 96}, {"byteLength", 6}}}},
+      {"accessors",
+       {{{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}},
+        {{"bufferView", 0}, {"byteOffset", 36}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}},
+        {{"bufferView", 1}, {"componentType", 5126}, {"count", 3}, {"type", "VEC2"}},
+        {{"bufferView", 2}, {"componentType", 5123}, {"count", 3}, {"type", "SCALAR"}}}},
+      {"meshes",
+       {{{"primitives", {{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}, {"TEXCOORD_0", 2}}}, {"indices", 3}}}}}}},
+      {"nodes", {{{"mesh", 0}}}},
+      {"scenes", {{{"nodes", {0}}}}},
+  };
+}
+
+Scene load(const json& gltf, LoadWarnings& warnings) {
+  std::string text = gltf.dump();
+  return loadGltfBytes("test.gltf", reinterpret_cast<const uint8_t*>(text.data()), text.size(), warnings);
+}
+
+Scene load(const json& gltf) {
+  LoadWarnings warnings;
+  return load(gltf, warnings);
+}
+
+std::string errorOf(const std::string& text) {
+  LoadWarnings warnings;
+  try {
+    loadGltfBytes("test.gltf", reinterpret_cast<const uint8_t*>(text.data()), text.size(), warnings);
+  } catch (const LoadError& e) {
+    std::string what = e.what();
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    EXPECT_EQ(what.rfind("test.gltf: ", 0), 0u) << what;
+    return what;
+  }
+  ADD_FAILURE() << "expected a LoadError";
+  return {};
+}
+std::string errorOf(const json& gltf) { return errorOf(gltf.dump()); }
+
+TEST(GltfLoader, LoadsATriangle) {
+  Scene s = load(triangleGltf());
+  ASSERT_EQ(s.meshes.size(), 1u);
+  ASSERT_EQ(s.instances.size(), 1u);
+  const Mesh& m = s.meshes[0];
+  EXPECT_EQ(m.triangleCount(), 1u);
+  EXPECT_EQ(m.normals.size(), 3u);
+  EXPECT_EQ(m.uvs.size(), 3u);
+  EXPECT_FLOAT_EQ(m.positions[1].x, 1.0f);
+  ASSERT_EQ(s.materials.size(), 1u);  // glTF's default material
+  EXPECT_EQ(s.materials[0].type, MaterialType::Pbr);
+  EXPECT_FLOAT_EQ(s.materials[0].metallic, 1.0f);
+  EXPECT_TRUE(s.cameraMissing);
+  validateScene(s);
+}
+
+TEST(GltfLoader, SharedMeshesBecomeInstancesAndMirroredOnesFlipWinding) {
+  json g = triangleGltf();
+  g["nodes"] = {{{"mesh", 0}, {"translation", {5, 0, 0}}},
+                {{"children", {2}}, {"scale", {2, 2, 2}}},
+                {{"mesh", 0}, {"translation", {0, 1, 0}}},
+                {{"mesh", 0}, {"scale", {-1, 1, 1}}},
+                {{"mesh", 0}, {"matrix", {-1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}}}};
+  g["scenes"] = {{{"nodes", {0, 1, 3, 4}}}};
+  Scene s = load(g);
+  ASSERT_EQ(s.instances.size(), 4u);
+  ASSERT_EQ(s.meshes.size(), 2u);  // the mesh and one mirrored copy shared by both mirrored nodes
+  EXPECT_EQ(s.instances[0].meshId, s.instances[1].meshId);
+  EXPECT_EQ(s.instances[2].meshId, s.instances[3].meshId);
+  EXPECT_NE(s.instances[0].meshId, s.instances[2].meshId);
+  // The child's transform composes with its parent's: scale 2 then translate (0, 1, 0) -> (0, 2, 0).
+  EXPECT_FLOAT_EQ(s.instances[1].objectToWorld.point({0, 0, 0}).y, 2.0f);
+  EXPECT_FLOAT_EQ(s.instances[1].objectToWorld.point({1, 0, 0}).x, 2.0f);
+  // World-space winding: the mirrored copy keeps the triangle's front (+z, counter-clockwise seen from +z).
+  for (const Instance& inst : s.instances) {
+    const Mesh& m = s.meshes[inst.meshId];
+    Vec3 a = inst.objectToWorld.point(m.positions[m.indices[0]]), b = inst.objectToWorld.point(m.positions[m.indices[1]]),
+         c = inst.objectToWorld.point(m.positions[m.indices[2]]);
+    EXPECT_GT(cross(b - a, c - a).z, 0.0f);
+  }
+}
+
+TEST(GltfLoader, CameraLightsAndMaterials) {
+  json g = triangleGltf();
+  g["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.1}}}}};
+  g["nodes"] = {{{"mesh", 0}}, {{"camera", 0}, {"translation", {0, 0, 3}}},
+                {{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}}};
+  g["scenes"] = {{{"nodes", {0, 1, 2}}}};
+  g["extensions"] = {{"KHR_lights_punctual", {{"lights", {{{"type", "point"}}}}}}};
+  g["materials"] = {{{"emissiveFactor", {1, 0.5, 0.25}},
+                     {"alphaMode", "MASK"},
+                     {"alphaCutoff", 0.3},
+                     {"doubleSided", true},
+                     {"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.6, 0.7, 0.8}}, {"metallicFactor", 0.1},
+                                               {"roughnessFactor", 0.2}}},
+                     {"extensions",
+                      {{"KHR_materials_emissive_strength", {{"emissiveStrength", 4}}},
+                       {"KHR_materials_transmission", {{"transmissionFactor", 0.9}}},
+                       {"KHR_materials_ior", {{"ior", 1.4}}},
+                       {"KHR_materials_clearcoat", {{"clearcoatFactor", 0.7}, {"clearcoatRoughnessFactor", 0.25}}}}}}};
+  g["meshes"][0]["primitives"][0]["material"] = 0;
+  LoadWarnings warnings;
+  Scene s = load(g, warnings);
+  EXPECT_FALSE(s.cameraMissing);
+  EXPECT_FLOAT_EQ(s.camera.eye.z, 3.0f);
+  EXPECT_FLOAT_EQ(s.camera.target.z, 2.0f);
+  EXPECT_NEAR(s.camera.verticalFovDegrees, 0.5f * 180.0f / kPi, 1e-4f);
+  ASSERT_EQ(s.materials.size(), 1u);
+  const Material& m = s.materials[0];
+  EXPECT_EQ(m.type, MaterialType::Disney);
+  EXPECT_FLOAT_EQ(m.emission.x, 4.0f);
+  EXPECT_FLOAT_EQ(m.emission.z, 1.0f);
+  EXPECT_EQ(m.alphaMode, AlphaMode::Mask);
+  EXPECT_FLOAT_EQ(m.alphaCutoff, 0.3f);
+  EXPECT_EQ(m.doubleSided, 1u);
+  EXPECT_FLOAT_EQ(m.opacity, 0.8f);
+  EXPECT_FLOAT_EQ(m.metallic, 0.1f);
+  EXPECT_FLOAT_EQ(m.specTrans, 0.9f);
+  EXPECT_FLOAT_EQ(m.ior, 1.4f);
+  EXPECT_FLOAT_EQ(m.clearcoat, 0.7f);
+  EXPECT_FLOAT_EQ(m.clearcoatGloss, 0.75f);
+  bool lightWarning = false;
+  for (const auto& w : warnings.messages) lightWarning |= w.find("KHR_lights_punctual") != std::string::npos;
+  EXPECT_TRUE(lightWarning);
+}
+
+TEST(GltfLoader, UniformTextureTransformIsBakedIntoUvs) {
+  json g = triangleGltf();
+  std::vector<uint8_t> png = readFileBytes(std::string(CANDELA_SOURCE_DIR) + "/tests/scene/data/checker.png");
+  g["images"] = {{{"uri", "data:image/png;base64," + base64(png)}}};
+  g["textures"] = {{{"source", 0}}};
+  json transform = {{"KHR_texture_transform", {{"offset", {0.5, 0}}, {"scale", {2, 2}}}}};
+  g["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}, {"extensions", transform}}}}}}};
+  g["meshes"][0]["primitives"][0]["material"] = 0;
+  Scene s = load(g);
+  ASSERT_EQ(s.textures.size(), 1u);
+  EXPECT_EQ(s.materials[0].baseColorTexture, 0);
+  EXPECT_TRUE(s.textures[0].srgb);
+  // uv (1, 0) -> scale (2, 0) -> offset (2.5, 0).
+  EXPECT_FLOAT_EQ(s.meshes[0].uvs[1].x, 2.5f);
+  EXPECT_FLOAT_EQ(s.meshes[0].uvs[2].y, 2.0f);
+}
+
+TEST(GltfLoader, BadInputNamesFileAndJsonPath) {
+  EXPECT_NE(errorOf(std::string("{\"asset\": {\"version\": \"2.0\"")).find("test.gltf: "), std::string::npos);
+  EXPECT_NE(errorOf(std::string("not json at all")).find("test.gltf: "), std::string::npos);
+  EXPECT_NE(errorOf(std::string(100000, '[')).find("nests deeper"), std::string::npos);
+
+  json g = triangleGltf();
+  g["accessors"][0]["count"] = 1000;
+  EXPECT_NE(errorOf(g).find("meshes[0].primitives[0].attributes.POSITION (accessors[0]): 1000 elements do not fit"),
+            std::string::npos);
+  g = triangleGltf();
+  g["accessors"][3]["count"] = 3;
+  g["bufferViews"][2]["byteLength"] = 6;
+  g["meshes"][0]["primitives"][0]["indices"] = 7;
+  std::string e = errorOf(g);
+  EXPECT_NE(e.find("indices accessor out of bounds"), std::string::npos) << e;
+
+  g = triangleGltf();
+  std::vector<uint8_t> buffer;
+  append(buffer, std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1});
+  append(buffer, std::vector<uint16_t>{0, 1, 9});
+  g["buffers"][0] = {{"byteLength", buffer.size()}, {"uri", "data:application/octet-stream;base64," + base64(buffer)}};
+  EXPECT_NE(errorOf(g).find("meshes[0].primitives[0].indices: index 9 (element 2) is beyond the 3 vertices"),
+            std::string::npos);
+
+  g = triangleGltf();
+  g["bufferViews"][0]["byteLength"] = 1000;
+  EXPECT_NE(errorOf(g).find("reaches past the end of buffer 0"), std::string::npos);
+
+  g = triangleGltf();
+  g["buffers"][0]["uri"] = "missing.bin";
+  errorOf(g);
+
+  g = triangleGltf();
+  g["meshes"][0]["primitives"][0]["attributes"].erase("POSITION");
+  EXPECT_NE(errorOf(g).find("meshes[0].primitives[0].attributes: POSITION is missing"), std::string::npos);
+
+  g = triangleGltf();
+  g["nodes"] = {{{"mesh", 0}, {"children", {0}}}};
+  EXPECT_NE(errorOf(g).find("cycle"), std::string::npos);
+}
+
+TEST(GltfLoader, MissingTextureIsAWarning) {
+  TempFolder dir;
+  json g = triangleGltf();
+  g["images"] = {{{"uri", "nowhere.png"}}};
+  g["textures"] = {{{"source", 0}}};
+  g["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+  g["meshes"][0]["primitives"][0]["material"] = 0;
+  LoadWarnings warnings;
+  Scene s = loadGltf(dir.write("a.gltf", g.dump()), warnings);
+  EXPECT_TRUE(s.textures.empty());
+  EXPECT_EQ(s.materials[0].baseColorTexture, kNoTexture);
+  ASSERT_FALSE(warnings.messages.empty());
+  EXPECT_NE(warnings.messages[0].find("nowhere.png"), std::string::npos);
+}
+
+TEST(GltfLoaderSharedScenes, DamagedHelmetGltfAndGlbAgree) {
+  CANDELA_REQUIRE_SHARED_SCENES(scenes);
+  LoadWarnings w1, w2;
+  Scene glb = loadGltf((scenes / "damaged_helmet/glTF-Binary/DamagedHelmet.glb").string(), w1);
+  Scene gltf = loadGltf((scenes / "damaged_helmet/glTF/DamagedHelmet.gltf").string(), w2);
+  for (const Scene* s : {&glb, &gltf}) {
+    validateScene(*s);
+    EXPECT_EQ(s->triangleCount(), 15452u);
+    EXPECT_EQ(s->materials.size(), 1u);
+    EXPECT_EQ(s->textures.size(), 4u);  // albedo, metal-roughness, normal, emissive; occlusion is left out
+    EXPECT_NE(s->materials[0].normalTexture, kNoTexture);
+    EXPECT_NE(s->materials[0].emissionTexture, kNoTexture);
+  }
+  ASSERT_EQ(glb.meshes[0].positions.size(), gltf.meshes[0].positions.size());
+  for (size_t i = 0; i < glb.meshes[0].positions.size(); i += 97)
+    EXPECT_EQ(glb.meshes[0].positions[i].x, gltf.meshes[0].positions[i].x);
+  for (size_t t = 0; t < glb.textures.size(); ++t) {
+    EXPECT_EQ(glb.textures[t].width, gltf.textures[t].width);
+    EXPECT_EQ(glb.textures[t].bytes, gltf.textures[t].bytes);
+  }
+}
+
+TEST(GltfLoaderSharedScenes, MaterialTestModels) {
+  CANDELA_REQUIRE_SHARED_SCENES(scenes);
+  // Triangles drawn, as counted from the files' index accessors over the node graph (see SOURCES.md there).
+  const std::map<std::string, size_t> triangles = {
+      {"TextureCoordinateTest", 10},    {"TwoSidedPlane", 2},        {"EmissiveStrengthTest", 90},
+      {"NegativeScaleTest", 7724},      {"TextureSettingsTest", 72}, {"AlphaBlendModeTest", 61},
+      {"TransmissionTest", 128775},     {"SpecularTest", 44828},     {"TransmissionRoughnessTest", 77792},
+      {"NormalTangentTest", 7774},      {"NormalTangentMirrorTest", 5240}};
+  size_t models = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(scenes / "gltf_material_tests")) {
+    std::string name = entry.path().filename().string();
+    LoadWarnings warnings;
+    Scene s = loadGltf((entry.path() / "glTF" / (name + ".gltf")).string(), warnings);
+    validateScene(s);
+    ++models;
+    auto expected = triangles.find(name);
+    if (expected != triangles.end()) {
+      EXPECT_EQ(s.triangleCount(), expected->second) << name;
+    }
+    std::set<MaterialType> types;
+    for (const Material& m : s.materials) types.insert(m.type);
+    if (name == "TransmissionTest" || name == "SpecularTest") {
+      EXPECT_TRUE(types.count(MaterialType::Disney)) << name;
+    }
+    if (name == "EmissiveStrengthTest") {
+      float brightest = 0;
+      for (const Material& m : s.materials) brightest = std::max(brightest, maxComponent(m.emission));
+      EXPECT_GT(brightest, 1.0f);
+    }
+    if (name == "AlphaBlendModeTest") {
+      std::set<AlphaMode> modes;
+      for (const Material& m : s.materials) modes.insert(m.alphaMode);
+      EXPECT_EQ(modes.size(), 3u);
+    }
+    if (name == "MetalRoughSpheresNoTextures") {
+      EXPECT_GT(s.instances.size(), 90u);
+    }
+  }
+  EXPECT_EQ(models, 12u);
+}
+
+}  // namespace
+}  // namespace candela
