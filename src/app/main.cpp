@@ -3,6 +3,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -102,9 +103,17 @@ int runRender(const RenderJob& job, const std::string& output, const DisplaySett
   return 0;
 }
 
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  size_t n = values.size();
+  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
 int runBench(const RenderJob& job) {
   RenderOutcome outcome = runRenderJob(job, /*showProgress=*/false);
   double samples = double(job.settings.width) * job.settings.height * job.samplesPerPixel;
+  double samplesPerFrame = double(job.settings.width) * job.settings.height;
+  double raysPerFrame = double(outcome.stats.rays) / double(job.samplesPerPixel);
   nlohmann::ordered_json report = {
       {"scene", outcome.sceneName},
       {"width", job.settings.width},
@@ -117,7 +126,30 @@ int runBench(const RenderJob& job) {
       {"msamples_per_s", samples / outcome.seconds / 1e6},
       {"mrays_per_s", double(outcome.stats.rays) / outcome.seconds / 1e6},
       {"invalid_samples", outcome.stats.invalidSamples},
+      {"warmup_frames", job.warmupFrames},
+      {"median_ms_per_frame", median(outcome.frameMilliseconds)},
   };
+  // GPU backends time every launch with device events: frame rate and throughput from the median launch.
+  if (!outcome.deviceFrameMilliseconds.empty()) {
+    const std::vector<double>& ms = outcome.deviceFrameMilliseconds;
+    double m = median(ms);
+    report["median_device_ms_per_frame"] = m;
+    report["min_device_ms_per_frame"] = *std::min_element(ms.begin(), ms.end());
+    report["max_device_ms_per_frame"] = *std::max_element(ms.begin(), ms.end());
+    report["device_fps"] = 1000.0 / m;
+    report["device_msamples_per_s"] = samplesPerFrame / m / 1e3;
+    report["device_mrays_per_s"] = raysPerFrame / m / 1e3;
+    report["rays_per_sample"] = raysPerFrame / samplesPerFrame;
+  }
+  if (!outcome.rawTraceMilliseconds.empty()) {
+    double m = median(outcome.rawTraceMilliseconds);
+    double rawRate = double(outcome.rawTraceRaysPerFrame) / m / 1e3;
+    report["raw_trace_rays_per_frame"] = outcome.rawTraceRaysPerFrame;
+    report["raw_trace_median_device_ms"] = m;
+    report["raw_trace_mrays_per_s"] = rawRate;
+    if (!outcome.deviceFrameMilliseconds.empty())
+      report["path_ray_rate_fraction_of_raw"] = raysPerFrame / median(outcome.deviceFrameMilliseconds) / 1e3 / rawRate;
+  }
   std::cout << report.dump() << std::endl;
   return 0;
 }
@@ -180,7 +212,9 @@ int main(int argc, char** argv) {
                "  candela render                 render the built-in Cornell box to candela.png\n"
                "  candela render -o box.exr --spp 256\n"
                "  candela bench --spp 16         print one JSON line of timings\n"
-               "  candela view                   open the interactive viewer"};
+               "  candela view                   open the interactive viewer\n"
+
+               "  candela bench --backend optix --width 1920 --height 1080 --spp 100 --warmup 20 --raw-trace"};
   app.require_subcommand(1);
 
   RenderJob renderJob;
@@ -195,11 +229,18 @@ int main(int argc, char** argv) {
   render->add_option("--tonemap", toneMapper, "Tone mapper for .png: aces or clamp")
       ->check(CLI::IsMember({"aces", "clamp"}))
       ->capture_default_str();
+  render->add_option("--denoise", renderJob.denoiser, "Denoiser: none, or optix (the OptiX AI denoiser)")
+      ->check(CLI::IsMember({"none", "optix"}))
+      ->capture_default_str();
 
   RenderJob benchJob;
   benchJob.samplesPerPixel = 16;
   CLI::App* bench = app.add_subcommand("bench", "Time a render and print the numbers as one JSON object");
   addRenderOptions(*bench, benchJob);
+  bench->add_option("--warmup", benchJob.warmupFrames, "Untimed launches before the timed ones")
+      ->capture_default_str();
+  bench->add_flag("--raw-trace", benchJob.rawTrace,
+                  "Also time tracing the same rays with no shading, the traversal ceiling (optix backend)");
 
   ViewerOptions viewOptions;
   std::string viewToneMapper = "aces";
