@@ -11,6 +11,7 @@
 #include "app/backend_factory.h"
 #include "app/render_job.h"
 #include "app/viewer/viewer.h"
+#include "image/aov_io.h"
 #include "image/image_io.h"
 #include "scene/builtin_scenes.h"
 
@@ -93,13 +94,13 @@ void checkOutputPath(const std::string& path) {
 int runRender(const RenderJob& job, const std::string& output, const DisplaySettings& display) {
   checkOutputPath(output);
   RenderOutcome outcome = runRenderJob(job, /*showProgress=*/true);
-  writeImage(output, outcome.image, display);
+  std::vector<std::string> written = writeImageWithAovs(output, outcome.image, display, outcome.aovs, job.aovs);
   double samples = double(job.settings.width) * job.settings.height * job.samplesPerPixel;
   std::fprintf(stderr, "rendered %ux%u at %u spp in %.2f s: %s Msamples/s, %s Mrays/s, %llu invalid samples dropped\n",
                job.settings.width, job.settings.height, job.samplesPerPixel, outcome.seconds,
                formatRate(samples / outcome.seconds).c_str(), formatRate(double(outcome.stats.rays) / outcome.seconds).c_str(),
                (unsigned long long)outcome.stats.invalidSamples);
-  std::printf("%s\n", std::filesystem::absolute(output).string().c_str());
+  for (const std::string& path : written) std::printf("%s\n", std::filesystem::absolute(path).string().c_str());
   return 0;
 }
 
@@ -175,8 +176,8 @@ void addViewOptions(CLI::App& cmd, ViewerOptions& options, std::string& toneMapp
       ->check(CLI::Range(1u, 1024u))
       ->capture_default_str();
   cmd.add_option("--exposure", options.post.display.exposure, "Exposure in stops")->capture_default_str();
-  cmd.add_option("--tonemap", toneMapper, "Tone mapper: aces or clamp")
-      ->check(CLI::IsMember({"aces", "clamp"}))
+  cmd.add_option("--tonemap", toneMapper, "Tone mapper: aces, reinhard or clamp (linear)")
+      ->check(CLI::IsMember({"aces", "reinhard", "clamp"}))
       ->capture_default_str();
   CLI::Option* frames =
       cmd.add_option("--frames", options.frames, "Render this many frames, then exit (0: until the window closes)")
@@ -189,7 +190,7 @@ void addViewOptions(CLI::App& cmd, ViewerOptions& options, std::string& toneMapp
 }
 
 int runView(ViewerOptions options, const std::string& toneMapper) {
-  options.post.display.toneMapper = toneMapper == "clamp" ? ToneMapper::Clamp : ToneMapper::AcesFilmic;
+  options.post.display.toneMapper = parseToneMapper(toneMapper);
   if (!options.screenshot.empty()) checkOutputPath(options.screenshot);
   if (!options.windowCapture.empty()) {
     checkOutputPath(options.windowCapture);
@@ -226,12 +227,31 @@ int main(int argc, char** argv) {
   render->add_option("-o,--output", output, "Output image: .png (tone mapped), .exr or .pfm (linear)")
       ->capture_default_str();
   render->add_option("--exposure", display.exposure, "Exposure in stops, for .png")->capture_default_str();
-  render->add_option("--tonemap", toneMapper, "Tone mapper for .png: aces or clamp")
-      ->check(CLI::IsMember({"aces", "clamp"}))
+  render->add_option("--tonemap", toneMapper, "Tone mapper for .png: aces, reinhard or clamp (linear)")
+      ->check(CLI::IsMember({"aces", "reinhard", "clamp"}))
       ->capture_default_str();
-  render->add_option("--denoise", renderJob.denoiser, "Denoiser: none, or optix (the OptiX AI denoiser)")
-      ->check(CLI::IsMember({"none", "optix"}))
+  render->add_option("--denoise", renderJob.denoiser,
+                     "Denoiser: none; atrous (edge-avoiding a-trous guided by albedo, normal and depth); bilateral; "
+                     "optix (the OptiX AI denoiser with albedo and normal guides)")
+      ->check(CLI::IsMember({"none", "atrous", "bilateral", "optix"}))
       ->capture_default_str();
+  render->add_option("--atrous-passes", renderJob.atrous.passes, "Passes of the a-trous denoiser")
+      ->check(CLI::Range(1, kMaxAtrousPasses))
+      ->capture_default_str();
+  render->add_option_function<std::string>("--aov", [&renderJob](const std::string& list) {
+        renderJob.aovs = parseAovList(list);
+      }, "Also write AOVs, comma-separated: albedo, normal, depth. In an .exr they are layers of the file; with "
+         ".png or .pfm they go beside it as <name>.<aov>.png/.pfm")
+      ->check(CLI::Validator(
+          [](std::string& list) {
+            try {
+              parseAovList(list);
+            } catch (const std::invalid_argument& e) {
+              return std::string(e.what());
+            }
+            return std::string();
+          },
+          "", ""));
 
   RenderJob benchJob;
   benchJob.samplesPerPixel = 16;
@@ -267,7 +287,7 @@ int main(int argc, char** argv) {
 
   try {
     if (*render) {
-      display.toneMapper = toneMapper == "clamp" ? ToneMapper::Clamp : ToneMapper::AcesFilmic;
+      display.toneMapper = parseToneMapper(toneMapper);
       return runRender(renderJob, output, display);
     }
     if (*view) return runView(viewOptions, viewToneMapper);

@@ -7,6 +7,7 @@
 #include "app/backend_factory.h"
 #include "app/progress.h"
 #include "app/scene_loading.h"
+#include "image/filters/atrous_kernel.h"
 #if CANDELA_HAS_OPTIX
 #include "backends/optix/optix_backend.h"
 #include "backends/optix/optix_denoiser.h"
@@ -26,16 +27,34 @@ void timeRawTrace([[maybe_unused]] Backend& backend, [[maybe_unused]] const Rend
 #endif
 }
 
+bool needsAovs(const RenderJob& job) {
+  return !job.aovs.empty() || job.denoiser == "atrous" || job.denoiser == "optix";
+}
+
 // Builds without OptiX refuse --denoise optix before rendering (runRenderJob).
-void denoise([[maybe_unused]] const RenderJob& job, [[maybe_unused]] RenderOutcome& outcome) {
+void denoiseWithOptixGuides([[maybe_unused]] RenderOutcome& outcome, [[maybe_unused]] const AovImages& aovs) {
 #if CANDELA_HAS_OPTIX
-  if (job.denoiser != "optix") return;
   try {
-    outcome.image = denoiseWithOptix(outcome.image);
+    Image normal = aovs.normal;
+    for (Vec3& n : normal.pixels) n = unitOrZero(n);
+    outcome.image = denoiseWithOptix(outcome.image, {&aovs.albedo, &normal});
   } catch (const std::runtime_error& e) {
     std::fprintf(stderr, "candela: %s; the image is kept without denoising\n", e.what());
   }
 #endif
+}
+
+void readResult(const Backend& backend, const RenderJob& job, RenderOutcome& outcome) {
+  if (job.denoiser == "atrous")
+    outcome.image = backend.readAtrousDenoised(job.atrous);
+  else if (job.denoiser == "bilateral")
+    outcome.image = backend.readBilateralFiltered(job.bilateral);
+  else
+    outcome.image = backend.readImage();
+  if (!needsAovs(job)) return;
+  AovImages aovs = backend.readAovs();
+  if (job.denoiser == "optix") denoiseWithOptixGuides(outcome, aovs);
+  if (!job.aovs.empty()) outcome.aovs = std::move(aovs);
 }
 
 }  // namespace
@@ -65,6 +84,7 @@ RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool s
     throw std::runtime_error("the raw-trace mode needs the optix backend, not " + backend->name());
   backend->setScene(scene);
   backend->setSettings(job.settings);
+  backend->setAovsEnabled(needsAovs(job));
   backend->setCamera(scene.camera.toCamera(float(job.settings.width) / float(job.settings.height)));
 
   RenderOutcome outcome;
@@ -84,8 +104,7 @@ RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool s
   outcome.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   if (showProgress) progress.finish();
   if (job.rawTrace) timeRawTrace(*backend, job, outcome);
-  outcome.image = backend->readImage();
-  denoise(job, outcome);
+  readResult(*backend, job, outcome);
   outcome.backendName = backend->name();
   outcome.deviceName = backend->deviceName();
   outcome.sceneName = scene.name;

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "backends/backend.h"
+#include "image/aov_io.h"
 #include "scene/material_overrides.h"
 #include "scene/scene.h"
 
@@ -21,11 +22,15 @@ struct RenderJob {
   MaterialOverrides materialOverrides;
   uint32_t warmupFrames = 0;      // untimed launches before the timed ones
   bool rawTrace = false;          // also time the backend's raw-trace mode (optix only)
-  std::string denoiser = "none";  // "none" or "optix"
+  std::string denoiser = "none";  // "none", "atrous", "bilateral" or "optix"
+  AtrousParams atrous;
+  BilateralParams bilateral;
+  std::vector<Aov> aovs;  // AOVs to keep in RenderOutcome::aovs
 };
 
 struct RenderOutcome {
   Image image;
+  AovImages aovs;  // when RenderJob::aovs is not empty
   FrameStats stats;
   double seconds = 0.0;  // rendering only: scene loading and acceleration-structure builds excluded
   std::string backendName;
@@ -38,7 +43,8 @@ struct RenderOutcome {
 };
 
 // Loads the scene, builds the backend and accumulates the requested samples, one launch per sample per pixel,
-// after `warmupFrames` untimed launches; then denoises when asked. Throws std::runtime_error on failure; a
+// after `warmupFrames` untimed launches; then denoises when asked (the a-trous and OptiX denoisers guided by the
+// AOVs, which are then accumulated too). Throws std::runtime_error on failure; a
 // denoiser that cannot run is reported on stderr and the image is kept as rendered.
 RenderOutcome runRenderJob(const RenderJob& job, bool showProgress);
 RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool showProgress);

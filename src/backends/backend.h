@@ -3,6 +3,9 @@
 #include <memory>
 #include <string>
 
+#include "image/aov_images.h"
+#include "image/filters/atrous.h"
+#include "image/filters/bilateral.h"
 #include "image/image.h"
 #include "kernel/camera.h"
 #include "kernel/render_settings.h"
@@ -34,6 +37,23 @@ class Backend {
   virtual uint32_t accumulatedSamples() const = 0;
   // The mean of the accumulated samples.
   virtual Image readImage() const = 0;
+
+  // Whether render() also accumulates the AOVs (albedo, normal, depth at the first non-specular vertex) for
+  // readAovs(). Off by default: paths then skip the code that records them. Changing it restarts the film.
+  virtual void setAovsEnabled(bool enabled) = 0;
+  virtual bool aovsEnabled() const = 0;
+  // The mean AOVs of the accumulated samples. Throws std::logic_error when they are not enabled.
+  virtual AovImages readAovs() const = 0;
+
+  // The accumulated image through the a-trous filter guided by the AOVs (which must be enabled), or through the
+  // bilateral filter: by default the CPU filters on readImage(); a backend whose film lives on a GPU filters
+  // there and reads back only the result.
+  virtual Image readAtrousDenoised(const AtrousParams& params) const {
+    return atrousDenoise(readImage(), readAovs(), params);
+  }
+  virtual Image readBilateralFiltered(const BilateralParams& params) const {
+    return bilateralFilter(readImage(), params);
+  }
 };
 
 }  // namespace candela

@@ -40,23 +40,10 @@ void writePng(const std::string& path, const Image& image, const DisplaySettings
 }
 
 void writeExr(const std::string& path, const Image& image) {
-  try {
-    Imf::Header header(int(image.width), int(image.height));
-    header.channels().insert("R", Imf::Channel(Imf::FLOAT));
-    header.channels().insert("G", Imf::Channel(Imf::FLOAT));
-    header.channels().insert("B", Imf::Channel(Imf::FLOAT));
-    Imf::OutputFile file(path.c_str(), header);
-    Imf::FrameBuffer fb;
-    char* base = const_cast<char*>(reinterpret_cast<const char*>(image.pixels.data()));
-    size_t xStride = sizeof(Vec3), yStride = sizeof(Vec3) * image.width;
-    fb.insert("R", Imf::Slice(Imf::FLOAT, base, xStride, yStride));
-    fb.insert("G", Imf::Slice(Imf::FLOAT, base + sizeof(float), xStride, yStride));
-    fb.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), xStride, yStride));
-    file.setFrameBuffer(fb);
-    file.writePixels(int(image.height));
-  } catch (const std::exception& e) {
-    cannotWrite(path, e.what());
-  }
+  const char* base = reinterpret_cast<const char*>(image.pixels.data());
+  writeExrChannels(path, image.width, image.height,
+                   {{"R", base, sizeof(Vec3)}, {"G", base + sizeof(float), sizeof(Vec3)},
+                    {"B", base + 2 * sizeof(float), sizeof(Vec3)}});
 }
 
 // Portable float map: little-endian (negative scale), rows bottom to top.
@@ -70,6 +57,37 @@ void writePfm(const std::string& path, const Image& image) {
 }
 
 }  // namespace
+
+void writeExrChannels(const std::string& path, uint32_t width, uint32_t height,
+                      const std::vector<ExrChannel>& channels) {
+  try {
+    Imf::Header header{int(width), int(height)};
+    for (const ExrChannel& c : channels) header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
+    Imf::OutputFile file(path.c_str(), header);
+    Imf::FrameBuffer fb;
+    for (const ExrChannel& c : channels)
+      fb.insert(c.name, Imf::Slice(Imf::FLOAT, const_cast<char*>(c.base), c.xStride, c.xStride * width));
+    file.setFrameBuffer(fb);
+    file.writePixels(int(height));
+  } catch (const std::exception& e) {
+    cannotWrite(path, e.what());
+  }
+}
+
+const char* toneMapperName(ToneMapper mapper) {
+  switch (mapper) {
+    case ToneMapper::Clamp: return "clamp";
+    case ToneMapper::Reinhard: return "reinhard";
+    case ToneMapper::AcesFilmic: break;
+  }
+  return "aces";
+}
+
+ToneMapper parseToneMapper(const std::string& name) {
+  for (ToneMapper m : {ToneMapper::AcesFilmic, ToneMapper::Clamp, ToneMapper::Reinhard})
+    if (name == toneMapperName(m)) return m;
+  throw std::invalid_argument("unknown tone mapper '" + name + "' (use aces, clamp or reinhard)");
+}
 
 bool isSupportedImageExtension(const std::string& path) {
   std::string ext = extensionOf(path);

@@ -1,5 +1,6 @@
 #pragma once
 #include "core/rng.h"
+#include "kernel/aovs.h"
 #include "kernel/bsdf/bsdf.h"
 #include "kernel/camera.h"
 #include "kernel/interaction.h"
@@ -12,6 +13,7 @@ namespace candela {
 struct PathResult {
   Vec3 radiance;
   uint32_t rays = 0;  // camera, bounce and shadow rays traced for this path
+  PathAovs aovs;      // filled only by the kWithAovs instantiations
 };
 
 // Surfaces crossed without scattering along one ray before it counts as blocked: bounds the work a stack of
@@ -72,7 +74,9 @@ CANDELA_FN Vec3 texturedLightRadiance(const SceneView& scene, const LightSample&
 //   bool intersect(const Ray&, Hit&) const;  bool occluded(const Ray&) const;
 // Delta lobes (mirror, smooth glass) skip light sampling and take the emission they hit at full weight; rays
 // that refract continue on the far side of the surface.
-template <class Tracer>
+// With kWithAovs the path also records PathAovs at its first non-specular vertex; without, that code is not
+// compiled in, so paths that do not need the guides pay nothing for them.
+template <bool kWithAovs = false, class Tracer>
 CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ray ray, PathSampler& sampler,
                                 const RenderSettings& settings) {
   PathResult result;
@@ -82,11 +86,14 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
   float bsdfPdf = 0.0f;        // solid-angle pdf of the BSDF sample that produced `ray`
   Vec3 lastScatter = ray.origin;  // where that sample was taken (cut-outs move the ray's origin on)
   uint32_t passThroughs = 0;
+  bool aovsPending = kWithAovs;
+  float pathLength = 0.0f;  // camera to the current hit, summed while the AOVs are pending
   auto nextRandom = [&] { return sampler.next1D(); };
   for (uint32_t depth = 0;;) {
     Hit hit;
     ++result.rays;
     if (!tracer.intersect(ray, hit)) {
+      if (kWithAovs && aovsPending) result.aovs.albedo = beta;
       Vec3 le = environmentRadiance(scene, ray.direction);
       if (!isBlack(le) && (depth > 0 || scene.environment.visibleToCamera)) {
         float w = (depth == 0 || specularBounce) ? 1.0f : powerHeuristic(bsdfPdf, environmentPdf(scene, ray.direction));
@@ -94,6 +101,7 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
       }
       break;
     }
+    if (kWithAovs && aovsPending) pathLength += hit.t;
     SurfaceInteraction si = makeInteraction(scene, hit);
     const Material& stored = scene.materials[si.materialId];
     Vec3 wo = -ray.direction;
@@ -104,6 +112,12 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
     }
     Material material = evaluateMaterial(scene, stored, si.uv);
     applyNormalMap(scene, material, si);
+    if (kWithAovs && aovsPending && !isSpecularMaterial(material)) {
+      result.aovs.albedo = beta * materialAlbedo(material);
+      result.aovs.normal = dot(si.shadingNormal, wo) < 0.0f ? -si.shadingNormal : si.shadingNormal;
+      result.aovs.depth = pathLength;
+      aovsPending = false;
+    }
 
     float cosAtSurface = dot(si.geometricNormal, wo);
     if (!isBlack(material.emission) && cosAtSurface > 0.0f) {
@@ -169,7 +183,7 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
 CANDELA_FN bool isValidSample(Vec3 l) { return isFinite(l) && l.x >= 0.0f && l.y >= 0.0f && l.z >= 0.0f; }
 
 // One sample of pixel (x, y): a jittered camera ray, then the path.
-template <class Tracer>
+template <bool kWithAovs = false, class Tracer>
 CANDELA_HD PathResult renderPixelSample(const SceneView& scene, const Tracer& tracer, const Camera& camera,
                                         const RenderSettings& settings, uint32_t x, uint32_t y,
                                         uint32_t sampleIndex) {
@@ -178,7 +192,7 @@ CANDELA_HD PathResult renderPixelSample(const SceneView& scene, const Tracer& tr
   Vec2 uLens;
   if (camera.lensRadius > 0.0f) uLens = {sampler.next1D(), sampler.next1D()};
   Ray ray = camera.generateRay(float(x) + jx, float(y) + jy, int(settings.width), int(settings.height), uLens);
-  return tracePath(scene, tracer, ray, sampler, settings);
+  return tracePath<kWithAovs>(scene, tracer, ray, sampler, settings);
 }
 
 }  // namespace candela

@@ -126,7 +126,7 @@ TEST_F(GlDisplay, ToneMappingMatchesTonemapH) {
       image.at(x, y) = {v, 0.5f * v, x == 0 ? 0.0f : 2.0f * v};
     }
   display_->upload(image);
-  for (ToneMapper mapper : {ToneMapper::AcesFilmic, ToneMapper::Clamp})
+  for (ToneMapper mapper : {ToneMapper::AcesFilmic, ToneMapper::Clamp, ToneMapper::Reinhard})
     for (float exposure : {-2.0f, 0.0f, 1.5f}) {
       PostSettings post;
       post.display = {exposure, mapper};

@@ -42,6 +42,12 @@ class RecordingBackend final : public Backend {
   }
   uint32_t accumulatedSamples() const override { return log_.accumulated; }
   Image readImage() const override { return {}; }
+  void setAovsEnabled(bool enabled) override {
+    aovs_ = enabled;
+    restart();
+  }
+  bool aovsEnabled() const override { return aovs_; }
+  AovImages readAovs() const override { return {}; }
 
  private:
   void restart() {
@@ -49,6 +55,7 @@ class RecordingBackend final : public Backend {
     log_.accumulated = 0;
   }
   BackendLog& log_;
+  bool aovs_ = false;
 };
 
 struct SessionTest : ::testing::Test {
@@ -97,6 +104,17 @@ TEST_F(SessionTest, SettingsAndResolutionChangesRestart) {
   EXPECT_EQ(session.restarts(), 3u);
   EXPECT_EQ(session.appliedSettings().width, 16u);
   EXPECT_EQ(session.accumulatedSamples(), 1u);
+}
+
+TEST_F(SessionTest, TurningTheDenoiserGuidesOnOrOffRestarts) {
+  session.renderFrame(camera, settings, 1, true);
+  session.setAovsEnabled(true);
+  session.setAovsEnabled(true);
+  session.renderFrame(camera, settings, 1, true);
+  EXPECT_EQ(session.restarts(), 2u);
+  EXPECT_EQ(session.accumulatedSamples(), 1u);
+  session.setAovsEnabled(false);
+  EXPECT_EQ(session.restarts(), 3u);
 }
 
 TEST_F(SessionTest, WithoutAccumulationEveryFrameStartsAfreshWithItsOwnSeed) {

@@ -45,12 +45,16 @@ void main() {
 inline constexpr const char* kToneMapFragmentShader = R"(#version 330 core
 uniform sampler2D image;
 uniform float exposureScale;  // 2^exposure
-uniform int toneMapper;  // 0 ACES filmic, 1 clamp
+uniform int toneMapper;  // 0 ACES filmic, 1 clamp, 2 Reinhard
 in vec2 uv;
 out vec4 colour;
 float acesFilmic(float x) {
   const float a = 2.51, b = 0.03, c = 2.43, d = 0.59, e = 0.14;
   return clamp((x * (a * x + b)) / (x * (c * x + d) + e), 0.0, 1.0);
+}
+float reinhard(float x) {
+  x = max(x, 0.0);
+  return x / (1.0 + x);
 }
 float linearToSrgb(float x) {
   x = clamp(x, 0.0, 1.0);
@@ -59,6 +63,7 @@ float linearToSrgb(float x) {
 void main() {
   vec3 c = texture(image, uv).rgb * exposureScale;
   if (toneMapper == 0) c = vec3(acesFilmic(c.r), acesFilmic(c.g), acesFilmic(c.b));
+  if (toneMapper == 2) c = vec3(reinhard(c.r), reinhard(c.g), reinhard(c.b));
   colour = vec4(linearToSrgb(c.r), linearToSrgb(c.g), linearToSrgb(c.b), 1.0);
 }
 )";

@@ -37,6 +37,12 @@ void RenderSession::setEnvironmentIntensity(float intensity) {
   sceneChanged_ = true;
 }
 
+void RenderSession::setAovsEnabled(bool enabled) {
+  if (enabled == backend_->aovsEnabled()) return;
+  backend_->setAovsEnabled(enabled);
+  ++restarts_;
+}
+
 FrameStats RenderSession::renderFrame(const Camera& camera, const RenderSettings& settings,
                                       uint32_t samplesPerPixel, bool accumulate) {
   RenderSettings wanted = settings;

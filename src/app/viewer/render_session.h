@@ -31,6 +31,10 @@ class RenderSession {
   uint64_t frames() const { return frames_; }
   const RenderSettings& appliedSettings() const { return applied_; }
   Image image() const { return backend_->readImage(); }
+  // Starts or stops accumulating the AOVs; a change restarts the accumulation.
+  void setAovsEnabled(bool enabled);
+  // The accumulated image through the backend's a-trous denoiser (AOVs enabled).
+  Image atrousImage(const AtrousParams& params) const { return backend_->readAtrousDenoised(params); }
   const Backend& backend() const { return *backend_; }
 
  private:

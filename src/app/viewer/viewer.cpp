@@ -52,6 +52,7 @@ class Viewer {
   void writeState();
   void writeExitFiles();
   void report(const std::string& message, bool isError);
+  Image accumulatedImage() const;
 
   ViewerOptions options_;
   GlfwWindow window_;
@@ -183,7 +184,7 @@ void Viewer::handle(const PanelRequests& requests) {
   if (requests.applyEnvironment) session_.setEnvironmentIntensity(controls_.environmentIntensity);
   try {
     if (requests.saveScreenshot) {
-      Image image = session_.image();
+      Image image = accumulatedImage();
       saveScreenshot(controls_.screenshotBase + ".png", image, controls_.post);
       saveScreenshot(controls_.screenshotBase + ".exr", image, controls_.post);
       report("saved " + controls_.screenshotBase + ".png and .exr", false);
@@ -225,9 +226,10 @@ void Viewer::frame(double now, double seconds) {
   settings.maxDepth = controls_.maxDepth;
   settings.seed = options_.seed;
   auto start = std::chrono::steady_clock::now();
+  session_.setAovsEnabled(controls_.post.atrous);
   session_.renderFrame(camera, settings, lastPlan_.samplesPerPixel, controls_.accumulate);
+  display_.upload(accumulatedImage());
   policy_.recordFrame(lastPlan_, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  display_.upload(session_.image());
 
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, framebufferWidth_, framebufferHeight_);
@@ -245,6 +247,11 @@ void Viewer::frame(double now, double seconds) {
   openSceneField_ = requests.openSceneField;
   handle(requests);
   imgui_.render();
+}
+
+// What the window shows before its GPU passes: the film, denoised when the a-trous denoiser is on.
+Image Viewer::accumulatedImage() const {
+  return controls_.post.atrous ? session_.atrousImage(controls_.post.atrousParams) : session_.image();
 }
 
 void Viewer::updateStatus(double seconds) {
@@ -289,7 +296,7 @@ void Viewer::writeState() {
 
 void Viewer::writeExitFiles() {
   if (!options_.windowCapture.empty()) captureWindow(options_.windowCapture, framebufferWidth_, framebufferHeight_);
-  if (!options_.screenshot.empty()) saveScreenshot(options_.screenshot, session_.image(), controls_.post);
+  if (!options_.screenshot.empty()) saveScreenshot(options_.screenshot, accumulatedImage(), controls_.post);
 }
 
 int Viewer::run() {

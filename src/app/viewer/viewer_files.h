@@ -10,7 +10,8 @@ namespace candela {
 
 // The files the viewer writes. Each throws std::runtime_error with a sentence naming the file on failure.
 
-// The accumulated image as the window shows it: through the CPU bilateral filter when it is on; a .png is tone
+// The accumulated image (denoised where the a-trous denoiser is on) as the window shows it: through the CPU
+// bilateral filter when it is on; a .png is tone
 // mapped with the panel's settings, an .exr or .pfm stays linear.
 void saveScreenshot(const std::string& path, const Image& accumulated, const PostSettings& post);
 

@@ -44,10 +44,15 @@ void drawRenderSettings(ViewerControls& c, PanelRequests& requests) {
 }
 
 void drawPost(PostSettings& post) {
-  int mapper = post.display.toneMapper == ToneMapper::Clamp ? 1 : 0;
-  if (ImGui::Combo("Tone mapper", &mapper, "ACES filmic\0Clamp\0"))
-    post.display.toneMapper = mapper == 1 ? ToneMapper::Clamp : ToneMapper::AcesFilmic;
+  int mapper = int(post.display.toneMapper);
+  if (ImGui::Combo("Tone mapper", &mapper, "ACES filmic\0Clamp\0Reinhard\0")) post.display.toneMapper = ToneMapper(mapper);
   ImGui::SliderFloat("Exposure", &post.display.exposure, -10.0f, 10.0f, "%.2f stops");
+  ImGui::Checkbox("A-trous denoiser", &post.atrous);
+  ImGui::BeginDisabled(!post.atrous);
+  ImGui::SliderInt("Passes", &post.atrousParams.passes, 1, kMaxAtrousPasses, "%d", ImGuiSliderFlags_AlwaysClamp);
+  ImGui::SliderFloat("Colour sigma", &post.atrousParams.colorSigma, 0.01f, 100.0f, "%.3f",
+                     ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+  ImGui::EndDisabled();
   ImGui::Checkbox("Bilateral filter", &post.bilateral);
   ImGui::BeginDisabled(!post.bilateral);
   ImGui::SliderInt("Radius", &post.bilateralParams.radius, 1, kMaxBilateralRadius, "%d px",

@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include <fstream>
+#include <stdexcept>
 
 #include "backends/cpu/embree_tracer.h"
 #include "kernel/integrator.h"
@@ -51,12 +52,26 @@ void CpuBackend::setSettings(const RenderSettings& settings) {
   restart();
 }
 
+void CpuBackend::setAovsEnabled(bool enabled) {
+  aovsEnabled_ = enabled;
+  restart();
+}
+
 void CpuBackend::restart() {
-  sum_.assign(size_t(settings_.width) * settings_.height, Vec3{});
+  const size_t pixels = size_t(settings_.width) * settings_.height;
+  sum_.assign(pixels, Vec3{});
+  albedoSum_.assign(aovsEnabled_ ? pixels : 0, Vec3{});
+  normalSum_.assign(aovsEnabled_ ? pixels : 0, Vec3{});
+  depthSum_.assign(aovsEnabled_ ? pixels : 0, 0.0f);
   accumulated_ = 0;
 }
 
 FrameStats CpuBackend::render(uint32_t samplesPerPixel) {
+  return aovsEnabled_ ? renderSamples<true>(samplesPerPixel) : renderSamples<false>(samplesPerPixel);
+}
+
+template <bool kWithAovs>
+FrameStats CpuBackend::renderSamples(uint32_t samplesPerPixel) {
   const SceneView scene = flat_.hostView();
   const EmbreeTracer tracer(embree_.topLevel());
   const uint32_t firstSample = accumulated_;
@@ -68,15 +83,28 @@ FrameStats CpuBackend::render(uint32_t samplesPerPixel) {
         for (uint32_t y = tile.rows().begin(); y < tile.rows().end(); ++y)
           for (uint32_t x = tile.cols().begin(); x < tile.cols().end(); ++x) {
             Vec3 pixelSum{};
+            PathAovs aovSum;
             for (uint32_t s = 0; s < samplesPerPixel; ++s) {
-              PathResult path = renderPixelSample(scene, tracer, camera_, settings_, x, y, firstSample + s);
+              PathResult path =
+                  renderPixelSample<kWithAovs>(scene, tracer, camera_, settings_, x, y, firstSample + s);
               local.rays += path.rays;
               if (isValidSample(path.radiance))
                 pixelSum += path.radiance;
               else
                 ++local.invalidSamples;
+              if constexpr (kWithAovs) {
+                aovSum.albedo += path.aovs.albedo;
+                aovSum.normal += path.aovs.normal;
+                aovSum.depth += path.aovs.depth;
+              }
             }
-            sum_[size_t(y) * settings_.width + x] += pixelSum;
+            const size_t pixel = size_t(y) * settings_.width + x;
+            sum_[pixel] += pixelSum;
+            if constexpr (kWithAovs) {
+              albedoSum_[pixel] += aovSum.albedo;
+              normalSum_[pixel] += aovSum.normal;
+              depthSum_[pixel] += aovSum.depth;
+            }
           }
       });
   accumulated_ += samplesPerPixel;
@@ -93,6 +121,18 @@ Image CpuBackend::readImage() const {
   float scale = accumulated_ > 0 ? 1.0f / float(accumulated_) : 0.0f;
   for (size_t i = 0; i < sum_.size(); ++i) image.pixels[i] = sum_[i] * scale;
   return image;
+}
+
+AovImages CpuBackend::readAovs() const {
+  if (!aovsEnabled_) throw std::logic_error("CpuBackend::readAovs without setAovsEnabled(true)");
+  AovImages aovs(settings_.width, settings_.height);
+  float scale = accumulated_ > 0 ? 1.0f / float(accumulated_) : 0.0f;
+  for (size_t i = 0; i < sum_.size(); ++i) {
+    aovs.albedo.pixels[i] = albedoSum_[i] * scale;
+    aovs.normal.pixels[i] = normalSum_[i] * scale;
+    aovs.depth[i] = depthSum_[i] * scale;
+  }
+  return aovs;
 }
 
 }  // namespace candela

@@ -22,15 +22,23 @@ class CpuBackend final : public Backend {
   FrameStats render(uint32_t samplesPerPixel) override;
   uint32_t accumulatedSamples() const override { return accumulated_; }
   Image readImage() const override;
+  void setAovsEnabled(bool enabled) override;
+  bool aovsEnabled() const override { return aovsEnabled_; }
+  AovImages readAovs() const override;
 
  private:
   void restart();
+  template <bool kWithAovs>
+  FrameStats renderSamples(uint32_t samplesPerPixel);
 
   FlatScene flat_;
   EmbreeScene embree_;
   Camera camera_;
   RenderSettings settings_;
   std::vector<Vec3> sum_;
+  bool aovsEnabled_ = false;
+  std::vector<Vec3> albedoSum_, normalSum_;  // empty while the AOVs are off
+  std::vector<float> depthSum_;
   uint32_t accumulated_ = 0;
 };
 

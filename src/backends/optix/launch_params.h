@@ -38,6 +38,13 @@ struct RayRecording {
   uint32_t slotsPerPixel = 0;
 };
 
+// Per-pixel sums of the AOVs (kernel/aovs.h), filled by the AOV raygen program.
+struct AovAccumulation {
+  Vec3* albedo = nullptr;
+  Vec3* normal = nullptr;
+  float* depth = nullptr;
+};
+
 struct LaunchParameters {
   SceneView scene;
   Camera camera;
@@ -46,6 +53,7 @@ struct LaunchParameters {
   uint32_t firstSample = 0;      // sample index of this launch's first sample in every pixel
   uint32_t samplesPerPixel = 0;  // samples each pixel takes in this launch
   Vec3* accumulation = nullptr;  // per pixel: sum of the valid samples so far
+  AovAccumulation aovs;          // null pointers unless the AOVs are enabled
   PixelCounters* counters = nullptr;
   RayRecording recording;
 };

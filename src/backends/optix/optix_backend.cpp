@@ -9,6 +9,7 @@
 
 #include "backends/optix/acceleration.h"
 #include "backends/optix/device_scene.h"
+#include "backends/optix/filters/cuda_filters.h"
 #include "backends/optix/launch_params.h"
 #include "backends/optix/optix_context.h"
 #include "backends/optix/optix_error.h"
@@ -55,6 +56,10 @@ struct OptixBackend::State {
   RenderSettings settings;
 
   DeviceBuffer accumulation;
+  bool aovsEnabled = false;
+  DeviceBuffer albedoSum, normalSum, depthSum;  // empty while the AOVs are off
+  std::unique_ptr<CudaAtrous> atrous;           // made at the first a-trous read, for the image's size
+  DeviceBuffer filtered;                        // the filters' output
   DeviceBuffer counters;
   DeviceBuffer totals{sizeof(CounterTotals), "the counter totals"};
   DeviceBuffer parameters{sizeof(LaunchParameters), "the launch parameters"};
@@ -70,6 +75,7 @@ struct OptixBackend::State {
     p.settings = settings;
     p.traversable = acceleration.topLevel();
     p.accumulation = accumulation.as<Vec3>();
+    p.aovs = {albedoSum.as<Vec3>(), normalSum.as<Vec3>(), depthSum.as<float>()};
     p.counters = counters.as<PixelCounters>();
     return p;
   }
@@ -94,11 +100,50 @@ struct OptixBackend::State {
     return result;
   }
 
+  // Film buffers of the current size: the colour sums always, the AOV sums while they are enabled.
+  void allocateFilm() {
+    const size_t pixels = pixelCount();
+    if (accumulation.size() != pixels * sizeof(Vec3)) {
+      accumulation = DeviceBuffer();
+      counters = DeviceBuffer();
+      accumulation = DeviceBuffer(pixels * sizeof(Vec3), "the accumulation buffer");
+      counters = DeviceBuffer(pixels * sizeof(PixelCounters), "the per-pixel counters");
+    }
+    const size_t aovPixels = aovsEnabled ? pixels : 0;
+    if (albedoSum.size() != aovPixels * sizeof(Vec3)) {
+      albedoSum = DeviceBuffer();
+      normalSum = DeviceBuffer();
+      depthSum = DeviceBuffer();
+      if (aovPixels > 0) {
+        albedoSum = DeviceBuffer(aovPixels * sizeof(Vec3), "the albedo AOV");
+        normalSum = DeviceBuffer(aovPixels * sizeof(Vec3), "the normal AOV");
+        depthSum = DeviceBuffer(aovPixels * sizeof(float), "the depth AOV");
+      }
+    }
+  }
+
   void restart() {
     accumulated = 0;
-    if (accumulation.size() > 0)
-      checkCuda(cudaMemsetAsync(accumulation.as<void>(), 0, accumulation.size(), context.stream()),
-                "clearing the accumulation buffer");
+    for (DeviceBuffer* b : {&accumulation, &albedoSum, &normalSum, &depthSum})
+      if (b->size() > 0)
+        checkCuda(cudaMemsetAsync(b->as<void>(), 0, b->size(), context.stream()), "clearing the film");
+  }
+
+  float meanScale() const { return accumulated > 0 ? 1.0f / float(accumulated) : 0.0f; }
+
+  Vec3* filterOutput() {
+    if (filtered.size() != accumulation.size()) {
+      filtered = DeviceBuffer();
+      filtered = DeviceBuffer(accumulation.size(), "the filtered image");
+    }
+    return filtered.as<Vec3>();
+  }
+
+  Image downloadFiltered() const {
+    Image image(settings.width, settings.height);
+    checkCuda(cudaStreamSynchronize(context.stream()), "filtering the image");
+    filtered.download(image.pixels.data(), image.pixels.size() * sizeof(Vec3));
+    return image;
   }
 };
 
@@ -130,14 +175,8 @@ void OptixBackend::setCamera(const Camera& camera) {
 
 void OptixBackend::setSettings(const RenderSettings& settings) {
   State& s = *state_;
-  uint32_t oldPixels = s.pixelCount();
   s.settings = settings;
-  if (s.pixelCount() != oldPixels || s.accumulation.size() == 0) {
-    s.accumulation = DeviceBuffer();
-    s.counters = DeviceBuffer();
-    s.accumulation = DeviceBuffer(size_t(s.pixelCount()) * sizeof(Vec3), "the accumulation buffer");
-    s.counters = DeviceBuffer(size_t(s.pixelCount()) * sizeof(PixelCounters), "the per-pixel counters");
-  }
+  s.allocateFilm();
   s.restart();
 }
 
@@ -151,7 +190,7 @@ FrameStats OptixBackend::render(uint32_t samplesPerPixel) {
     LaunchParameters p = s.baseParameters();
     p.firstSample = s.accumulated;
     p.samplesPerPixel = std::min(samplesPerPixel - done, maxPerLaunch);
-    LaunchResult r = s.launch(RaygenProgram::Render, p);
+    LaunchResult r = s.launch(s.aovsEnabled ? RaygenProgram::RenderWithAovs : RaygenProgram::Render, p);
     stats.rays += r.totals.rays;
     stats.invalidSamples += r.totals.invalidSamples;
     stats.deviceMilliseconds += r.milliseconds;
@@ -170,6 +209,52 @@ Image OptixBackend::readImage() const {
   float scale = s.accumulated > 0 ? 1.0f / float(s.accumulated) : 0.0f;
   for (Vec3& p : image.pixels) p = p * scale;
   return image;
+}
+
+void OptixBackend::setAovsEnabled(bool enabled) {
+  state_->aovsEnabled = enabled;
+  state_->allocateFilm();
+  state_->restart();
+}
+
+bool OptixBackend::aovsEnabled() const { return state_->aovsEnabled; }
+
+AovImages OptixBackend::readAovs() const {
+  const State& s = *state_;
+  if (!s.aovsEnabled) throw std::logic_error("OptixBackend::readAovs without setAovsEnabled(true)");
+  AovImages aovs(s.settings.width, s.settings.height);
+  s.albedoSum.download(aovs.albedo.pixels.data(), s.albedoSum.size());
+  s.normalSum.download(aovs.normal.pixels.data(), s.normalSum.size());
+  s.depthSum.download(aovs.depth.data(), s.depthSum.size());
+  const float scale = s.meanScale();
+  for (size_t i = 0; i < aovs.depth.size(); ++i) {
+    aovs.albedo.pixels[i] = aovs.albedo.pixels[i] * scale;
+    aovs.normal.pixels[i] = aovs.normal.pixels[i] * scale;
+    aovs.depth[i] = aovs.depth[i] * scale;
+  }
+  return aovs;
+}
+
+Image OptixBackend::readAtrousDenoised(const AtrousParams& params) const {
+  State& s = *state_;
+  if (!s.aovsEnabled) throw std::logic_error("OptixBackend::readAtrousDenoised without setAovsEnabled(true)");
+  validateAtrousParams(params);
+  if (!s.atrous || s.atrous->width() != s.settings.width || s.atrous->height() != s.settings.height) {
+    s.atrous.reset();
+    s.atrous = std::make_unique<CudaAtrous>(s.settings.width, s.settings.height);
+  }
+  const DeviceFilmView film{s.accumulation.as<Vec3>(), s.albedoSum.as<Vec3>(), s.normalSum.as<Vec3>(),
+                            s.depthSum.as<float>(), s.meanScale()};
+  s.atrous->run(film, s.filterOutput(), params, s.context.stream());
+  return s.downloadFiltered();
+}
+
+Image OptixBackend::readBilateralFiltered(const BilateralParams& params) const {
+  State& s = *state_;
+  validateBilateralParams(params);
+  cudaBilateral(s.accumulation.as<Vec3>(), s.meanScale(), s.filterOutput(), s.settings.width, s.settings.height,
+                params, s.context.stream());
+  return s.downloadFiltered();
 }
 
 RawTraceTiming OptixBackend::timeRawTrace(uint32_t warmup, uint32_t frames) {

@@ -34,6 +34,12 @@ class OptixBackend final : public Backend {
   FrameStats render(uint32_t samplesPerPixel) override;
   uint32_t accumulatedSamples() const override;
   Image readImage() const override;
+  void setAovsEnabled(bool enabled) override;
+  bool aovsEnabled() const override;
+  AovImages readAovs() const override;
+  // The CUDA versions of the CPU filters, run on the film in device memory; only the result comes back.
+  Image readAtrousDenoised(const AtrousParams& params) const override;
+  Image readBilateralFiltered(const BilateralParams& params) const override;
 
   // The traversal ceiling for this scene and ray mix: records every ray of one sample per pixel (the next
   // sample index; the image is left alone), then times `frames` launches, after `warmup` untimed ones, that

@@ -67,7 +67,8 @@ Pipeline::Pipeline(OptixDeviceContext context) {
   });
 
   OptixProgramGroupDesc descriptions[kGroupCount] = {};
-  const char* raygenNames[kRaygenCount] = {"__raygen__render", "__raygen__record", "__raygen__rawTrace"};
+  const char* raygenNames[kRaygenCount] = {"__raygen__render", "__raygen__record", "__raygen__rawTrace",
+                                           "__raygen__renderWithAovs"};
   for (int i = 0; i < kRaygenCount; ++i) {
     descriptions[i].kind = OPTIX_PROGRAM_GROUP_KIND_RAYGEN;
     descriptions[i].raygen.module = module_;

@@ -7,7 +7,7 @@
 
 namespace candela::optix {
 
-enum class RaygenProgram { Render = 0, Record, RawTrace, Count };
+enum class RaygenProgram { Render = 0, Record, RawTrace, RenderWithAovs, Count };
 
 class Pipeline {
  public:

@@ -5,7 +5,7 @@ namespace candela {
 
 // An edge-preserving blur: each pixel becomes the weighted mean of its (2 radius + 1)^2 neighbours inside the
 // image, with weight exp(-|q - p|^2 / (2 spatialSigma^2) - |I(q) - I(p)|^2 / (2 rangeSigma^2)), where the
-// range distance is Euclidean in linear RGB. The viewer's GLSL pass computes the same sum.
+// range distance is Euclidean in linear RGB. The viewer's GLSL pass and the CUDA version compute the same sum.
 struct BilateralParams {
   int radius = 3;             // pixels; 0 leaves the image unchanged
   float spatialSigma = 2.0f;  // pixels
@@ -16,5 +16,8 @@ struct BilateralParams {
 Image bilateralFilter(const Image& input, const BilateralParams& params);
 
 constexpr int kMaxBilateralRadius = 32;
+
+// The range checks of bilateralFilter, for the other implementations of the same filter.
+void validateBilateralParams(const BilateralParams& params);
 
 }  // namespace candela

@@ -1,4 +1,5 @@
 #pragma once
+#include "kernel/aovs.h"
 #include "kernel/bsdf/blinn_phong.h"
 #include "kernel/bsdf/disney.h"
 #include "kernel/bsdf/lambertian.h"
@@ -32,9 +33,7 @@ class Bsdf {
   CANDELA_FN float eta() const { return eta_; }
 
   // Delta lobes only: light sampling cannot find them, so next-event estimation is skipped.
-  CANDELA_FN bool isDelta() const {
-    return material_.type == MaterialType::Mirror || material_.type == MaterialType::Glass;
-  }
+  CANDELA_FN bool isDelta() const { return isSpecularMaterial(material_); }
   CANDELA_FN bool hasTransmission() const {
     switch (material_.type) {
       case MaterialType::Glass: return true;

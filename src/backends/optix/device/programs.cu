@@ -23,24 +23,40 @@ __device__ uint32_t launchPixel() {
 }  // namespace
 
 // Adds `samplesPerPixel` path samples to the pixel's sum; NaN/Inf/negative samples are dropped and counted.
-extern "C" __global__ void __raygen__render() {
+// With kWithAovs the AOVs of every sample are added to their sums too.
+template <bool kWithAovs>
+__device__ void renderPixel() {
   const uint3 index = optixGetLaunchIndex();
   const uint32_t pixel = launchPixel();
   const OptixTracer tracer(params.traversable);
   Vec3 sum{};
+  PathAovs aovSum;
   uint32_t rays = 0, invalid = 0;
   for (uint32_t s = 0; s < params.samplesPerPixel; ++s) {
-    PathResult path =
-        renderPixelSample(params.scene, tracer, params.camera, params.settings, index.x, index.y, params.firstSample + s);
+    PathResult path = renderPixelSample<kWithAovs>(params.scene, tracer, params.camera, params.settings, index.x,
+                                                   index.y, params.firstSample + s);
     rays += path.rays;
     if (isValidSample(path.radiance))
       sum += path.radiance;
     else
       ++invalid;
+    if (kWithAovs) {
+      aovSum.albedo += path.aovs.albedo;
+      aovSum.normal += path.aovs.normal;
+      aovSum.depth += path.aovs.depth;
+    }
   }
   params.accumulation[pixel] += sum;
+  if (kWithAovs) {
+    params.aovs.albedo[pixel] += aovSum.albedo;
+    params.aovs.normal[pixel] += aovSum.normal;
+    params.aovs.depth[pixel] += aovSum.depth;
+  }
   params.counters[pixel] = {rays, invalid};
 }
+
+extern "C" __global__ void __raygen__render() { renderPixel<false>(); }
+extern "C" __global__ void __raygen__renderWithAovs() { renderPixel<true>(); }
 
 // Traces one sample per pixel like __raygen__render and records its rays; the image is left alone.
 extern "C" __global__ void __raygen__record() {

@@ -1,0 +1,30 @@
+// The CPU filters at 1920x1080 (Google Benchmark). Run with the threads the measurement is for, e.g.
+//   taskset -c 0,1 build/bench/denoise_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+// TBB uses the processors the process may run on.
+#include <benchmark/benchmark.h>
+
+#include "filter_inputs.h"
+#include "image/filters/atrous.h"
+#include "image/filters/bilateral.h"
+
+namespace candela {
+namespace {
+
+void atrousFivePasses(benchmark::State& state) {
+  const bench::FilterInput in = bench::noisyFrame();
+  AtrousParams params;
+  params.passes = 5;
+  for (auto _ : state) benchmark::DoNotOptimize(atrousDenoise(in.color, in.aovs, params));
+}
+BENCHMARK(atrousFivePasses)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void bilateralRadius3(benchmark::State& state) {
+  const bench::FilterInput in = bench::noisyFrame();
+  for (auto _ : state) benchmark::DoNotOptimize(bilateralFilter(in.color, BilateralParams{}));
+}
+BENCHMARK(bilateralRadius3)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+}  // namespace candela
+
+BENCHMARK_MAIN();

@@ -1,0 +1,72 @@
+// The CUDA filters at 1920x1080 on images already in device memory, timed with CUDA events: 20 untimed runs,
+// then the median of 100. Prints one JSON line per filter.
+#include <cuda_runtime.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <functional>
+#include <vector>
+
+#include "backends/optix/filters/cuda_filters.h"
+#include "backends/optix/optix_error.h"
+#include "filter_inputs.h"
+
+using namespace candela;
+using namespace candela::optix;
+
+namespace {
+
+double medianMilliseconds(cudaStream_t stream, const std::function<void()>& enqueue) {
+  cudaEvent_t start, stop;
+  checkCuda(cudaEventCreate(&start), "creating a CUDA event");
+  checkCuda(cudaEventCreate(&stop), "creating a CUDA event");
+  for (int i = 0; i < 20; ++i) enqueue();
+  std::vector<double> times;
+  for (int i = 0; i < 100; ++i) {
+    checkCuda(cudaEventRecord(start, stream), "recording a CUDA event");
+    enqueue();
+    checkCuda(cudaEventRecord(stop, stream), "recording a CUDA event");
+    checkCuda(cudaEventSynchronize(stop), "running a filter");
+    float ms = 0.0f;
+    checkCuda(cudaEventElapsedTime(&ms, start, stop), "reading a CUDA event");
+    times.push_back(ms);
+  }
+  cudaEventDestroy(start);
+  cudaEventDestroy(stop);
+  std::sort(times.begin(), times.end());
+  return 0.5 * (times[49] + times[50]);
+}
+
+}  // namespace
+
+int main() {
+  try {
+    cudaDeviceProp properties{};
+    checkCuda(cudaGetDeviceProperties(&properties, 0), "reading the GPU's properties");
+    const bench::FilterInput in = bench::noisyFrame();
+    const uint32_t w = in.color.width, h = in.color.height;
+    DeviceBuffer color = DeviceBuffer::fromVector(in.color.pixels, "the image");
+    DeviceBuffer albedo = DeviceBuffer::fromVector(in.aovs.albedo.pixels, "the albedo");
+    DeviceBuffer normal = DeviceBuffer::fromVector(in.aovs.normal.pixels, "the normals");
+    DeviceBuffer depth = DeviceBuffer::fromVector(in.aovs.depth, "the depth");
+    DeviceBuffer out(color.size(), "the output");
+    cudaStream_t stream;
+    checkCuda(cudaStreamCreate(&stream), "creating a CUDA stream");
+    CudaAtrous atrous(w, h);
+    const DeviceFilmView film{color.as<Vec3>(), albedo.as<Vec3>(), normal.as<Vec3>(), depth.as<float>(), 1.0f};
+    AtrousParams params;
+    params.passes = 5;
+    const double atrousMs = medianMilliseconds(stream, [&] { atrous.run(film, out.as<Vec3>(), params, stream); });
+    const double bilateralMs = medianMilliseconds(
+        stream, [&] { cudaBilateral(color.as<Vec3>(), 1.0f, out.as<Vec3>(), w, h, BilateralParams{}, stream); });
+    std::printf("{\"filter\":\"atrous\",\"passes\":5,\"width\":%u,\"height\":%u,\"device\":\"%s\",\"median_ms\":%.4f}\n",
+                w, h, properties.name, atrousMs);
+    std::printf("{\"filter\":\"bilateral\",\"radius\":3,\"width\":%u,\"height\":%u,\"device\":\"%s\",\"median_ms\":%.4f}\n",
+                w, h, properties.name, bilateralMs);
+    cudaStreamDestroy(stream);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "denoise_gpu_bench: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,30 @@
+#pragma once
+#include "image/aov_images.h"
+#include "image/image.h"
+
+namespace candela {
+
+// Edge-avoiding a-trous wavelet filter (Dammertz et al. 2010), the spatial part of SVGF: `passes` passes of the
+// 5x5 B3-spline kernel with holes of 2^i pixels, each tap weighted down by its difference from the centre in
+// colour, normal and depth. The colour is filtered demodulated by the albedo (texture detail is not noise) and
+// remodulated after, so only the lighting is smoothed. The colour weight compares luminance.
+struct AtrousParams {
+  int passes = 5;
+  // Colour edge-stopping width in standard deviations of the local luminance noise, estimated in every pass
+  // from the 3x3 neighbourhood (SVGF's spatial variance estimate): it narrows as the image gets smoother.
+  float colorSigma = 1.25f;
+  float normalSigma = 1.0f;  // on |n_p - n_q| of unit normals
+  // On |z_p - z_q| over the difference the centre's depth gradient predicts for the tap (SVGF).
+  float depthSigma = 10.0f;
+};
+
+constexpr int kMaxAtrousPasses = 10;
+
+// Throws std::invalid_argument for a pass count outside [0, kMaxAtrousPasses] or a sigma that is not positive.
+void validateAtrousParams(const AtrousParams& params);
+
+// Throws std::invalid_argument for bad params or AOVs of another size than the image.
+void validateAtrousInput(const Image& color, const AovImages& aovs, const AtrousParams& params);
+Image atrousDenoise(const Image& color, const AovImages& aovs, const AtrousParams& params);
+
+}  // namespace candela

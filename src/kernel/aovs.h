@@ -1,0 +1,28 @@
+#pragma once
+#include "kernel/material.h"
+
+namespace candela {
+
+// What a path saw at its first non-specular vertex, where it followed mirrors and smooth glass from the camera
+// up to there: the guides of the denoisers. Averaged over a pixel's samples like colour.
+struct PathAovs {
+  // The vertex's reflectance (materialAlbedo) times the weight of the specular chain before it; where the path
+  // escaped, the chain's weight alone (the environment is treated as white).
+  Vec3 albedo;
+  Vec3 normal;         // shading normal, world space, turned towards the arriving path; zero where it escaped
+  float depth = 0.0f;  // length of the path from the camera to the vertex; zero where it escaped
+};
+
+// A material's reflectance for the albedo guide: the colour its lobes scale light by at normal incidence,
+// clamped to [0, 1]. Delta materials never reach it (the AOVs follow them).
+CANDELA_FN Vec3 materialAlbedo(const Material& m) {
+  Vec3 a = m.baseColor;
+  if (m.type == MaterialType::BlinnPhong) a += m.specularColor;
+  return {clampf(a.x, 0.0f, 1.0f), clampf(a.y, 0.0f, 1.0f), clampf(a.z, 0.0f, 1.0f)};
+}
+
+CANDELA_FN bool isSpecularMaterial(const Material& m) {
+  return m.type == MaterialType::Mirror || m.type == MaterialType::Glass;
+}
+
+}  // namespace candela

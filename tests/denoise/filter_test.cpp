@@ -1,0 +1,182 @@
+// The CPU a-trous filter's contract, the shared fast exponential, tone mapping and AOV files.
+#include <gtest/gtest.h>
+
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+
+#include <cmath>
+#include <filesystem>
+#include <random>
+
+#include "image/aov_io.h"
+#include "image/filters/atrous.h"
+#include "image/filters/fast_exp.h"
+#include "image/tonemap.h"
+
+namespace candela {
+namespace {
+
+struct NoisyInput {
+  Image color;
+  AovImages aovs;
+};
+
+NoisyInput randomInput(uint32_t w, uint32_t h, uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  NoisyInput in{Image(w, h), AovImages(w, h)};
+  for (size_t i = 0; i < in.color.pixels.size(); ++i) {
+    in.color.pixels[i] = {4.0f * u(rng), 4.0f * u(rng), 4.0f * u(rng)};
+    in.aovs.albedo.pixels[i] = {u(rng), u(rng), u(rng)};
+    in.aovs.normal.pixels[i] = normalize(Vec3{u(rng) - 0.5f, u(rng) - 0.5f, u(rng) - 0.5f});
+    in.aovs.depth[i] = u(rng) < 0.1f ? 0.0f : 1.0f + u(rng);
+  }
+  return in;
+}
+
+double worstRelativeDifference(const Image& a, const Image& b) {
+  double worst = 0.0;
+  for (size_t i = 0; i < a.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      worst = std::fmax(worst, std::fabs(double(a.pixels[i][c]) - b.pixels[i][c]) / std::fmax(1e-3, std::fabs(b.pixels[i][c])));
+  return worst;
+}
+
+TEST(Atrous, NoPassesGiveTheImageBack) {
+  const NoisyInput in = randomInput(13, 9, 1);
+  AtrousParams params;
+  params.passes = 0;
+  EXPECT_LE(worstRelativeDifference(atrousDenoise(in.color, in.aovs, params), in.color), 1e-6);
+}
+
+// The weights are normalised: a constant colour over a constant albedo stays, whatever the guides say.
+TEST(Atrous, KeepsAConstantImage) {
+  NoisyInput in = randomInput(37, 29, 2);
+  for (Vec3& c : in.color.pixels) c = {0.3f, 0.6f, 0.9f};
+  for (Vec3& a : in.aovs.albedo.pixels) a = {0.5f, 0.5f, 0.5f};
+  const Image out = atrousDenoise(in.color, in.aovs, AtrousParams{});
+  EXPECT_LE(worstRelativeDifference(out, in.color), 1e-5);
+}
+
+// Colour differences remain where the guides say that surfaces differ: a step in the normals keeps a step in
+// the colour, which the same filter blind to normals smooths.
+TEST(Atrous, NormalsStopTheFilter) {
+  const uint32_t w = 32, h = 16;
+  NoisyInput in{Image(w, h), AovImages(w, h)};
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x) {
+      const size_t i = size_t(y) * w + x;
+      in.color.pixels[i] = x < w / 2 ? Vec3{1, 1, 1} : Vec3{0.5f, 0.5f, 0.5f};
+      in.aovs.albedo.pixels[i] = {1, 1, 1};
+      in.aovs.normal.pixels[i] = x < w / 2 ? Vec3{0, 0, -1} : Vec3{1, 0, 0};
+      in.aovs.depth[i] = 2.0f;
+    }
+  AtrousParams params;
+  params.colorSigma = 1e3f;  // only the normals may stop it
+  params.normalSigma = 0.2f;
+  const Image guided = atrousDenoise(in.color, in.aovs, params);
+  EXPECT_NEAR(guided.at(w / 2 - 1, h / 2).x, 1.0f, 1e-3f);
+  EXPECT_NEAR(guided.at(w / 2, h / 2).x, 0.5f, 1e-3f);
+  params.normalSigma = 1e3f;
+  const Image blind = atrousDenoise(in.color, in.aovs, params);
+  EXPECT_LT(blind.at(w / 2 - 1, h / 2).x, 0.9f);
+}
+
+TEST(Atrous, RejectsBadInput) {
+  const NoisyInput in = randomInput(8, 8, 3);
+  AtrousParams params;
+  params.passes = kMaxAtrousPasses + 1;
+  EXPECT_THROW(atrousDenoise(in.color, in.aovs, params), std::invalid_argument);
+  params = {};
+  params.normalSigma = 0.0f;
+  EXPECT_THROW(atrousDenoise(in.color, in.aovs, params), std::invalid_argument);
+  const NoisyInput other = randomInput(8, 7, 3);
+  EXPECT_THROW(atrousDenoise(in.color, other.aovs, AtrousParams{}), std::invalid_argument);
+}
+
+TEST(FastExp, MatchesTheLibraryExponential) {
+  double worst = 0.0;
+  for (int i = 0; i <= 200000; ++i) {
+    const float x = -80.0f * float(i) / 200000.0f;
+    worst = std::fmax(worst, std::fabs(double(fastExpNonPositive(x)) / std::exp(double(x)) - 1.0));
+  }
+  EXPECT_LE(worst, 5e-7);
+  EXPECT_EQ(fastExpNonPositive(0.0f), 1.0f);
+  EXPECT_LT(fastExpNonPositive(-1e30f), 1e-37f);
+  EXPECT_LT(fastExpNonPositive(-std::numeric_limits<float>::infinity()), 1e-37f);
+}
+
+TEST(ToneMapping, CurvesAndExposure) {
+  // Reinhard maps 1 to 1/2; sRGB encodes 1/2 as 0.7354.
+  EXPECT_NEAR(toneMap({1, 1, 1}, 0.0f, ToneMapper::Reinhard).x, 0.735357f, 1e-5f);
+  // Exposure in stops scales before the curve: 0.25 at +2 stops is 1, which clamp keeps as 1.
+  EXPECT_NEAR(toneMap({0.25f, 0.25f, 0.25f}, 2.0f, ToneMapper::Clamp).x, 1.0f, 1e-6f);
+  EXPECT_NEAR(toneMap({4, 4, 4}, 0.0f, ToneMapper::Clamp).x, 1.0f, 1e-6f);
+  // ACES filmic (Narkowicz): 0.18 -> 0.2669 before sRGB.
+  EXPECT_NEAR(acesFilmic(0.18f), 0.18f * (2.51f * 0.18f + 0.03f) / (0.18f * (2.43f * 0.18f + 0.59f) + 0.14f), 1e-7f);
+  for (ToneMapper m : {ToneMapper::AcesFilmic, ToneMapper::Clamp, ToneMapper::Reinhard}) {
+    EXPECT_EQ(parseToneMapper(toneMapperName(m)), m);
+    float previous = -1.0f;
+    for (float v = 0.0f; v < 64.0f; v = v * 1.5f + 0.01f) {
+      const float out = toneMap({v, v, v}, 0.0f, m).x;
+      EXPECT_GE(out, previous) << toneMapperName(m) << " is monotonic";
+      EXPECT_LE(out, 1.0f);
+      previous = out;
+    }
+  }
+  EXPECT_THROW(parseToneMapper("filmic"), std::invalid_argument);
+}
+
+TEST(AovFiles, ParseTheList) {
+  EXPECT_EQ(parseAovList("depth,albedo"), (std::vector<Aov>{Aov::Depth, Aov::Albedo}));
+  EXPECT_THROW(parseAovList("albedo,"), std::invalid_argument);
+  EXPECT_THROW(parseAovList("albedo,albedo"), std::invalid_argument);
+  EXPECT_THROW(parseAovList("position"), std::invalid_argument);
+}
+
+TEST(AovFiles, ExrHoldsTheAovsAsLayers) {
+  const NoisyInput in = randomInput(5, 4, 4);
+  const std::string path = (std::filesystem::temp_directory_path() / "candela_aov_test.exr").string();
+  const std::vector<std::string> written =
+      writeImageWithAovs(path, in.color, {}, in.aovs, {Aov::Albedo, Aov::Normal, Aov::Depth});
+  EXPECT_EQ(written, std::vector<std::string>{path});
+  Imf::InputFile file(path.c_str());
+  std::vector<float> values(20);
+  for (const char* name : {"R", "albedo.G", "normal.Z", "Z"}) {
+    ASSERT_NE(file.header().channels().findChannel(name), nullptr) << name;
+    Imf::FrameBuffer fb;
+    fb.insert(name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(values.data()), sizeof(float), 5 * sizeof(float)));
+    file.setFrameBuffer(fb);
+    file.readPixels(0, 3);
+    const std::string n = name;
+    for (size_t i = 0; i < 20; ++i) {
+      const float expected = n == "R" ? in.color.pixels[i].x
+                             : n == "albedo.G" ? in.aovs.albedo.pixels[i].y
+                             : n == "normal.Z" ? in.aovs.normal.pixels[i].z
+                                               : in.aovs.depth[i];
+      EXPECT_EQ(values[i], expected) << name << " pixel " << i;
+    }
+  }
+  std::filesystem::remove(path);
+}
+
+TEST(AovFiles, PngAndPfmGoBesideTheImage) {
+  const NoisyInput in = randomInput(5, 4, 5);
+  const auto dir = std::filesystem::temp_directory_path();
+  for (const char* ext : {".png", ".pfm"}) {
+    const std::string path = (dir / (std::string("candela_aov_test") + ext)).string();
+    const std::vector<std::string> written = writeImageWithAovs(path, in.color, {}, in.aovs, {Aov::Normal, Aov::Depth});
+    ASSERT_EQ(written.size(), 3u);
+    EXPECT_EQ(written[1], (dir / (std::string("candela_aov_test.normal") + ext)).string());
+    EXPECT_EQ(written[2], (dir / (std::string("candela_aov_test.depth") + ext)).string());
+    for (const std::string& p : written) {
+      EXPECT_GT(std::filesystem::file_size(p), 0u) << p;
+      std::filesystem::remove(p);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace candela

@@ -1,0 +1,108 @@
+// The CUDA filters against the CPU ones they mirror, and the OptiX backend's AOVs and device-side filtering
+// against the CPU backend's.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "backends/optix/filters/cuda_filters.h"
+#include "gpu_render.h"
+#include "image/filters/atrous.h"
+#include "image/filters/bilateral.h"
+
+namespace candela {
+namespace {
+
+// The largest difference relative to max(|expected|, 1e-2), over all channels.
+double worstRelativeError(const Image& actual, const Image& expected) {
+  double worst = 0.0;
+  for (size_t i = 0; i < expected.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      const double e = expected.pixels[i][c], a = actual.pixels[i][c];
+      worst = std::fmax(worst, std::fabs(a - e) / std::fmax(std::fabs(e), 1e-2));
+    }
+  return worst;
+}
+
+// Both sides run the same float operations in the same order without fused multiply-adds; what remains is the
+// order of the mean-luminance sum (double) and the GPU's division and square root, measured at about 1e-6.
+constexpr double kTolerance = 1e-4;
+
+struct Frame {
+  Image color;
+  AovImages aovs;
+};
+
+Frame renderedFrame() {
+  auto backend = test::makeBackend<CpuBackend>(makeCornellBox(), test::squareImage(96, 1));
+  backend->setAovsEnabled(true);
+  backend->render(4);
+  return {backend->readImage(), backend->readAovs()};
+}
+
+TEST(CudaFilters, AtrousMatchesTheCpuFilter) {
+  const Frame f = renderedFrame();
+  for (int passes : {1, 3, 5}) {
+    AtrousParams params;
+    params.passes = passes;
+    const Image gpu = optix::atrousDenoiseCuda(f.color, f.aovs, params);
+    const double error = worstRelativeError(gpu, atrousDenoise(f.color, f.aovs, params));
+    std::printf("a-trous, %d passes: worst relative difference %.3g\n", passes, error);
+    EXPECT_LE(error, kTolerance) << passes << " passes";
+    AtrousParams off = params;
+    off.colorSigma *= 1.02f;
+    EXPECT_GT(worstRelativeError(gpu, atrousDenoise(f.color, f.aovs, off)), kTolerance)
+        << "the comparison cannot tell a 2% colour-sigma change apart";
+  }
+}
+
+TEST(CudaFilters, BilateralMatchesTheCpuFilter) {
+  const Frame f = renderedFrame();
+  for (BilateralParams params : {BilateralParams{0, 1.0f, 0.1f}, BilateralParams{3, 2.0f, 0.2f},
+                                 BilateralParams{5, 3.0f, 5.0f}}) {
+    const Image gpu = optix::bilateralFilterCuda(f.color, params);
+    const double error = worstRelativeError(gpu, bilateralFilter(f.color, params));
+    std::printf("bilateral, radius %d: worst relative difference %.3g\n", params.radius, error);
+    EXPECT_LE(error, kTolerance) << "radius " << params.radius;
+    if (params.radius == 0) continue;
+    BilateralParams off = params;
+    off.rangeSigma *= 1.02f;
+    EXPECT_GT(worstRelativeError(gpu, bilateralFilter(f.color, off)), kTolerance);
+  }
+}
+
+// The first non-specular hit depends only on the camera ray, which both backends draw from the same random
+// sequence: the AOVs agree closely, apart from pixels whose ray grazes an edge (GPU fast math).
+TEST(OptixAovs, AgreeWithTheCpuBackend) {
+  RenderSettings settings = test::squareImage(64, 2);
+  auto cpu = test::makeBackend<CpuBackend>(makeCornellBox(), settings);
+  auto gpu = test::makeBackend<OptixBackend>(makeCornellBox(), settings);
+  cpu->setAovsEnabled(true);
+  gpu->setAovsEnabled(true);
+  cpu->render(4);
+  gpu->render(4);
+  const AovImages a = cpu->readAovs(), b = gpu->readAovs();
+  size_t close = 0;
+  for (size_t i = 0; i < a.depth.size(); ++i)
+    if (length(a.albedo.pixels[i] - b.albedo.pixels[i]) < 1e-3f && length(a.normal.pixels[i] - b.normal.pixels[i]) < 1e-3f &&
+        std::fabs(a.depth[i] - b.depth[i]) < 1e-3f * a.depth[i] + 1e-5f)
+      ++close;
+  EXPECT_GE(double(close), 0.99 * double(a.depth.size()));
+}
+
+// The backend filters its film in device memory; the result must be the CPU filter's on the same film.
+TEST(OptixFiltering, FiltersTheFilmOnTheDevice) {
+  auto gpu = test::makeBackend<OptixBackend>(makeCornellBox(), test::squareImage(80, 3));
+  gpu->setAovsEnabled(true);
+  gpu->render(3);
+  gpu->render(2);
+  const Image image = gpu->readImage();
+  const AovImages aovs = gpu->readAovs();
+  EXPECT_LE(worstRelativeError(gpu->readAtrousDenoised(AtrousParams{}), atrousDenoise(image, aovs, AtrousParams{})),
+            kTolerance);
+  EXPECT_LE(worstRelativeError(gpu->readBilateralFiltered(BilateralParams{}), bilateralFilter(image, BilateralParams{})),
+            kTolerance);
+}
+
+}  // namespace
+}  // namespace candela
