@@ -23,20 +23,21 @@ struct GuidePlanes {
 GuidePlanes makeGuides(const AovImages& aovs) {
   const int w = int(aovs.width()), h = int(aovs.height());
   GuidePlanes g(aovs.depth.size());
-  for (size_t i = 0; i < g.z.size(); ++i) {
-    const Vec3 n = unitOrZero(aovs.normal.pixels[i]);
-    g.nx[i] = n.x;
-    g.ny[i] = n.y;
-    g.nz[i] = n.z;
-    g.z[i] = aovs.depth[i];
-  }
-  auto depthAt = [&](int x, int y) { return x < 0 || y < 0 || x >= w || y >= h ? 0.0f : g.z[size_t(y) * w + x]; };
-  for (int y = 0; y < h; ++y)
+  auto depthAt = [&](int x, int y) {
+    return x < 0 || y < 0 || x >= w || y >= h ? 0.0f : aovs.depth[size_t(y) * w + x];
+  };
+  tbb::parallel_for(0, h, [&](int y) {
     for (int x = 0; x < w; ++x) {
       const size_t i = size_t(y) * w + x;
+      const Vec3 n = unitOrZero(aovs.normal.pixels[i]);
+      g.nx[i] = n.x;
+      g.ny[i] = n.y;
+      g.nz[i] = n.z;
+      g.z[i] = aovs.depth[i];
       g.gx[i] = depthSlope(depthAt(x - 1, y), g.z[i], depthAt(x + 1, y));
       g.gy[i] = depthSlope(depthAt(x, y - 1), g.z[i], depthAt(x, y + 1));
     }
+  });
   return g;
 }
 
@@ -50,6 +51,39 @@ float meanLuminance(const RgbPlanes& c) {
       },
       [](double a, double b) { return a + b; });
   return n > 0 ? float(sum / double(n)) : 0.0f;
+}
+
+constexpr int kSpan = 256;
+
+struct CentreRow {
+  const float *lum, *inverseWidth, *nx, *ny, *nz, *z, *gx, *gy;
+};
+struct TapRow {
+  const float *r, *g, *b, *nx, *ny, *nz, *z;
+};
+
+// Adds the tap (dx, dy) to the sums of pixels [x0, x1) of a row. Compiled for AVX2 as well as the baseline
+// instruction set (chosen at run time); no FMA, so every build computes the same sums as the CUDA version.
+__attribute__((target_clones("avx512f", "avx2", "default"))) void accumulateTap(const CentreRow& c, const TapRow& t,
+                                                                       RowSums& sums, int x0, int x1, int dx,
+                                                                       int dy, AtrousPassConstants k) {
+  const float kernelWeight = b3Weight(dx) * b3Weight(dy);
+  const int ox = dx * k.step;
+  const float *pl = c.lum, *pw = c.inverseWidth, *pnx = c.nx, *pny = c.ny, *pnz = c.nz, *pz = c.z, *pgx = c.gx,
+              *pgy = c.gy;
+  const float *qr = t.r, *qg = t.g, *qb = t.b, *qnx = t.nx, *qny = t.ny, *qnz = t.nz, *qz = t.z;
+  float *sr = sums.r.data(), *sg = sums.g.data(), *sb = sums.b.data(), *sw = sums.weight.data();
+#pragma GCC ivdep  // the sums and the planes never overlap
+  for (int x = x0; x < x1; ++x) {
+    const int q = x + ox;
+    const AtrousCentre p{pl[x], pw[x], pnx[x], pny[x], pnz[x], pz[x], pgx[x], pgy[x]};
+    const float weight =
+        atrousWeight(dx, dy, kernelWeight, k, p, qr[q], qg[q], qb[q], qnx[q], qny[q], qnz[q], qz[q]);
+    sr[x] += qr[q] * weight;
+    sg[x] += qg[q] * weight;
+    sb[x] += qb[q] * weight;
+    sw[x] += weight;
+  }
 }
 
 // One pass, tap by tap over whole rows so that the inner loop vectorises over contiguous pixels; every pixel
@@ -68,40 +102,20 @@ void atrousPass(const RgbPlanes& in, RgbPlanes& out, const GuidePlanes& g, const
     for (int y = rows.begin(); y < rows.end(); ++y) {
       sums.clear();
       const size_t row = size_t(y) * w;
-      for (int dy = -2; dy <= 2; ++dy) {
-        const int qy = y + dy * k.step;
-        if (qy < 0 || qy >= h) continue;
-        const size_t tapRow = size_t(qy) * w;
-        for (int dx = -2; dx <= 2; ++dx) {
-          const int ox = dx * k.step;
-          const int x0 = std::max(0, -ox), x1 = std::min(w, w - ox);
-          const float* __restrict pl = &lum[row];
-          const float* __restrict pw = &inverseWidth[row];
-          const float* __restrict pnx = &g.nx[row];
-          const float* __restrict pny = &g.ny[row];
-          const float* __restrict pnz = &g.nz[row];
-          const float* __restrict pz = &g.z[row];
-          const float* __restrict pgx = &g.gx[row];
-          const float* __restrict pgy = &g.gy[row];
-          const float* __restrict qr = &in.r[tapRow];
-          const float* __restrict qg = &in.g[tapRow];
-          const float* __restrict qb = &in.b[tapRow];
-          const float* __restrict qnx = &g.nx[tapRow];
-          const float* __restrict qny = &g.ny[tapRow];
-          const float* __restrict qnz = &g.nz[tapRow];
-          const float* __restrict qz = &g.z[tapRow];
-          float* __restrict sr = sums.r.data();
-          float* __restrict sg = sums.g.data();
-          float* __restrict sb = sums.b.data();
-          float* __restrict sw = sums.weight.data();
-          for (int x = x0; x < x1; ++x) {
-            const int q = x + ox;
-            const AtrousCentre p{pl[x], pw[x], pnx[x], pny[x], pnz[x], pz[x], pgx[x], pgy[x]};
-            const float weight = atrousWeight(dx, dy, k, p, qr[q], qg[q], qb[q], qnx[q], qny[q], qnz[q], qz[q]);
-            sr[x] += qr[q] * weight;
-            sg[x] += qg[q] * weight;
-            sb[x] += qb[q] * weight;
-            sw[x] += weight;
+      const CentreRow centre{&lum[row], &inverseWidth[row], &g.nx[row], &g.ny[row], &g.nz[row],
+                             &g.z[row], &g.gx[row], &g.gy[row]};
+      // In spans short enough that the rows a span reads stay in the L1 cache over its 25 taps.
+      for (int start = 0; start < w; start += kSpan) {
+        const int end = std::min(w, start + kSpan);
+        for (int dy = -2; dy <= 2; ++dy) {
+          const int qy = y + dy * k.step;
+          if (qy < 0 || qy >= h) continue;
+          const size_t tapRow = size_t(qy) * w;
+          const TapRow tap{&in.r[tapRow], &in.g[tapRow], &in.b[tapRow], &g.nx[tapRow],
+                           &g.ny[tapRow], &g.nz[tapRow], &g.z[tapRow]};
+          for (int dx = -2; dx <= 2; ++dx) {
+            const int ox = dx * k.step;
+            accumulateTap(centre, tap, sums, std::max(start, -ox), std::min(end, w - ox), dx, dy, k);
           }
         }
       }
@@ -132,11 +146,11 @@ Image atrousDenoise(const Image& color, const AovImages& aovs, const AtrousParam
   validateAtrousInput(color, aovs, params);
   const GuidePlanes guides = makeGuides(aovs);
   RgbPlanes a(color.width, color.height), b(color.width, color.height);
-  for (size_t i = 0; i < color.pixels.size(); ++i) {
+  tbb::parallel_for(size_t(0), color.pixels.size(), [&](size_t i) {
     const Vec3 c = color.pixels[i], albedo = aovs.albedo.pixels[i];
     a.set(i, {c.x / demodulationFactor(albedo.x), c.y / demodulationFactor(albedo.y),
               c.z / demodulationFactor(albedo.z)});
-  }
+  });
   const float mean = meanLuminance(a);
   std::vector<float> lum(a.r.size()), inverseWidth(a.r.size());
   for (int pass = 0; pass < params.passes; ++pass) {
@@ -144,11 +158,11 @@ Image atrousDenoise(const Image& color, const AovImages& aovs, const AtrousParam
     std::swap(a, b);
   }
   Image result(color.width, color.height);
-  for (size_t i = 0; i < result.pixels.size(); ++i) {
+  tbb::parallel_for(size_t(0), result.pixels.size(), [&](size_t i) {
     const Vec3 albedo = aovs.albedo.pixels[i], c = a.get(i);
     result.pixels[i] = {c.x * demodulationFactor(albedo.x), c.y * demodulationFactor(albedo.y),
                         c.z * demodulationFactor(albedo.z)};
-  }
+  });
   return result;
 }
 

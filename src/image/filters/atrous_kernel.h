@@ -73,16 +73,17 @@ struct AtrousCentre {
   float z, gx, gy;          // depth and its slope per pixel along x and y
 };
 
-// The weight of the tap (dx, dy) in [-2, 2]^2 of a pass.
-CANDELA_FN float atrousWeight(int dx, int dy, const AtrousPassConstants& k, const AtrousCentre& p, float qr,
-                              float qg, float qb, float qnx, float qny, float qnz, float qz) {
+// The weight of the tap (dx, dy) in [-2, 2]^2 of a pass, whose kernel weight is b3Weight(dx) * b3Weight(dy).
+CANDELA_FN float atrousWeight(int dx, int dy, float kernelWeight, const AtrousPassConstants& k,
+                              AtrousCentre p, float qr, float qg, float qb, float qnx, float qny, float qnz,
+                              float qz) {
   const float ox = float(dx * k.step), oy = float(dy * k.step);
   const float colorTerm = fabsf(luminance({qr, qg, qb}) - p.luminance) * p.inverseColorWidth;
   const float nx = qnx - p.nx, ny = qny - p.ny, nz = qnz - p.nz;
   const float expected = fabsf(p.gx * ox + p.gy * oy) + kAtrousDepthFloor * p.z * (fabsf(ox) + fabsf(oy));
   const float depthTerm = fabsf(qz - p.z) / (k.depthSigma * expected + 1e-30f);
   const float exponent = colorTerm + (nx * nx + ny * ny + nz * nz) * k.normalScale + depthTerm;
-  return b3Weight(dx) * b3Weight(dy) * fastExpNonPositive(-exponent);
+  return kernelWeight * fastExpNonPositive(-exponent);
 }
 
 CANDELA_FN AtrousPassConstants atrousPassConstants(const AtrousParams& params, int pass) {

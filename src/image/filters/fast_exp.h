@@ -10,10 +10,22 @@ namespace candela {
 // the same result on the host and the device (the filters' CPU and CUDA versions must agree). Arguments below
 // -87 (and NaN) give e^-87, which is zero for any weight it multiplies.
 CANDELA_FN float fastExpNonPositive(float x) {
-  x = fmaxf(x, -87.0f);
+  // Clamps to -87 on the bit pattern: below -87 (and NaN) a negative float's bits are larger. Unlike a float
+  // comparison, an integer one lets compilers vectorise the callers' loops.
+  constexpr uint32_t kMinusEightySeven = 0xC2AE0000u;
+#if defined(__CUDA_ARCH__)
+  const uint32_t xBits = __float_as_uint(x);
+  x = __uint_as_float(xBits < kMinusEightySeven ? xBits : kMinusEightySeven);
+#else
+  uint32_t xBits;
+  std::memcpy(&xBits, &x, sizeof xBits);
+  xBits = xBits < kMinusEightySeven ? xBits : kMinusEightySeven;
+  std::memcpy(&x, &xBits, sizeof x);
+#endif
   // x = n ln 2 + r with n = floor(x / ln 2), r in [0, ln 2); ln 2 in two parts keeps r exact (Cody and Waite).
-  int32_t n = int32_t(x * 1.44269504f);
-  n -= float(n) > x * 1.44269504f ? 1 : 0;
+  const float t = x * 1.44269504f;
+  int32_t n = int32_t(t);
+  n -= float(n) > t ? 1 : 0;
   const float r = (x - float(n) * 0.693145751953125f) - float(n) * 1.42860677e-6f;
   // e^r on [0, ln 2]: 1 + r q(r), q through the Chebyshev nodes, relative error 6e-9.
   float p = 1.8770873e-3f;
