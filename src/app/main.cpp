@@ -176,6 +176,7 @@ void addViewOptions(CLI::App& cmd, ViewerOptions& options, std::string& toneMapp
       ->check(CLI::Range(1u, 1024u))
       ->capture_default_str();
   cmd.add_option("--exposure", options.post.display.exposure, "Exposure in stops")->capture_default_str();
+  cmd.add_flag("--atrous", options.post.atrous, "Start with the a-trous denoiser on (the panel switches it)");
   cmd.add_option("--tonemap", toneMapper, "Tone mapper: aces, reinhard or clamp (linear)")
       ->check(CLI::IsMember({"aces", "reinhard", "clamp"}))
       ->capture_default_str();

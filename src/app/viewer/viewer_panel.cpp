@@ -47,11 +47,11 @@ void drawPost(PostSettings& post) {
   int mapper = int(post.display.toneMapper);
   if (ImGui::Combo("Tone mapper", &mapper, "ACES filmic\0Clamp\0Reinhard\0")) post.display.toneMapper = ToneMapper(mapper);
   ImGui::SliderFloat("Exposure", &post.display.exposure, -10.0f, 10.0f, "%.2f stops");
-  ImGui::Checkbox("A-trous denoiser", &post.atrous);
+  // One row, so that the panel still fits a short window.
+  ImGui::Checkbox("A-trous", &post.atrous);
+  ImGui::SameLine();
   ImGui::BeginDisabled(!post.atrous);
   ImGui::SliderInt("Passes", &post.atrousParams.passes, 1, kMaxAtrousPasses, "%d", ImGuiSliderFlags_AlwaysClamp);
-  ImGui::SliderFloat("Colour sigma", &post.atrousParams.colorSigma, 0.01f, 100.0f, "%.3f",
-                     ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
   ImGui::EndDisabled();
   ImGui::Checkbox("Bilateral filter", &post.bilateral);
   ImGui::BeginDisabled(!post.bilateral);
