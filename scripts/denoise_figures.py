@@ -9,12 +9,12 @@ relMSE against the reference (mean over pixels and channels of (x - ref)^2 / (re
 per scene: the four full images side by side (raw, a-trous, bilateral, reference) above 3x enlargements of one
 crop of each, tone mapped like `candela render` writes PNGs (ACES filmic, sRGB). Only the standard library.
 """
-import math
 import os
+import shutil
 import struct
 import subprocess
 import sys
-import time
+import tempfile
 import zlib
 
 SIZE = 160
@@ -60,19 +60,16 @@ def write_png(path, width, height, rgb_rows):
 
 
 def render(candela, scene, spp, seed, denoiser, path):
-    start = time.time()
     subprocess.run([candela, "render", scene, "--backend", "cpu", "--width", str(SIZE), "--height", str(SIZE),
                     "--spp", str(spp), "--seed", str(seed), "--denoise", denoiser, "-o", path],
                    check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    return time.time() - start
 
 
 def main():
     candela = sys.argv[1] if len(sys.argv) > 1 else "build/src/candela"
     out = sys.argv[2] if len(sys.argv) > 2 else "docs/images"
     os.makedirs(out, exist_ok=True)
-    tmp = os.path.join(out, "tmp")
-    os.makedirs(tmp, exist_ok=True)
+    tmp = tempfile.mkdtemp(prefix="candela-denoise-figures-")
     print("| scene | raw relMSE | a-trous relMSE | a-trous gain | bilateral relMSE | bilateral gain |")
     print("| --- | --- | --- | --- | --- | --- |")
     for scene, (cx, cy, side) in SCENES.items():
@@ -114,9 +111,7 @@ def main():
                 row += [255] * (3 * (SIZE - crop_side + (gap if i + 1 < len(order) else 0)))
             rows.append(row)
         write_png(os.path.join(out, f"denoise-{scene}.png"), width, len(rows), rows)
-    for f in os.listdir(tmp):
-        os.remove(os.path.join(tmp, f))
-    os.rmdir(tmp)
+    shutil.rmtree(tmp)
 
 
 if __name__ == "__main__":
