@@ -123,7 +123,9 @@ int runBench(const RenderJob& job) {
 void addViewOptions(CLI::App& cmd, ViewerOptions& options, std::string& toneMapper) {
   std::string scenes;
   for (const std::string& n : builtinSceneNames()) scenes += (scenes.empty() ? "" : ", ") + n;
-  cmd.add_option("scene", options.sceneSpec, "Built-in scene name (" + scenes + ")")->capture_default_str();
+  cmd.add_option("scene", options.sceneSpec, "Scene file (.obj, .gltf, .glb, .json) or built-in scene (" + scenes + ")")
+      ->capture_default_str();
+  cmd.add_option("--env", options.environmentPath, "Environment map (.hdr or .exr) that lights the scene");
   cmd.add_option("--backend", options.backend, "auto, cpu or optix (in this build: " + availableBackends() + ")")
       ->check(CLI::IsMember({"auto", "cpu", "optix"}))
       ->capture_default_str();
