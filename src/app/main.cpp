@@ -160,6 +160,7 @@ int runView(ViewerOptions options, const std::string& toneMapper) {
   options.post.display.toneMapper = toneMapper == "clamp" ? ToneMapper::Clamp : ToneMapper::AcesFilmic;
   if (!options.screenshot.empty()) checkOutputPath(options.screenshot);
   if (!options.windowCapture.empty()) {
+    if (options.frames == 0) throw std::runtime_error("--window-capture needs a number of --frames to render first");
     checkOutputPath(options.windowCapture);
     if (std::filesystem::path(options.windowCapture).extension() != ".png")
       throw std::runtime_error("cannot write '" + options.windowCapture + "': a window capture is a .png file");
