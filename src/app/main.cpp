@@ -60,6 +60,8 @@ void addRenderOptions(CLI::App& cmd, RenderJob& job) {
   cmd.add_option_function<std::vector<std::string>>("--override", [&job](const std::vector<std::string>& list) {
         for (const std::string& assignment : list) parseOverride(job.materialOverrides, assignment);
       }, "Set a material parameter on every material, name=value in [0, 1]; repeatable. Names: " + overrideNames)
+      ->type_size(1)
+      ->allow_extra_args(false)
       ->check(validated([](const std::string& assignment) {
         MaterialOverrides scratch;
         parseOverride(scratch, assignment);
@@ -216,6 +218,13 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::fprintf(stderr, "candela: %s (see candela --help)\n", e.what());
     return 2;
+  }
+
+  for (auto [cmd, job] : {std::pair{render, &renderJob}, std::pair{bench, &benchJob}}) {
+    job->given.width = cmd->count("--width") > 0;
+    job->given.height = cmd->count("--height") > 0;
+    job->given.samplesPerPixel = cmd->count("--spp") > 0;
+    job->given.maxDepth = cmd->count("--max-depth") > 0;
   }
 
   try {

@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -68,15 +69,22 @@ struct Environment {
   bool hasMap() const { return map.width > 0 && map.height > 0; }
 };
 
+// Render settings a scene file asks for; the command line overrides them.
+struct RenderHints {
+  std::optional<uint32_t> width, height, samplesPerPixel, maxDepth;
+};
+
 // A scene as loaders produce it and backends consume it.
 struct Scene {
   std::string name;
   std::vector<Mesh> meshes;
   std::vector<Instance> instances;
   std::vector<Material> materials;
+  std::vector<std::string> materialNames;  // as the input file names them, one per material (may be empty)
   std::vector<Texture> textures;
   Environment environment;
   CameraDescription camera;
+  RenderHints renderHints;
   bool cameraMissing = false;  // the input had no camera: `camera` is to be framed around the scene's bounds
 
   size_t triangleCount() const;  // over instances
