@@ -6,6 +6,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "app/scene_loading.h"
 #include "app/viewer/viewer_files.h"
 #include "image/tonemap.h"
 
@@ -34,9 +35,6 @@ TEST_F(ViewerFiles, ViewFileHoldsCameraAndSettings) {
   settings.height = 200;
   ViewerControls controls;
   controls.maxDepth = 5;
-  controls.post.display = {1.5f, ToneMapper::Clamp};
-  controls.post.bilateral = true;
-  controls.post.bilateralParams = {4, 2.5f, 0.3f};
   Scene scene;
   scene.environment.radiance = {0.5f, 0.25f, 1.0f};
   scene.environment.intensity = 2.0f;
@@ -55,8 +53,6 @@ TEST_F(ViewerFiles, ViewFileHoldsCameraAndSettings) {
   EXPECT_FLOAT_EQ(j["environment"]["radiance"][2].get<float>(), 1.0f);
   EXPECT_FLOAT_EQ(j["environment"]["intensity"].get<float>(), 2.0f);
   EXPECT_FLOAT_EQ(j["environment"]["rotation_degrees"].get<float>(), 90.0f);
-  EXPECT_EQ(j["display"]["tone_mapper"], "clamp");
-  EXPECT_EQ(j["display"]["bilateral"]["radius"], 4);
   EXPECT_THROW(writeViewFile((dir / "missing" / "view.json").string(), "x", scene, camera, settings, controls),
                std::runtime_error);
 }
@@ -81,6 +77,35 @@ TEST_F(ViewerFiles, ViewFileNamesTheModelsItCameFrom) {
   nlohmann::json b = nlohmann::json::parse(std::ifstream(fromJson));
   EXPECT_EQ(b["models"][0]["file"], box);
   EXPECT_EQ(b["models"][0]["transform"]["scale"], 2);
+}
+
+TEST_F(ViewerFiles, AViewFileOfAModelLoadsBackWithItsView) {
+  std::ofstream(dir / "tri.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  Scene scene = loadScene((dir / "tri.obj").string());
+  scene.environment.radiance = {0.2f, 0.3f, 0.4f};
+  scene.environment.intensity = 3.0f;
+  CameraDescription camera;
+  camera.eye = {0.5f, 0.5f, 4.0f};
+  camera.target = {0.25f, 0.25f, 0.0f};
+  camera.verticalFovDegrees = 30.0f;
+  RenderSettings settings;
+  settings.width = 300;
+  settings.height = 100;
+  ViewerControls controls;
+  controls.maxDepth = 3;
+  const fs::path file = dir / "view.json";
+  ASSERT_EQ(writeViewFile(file.string(), (dir / "tri.obj").string(), scene, camera, settings, controls), "");
+
+  Scene loaded = loadScene(file.string());
+  EXPECT_EQ(loaded.triangleCount(), 1u);
+  EXPECT_FALSE(loaded.cameraMissing);
+  EXPECT_FLOAT_EQ(loaded.camera.eye.z, 4.0f);
+  EXPECT_FLOAT_EQ(loaded.camera.target.x, 0.25f);
+  EXPECT_FLOAT_EQ(loaded.camera.verticalFovDegrees, 30.0f);
+  EXPECT_FLOAT_EQ(loaded.environment.radiance.y, 0.3f);
+  EXPECT_FLOAT_EQ(loaded.environment.intensity, 3.0f);
+  EXPECT_EQ(loaded.renderHints.width, 300u);
+  EXPECT_EQ(loaded.renderHints.maxDepth, 3u);
 }
 
 TEST_F(ViewerFiles, StateFileAppearsWhole) {

@@ -82,15 +82,6 @@ std::string writeViewFile(const std::string& path, const std::string& sceneSpec,
   environment["visible"] = env.visibleToCamera;
   json["environment"] = environment;
   json["render"] = {{"width", settings.width}, {"height", settings.height}, {"max_depth", controls.maxDepth}};
-
-  const PostSettings& post = controls.post;
-  json["display"] = {{"tone_mapper", post.display.toneMapper == ToneMapper::Clamp ? "clamp" : "aces"},
-                     {"exposure", post.display.exposure},
-                     {"bilateral",
-                      {{"enabled", post.bilateral},
-                       {"radius", post.bilateralParams.radius},
-                       {"spatial_sigma", post.bilateralParams.spatialSigma},
-                       {"range_sigma", post.bilateralParams.rangeSigma}}}};
   writeJson(path, json);
   return json.contains("models") ? "" : "a built-in scene has no file to name, so the view file lists no models";
 }

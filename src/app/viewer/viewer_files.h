@@ -16,8 +16,8 @@ void saveScreenshot(const std::string& path, const Image& accumulated, const Pos
 
 // The view as a JSON scene file (docs/scene-file.md's format): "models" naming the scene's source when it is a
 // model file (.obj, .gltf, .glb) or taken over from a scene file (paths made absolute), the camera, the
-// environment as rendered, the render settings, and the viewer's display settings under "display". A built-in
-// scene has no file to name, so its view file has no "models". Returns a note for the user when that is so.
+// environment as rendered and the render settings. A built-in scene has no file to name, so its view file has no
+// "models" and does not load on its own. Returns a note for the user when that is so.
 std::string writeViewFile(const std::string& path, const std::string& sceneSpec, const Scene& scene,
                           const CameraDescription& camera, const RenderSettings& settings,
                           const ViewerControls& controls);
