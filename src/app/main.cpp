@@ -157,7 +157,9 @@ int runBench(const RenderJob& job) {
 void addViewOptions(CLI::App& cmd, ViewerOptions& options, std::string& toneMapper) {
   std::string scenes;
   for (const std::string& n : builtinSceneNames()) scenes += (scenes.empty() ? "" : ", ") + n;
-  cmd.add_option("scene", options.sceneSpec, "Built-in scene name (" + scenes + ")")->capture_default_str();
+  cmd.add_option("scene", options.sceneSpec, "Scene file (.obj, .gltf, .glb, .json) or built-in scene (" + scenes + ")")
+      ->capture_default_str();
+  cmd.add_option("--env", options.environmentPath, "Environment map (.hdr or .exr) that lights the scene");
   cmd.add_option("--backend", options.backend, "auto, cpu or optix (in this build: " + availableBackends() + ")")
       ->check(CLI::IsMember({"auto", "cpu", "optix"}))
       ->capture_default_str();
@@ -192,6 +194,7 @@ int runView(ViewerOptions options, const std::string& toneMapper) {
   options.post.display.toneMapper = toneMapper == "clamp" ? ToneMapper::Clamp : ToneMapper::AcesFilmic;
   if (!options.screenshot.empty()) checkOutputPath(options.screenshot);
   if (!options.windowCapture.empty()) {
+    if (options.frames == 0) throw std::runtime_error("--window-capture needs a number of --frames to render first");
     checkOutputPath(options.windowCapture);
     if (std::filesystem::path(options.windowCapture).extension() != ".png")
       throw std::runtime_error("cannot write '" + options.windowCapture + "': a window capture is a .png file");
