@@ -148,7 +148,8 @@ int runBench(const RenderJob& job) {
     report["raw_trace_median_device_ms"] = m;
     report["raw_trace_mrays_per_s"] = rawRate;
     if (!outcome.deviceFrameMilliseconds.empty())
-      report["path_ray_rate_fraction_of_raw"] = raysPerFrame / median(outcome.deviceFrameMilliseconds) / 1e3 / rawRate;
+      report["path_ray_rate_fraction_of_raw"] =
+          raysPerFrame / median(outcome.deviceFrameMilliseconds) / 1e3 / rawRate;
   }
   std::cout << report.dump() << std::endl;
   return 0;

@@ -46,7 +46,10 @@ struct LaunchResult {
 
 struct OptixBackend::State {
   OptixContext context;
-  Pipeline pipeline{context.get()};
+  ProgramModule module{context.get()};
+  Pipeline renderPipeline{context.get(), module.get(), RaygenProgram::Render};
+  Pipeline recordPipeline{context.get(), module.get(), RaygenProgram::Record};
+  Pipeline rawTracePipeline{context.get(), module.get(), RaygenProgram::RawTrace};
   FlatScene flat;
   DeviceScene scene;
   AccelerationStructures acceleration;
@@ -76,13 +79,23 @@ struct OptixBackend::State {
 
   // Uploads the parameters, launches one raygen program over the image and sums its counters, timing both
   // with CUDA events; waits for the result.
+  const Pipeline& pipeline(RaygenProgram program) const {
+    switch (program) {
+      case RaygenProgram::Render: return renderPipeline;
+      case RaygenProgram::Record: return recordPipeline;
+      case RaygenProgram::RawTrace: return rawTracePipeline;
+    }
+    throw std::logic_error("no such raygen program");
+  }
+
   LaunchResult launch(RaygenProgram program, const LaunchParameters& p) {
     cudaStream_t stream = context.stream();
+    const Pipeline& pipe = pipeline(program);
     checkCuda(cudaMemcpyAsync(parameters.as<void>(), &p, sizeof p, cudaMemcpyHostToDevice, stream),
               "uploading the launch parameters");
     checkCuda(cudaEventRecord(start.get(), stream), "recording a CUDA event");
-    checkOptix(optixLaunch(pipeline.get(), stream, parameters.address(), sizeof p, &pipeline.bindingTable(program),
-                           settings.width, settings.height, 1),
+    checkOptix(optixLaunch(pipe.get(), stream, parameters.address(), sizeof p, &pipe.bindingTable(), settings.width,
+                           settings.height, 1),
                "launching the device programs");
     sumPixelCounters(counters.as<PixelCounters>(), pixelCount(), totals.as<CounterTotals>(), stream);
     checkCuda(cudaEventRecord(stop.get(), stream), "recording a CUDA event");

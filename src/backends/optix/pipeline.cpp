@@ -5,6 +5,7 @@
 #include <optix_stubs.h>
 
 #include <cstring>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -19,8 +20,17 @@ namespace candela::optix {
 
 namespace {
 
-// Group order: raygen programs in RaygenProgram order, then these.
-enum : int { kRadianceMiss = int(RaygenProgram::Count), kShadowMiss, kRadianceHit, kShadowHit };
+// Group order within a pipeline.
+enum : int { kRaygen = 0, kRadianceMiss, kShadowMiss, kRadianceHit, kShadowHit };
+
+const char* raygenName(RaygenProgram program) {
+  switch (program) {
+    case RaygenProgram::Render: return "__raygen__render";
+    case RaygenProgram::Record: return "__raygen__record";
+    case RaygenProgram::RawTrace: return "__raygen__rawTrace";
+  }
+  throw std::logic_error("no such raygen program");
+}
 
 struct alignas(OPTIX_SBT_RECORD_ALIGNMENT) HeaderOnlyRecord {
   char header[OPTIX_SBT_RECORD_HEADER_SIZE];
@@ -41,6 +51,8 @@ void checkWithLog(const char* what, Call call) {
   }
 }
 
+}  // namespace
+
 OptixPipelineCompileOptions pipelineCompileOptions() {
   OptixPipelineCompileOptions options{};
   options.usesMotionBlur = 0;
@@ -53,9 +65,7 @@ OptixPipelineCompileOptions pipelineCompileOptions() {
   return options;
 }
 
-}  // namespace
-
-Pipeline::Pipeline(OptixDeviceContext context) {
+ProgramModule::ProgramModule(OptixDeviceContext context) {
   const OptixPipelineCompileOptions compileOptions = pipelineCompileOptions();
   OptixModuleCompileOptions moduleOptions{};
   moduleOptions.optLevel = OPTIX_COMPILE_OPTIMIZATION_DEFAULT;
@@ -65,21 +75,24 @@ Pipeline::Pipeline(OptixDeviceContext context) {
                              reinterpret_cast<const char*>(candelaOptixPrograms), candelaOptixProgramsSize, log,
                              logSize, &module_);
   });
+}
 
+ProgramModule::~ProgramModule() {
+  if (module_) optixModuleDestroy(module_);
+}
+
+Pipeline::Pipeline(OptixDeviceContext context, OptixModule module, RaygenProgram program) {
   OptixProgramGroupDesc descriptions[kGroupCount] = {};
-  const char* raygenNames[kRaygenCount] = {"__raygen__render", "__raygen__record", "__raygen__rawTrace"};
-  for (int i = 0; i < kRaygenCount; ++i) {
-    descriptions[i].kind = OPTIX_PROGRAM_GROUP_KIND_RAYGEN;
-    descriptions[i].raygen.module = module_;
-    descriptions[i].raygen.entryFunctionName = raygenNames[i];
-  }
+  descriptions[kRaygen].kind = OPTIX_PROGRAM_GROUP_KIND_RAYGEN;
+  descriptions[kRaygen].raygen.module = module;
+  descriptions[kRaygen].raygen.entryFunctionName = raygenName(program);
   // The radiance miss program would only restate the payload's "missed" sentinel, so it is absent.
   descriptions[kRadianceMiss].kind = OPTIX_PROGRAM_GROUP_KIND_MISS;
   descriptions[kShadowMiss].kind = OPTIX_PROGRAM_GROUP_KIND_MISS;
-  descriptions[kShadowMiss].miss.module = module_;
+  descriptions[kShadowMiss].miss.module = module;
   descriptions[kShadowMiss].miss.entryFunctionName = "__miss__shadow";
   descriptions[kRadianceHit].kind = OPTIX_PROGRAM_GROUP_KIND_HITGROUP;
-  descriptions[kRadianceHit].hitgroup.moduleCH = module_;
+  descriptions[kRadianceHit].hitgroup.moduleCH = module;
   descriptions[kRadianceHit].hitgroup.entryFunctionNameCH = "__closesthit__radiance";
   // Shadow rays disable closest-hit and any-hit, so their hit group has no programs.
   descriptions[kShadowHit].kind = OPTIX_PROGRAM_GROUP_KIND_HITGROUP;
@@ -88,6 +101,7 @@ Pipeline::Pipeline(OptixDeviceContext context) {
     return optixProgramGroupCreate(context, descriptions, kGroupCount, &groupOptions, log, logSize, groups_);
   });
 
+  const OptixPipelineCompileOptions compileOptions = pipelineCompileOptions();
   OptixPipelineLinkOptions linkOptions{};
   linkOptions.maxTraceDepth = 1;  // only raygen traces
   checkWithLog("linking the pipeline", [&](char* log, size_t* logSize) {
@@ -115,25 +129,21 @@ Pipeline::Pipeline(OptixDeviceContext context) {
   std::vector<HeaderOnlyRecord> records(kGroupCount);
   for (int i = 0; i < kGroupCount; ++i)
     checkOptix(optixSbtRecordPackHeader(groups_[i], &records[i]), "packing a shader binding table record");
-  records_ = DeviceBuffer::fromVector(records, "the shader binding table");
+  records_ = DeviceBuffer::fromVector(records, "a shader binding table");
   const CUdeviceptr base = records_.address();
-  for (int i = 0; i < kRaygenCount; ++i) {
-    OptixShaderBindingTable& table = tables_[i];
-    table.raygenRecord = base + i * sizeof(HeaderOnlyRecord);
-    table.missRecordBase = base + kRadianceMiss * sizeof(HeaderOnlyRecord);
-    table.missRecordStrideInBytes = sizeof(HeaderOnlyRecord);
-    table.missRecordCount = kRayTypeCount;
-    table.hitgroupRecordBase = base + kRadianceHit * sizeof(HeaderOnlyRecord);
-    table.hitgroupRecordStrideInBytes = sizeof(HeaderOnlyRecord);
-    table.hitgroupRecordCount = kRayTypeCount;
-  }
+  table_.raygenRecord = base + kRaygen * sizeof(HeaderOnlyRecord);
+  table_.missRecordBase = base + kRadianceMiss * sizeof(HeaderOnlyRecord);
+  table_.missRecordStrideInBytes = sizeof(HeaderOnlyRecord);
+  table_.missRecordCount = kRayTypeCount;
+  table_.hitgroupRecordBase = base + kRadianceHit * sizeof(HeaderOnlyRecord);
+  table_.hitgroupRecordStrideInBytes = sizeof(HeaderOnlyRecord);
+  table_.hitgroupRecordCount = kRayTypeCount;
 }
 
 Pipeline::~Pipeline() {
   if (pipeline_) optixPipelineDestroy(pipeline_);
   for (OptixProgramGroup group : groups_)
     if (group) optixProgramGroupDestroy(group);
-  if (module_) optixModuleDestroy(module_);
 }
 
 }  // namespace candela::optix

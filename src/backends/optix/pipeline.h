@@ -1,33 +1,47 @@
 #pragma once
-// The OptiX module built from the embedded OptiX-IR, its program groups, the pipeline and the shader binding
-// tables: one per raygen program, sharing the miss and hit-group records.
+// The OptiX module built from the embedded OptiX-IR, and one pipeline per raygen program with its shader
+// binding table. Separate pipelines keep each launch kind's kernel to its own code: OptiX sizes registers and
+// stacks per pipeline, and the raw-trace ceiling must not carry the path tracer's shading code.
 #include <optix_types.h>
 
 #include "backends/optix/device_buffer.h"
 
 namespace candela::optix {
 
-enum class RaygenProgram { Render = 0, Record, RawTrace, Count };
+enum class RaygenProgram { Render, Record, RawTrace };
+
+// Options every pipeline over the module must be created with.
+OptixPipelineCompileOptions pipelineCompileOptions();
+
+class ProgramModule {
+ public:
+  explicit ProgramModule(OptixDeviceContext context);
+  ~ProgramModule();
+  ProgramModule(const ProgramModule&) = delete;
+  ProgramModule& operator=(const ProgramModule&) = delete;
+  OptixModule get() const { return module_; }
+
+ private:
+  OptixModule module_ = nullptr;
+};
 
 class Pipeline {
  public:
-  explicit Pipeline(OptixDeviceContext context);
+  Pipeline(OptixDeviceContext context, OptixModule module, RaygenProgram program);
   ~Pipeline();
   Pipeline(const Pipeline&) = delete;
   Pipeline& operator=(const Pipeline&) = delete;
 
   OptixPipeline get() const { return pipeline_; }
-  const OptixShaderBindingTable& bindingTable(RaygenProgram program) const { return tables_[int(program)]; }
+  const OptixShaderBindingTable& bindingTable() const { return table_; }
 
  private:
-  static constexpr int kRaygenCount = int(RaygenProgram::Count);
-  static constexpr int kGroupCount = kRaygenCount + 4;  // + radiance/shadow miss, radiance/shadow hit group
+  static constexpr int kGroupCount = 5;  // raygen, radiance/shadow miss, radiance/shadow hit group
 
-  OptixModule module_ = nullptr;
   OptixProgramGroup groups_[kGroupCount] = {};
   OptixPipeline pipeline_ = nullptr;
   DeviceBuffer records_;
-  OptixShaderBindingTable tables_[kRaygenCount] = {};
+  OptixShaderBindingTable table_ = {};
 };
 
 }  // namespace candela::optix

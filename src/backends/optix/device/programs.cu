@@ -30,8 +30,8 @@ extern "C" __global__ void __raygen__render() {
   Vec3 sum{};
   uint32_t rays = 0, invalid = 0;
   for (uint32_t s = 0; s < params.samplesPerPixel; ++s) {
-    PathResult path =
-        renderPixelSample(params.scene, tracer, params.camera, params.settings, index.x, index.y, params.firstSample + s);
+    PathResult path = renderPixelSample(params.scene, tracer, params.camera, params.settings, index.x, index.y,
+                                        params.firstSample + s);
     rays += path.rays;
     if (isValidSample(path.radiance))
       sum += path.radiance;
