@@ -3,12 +3,14 @@
 
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 
 #include "app/backend_factory.h"
 #include "app/render_job.h"
+#include "app/scene_loading.h"
 #include "image/image_io.h"
 #include "scene/builtin_scenes.h"
 
@@ -119,6 +121,27 @@ int runBench(const RenderJob& job) {
   return 0;
 }
 
+int runLoad(const std::string& spec) {
+  auto start = std::chrono::steady_clock::now();
+  Scene scene = loadScene(spec);
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  size_t vertices = 0;
+  for (const Mesh& m : scene.meshes) vertices += m.positions.size();
+  nlohmann::ordered_json report = {
+      {"scene", spec},
+      {"seconds", seconds},
+      {"meshes", scene.meshes.size()},
+      {"instances", scene.instances.size()},
+      {"triangles", scene.triangleCount()},
+      {"vertices", vertices},
+      {"materials", scene.materials.size()},
+      {"textures", scene.textures.size()},
+      {"scene_bytes", sceneMemoryBytes(scene)},
+  };
+  std::cout << report.dump() << std::endl;
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -164,7 +187,12 @@ int main(int argc, char** argv) {
     job->given.maxDepth = cmd->count("--max-depth") > 0;
   }
 
+  std::string inspectSpec;
+  CLI::App* inspect = app.add_subcommand("load", "Load a scene and print its size and loading time as one JSON object");
+  inspect->add_option("scene", inspectSpec, "Scene file or built-in scene")->required();
+
   try {
+    if (*inspect) return runLoad(inspectSpec);
     if (*render) {
       display.toneMapper = toneMapper == "clamp" ? ToneMapper::Clamp : ToneMapper::AcesFilmic;
       return runRender(renderJob, output, display);

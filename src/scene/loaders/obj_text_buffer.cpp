@@ -23,7 +23,7 @@ ObjTextBuffer::~ObjTextBuffer() {
 
 ObjTextBuffer::int_type ObjTextBuffer::underflow() {
   if (gptr() < egptr()) return traits_type::to_int_type(*gptr());
-  if (!file_) return traits_type::eof();
+  if (!file_ || unsupportedLine_) return traits_type::eof();
   size_t n = std::fread(chunk_.data(), 1, chunk_.size(), file_);
   if (n == 0) {
     readFailed_ = std::ferror(file_) != 0;
@@ -31,10 +31,12 @@ ObjTextBuffer::int_type ObjTextBuffer::underflow() {
   }
   setg(chunk_.data(), chunk_.data(), chunk_.data() + n);
   scan(chunk_.data(), chunk_.data() + n);
+  if (gptr() == egptr()) return traits_type::eof();
   return traits_type::to_int_type(*gptr());
 }
 
 void ObjTextBuffer::scan(const char* begin, const char* end) {
+  keywordStart_ = nullptr;
   for (const char* p = begin; p < end; ++p) {
     char c = *p;
     if (c == '\n') {
@@ -46,10 +48,17 @@ void ObjTextBuffer::scan(const char* begin, const char* end) {
       case State::LineStart:
         if (c == ' ' || c == '\t') break;
         keywordLength_ = 0;
+        keywordStart_ = p;
         state_ = State::Keyword;
         [[fallthrough]];
       case State::Keyword:
         if (c == ' ' || c == '\t') {
+          if (keywordLength_ == 2 && keyword_[0] == 'v' && keyword_[1] == 'w') {
+            unsupportedLine_ = line_;
+            char* cut = const_cast<char*>(keywordStart_ ? keywordStart_ : begin);
+            setg(eback(), gptr(), cut);
+            return;
+          }
           bool vertexData = keyword_[0] == 'v' && (keywordLength_ == 1 || (keywordLength_ == 2 &&
                                                    (keyword_[1] == 'n' || keyword_[1] == 't')));
           state_ = vertexData ? State::Numbers : State::Rest;

@@ -11,7 +11,8 @@ namespace candela {
 
 // The stream tinyobjloader reads OBJ text through, from a file or from memory. While handing the text over it
 // checks the numbers of "v", "vn" and "vt" lines, which the parser would silently read as 0 when they are not
-// numbers ("nan", "1.#IND"), and keeps the first such line.
+// numbers ("nan", "1.#IND"), and keeps the first such line. It also stops at the first "vw" line (tinyobjloader's
+// skin-weight extension, which converts unchecked floats to int) before the parser sees it.
 class ObjTextBuffer : public std::streambuf {
  public:
   static std::unique_ptr<ObjTextBuffer> openFile(const std::string& path);  // null when it cannot be opened
@@ -19,6 +20,7 @@ class ObjTextBuffer : public std::streambuf {
   ~ObjTextBuffer() override;
 
   std::optional<size_t> firstLineWithBadNumber() const { return badLine_; }
+  std::optional<size_t> unsupportedStatementLine() const { return unsupportedLine_; }
   bool readFailed() const { return readFailed_; }
 
  protected:
@@ -38,6 +40,8 @@ class ObjTextBuffer : public std::streambuf {
   size_t line_ = 1;
   bool previousWasSpace_ = false;  // the last character of the previous chunk
   std::optional<size_t> badLine_;
+  std::optional<size_t> unsupportedLine_;
+  const char* keywordStart_ = nullptr;  // in the chunk being scanned, or null when it began in an earlier one
 };
 
 }  // namespace candela
