@@ -98,11 +98,17 @@ TEST(ObjLoader, ErrorsNameFileAndLine) {
             "test.obj:5: a coordinate is not a number");
   EXPECT_EQ(errorOf("v 0 0 0\nv 1 0 0\nv 1 1 0\nvn 0 0 1e39\nf 1//1 2//1 3//1\n"),
             "test.obj:4: non-finite normal");
-  EXPECT_EQ(errorOf("v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\nvw 0 3e10 0.5\n"),
-            "test.obj:5: 'vw' (skin weight) statements are not supported");
   EXPECT_NE(errorOf("v 0 0 0\nv 1 0 0\nl 1 2\n").find("test.obj: has only line and point elements"), std::string::npos);
   EXPECT_NE(errorOf("# nothing\n").find("test.obj: has no faces"), std::string::npos);
   EXPECT_NE(errorOf("").find("test.obj: has no faces"), std::string::npos);
+}
+
+TEST(ObjLoader, SkinWeightsAreIgnoredWithAWarning) {
+  LoadWarnings warnings;
+  Scene s = loadText("v 0 0 0\nv 1 0 0\nvw 0 3e10 0.5\n  vw 1 2 0.5\nv 1 1 0\nf 1 2 3\n", warnings);
+  EXPECT_EQ(s.meshes[0].positions.size(), 3u);
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_EQ(warnings.messages[0], "test.obj:3: 'vw' (skin weight) statements are ignored");
 }
 
 TEST(ObjLoader, MissingNormalReferencesAreAWarning) {
