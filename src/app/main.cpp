@@ -169,6 +169,10 @@ int main(int argc, char** argv) {
   CLI::App* bench = app.add_subcommand("bench", "Time a render and print the numbers as one JSON object");
   addRenderOptions(*bench, benchJob);
 
+  std::string inspectSpec;
+  CLI::App* inspect = app.add_subcommand("load", "Load a scene and print its size and loading time as one JSON object");
+  inspect->add_option("scene", inspectSpec, "Scene file or built-in scene")->required();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -186,10 +190,6 @@ int main(int argc, char** argv) {
     job->given.samplesPerPixel = cmd->count("--spp") > 0;
     job->given.maxDepth = cmd->count("--max-depth") > 0;
   }
-
-  std::string inspectSpec;
-  CLI::App* inspect = app.add_subcommand("load", "Load a scene and print its size and loading time as one JSON object");
-  inspect->add_option("scene", inspectSpec, "Scene file or built-in scene")->required();
 
   try {
     if (*inspect) return runLoad(inspectSpec);
