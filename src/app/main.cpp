@@ -3,6 +3,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -11,6 +12,7 @@
 #include "app/backend_factory.h"
 #include "app/render_job.h"
 #include "app/scene_loading.h"
+#include "app/viewer/viewer.h"
 #include "image/image_io.h"
 #include "scene/builtin_scenes.h"
 
@@ -61,6 +63,8 @@ void addRenderOptions(CLI::App& cmd, RenderJob& job) {
   cmd.add_option_function<std::vector<std::string>>("--override", [&job](const std::vector<std::string>& list) {
         for (const std::string& assignment : list) parseOverride(job.materialOverrides, assignment);
       }, "Set a material parameter on every material, name=value in [0, 1]; repeatable. Names: " + overrideNames)
+      ->type_size(1)
+      ->allow_extra_args(false)
       ->check(validated([](const std::string& assignment) {
         MaterialOverrides scratch;
         parseOverride(scratch, assignment);
@@ -101,9 +105,17 @@ int runRender(const RenderJob& job, const std::string& output, const DisplaySett
   return 0;
 }
 
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  size_t n = values.size();
+  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
 int runBench(const RenderJob& job) {
   RenderOutcome outcome = runRenderJob(job, /*showProgress=*/false);
   double samples = double(job.settings.width) * job.settings.height * job.samplesPerPixel;
+  double samplesPerFrame = double(job.settings.width) * job.settings.height;
+  double raysPerFrame = double(outcome.stats.rays) / double(job.samplesPerPixel);
   nlohmann::ordered_json report = {
       {"scene", outcome.sceneName},
       {"width", job.settings.width},
@@ -116,7 +128,30 @@ int runBench(const RenderJob& job) {
       {"msamples_per_s", samples / outcome.seconds / 1e6},
       {"mrays_per_s", double(outcome.stats.rays) / outcome.seconds / 1e6},
       {"invalid_samples", outcome.stats.invalidSamples},
+      {"warmup_frames", job.warmupFrames},
+      {"median_ms_per_frame", median(outcome.frameMilliseconds)},
   };
+  // GPU backends time every launch with device events: frame rate and throughput from the median launch.
+  if (!outcome.deviceFrameMilliseconds.empty()) {
+    const std::vector<double>& ms = outcome.deviceFrameMilliseconds;
+    double m = median(ms);
+    report["median_device_ms_per_frame"] = m;
+    report["min_device_ms_per_frame"] = *std::min_element(ms.begin(), ms.end());
+    report["max_device_ms_per_frame"] = *std::max_element(ms.begin(), ms.end());
+    report["device_fps"] = 1000.0 / m;
+    report["device_msamples_per_s"] = samplesPerFrame / m / 1e3;
+    report["device_mrays_per_s"] = raysPerFrame / m / 1e3;
+    report["rays_per_sample"] = raysPerFrame / samplesPerFrame;
+  }
+  if (!outcome.rawTraceMilliseconds.empty()) {
+    double m = median(outcome.rawTraceMilliseconds);
+    double rawRate = double(outcome.rawTraceRaysPerFrame) / m / 1e3;
+    report["raw_trace_rays_per_frame"] = outcome.rawTraceRaysPerFrame;
+    report["raw_trace_median_device_ms"] = m;
+    report["raw_trace_mrays_per_s"] = rawRate;
+    if (!outcome.deviceFrameMilliseconds.empty())
+      report["path_ray_rate_fraction_of_raw"] = raysPerFrame / median(outcome.deviceFrameMilliseconds) / 1e3 / rawRate;
+  }
   std::cout << report.dump() << std::endl;
   return 0;
 }
@@ -142,13 +177,67 @@ int runLoad(const std::string& spec) {
   return 0;
 }
 
+void addViewOptions(CLI::App& cmd, ViewerOptions& options, std::string& toneMapper) {
+  std::string scenes;
+  for (const std::string& n : builtinSceneNames()) scenes += (scenes.empty() ? "" : ", ") + n;
+  cmd.add_option("scene", options.sceneSpec, "Built-in scene name (" + scenes + ")")->capture_default_str();
+  cmd.add_option("--backend", options.backend, "auto, cpu or optix (in this build: " + availableBackends() + ")")
+      ->check(CLI::IsMember({"auto", "cpu", "optix"}))
+      ->capture_default_str();
+  cmd.add_option("--width", options.width, "Image width in pixels; the panel sits beside the image")
+      ->check(CLI::Range(64u, 16384u))
+      ->capture_default_str();
+  cmd.add_option("--height", options.height, "Image height in pixels")
+      ->check(CLI::Range(64u, 16384u))
+      ->capture_default_str();
+  cmd.add_option("--max-depth", options.maxDepth, "Longest path in bounces after the camera ray")
+      ->check(CLI::Range(1u, 1024u))
+      ->capture_default_str();
+  cmd.add_option("--seed", options.seed, "Seed of the random sequence")->capture_default_str();
+  cmd.add_option("--spp-per-frame", options.samplesPerFrame, "Samples per pixel added each frame at rest")
+      ->check(CLI::Range(1u, 1024u))
+      ->capture_default_str();
+  cmd.add_option("--exposure", options.post.display.exposure, "Exposure in stops")->capture_default_str();
+  cmd.add_option("--tonemap", toneMapper, "Tone mapper: aces or clamp")
+      ->check(CLI::IsMember({"aces", "clamp"}))
+      ->capture_default_str();
+  CLI::Option* frames =
+      cmd.add_option("--frames", options.frames, "Render this many frames, then exit (0: until the window closes)")
+          ->capture_default_str();
+  cmd.add_option("--screenshot", options.screenshot, "On exit, write the accumulated image (.png, .exr or .pfm)");
+  cmd.add_option("--window-capture", options.windowCapture, "After --frames, write the whole window as a .png")
+      ->needs(frames);
+  cmd.add_option("--state-file", options.stateFile, "Where F12 writes the viewer's state as JSON")
+      ->capture_default_str();
+}
+
+int runView(ViewerOptions options, const std::string& toneMapper) {
+  options.post.display.toneMapper = toneMapper == "clamp" ? ToneMapper::Clamp : ToneMapper::AcesFilmic;
+  if (!options.screenshot.empty()) checkOutputPath(options.screenshot);
+  if (!options.windowCapture.empty()) {
+    checkOutputPath(options.windowCapture);
+    if (std::filesystem::path(options.windowCapture).extension() != ".png")
+      throw std::runtime_error("cannot write '" + options.windowCapture + "': a window capture is a .png file");
+  }
+#ifdef CANDELA_HAS_VIEWER
+  return runViewer(options);
+#else
+  throw std::runtime_error(
+      "this build has no viewer: configure with CANDELA_BUILD_VIEWER=ON once libglfw3-dev, libimgui-dev and "
+      "libgl-dev are installed (scripts/install-dependencies.sh)");
+#endif
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"candela: a physically based path tracer.\n"
                "  candela render                 render the built-in Cornell box to candela.png\n"
                "  candela render -o box.exr --spp 256\n"
-               "  candela bench --spp 16         print one JSON line of timings"};
+               "  candela bench --spp 16         print one JSON line of timings\n"
+               "  candela view                   open the interactive viewer\n"
+
+               "  candela bench --backend optix --width 1920 --height 1080 --spp 100 --warmup 20 --raw-trace"};
   app.require_subcommand(1);
 
   RenderJob renderJob;
@@ -163,11 +252,23 @@ int main(int argc, char** argv) {
   render->add_option("--tonemap", toneMapper, "Tone mapper for .png: aces or clamp")
       ->check(CLI::IsMember({"aces", "clamp"}))
       ->capture_default_str();
+  render->add_option("--denoise", renderJob.denoiser, "Denoiser: none, or optix (the OptiX AI denoiser)")
+      ->check(CLI::IsMember({"none", "optix"}))
+      ->capture_default_str();
 
   RenderJob benchJob;
   benchJob.samplesPerPixel = 16;
   CLI::App* bench = app.add_subcommand("bench", "Time a render and print the numbers as one JSON object");
   addRenderOptions(*bench, benchJob);
+  bench->add_option("--warmup", benchJob.warmupFrames, "Untimed launches before the timed ones")
+      ->capture_default_str();
+  bench->add_flag("--raw-trace", benchJob.rawTrace,
+                  "Also time tracing the same rays with no shading, the traversal ceiling (optix backend)");
+
+  ViewerOptions viewOptions;
+  std::string viewToneMapper = "aces";
+  CLI::App* view = app.add_subcommand("view", "Open a window that refines the image while you move the camera");
+  addViewOptions(*view, viewOptions, viewToneMapper);
 
   std::string inspectSpec;
   CLI::App* inspect = app.add_subcommand("load", "Load a scene and print its size and loading time as one JSON object");
@@ -197,6 +298,7 @@ int main(int argc, char** argv) {
       display.toneMapper = toneMapper == "clamp" ? ToneMapper::Clamp : ToneMapper::AcesFilmic;
       return runRender(renderJob, output, display);
     }
+    if (*view) return runView(viewOptions, viewToneMapper);
     return runBench(benchJob);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "candela: %s\n", e.what());

@@ -2,14 +2,50 @@
 
 #include <chrono>
 #include <cstdio>
+#include <stdexcept>
 
 #include "app/backend_factory.h"
 #include "app/progress.h"
 #include "app/scene_loading.h"
+#if CANDELA_HAS_OPTIX
+#include "backends/optix/optix_backend.h"
+#include "backends/optix/optix_denoiser.h"
+#endif
 
 namespace candela {
 
+namespace {
+
+// Only the optix backend has a raw-trace mode; runRenderJob checks that before rendering.
+void timeRawTrace([[maybe_unused]] Backend& backend, [[maybe_unused]] const RenderJob& job,
+                  [[maybe_unused]] RenderOutcome& outcome) {
+#if CANDELA_HAS_OPTIX
+  RawTraceTiming timing = dynamic_cast<OptixBackend&>(backend).timeRawTrace(job.warmupFrames, job.samplesPerPixel);
+  outcome.rawTraceRaysPerFrame = timing.raysPerFrame;
+  outcome.rawTraceMilliseconds = timing.deviceMilliseconds;
+#endif
+}
+
+// Builds without OptiX refuse --denoise optix before rendering (runRenderJob).
+void denoise([[maybe_unused]] const RenderJob& job, [[maybe_unused]] RenderOutcome& outcome) {
+#if CANDELA_HAS_OPTIX
+  if (job.denoiser != "optix") return;
+  try {
+    outcome.image = denoiseWithOptix(outcome.image);
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "candela: %s; the image is kept without denoising\n", e.what());
+  }
+#endif
+}
+
+}  // namespace
+
 RenderOutcome runRenderJob(const RenderJob& job, bool showProgress) {
+#if !CANDELA_HAS_OPTIX
+  if (job.denoiser == "optix")
+    throw std::runtime_error("--denoise optix needs the OptiX backend, which is not in this build (see README, "
+                             "'GPU backend')");
+#endif
   Scene scene = loadScene(job.sceneSpec, {job.environmentPath});
   applyOverrides(scene.materials, job.materialOverrides);
   RenderJob hinted = job;
@@ -25,22 +61,31 @@ RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool s
   std::string why;
   std::unique_ptr<Backend> backend = createBackend(job.backend, why);
   std::fprintf(stderr, "%s\n", why.c_str());
+  if (job.rawTrace && backend->name() != "optix")
+    throw std::runtime_error("the raw-trace mode needs the optix backend, not " + backend->name());
   backend->setScene(scene);
   backend->setSettings(job.settings);
   backend->setCamera(scene.camera.toCamera(float(job.settings.width) / float(job.settings.height)));
 
   RenderOutcome outcome;
+  for (uint32_t w = 0; w < job.warmupFrames; ++w) backend->render(1);
   ProgressReporter progress("rendering", job.samplesPerPixel);
-  auto start = std::chrono::steady_clock::now();
+  using Clock = std::chrono::steady_clock;
+  auto start = Clock::now();
   for (uint32_t s = 0; s < job.samplesPerPixel; ++s) {
+    auto frameStart = Clock::now();
     FrameStats frame = backend->render(1);
+    outcome.frameMilliseconds.push_back(std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count());
+    if (frame.deviceMilliseconds > 0.0) outcome.deviceFrameMilliseconds.push_back(frame.deviceMilliseconds);
     outcome.stats.rays += frame.rays;
     outcome.stats.invalidSamples += frame.invalidSamples;
     if (showProgress) progress.update(s + 1);
   }
-  outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  outcome.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   if (showProgress) progress.finish();
+  if (job.rawTrace) timeRawTrace(*backend, job, outcome);
   outcome.image = backend->readImage();
+  denoise(job, outcome);
   outcome.backendName = backend->name();
   outcome.deviceName = backend->deviceName();
   outcome.sceneName = scene.name;

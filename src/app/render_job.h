@@ -1,5 +1,6 @@
 #pragma once
 #include <string>
+#include <vector>
 
 #include "backends/backend.h"
 #include "scene/material_overrides.h"
@@ -18,6 +19,9 @@ struct RenderJob {
   uint32_t samplesPerPixel = 64;
   std::string backend = "auto";
   MaterialOverrides materialOverrides;
+  uint32_t warmupFrames = 0;      // untimed launches before the timed ones
+  bool rawTrace = false;          // also time the backend's raw-trace mode (optix only)
+  std::string denoiser = "none";  // "none" or "optix"
 };
 
 struct RenderOutcome {
@@ -27,10 +31,15 @@ struct RenderOutcome {
   std::string backendName;
   std::string deviceName;
   std::string sceneName;
+  std::vector<double> frameMilliseconds;        // wall clock of each timed launch
+  std::vector<double> deviceFrameMilliseconds;  // GPU time of each timed launch, where the backend measures it
+  uint64_t rawTraceRaysPerFrame = 0;            // with RenderJob::rawTrace
+  std::vector<double> rawTraceMilliseconds;
 };
 
-// Loads the scene, builds the backend and accumulates the requested samples, one launch per sample per pixel.
-// Throws std::runtime_error on failure.
+// Loads the scene, builds the backend and accumulates the requested samples, one launch per sample per pixel,
+// after `warmupFrames` untimed launches; then denoises when asked. Throws std::runtime_error on failure; a
+// denoiser that cannot run is reported on stderr and the image is kept as rendered.
 RenderOutcome runRenderJob(const RenderJob& job, bool showProgress);
 RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool showProgress);
 

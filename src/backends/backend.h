@@ -13,6 +13,7 @@ namespace candela {
 struct FrameStats {
   uint64_t rays = 0;            // camera, bounce and shadow rays traced
   uint64_t invalidSamples = 0;  // NaN/Inf/negative path estimates dropped before the film
+  double deviceMilliseconds = 0.0;  // GPU time of the launches (CUDA events); 0 where the backend has none
 };
 
 // A renderer of one scene: owns traversal structures, memory and launches; shading is the shared kernel code.

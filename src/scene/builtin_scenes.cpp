@@ -33,11 +33,9 @@ void appendBlock(Mesh& mesh, const Vec3 (&floor)[4], float height, uint32_t mate
   }
 }
 
-}  // namespace
-
-Scene makeCornellBox() {
+// The Cornell box's walls, light and camera, without the two blocks.
+Scene makeCornellRoom() {
   Scene scene;
-  scene.name = "cornell-box";
   enum : uint32_t { kWhite, kRed, kGreen, kLight };
   scene.materials = {diffuse({0.725f, 0.71f, 0.68f}), diffuse({0.63f, 0.065f, 0.05f}),
                      diffuse({0.14f, 0.45f, 0.091f}), diffuse({0.78f, 0.78f, 0.78f}, {17.0f, 12.0f, 4.0f})};
@@ -56,17 +54,44 @@ Scene makeCornellBox() {
   // The light hangs a fraction of a millimetre below the ceiling so that the two never coincide.
   appendQuad(room, mm(343.0f, 548.7f, 227.0f), mm(343.0f, 548.7f, 332.0f), mm(213.0f, 548.7f, 332.0f),
              mm(213.0f, 548.7f, 227.0f), inside, kLight);
-  const Vec3 shortBlock[4] = {mm(130, 0, 65), mm(82, 0, 225), mm(240, 0, 272), mm(290, 0, 114)};
-  const Vec3 tallBlock[4] = {mm(423, 0, 247), mm(265, 0, 296), mm(314, 0, 456), mm(472, 0, 406)};
-  appendBlock(room, shortBlock, 165.0f * kMillimetre, kWhite);
-  appendBlock(room, tallBlock, 330.0f * kMillimetre, kWhite);
-
   scene.meshes.push_back(std::move(room));
   scene.instances.push_back({0, Affine3x4{}});
   scene.camera.eye = mm(278.0f, 273.0f, -800.0f);
   scene.camera.target = mm(278.0f, 273.0f, 0.0f);
   scene.camera.up = {0, 1, 0};
   scene.camera.verticalFovDegrees = 2.0f * atanf(12.5f / 35.0f) * 180.0f / kPi;
+  return scene;
+}
+
+constexpr uint32_t kCornellWhite = 0;
+
+}  // namespace
+
+Scene makeCornellBox() {
+  Scene scene = makeCornellRoom();
+  scene.name = "cornell-box";
+  Mesh& room = scene.meshes[0];
+  const Vec3 shortBlock[4] = {mm(130, 0, 65), mm(82, 0, 225), mm(240, 0, 272), mm(290, 0, 114)};
+  const Vec3 tallBlock[4] = {mm(423, 0, 247), mm(265, 0, 296), mm(314, 0, 456), mm(472, 0, 406)};
+  appendBlock(room, shortBlock, 165.0f * kMillimetre, kCornellWhite);
+  appendBlock(room, tallBlock, 330.0f * kMillimetre, kCornellWhite);
+  return scene;
+}
+
+Scene makeCornellSpheres() {
+  Scene scene = makeCornellRoom();
+  scene.name = "cornell-spheres";
+  scene.meshes.push_back(makeUvSphere(1.0f, 400, 200, kCornellWhite, /*inward=*/false));
+  auto placeSphere = [&](Vec3 centre, float radius) {
+    Affine3x4 t;
+    t.m[0] = t.m[5] = t.m[10] = radius;
+    t.m[3] = centre.x;
+    t.m[7] = centre.y;
+    t.m[11] = centre.z;
+    scene.instances.push_back({1, t});
+  };
+  placeSphere(mm(186, 100, 169), 0.1f);
+  placeSphere(mm(368, 140, 351), 0.14f);
   return scene;
 }
 
@@ -206,12 +231,14 @@ Scene makeMirrorCorridor() {
 }
 
 std::vector<std::string> builtinSceneNames() {
-  return {"cornell-box", "white-furnace", "closed-sphere", "material-gallery", "mirror-corridor"};
+  return {"cornell-box", "cornell-spheres", "white-furnace", "closed-sphere", "material-gallery", "mirror-corridor"};
 }
 
 bool makeBuiltinScene(const std::string& name, Scene& scene) {
   if (name == "cornell-box")
     scene = makeCornellBox();
+  else if (name == "cornell-spheres")
+    scene = makeCornellSpheres();
   else if (name == "white-furnace")
     scene = makeWhiteFurnace();
   else if (name == "closed-sphere")

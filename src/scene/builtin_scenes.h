@@ -10,6 +10,10 @@ namespace candela {
 // 35 mm lens on a 25 mm film), with the usual RGB fits of the measured reflectances and light spectrum.
 Scene makeCornellBox();
 
+// The Cornell box with its blocks replaced by two instances of one finely tessellated sphere (159,200
+// triangles): a dense mesh for timing traversal.
+Scene makeCornellSpheres();
+
 // The inside of a closed sphere whose every point reflects diffusely with `albedo` and emits `emission`:
 // radiance is emission / (1 - albedo) everywhere, the camera sits at the centre.
 Scene makeClosedEmissiveSphere(float albedo, float emission);

@@ -1,0 +1,53 @@
+#pragma once
+// What host code hands the device programs for one optixLaunch, in one struct (OptiX's launch parameters).
+#include <optix_types.h>
+
+#include <cstdint>
+
+#include "kernel/camera.h"
+#include "kernel/render_settings.h"
+#include "kernel/scene_view.h"
+
+namespace candela::optix {
+
+// SBT offsets of the two ray types; every geometry has one hit-group record per type.
+enum RayType : uint32_t { kRadianceRay = 0, kShadowRay = 1, kRayTypeCount = 2 };
+
+// The radiance payload's instance register holds this when the ray missed.
+constexpr uint32_t kMissedInstance = 0xFFFFFFFFu;
+
+// What one pixel's thread did in one launch; summed over the image on the device afterwards.
+struct PixelCounters {
+  uint32_t rays;
+  uint32_t invalidSamples;
+};
+
+struct alignas(16) RecordedRay {
+  Vec3 origin;
+  float tMin;
+  Vec3 direction;
+  float tMax;
+};
+
+// The rays of one sample per pixel, kept for the raw-trace timing mode. Slot-major ([slot][pixel]) so that a
+// warp reading one slot of consecutive pixels reads consecutive memory.
+struct RayRecording {
+  RecordedRay* rays = nullptr;
+  uint8_t* rayTypes = nullptr;  // RayType of each recorded ray
+  uint32_t* counts = nullptr;   // rays recorded per pixel
+  uint32_t slotsPerPixel = 0;
+};
+
+struct LaunchParameters {
+  SceneView scene;
+  Camera camera;
+  RenderSettings settings;
+  OptixTraversableHandle traversable = 0;
+  uint32_t firstSample = 0;      // sample index of this launch's first sample in every pixel
+  uint32_t samplesPerPixel = 0;  // samples each pixel takes in this launch
+  Vec3* accumulation = nullptr;  // per pixel: sum of the valid samples so far
+  PixelCounters* counters = nullptr;
+  RayRecording recording;
+};
+
+}  // namespace candela::optix

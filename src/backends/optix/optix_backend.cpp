@@ -1,0 +1,205 @@
+#include "backends/optix/optix_backend.h"
+
+#include <optix.h>
+#include <optix_stubs.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <stdexcept>
+
+#include "backends/optix/acceleration.h"
+#include "backends/optix/device_scene.h"
+#include "backends/optix/launch_params.h"
+#include "backends/optix/optix_context.h"
+#include "backends/optix/optix_error.h"
+#include "backends/optix/pipeline.h"
+#include "backends/optix/pixel_counters.h"
+#include "scene/flat_scene.h"
+
+namespace candela {
+
+using namespace optix;
+
+namespace {
+
+// Rays one path sample can trace: a closest-hit and a shadow ray per bounce, with margin for kernel growth.
+uint32_t rayBoundPerSample(const RenderSettings& settings) { return 4 * (settings.maxDepth + 1); }
+
+class CudaEvent {
+ public:
+  CudaEvent() { checkCuda(cudaEventCreate(&event_), "creating a CUDA event"); }
+  ~CudaEvent() { cudaEventDestroy(event_); }
+  CudaEvent(const CudaEvent&) = delete;
+  CudaEvent& operator=(const CudaEvent&) = delete;
+  cudaEvent_t get() const { return event_; }
+
+ private:
+  cudaEvent_t event_ = nullptr;
+};
+
+struct LaunchResult {
+  CounterTotals totals{};
+  float milliseconds = 0.0f;
+};
+
+}  // namespace
+
+struct OptixBackend::State {
+  OptixContext context;
+  Pipeline pipeline{context.get()};
+  FlatScene flat;
+  DeviceScene scene;
+  AccelerationStructures acceleration;
+  bool hasScene = false;
+  Camera camera;
+  RenderSettings settings;
+
+  DeviceBuffer accumulation;
+  DeviceBuffer counters;
+  DeviceBuffer totals{sizeof(CounterTotals), "the counter totals"};
+  DeviceBuffer parameters{sizeof(LaunchParameters), "the launch parameters"};
+  CudaEvent start, stop;
+  uint32_t accumulated = 0;
+
+  uint32_t pixelCount() const { return settings.width * settings.height; }
+
+  LaunchParameters baseParameters() const {
+    LaunchParameters p;
+    p.scene = scene.view();
+    p.camera = camera;
+    p.settings = settings;
+    p.traversable = acceleration.topLevel();
+    p.accumulation = accumulation.as<Vec3>();
+    p.counters = counters.as<PixelCounters>();
+    return p;
+  }
+
+  // Uploads the parameters, launches one raygen program over the image and sums its counters, timing both
+  // with CUDA events; waits for the result.
+  LaunchResult launch(RaygenProgram program, const LaunchParameters& p) {
+    cudaStream_t stream = context.stream();
+    checkCuda(cudaMemcpyAsync(parameters.as<void>(), &p, sizeof p, cudaMemcpyHostToDevice, stream),
+              "uploading the launch parameters");
+    checkCuda(cudaEventRecord(start.get(), stream), "recording a CUDA event");
+    checkOptix(optixLaunch(pipeline.get(), stream, parameters.address(), sizeof p, &pipeline.bindingTable(program),
+                           settings.width, settings.height, 1),
+               "launching the device programs");
+    sumPixelCounters(counters.as<PixelCounters>(), pixelCount(), totals.as<CounterTotals>(), stream);
+    checkCuda(cudaEventRecord(stop.get(), stream), "recording a CUDA event");
+    LaunchResult result;
+    checkCuda(cudaMemcpyAsync(&result.totals, totals.as<void>(), sizeof result.totals, cudaMemcpyDeviceToHost, stream),
+              "reading the launch's counters");
+    checkCuda(cudaStreamSynchronize(stream), "running the device programs");
+    checkCuda(cudaEventElapsedTime(&result.milliseconds, start.get(), stop.get()), "reading a CUDA event");
+    return result;
+  }
+
+  void restart() {
+    accumulated = 0;
+    if (accumulation.size() > 0)
+      checkCuda(cudaMemsetAsync(accumulation.as<void>(), 0, accumulation.size(), context.stream()),
+                "clearing the accumulation buffer");
+  }
+};
+
+OptixBackend::OptixBackend() : state_(std::make_unique<State>()) {
+  std::fprintf(stderr, "optix: %s\n", deviceDescription().c_str());
+  setSettings(RenderSettings{});
+}
+
+OptixBackend::~OptixBackend() = default;
+
+std::string OptixBackend::deviceName() const { return state_->context.info().name; }
+
+std::string OptixBackend::deviceDescription() const { return state_->context.describe(); }
+
+void OptixBackend::setScene(const Scene& scene) {
+  State& s = *state_;
+  s.hasScene = false;
+  s.flat = FlatScene::build(scene);
+  s.scene.upload(s.flat);
+  s.acceleration.build(s.context.get(), s.context.stream(), s.flat, s.scene.view());
+  s.hasScene = true;
+  s.restart();
+}
+
+void OptixBackend::setCamera(const Camera& camera) {
+  state_->camera = camera;
+  state_->restart();
+}
+
+void OptixBackend::setSettings(const RenderSettings& settings) {
+  State& s = *state_;
+  uint32_t oldPixels = s.pixelCount();
+  s.settings = settings;
+  if (s.pixelCount() != oldPixels || s.accumulation.size() == 0) {
+    s.accumulation = DeviceBuffer();
+    s.counters = DeviceBuffer();
+    s.accumulation = DeviceBuffer(size_t(s.pixelCount()) * sizeof(Vec3), "the accumulation buffer");
+    s.counters = DeviceBuffer(size_t(s.pixelCount()) * sizeof(PixelCounters), "the per-pixel counters");
+  }
+  s.restart();
+}
+
+FrameStats OptixBackend::render(uint32_t samplesPerPixel) {
+  State& s = *state_;
+  if (!s.hasScene) throw std::logic_error("OptixBackend::render before setScene");
+  // Per-pixel ray counts are 32-bit: long requests are split into launches that cannot overflow them.
+  const uint32_t maxPerLaunch = std::max(1u, 0xFFFFFFFFu / rayBoundPerSample(s.settings));
+  FrameStats stats;
+  for (uint32_t done = 0; done < samplesPerPixel;) {
+    LaunchParameters p = s.baseParameters();
+    p.firstSample = s.accumulated;
+    p.samplesPerPixel = std::min(samplesPerPixel - done, maxPerLaunch);
+    LaunchResult r = s.launch(RaygenProgram::Render, p);
+    stats.rays += r.totals.rays;
+    stats.invalidSamples += r.totals.invalidSamples;
+    stats.deviceMilliseconds += r.milliseconds;
+    s.accumulated += p.samplesPerPixel;
+    done += p.samplesPerPixel;
+  }
+  return stats;
+}
+
+uint32_t OptixBackend::accumulatedSamples() const { return state_->accumulated; }
+
+Image OptixBackend::readImage() const {
+  const State& s = *state_;
+  Image image(s.settings.width, s.settings.height);
+  s.accumulation.download(image.pixels.data(), image.pixels.size() * sizeof(Vec3));
+  float scale = s.accumulated > 0 ? 1.0f / float(s.accumulated) : 0.0f;
+  for (Vec3& p : image.pixels) p = p * scale;
+  return image;
+}
+
+RawTraceTiming OptixBackend::timeRawTrace(uint32_t warmup, uint32_t frames) {
+  State& s = *state_;
+  if (!s.hasScene) throw std::logic_error("OptixBackend::timeRawTrace before setScene");
+  const size_t pixels = s.pixelCount();
+  LaunchParameters p = s.baseParameters();
+  p.firstSample = s.accumulated;
+  p.samplesPerPixel = 1;
+  p.recording.slotsPerPixel = rayBoundPerSample(s.settings);
+  const size_t slots = size_t(p.recording.slotsPerPixel) * pixels;
+  DeviceBuffer rays(slots * sizeof(RecordedRay), "the recorded rays");
+  DeviceBuffer rayTypes(slots, "the recorded ray types");
+  DeviceBuffer counts(pixels * sizeof(uint32_t), "the recorded ray counts");
+  p.recording.rays = rays.as<RecordedRay>();
+  p.recording.rayTypes = rayTypes.as<uint8_t>();
+  p.recording.counts = counts.as<uint32_t>();
+
+  const LaunchResult recorded = s.launch(RaygenProgram::Record, p);
+  RawTraceTiming timing;
+  timing.raysPerFrame = recorded.totals.rays;
+  for (uint32_t i = 0; i < warmup + frames; ++i) {
+    LaunchResult r = s.launch(RaygenProgram::RawTrace, p);
+    if (r.totals.rays != recorded.totals.rays)
+      throw std::runtime_error("the raw-trace mode replayed " + std::to_string(r.totals.rays) + " of " +
+                               std::to_string(recorded.totals.rays) + " recorded rays: a path traced more rays " +
+                               "than the recording holds");
+    if (i >= warmup) timing.deviceMilliseconds.push_back(r.milliseconds);
+  }
+  return timing;
+}
+
+}  // namespace candela

@@ -1,0 +1,139 @@
+#include "backends/optix/pipeline.h"
+
+#include <optix.h>
+#include <optix_stack_size.h>
+#include <optix_stubs.h>
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "backends/optix/launch_params.h"
+#include "backends/optix/optix_error.h"
+
+// The device programs as OptiX-IR, embedded at build time (see src/backends/optix/CMakeLists.txt).
+extern const unsigned char candelaOptixPrograms[];
+extern const size_t candelaOptixProgramsSize;
+
+namespace candela::optix {
+
+namespace {
+
+// Group order: raygen programs in RaygenProgram order, then these.
+enum : int { kRadianceMiss = int(RaygenProgram::Count), kShadowMiss, kRadianceHit, kShadowHit };
+
+struct alignas(OPTIX_SBT_RECORD_ALIGNMENT) HeaderOnlyRecord {
+  char header[OPTIX_SBT_RECORD_HEADER_SIZE];
+};
+
+// Calls an OptiX function that fills a log, and puts the log into the error message when it fails.
+template <class Call>
+void checkWithLog(const char* what, Call call) {
+  char log[2048];
+  size_t logSize = sizeof log;
+  OptixResult result = call(log, &logSize);
+  if (result != OPTIX_SUCCESS) {
+    try {
+      checkOptix(result, what);
+    } catch (const OptixError& e) {
+      throw OptixError(result, std::string(e.what()) + ": " + std::string(log, strnlen(log, sizeof log)));
+    }
+  }
+}
+
+OptixPipelineCompileOptions pipelineCompileOptions() {
+  OptixPipelineCompileOptions options{};
+  options.usesMotionBlur = 0;
+  options.traversableGraphFlags = OPTIX_TRAVERSABLE_GRAPH_FLAG_ALLOW_SINGLE_LEVEL_INSTANCING;
+  options.numPayloadValues = 5;    // radiance: t, b1, b2, instance, primitive; shadow: occluded
+  options.numAttributeValues = 2;  // built-in triangle barycentrics
+  options.exceptionFlags = OPTIX_EXCEPTION_FLAG_NONE;
+  options.pipelineLaunchParamsVariableName = "params";
+  options.usesPrimitiveTypeFlags = OPTIX_PRIMITIVE_TYPE_FLAGS_TRIANGLE;
+  return options;
+}
+
+}  // namespace
+
+Pipeline::Pipeline(OptixDeviceContext context) {
+  const OptixPipelineCompileOptions compileOptions = pipelineCompileOptions();
+  OptixModuleCompileOptions moduleOptions{};
+  moduleOptions.optLevel = OPTIX_COMPILE_OPTIMIZATION_DEFAULT;
+  moduleOptions.debugLevel = OPTIX_COMPILE_DEBUG_LEVEL_MINIMAL;
+  checkWithLog("compiling the device programs", [&](char* log, size_t* logSize) {
+    return optixModuleCreate(context, &moduleOptions, &compileOptions,
+                             reinterpret_cast<const char*>(candelaOptixPrograms), candelaOptixProgramsSize, log,
+                             logSize, &module_);
+  });
+
+  OptixProgramGroupDesc descriptions[kGroupCount] = {};
+  const char* raygenNames[kRaygenCount] = {"__raygen__render", "__raygen__record", "__raygen__rawTrace"};
+  for (int i = 0; i < kRaygenCount; ++i) {
+    descriptions[i].kind = OPTIX_PROGRAM_GROUP_KIND_RAYGEN;
+    descriptions[i].raygen.module = module_;
+    descriptions[i].raygen.entryFunctionName = raygenNames[i];
+  }
+  // The radiance miss program would only restate the payload's "missed" sentinel, so it is absent.
+  descriptions[kRadianceMiss].kind = OPTIX_PROGRAM_GROUP_KIND_MISS;
+  descriptions[kShadowMiss].kind = OPTIX_PROGRAM_GROUP_KIND_MISS;
+  descriptions[kShadowMiss].miss.module = module_;
+  descriptions[kShadowMiss].miss.entryFunctionName = "__miss__shadow";
+  descriptions[kRadianceHit].kind = OPTIX_PROGRAM_GROUP_KIND_HITGROUP;
+  descriptions[kRadianceHit].hitgroup.moduleCH = module_;
+  descriptions[kRadianceHit].hitgroup.entryFunctionNameCH = "__closesthit__radiance";
+  // Shadow rays disable closest-hit and any-hit, so their hit group has no programs.
+  descriptions[kShadowHit].kind = OPTIX_PROGRAM_GROUP_KIND_HITGROUP;
+  OptixProgramGroupOptions groupOptions{};
+  checkWithLog("creating the program groups", [&](char* log, size_t* logSize) {
+    return optixProgramGroupCreate(context, descriptions, kGroupCount, &groupOptions, log, logSize, groups_);
+  });
+
+  OptixPipelineLinkOptions linkOptions{};
+  linkOptions.maxTraceDepth = 1;  // only raygen traces
+  checkWithLog("linking the pipeline", [&](char* log, size_t* logSize) {
+    return optixPipelineCreate(context, &compileOptions, &linkOptions, groups_, kGroupCount, log, logSize,
+                               &pipeline_);
+  });
+
+  OptixStackSizes stackSizes{};
+  for (OptixProgramGroup group : groups_) {
+#if OPTIX_VERSION >= 80000
+    checkOptix(optixUtilAccumulateStackSizes(group, &stackSizes, pipeline_), "sizing the pipeline's stacks");
+#else
+    checkOptix(optixUtilAccumulateStackSizes(group, &stackSizes), "sizing the pipeline's stacks");
+#endif
+  }
+  unsigned int fromTraversal = 0, fromState = 0, continuation = 0;
+  checkOptix(optixUtilComputeStackSizes(&stackSizes, linkOptions.maxTraceDepth, 0, 0, &fromTraversal, &fromState,
+                                        &continuation),
+             "sizing the pipeline's stacks");
+  checkOptix(optixPipelineSetStackSize(pipeline_, fromTraversal, fromState, continuation,
+                                       /*maxTraversableGraphDepth=*/2),
+             "setting the pipeline's stack size");
+
+  // Records carry only their program headers: every program reads scene data through the launch parameters.
+  std::vector<HeaderOnlyRecord> records(kGroupCount);
+  for (int i = 0; i < kGroupCount; ++i)
+    checkOptix(optixSbtRecordPackHeader(groups_[i], &records[i]), "packing a shader binding table record");
+  records_ = DeviceBuffer::fromVector(records, "the shader binding table");
+  const CUdeviceptr base = records_.address();
+  for (int i = 0; i < kRaygenCount; ++i) {
+    OptixShaderBindingTable& table = tables_[i];
+    table.raygenRecord = base + i * sizeof(HeaderOnlyRecord);
+    table.missRecordBase = base + kRadianceMiss * sizeof(HeaderOnlyRecord);
+    table.missRecordStrideInBytes = sizeof(HeaderOnlyRecord);
+    table.missRecordCount = kRayTypeCount;
+    table.hitgroupRecordBase = base + kRadianceHit * sizeof(HeaderOnlyRecord);
+    table.hitgroupRecordStrideInBytes = sizeof(HeaderOnlyRecord);
+    table.hitgroupRecordCount = kRayTypeCount;
+  }
+}
+
+Pipeline::~Pipeline() {
+  if (pipeline_) optixPipelineDestroy(pipeline_);
+  for (OptixProgramGroup group : groups_)
+    if (group) optixProgramGroupDestroy(group);
+  if (module_) optixModuleDestroy(module_);
+}
+
+}  // namespace candela::optix

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# bundle.sh <build dir> <output dir>: copies candela, test_gpu, the GPU check scripts and the shared libraries
+# the binaries load (not the C/C++ runtime's, not the NVIDIA driver's) into <output dir>, so that the GPU
+# checks run on a machine that has the GPU but not the build dependencies:
+#   LD_LIBRARY_PATH=<output dir>/lib <output dir>/test_gpu
+set -euo pipefail
+build=$1 out=$2
+here=$(dirname "$(realpath "$0")")
+mkdir -p "$out/lib"
+cp "$build/src/candela" "$build/tests/gpu/test_gpu" "$here/error_paths.sh" "$here/../../bench/gpu_bench.sh" "$out/"
+for binary in "$out/candela" "$out/test_gpu"; do
+  ldd "$binary" | awk '/=> \//{print $3}' | while read -r library; do
+    case $(basename "$library") in
+      libc.so* | libm.so* | libgcc_s.so* | libstdc++.so* | ld-linux* | libpthread.so* | libdl.so* | librt.so*) ;;
+      libcuda.so* | libnvoptix.so*) ;;
+      *) cp -L "$library" "$out/lib/" ;;
+    esac
+  done
+done
+du -sh "$out"

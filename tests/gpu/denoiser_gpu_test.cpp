@@ -1,0 +1,55 @@
+// The OptiX AI denoiser: where the driver has its weights, a denoised image is closer to a converged one than
+// the noisy input; where it has not (OptiX error 7990), it says so in one sentence.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "backends/optix/optix_denoiser.h"
+#include "gpu_render.h"
+
+namespace candela {
+namespace {
+
+Image renderCornellBox(uint32_t seed, uint32_t spp) {
+  auto backend = test::makeBackend<OptixBackend>(makeCornellBox(), test::squareImage(128, seed));
+  backend->render(spp);
+  return backend->readImage();
+}
+
+// Mean over pixels and channels of (a - b)^2 / (b^2 + 1e-2), the usual relative MSE.
+double relativeMse(const Image& a, const Image& b) {
+  double sum = 0.0;
+  for (size_t i = 0; i < a.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      double d = double(a.pixels[i][c]) - b.pixels[i][c];
+      sum += d * d / (double(b.pixels[i][c]) * b.pixels[i][c] + 1e-2);
+    }
+  return sum / double(3 * a.pixels.size());
+}
+
+TEST(GpuDenoiser, DenoisesOrSaysWhyNot) {
+  Image noisy = renderCornellBox(1, 4);
+  Image reference = renderCornellBox(2, 4096);
+  Image denoised;
+  try {
+    denoised = denoiseWithOptix(noisy);
+  } catch (const std::runtime_error& e) {
+    std::string message = e.what();
+    EXPECT_NE(message.find("OptiX error 7990"), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << "one sentence, one line";
+    GTEST_SKIP() << "no denoiser weights in this driver: " << message;
+  }
+  ASSERT_EQ(denoised.width, noisy.width);
+  ASSERT_EQ(denoised.height, noisy.height);
+  for (Vec3 p : denoised.pixels) ASSERT_TRUE(isFinite(p));
+  EXPECT_LT(relativeMse(denoised, reference), 0.5 * relativeMse(noisy, reference));
+}
+
+TEST(GpuDenoiser, RejectsGuidesOfAnotherSize) {
+  Image beauty(8, 8), albedo(4, 4);
+  EXPECT_THROW(denoiseWithOptix(beauty, {&albedo, nullptr}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace candela
