@@ -4,12 +4,14 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 
 #include "app/backend_factory.h"
 #include "app/render_job.h"
+#include "app/scene_loading.h"
 #include "app/viewer/viewer.h"
 #include "image/image_io.h"
 #include "scene/builtin_scenes.h"
@@ -155,6 +157,27 @@ int runBench(const RenderJob& job) {
   return 0;
 }
 
+int runLoad(const std::string& spec) {
+  auto start = std::chrono::steady_clock::now();
+  Scene scene = loadScene(spec);
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  size_t vertices = 0;
+  for (const Mesh& m : scene.meshes) vertices += m.positions.size();
+  nlohmann::ordered_json report = {
+      {"scene", spec},
+      {"seconds", seconds},
+      {"meshes", scene.meshes.size()},
+      {"instances", scene.instances.size()},
+      {"triangles", scene.triangleCount()},
+      {"vertices", vertices},
+      {"materials", scene.materials.size()},
+      {"textures", scene.textures.size()},
+      {"scene_bytes", sceneMemoryBytes(scene)},
+  };
+  std::cout << report.dump() << std::endl;
+  return 0;
+}
+
 void addViewOptions(CLI::App& cmd, ViewerOptions& options, std::string& toneMapper) {
   std::string scenes;
   for (const std::string& n : builtinSceneNames()) scenes += (scenes.empty() ? "" : ", ") + n;
@@ -251,6 +274,10 @@ int main(int argc, char** argv) {
   CLI::App* view = app.add_subcommand("view", "Open a window that refines the image while you move the camera");
   addViewOptions(*view, viewOptions, viewToneMapper);
 
+  std::string inspectSpec;
+  CLI::App* inspect = app.add_subcommand("load", "Load a scene and print its size and loading time as one JSON object");
+  inspect->add_option("scene", inspectSpec, "Scene file or built-in scene")->required();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -270,6 +297,7 @@ int main(int argc, char** argv) {
   }
 
   try {
+    if (*inspect) return runLoad(inspectSpec);
     if (*render) {
       display.toneMapper = toneMapper == "clamp" ? ToneMapper::Clamp : ToneMapper::AcesFilmic;
       return runRender(renderJob, output, display);
