@@ -4,12 +4,15 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 
 #include "app/backend_factory.h"
 #include "app/render_job.h"
+#include "app/scene_loading.h"
+#include "app/viewer/viewer.h"
 #include "image/image_io.h"
 #include "scene/builtin_scenes.h"
 
@@ -60,6 +63,8 @@ void addRenderOptions(CLI::App& cmd, RenderJob& job) {
   cmd.add_option_function<std::vector<std::string>>("--override", [&job](const std::vector<std::string>& list) {
         for (const std::string& assignment : list) parseOverride(job.materialOverrides, assignment);
       }, "Set a material parameter on every material, name=value in [0, 1]; repeatable. Names: " + overrideNames)
+      ->type_size(1)
+      ->allow_extra_args(false)
       ->check(validated([](const std::string& assignment) {
         MaterialOverrides scratch;
         parseOverride(scratch, assignment);
@@ -152,6 +157,81 @@ int runBench(const RenderJob& job) {
   return 0;
 }
 
+int runLoad(const std::string& spec) {
+  auto start = std::chrono::steady_clock::now();
+  Scene scene = loadScene(spec);
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  size_t vertices = 0;
+  for (const Mesh& m : scene.meshes) vertices += m.positions.size();
+  nlohmann::ordered_json report = {
+      {"scene", spec},
+      {"seconds", seconds},
+      {"meshes", scene.meshes.size()},
+      {"instances", scene.instances.size()},
+      {"triangles", scene.triangleCount()},
+      {"vertices", vertices},
+      {"materials", scene.materials.size()},
+      {"textures", scene.textures.size()},
+      {"scene_bytes", sceneMemoryBytes(scene)},
+  };
+  std::cout << report.dump() << std::endl;
+  return 0;
+}
+
+void addViewOptions(CLI::App& cmd, ViewerOptions& options, std::string& toneMapper) {
+  std::string scenes;
+  for (const std::string& n : builtinSceneNames()) scenes += (scenes.empty() ? "" : ", ") + n;
+  cmd.add_option("scene", options.sceneSpec, "Scene file (.obj, .gltf, .glb, .json) or built-in scene (" + scenes + ")")
+      ->capture_default_str();
+  cmd.add_option("--env", options.environmentPath, "Environment map (.hdr or .exr) that lights the scene");
+  cmd.add_option("--backend", options.backend, "auto, cpu or optix (in this build: " + availableBackends() + ")")
+      ->check(CLI::IsMember({"auto", "cpu", "optix"}))
+      ->capture_default_str();
+  cmd.add_option("--width", options.width, "Image width in pixels; the panel sits beside the image")
+      ->check(CLI::Range(64u, 16384u))
+      ->capture_default_str();
+  cmd.add_option("--height", options.height, "Image height in pixels")
+      ->check(CLI::Range(64u, 16384u))
+      ->capture_default_str();
+  cmd.add_option("--max-depth", options.maxDepth, "Longest path in bounces after the camera ray")
+      ->check(CLI::Range(1u, 1024u))
+      ->capture_default_str();
+  cmd.add_option("--seed", options.seed, "Seed of the random sequence")->capture_default_str();
+  cmd.add_option("--spp-per-frame", options.samplesPerFrame, "Samples per pixel added each frame at rest")
+      ->check(CLI::Range(1u, 1024u))
+      ->capture_default_str();
+  cmd.add_option("--exposure", options.post.display.exposure, "Exposure in stops")->capture_default_str();
+  cmd.add_option("--tonemap", toneMapper, "Tone mapper: aces or clamp")
+      ->check(CLI::IsMember({"aces", "clamp"}))
+      ->capture_default_str();
+  CLI::Option* frames =
+      cmd.add_option("--frames", options.frames, "Render this many frames, then exit (0: until the window closes)")
+          ->capture_default_str();
+  cmd.add_option("--screenshot", options.screenshot, "On exit, write the accumulated image (.png, .exr or .pfm)");
+  cmd.add_option("--window-capture", options.windowCapture, "After --frames, write the whole window as a .png")
+      ->needs(frames);
+  cmd.add_option("--state-file", options.stateFile, "Where F12 writes the viewer's state as JSON")
+      ->capture_default_str();
+}
+
+int runView(ViewerOptions options, const std::string& toneMapper) {
+  options.post.display.toneMapper = toneMapper == "clamp" ? ToneMapper::Clamp : ToneMapper::AcesFilmic;
+  if (!options.screenshot.empty()) checkOutputPath(options.screenshot);
+  if (!options.windowCapture.empty()) {
+    if (options.frames == 0) throw std::runtime_error("--window-capture needs a number of --frames to render first");
+    checkOutputPath(options.windowCapture);
+    if (std::filesystem::path(options.windowCapture).extension() != ".png")
+      throw std::runtime_error("cannot write '" + options.windowCapture + "': a window capture is a .png file");
+  }
+#ifdef CANDELA_HAS_VIEWER
+  return runViewer(options);
+#else
+  throw std::runtime_error(
+      "this build has no viewer: configure with CANDELA_BUILD_VIEWER=ON once libglfw3-dev, libimgui-dev and "
+      "libgl-dev are installed (scripts/install-dependencies.sh)");
+#endif
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -159,6 +239,8 @@ int main(int argc, char** argv) {
                "  candela render                 render the built-in Cornell box to candela.png\n"
                "  candela render -o box.exr --spp 256\n"
                "  candela bench --spp 16         print one JSON line of timings\n"
+               "  candela view                   open the interactive viewer\n"
+
                "  candela bench --backend optix --width 1920 --height 1080 --spp 100 --warmup 20 --raw-trace"};
   app.require_subcommand(1);
 
@@ -187,6 +269,15 @@ int main(int argc, char** argv) {
   bench->add_flag("--raw-trace", benchJob.rawTrace,
                   "Also time tracing the same rays with no shading, the traversal ceiling (optix backend)");
 
+  ViewerOptions viewOptions;
+  std::string viewToneMapper = "aces";
+  CLI::App* view = app.add_subcommand("view", "Open a window that refines the image while you move the camera");
+  addViewOptions(*view, viewOptions, viewToneMapper);
+
+  std::string inspectSpec;
+  CLI::App* inspect = app.add_subcommand("load", "Load a scene and print its size and loading time as one JSON object");
+  inspect->add_option("scene", inspectSpec, "Scene file or built-in scene")->required();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -198,11 +289,20 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  for (auto [cmd, job] : {std::pair{render, &renderJob}, std::pair{bench, &benchJob}}) {
+    job->given.width = cmd->count("--width") > 0;
+    job->given.height = cmd->count("--height") > 0;
+    job->given.samplesPerPixel = cmd->count("--spp") > 0;
+    job->given.maxDepth = cmd->count("--max-depth") > 0;
+  }
+
   try {
+    if (*inspect) return runLoad(inspectSpec);
     if (*render) {
       display.toneMapper = toneMapper == "clamp" ? ToneMapper::Clamp : ToneMapper::AcesFilmic;
       return runRender(renderJob, output, display);
     }
+    if (*view) return runView(viewOptions, viewToneMapper);
     return runBench(benchJob);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "candela: %s\n", e.what());

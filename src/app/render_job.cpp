@@ -48,6 +48,16 @@ RenderOutcome runRenderJob(const RenderJob& job, bool showProgress) {
 #endif
   Scene scene = loadScene(job.sceneSpec, {job.environmentPath});
   applyOverrides(scene.materials, job.materialOverrides);
+  RenderJob hinted = job;
+  const RenderHints& hints = scene.renderHints;
+  if (hints.width && !job.given.width) hinted.settings.width = *hints.width;
+  if (hints.height && !job.given.height) hinted.settings.height = *hints.height;
+  if (hints.samplesPerPixel && !job.given.samplesPerPixel) hinted.samplesPerPixel = *hints.samplesPerPixel;
+  if (hints.maxDepth && !job.given.maxDepth) hinted.settings.maxDepth = *hints.maxDepth;
+  return renderLoadedScene(hinted, scene, showProgress);
+}
+
+RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool showProgress) {
   std::string why;
   std::unique_ptr<Backend> backend = createBackend(job.backend, why);
   std::fprintf(stderr, "%s\n", why.c_str());

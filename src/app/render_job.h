@@ -4,12 +4,17 @@
 
 #include "backends/backend.h"
 #include "scene/material_overrides.h"
+#include "scene/scene.h"
 
 namespace candela {
 
 struct RenderJob {
   std::string sceneSpec = "cornell-box";
   std::string environmentPath;  // replaces the scene's environment when set
+  // Which settings the command line gave; the others may come from the scene file's render hints.
+  struct {
+    bool width = false, height = false, samplesPerPixel = false, maxDepth = false;
+  } given;
   RenderSettings settings;
   uint32_t samplesPerPixel = 64;
   std::string backend = "auto";
@@ -36,5 +41,6 @@ struct RenderOutcome {
 // after `warmupFrames` untimed launches; then denoises when asked. Throws std::runtime_error on failure; a
 // denoiser that cannot run is reported on stderr and the image is kept as rendered.
 RenderOutcome runRenderJob(const RenderJob& job, bool showProgress);
+RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool showProgress);
 
 }  // namespace candela

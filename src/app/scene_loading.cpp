@@ -10,6 +10,7 @@
 #include "scene/loaders/image_decoding.h"
 #include "scene/loaders/load_diagnostics.h"
 #include "scene/loaders/obj_loader.h"
+#include "scene/loaders/scene_file.h"
 
 namespace candela {
 
@@ -21,15 +22,21 @@ std::string lowerExtension(const std::string& path) {
   return ext;
 }
 
-Scene loadSceneFile(const std::string& path, LoadWarnings& warnings) {
+Scene loadModel(const std::string& path, LoadWarnings& warnings) {
+  std::string ext = lowerExtension(path);
+  return ext == ".obj" ? loadObj(path, warnings) : loadGltf(path, warnings);
+}
+
+Scene loadFile(const std::string& path, LoadWarnings& warnings) {
   std::string ext = lowerExtension(path);
   if (ext == ".obj") return loadObj(path, warnings);
   if (ext == ".gltf" || ext == ".glb") return loadGltf(path, warnings);
+  if (ext == ".json") return loadSceneFile(path, &loadModel, warnings);
   std::string names;
   for (const std::string& n : builtinSceneNames()) names += (names.empty() ? "" : ", ") + n;
   if (!std::filesystem::exists(path))
     throw std::runtime_error("unknown scene '" + path + "': not a file, nor a built-in scene (" + names + ")");
-  throw std::runtime_error(path + ": unknown scene format '" + ext + "' (use .obj, .gltf or .glb, or a built-in scene: " + names +
+  throw std::runtime_error(path + ": unknown scene format '" + ext + "' (use .obj, .gltf, .glb or .json, or a built-in scene: " + names +
                            ")");
 }
 
@@ -60,7 +67,7 @@ void frameSceneBounds(Scene& scene) {
 Scene loadScene(const std::string& spec, const SceneLoadOptions& options) {
   Scene scene;
   LoadWarnings warnings;
-  if (!makeBuiltinScene(spec, scene)) scene = loadSceneFile(spec, warnings);
+  if (!makeBuiltinScene(spec, scene)) scene = loadFile(spec, warnings);
   if (!options.environmentPath.empty()) {
     Environment env;
     env.map = loadEnvironmentImage(options.environmentPath);

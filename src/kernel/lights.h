@@ -58,7 +58,7 @@ CANDELA_FN LightSample sampleLight(const SceneView& scene, Vec3 from, float uSel
   if (dist2 <= 0.0f) return ls;
   ls.distance = sqrtf(dist2);
   ls.wi = toLight / ls.distance;
-  Vec3 n = normalize(cross(light.edge1, light.edge2));
+  Vec3 n = normalize(cross(light.edge1, light.edge2)) * light.frontSign;
   float cosAtLight = -dot(n, ls.wi);
   ls.pdf = triangleLightPdf(scene, light.radiance, ls.distance, cosAtLight);
   ls.radiance = light.radiance;

@@ -32,6 +32,7 @@ struct LightTriangle {
   float area = 0.0f;
   uint32_t instanceId = 0;  // where it came from, for textured emission
   uint32_t primitiveId = 0;
+  float frontSign = 1.0f;  // -1 under a mirroring instance: the front is then opposite cross(edge1, edge2)
 };
 
 // Everything kernel code reads about a scene: plain pointers into host or device memory.

@@ -15,6 +15,12 @@ void buildLightTable(const Scene& scene, FlatScene& flat) {
   for (uint32_t instanceId = 0; instanceId < flat.instances.size(); ++instanceId) {
     const InstanceRecord& inst = flat.instances[instanceId];
     const Mesh& mesh = scene.meshes[inst.meshId];
+    // Kernel code takes a triangle's front from its object-space winding carried by the normal transform, which
+    // a mirroring transform does not flip, while it reverses the world-space winding of the corners kept here.
+    const float* a = inst.objectToWorld.m;
+    float det = a[0] * (a[5] * a[10] - a[6] * a[9]) - a[1] * (a[4] * a[10] - a[6] * a[8]) +
+                a[2] * (a[4] * a[9] - a[5] * a[8]);
+    const float frontSign = det < 0.0f ? -1.0f : 1.0f;
     for (size_t t = 0; t < mesh.triangleCount(); ++t) {
       const Material& m = scene.materials[mesh.triangleMaterials[t]];
       if (luminance(m.emission) <= 0.0f) continue;
@@ -22,7 +28,7 @@ void buildLightTable(const Scene& scene, FlatScene& flat) {
       Vec3 p1 = inst.objectToWorld.point(mesh.positions[mesh.indices[3 * t + 1]]);
       Vec3 p2 = inst.objectToWorld.point(mesh.positions[mesh.indices[3 * t + 2]]);
       LightTriangle light{p0, p1 - p0, p2 - p0, m.emission, 0.5f * length(cross(p1 - p0, p2 - p0)), instanceId,
-                          uint32_t(t)};
+                          uint32_t(t), frontSign};
       if (!(light.area > 0.0f)) continue;  // degenerate: can neither be sampled nor hit
       double power = double(light.area) * kPi * luminance(m.emission);
       flat.lights.push_back(light);

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "kernel/bsdf/blinn_phong.h"
@@ -21,6 +22,12 @@ constexpr std::array<OverrideParameter, 9> kParameters = {{
     {"clearcoat", &MaterialOverrides::clearcoat, &Material::clearcoat, 0.0f, 1.0f},
     {"clearcoatGloss", &MaterialOverrides::clearcoatGloss, &Material::clearcoatGloss, 0.0f, 1.0f},
 }};
+
+std::string compact(float x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", double(x));
+  return text;
+}
 
 std::string parameterList() {
   std::string list;
@@ -46,8 +53,7 @@ void setOverride(MaterialOverrides& overrides, const std::string& name, float va
   for (const OverrideParameter& p : kParameters) {
     if (name != p.name) continue;
     if (!(value >= p.min && value <= p.max))
-      throw std::invalid_argument("override '" + name + "' must lie in [" + std::to_string(p.min) + ", " +
-                                  std::to_string(p.max) + "]");
+      throw std::invalid_argument("override '" + name + "' must lie in [" + compact(p.min) + ", " + compact(p.max) + "]");
     overrides.*p.field = value;
     return;
   }

@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -68,19 +69,29 @@ struct Environment {
   bool hasMap() const { return map.width > 0 && map.height > 0; }
 };
 
+// Render settings a scene file asks for; the command line overrides them.
+struct RenderHints {
+  std::optional<uint32_t> width, height, samplesPerPixel, maxDepth;
+};
+
 // A scene as loaders produce it and backends consume it.
 struct Scene {
   std::string name;
   std::vector<Mesh> meshes;
   std::vector<Instance> instances;
   std::vector<Material> materials;
+  std::vector<std::string> materialNames;  // as the input file names them, one per material (may be empty)
   std::vector<Texture> textures;
   Environment environment;
   CameraDescription camera;
+  RenderHints renderHints;
   bool cameraMissing = false;  // the input had no camera: `camera` is to be framed around the scene's bounds
 
   size_t triangleCount() const;  // over instances
 };
+
+// Bytes held by the scene's arrays (meshes, materials, textures, environment map).
+size_t sceneMemoryBytes(const Scene& scene);
 
 // Checks the invariants backends rely on (index ranges, material ids, finite numbers); throws
 // std::runtime_error naming the first problem.

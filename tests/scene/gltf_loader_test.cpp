@@ -104,7 +104,7 @@ TEST(GltfLoader, LoadsATriangle) {
   validateScene(s);
 }
 
-TEST(GltfLoader, SharedMeshesBecomeInstancesAndMirroredOnesFlipWinding) {
+TEST(GltfLoader, SharedMeshesBecomeInstancesEvenWhenMirrored) {
   json g = triangleGltf();
   g["nodes"] = {{{"mesh", 0}, {"translation", {5, 0, 0}}},
                 {{"children", {2}}, {"scale", {2, 2, 2}}},
@@ -114,20 +114,13 @@ TEST(GltfLoader, SharedMeshesBecomeInstancesAndMirroredOnesFlipWinding) {
   g["scenes"] = {{{"nodes", {0, 1, 3, 4}}}};
   Scene s = load(g);
   ASSERT_EQ(s.instances.size(), 4u);
-  ASSERT_EQ(s.meshes.size(), 2u);  // the mesh and one mirrored copy shared by both mirrored nodes
-  EXPECT_EQ(s.instances[0].meshId, s.instances[1].meshId);
-  EXPECT_EQ(s.instances[2].meshId, s.instances[3].meshId);
-  EXPECT_NE(s.instances[0].meshId, s.instances[2].meshId);
+  ASSERT_EQ(s.meshes.size(), 1u);
   // The child's transform composes with its parent's: scale 2 then translate (0, 1, 0) -> (0, 2, 0).
   EXPECT_FLOAT_EQ(s.instances[1].objectToWorld.point({0, 0, 0}).y, 2.0f);
   EXPECT_FLOAT_EQ(s.instances[1].objectToWorld.point({1, 0, 0}).x, 2.0f);
-  // World-space winding: the mirrored copy keeps the triangle's front (+z, counter-clockwise seen from +z).
-  for (const Instance& inst : s.instances) {
-    const Mesh& m = s.meshes[inst.meshId];
-    Vec3 a = inst.objectToWorld.point(m.positions[m.indices[0]]), b = inst.objectToWorld.point(m.positions[m.indices[1]]),
-         c = inst.objectToWorld.point(m.positions[m.indices[2]]);
-    EXPECT_GT(cross(b - a, c - a).z, 0.0f);
-  }
+  // Both mirroring forms (TRS scale and matrix) flip x.
+  EXPECT_FLOAT_EQ(s.instances[2].objectToWorld.point({1, 0, 0}).x, -1.0f);
+  EXPECT_FLOAT_EQ(s.instances[3].objectToWorld.point({1, 0, 0}).x, -1.0f);
 }
 
 TEST(GltfLoader, CameraLightsAndMaterials) {

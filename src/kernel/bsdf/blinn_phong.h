@@ -15,24 +15,29 @@ struct BlinnPhongSpecular {
   Vec3 ks;
   float exponent = 32.0f;
 
-  CANDELA_FN float halfVectorPdf(float cosThetaH) const {
-    return cosThetaH > 0.0f ? (exponent + 1.0f) * (0.5f * kInvPi) * powf(cosThetaH, exponent) : 0.0f;
+  // Glossy exponents reach 10^5 and more, where cos(theta_h) rounds to 1 in float; working with sin^2(theta_h)
+  // keeps the lobe's shape: cos^n = exp(n/2 log(1 - sin^2)).
+  CANDELA_FN float halfVectorPdf(Vec3 h) const {
+    if (h.z <= 0.0f) return 0.0f;
+    float sin2 = fminf(1.0f, h.x * h.x + h.y * h.y);
+    return (exponent + 1.0f) * (0.5f * kInvPi) * expf(0.5f * exponent * log1pf(-sin2));
   }
   CANDELA_FN Vec3 eval(Vec3 wo, Vec3 wi) const {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return {0, 0, 0};
     Vec3 h = normalize(wo + wi);
-    return ks * (halfVectorPdf(h.z) / (4.0f * dot(wo, h) * fmaxf(wo.z, wi.z)));
+    return ks * (halfVectorPdf(h) / (4.0f * dot(wo, h) * fmaxf(wo.z, wi.z)));
   }
   CANDELA_FN float pdf(Vec3 wo, Vec3 wi) const {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
     Vec3 h = normalize(wo + wi);
-    return halfVectorPdf(h.z) / (4.0f * dot(wo, h));
+    return halfVectorPdf(h) / (4.0f * dot(wo, h));
   }
   CANDELA_FN BsdfSample sample(Vec3 wo, float /*uChoice*/, Vec2 u) const {
     BsdfSample s;
     if (wo.z <= 0.0f) return s;
-    float cosThetaH = powf(u.x, 1.0f / (exponent + 1.0f));
-    float sinThetaH = sqrtf(fmaxf(0.0f, 1.0f - cosThetaH * cosThetaH));
+    // cos(theta_h) = u^(1 / (n + 1)), through sin^2 for precision.
+    float sin2ThetaH = u.x > 0.0f ? -expm1f(2.0f * logf(u.x) / (exponent + 1.0f)) : 1.0f;
+    float sinThetaH = sqrtf(clampf(sin2ThetaH, 0.0f, 1.0f)), cosThetaH = sqrtf(clampf(1.0f - sin2ThetaH, 0.0f, 1.0f));
     float phi = 2.0f * kPi * u.y;
     Vec3 h{sinThetaH * cosf(phi), sinThetaH * sinf(phi), cosThetaH};
     if (dot(wo, h) <= 0.0f) return s;

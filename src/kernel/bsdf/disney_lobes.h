@@ -9,7 +9,7 @@ namespace candela {
 // Burley 2012's diffuse: Schlick-shaped retro-reflection that grows with roughness, blended towards the
 // Hanrahan-Krueger-like "subsurface" shape, plus the sheen term for cloth at grazing angles. Sampled by the
 // cosine. Like the original it is not energy conserving: for a white base at roughness 1 it reflects
-// 1 + 10/168 of the light arriving along the normal.
+// 1 + 1/28 of the light arriving along the normal.
 struct DisneyDiffuse {
   Vec3 baseColor;
   float roughness = 0.5f;

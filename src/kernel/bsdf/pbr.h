@@ -5,12 +5,16 @@
 
 namespace candela {
 
-// glTF 2.0's metallic-roughness BRDF (specification, appendix B):
-//   f = (1 - metallic) (1 - F_d(wo.h)) baseColor / pi + F(wo.h) D G2 / (4 cos_o cos_i),
+// glTF 2.0's metallic-roughness BRDF (specification, appendix B), with one change for energy conservation:
+//   f = (1 - metallic) (1 - F_d(cos_o)) (1 - F_d(cos_i)) baseColor / pi + F(wo.h) D G2 / (4 cos_o cos_i),
 // with F Schlick's Fresnel at f0 = lerp(metallic, 0.08 specular, baseColor) (0.04 at the default specular 0.5)
-// and F_d the dielectric part of it. Because Schlick's form is linear in f0, this equals glTF's
-// mix(dielectric_brdf, metal_brdf, metallic). The diffuse term is sampled by the cosine, the specular by GGX
-// visible normals; both combined as a mixture (see lobe_mixture.h).
+// and F_d its dielectric part. Because Schlick's form is linear in f0, the specular term equals glTF's
+// mix(dielectric_brdf, metal_brdf, metallic). glTF weights the diffuse term by 1 - F_d(wo.h) instead, which
+// leaves it nearly whole at grazing view while the specular lobe reflects almost everything: a smooth white
+// dielectric then reflects 1.8 times the light arriving at 89 degrees. Weighting by the Fresnel transmittance
+// into and out of the surface (as Shirley et al. 1997 and Ashikhmin-Shirley 2000 do) keeps the albedo below 1
+// and the BRDF reciprocal. The diffuse term is sampled by the cosine, the specular by GGX visible normals,
+// combined as a mixture (see lobe_mixture.h).
 struct PbrBsdf {
   Vec3 diffuseColor;  // (1 - metallic) baseColor
   float dielectricF0 = 0.04f;
@@ -25,8 +29,7 @@ struct PbrBsdf {
 
   CANDELA_FN Vec3 evalDiffuse(Vec3 wo, Vec3 wi) const {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return {0, 0, 0};
-    Vec3 h = normalize(wo + wi);
-    return diffuseColor * ((1.0f - fresnelSchlick(dielectricF0, dot(wo, h))) * kInvPi);
+    return diffuseColor * ((1.0f - fresnelSchlick(dielectricF0, wo.z)) * (1.0f - fresnelSchlick(dielectricF0, wi.z)) * kInvPi);
   }
   CANDELA_FN LobeChoice<2> choice(Vec3 wo) const {
     return LobeChoice<2>::fromEstimates({luminance(diffuseColor) * (1.0f - fresnelSchlick(dielectricF0, wo.z)),

@@ -134,6 +134,7 @@ class GltfSceneBuilder {
       GltfMaterial m = materialFromGltf(model_, int(i), file_, [this](int t, bool srgb) { return texture(t, srgb); },
                                         warnings_);
       scene_.materials.push_back(m.material);
+      scene_.materialNames.push_back(model_.materials[i].name);
       uvTransforms_.push_back(m.uvTransform);
     }
     std::vector<int> roots;
@@ -174,8 +175,7 @@ class GltfSceneBuilder {
     if (node.mesh >= 0) {
       if (size_t(node.mesh) >= model_.meshes.size())
         failLoad(file_, where + ".mesh: mesh " + std::to_string(node.mesh) + " does not exist");
-      bool mirrored = glm::determinant(glm::mat3(world)) < 0.0f;
-      if (std::optional<uint32_t> mesh = meshFor(node.mesh, mirrored)) scene_.instances.push_back({*mesh, toAffine(world)});
+      if (std::optional<uint32_t> mesh = meshFor(node.mesh)) scene_.instances.push_back({*mesh, toAffine(world)});
     }
     if (node.camera >= 0 && !cameraFound_) takeCamera(node.camera, world, where);
     if (node.extensions.count("KHR_lights_punctual")) ++punctualLights_;
@@ -205,27 +205,16 @@ class GltfSceneBuilder {
     cameraFound_ = true;
   }
 
-  std::optional<uint32_t> meshFor(int gltfMesh, bool mirrored) {
-    auto& cache = mirrored ? mirroredMeshes_ : meshes_;
-    auto it = cache.find(gltfMesh);
-    if (it != cache.end()) return it->second;
+  std::optional<uint32_t> meshFor(int gltfMesh) {
+    auto it = meshes_.find(gltfMesh);
+    if (it != meshes_.end()) return it->second;
     std::optional<uint32_t> id;
-    auto plain = meshes_.find(gltfMesh);
-    Mesh mesh;
-    if (plain != meshes_.end() && plain->second) {
-      mesh = scene_.meshes[*plain->second];
-    } else {
-      mesh = convertMesh(gltfMesh);
-    }
+    Mesh mesh = convertMesh(gltfMesh);
     if (mesh.triangleCount() > 0) {
-      if (mirrored) {
-        for (size_t t = 0; t < mesh.triangleCount(); ++t) std::swap(mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]);
-        mesh.name += " (mirrored)";
-      }
       id = uint32_t(scene_.meshes.size());
       scene_.meshes.push_back(std::move(mesh));
     }
-    cache[gltfMesh] = id;
+    meshes_[gltfMesh] = id;
     return id;
   }
 
@@ -239,6 +228,7 @@ class GltfSceneBuilder {
       m.doubleSided = 0;
       defaultMaterial_ = uint32_t(scene_.materials.size());
       scene_.materials.push_back(m);
+      scene_.materialNames.push_back("default");
     }
     return *defaultMaterial_;
   }
@@ -413,7 +403,7 @@ class GltfSceneBuilder {
   Scene scene_;
   TextureTable textures_;
   std::vector<std::optional<UvTransform>> uvTransforms_;
-  std::map<int, std::optional<uint32_t>> meshes_, mirroredMeshes_;
+  std::map<int, std::optional<uint32_t>> meshes_;
   std::optional<uint32_t> defaultMaterial_;
   bool cameraFound_ = false;
   size_t punctualLights_ = 0;

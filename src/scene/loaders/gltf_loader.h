@@ -9,9 +9,9 @@ namespace candela {
 
 // Loads a glTF 2.0 file (.gltf with external or data-URI buffers and images, or binary .glb) through tinygltf.
 // Each glTF mesh becomes one Mesh (its primitives' triangles with per-triangle materials) and every node that
-// uses it an Instance with the node's world transform, so shared meshes are not copied; a node whose transform
-// mirrors (negative determinant) uses a copy of the mesh with its winding reversed, so that front faces and
-// emission sides stay as glTF defines them. The first camera met in the node hierarchy becomes the scene's camera.
+// uses it an Instance with the node's world transform, so shared meshes are not copied. Under a mirroring
+// transform (negative determinant) glTF keeps the object-space front, which is what kernel code does: the
+// normal transform carries it. The first camera met in the node hierarchy becomes the scene's camera.
 // KHR_lights_punctual lights cannot be rendered by the area-light model and are ignored with a warning; so are
 // skins and morph targets (the static pose is loaded). Materials: see gltf_materials.h. Invalid input throws
 // LoadError naming the file and the JSON path of the problem.

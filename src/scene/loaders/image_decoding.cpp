@@ -46,6 +46,43 @@ size_t zeroInvalid(std::vector<float>& floats) {
   return replaced;
 }
 
+// stb_image reads a truncated Radiance file as if the missing scanlines were black. Walking the scanline
+// encoding (Greg Ward's run-length scheme, or flat RGBE) says whether the data is all there.
+bool radianceDataComplete(const uint8_t* data, size_t size, int width, int height) {
+  // The pixel data starts after the empty line that ends the header and the resolution line after it.
+  size_t p = 0;
+  for (int newlines = 0; p < size; ++p)
+    if (data[p] == '\n') {
+      bool emptyLine = p > 0 && data[p - 1] == '\n';
+      if (newlines == 1) break;
+      if (emptyLine) newlines = 1;
+    }
+  ++p;
+  for (int y = 0; y < height; ++y) {
+    bool rle = width >= 8 && width < 32768 && p + 4 <= size && data[p] == 2 && data[p + 1] == 2 &&
+               ((data[p + 2] << 8) | data[p + 3]) == width;
+    if (!rle) {
+      size_t rest = size_t(height - y) * size_t(width) * 4;
+      return p <= size && size - p >= rest;
+    }
+    p += 4;
+    for (int channel = 0; channel < 4; ++channel)
+      for (int x = 0; x < width;) {
+        if (p >= size) return false;
+        int count = data[p++];
+        if (count > 128) {
+          count -= 128;
+          ++p;
+        } else {
+          p += size_t(count);
+        }
+        if (count == 0 || p > size) return false;
+        x += count;
+      }
+  }
+  return true;
+}
+
 }  // namespace
 
 Texture decodeImage(const std::string& name, const uint8_t* data, size_t size, bool srgb) {
@@ -55,6 +92,9 @@ Texture decodeImage(const std::string& name, const uint8_t* data, size_t size, b
   if (!stbi_info_from_memory(data, len, &width, &height, &components))
     failLoad(name, std::string("not a readable image (") + stbi_failure_reason() + ")");
   bool hdr = stbi_is_hdr_from_memory(data, len) != 0;
+  if (double(width) * double(height) > kMaxPixelsPerByte * double(size))
+    failLoad(name, "image header claims " + std::to_string(width) + "x" + std::to_string(height) +
+                       " pixels, more than the file can hold");
   int channels = (components == 1 && !hdr) ? 1 : 4;
   checkSize(name, width, height, size_t(channels) * (hdr ? sizeof(float) : 1));
 
@@ -62,6 +102,7 @@ Texture decodeImage(const std::string& name, const uint8_t* data, size_t size, b
   t.name = name;
   t.channels = uint32_t(channels);
   if (hdr) {
+    if (!radianceDataComplete(data, size, width, height)) failLoad(name, "Radiance image is truncated");
     std::unique_ptr<float, StbFree> pixels(stbi_loadf_from_memory(data, len, &width, &height, &components, channels));
     if (!pixels) failLoad(name, std::string("cannot decode image (") + stbi_failure_reason() + ")");
     t.floats.assign(pixels.get(), pixels.get() + size_t(width) * height * channels);

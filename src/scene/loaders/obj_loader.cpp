@@ -267,6 +267,8 @@ Scene loadParsed(const std::string& name, const ObjSource& text, MtlLibraryReade
                              /*triangulate=*/true, /*default_vcols_fallback=*/false);
   if (buffer->readFailed()) failLoad(name, "read error");
   if (auto line = buffer->firstLineWithBadNumber()) failLoad(name, *line, "a coordinate is not a number");
+  if (auto line = buffer->firstSkippedLine())
+    warnings.add(name + ":" + std::to_string(*line), "'vw' (skin weight) statements are ignored");
   buffer.reset();
   if (!ok) {
     std::string first = err.substr(0, err.find('\n'));
@@ -299,13 +301,17 @@ Scene loadParsed(const std::string& name, const ObjSource& text, MtlLibraryReade
   for (size_t i = 0; i < obj.materials.size(); ++i) {
     const std::string& source = mtlReader && i < mtlReader->sources.size() ? mtlReader->sources[i] : name;
     materialOf[i] = uint32_t(scene.materials.size());
+    scene.materialNames.push_back(obj.materials[i].name);
     scene.materials.push_back(materialFromMtl(obj.materials[i], source, fs::path(source).parent_path().string(),
                                               textures, warnings));
   }
   uint32_t defaultMaterial = uint32_t(scene.materials.size());
   scene.meshes.push_back(buildMesh(scene.name, obj, materialOf, defaultMaterial));
   const auto& ids = scene.meshes[0].triangleMaterials;
-  if (std::find(ids.begin(), ids.end(), defaultMaterial) != ids.end()) scene.materials.push_back(Material{});
+  if (std::find(ids.begin(), ids.end(), defaultMaterial) != ids.end()) {
+    scene.materials.push_back(Material{});
+    scene.materialNames.push_back("default");
+  }
   scene.instances.push_back({0, Affine3x4{}});
   textures.finish(scene, 0, warnings);
   scene.cameraMissing = true;

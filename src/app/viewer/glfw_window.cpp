@@ -1,0 +1,136 @@
+#include "app/viewer/glfw_window.h"
+
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <stdexcept>
+
+namespace candela {
+
+namespace {
+
+std::string lastGlfwError;
+
+void rememberGlfwError(int, const char* description) { lastGlfwError = description ? description : ""; }
+
+std::string displayName() {
+  const char* display = std::getenv("DISPLAY");
+  return display ? display : "";
+}
+
+}  // namespace
+
+GlfwWindow::GlfwWindow(int width, int height, const std::string& title) {
+  glfwSetErrorCallback(rememberGlfwError);
+  if (displayName().empty())
+    throw std::runtime_error(
+        "cannot open a window: no display (DISPLAY is not set); run candela view on a desktop or under Xvfb, "
+        "or use candela render to write images without a window");
+  if (!glfwInit())
+    throw std::runtime_error("cannot open a window on display '" + displayName() + "': " + lastGlfwError);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+  if (!window_) {
+    std::string why = lastGlfwError;
+    glfwTerminate();
+    throw std::runtime_error("cannot create an OpenGL 3.3 core context on display '" + displayName() +
+                             "': " + why);
+  }
+  glfwMakeContextCurrent(window_);
+  glfwSwapInterval(0);  // the renderer, not the display's refresh, sets the pace
+}
+
+GlfwWindow::~GlfwWindow() {
+  glfwDestroyWindow(window_);
+  glfwTerminate();
+}
+
+std::string GlfwWindow::glRenderer() const {
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+  return std::string(renderer ? renderer : "unknown renderer") + ", OpenGL " + (version ? version : "?");
+}
+
+ImGuiLayer::ImGuiLayer(GLFWwindow* window) : window_(window) {
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // the layout is fixed; nothing to remember between runs
+  ImGui::StyleColorsDark();
+  ImGui_ImplGlfw_InitForOpenGL(window, /*install_callbacks=*/false);
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+  // A window that opens under the pointer gets no enter event, and without a window manager no focus either;
+  // ImGui would then not see the pointer until it left and came back.
+  if (glfwGetWindowAttrib(window, GLFW_HOVERED)) ImGui_ImplGlfw_CursorEnterCallback(window, GLFW_TRUE);
+}
+
+ImGuiLayer::~ImGuiLayer() {
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+}
+
+void ImGuiLayer::beginFrame() {
+  std::optional<ImVec2> pointerAtClick = deliverOneFramesEvents();
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  if (pointerAtClick) ImGui::GetIO().MousePos = *pointerAtClick;
+  ImGui::NewFrame();
+}
+
+std::optional<ImVec2> ImGuiLayer::deliverOneFramesEvents() {
+  std::optional<ImVec2> pointer;
+  std::vector<int> pressed;
+  bool typed = false;
+  size_t next = 0;
+  for (; next < queue_.size(); ++next) {
+    const InputEvent& e = queue_[next];
+    if (e.kind == EventKind::MouseButton) {
+      if (next > 0) break;
+      ImGui_ImplGlfw_MouseButtonCallback(window_, e.key, e.action, e.mods);
+      pointer = ImVec2(float(e.x), float(e.y));
+      ++next;
+      break;
+    }
+    if (e.kind == EventKind::Char) {
+      if (!pressed.empty()) break;
+      ImGui_ImplGlfw_CharCallback(window_, e.codepoint);
+      typed = true;
+      continue;
+    }
+    if (e.action == GLFW_PRESS) {
+      if (typed) break;
+      pressed.push_back(e.key);
+    } else if (e.action == GLFW_RELEASE && std::find(pressed.begin(), pressed.end(), e.key) != pressed.end()) {
+      break;
+    }
+    ImGui_ImplGlfw_KeyCallback(window_, e.key, e.scancode, e.action, e.mods);
+  }
+  queue_.erase(queue_.begin(), queue_.begin() + ptrdiff_t(next));
+  return pointer;
+}
+
+void ImGuiLayer::onKey(int key, int scancode, int action, int mods) {
+  queue_.push_back({EventKind::Key, 0, key, scancode, action, mods, 0.0, 0.0});
+}
+
+void ImGuiLayer::onChar(unsigned int codepoint) { queue_.push_back({EventKind::Char, codepoint, 0, 0, 0, 0, 0.0, 0.0}); }
+
+void ImGuiLayer::onMouseButton(int button, int action, int mods, double x, double y) {
+  queue_.push_back({EventKind::MouseButton, 0, button, 0, action, mods, x, y});
+}
+void ImGuiLayer::onScroll(double dx, double dy) { ImGui_ImplGlfw_ScrollCallback(window_, dx, dy); }
+void ImGuiLayer::onFocus(int focused) { ImGui_ImplGlfw_WindowFocusCallback(window_, focused); }
+void ImGuiLayer::onCursorEnter(int entered) { ImGui_ImplGlfw_CursorEnterCallback(window_, entered); }
+
+void ImGuiLayer::render() {
+  ImGui::Render();
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+}  // namespace candela

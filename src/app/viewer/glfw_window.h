@@ -1,0 +1,72 @@
+#pragma once
+#include <imgui.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/viewer/gl.h"
+
+namespace candela {
+
+// The process's one GLFW window, with an OpenGL 3.3 core context current on this thread. Throws
+// std::runtime_error with one sentence when there is no display or the display offers no such context.
+class GlfwWindow {
+ public:
+  GlfwWindow(int width, int height, const std::string& title);
+  ~GlfwWindow();
+  GlfwWindow(const GlfwWindow&) = delete;
+  GlfwWindow& operator=(const GlfwWindow&) = delete;
+
+  GLFWwindow* handle() const { return window_; }
+  std::string glRenderer() const;  // e.g. "llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5"
+
+ private:
+  GLFWwindow* window_ = nullptr;
+};
+
+// Dear ImGui's context and its GLFW and OpenGL 3 backends for one window. It installs no GLFW callbacks: the
+// window's owner passes every event on through the on...() functions.
+class ImGuiLayer {
+ public:
+  explicit ImGuiLayer(GLFWwindow* window);
+  ~ImGuiLayer();
+  ImGuiLayer(const ImGuiLayer&) = delete;
+  ImGuiLayer& operator=(const ImGuiLayer&) = delete;
+
+  // Hands ImGui the input events that fit in one frame (see InputEvent), then starts the frame.
+  void beginFrame();
+  void render();
+
+  void onKey(int key, int scancode, int action, int mods);
+  void onChar(unsigned int codepoint);
+  // (x, y): where the pointer was when the button changed, as the cursor events before it said.
+  void onMouseButton(int button, int action, int mods, double x, double y);
+  void onScroll(double dx, double dy);
+  void onFocus(int focused);
+  void onCursorEnter(int entered);
+
+ private:
+  // ImGui 1.86 reads keys as up/down states once per frame, handles a frame's typed characters before its keys
+  // and a click before either, and takes the pointer's position when the frame starts, not when a button went
+  // down. At a few frames per second a key pressed and released between two frames would never be seen down,
+  // Backspace after typing would erase what came before it, text typed right after a click on a field would be
+  // lost, and a click would land wherever the pointer had moved to since. So these events wait in a queue, and
+  // each frame takes them in order only while they keep their meaning: no release of a key pressed in the same
+  // frame, no typing after a key press, no key press after typing, and a mouse button event only at the start
+  // of a frame, ending it, with the pointer where it was at the time.
+  enum class EventKind { Key, Char, MouseButton };
+  struct InputEvent {
+    EventKind kind;
+    unsigned int codepoint;
+    int key, scancode, action, mods;  // `key` is the button for MouseButton
+    double x, y;                      // the pointer, for MouseButton
+  };
+  // Returns the pointer position of the mouse button event it delivered, if any.
+  std::optional<ImVec2> deliverOneFramesEvents();
+
+  GLFWwindow* window_;
+  std::vector<InputEvent> queue_;
+};
+
+}  // namespace candela

@@ -1,0 +1,81 @@
+#include "app/viewer/render_session.h"
+
+#include <utility>
+
+namespace candela {
+
+namespace {
+
+bool sameVector(Vec3 a, Vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+
+bool sameSettings(const RenderSettings& a, const RenderSettings& b) {
+  return a.width == b.width && a.height == b.height && a.maxDepth == b.maxDepth &&
+         a.rouletteDepth == b.rouletteDepth && a.seed == b.seed;
+}
+
+}  // namespace
+
+bool sameCamera(const Camera& a, const Camera& b) {
+  return sameVector(a.position, b.position) && sameVector(a.forward, b.forward) && sameVector(a.right, b.right) &&
+         sameVector(a.up, b.up) && a.lensRadius == b.lensRadius && a.focusDistance == b.focusDistance;
+}
+
+RenderSession::RenderSession(std::unique_ptr<Backend> backend) : backend_(std::move(backend)) {}
+
+void RenderSession::setScene(Scene scene) {
+  scene_ = std::move(scene);
+  summary_ = summarizeScene(scene_);
+  sceneMaterials_ = scene_.materials;
+  sceneIntensity_ = scene_.environment.intensity;
+  sceneRotation_ = scene_.environment.rotationDegrees;
+  applyAdjustments();
+}
+
+void RenderSession::setEnvironment(float intensityScale, float extraRotationDegrees) {
+  if (intensityScale == intensityScale_ && extraRotationDegrees == extraRotation_) return;
+  intensityScale_ = intensityScale;
+  extraRotation_ = extraRotationDegrees;
+  applyAdjustments();
+}
+
+void RenderSession::setMaterialOverrides(const MaterialOverrides& overrides) {
+  overrides_ = overrides;
+  applyAdjustments();
+}
+
+void RenderSession::applyAdjustments() {
+  scene_.environment.intensity = sceneIntensity_ * intensityScale_;
+  scene_.environment.rotationDegrees = sceneRotation_ + extraRotation_;
+  scene_.materials = sceneMaterials_;
+  applyOverrides(scene_.materials, overrides_);
+  sceneChanged_ = true;
+}
+
+FrameStats RenderSession::renderFrame(const Camera& camera, const RenderSettings& settings,
+                                      uint32_t samplesPerPixel, bool accumulate) {
+  RenderSettings wanted = settings;
+  if (!accumulate) wanted.seed = settings.seed + uint32_t(frames_);
+
+  bool restart = !haveFrame_ || !accumulate;
+  if (sceneChanged_) {
+    backend_->setScene(scene_);
+    sceneChanged_ = false;
+    restart = true;
+  }
+  if (!haveFrame_ || !sameSettings(wanted, applied_)) {
+    backend_->setSettings(wanted);
+    applied_ = wanted;
+    restart = true;
+  }
+  if (!haveFrame_ || !sameCamera(camera, camera_)) {
+    backend_->setCamera(camera);
+    camera_ = camera;
+    restart = true;
+  }
+  haveFrame_ = true;
+  if (restart) ++restarts_;
+  ++frames_;
+  return backend_->render(samplesPerPixel);
+}
+
+}  // namespace candela

@@ -1,0 +1,63 @@
+#pragma once
+#include <cstdint>
+#include <memory>
+
+#include "app/viewer/scene_summary.h"
+#include "backends/backend.h"
+#include "scene/material_overrides.h"
+
+namespace candela {
+
+bool sameCamera(const Camera& a, const Camera& b);
+
+// The viewer's hold on a backend. Every frame names the camera and settings it wants; when either differs from
+// the previous frame's, or the scene or environment changed, the backend restarts its accumulation first.
+class RenderSession {
+ public:
+  explicit RenderSession(std::unique_ptr<Backend> backend);
+
+  void setScene(Scene scene);
+  const Scene& scene() const { return scene_; }
+  const SceneSummary& summary() const { return summary_; }
+
+  // Multiplies the scene's own environment intensity and adds to its rotation; the backend gets the scene again
+  // only when one of them changes.
+  void setEnvironment(float intensityScale, float extraRotationDegrees);
+  // Renders the scene's own materials under `overrides` (the backend gets the scene again).
+  void setMaterialOverrides(const MaterialOverrides& overrides);
+
+  // Adds `samplesPerPixel` samples. With `accumulate` off every frame starts afresh with its own seed, so
+  // successive frames show independent noise.
+  FrameStats renderFrame(const Camera& camera, const RenderSettings& settings, uint32_t samplesPerPixel,
+                         bool accumulate);
+
+  uint32_t accumulatedSamples() const { return backend_->accumulatedSamples(); }
+  uint64_t restarts() const { return restarts_; }  // times accumulation started over
+  uint64_t frames() const { return frames_; }
+  const RenderSettings& appliedSettings() const { return applied_; }
+  Image image() const { return backend_->readImage(); }
+  const Backend& backend() const { return *backend_; }
+
+ private:
+  std::unique_ptr<Backend> backend_;
+  Scene scene_;
+  SceneSummary summary_;
+  void applyAdjustments();
+
+  // What the scene was loaded with, and the viewer's adjustments to it.
+  std::vector<Material> sceneMaterials_;
+  float sceneIntensity_ = 1.0f;
+  float sceneRotation_ = 0.0f;
+  float intensityScale_ = 1.0f;
+  float extraRotation_ = 0.0f;
+  MaterialOverrides overrides_;
+
+  bool sceneChanged_ = true;
+  bool haveFrame_ = false;
+  Camera camera_;
+  RenderSettings applied_;
+  uint64_t restarts_ = 0;
+  uint64_t frames_ = 0;
+};
+
+}  // namespace candela

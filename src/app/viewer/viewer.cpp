@@ -1,0 +1,322 @@
+#include "app/viewer/viewer.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <stdexcept>
+
+#include "app/backend_factory.h"
+#include "app/scene_loading.h"
+#include "app/viewer/camera_input.h"
+#include "app/viewer/glfw_window.h"
+#include "app/viewer/image_display.h"
+#include "app/viewer/interactive_policy.h"
+#include "app/viewer/orbit_camera.h"
+#include "app/viewer/render_session.h"
+#include "app/viewer/viewer_files.h"
+#include "app/viewer/viewer_panel.h"
+#include "app/viewer/window_capture.h"
+
+namespace candela {
+
+namespace {
+
+constexpr int kPanelWidth = 380;
+constexpr int kMinImageSide = 64;
+constexpr double kMaxFlyStep = 0.1;    // seconds: a slow frame does not throw the camera far
+constexpr double kTimingSmoothing = 0.1;
+
+class Viewer {
+ public:
+  explicit Viewer(const ViewerOptions& options);
+  int run();
+
+ private:
+  static Viewer& of(GLFWwindow* window) { return *static_cast<Viewer*>(glfwGetWindowUserPointer(window)); }
+  void installCallbacks();
+  bool cursorOverImage(double x) const;
+  FlyKeys heldFlyKeys() const;
+
+  void showScene(Scene scene, const std::string& spec);
+  void frame(double now, double seconds);
+  void updateStatus(double seconds);
+  void handle(const PanelRequests& requests);
+  void writeState();
+  void writeExitFiles();
+  void report(const std::string& message, bool isError);
+
+  ViewerOptions options_;
+  GlfwWindow window_;
+  ImGuiLayer imgui_;
+  ImageDisplay display_;
+  RenderSession session_;
+  std::unique_ptr<OrbitCamera> camera_;
+  std::string sceneSpec_;
+  CameraInput input_;
+  InteractivePolicy policy_;
+  ViewerControls controls_;
+  PanelStatus status_;
+  FramePlan lastPlan_;
+  Camera lastCamera_;
+  bool stateRequested_ = false;
+  double pointerX_ = 0.0, pointerY_ = 0.0;  // as of the last cursor event
+  Vec2 openSceneField_;
+  bool sceneJustShown_ = true;
+  int framebufferWidth_ = 0;
+  int framebufferHeight_ = 0;
+};
+
+Viewer::Viewer(const ViewerOptions& options)
+    : options_(options),
+      window_(int(options.width) + kPanelWidth, int(options.height), "candela"),
+      imgui_(window_.handle()),
+      session_([&] {
+        std::string why;
+        std::unique_ptr<Backend> backend = createBackend(options.backend, why);
+        std::fprintf(stderr, "%s\n", why.c_str());
+        return backend;
+      }()) {
+  controls_.maxDepth = options.maxDepth;
+  controls_.samplesPerFrame = options.samplesPerFrame;
+  controls_.post = options.post;
+  std::fprintf(stderr, "window: %s\n", window_.glRenderer().c_str());
+  showScene(loadScene(options.sceneSpec, {options.environmentPath}), options.sceneSpec);
+  status_.backend = session_.backend().name();
+  status_.device = session_.backend().deviceName();
+  glfwSetWindowSizeLimits(window_.handle(), kPanelWidth + kMinImageSide, kMinImageSide, GLFW_DONT_CARE,
+                          GLFW_DONT_CARE);
+  glfwGetCursorPos(window_.handle(), &pointerX_, &pointerY_);
+  installCallbacks();
+}
+
+void Viewer::installCallbacks() {
+  // Every event goes to ImGui first; the camera takes what ImGui does not want.
+  GLFWwindow* w = window_.handle();
+  glfwSetWindowUserPointer(w, this);
+  glfwSetMouseButtonCallback(w, [](GLFWwindow* window, int button, int action, int mods) {
+    Viewer& v = of(window);
+    v.imgui_.onMouseButton(button, action, mods, v.pointerX_, v.pointerY_);
+    if (button > GLFW_MOUSE_BUTTON_MIDDLE) return;
+    MouseButton b = button == GLFW_MOUSE_BUTTON_MIDDLE ? MouseButton::Middle
+                    : button == GLFW_MOUSE_BUTTON_RIGHT ? MouseButton::Right
+                                                        : MouseButton::Left;
+    if (action == GLFW_PRESS)
+      v.input_.buttonPressed(b, v.pointerX_, v.pointerY_, v.cursorOverImage(v.pointerX_));
+    else if (action == GLFW_RELEASE)
+      v.input_.buttonReleased(b);
+  });
+  // Events reach the viewer once per frame; where the pointer was at a click or a wheel step is where the
+  // cursor events before it had taken it, not where it is now.
+  glfwSetCursorPosCallback(w, [](GLFWwindow* window, double x, double y) {
+    Viewer& v = of(window);
+    v.pointerX_ = x;
+    v.pointerY_ = y;
+    v.input_.cursorMoved(x, y);
+  });
+  glfwSetScrollCallback(w, [](GLFWwindow* window, double dx, double dy) {
+    Viewer& v = of(window);
+    v.imgui_.onScroll(dx, dy);
+    v.input_.wheel(dy, v.cursorOverImage(v.pointerX_));
+  });
+  glfwSetKeyCallback(w, [](GLFWwindow* window, int key, int scancode, int action, int mods) {
+    Viewer& v = of(window);
+    v.imgui_.onKey(key, scancode, action, mods);
+    if (action != GLFW_PRESS) return;
+    if (key == GLFW_KEY_F12) v.stateRequested_ = true;  // text fields have no use for it
+    if (ImGui::GetIO().WantCaptureKeyboard) return;
+    if (key == GLFW_KEY_F) v.camera_->frameScene();
+    if (key == GLFW_KEY_R) v.camera_->reset();
+    if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(window, GLFW_TRUE);
+  });
+  glfwSetCharCallback(w, [](GLFWwindow* window, unsigned int c) { of(window).imgui_.onChar(c); });
+  glfwSetWindowFocusCallback(w, [](GLFWwindow* window, int focused) { of(window).imgui_.onFocus(focused); });
+  glfwSetCursorEnterCallback(w, [](GLFWwindow* window, int entered) { of(window).imgui_.onCursorEnter(entered); });
+}
+
+// Over the image, not over the panel or an ImGui popup.
+bool Viewer::cursorOverImage(double x) const {
+  int windowWidth = 0, windowHeight = 0;
+  glfwGetWindowSize(window_.handle(), &windowWidth, &windowHeight);
+  const double scale = framebufferWidth_ > 0 ? double(windowWidth) / framebufferWidth_ : 1.0;
+  return x < (framebufferWidth_ - kPanelWidth) * scale && !ImGui::GetIO().WantCaptureMouse;
+}
+
+FlyKeys Viewer::heldFlyKeys() const {
+  FlyKeys keys;
+  if (ImGui::GetIO().WantCaptureKeyboard) return keys;
+  auto held = [&](int key) { return glfwGetKey(window_.handle(), key) == GLFW_PRESS; };
+  keys.forward = held(GLFW_KEY_W);
+  keys.back = held(GLFW_KEY_S);
+  keys.left = held(GLFW_KEY_A);
+  keys.right = held(GLFW_KEY_D);
+  keys.down = held(GLFW_KEY_Q);
+  keys.up = held(GLFW_KEY_E);
+  return keys;
+}
+
+void Viewer::showScene(Scene scene, const std::string& spec) {
+  validateScene(scene);
+  SceneSummary summary = summarizeScene(scene);
+  camera_ = std::make_unique<OrbitCamera>(scene.camera, summary.bounds);
+  status_.sceneName = scene.name;
+  sceneSpec_ = spec;
+  sceneJustShown_ = true;
+  session_.setScene(std::move(scene));
+  glfwSetWindowTitle(window_.handle(), ("candela - " + status_.sceneName).c_str());
+}
+
+void Viewer::report(const std::string& message, bool isError) {
+  status_.message = message;
+  status_.messageIsError = isError;
+  std::fprintf(stderr, "%s\n", message.c_str());
+}
+
+void Viewer::handle(const PanelRequests& requests) {
+  if (requests.applyEnvironment) session_.setEnvironment(controls_.environmentScale, controls_.environmentRotation);
+  if (requests.applyMaterials) session_.setMaterialOverrides(controls_.materials);
+  try {
+    if (requests.saveScreenshot) {
+      Image image = session_.image();
+      saveScreenshot(controls_.screenshotBase + ".png", image, controls_.post);
+      saveScreenshot(controls_.screenshotBase + ".exr", image, controls_.post);
+      report("saved " + controls_.screenshotBase + ".png and .exr", false);
+    }
+    if (requests.saveSceneFile) {
+      std::string note = writeViewFile(controls_.sceneFilePath, sceneSpec_, session_.scene(), camera_->description(),
+                                       session_.appliedSettings(), controls_);
+      report("saved " + controls_.sceneFilePath + (note.empty() ? "" : " (" + note + ")"), false);
+    }
+  } catch (const std::exception& e) {
+    report(e.what(), true);
+  }
+  if (requests.openScene) {
+    try {
+      showScene(loadScene(controls_.openSpec), controls_.openSpec);
+      report("opened " + controls_.openSpec, false);
+    } catch (const std::exception& e) {
+      report("could not open '" + controls_.openSpec + "': " + e.what(), true);
+    }
+  }
+}
+
+void Viewer::frame(double now, double seconds) {
+  glfwGetFramebufferSize(window_.handle(), &framebufferWidth_, &framebufferHeight_);
+  const int imageWidth = std::max(framebufferWidth_ - kPanelWidth, 1);
+  const int imageHeight = std::max(framebufferHeight_, 1);
+
+  input_.apply(*camera_, heldFlyKeys(), float(std::min(seconds, kMaxFlyStep)), float(imageHeight));
+  const Camera camera = camera_->camera(float(imageWidth) / float(imageHeight));
+  // A scene's first camera is where the view starts, not a motion.
+  const bool moved = !sceneJustShown_ && !sameCamera(camera, lastCamera_);
+  lastCamera_ = camera;
+  sceneJustShown_ = false;
+  lastPlan_ = policy_.plan(uint32_t(imageWidth), uint32_t(imageHeight), controls_.samplesPerFrame, moved, now);
+
+  RenderSettings settings;
+  settings.width = lastPlan_.width;
+  settings.height = lastPlan_.height;
+  settings.maxDepth = controls_.maxDepth;
+  settings.seed = options_.seed;
+  auto start = std::chrono::steady_clock::now();
+  session_.renderFrame(camera, settings, lastPlan_.samplesPerPixel, controls_.accumulate);
+  policy_.recordFrame(lastPlan_, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  display_.upload(session_.image());
+
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, framebufferWidth_, framebufferHeight_);
+  glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  display_.draw(controls_.post, 0, 0, imageWidth, imageHeight);
+
+  updateStatus(seconds);
+  imgui_.beginFrame();
+  // The panel's edits take effect from the next frame on; its actions act on this frame's image.
+  // ImGui lays out in window coordinates, which differ from framebuffer pixels on high-density displays.
+  const float scale = ImGui::GetIO().DisplayFramebufferScale.x > 0.0f ? ImGui::GetIO().DisplayFramebufferScale.x : 1.0f;
+  PanelRequests requests = drawPanel(status_, controls_, float(imageWidth) / scale, float(kPanelWidth) / scale,
+                                     float(framebufferHeight_) / scale);
+  openSceneField_ = requests.openSceneField;
+  handle(requests);
+  imgui_.render();
+}
+
+void Viewer::updateStatus(double seconds) {
+  status_.accumulatedSamples = session_.accumulatedSamples();
+  status_.imageWidth = lastPlan_.width;
+  status_.imageHeight = lastPlan_.height;
+  status_.preview = lastPlan_.preview;
+  status_.scene = session_.summary();
+  status_.cameraPosition = camera_->position();
+  status_.cameraDirection = camera_->forward();
+  if (seconds > 0.0) {
+    const double ms = seconds * 1000.0;
+    status_.msPerFrame =
+        status_.msPerFrame == 0.0 ? ms : (1.0 - kTimingSmoothing) * status_.msPerFrame + kTimingSmoothing * ms;
+    status_.framesPerSecond = 1000.0 / status_.msPerFrame;
+  }
+}
+
+void Viewer::writeState() {
+  ViewerState state;
+  state.frame = session_.frames();
+  state.restarts = session_.restarts();
+  state.accumulatedSamples = session_.accumulatedSamples();
+  state.imageWidth = lastPlan_.width;
+  state.imageHeight = lastPlan_.height;
+  state.preview = lastPlan_.preview;
+  state.scene = status_.sceneName;
+  state.backend = status_.backend;
+  state.cameraPosition = camera_->position();
+  state.cameraForward = camera_->forward();
+  state.cameraTarget = camera_->target();
+  state.cameraDistance = camera_->distance();
+  state.message = status_.message;
+  state.messageIsError = status_.messageIsError;
+  state.openSceneField = openSceneField_;
+  try {
+    writeStateFile(options_.stateFile, state);
+  } catch (const std::exception& e) {
+    report(e.what(), true);
+  }
+}
+
+void Viewer::writeExitFiles() {
+  if (!options_.windowCapture.empty()) captureWindow(options_.windowCapture, framebufferWidth_, framebufferHeight_);
+  if (!options_.screenshot.empty()) saveScreenshot(options_.screenshot, session_.image(), controls_.post);
+}
+
+int Viewer::run() {
+  double last = glfwGetTime();
+  while (!glfwWindowShouldClose(window_.handle())) {
+    glfwPollEvents();
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(window_.handle(), &w, &h);
+    if (w == 0 || h == 0) {  // minimised
+      glfwWaitEvents();
+      continue;
+    }
+    const double now = glfwGetTime();
+    frame(now, now - last);
+    last = now;
+    if (stateRequested_) {
+      writeState();
+      stateRequested_ = false;
+    }
+    if (options_.frames > 0 && session_.frames() >= options_.frames) break;
+    glfwSwapBuffers(window_.handle());
+  }
+  writeExitFiles();
+  return 0;
+}
+
+}  // namespace
+
+int runViewer(const ViewerOptions& options) {
+  Viewer viewer(options);
+  return viewer.run();
+}
+
+}  // namespace candela

@@ -1,0 +1,30 @@
+#pragma once
+#include <cstdint>
+#include <string>
+
+#include "app/viewer/post_settings.h"
+
+namespace candela {
+
+struct ViewerOptions {
+  std::string sceneSpec = "cornell-box";
+  std::string environmentPath;  // an .hdr or .exr map that lights the first scene instead of its own
+  std::string backend = "auto";
+  uint32_t width = 960;  // of the image; the panel sits beside it
+  uint32_t height = 720;
+  uint32_t maxDepth = 8;
+  uint32_t seed = 0;
+  uint32_t samplesPerFrame = 1;
+  PostSettings post;
+  uint32_t frames = 0;         // render this many frames, then exit; 0: until the window closes
+  std::string screenshot;      // on exit: the accumulated image (.png, .exr or .pfm)
+  std::string windowCapture;   // on exit: the window's pixels, panel included (.png)
+  std::string stateFile = "candela-view-state.json";  // F12 writes the viewer's state here
+};
+
+// Opens the window and runs until it closes or `frames` frames are done; returns the process exit code.
+// Throws std::runtime_error with one sentence when there is no display, no OpenGL 3.3, or the scene or backend
+// cannot be loaded at start.
+int runViewer(const ViewerOptions& options);
+
+}  // namespace candela

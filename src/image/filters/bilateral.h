@@ -1,0 +1,20 @@
+#pragma once
+#include "image/image.h"
+
+namespace candela {
+
+// An edge-preserving blur: each pixel becomes the weighted mean of its (2 radius + 1)^2 neighbours inside the
+// image, with weight exp(-|q - p|^2 / (2 spatialSigma^2) - |I(q) - I(p)|^2 / (2 rangeSigma^2)), where the
+// range distance is Euclidean in linear RGB. The viewer's GLSL pass computes the same sum.
+struct BilateralParams {
+  int radius = 3;             // pixels; 0 leaves the image unchanged
+  float spatialSigma = 2.0f;  // pixels
+  float rangeSigma = 0.2f;    // linear radiance
+};
+
+// Throws std::invalid_argument when radius is outside [0, kMaxBilateralRadius] or a sigma is not positive.
+Image bilateralFilter(const Image& input, const BilateralParams& params);
+
+constexpr int kMaxBilateralRadius = 32;
+
+}  // namespace candela

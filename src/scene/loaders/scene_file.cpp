@@ -1,0 +1,275 @@
+#include "scene/loaders/scene_file.h"
+
+#include <nlohmann/json.hpp>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "scene/loaders/file_bytes.h"
+#include "scene/loaders/image_decoding.h"
+#include "scene/transform.h"
+
+namespace candela {
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+// A JSON value with the path that leads to it, so that every complaint can say where it is.
+class Node {
+ public:
+  Node(const json& value, std::string path, const std::string& file) : value_(value), path_(std::move(path)), file_(file) {}
+
+  [[noreturn]] void fail(const std::string& what) const { failLoad(file_, path_.empty() ? what : path_ + ": " + what); }
+
+  bool has(const char* key) const { return value_.is_object() && value_.contains(key); }
+  Node operator[](const char* key) const {
+    if (!has(key)) fail(std::string("'") + key + "' is missing");
+    return {value_.at(key), path_.empty() ? key : path_ + "." + key, file_};
+  }
+  Node at(size_t i) const { return {value_.at(i), path_ + "[" + std::to_string(i) + "]", file_}; }
+  bool isObject() const { return value_.is_object(); }
+  size_t size() const {
+    if (!value_.is_array()) fail("expected an array");
+    return value_.size();
+  }
+  void expectObject(std::initializer_list<const char*> known, LoadWarnings& warnings) const {
+    if (!value_.is_object()) fail("expected an object");
+    for (const auto& item : value_.items()) {
+      const std::string& key = item.key();
+      if (std::find_if(known.begin(), known.end(), [&](const char* k) { return key == k; }) == known.end())
+        warnings.add(file_, path_ + (path_.empty() ? "" : ".") + key + ": unknown key, ignored");
+    }
+  }
+
+  float number() const {
+    if (!value_.is_number()) fail("expected a number");
+    double d = value_.get<double>();
+    if (!std::isfinite(d) || std::fabs(d) > 3.0e38) fail("number out of range");
+    return float(d);
+  }
+  float number(float min, float max) const {
+    float x = number();
+    if (x < min || x > max) fail("expected a number from " + std::to_string(min) + " to " + std::to_string(max));
+    return x;
+  }
+  uint32_t count(uint32_t min, uint32_t max) const {
+    if (!value_.is_number_integer() || value_.get<int64_t>() < min || value_.get<int64_t>() > max)
+      fail("expected a whole number from " + std::to_string(min) + " to " + std::to_string(max));
+    return uint32_t(value_.get<int64_t>());
+  }
+  bool boolean() const {
+    if (!value_.is_boolean()) fail("expected true or false");
+    return value_.get<bool>();
+  }
+  std::string string() const {
+    if (!value_.is_string()) fail("expected a string");
+    return value_.get<std::string>();
+  }
+  Vec3 vec3() const {
+    if (!value_.is_array() || value_.size() != 3) fail("expected 3 numbers");
+    return {at(0).number(), at(1).number(), at(2).number()};
+  }
+  bool isNumber() const { return value_.is_number(); }
+
+ private:
+  const json& value_;
+  std::string path_;
+  const std::string& file_;
+};
+
+glm::mat4 transformOf(const Node& t, LoadWarnings& warnings) {
+  t.expectObject({"matrix", "translate", "rotate_degrees", "scale"}, warnings);
+  if (t.has("matrix")) {
+    Node m = t["matrix"];
+    if (m.size() != 16) m.fail("expected 16 numbers (a row-major 4x4 matrix)");
+    glm::mat4 out;
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) out[c][r] = m.at(size_t(4 * r + c)).number();
+    return out;
+  }
+  glm::mat4 out(1.0f);
+  if (t.has("translate")) {
+    Vec3 v = t["translate"].vec3();
+    out = glm::translate(out, {v.x, v.y, v.z});
+  }
+  if (t.has("rotate_degrees")) {  // about X, then Y, then Z
+    Vec3 r = t["rotate_degrees"].vec3() * (kPi / 180.0f);
+    out = glm::rotate(out, r.z, {0, 0, 1});
+    out = glm::rotate(out, r.y, {0, 1, 0});
+    out = glm::rotate(out, r.x, {1, 0, 0});
+  }
+  if (t.has("scale")) {
+    Node s = t["scale"];
+    Vec3 v = s.isNumber() ? Vec3{1, 1, 1} * s.number() : s.vec3();
+    if (v.x == 0 || v.y == 0 || v.z == 0) s.fail("a scale of 0 collapses the model");
+    out = glm::scale(out, {v.x, v.y, v.z});
+  }
+  return out;
+}
+
+MaterialType materialType(const Node& n) {
+  std::string t = n.string();
+  if (t == "diffuse") return MaterialType::Diffuse;
+  if (t == "blinn-phong") return MaterialType::BlinnPhong;
+  if (t == "pbr") return MaterialType::Pbr;
+  if (t == "disney") return MaterialType::Disney;
+  if (t == "mirror") return MaterialType::Mirror;
+  if (t == "glass") return MaterialType::Glass;
+  n.fail("unknown material type '" + t + "' (diffuse, blinn-phong, pbr, disney, mirror, glass)");
+}
+
+void overrideMaterial(Material& m, const Node& o, LoadWarnings& warnings) {
+  o.expectObject({"type", "base_color", "emission", "roughness", "metallic", "ior", "specular_transmission",
+                  "opacity", "double_sided"},
+                 warnings);
+  if (o.has("type")) m.type = materialType(o["type"]);
+  if (o.has("base_color")) m.baseColor = o["base_color"].vec3();
+  if (o.has("emission")) m.emission = o["emission"].vec3();
+  if (o.has("roughness")) m.roughness = o["roughness"].number(0, 1);
+  if (o.has("metallic")) m.metallic = o["metallic"].number(0, 1);
+  if (o.has("ior")) m.ior = o["ior"].number(1, 10);
+  if (o.has("specular_transmission")) m.specTrans = o["specular_transmission"].number(0, 1);
+  if (o.has("opacity")) m.opacity = o["opacity"].number(0, 1);
+  if (o.has("double_sided")) m.doubleSided = o["double_sided"].boolean() ? 1u : 0u;
+  if (m.baseColor.x < 0 || m.baseColor.y < 0 || m.baseColor.z < 0 || m.emission.x < 0 || m.emission.y < 0 ||
+      m.emission.z < 0)
+    o.fail("colours must not be negative");
+}
+
+std::string resolve(const fs::path& base, const std::string& relative) {
+  fs::path p(relative);
+  return (p.is_absolute() ? p : base / p).lexically_normal().string();
+}
+
+size_t lineOfOffset(const std::string& text, size_t offset) {
+  return size_t(std::count(text.begin(), text.begin() + std::ptrdiff_t(std::min(offset, text.size())), '\n')) + 1;
+}
+
+}  // namespace
+
+void appendScene(Scene& scene, Scene&& part, const Affine3x4& transform) {
+  uint32_t meshBase = uint32_t(scene.meshes.size()), materialBase = uint32_t(scene.materials.size());
+  int32_t textureBase = int32_t(scene.textures.size());
+  for (Mesh& m : part.meshes) {
+    for (uint32_t& id : m.triangleMaterials) id += materialBase;
+    scene.meshes.push_back(std::move(m));
+  }
+  part.materialNames.resize(part.materials.size());
+  for (size_t i = 0; i < part.materials.size(); ++i) {
+    Material m = part.materials[i];
+    for (int32_t* t : {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.roughnessTexture, &m.metallicTexture,
+                       &m.emissionTexture, &m.normalTexture, &m.opacityTexture})
+      if (*t != kNoTexture) *t += textureBase;
+    scene.materials.push_back(m);
+    scene.materialNames.push_back(part.materialNames[i]);
+  }
+  for (Texture& t : part.textures) scene.textures.push_back(std::move(t));
+  glm::mat4 outer = toMat4(transform);
+  for (const Instance& inst : part.instances)
+    scene.instances.push_back({inst.meshId + meshBase, toAffine(outer * toMat4(inst.objectToWorld))});
+}
+
+Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadWarnings& warnings) {
+  std::vector<uint8_t> bytes = readFileBytes(path);
+  std::string text(bytes.begin(), bytes.end());
+  json doc;
+  try {
+    doc = json::parse(text);
+  } catch (const json::parse_error& e) {
+    std::string what = e.what();
+    size_t colon = what.find("]: ");
+    what = colon == std::string::npos ? what : what.substr(colon + 3);
+    failLoad(path, lineOfOffset(text, e.byte > 0 ? e.byte - 1 : 0), "invalid JSON: " + what);
+  }
+  const fs::path base = fs::path(path).parent_path();
+  Node root(doc, "", path);
+  root.expectObject({"models", "camera", "environment", "render"}, warnings);
+
+  Scene scene;
+  scene.name = fs::path(path).stem().string();
+  std::optional<CameraDescription> modelCamera;
+  Node models = root["models"];
+  if (models.size() == 0) models.fail("a scene needs at least one model");
+  for (size_t i = 0; i < models.size(); ++i) {
+    Node model = models.at(i);
+    model.expectObject({"file", "transform", "materials"}, warnings);
+    std::string file = resolve(base, model["file"].string());
+    std::string ext = fs::path(file).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (ext != ".obj" && ext != ".gltf" && ext != ".glb") model["file"].fail("models must be .obj, .gltf or .glb files");
+    Scene part = loadModel(file, warnings);
+    glm::mat4 transform = model.has("transform") ? transformOf(model["transform"], warnings) : glm::mat4(1.0f);
+    if (model.has("materials")) {
+      if (!model["materials"].isObject()) model["materials"].fail("expected an object of material names");
+      const json& overrides = doc["models"][i]["materials"];
+      for (const auto& [name, value] : overrides.items()) {
+        Node o(value, "models[" + std::to_string(i) + "].materials." + name, path);
+        bool found = false;
+        for (size_t m = 0; m < part.materials.size(); ++m)
+          if (m < part.materialNames.size() && part.materialNames[m] == name) {
+            overrideMaterial(part.materials[m], o, warnings);
+            found = true;
+          }
+        if (!found) warnings.add(path, "models[" + std::to_string(i) + "].materials." + name + ": no material of that name in " + file);
+      }
+    }
+    if (!part.cameraMissing && !modelCamera) {
+      CameraDescription c = part.camera;
+      c.eye = toAffine(transform).point(c.eye);
+      c.target = toAffine(transform).point(c.target);
+      c.up = normalize(toAffine(transform).vector(c.up));
+      modelCamera = c;
+    }
+    appendScene(scene, std::move(part), toAffine(transform));
+  }
+
+  scene.cameraMissing = true;
+  if (modelCamera) {
+    scene.camera = *modelCamera;
+    scene.cameraMissing = false;
+  }
+  if (root.has("camera")) {
+    Node c = root["camera"];
+    c.expectObject({"position", "target", "up", "fov_degrees", "aperture_radius", "focus_distance"}, warnings);
+    CameraDescription& cam = scene.camera;
+    cam = CameraDescription{};
+    cam.eye = c["position"].vec3();
+    cam.target = c["target"].vec3();
+    if (c.has("up")) cam.up = c["up"].vec3();
+    if (c.has("fov_degrees")) cam.verticalFovDegrees = c["fov_degrees"].number(0.01f, 179.0f);
+    if (c.has("aperture_radius")) cam.apertureRadius = c["aperture_radius"].number(0.0f, 1e30f);
+    if (c.has("focus_distance")) cam.focusDistance = c["focus_distance"].number(0.0f, 1e30f);
+    Vec3 forward = cam.target - cam.eye;
+    if (length(forward) == 0.0f) c.fail("position and target coincide");
+    if (length(cross(forward, cam.up)) == 0.0f) c["up"].fail("up is parallel to the viewing direction");
+    scene.cameraMissing = false;
+  }
+  if (root.has("environment")) {
+    Node e = root["environment"];
+    e.expectObject({"map", "radiance", "intensity", "rotation_degrees", "visible"}, warnings);
+    Environment env;
+    if (e.has("map")) env.map = loadEnvironmentImage(resolve(base, e["map"].string()));
+    if (e.has("radiance")) env.radiance = e["radiance"].vec3();
+    if (env.radiance.x < 0 || env.radiance.y < 0 || env.radiance.z < 0) e["radiance"].fail("must not be negative");
+    if (e.has("intensity")) env.intensity = e["intensity"].number(0.0f, 1e30f);
+    if (e.has("rotation_degrees")) env.rotationDegrees = e["rotation_degrees"].number();
+    if (e.has("visible")) env.visibleToCamera = e["visible"].boolean();
+    scene.environment = std::move(env);
+  }
+  if (root.has("render")) {
+    Node r = root["render"];
+    r.expectObject({"width", "height", "spp", "max_depth"}, warnings);
+    if (r.has("width")) scene.renderHints.width = r["width"].count(1, 16384);
+    if (r.has("height")) scene.renderHints.height = r["height"].count(1, 16384);
+    if (r.has("spp")) scene.renderHints.samplesPerPixel = r["spp"].count(1, 1u << 24);
+    if (r.has("max_depth")) scene.renderHints.maxDepth = r["max_depth"].count(1, 1024);
+  }
+  return scene;
+}
+
+}  // namespace candela

@@ -1,0 +1,15 @@
+// libFuzzer entry point for the glTF loader (.gltf text or .glb bytes, no external files).
+#include <cstddef>
+#include <cstdint>
+
+#include "scene/loaders/gltf_loader.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  candela::LoadWarnings warnings;
+  try {
+    candela::Scene scene = candela::loadGltfBytes("fuzz.gltf", data, size, warnings);
+    candela::validateScene(scene);
+  } catch (const candela::LoadError&) {
+  }
+  return 0;
+}

@@ -1,0 +1,158 @@
+// Whole renders with known answers: furnaces for the models that conserve energy exactly, the directional
+// albedo for the others, the mirror corridor at 100 bounces, and cut-outs.
+#include <gtest/gtest.h>
+
+#include "bsdf/bsdf_cases.h"
+#include "render/render_support.h"
+#include "scene/builtin_scenes.h"
+
+namespace candela::test {
+namespace {
+
+// Roulette off: every path of a lossless delta material carries exactly weight 1 to the environment, so the
+// image is 1 up to paths still inside the glass at the depth limit (probability below R^64).
+TEST(MaterialRender, LosslessDeltaMaterialsVanishInTheFurnace) {
+  Material mirror;
+  mirror.type = MaterialType::Mirror;
+  mirror.specularColor = {1, 1, 1};
+  Material glass;
+  glass.type = MaterialType::Glass;
+  glass.baseColor = {1, 1, 1};
+  glass.ior = 1.5f;
+  for (const Material& m : {mirror, glass}) {
+    RenderSettings settings;
+    settings.width = settings.height = 16;
+    settings.maxDepth = 64;
+    settings.rouletteDepth = 1000;
+    PixelStatistics s = luminanceStatistics(renderCpu(furnaceSphere(m), settings, 16));
+    EXPECT_NEAR(s.min, 1.0, 1e-4) << int(m.type);
+    EXPECT_NEAR(s.max, 1.0, 1e-4) << int(m.type);
+  }
+}
+
+// Direct lighting only (depth 1) on a convex object under a uniform sky of radiance 1: each pixel estimates
+// the directional albedo at its view angle, here within 2 degrees of normal incidence. The reference is the
+// quadrature of eval() at normal incidence, which shares no code with light or BSDF sampling. Tolerance:
+// 4 standard errors of the image mean plus 3e-3 for the spread of view angles and the quadrature.
+TEST(MaterialRender, DirectLightingInTheFurnaceEqualsTheAlbedo) {
+  struct Model {
+    const char* name;
+    Material material;
+  };
+  std::vector<Model> models;
+  Material phong;
+  phong.type = MaterialType::BlinnPhong;
+  phong.baseColor = {0.7f, 0.5f, 0.3f};
+  phong.specularColor = {0.3f, 0.3f, 0.3f};
+  phong.shininess = 20.0f;
+  models.push_back({"BlinnPhong", phong});
+  for (float metallic : {0.0f, 1.0f}) {
+    Material pbr;
+    pbr.type = MaterialType::Pbr;
+    pbr.baseColor = {0.9f, 0.6f, 0.3f};
+    pbr.metallic = metallic;
+    pbr.roughness = 0.5f;
+    models.push_back({"Pbr", pbr});
+  }
+  Material disney = disneyMaterial(0.5f);
+  disney.sheen = 0.5f;
+  disney.clearcoat = 0.7f;
+  disney.subsurface = 0.3f;
+  models.push_back({"Disney", disney});
+  for (const Model& model : models) {
+    RenderSettings settings;
+    settings.width = settings.height = 24;
+    settings.maxDepth = 1;
+    PixelStatistics s = luminanceStatistics(renderCpu(furnaceSphere(model.material), settings, 64));
+    SurfaceInteraction si;
+    si.shadingNormal = si.geometricNormal = {0, 0, 1};
+    Bsdf bsdf(model.material, si, {0, 0, 1});
+    double reference = bsdf.visit([](const auto& m) { return albedoByQuadrature(makeCase("", m), {0, 0, 1}); });
+    EXPECT_NEAR(s.mean, reference, 4 * s.standardError + 3e-3) << model.name << " metallic " << model.material.metallic;
+  }
+}
+
+// Two facing mirrors of reflectance R that also emit e, the camera between them looking straight at one: the
+// camera ray and its 100 reflections each collect e, so the pixel is e (1 - R^101) / (1 - R). Any leak through
+// a mirror or self-intersection along the way would lose the rest of the series. Roulette is off so every
+// sample is the same number.
+TEST(MaterialRender, MirrorCorridorSumsAHundredReflections) {
+  constexpr float kR = 0.99f, kE = 0.01f, kHalf = 100.0f;
+  Scene scene;
+  scene.name = "emissive-mirrors";
+  Material mirror;
+  mirror.type = MaterialType::Mirror;
+  mirror.specularColor = {kR, kR, kR};
+  mirror.emission = {kE, kE, kE};
+  scene.materials = {mirror};
+  Mesh mesh;
+  appendQuad(mesh, {-kHalf, -kHalf, 0.5f}, {kHalf, -kHalf, 0.5f}, {kHalf, kHalf, 0.5f}, {-kHalf, kHalf, 0.5f}, {0, 0, 0}, 0);
+  appendQuad(mesh, {-kHalf, -kHalf, -0.5f}, {kHalf, -kHalf, -0.5f}, {kHalf, kHalf, -0.5f}, {-kHalf, kHalf, -0.5f}, {0, 0, 0}, 0);
+  scene.meshes.push_back(mesh);
+  scene.instances.push_back({0, Affine3x4{}});
+  scene.camera.eye = {0.1f, 0.2f, 0.0f};
+  scene.camera.target = {0.1f, 0.2f, 1.0f};
+  scene.camera.verticalFovDegrees = 0.5f;
+  RenderSettings settings;
+  settings.width = settings.height = 8;
+  settings.maxDepth = 100;
+  settings.rouletteDepth = 1000;
+  PixelStatistics s = luminanceStatistics(renderCpu(scene, settings, 4));
+  double expected = kE * (1.0 - std::pow(double(kR), 101.0)) / (1.0 - kR);
+  EXPECT_NEAR(s.min, expected, 1e-3 * expected);
+  EXPECT_NEAR(s.max, expected, 1e-3 * expected);
+}
+
+TEST(MaterialRender, BuiltinMirrorCorridorRendersCleanlyAtDepth100) {
+  Scene scene;
+  ASSERT_TRUE(makeBuiltinScene("mirror-corridor", scene));
+  RenderSettings settings;
+  settings.width = 48;
+  settings.height = 32;
+  settings.maxDepth = 100;
+  CpuBackend backend;
+  backend.setScene(scene);
+  backend.setSettings(settings);
+  backend.setCamera(scene.camera.toCamera(1.5f));
+  FrameStats stats = backend.render(4);
+  EXPECT_EQ(stats.invalidSamples, 0u);
+}
+
+// An emissive wall of radiance 1 seen through a black quad with opacity 0.3: alpha blending shows 70% of the
+// wall (stochastic transparency: binomial noise, 4 standard errors); an alpha mask with cutoff 0.5 removes
+// the quad entirely, and at opacity 0.6 keeps it entirely.
+TEST(MaterialRender, CutoutsLetTheRightShareThrough) {
+  auto scene = [](AlphaMode mode, float opacity) {
+    Scene s;
+    s.name = "cutout";
+    Material wall;
+    wall.baseColor = {0, 0, 0};
+    wall.emission = {1, 1, 1};
+    Material cover;
+    cover.baseColor = {0, 0, 0};
+    cover.alphaMode = mode;
+    cover.opacity = opacity;
+    s.materials = {wall, cover};
+    Mesh mesh;
+    appendQuad(mesh, {-5, -5, 2}, {5, -5, 2}, {5, 5, 2}, {-5, 5, 2}, {0, 0, 0}, 0);
+    appendQuad(mesh, {-5, -5, 1}, {5, -5, 1}, {5, 5, 1}, {-5, 5, 1}, {0, 0, 0}, 1);
+    s.meshes.push_back(mesh);
+    s.instances.push_back({0, Affine3x4{}});
+    s.camera.eye = {0, 0, 0};
+    s.camera.target = {0, 0, 1};
+    s.camera.verticalFovDegrees = 20.0f;
+    return s;
+  };
+  RenderSettings settings;
+  settings.width = settings.height = 32;
+  PixelStatistics blend = luminanceStatistics(renderCpu(scene(AlphaMode::Blend, 0.3f), settings, 16));
+  double sigma = std::sqrt(0.7 * 0.3 / (32.0 * 32.0 * 16.0));
+  EXPECT_NEAR(blend.mean, 0.7, 4 * sigma);
+  PixelStatistics through = luminanceStatistics(renderCpu(scene(AlphaMode::Mask, 0.3f), settings, 1));
+  EXPECT_EQ(through.min, 1.0);
+  PixelStatistics kept = luminanceStatistics(renderCpu(scene(AlphaMode::Mask, 0.6f), settings, 1));
+  EXPECT_EQ(kept.max, 0.0);
+}
+
+}  // namespace
+}  // namespace candela::test

@@ -1,0 +1,132 @@
+#include <gtest/gtest.h>
+
+#include "app/scene_loading.h"
+#include "kernel/camera.h"
+#include "scene/loaders/gltf_loader.h"
+#include "scene/loaders/obj_loader.h"
+#include "scene/loaders/scene_file.h"
+#include "scene/scene_test_files.h"
+
+namespace candela {
+namespace {
+
+using test::TempFolder;
+
+Scene loadModel(const std::string& path, LoadWarnings& warnings) {
+  return path.ends_with(".obj") ? loadObj(path, warnings) : loadGltf(path, warnings);
+}
+
+const char* kTriangleObj = "mtllib t.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n";
+
+std::string errorOf(const TempFolder& dir, const std::string& json) {
+  LoadWarnings warnings;
+  try {
+    loadSceneFile(dir.write("s.json", json), &loadModel, warnings);
+  } catch (const LoadError& e) {
+    std::string what = e.what();
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    return what;
+  }
+  ADD_FAILURE() << "expected a LoadError for " << json;
+  return {};
+}
+
+TEST(SceneFile, ModelsTransformsOverridesCameraEnvironmentAndSettings) {
+  TempFolder dir;
+  dir.write("models/t.obj", kTriangleObj);
+  dir.write("models/t.mtl", "newmtl red\nKd 1 0 0\n");
+  LoadWarnings warnings;
+  Scene s = loadSceneFile(dir.write("s.json", R"({
+    "models": [
+      {"file": "models/t.obj"},
+      {"file": "models/t.obj", "transform": {"translate": [10, 0, 0], "rotate_degrees": [0, 90, 0], "scale": 2},
+       "materials": {"red": {"type": "glass", "ior": 1.7, "base_color": [1, 1, 1]}, "blue": {}}}
+    ],
+    "camera": {"position": [0, 1, 5], "target": [0, 1, 0], "fov_degrees": 30, "aperture_radius": 0.05,
+               "focus_distance": 4},
+    "environment": {"radiance": [0.5, 0.5, 0.5], "intensity": 2, "visible": false},
+    "render": {"width": 320, "height": 200, "spp": 8, "max_depth": 4},
+    "colour": "unknown keys are warned about"
+  })"), &loadModel, warnings);
+  validateScene(s);
+  ASSERT_EQ(s.meshes.size(), 2u);
+  ASSERT_EQ(s.instances.size(), 2u);
+  ASSERT_EQ(s.materials.size(), 2u);
+  EXPECT_EQ(s.materials[0].type, MaterialType::Diffuse);
+  EXPECT_EQ(s.materials[1].type, MaterialType::Glass);
+  EXPECT_FLOAT_EQ(s.materials[1].ior, 1.7f);
+  EXPECT_EQ(s.meshes[1].triangleMaterials[0], 1u);
+  // (1, 0, 0) scaled by 2, turned 90 degrees about +Y to (0, 0, -2), moved by (10, 0, 0).
+  Vec3 p = s.instances[1].objectToWorld.point({1, 0, 0});
+  EXPECT_NEAR(p.x, 10.0f, 1e-5f);
+  EXPECT_NEAR(p.z, -2.0f, 1e-5f);
+  EXPECT_FALSE(s.cameraMissing);
+  EXPECT_FLOAT_EQ(s.camera.apertureRadius, 0.05f);
+  Camera c = s.camera.toCamera(1.6f);
+  EXPECT_FLOAT_EQ(c.lensRadius, 0.05f);
+  EXPECT_FLOAT_EQ(c.focusDistance, 4.0f);
+  EXPECT_FLOAT_EQ(s.environment.radiance.x, 0.5f);
+  EXPECT_FLOAT_EQ(s.environment.intensity, 2.0f);
+  EXPECT_FALSE(s.environment.visibleToCamera);
+  EXPECT_EQ(s.renderHints.width, 320u);
+  EXPECT_EQ(s.renderHints.samplesPerPixel, 8u);
+  std::string all;
+  for (const auto& w : warnings.messages) all += w + "\n";
+  EXPECT_NE(all.find("colour: unknown key"), std::string::npos) << all;
+  EXPECT_NE(all.find("materials.blue: no material of that name"), std::string::npos) << all;
+}
+
+TEST(SceneFile, ErrorsNameTheJsonPathOrLine) {
+  TempFolder dir;
+  dir.write("t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  EXPECT_NE(errorOf(dir, "{\n  \"models\": [\n    {\"file\": \"t.obj\"},,\n  ]\n}").find("s.json:3: invalid JSON"),
+            std::string::npos);
+  EXPECT_NE(errorOf(dir, R"({"models": [{"file": "t.obj", "transform": {"scale": "big"}}]})")
+                .find("s.json: models[0].transform.scale: expected 3 numbers"),
+            std::string::npos);
+  EXPECT_NE(errorOf(dir, R"({"camera": {}})").find("s.json: 'models' is missing"), std::string::npos);
+  EXPECT_NE(errorOf(dir, R"({"models": [{"file": "t.obj"}], "camera": {"position": [0,0,0], "target": [0,0,0]}})")
+                .find("camera: position and target coincide"),
+            std::string::npos);
+  EXPECT_NE(errorOf(dir, R"({"models": [{"file": "t.obj"}], "render": {"spp": 0}})").find("render.spp: expected a whole"),
+            std::string::npos);
+  EXPECT_NE(errorOf(dir, R"({"models": [{"file": "other.json"}]})").find("models[0].file: models must be"),
+            std::string::npos);
+  EXPECT_NE(errorOf(dir, R"({"models": [{"file": "missing.obj"}]})").find("missing.obj"), std::string::npos);
+  EXPECT_NE(errorOf(dir, R"({"models": [{"file": "t.obj", "materials": {"default": {"type": "velvet"}}}]})")
+                .find("models[0].materials.default.type: unknown material type 'velvet'"),
+            std::string::npos);
+}
+
+// Rays through one film point from anywhere on the lens meet on the focus plane; a pinhole ignores the lens.
+TEST(ThinLensCamera, RaysMeetOnTheFocusPlane) {
+  Camera c = Camera::lookAt({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 40.0f, 1.5f);
+  c.lensRadius = 0.1f;
+  c.focusDistance = 3.0f;
+  Vec3 meet{};
+  for (int i = 0; i < 16; ++i) {
+    Ray r = c.generateRay(30.0f, 12.0f, 64, 48, {float(i % 4) / 4.0f + 0.1f, float(i / 4) / 4.0f + 0.1f});
+    float t = (-3.0f - r.origin.z) / r.direction.z;
+    Vec3 p = r.origin + r.direction * t;
+    if (i == 0) meet = p;
+    EXPECT_NEAR(p.x, meet.x, 1e-5f);
+    EXPECT_NEAR(p.y, meet.y, 1e-5f);
+    EXPECT_LE(length(Vec3{r.origin.x, r.origin.y, 0}), 0.1f + 1e-6f);
+  }
+  Camera pinhole = Camera::lookAt({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 40.0f, 1.5f);
+  EXPECT_EQ(pinhole.generateRay(30.0f, 12.0f, 64, 48, {0.9f, 0.9f}).origin.x, 0.0f);
+}
+
+TEST(SceneLoading, FramesScenesWithoutCamera) {
+  TempFolder dir;
+  Scene s = loadScene(dir.write("t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+  EXPECT_FALSE(s.cameraMissing);
+  // The camera looks at the centre of the bounds from outside them.
+  EXPECT_NEAR(s.camera.target.x, 0.5f, 1e-6f);
+  EXPECT_GT(s.camera.eye.z, 1.0f);
+  EXPECT_THROW(loadScene(dir.write("t.abc", "")), std::runtime_error);
+  EXPECT_THROW(loadScene("no-such-scene"), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace candela

@@ -1,0 +1,175 @@
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <vector>
+
+#include "app/viewer/render_session.h"
+#include "scene/builtin_scenes.h"
+
+namespace candela {
+namespace {
+
+// Records what the session asks of it.
+struct BackendLog {
+  int scenes = 0, cameras = 0, settings = 0, restarts = 0;
+  uint32_t accumulated = 0;
+  std::vector<uint32_t> seeds;
+  float intensity = 0.0f, rotation = 0.0f;
+  std::vector<Material> materials;
+};
+
+class RecordingBackend final : public Backend {
+ public:
+  explicit RecordingBackend(BackendLog& log) : log_(log) {}
+  std::string name() const override { return "recording"; }
+  std::string deviceName() const override { return "none"; }
+  void setScene(const Scene& scene) override {
+    ++log_.scenes;
+    log_.intensity = scene.environment.intensity;
+    log_.rotation = scene.environment.rotationDegrees;
+    log_.materials = scene.materials;
+    restart();
+  }
+  void setCamera(const Camera&) override {
+    ++log_.cameras;
+    restart();
+  }
+  void setSettings(const RenderSettings& s) override {
+    ++log_.settings;
+    log_.seeds.push_back(s.seed);
+    restart();
+  }
+  FrameStats render(uint32_t spp) override {
+    log_.accumulated += spp;
+    return {};
+  }
+  uint32_t accumulatedSamples() const override { return log_.accumulated; }
+  Image readImage() const override { return {}; }
+
+ private:
+  void restart() {
+    ++log_.restarts;
+    log_.accumulated = 0;
+  }
+  BackendLog& log_;
+};
+
+struct SessionTest : ::testing::Test {
+  BackendLog log;
+  RenderSession session{std::make_unique<RecordingBackend>(log)};
+  Camera camera = Camera::lookAt({0, 0, -1}, {0, 0, 0}, {0, 1, 0}, 40.0f, 1.0f);
+  RenderSettings settings;
+
+  void SetUp() override {
+    Scene scene = makeWhiteFurnace();
+    session.setScene(scene);
+    settings.width = 32;
+    settings.height = 24;
+  }
+};
+
+TEST_F(SessionTest, AccumulatesWhileNothingChanges) {
+  for (int i = 0; i < 5; ++i) session.renderFrame(camera, settings, 2, true);
+  EXPECT_EQ(session.accumulatedSamples(), 10u);
+  EXPECT_EQ(session.restarts(), 1u);
+  EXPECT_EQ(log.scenes, 1);
+  EXPECT_EQ(log.cameras, 1);
+  EXPECT_EQ(log.settings, 1);
+}
+
+TEST_F(SessionTest, CameraChangeRestarts) {
+  session.renderFrame(camera, settings, 1, true);
+  session.renderFrame(camera, settings, 1, true);
+  Camera moved = camera;
+  moved.position.x += 1e-6f;
+  session.renderFrame(moved, settings, 1, true);
+  EXPECT_EQ(session.accumulatedSamples(), 1u);
+  EXPECT_EQ(session.restarts(), 2u);
+  EXPECT_EQ(log.cameras, 2);
+  EXPECT_EQ(log.settings, 1);
+}
+
+TEST_F(SessionTest, SettingsAndResolutionChangesRestart) {
+  session.renderFrame(camera, settings, 1, true);
+  RenderSettings deeper = settings;
+  deeper.maxDepth += 1;
+  session.renderFrame(camera, deeper, 1, true);
+  RenderSettings smaller = deeper;
+  smaller.width /= 2;
+  session.renderFrame(camera, smaller, 1, true);
+  EXPECT_EQ(session.restarts(), 3u);
+  EXPECT_EQ(session.appliedSettings().width, 16u);
+  EXPECT_EQ(session.accumulatedSamples(), 1u);
+}
+
+TEST_F(SessionTest, WithoutAccumulationEveryFrameStartsAfreshWithItsOwnSeed) {
+  for (int i = 0; i < 4; ++i) session.renderFrame(camera, settings, 3, false);
+  EXPECT_EQ(session.accumulatedSamples(), 3u);
+  EXPECT_EQ(session.restarts(), 4u);
+  ASSERT_EQ(log.seeds.size(), 4u);
+  for (size_t i = 1; i < log.seeds.size(); ++i) EXPECT_NE(log.seeds[i], log.seeds[i - 1]);
+}
+
+TEST_F(SessionTest, EnvironmentAdjustmentsApplyToTheScenesOwn) {
+  Scene scene = makeWhiteFurnace();
+  scene.environment.intensity = 2.0f;
+  scene.environment.rotationDegrees = 30.0f;
+  session.setScene(scene);
+  session.renderFrame(camera, settings, 1, true);
+  session.setEnvironment(1.0f, 0.0f);  // unchanged: no rebuild
+  session.renderFrame(camera, settings, 1, true);
+  EXPECT_EQ(log.scenes, 1);
+  session.setEnvironment(2.5f, -45.0f);
+  session.renderFrame(camera, settings, 1, true);
+  EXPECT_EQ(log.scenes, 2);
+  EXPECT_FLOAT_EQ(log.intensity, 5.0f);
+  EXPECT_FLOAT_EQ(log.rotation, -15.0f);
+  EXPECT_EQ(session.accumulatedSamples(), 1u);
+  EXPECT_EQ(session.restarts(), 2u);
+  // A new scene keeps the adjustments, relative to its own values.
+  session.setScene(makeWhiteFurnace());
+  session.renderFrame(camera, settings, 1, true);
+  EXPECT_FLOAT_EQ(log.intensity, 2.5f);
+  EXPECT_FLOAT_EQ(log.rotation, -45.0f);
+  EXPECT_EQ(session.summary().triangles, session.scene().triangleCount());
+}
+
+TEST_F(SessionTest, MaterialOverridesApplyToTheScenesOwnMaterials) {
+  Scene scene = makeCornellBox();
+  for (Material& m : scene.materials) m.type = MaterialType::Pbr;
+  session.setScene(scene);
+  session.renderFrame(camera, settings, 1, true);
+  MaterialOverrides overrides;
+  overrides.roughness = 0.1f;
+  session.setMaterialOverrides(overrides);
+  session.renderFrame(camera, settings, 1, true);
+  EXPECT_EQ(session.restarts(), 2u);
+  ASSERT_EQ(log.materials.size(), scene.materials.size());
+  for (size_t i = 0; i < scene.materials.size(); ++i) {
+    EXPECT_EQ(log.materials[i].roughness, applyOverrides(scene.materials[i], overrides).roughness);
+    EXPECT_FLOAT_EQ(log.materials[i].roughness, 0.1f);
+  }
+  // Switching an override off brings back each material's own value, not the last override's.
+  session.setMaterialOverrides({});
+  session.renderFrame(camera, settings, 1, true);
+  for (size_t i = 0; i < scene.materials.size(); ++i)
+    EXPECT_EQ(log.materials[i].roughness, scene.materials[i].roughness);
+}
+
+TEST(SceneSummary, CountsOverInstancesAndBoundsInWorldSpace) {
+  Scene scene = makeCornellBox();
+  Instance copy = scene.instances[0];
+  copy.objectToWorld.m[3] = 10.0f;  // shifted 10 m along x
+  scene.instances.push_back(copy);
+  SceneSummary s = summarizeScene(scene);
+  EXPECT_EQ(s.instances, 2u);
+  EXPECT_EQ(s.meshes, 1u);
+  EXPECT_EQ(s.triangles, 2 * scene.meshes[0].triangleCount());
+  EXPECT_EQ(s.vertices, 2 * scene.meshes[0].positions.size());
+  EXPECT_EQ(s.materials, 4u);
+  EXPECT_NEAR(s.bounds.lo.x, 0.0f, 1e-6f);
+  EXPECT_NEAR(s.bounds.hi.x, 10.556f, 1e-4f);
+}
+
+}  // namespace
+}  // namespace candela
