@@ -4,12 +4,14 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 
 #include "app/backend_factory.h"
 #include "app/render_job.h"
+#include "app/scene_loading.h"
 #include "app/viewer/viewer.h"
 #include "image/aov_io.h"
 #include "image/image_io.h"
@@ -149,8 +151,30 @@ int runBench(const RenderJob& job) {
     report["raw_trace_median_device_ms"] = m;
     report["raw_trace_mrays_per_s"] = rawRate;
     if (!outcome.deviceFrameMilliseconds.empty())
-      report["path_ray_rate_fraction_of_raw"] = raysPerFrame / median(outcome.deviceFrameMilliseconds) / 1e3 / rawRate;
+      report["path_ray_rate_fraction_of_raw"] =
+          raysPerFrame / median(outcome.deviceFrameMilliseconds) / 1e3 / rawRate;
   }
+  std::cout << report.dump() << std::endl;
+  return 0;
+}
+
+int runLoad(const std::string& spec) {
+  auto start = std::chrono::steady_clock::now();
+  Scene scene = loadScene(spec);
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  size_t vertices = 0;
+  for (const Mesh& m : scene.meshes) vertices += m.positions.size();
+  nlohmann::ordered_json report = {
+      {"scene", spec},
+      {"seconds", seconds},
+      {"meshes", scene.meshes.size()},
+      {"instances", scene.instances.size()},
+      {"triangles", scene.triangleCount()},
+      {"vertices", vertices},
+      {"materials", scene.materials.size()},
+      {"textures", scene.textures.size()},
+      {"scene_bytes", sceneMemoryBytes(scene)},
+  };
   std::cout << report.dump() << std::endl;
   return 0;
 }
@@ -158,7 +182,9 @@ int runBench(const RenderJob& job) {
 void addViewOptions(CLI::App& cmd, ViewerOptions& options, std::string& toneMapper) {
   std::string scenes;
   for (const std::string& n : builtinSceneNames()) scenes += (scenes.empty() ? "" : ", ") + n;
-  cmd.add_option("scene", options.sceneSpec, "Built-in scene name (" + scenes + ")")->capture_default_str();
+  cmd.add_option("scene", options.sceneSpec, "Scene file (.obj, .gltf, .glb, .json) or built-in scene (" + scenes + ")")
+      ->capture_default_str();
+  cmd.add_option("--env", options.environmentPath, "Environment map (.hdr or .exr) that lights the scene");
   cmd.add_option("--backend", options.backend, "auto, cpu or optix (in this build: " + availableBackends() + ")")
       ->check(CLI::IsMember({"auto", "cpu", "optix"}))
       ->capture_default_str();
@@ -194,6 +220,7 @@ int runView(ViewerOptions options, const std::string& toneMapper) {
   options.post.display.toneMapper = parseToneMapper(toneMapper);
   if (!options.screenshot.empty()) checkOutputPath(options.screenshot);
   if (!options.windowCapture.empty()) {
+    if (options.frames == 0) throw std::runtime_error("--window-capture needs a number of --frames to render first");
     checkOutputPath(options.windowCapture);
     if (std::filesystem::path(options.windowCapture).extension() != ".png")
       throw std::runtime_error("cannot write '" + options.windowCapture + "': a window capture is a .png file");
@@ -268,6 +295,10 @@ int main(int argc, char** argv) {
   CLI::App* view = app.add_subcommand("view", "Open a window that refines the image while you move the camera");
   addViewOptions(*view, viewOptions, viewToneMapper);
 
+  std::string inspectSpec;
+  CLI::App* inspect = app.add_subcommand("load", "Load a scene and print its size and loading time as one JSON object");
+  inspect->add_option("scene", inspectSpec, "Scene file or built-in scene")->required();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -287,6 +318,7 @@ int main(int argc, char** argv) {
   }
 
   try {
+    if (*inspect) return runLoad(inspectSpec);
     if (*render) {
       display.toneMapper = parseToneMapper(toneMapper);
       return runRender(renderJob, output, display);

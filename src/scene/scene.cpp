@@ -10,6 +10,16 @@ size_t Scene::triangleCount() const {
   return n;
 }
 
+size_t sceneMemoryBytes(const Scene& scene) {
+  auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
+  size_t n = bytes(scene.instances) + bytes(scene.materials);
+  for (const Mesh& m : scene.meshes)
+    n += bytes(m.positions) + bytes(m.normals) + bytes(m.uvs) + bytes(m.tangents) + bytes(m.indices) +
+         bytes(m.triangleMaterials);
+  for (const Texture& t : scene.textures) n += bytes(t.bytes) + bytes(t.floats);
+  return n + bytes(scene.environment.map.floats);
+}
+
 namespace {
 bool finite(Vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 }  // namespace

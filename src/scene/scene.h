@@ -90,6 +90,9 @@ struct Scene {
   size_t triangleCount() const;  // over instances
 };
 
+// Bytes held by the scene's arrays (meshes, materials, textures, environment map).
+size_t sceneMemoryBytes(const Scene& scene);
+
 // Checks the invariants backends rely on (index ranges, material ids, finite numbers); throws
 // std::runtime_error naming the first problem.
 void validateScene(const Scene& scene);

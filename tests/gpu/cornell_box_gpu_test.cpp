@@ -83,21 +83,11 @@ template <class BackendType>
 test::PixelStatistics batchStatistics(const Scene& scene, uint32_t seed, uint32_t maxDepth) {
   RenderSettings settings = test::squareImage(kSize, seed);
   settings.maxDepth = maxDepth;
-  auto backend = test::makeBackend<BackendType>(scene, settings);
-  return test::renderBatches(*backend, kBatches, kSamplesPerBatch);
+  return test::batchStatistics<BackendType>(scene, settings, kBatches, kSamplesPerBatch);
 }
 
-// Independent CPU and GPU renders (different seeds) agree block by block (see compareBlocks) and in the image
-// mean (z-test of the mean per-pixel difference; pixels are independent).
 void expectAgreement(const test::PixelStatistics& cpu, const test::PixelStatistics& gpu) {
-  test::BlockComparison blocks = test::compareBlocks(cpu, gpu, kBlock, kBatches, kAlpha);
-  EXPECT_EQ(blocks.rejected, 0u) << blocks.rejected << " of " << blocks.tests << " rejected; worst " << blocks.worst;
-  Image difference(kSize, kSize);
-  for (size_t i = 0; i < difference.pixels.size(); ++i)
-    difference.pixels[i] = cpu.mean.pixels[i] - gpu.mean.pixels[i];
-  test::ImageMean d = test::imageMean(difference);
-  EXPECT_LT(std::fabs(d.mean), test::twoSidedNormalQuantile(kAlpha) * d.standardError)
-      << "mean difference " << d.mean << " +- " << d.standardError;
+  test::expectRendersAgree(cpu, gpu, kBlock, kBatches, kAlpha);
 }
 
 TEST(GpuCornellBox, AgreesWithTheCpuBackend) {

@@ -38,8 +38,9 @@ check denoiser_without_weights_continues 0 "candela: .*(OptiX error 7990).*kept 
 library=$(ldconfig -p | awk '/libnvoptix\.so\.1 /{print $NF; exit}')
 [ -n "$library" ] || library=$(find / -xdev -name 'libnvoptix.so.1' 2>/dev/null | head -1)
 if [ -n "$library" ] && unshare -m true 2>/dev/null; then
+  hide="mount --bind /dev/null '$(realpath "$library")'"
   check libnvoptix_missing 1 "^candela: the NVIDIA driver's OptiX library libnvoptix.so.1 was not found \(OptiX error 7804\)" \
-    unshare -m sh -c "mount --bind /dev/null '$(realpath "$library")' && exec '$candela' render --backend optix ${tiny[*]} -o '$work/f.png'"
+    unshare -m sh -c "$hide && exec '$candela' render --backend optix ${tiny[*]} -o '$work/f.png'"
 else
   echo "SKIP libnvoptix_missing: no libnvoptix.so.1 found or no mount namespaces here"
 fi

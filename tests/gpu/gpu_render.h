@@ -5,6 +5,7 @@
 #include "backends/cpu/cpu_backend.h"
 #include "backends/optix/optix_backend.h"
 #include "scene/builtin_scenes.h"
+#include "support/render_statistics.h"
 
 namespace candela::test {
 
@@ -22,6 +23,13 @@ inline RenderSettings squareImage(uint32_t size, uint32_t seed) {
   settings.width = settings.height = size;
   settings.seed = seed;
   return settings;
+}
+
+template <class BackendType>
+PixelStatistics batchStatistics(const Scene& scene, const RenderSettings& settings, uint32_t batches,
+                                uint32_t samplesPerBatch) {
+  auto backend = makeBackend<BackendType>(scene, settings);
+  return renderBatches(*backend, batches, samplesPerBatch);
 }
 
 }  // namespace candela::test

@@ -1,5 +1,7 @@
 #include "render_comparison.h"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -43,6 +45,17 @@ BlockComparison compareBlocks(const PixelStatistics& a, const PixelStatistics& b
         }
       }
   return result;
+}
+
+void expectRendersAgree(const PixelStatistics& a, const PixelStatistics& b, uint32_t blockSize, uint32_t batches,
+                        double alpha) {
+  BlockComparison blocks = compareBlocks(a, b, blockSize, batches, alpha);
+  EXPECT_EQ(blocks.rejected, 0u) << blocks.rejected << " of " << blocks.tests << " rejected; worst " << blocks.worst;
+  Image difference(a.mean.width, a.mean.height);
+  for (size_t i = 0; i < difference.pixels.size(); ++i) difference.pixels[i] = a.mean.pixels[i] - b.mean.pixels[i];
+  ImageMean d = imageMean(difference);
+  EXPECT_LT(std::fabs(d.mean), twoSidedNormalQuantile(alpha) * d.standardError)
+      << "mean difference " << d.mean << " +- " << d.standardError;
 }
 
 }  // namespace candela::test

@@ -24,4 +24,9 @@ struct BlockComparison {
 BlockComparison compareBlocks(const PixelStatistics& a, const PixelStatistics& b, uint32_t blockSize,
                               uint32_t batches, double alpha);
 
+// Expects independent renders (different seeds) of one scene to agree: no block rejected by compareBlocks,
+// and the mean per-pixel difference within a two-sided z-test at `alpha` (pixels are independent).
+void expectRendersAgree(const PixelStatistics& a, const PixelStatistics& b, uint32_t blockSize, uint32_t batches,
+                        double alpha);
+
 }  // namespace candela::test

@@ -103,6 +103,14 @@ TEST(ObjLoader, ErrorsNameFileAndLine) {
   EXPECT_NE(errorOf("").find("test.obj: has no faces"), std::string::npos);
 }
 
+TEST(ObjLoader, SkinWeightsAreIgnoredWithAWarning) {
+  LoadWarnings warnings;
+  Scene s = loadText("v 0 0 0\nv 1 0 0\nvw 0 3e10 0.5\n  vw 1 2 0.5\nv 1 1 0\nf 1 2 3\n", warnings);
+  EXPECT_EQ(s.meshes[0].positions.size(), 3u);
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_EQ(warnings.messages[0], "test.obj:3: 'vw' (skin weight) statements are ignored");
+}
+
 TEST(ObjLoader, MissingNormalReferencesAreAWarning) {
   LoadWarnings warnings;
   Scene s = loadText("v 0 0 0\nv 1 0 0\nv 1 1 0\nvn 0 0 1\nf 1//1 2//1 3//2\n", warnings);

@@ -49,7 +49,22 @@ TEST(OrbitCamera, StartsAtTheScenesCamera) {
     expectNear(actual.forward, expected.forward);
     expectNear(actual.right, expected.right);
     expectNear(actual.up, expected.up);
+    EXPECT_EQ(actual.lensRadius, 0.0f);
   }
+}
+
+TEST(OrbitCamera, AThinLensFocusesOnTheTargetUnlessTold) {
+  CameraDescription d = home();
+  d.apertureRadius = 0.05f;
+  OrbitCamera orbit(d, cube(2));
+  EXPECT_EQ(orbit.camera(1.0f).lensRadius, 0.05f);
+  EXPECT_NEAR(orbit.camera(1.0f).focusDistance, d.toCamera(1.0f).focusDistance, kEps);
+  orbit.dolly(2.0f);
+  EXPECT_NEAR(orbit.camera(1.0f).focusDistance, orbit.distance(), kEps);
+  d.focusDistance = 3.0f;
+  OrbitCamera fixed(d, cube(2));
+  fixed.dolly(2.0f);
+  EXPECT_EQ(fixed.camera(1.0f).focusDistance, 3.0f);
 }
 
 TEST(OrbitCamera, OrbitKeepsTargetAndDistance) {

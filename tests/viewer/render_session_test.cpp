@@ -14,7 +14,8 @@ struct BackendLog {
   int scenes = 0, cameras = 0, settings = 0, restarts = 0;
   uint32_t accumulated = 0;
   std::vector<uint32_t> seeds;
-  Vec3 environment;
+  float intensity = 0.0f, rotation = 0.0f;
+  std::vector<Material> materials;
 };
 
 class RecordingBackend final : public Backend {
@@ -24,7 +25,9 @@ class RecordingBackend final : public Backend {
   std::string deviceName() const override { return "none"; }
   void setScene(const Scene& scene) override {
     ++log_.scenes;
-    log_.environment = scene.environment.radiance;
+    log_.intensity = scene.environment.intensity;
+    log_.rotation = scene.environment.rotationDegrees;
+    log_.materials = scene.materials;
     restart();
   }
   void setCamera(const Camera&) override {
@@ -125,23 +128,50 @@ TEST_F(SessionTest, WithoutAccumulationEveryFrameStartsAfreshWithItsOwnSeed) {
   for (size_t i = 1; i < log.seeds.size(); ++i) EXPECT_NE(log.seeds[i], log.seeds[i - 1]);
 }
 
-TEST_F(SessionTest, EnvironmentIntensityScalesTheScenesEnvironment) {
+TEST_F(SessionTest, EnvironmentAdjustmentsApplyToTheScenesOwn) {
+  Scene scene = makeWhiteFurnace();
+  scene.environment.intensity = 2.0f;
+  scene.environment.rotationDegrees = 30.0f;
+  session.setScene(scene);
   session.renderFrame(camera, settings, 1, true);
-  const Vec3 original = log.environment;
-  session.setEnvironmentIntensity(1.0f);  // unchanged: no rebuild
+  session.setEnvironment(1.0f, 0.0f);  // unchanged: no rebuild
   session.renderFrame(camera, settings, 1, true);
   EXPECT_EQ(log.scenes, 1);
-  session.setEnvironmentIntensity(2.5f);
+  session.setEnvironment(2.5f, -45.0f);
   session.renderFrame(camera, settings, 1, true);
   EXPECT_EQ(log.scenes, 2);
-  EXPECT_FLOAT_EQ(log.environment.x, 2.5f * original.x);
+  EXPECT_FLOAT_EQ(log.intensity, 5.0f);
+  EXPECT_FLOAT_EQ(log.rotation, -15.0f);
   EXPECT_EQ(session.accumulatedSamples(), 1u);
   EXPECT_EQ(session.restarts(), 2u);
-  // A new scene keeps the chosen intensity.
+  // A new scene keeps the adjustments, relative to its own values.
   session.setScene(makeWhiteFurnace());
   session.renderFrame(camera, settings, 1, true);
-  EXPECT_FLOAT_EQ(log.environment.x, 2.5f * original.x);
+  EXPECT_FLOAT_EQ(log.intensity, 2.5f);
+  EXPECT_FLOAT_EQ(log.rotation, -45.0f);
   EXPECT_EQ(session.summary().triangles, session.scene().triangleCount());
+}
+
+TEST_F(SessionTest, MaterialOverridesApplyToTheScenesOwnMaterials) {
+  Scene scene = makeCornellBox();
+  for (Material& m : scene.materials) m.type = MaterialType::Pbr;
+  session.setScene(scene);
+  session.renderFrame(camera, settings, 1, true);
+  MaterialOverrides overrides;
+  overrides.roughness = 0.1f;
+  session.setMaterialOverrides(overrides);
+  session.renderFrame(camera, settings, 1, true);
+  EXPECT_EQ(session.restarts(), 2u);
+  ASSERT_EQ(log.materials.size(), scene.materials.size());
+  for (size_t i = 0; i < scene.materials.size(); ++i) {
+    EXPECT_EQ(log.materials[i].roughness, applyOverrides(scene.materials[i], overrides).roughness);
+    EXPECT_FLOAT_EQ(log.materials[i].roughness, 0.1f);
+  }
+  // Switching an override off brings back each material's own value, not the last override's.
+  session.setMaterialOverrides({});
+  session.renderFrame(camera, settings, 1, true);
+  for (size_t i = 0; i < scene.materials.size(); ++i)
+    EXPECT_EQ(log.materials[i].roughness, scene.materials[i].roughness);
 }
 
 TEST(SceneSummary, CountsOverInstancesAndBoundsInWorldSpace) {

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "app/scene_loading.h"
 #include "app/viewer/viewer_files.h"
 #include "image/tonemap.h"
 
@@ -28,34 +29,83 @@ TEST_F(ViewerFiles, ViewFileHoldsCameraAndSettings) {
   camera.eye = {1, 2, 3};
   camera.target = {0, 0.5f, 0};
   camera.verticalFovDegrees = 35.0f;
+  camera.apertureRadius = 0.01f;
   RenderSettings settings;
   settings.width = 320;
   settings.height = 200;
-  settings.seed = 9;
   ViewerControls controls;
   controls.maxDepth = 5;
-  controls.samplesPerFrame = 4;
-  controls.environmentIntensity = 2.0f;
-  controls.post.display = {1.5f, ToneMapper::Clamp};
-  controls.post.bilateral = true;
-  controls.post.bilateralParams = {4, 2.5f, 0.3f};
+  Scene scene;
+  scene.environment.radiance = {0.5f, 0.25f, 1.0f};
+  scene.environment.intensity = 2.0f;
+  scene.environment.rotationDegrees = 90.0f;
   const fs::path file = dir / "view.json";
-  writeViewFile(file.string(), "cornell-box", camera, settings, controls);
+  EXPECT_NE(writeViewFile(file.string(), "cornell-box", scene, camera, settings, controls), "");
 
   nlohmann::json j = nlohmann::json::parse(std::ifstream(file));
-  EXPECT_EQ(j["scene"], "cornell-box");
+  EXPECT_FALSE(j.contains("models"));  // a built-in scene has no file
   EXPECT_EQ(j["camera"]["position"], nlohmann::json::array({1.0, 2.0, 3.0}));
   EXPECT_FLOAT_EQ(j["camera"]["target"][1].get<float>(), 0.5f);
-  EXPECT_FLOAT_EQ(j["camera"]["vertical_fov_degrees"].get<float>(), 35.0f);
+  EXPECT_FLOAT_EQ(j["camera"]["fov_degrees"].get<float>(), 35.0f);
+  EXPECT_FLOAT_EQ(j["camera"]["aperture_radius"].get<float>(), 0.01f);
   EXPECT_EQ(j["render"]["width"], 320);
   EXPECT_EQ(j["render"]["max_depth"], 5);
-  EXPECT_EQ(j["render"]["seed"], 9);
-  EXPECT_EQ(j["render"]["samples_per_frame"], 4);
+  EXPECT_FLOAT_EQ(j["environment"]["radiance"][2].get<float>(), 1.0f);
   EXPECT_FLOAT_EQ(j["environment"]["intensity"].get<float>(), 2.0f);
-  EXPECT_EQ(j["display"]["tone_mapper"], "clamp");
-  EXPECT_EQ(j["display"]["bilateral"]["radius"], 4);
-  EXPECT_THROW(writeViewFile((dir / "missing" / "view.json").string(), "x", camera, settings, controls),
+  EXPECT_FLOAT_EQ(j["environment"]["rotation_degrees"].get<float>(), 90.0f);
+  EXPECT_THROW(writeViewFile((dir / "missing" / "view.json").string(), "x", scene, camera, settings, controls),
                std::runtime_error);
+}
+
+TEST_F(ViewerFiles, ViewFileNamesTheModelsItCameFrom) {
+  Scene scene;
+  CameraDescription camera;
+  RenderSettings settings;
+  ViewerControls controls;
+  fs::create_directories(dir / "models");
+  std::ofstream(dir / "models" / "box.obj") << "v 0 0 0\n";
+  std::ofstream(dir / "models" / "scene.json") << R"({"models": [{"file": "box.obj", "transform": {"scale": 2}}]})";
+
+  const fs::path fromObj = dir / "from-obj.json", fromJson = dir / "from-json.json";
+  EXPECT_EQ(writeViewFile(fromObj.string(), (dir / "models" / "box.obj").string(), scene, camera, settings, controls), "");
+  EXPECT_EQ(writeViewFile(fromJson.string(), (dir / "models" / "scene.json").string(), scene, camera, settings,
+                          controls),
+            "");
+  const std::string box = fs::absolute(dir / "models" / "box.obj").lexically_normal().string();
+  nlohmann::json a = nlohmann::json::parse(std::ifstream(fromObj));
+  EXPECT_EQ(a["models"][0]["file"], box);
+  nlohmann::json b = nlohmann::json::parse(std::ifstream(fromJson));
+  EXPECT_EQ(b["models"][0]["file"], box);
+  EXPECT_EQ(b["models"][0]["transform"]["scale"], 2);
+}
+
+TEST_F(ViewerFiles, AViewFileOfAModelLoadsBackWithItsView) {
+  std::ofstream(dir / "tri.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  Scene scene = loadScene((dir / "tri.obj").string());
+  scene.environment.radiance = {0.2f, 0.3f, 0.4f};
+  scene.environment.intensity = 3.0f;
+  CameraDescription camera;
+  camera.eye = {0.5f, 0.5f, 4.0f};
+  camera.target = {0.25f, 0.25f, 0.0f};
+  camera.verticalFovDegrees = 30.0f;
+  RenderSettings settings;
+  settings.width = 300;
+  settings.height = 100;
+  ViewerControls controls;
+  controls.maxDepth = 3;
+  const fs::path file = dir / "view.json";
+  ASSERT_EQ(writeViewFile(file.string(), (dir / "tri.obj").string(), scene, camera, settings, controls), "");
+
+  Scene loaded = loadScene(file.string());
+  EXPECT_EQ(loaded.triangleCount(), 1u);
+  EXPECT_FALSE(loaded.cameraMissing);
+  EXPECT_FLOAT_EQ(loaded.camera.eye.z, 4.0f);
+  EXPECT_FLOAT_EQ(loaded.camera.target.x, 0.25f);
+  EXPECT_FLOAT_EQ(loaded.camera.verticalFovDegrees, 30.0f);
+  EXPECT_FLOAT_EQ(loaded.environment.radiance.y, 0.3f);
+  EXPECT_FLOAT_EQ(loaded.environment.intensity, 3.0f);
+  EXPECT_EQ(loaded.renderHints.width, 300u);
+  EXPECT_EQ(loaded.renderHints.maxDepth, 3u);
 }
 
 TEST_F(ViewerFiles, StateFileAppearsWhole) {

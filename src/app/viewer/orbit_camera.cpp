@@ -43,7 +43,11 @@ Vec3 OrbitCamera::position() const { return target_ + offsetDirection() * distan
 Vec3 OrbitCamera::forward() const { return -offsetDirection(); }
 
 Camera OrbitCamera::camera(float aspect) const {
-  return Camera::lookAt(position(), target_, up_, home_.verticalFovDegrees, aspect);
+  Camera c = Camera::lookAt(position(), target_, up_, home_.verticalFovDegrees, aspect);
+  // A thin lens focuses where the scene's camera said, or else on the target, wherever it has moved.
+  c.lensRadius = home_.apertureRadius;
+  c.focusDistance = home_.focusDistance > 0.0f ? home_.focusDistance : distance_;
+  return c;
 }
 
 CameraDescription OrbitCamera::description() const {

@@ -8,11 +8,6 @@ namespace {
 
 bool sameVector(Vec3 a, Vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
 
-bool sameCamera(const Camera& a, const Camera& b) {
-  return sameVector(a.position, b.position) && sameVector(a.forward, b.forward) && sameVector(a.right, b.right) &&
-         sameVector(a.up, b.up);
-}
-
 bool sameSettings(const RenderSettings& a, const RenderSettings& b) {
   return a.width == b.width && a.height == b.height && a.maxDepth == b.maxDepth &&
          a.rouletteDepth == b.rouletteDepth && a.seed == b.seed;
@@ -20,20 +15,39 @@ bool sameSettings(const RenderSettings& a, const RenderSettings& b) {
 
 }  // namespace
 
+bool sameCamera(const Camera& a, const Camera& b) {
+  return sameVector(a.position, b.position) && sameVector(a.forward, b.forward) && sameVector(a.right, b.right) &&
+         sameVector(a.up, b.up) && a.lensRadius == b.lensRadius && a.focusDistance == b.focusDistance;
+}
+
 RenderSession::RenderSession(std::unique_ptr<Backend> backend) : backend_(std::move(backend)) {}
 
 void RenderSession::setScene(Scene scene) {
   scene_ = std::move(scene);
   summary_ = summarizeScene(scene_);
-  sceneEnvironment_ = scene_.environment.radiance;
-  scene_.environment.radiance = sceneEnvironment_ * environmentIntensity_;
-  sceneChanged_ = true;
+  sceneMaterials_ = scene_.materials;
+  sceneIntensity_ = scene_.environment.intensity;
+  sceneRotation_ = scene_.environment.rotationDegrees;
+  applyAdjustments();
 }
 
-void RenderSession::setEnvironmentIntensity(float intensity) {
-  if (intensity == environmentIntensity_) return;
-  environmentIntensity_ = intensity;
-  scene_.environment.radiance = sceneEnvironment_ * intensity;
+void RenderSession::setEnvironment(float intensityScale, float extraRotationDegrees) {
+  if (intensityScale == intensityScale_ && extraRotationDegrees == extraRotation_) return;
+  intensityScale_ = intensityScale;
+  extraRotation_ = extraRotationDegrees;
+  applyAdjustments();
+}
+
+void RenderSession::setMaterialOverrides(const MaterialOverrides& overrides) {
+  overrides_ = overrides;
+  applyAdjustments();
+}
+
+void RenderSession::applyAdjustments() {
+  scene_.environment.intensity = sceneIntensity_ * intensityScale_;
+  scene_.environment.rotationDegrees = sceneRotation_ + extraRotation_;
+  scene_.materials = sceneMaterials_;
+  applyOverrides(scene_.materials, overrides_);
   sceneChanged_ = true;
 }
 

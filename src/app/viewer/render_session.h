@@ -4,8 +4,11 @@
 
 #include "app/viewer/scene_summary.h"
 #include "backends/backend.h"
+#include "scene/material_overrides.h"
 
 namespace candela {
+
+bool sameCamera(const Camera& a, const Camera& b);
 
 // The viewer's hold on a backend. Every frame names the camera and settings it wants; when either differs from
 // the previous frame's, or the scene or environment changed, the backend restarts its accumulation first.
@@ -17,9 +20,11 @@ class RenderSession {
   const Scene& scene() const { return scene_; }
   const SceneSummary& summary() const { return summary_; }
 
-  // Scales the scene's environment radiance; the backend gets the scene again only when the factor changes.
-  void setEnvironmentIntensity(float intensity);
-  float environmentIntensity() const { return environmentIntensity_; }
+  // Multiplies the scene's own environment intensity and adds to its rotation; the backend gets the scene again
+  // only when one of them changes.
+  void setEnvironment(float intensityScale, float extraRotationDegrees);
+  // Renders the scene's own materials under `overrides` (the backend gets the scene again).
+  void setMaterialOverrides(const MaterialOverrides& overrides);
 
   // Adds `samplesPerPixel` samples. With `accumulate` off every frame starts afresh with its own seed, so
   // successive frames show independent noise.
@@ -41,8 +46,15 @@ class RenderSession {
   std::unique_ptr<Backend> backend_;
   Scene scene_;
   SceneSummary summary_;
-  Vec3 sceneEnvironment_{};  // the radiance the scene was loaded with
-  float environmentIntensity_ = 1.0f;
+  void applyAdjustments();
+
+  // What the scene was loaded with, and the viewer's adjustments to it.
+  std::vector<Material> sceneMaterials_;
+  float sceneIntensity_ = 1.0f;
+  float sceneRotation_ = 0.0f;
+  float intensityScale_ = 1.0f;
+  float extraRotation_ = 0.0f;
+  MaterialOverrides overrides_;
 
   bool sceneChanged_ = true;
   bool haveFrame_ = false;

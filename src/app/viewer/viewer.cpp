@@ -29,11 +29,6 @@ constexpr int kMinImageSide = 64;
 constexpr double kMaxFlyStep = 0.1;    // seconds: a slow frame does not throw the camera far
 constexpr double kTimingSmoothing = 0.1;
 
-bool sameCameraPose(const Camera& a, const Camera& b) {
-  auto same = [](Vec3 u, Vec3 v) { return u.x == v.x && u.y == v.y && u.z == v.z; };
-  return same(a.position, b.position) && same(a.forward, b.forward) && same(a.right, b.right) && same(a.up, b.up);
-}
-
 class Viewer {
  public:
   explicit Viewer(const ViewerOptions& options);
@@ -89,7 +84,7 @@ Viewer::Viewer(const ViewerOptions& options)
   controls_.samplesPerFrame = options.samplesPerFrame;
   controls_.post = options.post;
   std::fprintf(stderr, "window: %s\n", window_.glRenderer().c_str());
-  showScene(loadScene(options.sceneSpec), options.sceneSpec);
+  showScene(loadScene(options.sceneSpec, {options.environmentPath}), options.sceneSpec);
   status_.backend = session_.backend().name();
   status_.device = session_.backend().deviceName();
   glfwSetWindowSizeLimits(window_.handle(), kPanelWidth + kMinImageSide, kMinImageSide, GLFW_DONT_CARE,
@@ -181,7 +176,8 @@ void Viewer::report(const std::string& message, bool isError) {
 }
 
 void Viewer::handle(const PanelRequests& requests) {
-  if (requests.applyEnvironment) session_.setEnvironmentIntensity(controls_.environmentIntensity);
+  if (requests.applyEnvironment) session_.setEnvironment(controls_.environmentScale, controls_.environmentRotation);
+  if (requests.applyMaterials) session_.setMaterialOverrides(controls_.materials);
   try {
     if (requests.saveScreenshot) {
       Image image = accumulatedImage();
@@ -190,9 +186,9 @@ void Viewer::handle(const PanelRequests& requests) {
       report("saved " + controls_.screenshotBase + ".png and .exr", false);
     }
     if (requests.saveSceneFile) {
-      writeViewFile(controls_.sceneFilePath, sceneSpec_, camera_->description(), session_.appliedSettings(),
-                    controls_);
-      report("saved " + controls_.sceneFilePath, false);
+      std::string note = writeViewFile(controls_.sceneFilePath, sceneSpec_, session_.scene(), camera_->description(),
+                                       session_.appliedSettings(), controls_);
+      report("saved " + controls_.sceneFilePath + (note.empty() ? "" : " (" + note + ")"), false);
     }
   } catch (const std::exception& e) {
     report(e.what(), true);
@@ -215,7 +211,7 @@ void Viewer::frame(double now, double seconds) {
   input_.apply(*camera_, heldFlyKeys(), float(std::min(seconds, kMaxFlyStep)), float(imageHeight));
   const Camera camera = camera_->camera(float(imageWidth) / float(imageHeight));
   // A scene's first camera is where the view starts, not a motion.
-  const bool moved = !sceneJustShown_ && !sameCameraPose(camera, lastCamera_);
+  const bool moved = !sceneJustShown_ && !sameCamera(camera, lastCamera_);
   lastCamera_ = camera;
   sceneJustShown_ = false;
   lastPlan_ = policy_.plan(uint32_t(imageWidth), uint32_t(imageHeight), controls_.samplesPerFrame, moved, now);

@@ -8,6 +8,7 @@ namespace candela {
 
 struct ViewerOptions {
   std::string sceneSpec = "cornell-box";
+  std::string environmentPath;  // an .hdr or .exr map that lights the first scene instead of its own
   std::string backend = "auto";
   uint32_t width = 960;  // of the image; the panel sits beside it
   uint32_t height = 720;

@@ -1,8 +1,10 @@
 #pragma once
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "app/viewer/post_settings.h"
+#include "scene/material_overrides.h"
 
 namespace candela {
 
@@ -11,7 +13,10 @@ struct ViewerControls {
   uint32_t maxDepth = 8;
   uint32_t samplesPerFrame = 1;
   bool accumulate = true;
-  float environmentIntensity = 1.0f;
+  float environmentScale = 1.0f;     // times the scene's own intensity
+  float environmentRotation = 0.0f;  // degrees added to the scene's own rotation
+  MaterialOverrides materials;
+  std::vector<float> overrideSliders;  // one per overrideParameters() entry: its value while it is switched off
   PostSettings post;
 
   std::string screenshotBase = "candela-view";      // the panel saves <base>.png and <base>.exr

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -30,38 +31,59 @@ void saveScreenshot(const std::string& path, const Image& accumulated, const Pos
     writeImage(path, accumulated, post.display);
 }
 
-void writeViewFile(const std::string& path, const std::string& sceneSpec, const CameraDescription& camera,
-                   const RenderSettings& settings, const ViewerControls& controls) {
-  const PostSettings& post = controls.post;
-  nlohmann::ordered_json json = {
-      {"scene", sceneSpec},
-      {"camera",
-       {{"position", vec(camera.eye)},
-        {"target", vec(camera.target)},
-        {"up", vec(camera.up)},
-        {"vertical_fov_degrees", camera.verticalFovDegrees}}},
-      {"render",
-       {{"width", settings.width},
-        {"height", settings.height},
-        {"max_depth", controls.maxDepth},
-        {"seed", settings.seed},
-        {"samples_per_frame", controls.samplesPerFrame},
-        {"accumulate", controls.accumulate}}},
-      {"environment", {{"intensity", controls.environmentIntensity}}},
-      {"display",
-       {{"tone_mapper", toneMapperName(post.display.toneMapper)},
-        {"exposure", post.display.exposure},
-        {"atrous",
-         {{"enabled", post.atrous},
-          {"passes", post.atrousParams.passes},
-          {"color_sigma", post.atrousParams.colorSigma}}},
-        {"bilateral",
-         {{"enabled", post.bilateral},
-          {"radius", post.bilateralParams.radius},
-          {"spatial_sigma", post.bilateralParams.spatialSigma},
-          {"range_sigma", post.bilateralParams.rangeSigma}}}}},
-  };
+namespace {
+
+std::string lowerExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+// The "models" of the scene file at `path`, their files made absolute.
+nlohmann::ordered_json modelsOfSceneFile(const std::string& path) {
+  std::ifstream in(path);
+  nlohmann::ordered_json doc = nlohmann::ordered_json::parse(in, nullptr, /*allow_exceptions=*/false);
+  nlohmann::ordered_json models = doc.is_object() && doc.contains("models") ? doc["models"] : nlohmann::ordered_json();
+  if (!models.is_array()) return nlohmann::ordered_json();
+  const std::filesystem::path base = std::filesystem::absolute(path).parent_path();
+  for (auto& model : models)
+    if (model.is_object() && model.contains("file") && model["file"].is_string())
+      model["file"] = (base / model["file"].get<std::string>()).lexically_normal().string();
+  return models;
+}
+
+}  // namespace
+
+std::string writeViewFile(const std::string& path, const std::string& sceneSpec, const Scene& scene,
+                          const CameraDescription& camera, const RenderSettings& settings,
+                          const ViewerControls& controls) {
+  nlohmann::ordered_json json;
+  const std::string ext = lowerExtension(sceneSpec);
+  const bool isFile = std::filesystem::is_regular_file(sceneSpec);
+  if (isFile && (ext == ".obj" || ext == ".gltf" || ext == ".glb"))
+    json["models"] = nlohmann::ordered_json::array({{{"file", std::filesystem::absolute(sceneSpec).string()}}});
+  else if (isFile && ext == ".json")
+    json["models"] = modelsOfSceneFile(sceneSpec);
+
+  json["camera"] = {{"position", vec(camera.eye)},
+                    {"target", vec(camera.target)},
+                    {"up", vec(camera.up)},
+                    {"fov_degrees", camera.verticalFovDegrees},
+                    {"aperture_radius", camera.apertureRadius},
+                    {"focus_distance", camera.focusDistance}};
+  const Environment& env = scene.environment;
+  nlohmann::ordered_json environment;
+  if (env.hasMap() && std::filesystem::is_regular_file(env.map.name))
+    environment["map"] = std::filesystem::absolute(env.map.name).string();
+  else if (!env.hasMap())
+    environment["radiance"] = vec(env.radiance);
+  environment["intensity"] = env.intensity;
+  environment["rotation_degrees"] = env.rotationDegrees;
+  environment["visible"] = env.visibleToCamera;
+  json["environment"] = environment;
+  json["render"] = {{"width", settings.width}, {"height", settings.height}, {"max_depth", controls.maxDepth}};
   writeJson(path, json);
+  return json.contains("models") ? "" : "a built-in scene has no file to name, so the view file lists no models";
 }
 
 void writeStateFile(const std::string& path, const ViewerState& s) {

@@ -15,9 +15,13 @@ namespace candela {
 // mapped with the panel's settings, an .exr or .pfm stays linear.
 void saveScreenshot(const std::string& path, const Image& accumulated, const PostSettings& post);
 
-// The scene it came from, the camera and the render and display settings, as JSON.
-void writeViewFile(const std::string& path, const std::string& sceneSpec, const CameraDescription& camera,
-                   const RenderSettings& settings, const ViewerControls& controls);
+// The view as a JSON scene file (docs/scene-file.md's format): "models" naming the scene's source when it is a
+// model file (.obj, .gltf, .glb) or taken over from a scene file (paths made absolute), the camera, the
+// environment as rendered and the render settings. A built-in scene has no file to name, so its view file has no
+// "models" and does not load on its own. Returns a note for the user when that is so.
+std::string writeViewFile(const std::string& path, const std::string& sceneSpec, const Scene& scene,
+                          const CameraDescription& camera, const RenderSettings& settings,
+                          const ViewerControls& controls);
 
 // A snapshot of what the viewer is doing, for scripts and tests; written to a temporary name and renamed, so a
 // reader never sees half a file.

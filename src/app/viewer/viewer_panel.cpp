@@ -3,6 +3,9 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include <optional>
+#include <span>
+
 namespace candela {
 
 namespace {
@@ -37,10 +40,42 @@ void drawRenderSettings(ViewerControls& c, PanelRequests& requests) {
   sliderUint("Max depth", c.maxDepth, 1, 64);
   sliderUint("Samples/frame", c.samplesPerFrame, 1, 64);
   ImGui::Checkbox("Accumulate", &c.accumulate);
-  ImGui::SliderFloat("Environment", &c.environmentIntensity, 0.0f, 16.0f, "%.3f",
+  // The backend rebuilds its scene for a new environment or new materials, so a slider's change lands when it is
+  // let go.
+  ImGui::SliderFloat("Env intensity", &c.environmentScale, 0.0f, 16.0f, "x %.3f",
                      ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
-  // The backend rebuilds its scene for a new environment, so the change lands when the slider is let go.
   requests.applyEnvironment = ImGui::IsItemDeactivatedAfterEdit();
+  ImGui::SliderFloat("Env rotation", &c.environmentRotation, -180.0f, 180.0f, "%.1f deg",
+                     ImGuiSliderFlags_AlwaysClamp);
+  requests.applyEnvironment = requests.applyEnvironment || ImGui::IsItemDeactivatedAfterEdit();
+}
+
+void drawMaterials(ViewerControls& c, PanelRequests& requests) {
+  int model = int(c.materials.shading);
+  if (ImGui::Combo("Shading", &model, "Each material's own\0Blinn-Phong\0PBR\0Disney\0")) {
+    c.materials.shading = ShadingModel(model);
+    requests.applyMaterials = true;
+  }
+  const std::span<const OverrideParameter> parameters = overrideParameters();
+  for (size_t i = c.overrideSliders.size(); i < parameters.size(); ++i)
+    c.overrideSliders.push_back(0.5f * (parameters[i].min + parameters[i].max));
+  for (size_t i = 0; i < parameters.size(); ++i) {
+    const OverrideParameter& p = parameters[i];
+    std::optional<float>& value = c.materials.*(p.field);
+    bool on = value.has_value();
+    ImGui::PushID(int(i));
+    if (ImGui::Checkbox("##override", &on)) {
+      value = on ? std::optional<float>(c.overrideSliders[i]) : std::nullopt;
+      requests.applyMaterials = true;
+    }
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!on);
+    if (ImGui::SliderFloat(p.name, &c.overrideSliders[i], p.min, p.max, "%.3f", ImGuiSliderFlags_AlwaysClamp) && on)
+      value = c.overrideSliders[i];
+    requests.applyMaterials = requests.applyMaterials || (on && ImGui::IsItemDeactivatedAfterEdit());
+    ImGui::EndDisabled();
+    ImGui::PopID();
+  }
 }
 
 void drawPost(PostSettings& post) {
@@ -91,6 +126,7 @@ PanelRequests drawPanel(const PanelStatus& status, ViewerControls& controls, flo
   ImGui::PushItemWidth(-110.0f);
   if (ImGui::CollapsingHeader("Status", ImGuiTreeNodeFlags_DefaultOpen)) drawStatus(status);
   if (ImGui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen)) drawRenderSettings(controls, requests);
+  if (ImGui::CollapsingHeader("Materials")) drawMaterials(controls, requests);
   if (ImGui::CollapsingHeader("Post", ImGuiTreeNodeFlags_DefaultOpen)) drawPost(controls.post);
   if (ImGui::CollapsingHeader("Actions", ImGuiTreeNodeFlags_DefaultOpen)) drawActions(controls, requests);
   if (!status.message.empty()) {

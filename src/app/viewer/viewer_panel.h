@@ -26,7 +26,8 @@ struct PanelStatus {
 
 // What the user asked for this frame.
 struct PanelRequests {
-  bool applyEnvironment = false;  // the intensity slider was released after a change
+  bool applyEnvironment = false;  // an environment slider was released after a change
+  bool applyMaterials = false;    // the shading model or an override changed (sliders: when released)
   bool saveScreenshot = false;
   bool saveSceneFile = false;
   bool openScene = false;  // the Open button, or Enter in the scene field

@@ -22,8 +22,8 @@ void DeviceScene::upload(const FlatScene& flat) {
   view_.lightCdf = copy(flat.lightCdf, "the light distribution");
   view_.environment.texels = copy(flat.environmentTexels, "the environment map");
   view_.environment.func = copy(flat.environmentDistribution.func, "the environment's sampling density");
-  view_.environment.conditionalCdf = copy(flat.environmentDistribution.conditionalCdf, "the environment's sampling distribution");
-  view_.environment.marginalCdf = copy(flat.environmentDistribution.marginalCdf, "the environment's sampling distribution");
+  view_.environment.conditionalCdf = copy(flat.environmentDistribution.conditionalCdf, "the environment's rows");
+  view_.environment.marginalCdf = copy(flat.environmentDistribution.marginalCdf, "the environment's columns");
 }
 
 size_t DeviceScene::deviceBytes() const {

@@ -38,6 +38,22 @@ class CudaEvent {
   cudaEvent_t event_ = nullptr;
 };
 
+// Which raygen programs share a pipeline, as measured on an H200 (OptiX 9.0 ABI, driver 580, Cornell box at
+// 1080p): the path tracer ran 4.05 ms per frame beside the record program, 6.8 ms alone or beside the
+// raw-trace program; the raw-trace program ran 2.7 ms alone, 3.1 ms beside the other two. OptiX decides per
+// pipeline how to compile traversal around each trace call, and does not document it, so this grouping is
+// what the measurement chose (docs/performance.md). The AOV path tracer gets a pipeline of its own, shaped
+// like the path tracer's (beside a copy of the record program), so that it leaves the path tracer's alone.
+std::vector<std::unique_ptr<Pipeline>> makePipelines(OptixDeviceContext context, OptixModule module) {
+  std::vector<std::unique_ptr<Pipeline>> pipelines;
+  pipelines.push_back(
+      std::make_unique<Pipeline>(context, module, std::vector{RaygenProgram::Render, RaygenProgram::Record}));
+  pipelines.push_back(std::make_unique<Pipeline>(context, module, std::vector{RaygenProgram::RawTrace}));
+  pipelines.push_back(std::make_unique<Pipeline>(
+      context, module, std::vector{RaygenProgram::RenderWithAovs, RaygenProgram::Record}));
+  return pipelines;
+}
+
 struct LaunchResult {
   CounterTotals totals{};
   float milliseconds = 0.0f;
@@ -47,7 +63,8 @@ struct LaunchResult {
 
 struct OptixBackend::State {
   OptixContext context;
-  Pipeline pipeline{context.get()};
+  ProgramModule module{context.get()};
+  std::vector<std::unique_ptr<Pipeline>> pipelines = makePipelines(context.get(), module.get());
   FlatScene flat;
   DeviceScene scene;
   AccelerationStructures acceleration;
@@ -82,12 +99,19 @@ struct OptixBackend::State {
 
   // Uploads the parameters, launches one raygen program over the image and sums its counters, timing both
   // with CUDA events; waits for the result.
+  const Pipeline& pipeline(RaygenProgram program) const {
+    for (const auto& p : pipelines)
+      if (p->has(program)) return *p;
+    throw std::logic_error("no pipeline holds the raygen program");
+  }
+
   LaunchResult launch(RaygenProgram program, const LaunchParameters& p) {
     cudaStream_t stream = context.stream();
+    const Pipeline& pipe = pipeline(program);
     checkCuda(cudaMemcpyAsync(parameters.as<void>(), &p, sizeof p, cudaMemcpyHostToDevice, stream),
               "uploading the launch parameters");
     checkCuda(cudaEventRecord(start.get(), stream), "recording a CUDA event");
-    checkOptix(optixLaunch(pipeline.get(), stream, parameters.address(), sizeof p, &pipeline.bindingTable(program),
+    checkOptix(optixLaunch(pipe.get(), stream, parameters.address(), sizeof p, &pipe.bindingTable(program),
                            settings.width, settings.height, 1),
                "launching the device programs");
     sumPixelCounters(counters.as<PixelCounters>(), pixelCount(), totals.as<CounterTotals>(), stream);

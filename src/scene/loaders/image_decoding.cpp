@@ -92,6 +92,9 @@ Texture decodeImage(const std::string& name, const uint8_t* data, size_t size, b
   if (!stbi_info_from_memory(data, len, &width, &height, &components))
     failLoad(name, std::string("not a readable image (") + stbi_failure_reason() + ")");
   bool hdr = stbi_is_hdr_from_memory(data, len) != 0;
+  if (double(width) * double(height) > kMaxPixelsPerByte * double(size))
+    failLoad(name, "image header claims " + std::to_string(width) + "x" + std::to_string(height) +
+                       " pixels, more than the file can hold");
   int channels = (components == 1 && !hdr) ? 1 : 4;
   checkSize(name, width, height, size_t(channels) * (hdr ? sizeof(float) : 1));
 

@@ -9,8 +9,11 @@ namespace candela {
 
 // Largest decoded image accepted, so that a forged header cannot make a loader allocate without bound.
 constexpr size_t kMaxDecodedImageBytes = size_t(1) << 31;
+// Most pixels any accepted format can encode per byte of file (1-bit PNG at deflate's best ratio); a header
+// that claims more describes data that is not there, and decoding it would only burn time.
+constexpr double kMaxPixelsPerByte = 8.0 * 1032.0;
 
-// Decodes a PNG, JPEG, TGA, BMP, PSD, GIF, PIC, PNM or Radiance HDR image held in memory. 8-bit images keep
+// Decodes a PNG, JPEG, TGA, BMP or Radiance HDR image held in memory. 8-bit images keep
 // their bytes: one channel for grey images, RGBA otherwise; `srgb` records how their colours are encoded.
 // Radiance HDR images become float RGBA. Throws LoadError naming `name` when the data is not a readable image.
 Texture decodeImage(const std::string& name, const uint8_t* data, size_t size, bool srgb);

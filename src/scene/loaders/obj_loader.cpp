@@ -267,6 +267,8 @@ Scene loadParsed(const std::string& name, const ObjSource& text, MtlLibraryReade
                              /*triangulate=*/true, /*default_vcols_fallback=*/false);
   if (buffer->readFailed()) failLoad(name, "read error");
   if (auto line = buffer->firstLineWithBadNumber()) failLoad(name, *line, "a coordinate is not a number");
+  if (auto line = buffer->firstSkippedLine())
+    warnings.add(name + ":" + std::to_string(*line), "'vw' (skin weight) statements are ignored");
   buffer.reset();
   if (!ok) {
     std::string first = err.substr(0, err.find('\n'));

@@ -11,7 +11,9 @@ namespace candela {
 
 // The stream tinyobjloader reads OBJ text through, from a file or from memory. While handing the text over it
 // checks the numbers of "v", "vn" and "vt" lines, which the parser would silently read as 0 when they are not
-// numbers ("nan", "1.#IND"), and keeps the first such line.
+// numbers ("nan", "1.#IND"), and keeps the first such line. It also turns "vw" lines (tinyobjloader's skin-weight
+// extension, which converts unchecked floats to int) into comments before the parser sees them; candela has no
+// use for skin weights.
 class ObjTextBuffer : public std::streambuf {
  public:
   static std::unique_ptr<ObjTextBuffer> openFile(const std::string& path);  // null when it cannot be opened
@@ -19,6 +21,7 @@ class ObjTextBuffer : public std::streambuf {
   ~ObjTextBuffer() override;
 
   std::optional<size_t> firstLineWithBadNumber() const { return badLine_; }
+  std::optional<size_t> firstSkippedLine() const { return skippedLine_; }
   bool readFailed() const { return readFailed_; }
 
  protected:
@@ -26,7 +29,7 @@ class ObjTextBuffer : public std::streambuf {
 
  private:
   ObjTextBuffer() = default;
-  void scan(const char* begin, const char* end);
+  void scan(char* begin, char* end);
 
   std::FILE* file_ = nullptr;
   std::vector<char> chunk_;
@@ -38,6 +41,8 @@ class ObjTextBuffer : public std::streambuf {
   size_t line_ = 1;
   bool previousWasSpace_ = false;  // the last character of the previous chunk
   std::optional<size_t> badLine_;
+  std::optional<size_t> skippedLine_;
+  size_t carryStart_ = 0, carrySize_ = 0;  // the start of a line that continues past the chunk handed over
 };
 
 }  // namespace candela

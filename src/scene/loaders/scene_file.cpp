@@ -39,9 +39,11 @@ class Node {
   }
   void expectObject(std::initializer_list<const char*> known, LoadWarnings& warnings) const {
     if (!value_.is_object()) fail("expected an object");
-    for (const auto& [key, v] : value_.items())
+    for (const auto& item : value_.items()) {
+      const std::string& key = item.key();
       if (std::find_if(known.begin(), known.end(), [&](const char* k) { return key == k; }) == known.end())
         warnings.add(file_, path_ + (path_.empty() ? "" : ".") + key + ": unknown key, ignored");
+    }
   }
 
   float number() const {

@@ -2,4 +2,9 @@
 // builds). The loaders read files themselves, so that their errors name the file, and give stb memory.
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_FAILURE_USERMSG
+#define STBI_ONLY_PNG
+#define STBI_ONLY_JPEG
+#define STBI_ONLY_HDR
+#define STBI_ONLY_TGA
+#define STBI_ONLY_BMP
 #include <stb/stb_image.h>

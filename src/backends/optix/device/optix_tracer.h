@@ -33,7 +33,8 @@ class OptixTracer {
     uint32_t occluded = 1;
     optixTrace(traversable_, toFloat3(ray.origin), toFloat3(ray.direction), ray.tMin, ray.tMax, 0.0f,
                OptixVisibilityMask(0xFF),
-               OPTIX_RAY_FLAG_TERMINATE_ON_FIRST_HIT | OPTIX_RAY_FLAG_DISABLE_CLOSESTHIT | OPTIX_RAY_FLAG_DISABLE_ANYHIT,
+               OPTIX_RAY_FLAG_TERMINATE_ON_FIRST_HIT | OPTIX_RAY_FLAG_DISABLE_CLOSESTHIT |
+                   OPTIX_RAY_FLAG_DISABLE_ANYHIT,
                kShadowRay, kRayTypeCount, kShadowRay, occluded);
     return occluded != 0;
   }
