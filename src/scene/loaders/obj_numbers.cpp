@@ -13,8 +13,8 @@ bool isDigit(char c) { return static_cast<unsigned char>(c - '0') < 10; }
 bool parseObjFloat(std::string_view field, float& value) {
   const char* begin = field.data();
   const char* end = begin + field.size();
-  if (begin < end && *begin == '+') ++begin;  // from_chars takes no '+'
-  const char* digits = begin < end && *begin == '-' ? begin + 1 : begin;
+  const char* digits = begin < end && (*begin == '+' || *begin == '-') ? begin + 1 : begin;
+  if (*begin == '+') ++begin;  // from_chars takes no '+'
   // from_chars would read "inf" and "nan"; a number here starts with a digit or a point.
   if (digits == end || !(isDigit(*digits) || *digits == '.')) return false;
   auto [stop, error] = std::from_chars(begin, end, value);

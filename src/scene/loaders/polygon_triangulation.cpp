@@ -42,8 +42,8 @@ void emit(std::vector<uint32_t>& out, size_t a, size_t b, size_t c) {
   out.insert(out.end(), {uint32_t(a), uint32_t(b), uint32_t(c)});
 }
 
-void fan(size_t first, const std::vector<size_t>& remaining, std::vector<uint32_t>& out) {
-  for (size_t i = first + 1; i + 1 < remaining.size(); ++i) emit(out, remaining[first], remaining[i], remaining[i + 1]);
+void fan(const std::vector<size_t>& corners, std::vector<uint32_t>& out) {
+  for (size_t i = 1; i + 1 < corners.size(); ++i) emit(out, corners[0], corners[i], corners[i + 1]);
 }
 
 void quad(std::span<const Vec3> c, const std::vector<Point>& p, bool projected, std::vector<uint32_t>& out) {
@@ -84,7 +84,7 @@ void clipEars(const std::vector<Point>& p, std::vector<uint32_t>& out) {
       ++triedSinceClip;
     }
   }
-  fan(0, remaining, out);  // what is left is a triangle, or has no ear with area
+  fan(remaining, out);  // what is left is a triangle, or has no ear with area
 }
 
 }  // namespace
@@ -99,7 +99,7 @@ void triangulatePolygon(std::span<const Vec3> corners, std::vector<uint32_t>& tr
   if (!projected || n > kMaxEarClippedCorners) {
     std::vector<size_t> all(n);
     std::iota(all.begin(), all.end(), size_t(0));
-    return fan(0, all, triangles);
+    return fan(all, triangles);
   }
   clipEars(points, triangles);
 }
