@@ -65,7 +65,7 @@ void writeSceneCache(const std::string& cacheFile, const std::string& modelPath,
   const std::string temporary =
       cacheFile + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter.fetch_add(1));
   File file(std::fopen(temporary.c_str(), "wb"), &std::fclose);
-  if (!file) throw std::runtime_error("cannot write " + temporary + ": " + std::strerror(errno));
+  if (!file) throw std::runtime_error("cannot write " + cacheFile + ": " + std::strerror(errno));
   BinaryWriter out(file.get());
   out.bytes(kMagic, sizeof kMagic);
   writeCacheKey(out, currentCacheKey(modelPath, scene.inputFiles));
@@ -131,7 +131,7 @@ Scene loadThroughSceneCache(const std::string& path, const SceneCacheSettings& s
   try {
     if (fileState(path) == before) writeSceneCache(cacheFile, path, scene, fresh.messages);
   } catch (const std::exception& e) {
-    warnings.add(cacheFile, std::string("scene cache not written: ") + e.what());
+    warnings.messages.push_back(std::string("scene cache not written: ") + e.what());
   }
   warnings.messages.insert(warnings.messages.end(), fresh.messages.begin(), fresh.messages.end());
   return scene;
