@@ -68,15 +68,13 @@ class ChunkParser {
  private:
   void statement() {
     std::string_view k = keywordAt(p_, end_);
+    float x[3] = {0, 0, 0};
     if (k == "v") {
-      Vec3 v{};
-      if (attribute(&v.x, 3, "vertex position")) c_.positions.push_back(v);
+      if (attribute(x, 3, "vertex position")) c_.positions.push_back({x[0], x[1], x[2]});
     } else if (k == "vt") {
-      Vec2 v{};
-      if (attribute(&v.x, 2, "texture coordinate")) c_.uvs.push_back(v);
+      if (attribute(x, 2, "texture coordinate")) c_.uvs.push_back({x[0], x[1]});
     } else if (k == "vn") {
-      Vec3 v{};
-      if (attribute(&v.x, 3, "normal")) c_.normals.push_back(v);
+      if (attribute(x, 3, "normal")) c_.normals.push_back({x[0], x[1], x[2]});
     } else if (k == "f") {
       face();
     } else if (k == "l" || k == "p") {

@@ -36,7 +36,7 @@ class ObjMaterialResolver {
 };
 
 struct ObjReadOptions {
-  size_t windowBytes = size_t(64) << 20;  // text read at a time
+  size_t windowBytes = size_t(16) << 20;  // text read at a time
   size_t chunkBytes = size_t(1) << 20;    // text parsed by one task
 };
 
