@@ -11,9 +11,9 @@ namespace candela {
 // Loads a Wavefront OBJ file, the MTL libraries it names (parsed by tinyobjloader) and their textures: the
 // geometry is parsed in parallel (obj_geometry_reader.h), polygons are triangulated, relative (negative)
 // references resolved, every object and group goes into one mesh with a material per triangle, and missing
-// normals are generated (see obj_mesh_builder.h). UVs follow the Mesh
-// convention (v = 0 at the top of the image), so OBJ's v is flipped. A missing .mtl or texture is a warning;
-// malformed geometry throws LoadError naming the file and line.
+// normals are generated (obj_mesh_builder.h). UVs follow the Mesh convention (v = 0 at the top of the image),
+// so OBJ's v is flipped. A missing .mtl or texture is a warning; malformed geometry throws LoadError naming the
+// file and line.
 Scene loadObj(const std::string& path, LoadWarnings& warnings);
 
 // The same for OBJ text in memory, with no material libraries; `name` stands for the file in messages.
