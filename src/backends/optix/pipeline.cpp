@@ -20,9 +20,6 @@ namespace candela::optix {
 
 namespace {
 
-// Group order within a pipeline.
-enum : int { kRaygen = 0, kRadianceMiss, kShadowMiss, kRadianceHit, kShadowHit };
-
 const char* raygenName(RaygenProgram program) {
   switch (program) {
     case RaygenProgram::Render: return "__raygen__render";
@@ -81,32 +78,39 @@ ProgramModule::~ProgramModule() {
   if (module_) optixModuleDestroy(module_);
 }
 
-Pipeline::Pipeline(OptixDeviceContext context, OptixModule module, RaygenProgram program) {
-  OptixProgramGroupDesc descriptions[kGroupCount] = {};
-  descriptions[kRaygen].kind = OPTIX_PROGRAM_GROUP_KIND_RAYGEN;
-  descriptions[kRaygen].raygen.module = module;
-  descriptions[kRaygen].raygen.entryFunctionName = raygenName(program);
+Pipeline::Pipeline(OptixDeviceContext context, OptixModule module, const std::vector<RaygenProgram>& programs)
+    : programs_(programs) {
+  const size_t raygens = programs.size();
+  const size_t radianceMiss = raygens, shadowMiss = raygens + 1, radianceHit = raygens + 2, shadowHit = raygens + 3;
+  std::vector<OptixProgramGroupDesc> descriptions(raygens + 4);
+  for (size_t i = 0; i < raygens; ++i) {
+    descriptions[i].kind = OPTIX_PROGRAM_GROUP_KIND_RAYGEN;
+    descriptions[i].raygen.module = module;
+    descriptions[i].raygen.entryFunctionName = raygenName(programs[i]);
+  }
   // The radiance miss program would only restate the payload's "missed" sentinel, so it is absent.
-  descriptions[kRadianceMiss].kind = OPTIX_PROGRAM_GROUP_KIND_MISS;
-  descriptions[kShadowMiss].kind = OPTIX_PROGRAM_GROUP_KIND_MISS;
-  descriptions[kShadowMiss].miss.module = module;
-  descriptions[kShadowMiss].miss.entryFunctionName = "__miss__shadow";
-  descriptions[kRadianceHit].kind = OPTIX_PROGRAM_GROUP_KIND_HITGROUP;
-  descriptions[kRadianceHit].hitgroup.moduleCH = module;
-  descriptions[kRadianceHit].hitgroup.entryFunctionNameCH = "__closesthit__radiance";
+  descriptions[radianceMiss].kind = OPTIX_PROGRAM_GROUP_KIND_MISS;
+  descriptions[shadowMiss].kind = OPTIX_PROGRAM_GROUP_KIND_MISS;
+  descriptions[shadowMiss].miss.module = module;
+  descriptions[shadowMiss].miss.entryFunctionName = "__miss__shadow";
+  descriptions[radianceHit].kind = OPTIX_PROGRAM_GROUP_KIND_HITGROUP;
+  descriptions[radianceHit].hitgroup.moduleCH = module;
+  descriptions[radianceHit].hitgroup.entryFunctionNameCH = "__closesthit__radiance";
   // Shadow rays disable closest-hit and any-hit, so their hit group has no programs.
-  descriptions[kShadowHit].kind = OPTIX_PROGRAM_GROUP_KIND_HITGROUP;
+  descriptions[shadowHit].kind = OPTIX_PROGRAM_GROUP_KIND_HITGROUP;
+  groups_.assign(descriptions.size(), nullptr);
   OptixProgramGroupOptions groupOptions{};
   checkWithLog("creating the program groups", [&](char* log, size_t* logSize) {
-    return optixProgramGroupCreate(context, descriptions, kGroupCount, &groupOptions, log, logSize, groups_);
+    return optixProgramGroupCreate(context, descriptions.data(), unsigned(descriptions.size()), &groupOptions, log,
+                                   logSize, groups_.data());
   });
 
   const OptixPipelineCompileOptions compileOptions = pipelineCompileOptions();
   OptixPipelineLinkOptions linkOptions{};
   linkOptions.maxTraceDepth = 1;  // only raygen traces
   checkWithLog("linking the pipeline", [&](char* log, size_t* logSize) {
-    return optixPipelineCreate(context, &compileOptions, &linkOptions, groups_, kGroupCount, log, logSize,
-                               &pipeline_);
+    return optixPipelineCreate(context, &compileOptions, &linkOptions, groups_.data(), unsigned(groups_.size()), log,
+                               logSize, &pipeline_);
   });
 
   OptixStackSizes stackSizes{};
@@ -126,24 +130,40 @@ Pipeline::Pipeline(OptixDeviceContext context, OptixModule module, RaygenProgram
              "setting the pipeline's stack size");
 
   // Records carry only their program headers: every program reads scene data through the launch parameters.
-  std::vector<HeaderOnlyRecord> records(kGroupCount);
-  for (int i = 0; i < kGroupCount; ++i)
+  std::vector<HeaderOnlyRecord> records(groups_.size());
+  for (size_t i = 0; i < groups_.size(); ++i)
     checkOptix(optixSbtRecordPackHeader(groups_[i], &records[i]), "packing a shader binding table record");
   records_ = DeviceBuffer::fromVector(records, "a shader binding table");
   const CUdeviceptr base = records_.address();
-  table_.raygenRecord = base + kRaygen * sizeof(HeaderOnlyRecord);
-  table_.missRecordBase = base + kRadianceMiss * sizeof(HeaderOnlyRecord);
-  table_.missRecordStrideInBytes = sizeof(HeaderOnlyRecord);
-  table_.missRecordCount = kRayTypeCount;
-  table_.hitgroupRecordBase = base + kRadianceHit * sizeof(HeaderOnlyRecord);
-  table_.hitgroupRecordStrideInBytes = sizeof(HeaderOnlyRecord);
-  table_.hitgroupRecordCount = kRayTypeCount;
+  tables_.resize(raygens);
+  for (size_t i = 0; i < raygens; ++i) {
+    OptixShaderBindingTable& table = tables_[i];
+    table.raygenRecord = base + i * sizeof(HeaderOnlyRecord);
+    table.missRecordBase = base + radianceMiss * sizeof(HeaderOnlyRecord);
+    table.missRecordStrideInBytes = sizeof(HeaderOnlyRecord);
+    table.missRecordCount = kRayTypeCount;
+    table.hitgroupRecordBase = base + radianceHit * sizeof(HeaderOnlyRecord);
+    table.hitgroupRecordStrideInBytes = sizeof(HeaderOnlyRecord);
+    table.hitgroupRecordCount = kRayTypeCount;
+  }
 }
 
 Pipeline::~Pipeline() {
   if (pipeline_) optixPipelineDestroy(pipeline_);
   for (OptixProgramGroup group : groups_)
     if (group) optixProgramGroupDestroy(group);
+}
+
+bool Pipeline::has(RaygenProgram program) const {
+  for (RaygenProgram p : programs_)
+    if (p == program) return true;
+  return false;
+}
+
+const OptixShaderBindingTable& Pipeline::bindingTable(RaygenProgram program) const {
+  for (size_t i = 0; i < programs_.size(); ++i)
+    if (programs_[i] == program) return tables_[i];
+  throw std::logic_error("the raygen program is not in this pipeline");
 }
 
 }  // namespace candela::optix

@@ -1,8 +1,10 @@
 #pragma once
-// The OptiX module built from the embedded OptiX-IR, and one pipeline per raygen program with its shader
-// binding table. Separate pipelines keep each launch kind's kernel to its own code: OptiX sizes registers and
-// stacks per pipeline, and the raw-trace ceiling must not carry the path tracer's shading code.
+// The OptiX module built from the embedded OptiX-IR, and pipelines that each hold some of its raygen programs
+// with a shader binding table for each. OptiX compiles and sizes every pipeline on its own, so the raw-trace
+// ceiling can be kept apart from the path tracer's shading code.
 #include <optix_types.h>
+
+#include <vector>
 
 #include "backends/optix/device_buffer.h"
 
@@ -25,23 +27,25 @@ class ProgramModule {
   OptixModule module_ = nullptr;
 };
 
+// A pipeline holding some of the raygen programs, with one shader binding table for each; the tables share
+// the miss and hit-group records.
 class Pipeline {
  public:
-  Pipeline(OptixDeviceContext context, OptixModule module, RaygenProgram program);
+  Pipeline(OptixDeviceContext context, OptixModule module, const std::vector<RaygenProgram>& programs);
   ~Pipeline();
   Pipeline(const Pipeline&) = delete;
   Pipeline& operator=(const Pipeline&) = delete;
 
   OptixPipeline get() const { return pipeline_; }
-  const OptixShaderBindingTable& bindingTable() const { return table_; }
+  bool has(RaygenProgram program) const;
+  const OptixShaderBindingTable& bindingTable(RaygenProgram program) const;
 
  private:
-  static constexpr int kGroupCount = 5;  // raygen, radiance/shadow miss, radiance/shadow hit group
-
-  OptixProgramGroup groups_[kGroupCount] = {};
+  std::vector<RaygenProgram> programs_;
+  std::vector<OptixProgramGroup> groups_;  // the raygen programs in order, then radiance/shadow miss and hit
   OptixPipeline pipeline_ = nullptr;
   DeviceBuffer records_;
-  OptixShaderBindingTable table_ = {};
+  std::vector<OptixShaderBindingTable> tables_;  // one per raygen program
 };
 
 }  // namespace candela::optix

@@ -1,6 +1,7 @@
 #pragma once
 #include "core/sampling.h"
 #include "kernel/bsdf/fresnel.h"
+#include "kernel/bsdf/half_vector_reflection.h"
 #include "kernel/bsdf/lambertian.h"
 #include "kernel/bsdf/lobe_mixture.h"
 
@@ -33,20 +34,13 @@ struct BlinnPhongSpecular {
     return halfVectorPdf(h) / (4.0f * dot(wo, h));
   }
   CANDELA_FN BsdfSample sample(Vec3 wo, float /*uChoice*/, Vec2 u) const {
-    BsdfSample s;
-    if (wo.z <= 0.0f) return s;
+    if (wo.z <= 0.0f) return {};
     // cos(theta_h) = u^(1 / (n + 1)), through sin^2 for precision.
     float sin2ThetaH = u.x > 0.0f ? -expm1f(2.0f * logf(u.x) / (exponent + 1.0f)) : 1.0f;
     float sinThetaH = sqrtf(clampf(sin2ThetaH, 0.0f, 1.0f)), cosThetaH = sqrtf(clampf(1.0f - sin2ThetaH, 0.0f, 1.0f));
     float phi = 2.0f * kPi * u.y;
     Vec3 h{sinThetaH * cosf(phi), sinThetaH * sinf(phi), cosThetaH};
-    if (dot(wo, h) <= 0.0f) return s;
-    s.wi = reflect(wo, h);
-    if (s.wi.z <= 0.0f) return s;
-    s.pdf = pdf(wo, s.wi);
-    s.f = eval(wo, s.wi);
-    s.valid = s.pdf > 0.0f;
-    return s;
+    return reflectAboutHalfVector(*this, wo, h);
   }
 };
 

@@ -2,6 +2,7 @@
 #include "core/sampling.h"
 #include "kernel/bsdf/bsdf_sample.h"
 #include "kernel/bsdf/fresnel.h"
+#include "kernel/bsdf/half_vector_reflection.h"
 #include "kernel/bsdf/ggx.h"
 
 namespace candela {
@@ -68,20 +69,13 @@ struct DisneyClearcoat {
     return d(h.z) * h.z / (4.0f * dot(wo, h));
   }
   CANDELA_FN BsdfSample sample(Vec3 wo, float /*uChoice*/, Vec2 u) const {
-    BsdfSample s;
-    if (wo.z <= 0.0f) return s;
+    if (wo.z <= 0.0f) return {};
     float a2 = alpha * alpha;
     float cosThetaH = sqrtf(fmaxf(0.0f, (1.0f - powf(a2, 1.0f - u.x)) / (1.0f - a2)));
     float sinThetaH = sqrtf(fmaxf(0.0f, 1.0f - cosThetaH * cosThetaH));
     float phi = 2.0f * kPi * u.y;
     Vec3 h{sinThetaH * cosf(phi), sinThetaH * sinf(phi), cosThetaH};
-    if (dot(wo, h) <= 0.0f) return s;
-    s.wi = reflect(wo, h);
-    if (s.wi.z <= 0.0f) return s;
-    s.pdf = pdf(wo, s.wi);
-    s.f = eval(wo, s.wi);
-    s.valid = s.pdf > 0.0f;
-    return s;
+    return reflectAboutHalfVector(*this, wo, h);
   }
 };
 

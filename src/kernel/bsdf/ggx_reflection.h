@@ -2,6 +2,7 @@
 #include "kernel/bsdf/bsdf_sample.h"
 #include "kernel/bsdf/fresnel.h"
 #include "kernel/bsdf/ggx.h"
+#include "kernel/bsdf/half_vector_reflection.h"
 
 namespace candela {
 
@@ -27,15 +28,8 @@ struct GgxReflection {
     return distribution.visibleNormalPdf(wo, h) / (4.0f * dot(wo, h));
   }
   CANDELA_FN BsdfSample sample(Vec3 wo, float /*uChoice*/, Vec2 u) const {
-    BsdfSample s;
-    if (wo.z <= 0.0f) return s;
-    Vec3 h = distribution.sampleVisibleNormal(wo, u);
-    s.wi = reflect(wo, h);
-    if (s.wi.z <= 0.0f) return s;
-    s.pdf = pdf(wo, s.wi);
-    s.f = eval(wo, s.wi);
-    s.valid = s.pdf > 0.0f;
-    return s;
+    if (wo.z <= 0.0f) return {};
+    return reflectAboutHalfVector(*this, wo, distribution.sampleVisibleNormal(wo, u));
   }
 };
 
