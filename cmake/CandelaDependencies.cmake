@@ -14,6 +14,7 @@ find_package(CLI11 REQUIRED CONFIG)
 find_package(nlohmann_json REQUIRED CONFIG)
 find_package(OpenEXR REQUIRED CONFIG)
 pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
+pkg_check_modules(XXHASH REQUIRED IMPORTED_TARGET libxxhash)
 # Single-header libraries: candela compiles their implementations itself (src/scene/loaders/*_impl.cpp).
 find_path(TINYOBJLOADER_INCLUDE_DIR tiny_obj_loader.h REQUIRED)
 find_path(TINYGLTF_INCLUDE_DIR tiny_gltf.h REQUIRED)

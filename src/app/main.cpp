@@ -21,12 +21,23 @@ using namespace candela;
 
 namespace {
 
+// The scene cache is on for the commands; the library's default is off.
+void addSceneCacheOptions(CLI::App& cmd, SceneCacheSettings& cache) {
+  cache.enabled = true;
+  cmd.add_flag_callback("--no-cache", [&cache] { cache.enabled = false; },
+                        "Load models afresh, neither reading nor writing the scene cache");
+  cmd.add_option("--cache-dir", cache.directory,
+                 "Folder of the scene cache (default: $CANDELA_CACHE_DIR, else $XDG_CACHE_HOME/candela, else "
+                 "~/.cache/candela)");
+}
+
 void addRenderOptions(CLI::App& cmd, RenderJob& job) {
   std::string scenes;
   for (const std::string& n : builtinSceneNames()) scenes += (scenes.empty() ? "" : ", ") + n;
   cmd.add_option("scene", job.sceneSpec, "Scene file (.obj, .gltf, .glb, .json) or built-in scene (" + scenes + ")")
       ->capture_default_str();
   cmd.add_option("--env", job.environmentPath, "Environment map (.hdr or .exr) that lights the scene");
+  addSceneCacheOptions(cmd, job.sceneCache);
   cmd.add_option("--spp", job.samplesPerPixel, "Samples per pixel")
       ->check(CLI::Range(1u, 1u << 24))
       ->capture_default_str();
@@ -158,9 +169,9 @@ int runBench(const RenderJob& job) {
   return 0;
 }
 
-int runLoad(const std::string& spec) {
+int runLoad(const std::string& spec, const SceneCacheSettings& cache) {
   auto start = std::chrono::steady_clock::now();
-  Scene scene = loadScene(spec);
+  Scene scene = loadScene(spec, {{}, cache});
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   size_t vertices = 0;
   for (const Mesh& m : scene.meshes) vertices += m.positions.size();
@@ -185,6 +196,7 @@ void addViewOptions(CLI::App& cmd, ViewerOptions& options, std::string& toneMapp
   cmd.add_option("scene", options.sceneSpec, "Scene file (.obj, .gltf, .glb, .json) or built-in scene (" + scenes + ")")
       ->capture_default_str();
   cmd.add_option("--env", options.environmentPath, "Environment map (.hdr or .exr) that lights the scene");
+  addSceneCacheOptions(cmd, options.sceneCache);
   cmd.add_option("--backend", options.backend, "auto, cpu or optix (in this build: " + availableBackends() + ")")
       ->check(CLI::IsMember({"auto", "cpu", "optix"}))
       ->capture_default_str();
@@ -298,6 +310,8 @@ int main(int argc, char** argv) {
   std::string inspectSpec;
   CLI::App* inspect = app.add_subcommand("load", "Load a scene and print its size and loading time as one JSON object");
   inspect->add_option("scene", inspectSpec, "Scene file or built-in scene")->required();
+  SceneCacheSettings inspectCache;
+  addSceneCacheOptions(*inspect, inspectCache);
 
   try {
     app.parse(argc, argv);
@@ -318,7 +332,7 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (*inspect) return runLoad(inspectSpec);
+    if (*inspect) return runLoad(inspectSpec, inspectCache);
     if (*render) {
       display.toneMapper = parseToneMapper(toneMapper);
       return runRender(renderJob, output, display);

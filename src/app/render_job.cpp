@@ -65,7 +65,7 @@ RenderOutcome runRenderJob(const RenderJob& job, bool showProgress) {
     throw std::runtime_error("--denoise optix needs the OptiX backend, which is not in this build (see README, "
                              "'GPU backend')");
 #endif
-  Scene scene = loadScene(job.sceneSpec, {job.environmentPath});
+  Scene scene = loadScene(job.sceneSpec, {job.environmentPath, job.sceneCache});
   applyOverrides(scene.materials, job.materialOverrides);
   RenderJob hinted = job;
   const RenderHints& hints = scene.renderHints;

@@ -4,6 +4,7 @@
 
 #include "backends/backend.h"
 #include "image/aov_io.h"
+#include "scene/cache/scene_cache.h"
 #include "scene/material_overrides.h"
 #include "scene/scene.h"
 
@@ -12,6 +13,7 @@ namespace candela {
 struct RenderJob {
   std::string sceneSpec = "cornell-box";
   std::string environmentPath;  // replaces the scene's environment when set
+  SceneCacheSettings sceneCache;
   // Which settings the command line gave; the others may come from the scene file's render hints.
   struct {
     bool width = false, height = false, samplesPerPixel = false, maxDepth = false;

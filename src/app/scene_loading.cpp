@@ -22,16 +22,18 @@ std::string lowerExtension(const std::string& path) {
   return ext;
 }
 
-Scene loadModel(const std::string& path, LoadWarnings& warnings) {
-  std::string ext = lowerExtension(path);
-  return ext == ".obj" ? loadObj(path, warnings) : loadGltf(path, warnings);
+Scene loadModel(const std::string& path, const SceneCacheSettings& cache, LoadWarnings& warnings) {
+  return loadThroughSceneCache(path, cache, warnings, [&](LoadWarnings& w) {
+    return lowerExtension(path) == ".obj" ? loadObj(path, w) : loadGltf(path, w);
+  });
 }
 
-Scene loadFile(const std::string& path, LoadWarnings& warnings) {
+Scene loadFile(const std::string& path, const SceneCacheSettings& cache, LoadWarnings& warnings) {
   std::string ext = lowerExtension(path);
-  if (ext == ".obj") return loadObj(path, warnings);
-  if (ext == ".gltf" || ext == ".glb") return loadGltf(path, warnings);
-  if (ext == ".json") return loadSceneFile(path, &loadModel, warnings);
+  if (ext == ".obj" || ext == ".gltf" || ext == ".glb") return loadModel(path, cache, warnings);
+  if (ext == ".json")
+    return loadSceneFile(
+        path, [&](const std::string& model, LoadWarnings& w) { return loadModel(model, cache, w); }, warnings);
   std::string names;
   for (const std::string& n : builtinSceneNames()) names += (names.empty() ? "" : ", ") + n;
   if (!std::filesystem::exists(path))
@@ -67,7 +69,7 @@ void frameSceneBounds(Scene& scene) {
 Scene loadScene(const std::string& spec, const SceneLoadOptions& options) {
   Scene scene;
   LoadWarnings warnings;
-  if (!makeBuiltinScene(spec, scene)) scene = loadFile(spec, warnings);
+  if (!makeBuiltinScene(spec, scene)) scene = loadFile(spec, options.cache, warnings);
   if (!options.environmentPath.empty()) {
     Environment env;
     env.map = loadEnvironmentImage(options.environmentPath);

@@ -1,12 +1,14 @@
 #pragma once
 #include <string>
 
+#include "scene/cache/scene_cache.h"
 #include "scene/scene.h"
 
 namespace candela {
 
 struct SceneLoadOptions {
   std::string environmentPath;  // an .hdr or .exr map that replaces the scene's environment; empty: keep it
+  SceneCacheSettings cache = {};  // for the models (.obj, .gltf, .glb), also those a scene file names
 };
 
 // A built-in scene name or a scene file (.obj, .gltf, .glb, .json), chosen by extension. Warnings go to stderr,

@@ -86,6 +86,9 @@ struct Scene {
   CameraDescription camera;
   RenderHints renderHints;
   bool cameraMissing = false;  // the input had no camera: `camera` is to be framed around the scene's bounds
+  // The files the scene was read from: the model, its material libraries, buffers and images (what the scene
+  // cache checks for changes).
+  std::vector<std::string> inputFiles;
 
   size_t triangleCount() const;  // over instances
 };

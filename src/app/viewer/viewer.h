@@ -3,12 +3,14 @@
 #include <string>
 
 #include "app/viewer/post_settings.h"
+#include "scene/cache/scene_cache.h"
 
 namespace candela {
 
 struct ViewerOptions {
   std::string sceneSpec = "cornell-box";
   std::string environmentPath;  // an .hdr or .exr map that lights the first scene instead of its own
+  SceneCacheSettings sceneCache;
   std::string backend = "auto";
   uint32_t width = 960;  // of the image; the panel sits beside it
   uint32_t height = 720;

@@ -79,6 +79,7 @@ std::string percentDecode(const std::string& uri) {
 
 struct FileAccess {
   std::string baseDir;  // empty: nothing outside the given bytes may be read
+  std::vector<std::string> filesRead;  // buffers, for Scene::inputFiles
 };
 
 bool fileExists(const std::string& path, void* user) {
@@ -88,7 +89,9 @@ bool fileExists(const std::string& path, void* user) {
 }
 std::string expandFilePath(const std::string& path, void*) { return path; }
 bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
-  if (static_cast<FileAccess*>(user)->baseDir.empty()) return false;
+  auto* access = static_cast<FileAccess*>(user);
+  if (access->baseDir.empty()) return false;
+  access->filesRead.push_back(path);
   try {
     *out = readFileBytes(path);
     return true;
@@ -419,7 +422,7 @@ Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, c
     failLoad(name, "JSON nests deeper than " + std::to_string(kMaxJsonDepth) + " levels");
 
   tinygltf::TinyGLTF loader;
-  FileAccess access{baseDir};
+  FileAccess access{baseDir, {}};
   loader.SetFsCallbacks({&fileExists, &expandFilePath, &readWholeFile, &writeWholeFile, &access});
   loader.SetImageLoader(&keepEncodedImage, nullptr);
   tinygltf::Model model;
@@ -432,7 +435,9 @@ Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, c
   std::string line;
   while (std::getline(lines, line))
     if (!firstLine(line).empty()) warnings.add(name, firstLine(line));
-  return GltfSceneBuilder(model, name, baseDir, warnings).build();
+  Scene scene = GltfSceneBuilder(model, name, baseDir, warnings).build();
+  scene.inputFiles.insert(scene.inputFiles.begin(), access.filesRead.begin(), access.filesRead.end());
+  return scene;
 }
 
 }  // namespace
@@ -440,7 +445,9 @@ Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, c
 Scene loadGltf(const std::string& path, LoadWarnings& warnings) {
   std::vector<uint8_t> bytes = readFileBytes(path);
   std::string baseDir = fs::path(path).parent_path().string();
-  return loadFromBytes(path, bytes.data(), bytes.size(), baseDir.empty() ? "." : baseDir, warnings);
+  Scene scene = loadFromBytes(path, bytes.data(), bytes.size(), baseDir.empty() ? "." : baseDir, warnings);
+  scene.inputFiles.insert(scene.inputFiles.begin(), path);
+  return scene;
 }
 
 Scene loadGltfBytes(const std::string& name, const uint8_t* data, size_t size, LoadWarnings& warnings) {

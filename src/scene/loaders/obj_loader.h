@@ -3,18 +3,21 @@
 #include <string_view>
 
 #include "scene/loaders/load_diagnostics.h"
+#include "scene/loaders/obj_geometry_reader.h"
 #include "scene/scene.h"
 
 namespace candela {
 
-// Loads a Wavefront OBJ file, the MTL libraries it names and their textures, through tinyobjloader: polygons
-// are triangulated, relative (negative) references resolved, every object and group goes into one mesh with a
-// material per triangle, and missing normals are generated (see normal_generation.h). UVs follow the Mesh
-// convention (v = 0 at the top of the image), so OBJ's v is flipped. A missing .mtl or texture is a warning;
-// malformed geometry throws LoadError naming the file and line.
+// Loads a Wavefront OBJ file, the MTL libraries it names (parsed by tinyobjloader) and their textures: the
+// geometry is parsed in parallel (obj_geometry_reader.h), polygons are triangulated, relative (negative)
+// references resolved, every object and group goes into one mesh with a material per triangle, and missing
+// normals are generated (obj_mesh_builder.h). UVs follow the Mesh convention (v = 0 at the top of the image),
+// so OBJ's v is flipped. A missing .mtl or texture is a warning; malformed geometry throws LoadError naming the
+// file and line.
 Scene loadObj(const std::string& path, LoadWarnings& warnings);
 
 // The same for OBJ text in memory, with no material libraries; `name` stands for the file in messages.
-Scene loadObjText(const std::string& name, std::string_view text, LoadWarnings& warnings);
+Scene loadObjText(const std::string& name, std::string_view text, LoadWarnings& warnings,
+                  const ObjReadOptions& options = {});
 
 }  // namespace candela

@@ -169,6 +169,7 @@ void appendScene(Scene& scene, Scene&& part, const Affine3x4& transform) {
     scene.materialNames.push_back(part.materialNames[i]);
   }
   for (Texture& t : part.textures) scene.textures.push_back(std::move(t));
+  scene.inputFiles.insert(scene.inputFiles.end(), part.inputFiles.begin(), part.inputFiles.end());
   glm::mat4 outer = toMat4(transform);
   for (const Instance& inst : part.instances)
     scene.instances.push_back({inst.meshId + meshBase, toAffine(outer * toMat4(inst.objectToWorld))});

@@ -51,6 +51,7 @@ void TextureTable::finish(Scene& scene, size_t firstMaterial, LoadWarnings& warn
 
   std::vector<int32_t> finalIndex(requests_.size(), kNoTexture);
   for (size_t i = 0; i < requests_.size(); ++i) {
+    if (!requests_[i].path.empty()) scene.inputFiles.push_back(requests_[i].path);
     if (!decoded[i]) {
       warnings.messages.push_back(failures[i] + " (the texture is left out)");
       continue;

@@ -20,8 +20,8 @@ class TextureTable {
   int32_t fromMemory(const std::string& key, const std::string& name, std::vector<uint8_t> bytes, bool srgb,
                      TextureWrap wrap = TextureWrap::Repeat);
 
-  // Decodes everything requested, appends the textures to `scene` and points the texture fields of
-  // scene.materials[firstMaterial...] at them.
+  // Decodes everything requested, appends the textures to `scene` (and their files to scene.inputFiles) and
+  // points the texture fields of scene.materials[firstMaterial...] at them.
   void finish(Scene& scene, size_t firstMaterial, LoadWarnings& warnings);
 
  private:

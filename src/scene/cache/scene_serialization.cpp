@@ -1,0 +1,129 @@
+#include "scene/cache/scene_serialization.h"
+
+namespace candela {
+
+namespace {
+
+static_assert(std::is_trivially_copyable_v<Material> && std::is_trivially_copyable_v<Instance> &&
+              std::is_trivially_copyable_v<CameraDescription>);
+
+void writeTexture(BinaryWriter& out, const Texture& t) {
+  out.string(t.name);
+  out.value(t.width);
+  out.value(t.height);
+  out.value(t.channels);
+  out.value(uint8_t(t.srgb));
+  out.value(t.wrap);
+  out.array(t.bytes);
+  out.array(t.floats);
+}
+
+void readTexture(BinaryReader& in, Texture& t) {
+  uint8_t srgb = 0;
+  in.string(t.name);
+  in.value(t.width);
+  in.value(t.height);
+  in.value(t.channels);
+  in.value(srgb);
+  in.value(t.wrap);
+  in.array(t.bytes);
+  in.array(t.floats);
+  t.srgb = srgb != 0;
+}
+
+template <class T>
+void writeOptional(BinaryWriter& out, const std::optional<T>& v) {
+  out.value(uint8_t(v.has_value()));
+  if (v) out.value(*v);
+}
+
+template <class T>
+void readOptional(BinaryReader& in, std::optional<T>& v) {
+  uint8_t present = 0;
+  in.value(present);
+  v.reset();
+  if (present) {
+    T x{};
+    in.value(x);
+    v = x;
+  }
+}
+
+// The least a mesh, a texture or a string takes in the file, for checking counts before allocating.
+constexpr uint64_t kMeshBytes = 7 * sizeof(uint64_t);
+constexpr uint64_t kTextureBytes = 3 * sizeof(uint64_t);
+constexpr uint64_t kStringBytes = sizeof(uint64_t);
+
+}  // namespace
+
+void writeScene(BinaryWriter& out, const Scene& s) {
+  out.string(s.name);
+  out.value(uint64_t(s.meshes.size()));
+  for (const Mesh& m : s.meshes) {
+    out.string(m.name);
+    out.array(m.positions);
+    out.array(m.normals);
+    out.array(m.uvs);
+    out.array(m.tangents);
+    out.array(m.indices);
+    out.array(m.triangleMaterials);
+  }
+  out.array(s.instances);
+  out.array(s.materials);
+  out.value(uint64_t(s.materialNames.size()));
+  for (const std::string& n : s.materialNames) out.string(n);
+  out.value(uint64_t(s.textures.size()));
+  for (const Texture& t : s.textures) writeTexture(out, t);
+  out.value(s.environment.radiance);
+  writeTexture(out, s.environment.map);
+  out.value(s.environment.intensity);
+  out.value(s.environment.rotationDegrees);
+  out.value(uint8_t(s.environment.visibleToCamera));
+  out.value(s.camera);
+  writeOptional(out, s.renderHints.width);
+  writeOptional(out, s.renderHints.height);
+  writeOptional(out, s.renderHints.samplesPerPixel);
+  writeOptional(out, s.renderHints.maxDepth);
+  out.value(uint8_t(s.cameraMissing));
+  out.value(uint64_t(s.inputFiles.size()));
+  for (const std::string& f : s.inputFiles) out.string(f);
+}
+
+bool readScene(BinaryReader& in, Scene& s) {
+  in.string(s.name);
+  s.meshes.resize(size_t(in.count(kMeshBytes)));
+  for (Mesh& m : s.meshes) {
+    in.string(m.name);
+    in.array(m.positions);
+    in.array(m.normals);
+    in.array(m.uvs);
+    in.array(m.tangents);
+    in.array(m.indices);
+    in.array(m.triangleMaterials);
+  }
+  in.array(s.instances);
+  in.array(s.materials);
+  s.materialNames.resize(size_t(in.count(kStringBytes)));
+  for (std::string& n : s.materialNames) in.string(n);
+  s.textures.resize(size_t(in.count(kTextureBytes)));
+  for (Texture& t : s.textures) readTexture(in, t);
+  uint8_t flag = 0;
+  in.value(s.environment.radiance);
+  readTexture(in, s.environment.map);
+  in.value(s.environment.intensity);
+  in.value(s.environment.rotationDegrees);
+  in.value(flag);
+  s.environment.visibleToCamera = flag != 0;
+  in.value(s.camera);
+  readOptional(in, s.renderHints.width);
+  readOptional(in, s.renderHints.height);
+  readOptional(in, s.renderHints.samplesPerPixel);
+  readOptional(in, s.renderHints.maxDepth);
+  in.value(flag);
+  s.cameraMissing = flag != 0;
+  s.inputFiles.resize(size_t(in.count(kStringBytes)));
+  for (std::string& f : s.inputFiles) in.string(f);
+  return in.ok();
+}
+
+}  // namespace candela

@@ -1,0 +1,96 @@
+#include "scene/loaders/obj_material_libraries.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace candela {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The names after "mtllib": separated by spaces, a '\' taking the next character as it is.
+std::vector<std::string> libraryNames(std::string_view text) {
+  std::vector<std::string> names;
+  std::string name;
+  for (size_t i = 0; i < text.size(); ++i) {
+    char c = text[i];
+    if (c == '\\' && i + 1 < text.size()) {
+      name += text[++i];
+    } else if (c == ' ' || c == '\t') {
+      if (!name.empty()) names.push_back(std::move(name));
+      name.clear();
+    } else {
+      name += c;
+    }
+  }
+  if (!name.empty()) names.push_back(std::move(name));
+  return names;
+}
+
+}  // namespace
+
+ObjMaterialLibraries::ObjMaterialLibraries(std::string objFile, std::optional<std::string> directory,
+                                           LoadWarnings& warnings)
+    : objFile_(std::move(objFile)), directory_(std::move(directory)), warnings_(warnings) {}
+
+void ObjMaterialLibraries::loadLibraries(size_t line, std::string_view text) {
+  if (!directory_) return;
+  std::vector<std::string> names = libraryNames(text);
+  if (names.empty()) warnings_.add(objFile_ + ":" + std::to_string(line), "'mtllib' names no file");
+  for (const std::string& name : names) load(line, name);
+}
+
+void ObjMaterialLibraries::load(size_t line, const std::string& name) {
+  std::string file = name;
+  std::replace(file.begin(), file.end(), '\\', '/');
+  fs::path path = (fs::path(*directory_) / file).lexically_normal();
+  if (std::find(files_.begin(), files_.end(), path.string()) != files_.end()) return;
+  files_.push_back(path.string());
+  std::ifstream in(path, std::ios::binary);
+  std::error_code ec;
+  if (!in || fs::is_directory(path, ec)) {
+    warnings_.add(objFile_ + ":" + std::to_string(line),
+                  "material library '" + name + "' not found; its materials are replaced by grey");
+    return;
+  }
+  std::string mtlWarnings, mtlErrors;
+  tinyobj::LoadMtl(&index_, &materials_, &in, &mtlWarnings, &mtlErrors);
+  forwardMessages(path.string(), mtlWarnings + mtlErrors);
+  sources_.resize(materials_.size(), path.string());
+}
+
+// tinyobjloader's messages, one line each, repeated ones counted.
+void ObjMaterialLibraries::forwardMessages(const std::string& file, const std::string& text) {
+  std::map<std::string, size_t> counts;
+  std::vector<std::string> order;
+  std::istringstream lines(text);
+  std::string line;
+  while (std::getline(lines, line)) {
+    while (!line.empty() && (line.back() == '.' || line.back() == ' ' || line.back() == '\r')) line.pop_back();
+    if (line.empty()) continue;
+    if (counts[line]++ == 0) order.push_back(line);
+  }
+  for (const std::string& l : order) warnings_.add(file, counts[l] > 1 ? l + " (" + std::to_string(counts[l]) + " times)" : l);
+}
+
+uint32_t ObjMaterialLibraries::find(size_t line, std::string_view name) {
+  auto it = index_.find(std::string(name));
+  if (it != index_.end()) return uint32_t(it->second);
+  Unknown& u = unknown_[std::string(name)];
+  if (u.uses++ == 0) u.firstLine = line;
+  return kObjNoMaterial;
+}
+
+void ObjMaterialLibraries::reportUnknownNames() {
+  std::vector<std::pair<std::string, Unknown>> byLine(unknown_.begin(), unknown_.end());
+  std::sort(byLine.begin(), byLine.end(), [](const auto& a, const auto& b) { return a.second.firstLine < b.second.firstLine; });
+  for (const auto& [name, u] : byLine)
+    warnings_.add(objFile_ + ":" + std::to_string(u.firstLine),
+                  "material '" + name + "' is in no material library; its faces are grey" +
+                      (u.uses > 1 ? " (" + std::to_string(u.uses) + " times)" : std::string()));
+}
+
+}  // namespace candela

@@ -1,0 +1,48 @@
+#pragma once
+#include <tiny_obj_loader.h>
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scene/loaders/load_diagnostics.h"
+#include "scene/loaders/obj_geometry_reader.h"
+
+namespace candela {
+
+// The material libraries an OBJ file names, parsed by tinyobjloader's MTL reader, and the lookups of the file's
+// "usemtl" statements. Every library of an "mtllib" statement is read, relative to the OBJ file's directory (a
+// '\' escapes a space in a name); a missing one is a warning, and so is a material name found in none.
+class ObjMaterialLibraries : public ObjMaterialResolver {
+ public:
+  // Without a `directory` (text that is not a file) "mtllib" statements are ignored.
+  ObjMaterialLibraries(std::string objFile, std::optional<std::string> directory, LoadWarnings& warnings);
+
+  void loadLibraries(size_t line, std::string_view names) override;
+  uint32_t find(size_t line, std::string_view name) override;
+
+  // Warns about the material names that were not found, once per name.
+  void reportUnknownNames();
+
+  const std::vector<tinyobj::material_t>& materials() const { return materials_; }
+  const std::string& sourceOf(size_t material) const { return sources_[material]; }  // the library it came from
+  const std::vector<std::string>& libraryFiles() const { return files_; }  // those read or looked for
+
+ private:
+  void load(size_t line, const std::string& name);
+  void forwardMessages(const std::string& file, const std::string& text);
+
+  std::string objFile_;
+  std::optional<std::string> directory_;
+  LoadWarnings& warnings_;
+  std::vector<tinyobj::material_t> materials_;
+  std::map<std::string, int> index_;
+  std::vector<std::string> sources_, files_;
+  struct Unknown {
+    size_t firstLine = 0, uses = 0;
+  };
+  std::map<std::string, Unknown> unknown_;
+};
+
+}  // namespace candela

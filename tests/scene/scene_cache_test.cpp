@@ -1,0 +1,339 @@
+// The scene cache: a round trip gives the same scene, a changed input makes the cache stale, and no truncated
+// or corrupted cache file is read as a scene or crashes the reader.
+#include <gtest/gtest.h>
+
+#include <stb/stb_image_write.h>
+
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <random>
+
+#include "scene/cache/scene_cache.h"
+#include "scene/loaders/obj_loader.h"
+#include "scene/scene_test_files.h"
+
+namespace candela {
+namespace {
+
+namespace fs = std::filesystem;
+using test::TempFolder;
+
+template <class T>
+void expectSameBytes(const std::vector<T>& a, const std::vector<T>& b, const char* what) {
+  ASSERT_EQ(a.size(), b.size()) << what;
+  if (!a.empty()) {
+    EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(T)), 0) << what;
+  }
+}
+
+void expectSameTexture(const Texture& a, const Texture& b) {
+  EXPECT_EQ(a.name, b.name);
+  EXPECT_EQ(a.width, b.width);
+  EXPECT_EQ(a.height, b.height);
+  EXPECT_EQ(a.channels, b.channels);
+  EXPECT_EQ(a.srgb, b.srgb);
+  EXPECT_EQ(a.wrap, b.wrap);
+  expectSameBytes(a.bytes, b.bytes, "texture bytes");
+  expectSameBytes(a.floats, b.floats, "texture floats");
+}
+
+void expectSameScene(const Scene& a, const Scene& b) {
+  EXPECT_EQ(a.name, b.name);
+  ASSERT_EQ(a.meshes.size(), b.meshes.size());
+  for (size_t i = 0; i < a.meshes.size(); ++i) {
+    const Mesh &m = a.meshes[i], &n = b.meshes[i];
+    EXPECT_EQ(m.name, n.name);
+    expectSameBytes(m.positions, n.positions, "positions");
+    expectSameBytes(m.normals, n.normals, "normals");
+    expectSameBytes(m.uvs, n.uvs, "uvs");
+    expectSameBytes(m.tangents, n.tangents, "tangents");
+    EXPECT_EQ(m.indices, n.indices);
+    EXPECT_EQ(m.triangleMaterials, n.triangleMaterials);
+  }
+  expectSameBytes(a.instances, b.instances, "instances");
+  expectSameBytes(a.materials, b.materials, "materials");
+  EXPECT_EQ(a.materialNames, b.materialNames);
+  ASSERT_EQ(a.textures.size(), b.textures.size());
+  for (size_t i = 0; i < a.textures.size(); ++i) expectSameTexture(a.textures[i], b.textures[i]);
+  EXPECT_EQ(std::memcmp(&a.environment.radiance, &b.environment.radiance, sizeof(Vec3)), 0);
+  expectSameTexture(a.environment.map, b.environment.map);
+  EXPECT_EQ(a.environment.intensity, b.environment.intensity);
+  EXPECT_EQ(a.environment.rotationDegrees, b.environment.rotationDegrees);
+  EXPECT_EQ(a.environment.visibleToCamera, b.environment.visibleToCamera);
+  EXPECT_EQ(std::memcmp(&a.camera, &b.camera, sizeof(CameraDescription)), 0);
+  EXPECT_EQ(a.renderHints.width, b.renderHints.width);
+  EXPECT_EQ(a.renderHints.height, b.renderHints.height);
+  EXPECT_EQ(a.renderHints.samplesPerPixel, b.renderHints.samplesPerPixel);
+  EXPECT_EQ(a.renderHints.maxDepth, b.renderHints.maxDepth);
+  EXPECT_EQ(a.cameraMissing, b.cameraMissing);
+  EXPECT_EQ(a.inputFiles, b.inputFiles);
+}
+
+// Every field set to something other than its default.
+Scene richScene() {
+  Scene s;
+  s.name = "rich";
+  for (int k = 0; k < 2; ++k) {
+    Mesh m;
+    m.name = "mesh" + std::to_string(k);
+    m.positions = {{0, 0, 0}, {1, 0, float(k)}, {0, 1, 0}, {1, 1, 1}};
+    m.normals = {{0, 0, 1}, {0, 0, 1}, {0, 1, 0}, {1, 0, 0}};
+    if (k == 0) m.uvs = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
+    if (k == 0) m.tangents = {{1, 0, 0, 1}, {1, 0, 0, -1}, {1, 0, 0, 1}, {1, 0, 0, 1}};
+    m.indices = {0, 1, 2, 1, 3, 2};
+    m.triangleMaterials = {uint32_t(k), 1};
+    s.meshes.push_back(m);
+  }
+  Instance moved{1, Affine3x4{}};
+  moved.objectToWorld.m[3] = 5.0f;
+  s.instances = {{0, Affine3x4{}}, moved};
+  Material glass;
+  glass.type = MaterialType::Glass;
+  glass.ior = 1.33f;
+  glass.baseColorTexture = 0;
+  Material emitter;
+  emitter.emission = {4, 3, 2};
+  emitter.normalTexture = 1;
+  s.materials = {glass, emitter};
+  s.materialNames = {"glass", "lamp"};
+  Texture bytes{"albedo.png", 2, 1, 4, true, TextureWrap::Clamp, {1, 2, 3, 4, 5, 6, 7, 8}, {}};
+  Texture floats{"normal.exr", 1, 1, 3, false, TextureWrap::Mirror, {}, {0.5f, 0.25f, 1.0f}};
+  s.textures = {bytes, floats};
+  s.environment.radiance = {0.1f, 0.2f, 0.3f};
+  s.environment.map = {"sky.hdr", 2, 1, 3, false, TextureWrap::Repeat, {}, {1, 2, 3, 4, 5, 6}};
+  s.environment.intensity = 2.5f;
+  s.environment.rotationDegrees = 90;
+  s.environment.visibleToCamera = false;
+  s.camera.eye = {1, 2, 3};
+  s.camera.apertureRadius = 0.1f;
+  s.renderHints.width = 320;
+  s.renderHints.maxDepth = 4;
+  s.cameraMissing = true;
+  s.inputFiles = {"model.obj", "model.mtl"};
+  return s;
+}
+
+std::string readFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+// A new file rather than a truncated one: ext4 flushes a file rewritten through truncation when it is closed,
+// which makes a loop of rewrites take seconds.
+void writeFile(const std::string& path, const std::string& bytes) {
+  fs::remove(path);
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+
+TEST(SceneCache, RoundTripGivesTheSameScene) {
+  TempFolder dir;
+  const std::string model = dir.write("model.obj", "unused: the key only needs the file to exist");
+  const std::string cache = sceneCacheFile(dir.file("cache"), model);
+  const Scene scene = richScene();
+  writeSceneCache(cache, model, scene, {"model.obj:3: a warning"});
+  CachedScene read;
+  ASSERT_EQ(readSceneCache(cache, model, read), SceneCacheRead::Hit);
+  expectSameScene(scene, read.scene);
+  EXPECT_EQ(read.warnings, std::vector<std::string>{"model.obj:3: a warning"});
+  // No temporary file is left behind.
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir.file("cache")), fs::directory_iterator()), 1);
+}
+
+// An OBJ with a material library and a texture, loaded through the cache.
+struct CachedObj {
+  TempFolder dir;
+  std::string model, library, texture, cacheDirectory;
+  CachedObj() {
+    std::vector<uint8_t> pixels(4 * 4 * 3, 128);
+    texture = dir.file("wood.png");
+    stbi_write_png(texture.c_str(), 4, 4, 3, pixels.data(), 12);
+    library = dir.write("m.mtl", "newmtl wood\nKd 1 1 1\nmap_Kd wood.png\n");
+    model = dir.write("m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl wood\nf 1 2 3\nusemtl nowhere\nf 1 3 2\n");
+    cacheDirectory = dir.file("cache");
+  }
+  Scene load(LoadWarnings& warnings, int* freshLoads = nullptr) const {
+    return loadThroughSceneCache(model, {true, cacheDirectory}, warnings, [&](LoadWarnings& w) {
+      if (freshLoads) ++*freshLoads;
+      return loadObj(model, w);
+    });
+  }
+  SceneCacheRead status() const {
+    CachedScene ignored;
+    return readSceneCache(sceneCacheFile(cacheDirectory, model), model, ignored);
+  }
+};
+
+TEST(SceneCache, SecondLoadComesFromTheCacheWithItsWarnings) {
+  CachedObj obj;
+  int fresh = 0;
+  LoadWarnings first, second;
+  Scene a = obj.load(first, &fresh);
+  Scene b = obj.load(second, &fresh);
+  EXPECT_EQ(fresh, 1);
+  expectSameScene(a, b);
+  ASSERT_FALSE(first.messages.empty());
+  EXPECT_EQ(first.messages, second.messages);
+  EXPECT_EQ(a.inputFiles, (std::vector<std::string>{obj.model, obj.library, obj.texture}));
+}
+
+TEST(SceneCache, ChangedInputsMakeTheCacheStale) {
+  CachedObj obj;
+  LoadWarnings w;
+  auto reload = [&] {
+    obj.load(w);
+    ASSERT_EQ(obj.status(), SceneCacheRead::Hit);
+  };
+  reload();
+  // The model's modification time alone.
+  fs::last_write_time(obj.model, fs::last_write_time(obj.model) + std::chrono::seconds(1));
+  EXPECT_EQ(obj.status(), SceneCacheRead::Stale);
+  reload();
+  // The model's size, with the modification time put back.
+  auto time = fs::last_write_time(obj.model);
+  writeFile(obj.model, readFile(obj.model) + "# more\n");
+  fs::last_write_time(obj.model, time);
+  EXPECT_EQ(obj.status(), SceneCacheRead::Stale);
+  reload();
+  // The material library, and the texture.
+  fs::last_write_time(obj.library, fs::last_write_time(obj.library) - std::chrono::seconds(5));
+  EXPECT_EQ(obj.status(), SceneCacheRead::Stale);
+  reload();
+  fs::remove(obj.texture);
+  EXPECT_EQ(obj.status(), SceneCacheRead::Stale);
+}
+
+TEST(SceneCache, AddingAMissingLibraryMakesTheCacheStale) {
+  TempFolder dir;
+  const std::string model = dir.write("m.obj", "mtllib later.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  const SceneCacheSettings settings{true, dir.file("cache")};
+  LoadWarnings w;
+  auto load = [&](LoadWarnings& lw) { return loadObj(model, lw); };
+  loadThroughSceneCache(model, settings, w, load);
+  CachedScene cached;
+  ASSERT_EQ(readSceneCache(sceneCacheFile(settings.directory, model), model, cached), SceneCacheRead::Hit);
+  dir.write("later.mtl", "newmtl red\nKd 1 0 0\n");
+  EXPECT_EQ(readSceneCache(sceneCacheFile(settings.directory, model), model, cached), SceneCacheRead::Stale);
+}
+
+TEST(SceneCache, TruncatedCachesAreDamaged) {
+  TempFolder dir;
+  const std::string model = dir.write("model.obj", "x");
+  const std::string cache = dir.file("model.scene");
+  writeSceneCache(cache, model, richScene(), {"w"});
+  const std::string whole = readFile(cache);
+  for (size_t n = 0; n < whole.size(); ++n) {
+    writeFile(cache, whole.substr(0, n));
+    CachedScene read;
+    EXPECT_EQ(readSceneCache(cache, model, read), SceneCacheRead::Damaged) << "truncated to " << n;
+  }
+  writeFile(cache, whole + "x");
+  CachedScene read;
+  EXPECT_EQ(readSceneCache(cache, model, read), SceneCacheRead::Damaged) << "a byte too many";
+}
+
+// Random corruptions of a small cache file: flipped bits, overwritten bytes, huge counts, cut or inserted
+// pieces. None may be read as a scene, crash the reader or make it allocate beyond the file's size.
+TEST(SceneCache, CorruptedCachesAreNeverReadAsScenes) {
+  TempFolder dir;
+  const std::string model = dir.write("model.obj", "x");
+  const std::string cache = dir.file("model.scene");
+  writeSceneCache(cache, model, richScene(), {"w"});
+  const std::string whole = readFile(cache);
+  std::mt19937 rng(12345);
+  auto position = [&](size_t size) { return std::uniform_int_distribution<size_t>(0, size - 1)(rng); };
+  for (int trial = 0; trial < 3000; ++trial) {
+    std::string bytes = whole;
+    const int edits = 1 + trial % 3;
+    for (int e = 0; e < edits; ++e) {
+      switch (rng() % 5) {
+        case 0: bytes[position(bytes.size())] ^= char(1 << (rng() % 8)); break;
+        case 1: bytes[position(bytes.size())] = char(rng()); break;
+        case 2: {  // a count or size made huge
+          uint64_t huge = uint64_t(rng()) << (32 + rng() % 31);
+          size_t at = position(bytes.size() - 8);
+          std::memcpy(&bytes[at], &huge, sizeof huge);
+          break;
+        }
+        case 3: bytes.erase(position(bytes.size()), 1 + rng() % 16); break;
+        default: bytes.insert(position(bytes.size()), std::string(1 + rng() % 16, char(rng())));
+      }
+      if (bytes.size() < 16) bytes = whole.substr(0, 16);
+    }
+    writeFile(cache, bytes);
+    CachedScene read;
+    SceneCacheRead status = readSceneCache(cache, model, read);
+    if (bytes != whole) {
+      EXPECT_NE(status, SceneCacheRead::Hit) << "trial " << trial;
+    }
+  }
+}
+
+TEST(SceneCache, DamagedCacheIsAWarningAndIsReplaced) {
+  CachedObj obj;
+  LoadWarnings first;
+  Scene fresh = obj.load(first);
+  const std::string cache = sceneCacheFile(obj.cacheDirectory, obj.model);
+  std::string bytes = readFile(cache);
+  bytes[bytes.size() - 9] ^= 0x40;  // the last byte of the scene, before the checksum
+  writeFile(cache, bytes);
+  int loads = 0;
+  LoadWarnings second;
+  Scene again = obj.load(second, &loads);
+  EXPECT_EQ(loads, 1);
+  expectSameScene(fresh, again);
+  ASSERT_FALSE(second.messages.empty());
+  EXPECT_EQ(second.messages[0], cache + ": damaged scene cache ignored; the model is loaded afresh and cached again");
+  EXPECT_EQ(obj.status(), SceneCacheRead::Hit);
+}
+
+TEST(SceneCache, UnwritableCacheIsAWarning) {
+  CachedObj obj;
+  obj.cacheDirectory = obj.dir.write("not-a-folder", "a file where the cache folder should be");
+  LoadWarnings warnings;
+  Scene s = obj.load(warnings);
+  EXPECT_EQ(s.triangleCount(), 2u);
+  bool warned = false;
+  for (const std::string& m : warnings.messages) warned |= m.find("scene cache not written") != std::string::npos;
+  EXPECT_TRUE(warned);
+}
+
+TEST(SceneCache, DisabledCacheWritesNothing) {
+  CachedObj obj;
+  LoadWarnings warnings;
+  loadThroughSceneCache(obj.model, {false, obj.cacheDirectory}, warnings,
+                        [&](LoadWarnings& w) { return loadObj(obj.model, w); });
+  EXPECT_FALSE(fs::exists(obj.cacheDirectory));
+}
+
+// Sets an environment variable for the lifetime of the object.
+class ScopedVariable {
+ public:
+  ScopedVariable(const char* name, const char* value) : name_(name) {
+    if (const char* old = std::getenv(name)) old_ = old;
+    value ? setenv(name, value, 1) : unsetenv(name);
+  }
+  ~ScopedVariable() { old_ ? setenv(name_, old_->c_str(), 1) : unsetenv(name_); }
+
+ private:
+  const char* name_;
+  std::optional<std::string> old_;
+};
+
+TEST(SceneCache, DefaultFolder) {
+  ScopedVariable home("HOME", "/home/someone"), xdg("XDG_CACHE_HOME", nullptr), own("CANDELA_CACHE_DIR", nullptr);
+  EXPECT_EQ(defaultSceneCacheDirectory(), "/home/someone/.cache/candela");
+  {
+    ScopedVariable relative("XDG_CACHE_HOME", "relative/ignored");
+    EXPECT_EQ(defaultSceneCacheDirectory(), "/home/someone/.cache/candela");
+  }
+  ScopedVariable xdgSet("XDG_CACHE_HOME", "/var/cache/me");
+  EXPECT_EQ(defaultSceneCacheDirectory(), "/var/cache/me/candela");
+  ScopedVariable ownSet("CANDELA_CACHE_DIR", "/scratch/scenes");
+  EXPECT_EQ(defaultSceneCacheDirectory(), "/scratch/scenes");
+}
+
+}  // namespace
+}  // namespace candela
