@@ -4,6 +4,7 @@ namespace candela::optix {
 
 void DeviceScene::upload(const FlatScene& flat) {
   buffers_.clear();
+  textures_ = DeviceTextures();
   view_ = flat.hostView();  // scalars and counts; the pointers are replaced below, one line per array
   view_.positions = copy(flat.positions, "vertex positions");
   view_.normals = copy(flat.normals, "vertex normals");
@@ -14,10 +15,11 @@ void DeviceScene::upload(const FlatScene& flat) {
   view_.meshes = copy(flat.meshes, "mesh records");
   view_.instances = copy(flat.instances, "instance records");
   view_.materials = copy(flat.materials, "materials");
-  // Textures are read from the texel arrays by kernel code (TextureView::deviceTexture stays 0).
-  view_.texels.textures = copy(flat.textures, "texture descriptions");
-  view_.texels.texelBytes = copy(flat.texelBytes, "8-bit texels");
-  view_.texels.texelFloats = copy(flat.texelFloats, "float texels");
+  // Every texture with texels is sampled through a texture object, so the texel arrays stay on the host.
+  textures_ = DeviceTextures(flat.textures, flat.texelBytes, flat.texelFloats);
+  view_.texels.textures = copy(textures_.views(), "texture descriptions");
+  view_.texels.texelBytes = nullptr;
+  view_.texels.texelFloats = nullptr;
   view_.lights = copy(flat.lights, "the light table");
   view_.lightCdf = copy(flat.lightCdf, "the light distribution");
   view_.environment.texels = copy(flat.environmentTexels, "the environment map");
@@ -29,7 +31,7 @@ void DeviceScene::upload(const FlatScene& flat) {
 size_t DeviceScene::deviceBytes() const {
   size_t total = 0;
   for (const DeviceBuffer& b : buffers_) total += b.size();
-  return total;
+  return total + textures_.deviceBytes();
 }
 
 }  // namespace candela::optix

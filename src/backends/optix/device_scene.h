@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "backends/optix/device_buffer.h"
+#include "backends/optix/device_textures.h"
 #include "kernel/scene_view.h"
 #include "scene/flat_scene.h"
 
@@ -24,6 +25,7 @@ class DeviceScene {
   }
 
   std::vector<DeviceBuffer> buffers_;
+  DeviceTextures textures_;
   SceneView view_;
 };
 
