@@ -144,6 +144,22 @@ void OptixBackend::setScene(const Scene& scene) {
   s.restart();
 }
 
+bool OptixBackend::setMaterials(const std::vector<Material>& materials) {
+  State& s = *state_;
+  if (!s.hasScene || !s.flat.replaceMaterials(materials)) return false;
+  s.scene.updateMaterials(s.flat);
+  s.restart();
+  return true;
+}
+
+void OptixBackend::setEnvironment(const Environment& environment) {
+  State& s = *state_;
+  if (!s.hasScene) throw std::logic_error("OptixBackend::setEnvironment before setScene");
+  s.flat.replaceEnvironment(environment);
+  s.scene.updateEnvironment(s.flat);
+  s.restart();
+}
+
 void OptixBackend::setCamera(const Camera& camera) {
   state_->camera = camera;
   state_->restart();

@@ -27,6 +27,8 @@ class OptixBackend final : public Backend {
   std::string deviceDescription() const;
 
   void setScene(const Scene& scene) override;
+  bool setMaterials(const std::vector<Material>& materials) override;
+  void setEnvironment(const Environment& environment) override;
   void setCamera(const Camera& camera) override;
   void setSettings(const RenderSettings& settings) override;
 
