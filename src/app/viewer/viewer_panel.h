@@ -10,6 +10,7 @@ namespace candela {
 struct PanelStatus {
   std::string backend;
   std::string device;
+  std::string imageTransfer;  // how the image reaches the screen (ImageTransfer::description)
   double framesPerSecond = 0.0;
   double msPerFrame = 0.0;
   uint32_t accumulatedSamples = 0;

@@ -5,11 +5,13 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <stdexcept>
 
 #include "backends/optix/acceleration.h"
 #include "backends/optix/device_scene.h"
 #include "backends/optix/launch_params.h"
+#include "backends/optix/mean_image.h"
 #include "backends/optix/optix_context.h"
 #include "backends/optix/optix_error.h"
 #include "backends/optix/pipeline.h"
@@ -207,6 +209,22 @@ Image OptixBackend::readImage() const {
   float scale = s.accumulated > 0 ? 1.0f / float(s.accumulated) : 0.0f;
   for (Vec3& p : image.pixels) p = p * scale;
   return image;
+}
+
+std::array<unsigned char, 16> OptixBackend::deviceUuid() const {
+  cudaDeviceProp properties{};
+  checkCuda(cudaGetDeviceProperties(&properties, 0), "reading the GPU's properties");
+  std::array<unsigned char, 16> uuid{};
+  std::memcpy(uuid.data(), properties.uuid.bytes, uuid.size());
+  return uuid;
+}
+
+void OptixBackend::writeImageToDevice(Vec3* destination) const {
+  const State& s = *state_;
+  float scale = s.accumulated > 0 ? 1.0f / float(s.accumulated) : 0.0f;
+  writeMeanImage(s.accumulation.as<const Vec3>(), s.pixelCount(), scale, destination, s.context.stream());
+  checkCuda(cudaGetLastError(), "launching the image copy");
+  checkCuda(cudaStreamSynchronize(s.context.stream()), "copying the image on the device");
 }
 
 RawTraceTiming OptixBackend::timeRawTrace(uint32_t warmup, uint32_t frames) {

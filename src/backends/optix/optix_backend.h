@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -36,6 +37,11 @@ class OptixBackend final : public Backend {
   FrameStats render(uint32_t samplesPerPixel) override;
   uint32_t accumulatedSamples() const override;
   Image readImage() const override;
+
+  // For consumers on the same GPU (CUDA-OpenGL interop): the CUDA device's UUID (cudaDeviceProp::uuid), and
+  // readImage's pixels written to `destination`, device memory of width * height Vec3, without leaving the GPU.
+  std::array<unsigned char, 16> deviceUuid() const;
+  void writeImageToDevice(Vec3* destination) const;
 
   // The traversal ceiling for this scene and ray mix: records every ray of one sample per pixel (the next
   // sample index; the image is left alone), then times `frames` launches, after `warmup` untimed ones, that
