@@ -61,12 +61,22 @@ std::vector<Vec2> lookupCoordinates() {
   return uvs;
 }
 
+// The distance between the linear values of the 8-bit sRGB code that decodes to `linear` and its brighter
+// neighbour (its darker one at the top code).
+float srgbStepAt(float linear) {
+  const float encoded = linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+  const int code = std::clamp(int(std::lround(encoded * 255.0f)), 0, 254);
+  return srgbToLinear(float(code + 1) / 255.0f) - srgbToLinear(float(code) / 255.0f);
+}
+
 // How far the texture unit may be from the host's exact bilinear lookup, per channel.
 // - The unit holds the bilinear weights in 9-bit fixed point with 8 fractional bits (CUDA Programming Guide,
 //   "Texture Fetching", linear filtering), so each weight is off by at most 2^-8; a weight off by d moves
 //   the result by at most d times the spread (max - min) of the four texels along that axis: 2 * 2^-8 * spread.
-// - 8-bit formats are filtered in fixed point and decoded from sRGB by table on the unit: one more 8-bit step
-//   (1/255) covers the rounding of both. Float formats: 1e-5 of the largest texel for float rounding.
+// - 8-bit formats: the unit's result may be off by one step of the 8-bit input as decoded: 1/255 for linear
+//   data; for sRGB colour, one step of the sRGB curve at the brightest of the four texels (up to 0.0089 at the
+//   top; the unit decodes sRGB by table before filtering), at least 1/255. Float formats: 1e-5 of the largest
+//   texel for float rounding.
 // A half-texel shift, a flipped v, a wrong wrap mode or a missing sRGB decode moves results by a good part of
 // the spread, far past this bound (TextureLookupBound.RejectsCommonMistakes).
 float lookupBound(const TexelArrays& arrays, Vec2 uv, int channel) {
@@ -76,12 +86,15 @@ float lookupBound(const TexelArrays& arrays, Vec2 uv, int channel) {
   float lo = INFINITY, hi = -INFINITY;
   for (int dy = 0; dy < 2; ++dy)
     for (int dx = 0; dx < 2; ++dx) {
-      Vec4 c = fetchTexel(arrays, t, wrapTexel(x0 + dx, int(t.width), t.wrap), wrapTexel(y0 + dy, int(t.height), t.wrap));
+      const int xi = wrapTexel(x0 + dx, int(t.width), t.wrap), yi = wrapTexel(y0 + dy, int(t.height), t.wrap);
+      Vec4 c = fetchTexel(arrays, t, xi, yi);
       lo = std::min(lo, channelOf(c, channel));
       hi = std::max(hi, channelOf(c, channel));
     }
   const float weights = 2.0f * (hi - lo) / 256.0f;
-  return t.format == TexelFormat::Unorm8 ? weights + 1.0f / 255.0f : weights + 1e-5f * std::max(std::fabs(hi), 1.0f);
+  if (t.format == TexelFormat::Float32) return weights + 1e-5f * std::max(std::fabs(hi), 1.0f);
+  const bool alpha = channel == 3 && (t.channels == 2 || t.channels == 4);
+  return weights + (t.srgb && !alpha ? std::max(1.0f / 255.0f, srgbStepAt(hi)) : 1.0f / 255.0f);
 }
 
 struct Outliers {

@@ -63,7 +63,8 @@ void expectMaterialEditMatchesRebuild(const BackendFactory& makeBackend) {
   overrides.shading = ShadingModel::Pbr;
   overrides.roughness = 0.2f;
   applyOverrides(edited.materials, overrides);
-  Image afterEdit = renderEdited(makeBackend, original, [&](Backend& b) { EXPECT_TRUE(b.setMaterials(edited.materials)); });
+  Image afterEdit =
+      renderEdited(makeBackend, original, [&](Backend& b) { EXPECT_TRUE(b.setMaterials(edited.materials)); });
   Image rebuilt = renderRebuilt(makeBackend, edited);
   expectSameImage(afterEdit, rebuilt);
   // The edit must have changed the picture, or this check proves nothing.
