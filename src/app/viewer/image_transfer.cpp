@@ -1,5 +1,6 @@
 #include "app/viewer/image_transfer.h"
 
+#include <memory>
 #include <stdexcept>
 
 #if CANDELA_HAS_OPTIX
@@ -18,7 +19,10 @@ ImageTransfer::ImageTransfer(const RenderSession& session) {
 #if CANDELA_HAS_OPTIX
   if (const auto* optix = dynamic_cast<const OptixBackend*>(&session.backend())) {
     try {
-      interop_ = std::make_unique<CudaGlInterop>(*optix);
+      auto interop = std::make_shared<CudaGlInterop>(*optix);
+      interop_ = [interop](ImageDisplay& display, uint32_t width, uint32_t height) {
+        interop->transfer(display, width, height);
+      };
       description_ = "CUDA-OpenGL interop (pixel buffer on the GPU)";
       return;
     } catch (const std::exception& e) {
@@ -33,13 +37,11 @@ ImageTransfer::ImageTransfer(const RenderSession& session) {
 ImageTransfer::~ImageTransfer() = default;
 
 void ImageTransfer::transfer(const RenderSession& session, ImageDisplay& display) {
-#if CANDELA_HAS_OPTIX
   if (interop_) {
     const RenderSettings& s = session.appliedSettings();
-    interop_->transfer(display, s.width, s.height);
+    interop_(display, s.width, s.height);
     return;
   }
-#endif
   display.upload(session.image());
 }
 

@@ -1,15 +1,14 @@
 #pragma once
 // How the backend's image reaches the display texture: on the GPU through CUDA-OpenGL interop where the OptiX
 // backend renders on the device that runs the OpenGL context, else read back to the host and uploaded.
-#include <memory>
+#include <cstdint>
+#include <functional>
 #include <string>
 
 #include "app/viewer/image_display.h"
 #include "app/viewer/render_session.h"
 
 namespace candela {
-
-class CudaGlInterop;
 
 class ImageTransfer {
  public:
@@ -24,7 +23,8 @@ class ImageTransfer {
   const std::string& description() const { return description_; }
 
  private:
-  std::unique_ptr<CudaGlInterop> interop_;
+  // The interop path where one is used: fills the display from the backend's image of the given size.
+  std::function<void(ImageDisplay&, uint32_t, uint32_t)> interop_;
   std::string description_;
 };
 
