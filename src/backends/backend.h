@@ -2,6 +2,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "image/aov_images.h"
 #include "image/filters/atrous.h"
@@ -29,6 +30,11 @@ class Backend {
   virtual std::string deviceName() const = 0;  // the processor or GPU that runs it
 
   virtual void setScene(const Scene& scene) = 0;
+  // Cheap edits of the scene last set, for interactive controls: the traversal structures stay, the film
+  // restarts. setMaterials returns false, changing nothing, when the change needs setScene instead (see
+  // FlatScene::replaceMaterials: a different count, emission, or a material newly needing tangents).
+  virtual bool setMaterials(const std::vector<Material>& materials) = 0;
+  virtual void setEnvironment(const Environment& environment) = 0;
   virtual void setCamera(const Camera& camera) = 0;
   virtual void setSettings(const RenderSettings& settings) = 0;
 

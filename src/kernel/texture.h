@@ -11,7 +11,10 @@ enum class TexelFormat : uint32_t { Unorm8 = 0, Float32 };
 // One texture as kernel code sees it. On the host its texels sit in the SceneView's shared texel arrays from
 // `offset` on (row 0 first, `channels` values per texel). A GPU backend may instead create a CUDA texture object
 // (normalised coordinates, linear filtering, the same address mode, sRGB reads for `srgb`, four channels) and
-// store its handle in `deviceTexture`; device code then samples through the texture unit.
+// store its handle in `deviceTexture`; device code then samples through the texture unit, which uses the same
+// texel centres and row order but holds the bilinear weights in 8 fractional bits: its results differ from
+// the lookup below by up to 2^-7 of the four texels' spread, plus, for 8-bit formats, one step of the 8-bit
+// input as decoded (1/255, or the sRGB curve's step at the brightest texel) (tests/gpu/texture_lookup_gpu_test.cpp).
 struct TextureView {
   uint64_t deviceTexture = 0;  // cudaTextureObject_t, 0 when absent
   uint64_t offset = 0;         // first element in SceneView::texelBytes or texelFloats

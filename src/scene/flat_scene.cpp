@@ -9,6 +9,14 @@ namespace candela {
 
 namespace {
 
+// How often next-event estimation samples the environment rather than an emissive triangle.
+float environmentSamplingProbability(const FlatScene& flat) {
+  bool environmentEmits = flat.environmentTexels.empty() ? !isBlack(flat.environment.scale)
+                                                         : flat.environmentDistribution.funcAverage > 0.0f &&
+                                                               !isBlack(flat.environment.scale);
+  return environmentEmits ? (flat.lights.empty() ? 1.0f : 0.5f) : 0.0f;
+}
+
 void buildLightTable(const Scene& scene, FlatScene& flat) {
   double totalPower = 0.0;
   std::vector<double> powers;
@@ -46,19 +54,24 @@ void buildLightTable(const Scene& scene, FlatScene& flat) {
     flat.lightCdf.back() = 1.0f;
     flat.lightAreaPdfScale = float(kPi / totalPower);
   }
-  bool environmentEmits = flat.environmentTexels.empty() ? !isBlack(flat.environment.scale)
-                                                         : flat.environmentDistribution.funcAverage > 0.0f &&
-                                                               !isBlack(flat.environment.scale);
-  flat.environmentSelectProbability = environmentEmits ? (flat.lights.empty() ? 1.0f : 0.5f) : 0.0f;
+  flat.environmentSelectProbability = environmentSamplingProbability(flat);
 }
 
 // Tangents are needed where a normal map or an anisotropic lobe must be oriented on the surface.
+bool needsTangents(const Material& m) {
+  return m.normalTexture != kNoTexture || (m.type == MaterialType::Disney && m.anisotropic > 0.0f);
+}
+
 bool needsTangents(const Scene& scene, const Mesh& mesh) {
   if (mesh.uvs.empty()) return false;
-  for (uint32_t id : mesh.triangleMaterials) {
-    const Material& m = scene.materials[id];
-    if (m.normalTexture != kNoTexture || (m.type == MaterialType::Disney && m.anisotropic > 0.0f)) return true;
-  }
+  for (uint32_t id : mesh.triangleMaterials)
+    if (needsTangents(scene.materials[id])) return true;
+  return false;
+}
+
+bool anyCutouts(const std::vector<Material>& materials) {
+  for (const Material& m : materials)
+    if (m.alphaMode != AlphaMode::Opaque || !m.doubleSided) return true;
   return false;
 }
 
@@ -142,9 +155,29 @@ FlatScene FlatScene::build(const Scene& scene) {
     flat.instances.push_back({inst.meshId, inst.objectToWorld, normalTransform(inst.objectToWorld)});
   buildLightTable(scene, flat);
   packTextures(scene, flat);
-  for (const Material& m : flat.materials)
-    if (m.alphaMode != AlphaMode::Opaque || !m.doubleSided) flat.hasCutouts = true;
+  flat.hasCutouts = anyCutouts(flat.materials);
   return flat;
+}
+
+bool FlatScene::replaceMaterials(const std::vector<Material>& replacement) {
+  if (replacement.size() != materials.size()) return false;
+  for (size_t i = 0; i < materials.size(); ++i) {
+    const Material &was = materials[i], &is = replacement[i];
+    if (is.emission.x != was.emission.x || is.emission.y != was.emission.y || is.emission.z != was.emission.z)
+      return false;
+    if (needsTangents(is) && !needsTangents(was)) return false;
+  }
+  materials = replacement;
+  hasCutouts = anyCutouts(materials);
+  return true;
+}
+
+void FlatScene::replaceEnvironment(const Environment& replacement) {
+  environment = EnvironmentView{};
+  environmentTexels.clear();
+  environmentDistribution = EnvironmentDistribution{};
+  buildEnvironment(replacement, *this);
+  environmentSelectProbability = environmentSamplingProbability(*this);
 }
 
 SceneView FlatScene::hostView() const {

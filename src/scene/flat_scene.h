@@ -35,6 +35,14 @@ struct FlatScene {
 
   static FlatScene build(const Scene& scene);
 
+  // Replaces the materials, and the cut-out flag that follows from them, when nothing else was built from
+  // what changed: the same count, the same emission (the light table) and no material newly needing tangents.
+  // Returns false, changing nothing, when the scene must be built again instead.
+  bool replaceMaterials(const std::vector<Material>& replacement);
+  // Rebuilds the environment's parameters, texels and sampling distribution, and how often light sampling
+  // picks it; the geometry and the light table stay.
+  void replaceEnvironment(const Environment& replacement);
+
   // A view whose pointers refer to this object's host arrays.
   SceneView hostView() const;
 };

@@ -11,7 +11,8 @@ namespace {
 
 // Records what the session asks of it.
 struct BackendLog {
-  int scenes = 0, cameras = 0, settings = 0, restarts = 0;
+  int scenes = 0, cameras = 0, settings = 0, restarts = 0, materialEdits = 0, environmentEdits = 0;
+  bool acceptMaterials = true;  // whether setMaterials takes the edit or asks for setScene
   uint32_t accumulated = 0;
   std::vector<uint32_t> seeds;
   float intensity = 0.0f, rotation = 0.0f;
@@ -28,6 +29,19 @@ class RecordingBackend final : public Backend {
     log_.intensity = scene.environment.intensity;
     log_.rotation = scene.environment.rotationDegrees;
     log_.materials = scene.materials;
+    restart();
+  }
+  bool setMaterials(const std::vector<Material>& materials) override {
+    if (!log_.acceptMaterials) return false;
+    ++log_.materialEdits;
+    log_.materials = materials;
+    restart();
+    return true;
+  }
+  void setEnvironment(const Environment& environment) override {
+    ++log_.environmentEdits;
+    log_.intensity = environment.intensity;
+    log_.rotation = environment.rotationDegrees;
     restart();
   }
   void setCamera(const Camera&) override {
@@ -134,12 +148,14 @@ TEST_F(SessionTest, EnvironmentAdjustmentsApplyToTheScenesOwn) {
   scene.environment.rotationDegrees = 30.0f;
   session.setScene(scene);
   session.renderFrame(camera, settings, 1, true);
-  session.setEnvironment(1.0f, 0.0f);  // unchanged: no rebuild
+  session.setEnvironment(1.0f, 0.0f);  // unchanged: no edit
   session.renderFrame(camera, settings, 1, true);
-  EXPECT_EQ(log.scenes, 1);
+  EXPECT_EQ(log.scenes, 1);  // SetUp's scene was replaced before any frame
+  EXPECT_EQ(log.environmentEdits, 0);
   session.setEnvironment(2.5f, -45.0f);
   session.renderFrame(camera, settings, 1, true);
-  EXPECT_EQ(log.scenes, 2);
+  EXPECT_EQ(log.scenes, 1);  // the backend takes the environment alone
+  EXPECT_EQ(log.environmentEdits, 1);
   EXPECT_FLOAT_EQ(log.intensity, 5.0f);
   EXPECT_FLOAT_EQ(log.rotation, -15.0f);
   EXPECT_EQ(session.accumulatedSamples(), 1u);
@@ -162,6 +178,8 @@ TEST_F(SessionTest, MaterialOverridesApplyToTheScenesOwnMaterials) {
   session.setMaterialOverrides(overrides);
   session.renderFrame(camera, settings, 1, true);
   EXPECT_EQ(session.restarts(), 2u);
+  EXPECT_EQ(log.scenes, 1);  // the materials went alone
+  EXPECT_EQ(log.materialEdits, 1);
   ASSERT_EQ(log.materials.size(), scene.materials.size());
   for (size_t i = 0; i < scene.materials.size(); ++i) {
     EXPECT_EQ(log.materials[i].roughness, applyOverrides(scene.materials[i], overrides).roughness);
@@ -172,6 +190,19 @@ TEST_F(SessionTest, MaterialOverridesApplyToTheScenesOwnMaterials) {
   session.renderFrame(camera, settings, 1, true);
   for (size_t i = 0; i < scene.materials.size(); ++i)
     EXPECT_EQ(log.materials[i].roughness, scene.materials[i].roughness);
+}
+
+TEST_F(SessionTest, MaterialsTheBackendRefusesGoWithTheWholeScene) {
+  session.renderFrame(camera, settings, 1, true);
+  log.acceptMaterials = false;
+  MaterialOverrides overrides;
+  overrides.shading = ShadingModel::Disney;
+  session.setMaterialOverrides(overrides);
+  session.renderFrame(camera, settings, 1, true);
+  EXPECT_EQ(log.scenes, 2);
+  EXPECT_EQ(log.materialEdits, 0);
+  EXPECT_EQ(log.materials[0].type, MaterialType::Disney);
+  EXPECT_EQ(session.restarts(), 2u);
 }
 
 TEST(SceneSummary, CountsOverInstancesAndBoundsInWorldSpace) {

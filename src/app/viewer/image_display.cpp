@@ -21,6 +21,12 @@ void ImageDisplay::upload(const Image& image) {
   source_.upload(GLsizei(image.width), GLsizei(image.height), &image.pixels.data()->x);
 }
 
+void ImageDisplay::uploadFromPixelBuffer(GLuint buffer, GLsizei width, GLsizei height) {
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, buffer);
+  source_.upload(width, height, nullptr);  // with an unpack buffer bound, the pointer is an offset into it
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+}
+
 const GlTexture& ImageDisplay::runBilateral(const BilateralParams& params) {
   if (params.radius < 0 || params.radius > kMaxBilateralRadius || !(params.spatialSigma > 0.0f) ||
       !(params.rangeSigma > 0.0f))

@@ -17,6 +17,8 @@ class ImageDisplay {
   ImageDisplay& operator=(const ImageDisplay&) = delete;
 
   void upload(const Image& image);
+  // The same from a pixel buffer object holding width * height RGB floats (row 0 first), GPU to GPU.
+  void uploadFromPixelBuffer(GLuint buffer, GLsizei width, GLsizei height);
   // Draws the uploaded image, stretched over the viewport (x, y, width, height) of the current framebuffer.
   void draw(const PostSettings& post, int x, int y, int width, int height);
   // The bilateral pass on the uploaded image, read back.

@@ -28,27 +28,33 @@ void RenderSession::setScene(Scene scene) {
   sceneMaterials_ = scene_.materials;
   sceneIntensity_ = scene_.environment.intensity;
   sceneRotation_ = scene_.environment.rotationDegrees;
-  applyAdjustments();
+  applyEnvironment();
+  applyMaterials();
+  sceneChanged_ = true;
 }
 
 void RenderSession::setEnvironment(float intensityScale, float extraRotationDegrees) {
   if (intensityScale == intensityScale_ && extraRotationDegrees == extraRotation_) return;
   intensityScale_ = intensityScale;
   extraRotation_ = extraRotationDegrees;
-  applyAdjustments();
+  applyEnvironment();
 }
 
 void RenderSession::setMaterialOverrides(const MaterialOverrides& overrides) {
   overrides_ = overrides;
-  applyAdjustments();
+  applyMaterials();
 }
 
-void RenderSession::applyAdjustments() {
+void RenderSession::applyEnvironment() {
   scene_.environment.intensity = sceneIntensity_ * intensityScale_;
   scene_.environment.rotationDegrees = sceneRotation_ + extraRotation_;
+  environmentChanged_ = true;
+}
+
+void RenderSession::applyMaterials() {
   scene_.materials = sceneMaterials_;
   applyOverrides(scene_.materials, overrides_);
-  sceneChanged_ = true;
+  materialsChanged_ = true;
 }
 
 void RenderSession::setAovsEnabled(bool enabled) {
@@ -63,11 +69,11 @@ FrameStats RenderSession::renderFrame(const Camera& camera, const RenderSettings
   if (!accumulate) wanted.seed = settings.seed + uint32_t(frames_);
 
   bool restart = !haveFrame_ || !accumulate;
-  if (sceneChanged_) {
-    backend_->setScene(scene_);
-    sceneChanged_ = false;
-    restart = true;
-  }
+  if (!sceneChanged_ && materialsChanged_ && !backend_->setMaterials(scene_.materials)) sceneChanged_ = true;
+  if (!sceneChanged_ && environmentChanged_) backend_->setEnvironment(scene_.environment);
+  if (sceneChanged_) backend_->setScene(scene_);
+  if (sceneChanged_ || materialsChanged_ || environmentChanged_) restart = true;
+  sceneChanged_ = materialsChanged_ = environmentChanged_ = false;
   if (!haveFrame_ || !sameSettings(wanted, applied_)) {
     backend_->setSettings(wanted);
     applied_ = wanted;

@@ -20,10 +20,11 @@ class RenderSession {
   const Scene& scene() const { return scene_; }
   const SceneSummary& summary() const { return summary_; }
 
-  // Multiplies the scene's own environment intensity and adds to its rotation; the backend gets the scene again
-  // only when one of them changes.
+  // Multiplies the scene's own environment intensity and adds to its rotation; the backend gets the new
+  // environment (Backend::setEnvironment, no rebuild of the geometry) only when one of them changes.
   void setEnvironment(float intensityScale, float extraRotationDegrees);
-  // Renders the scene's own materials under `overrides` (the backend gets the scene again).
+  // Renders the scene's own materials under `overrides`: the backend gets the new materials alone
+  // (Backend::setMaterials), or the whole scene again where it cannot take them so.
   void setMaterialOverrides(const MaterialOverrides& overrides);
 
   // Adds `samplesPerPixel` samples. With `accumulate` off every frame starts afresh with its own seed, so
@@ -46,7 +47,8 @@ class RenderSession {
   std::unique_ptr<Backend> backend_;
   Scene scene_;
   SceneSummary summary_;
-  void applyAdjustments();
+  void applyEnvironment();
+  void applyMaterials();
 
   // What the scene was loaded with, and the viewer's adjustments to it.
   std::vector<Material> sceneMaterials_;
@@ -57,6 +59,8 @@ class RenderSession {
   MaterialOverrides overrides_;
 
   bool sceneChanged_ = true;
+  bool materialsChanged_ = false;
+  bool environmentChanged_ = false;
   bool haveFrame_ = false;
   Camera camera_;
   RenderSettings applied_;

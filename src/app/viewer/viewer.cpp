@@ -13,6 +13,7 @@
 #include "app/viewer/camera_input.h"
 #include "app/viewer/glfw_window.h"
 #include "app/viewer/image_display.h"
+#include "app/viewer/image_transfer.h"
 #include "app/viewer/interactive_policy.h"
 #include "app/viewer/orbit_camera.h"
 #include "app/viewer/render_session.h"
@@ -54,6 +55,7 @@ class Viewer {
   ImGuiLayer imgui_;
   ImageDisplay display_;
   RenderSession session_;
+  ImageTransfer transfer_;
   std::unique_ptr<OrbitCamera> camera_;
   std::string sceneSpec_;
   CameraInput input_;
@@ -79,7 +81,8 @@ Viewer::Viewer(const ViewerOptions& options)
         std::unique_ptr<Backend> backend = createBackend(options.backend, why);
         std::fprintf(stderr, "%s\n", why.c_str());
         return backend;
-      }()) {
+      }()),
+      transfer_(session_) {
   controls_.maxDepth = options.maxDepth;
   controls_.samplesPerFrame = options.samplesPerFrame;
   controls_.post = options.post;
@@ -87,6 +90,8 @@ Viewer::Viewer(const ViewerOptions& options)
   showScene(loadScene(options.sceneSpec, {options.environmentPath, options.sceneCache}), options.sceneSpec);
   status_.backend = session_.backend().name();
   status_.device = session_.backend().deviceName();
+  status_.imageTransfer = transfer_.description();
+  std::fprintf(stderr, "display: %s\n", status_.imageTransfer.c_str());
   glfwSetWindowSizeLimits(window_.handle(), kPanelWidth + kMinImageSide, kMinImageSide, GLFW_DONT_CARE,
                           GLFW_DONT_CARE);
   glfwGetCursorPos(window_.handle(), &pointerX_, &pointerY_);
@@ -224,7 +229,11 @@ void Viewer::frame(double now, double seconds) {
   auto start = std::chrono::steady_clock::now();
   session_.setAovsEnabled(controls_.post.atrous);
   session_.renderFrame(camera, settings, lastPlan_.samplesPerPixel, controls_.accumulate);
-  display_.upload(accumulatedImage());
+  // The denoised image is made on the host side of the backend; the plain one may stay on the device (interop).
+  if (controls_.post.atrous)
+    display_.upload(accumulatedImage());
+  else
+    transfer_.transfer(session_, display_);
   policy_.recordFrame(lastPlan_, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
 
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -316,6 +325,8 @@ int Viewer::run() {
     glfwSwapBuffers(window_.handle());
   }
   writeExitFiles();
+  std::fprintf(stderr, "viewer: %llu frames; the panel showed %.1f fps, %.2f ms/frame\n",
+               static_cast<unsigned long long>(session_.frames()), status_.framesPerSecond, status_.msPerFrame);
   return 0;
 }
 

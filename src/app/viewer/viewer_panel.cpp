@@ -23,6 +23,7 @@ bool sliderUint(const char* label, uint32_t& value, int lo, int hi) {
 void drawStatus(const PanelStatus& s) {
   ImGui::Text("Backend  %s", s.backend.c_str());
   ImGui::TextWrapped("Device   %s", s.device.c_str());
+  ImGui::TextWrapped("Display  %s", s.imageTransfer.c_str());
   ImGui::Text("%.1f fps, %.2f ms/frame", s.framesPerSecond, s.msPerFrame);
   ImGui::Text("Samples  %u per pixel", s.accumulatedSamples);
   ImGui::Text("Image    %u x %u%s", s.imageWidth, s.imageHeight, s.preview ? "  (moving: preview)" : "");
@@ -40,14 +41,13 @@ void drawRenderSettings(ViewerControls& c, PanelRequests& requests) {
   sliderUint("Max depth", c.maxDepth, 1, 64);
   sliderUint("Samples/frame", c.samplesPerFrame, 1, 64);
   ImGui::Checkbox("Accumulate", &c.accumulate);
-  // The backend rebuilds its scene for a new environment or new materials, so a slider's change lands when it is
-  // let go.
-  ImGui::SliderFloat("Env intensity", &c.environmentScale, 0.0f, 16.0f, "x %.3f",
-                     ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
-  requests.applyEnvironment = ImGui::IsItemDeactivatedAfterEdit();
-  ImGui::SliderFloat("Env rotation", &c.environmentRotation, -180.0f, 180.0f, "%.1f deg",
-                     ImGuiSliderFlags_AlwaysClamp);
-  requests.applyEnvironment = requests.applyEnvironment || ImGui::IsItemDeactivatedAfterEdit();
+  // Backends take a new environment or new materials without rebuilding the geometry, so sliders apply while
+  // they are dragged.
+  const bool intensity = ImGui::SliderFloat("Env intensity", &c.environmentScale, 0.0f, 16.0f, "x %.3f",
+                                            ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+  const bool rotation = ImGui::SliderFloat("Env rotation", &c.environmentRotation, -180.0f, 180.0f, "%.1f deg",
+                                           ImGuiSliderFlags_AlwaysClamp);
+  requests.applyEnvironment = intensity || rotation;
 }
 
 void drawMaterials(ViewerControls& c, PanelRequests& requests) {
@@ -70,9 +70,12 @@ void drawMaterials(ViewerControls& c, PanelRequests& requests) {
     }
     ImGui::SameLine();
     ImGui::BeginDisabled(!on);
-    if (ImGui::SliderFloat(p.name, &c.overrideSliders[i], p.min, p.max, "%.3f", ImGuiSliderFlags_AlwaysClamp) && on)
+    const bool dragged =
+        ImGui::SliderFloat(p.name, &c.overrideSliders[i], p.min, p.max, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+    if (dragged && on) {
       value = c.overrideSliders[i];
-    requests.applyMaterials = requests.applyMaterials || (on && ImGui::IsItemDeactivatedAfterEdit());
+      requests.applyMaterials = true;
+    }
     ImGui::EndDisabled();
     ImGui::PopID();
   }

@@ -10,6 +10,7 @@ namespace candela {
 struct PanelStatus {
   std::string backend;
   std::string device;
+  std::string imageTransfer;  // how the image reaches the screen (ImageTransfer::description)
   double framesPerSecond = 0.0;
   double msPerFrame = 0.0;
   uint32_t accumulatedSamples = 0;
@@ -26,8 +27,8 @@ struct PanelStatus {
 
 // What the user asked for this frame.
 struct PanelRequests {
-  bool applyEnvironment = false;  // an environment slider was released after a change
-  bool applyMaterials = false;    // the shading model or an override changed (sliders: when released)
+  bool applyEnvironment = false;  // an environment slider changed
+  bool applyMaterials = false;    // the shading model or an override changed
   bool saveScreenshot = false;
   bool saveSceneFile = false;
   bool openScene = false;  // the Open button, or Enter in the scene field

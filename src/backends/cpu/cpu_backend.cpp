@@ -42,6 +42,17 @@ void CpuBackend::setScene(const Scene& scene) {
   restart();
 }
 
+bool CpuBackend::setMaterials(const std::vector<Material>& materials) {
+  if (!flat_.replaceMaterials(materials)) return false;
+  restart();
+  return true;
+}
+
+void CpuBackend::setEnvironment(const Environment& environment) {
+  flat_.replaceEnvironment(environment);
+  restart();
+}
+
 void CpuBackend::setCamera(const Camera& camera) {
   camera_ = camera;
   restart();

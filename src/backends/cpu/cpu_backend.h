@@ -16,6 +16,8 @@ class CpuBackend final : public Backend {
   std::string deviceName() const override;
 
   void setScene(const Scene& scene) override;
+  bool setMaterials(const std::vector<Material>& materials) override;
+  void setEnvironment(const Environment& environment) override;
   void setCamera(const Camera& camera) override;
   void setSettings(const RenderSettings& settings) override;
 

@@ -1,34 +1,56 @@
 #include "backends/optix/device_scene.h"
 
+#include <stdexcept>
+
 namespace candela::optix {
 
 void DeviceScene::upload(const FlatScene& flat) {
   buffers_.clear();
+  textures_ = DeviceTextures();
   view_ = flat.hostView();  // scalars and counts; the pointers are replaced below, one line per array
-  view_.positions = copy(flat.positions, "vertex positions");
-  view_.normals = copy(flat.normals, "vertex normals");
-  view_.uvs = copy(flat.uvs, "texture coordinates");
-  view_.tangents = copy(flat.tangents, "vertex tangents");
-  view_.indices = copy(flat.indices, "triangle indices");
-  view_.triangleMaterials = copy(flat.triangleMaterials, "triangle materials");
-  view_.meshes = copy(flat.meshes, "mesh records");
-  view_.instances = copy(flat.instances, "instance records");
-  view_.materials = copy(flat.materials, "materials");
-  // Textures are read from the texel arrays by kernel code (TextureView::deviceTexture stays 0).
-  view_.texels.textures = copy(flat.textures, "texture descriptions");
-  view_.texels.texelBytes = copy(flat.texelBytes, "8-bit texels");
-  view_.texels.texelFloats = copy(flat.texelFloats, "float texels");
-  view_.lights = copy(flat.lights, "the light table");
-  view_.lightCdf = copy(flat.lightCdf, "the light distribution");
-  view_.environment.texels = copy(flat.environmentTexels, "the environment map");
-  view_.environment.func = copy(flat.environmentDistribution.func, "the environment's sampling density");
-  view_.environment.conditionalCdf = copy(flat.environmentDistribution.conditionalCdf, "the environment's rows");
-  view_.environment.marginalCdf = copy(flat.environmentDistribution.marginalCdf, "the environment's columns");
+  view_.positions = copy(buffers_, flat.positions, "vertex positions");
+  view_.normals = copy(buffers_, flat.normals, "vertex normals");
+  view_.uvs = copy(buffers_, flat.uvs, "texture coordinates");
+  view_.tangents = copy(buffers_, flat.tangents, "vertex tangents");
+  view_.indices = copy(buffers_, flat.indices, "triangle indices");
+  view_.triangleMaterials = copy(buffers_, flat.triangleMaterials, "triangle materials");
+  view_.meshes = copy(buffers_, flat.meshes, "mesh records");
+  view_.instances = copy(buffers_, flat.instances, "instance records");
+  materials_ = DeviceBuffer::fromVector(flat.materials, "materials");
+  view_.materials = materials_.as<const Material>();
+  // Every texture with texels is sampled through a texture object, so the texel arrays stay on the host.
+  textures_ = DeviceTextures(flat.textures, flat.texelBytes, flat.texelFloats);
+  view_.texels.textures = copy(buffers_, textures_.views(), "texture descriptions");
+  view_.texels.texelBytes = nullptr;
+  view_.texels.texelFloats = nullptr;
+  view_.lights = copy(buffers_, flat.lights, "the light table");
+  view_.lightCdf = copy(buffers_, flat.lightCdf, "the light distribution");
+  updateEnvironment(flat);
+}
+
+void DeviceScene::updateMaterials(const FlatScene& flat) {
+  if (flat.materials.size() * sizeof(Material) != materials_.size())
+    throw std::logic_error("DeviceScene::updateMaterials with a different number of materials");
+  materials_.upload(flat.materials.data(), materials_.size());
+  view_.hasCutouts = flat.hasCutouts ? 1u : 0u;
+}
+
+void DeviceScene::updateEnvironment(const FlatScene& flat) {
+  environment_.clear();
+  view_.environmentSelectProbability = flat.environmentSelectProbability;
+  view_.environment = flat.environment;
+  view_.environment.texels = copy(environment_, flat.environmentTexels, "the environment map");
+  view_.environment.func = copy(environment_, flat.environmentDistribution.func, "the environment's sampling density");
+  view_.environment.conditionalCdf =
+      copy(environment_, flat.environmentDistribution.conditionalCdf, "the environment's rows");
+  view_.environment.marginalCdf =
+      copy(environment_, flat.environmentDistribution.marginalCdf, "the environment's columns");
 }
 
 size_t DeviceScene::deviceBytes() const {
-  size_t total = 0;
+  size_t total = materials_.size() + textures_.deviceBytes();
   for (const DeviceBuffer& b : buffers_) total += b.size();
+  for (const DeviceBuffer& b : environment_) total += b.size();
   return total;
 }
 

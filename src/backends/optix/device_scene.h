@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "backends/optix/device_buffer.h"
+#include "backends/optix/device_textures.h"
 #include "kernel/scene_view.h"
 #include "scene/flat_scene.h"
 
@@ -11,6 +12,11 @@ namespace candela::optix {
 class DeviceScene {
  public:
   void upload(const FlatScene& flat);
+  // After FlatScene::replaceMaterials: copies the materials over the old ones (same count) and takes the
+  // cut-out flag. Call only while no launch reads them.
+  void updateMaterials(const FlatScene& flat);
+  // After FlatScene::replaceEnvironment: uploads the environment's arrays and parameters again.
+  void updateEnvironment(const FlatScene& flat);
 
   // Same counts and constants as the host view; every pointer refers to device memory.
   const SceneView& view() const { return view_; }
@@ -18,12 +24,15 @@ class DeviceScene {
 
  private:
   template <class T>
-  const T* copy(const std::vector<T>& values, const char* purpose) {
-    buffers_.push_back(DeviceBuffer::fromVector(values, purpose));
-    return buffers_.back().as<const T>();
+  static const T* copy(std::vector<DeviceBuffer>& into, const std::vector<T>& values, const char* purpose) {
+    into.push_back(DeviceBuffer::fromVector(values, purpose));
+    return into.back().as<const T>();
   }
 
   std::vector<DeviceBuffer> buffers_;
+  DeviceBuffer materials_;
+  std::vector<DeviceBuffer> environment_;
+  DeviceTextures textures_;
   SceneView view_;
 };
 

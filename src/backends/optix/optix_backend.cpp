@@ -5,12 +5,14 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <stdexcept>
 
 #include "backends/optix/acceleration.h"
 #include "backends/optix/device_scene.h"
 #include "backends/optix/filters/cuda_filters.h"
 #include "backends/optix/launch_params.h"
+#include "backends/optix/mean_image.h"
 #include "backends/optix/optix_context.h"
 #include "backends/optix/optix_error.h"
 #include "backends/optix/pipeline.h"
@@ -192,6 +194,22 @@ void OptixBackend::setScene(const Scene& scene) {
   s.restart();
 }
 
+bool OptixBackend::setMaterials(const std::vector<Material>& materials) {
+  State& s = *state_;
+  if (!s.hasScene || !s.flat.replaceMaterials(materials)) return false;
+  s.scene.updateMaterials(s.flat);
+  s.restart();
+  return true;
+}
+
+void OptixBackend::setEnvironment(const Environment& environment) {
+  State& s = *state_;
+  if (!s.hasScene) throw std::logic_error("OptixBackend::setEnvironment before setScene");
+  s.flat.replaceEnvironment(environment);
+  s.scene.updateEnvironment(s.flat);
+  s.restart();
+}
+
 void OptixBackend::setCamera(const Camera& camera) {
   state_->camera = camera;
   state_->restart();
@@ -279,6 +297,22 @@ Image OptixBackend::readBilateralFiltered(const BilateralParams& params) const {
   cudaBilateral(s.accumulation.as<Vec3>(), s.meanScale(), s.filterOutput(), s.settings.width, s.settings.height,
                 params, s.context.stream());
   return s.downloadFiltered();
+}
+
+std::array<unsigned char, 16> OptixBackend::deviceUuid() const {
+  cudaDeviceProp properties{};
+  checkCuda(cudaGetDeviceProperties(&properties, 0), "reading the GPU's properties");
+  std::array<unsigned char, 16> uuid{};
+  std::memcpy(uuid.data(), properties.uuid.bytes, uuid.size());
+  return uuid;
+}
+
+void OptixBackend::writeImageToDevice(Vec3* destination) const {
+  const State& s = *state_;
+  float scale = s.accumulated > 0 ? 1.0f / float(s.accumulated) : 0.0f;
+  writeMeanImage(s.accumulation.as<const Vec3>(), s.pixelCount(), scale, destination, s.context.stream());
+  checkCuda(cudaGetLastError(), "launching the image copy");
+  checkCuda(cudaStreamSynchronize(s.context.stream()), "copying the image on the device");
 }
 
 RawTraceTiming OptixBackend::timeRawTrace(uint32_t warmup, uint32_t frames) {

@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -27,6 +28,8 @@ class OptixBackend final : public Backend {
   std::string deviceDescription() const;
 
   void setScene(const Scene& scene) override;
+  bool setMaterials(const std::vector<Material>& materials) override;
+  void setEnvironment(const Environment& environment) override;
   void setCamera(const Camera& camera) override;
   void setSettings(const RenderSettings& settings) override;
 
@@ -40,6 +43,11 @@ class OptixBackend final : public Backend {
   // The CUDA versions of the CPU filters, run on the film in device memory; only the result comes back.
   Image readAtrousDenoised(const AtrousParams& params) const override;
   Image readBilateralFiltered(const BilateralParams& params) const override;
+
+  // For consumers on the same GPU (CUDA-OpenGL interop): the CUDA device's UUID (cudaDeviceProp::uuid), and
+  // readImage's pixels written to `destination`, device memory of width * height Vec3, without leaving the GPU.
+  std::array<unsigned char, 16> deviceUuid() const;
+  void writeImageToDevice(Vec3* destination) const;
 
   // The traversal ceiling for this scene and ray mix: records every ray of one sample per pixel (the next
   // sample index; the image is left alone), then times `frames` launches, after `warmup` untimed ones, that

@@ -1,0 +1,21 @@
+#pragma once
+// Checks of Backend::setMaterials and Backend::setEnvironment that any backend must pass: renders after an edit
+// equal, bit for bit, renders of a fresh backend given the edited scene with setScene. With the same seed both
+// draw the same random numbers, so they trace the same paths; any sample of the old scene left in the film, or
+// any array that missed the edit, changes the image.
+#include <functional>
+#include <memory>
+
+#include "backends/backend.h"
+
+namespace candela::test {
+
+using BackendFactory = std::function<std::unique_ptr<Backend>()>;
+
+// The material gallery re-shaded with the PBR model and an overridden roughness.
+void expectMaterialEditMatchesRebuild(const BackendFactory& makeBackend);
+
+// The material gallery's uniform sky replaced by a small map, scaled and turned.
+void expectEnvironmentEditMatchesRebuild(const BackendFactory& makeBackend);
+
+}  // namespace candela::test
