@@ -12,6 +12,7 @@
 
 #include "image/aov_io.h"
 #include "image/filters/atrous.h"
+#include "image/filters/atrous_kernel.h"
 #include "image/filters/fast_exp.h"
 #include "image/tonemap.h"
 
@@ -40,7 +41,8 @@ double worstRelativeDifference(const Image& a, const Image& b) {
   double worst = 0.0;
   for (size_t i = 0; i < a.pixels.size(); ++i)
     for (int c = 0; c < 3; ++c)
-      worst = std::fmax(worst, std::fabs(double(a.pixels[i][c]) - b.pixels[i][c]) / std::fmax(1e-3, std::fabs(b.pixels[i][c])));
+      worst = std::fmax(
+          worst, std::fabs(double(a.pixels[i][c]) - b.pixels[i][c]) / std::fmax(1e-3, std::fabs(b.pixels[i][c])));
   return worst;
 }
 
@@ -94,6 +96,26 @@ TEST(Atrous, RejectsBadInput) {
   EXPECT_THROW(atrousDenoise(in.color, in.aovs, params), std::invalid_argument);
   const NoisyInput other = randomInput(8, 7, 3);
   EXPECT_THROW(atrousDenoise(in.color, other.aovs, AtrousParams{}), std::invalid_argument);
+}
+
+TEST(Atrous, InteriorVarianceIsTheGeneralOne) {
+  constexpr int w = 7, h = 5;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> u(0.0f, 10.0f);
+  std::vector<float> lum(size_t(w) * h);
+  for (float& l : lum) l = u(rng);
+  for (int y = 1; y + 1 < h; ++y)
+    for (int x = 1; x + 1 < w; ++x) {
+      const float* row = &lum[size_t(y) * w];
+      EXPECT_FLOAT_EQ(interiorLuminanceVariance(row - w, row, row + w, x),
+                      localLuminanceVariance(lum.data(), w, h, x, y))
+          << x << ", " << y;
+    }
+  // A variance the binomial weights give exactly: a bright centre of 16 among zeros has mean 4*16/16 = 4 and mean
+  // square 4*256/16 = 64.
+  std::vector<float> spike(9, 0.0f);
+  spike[4] = 16.0f;
+  EXPECT_FLOAT_EQ(interiorLuminanceVariance(&spike[0], &spike[3], &spike[6], 1), 64.0f - 16.0f);
 }
 
 TEST(FastExp, MatchesTheLibraryExponential) {
@@ -152,7 +174,7 @@ TEST(AovFiles, ExrHoldsTheAovsAsLayers) {
     file.readPixels(0, 3);
     const std::string n = name;
     for (size_t i = 0; i < 20; ++i) {
-      const float expected = n == "R" ? in.color.pixels[i].x
+      const float expected = n == "R"          ? in.color.pixels[i].x
                              : n == "albedo.G" ? in.aovs.albedo.pixels[i].y
                              : n == "normal.Z" ? in.aovs.normal.pixels[i].z
                                                : in.aovs.depth[i];

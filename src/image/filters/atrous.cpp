@@ -15,34 +15,61 @@ namespace candela {
 
 namespace {
 
-struct GuidePlanes {
-  std::vector<float> nx, ny, nz, z, gx, gy;
-  explicit GuidePlanes(size_t n) : nx(n), ny(n), nz(n), z(n), gx(n), gy(n) {}
+// The planes one call works on.
+enum Plane : size_t {
+  kNx,
+  kNy,
+  kNz,
+  kDepth,
+  kSlopeX,
+  kSlopeY,
+  kLuminance,
+  kInverseWidth,
+  kColour,
+  kPlaneCount = kColour + 6
 };
 
-GuidePlanes makeGuides(const AovImages& aovs) {
-  const int w = int(aovs.width()), h = int(aovs.height());
-  GuidePlanes g(aovs.depth.size());
-  auto depthAt = [&](int x, int y) {
-    return x < 0 || y < 0 || x >= w || y >= h ? 0.0f : aovs.depth[size_t(y) * w + x];
-  };
-  tbb::parallel_for(0, h, [&](int y) {
-    for (int x = 0; x < w; ++x) {
-      const size_t i = size_t(y) * w + x;
-      const Vec3 n = unitOrZero(aovs.normal.pixels[i]);
-      g.nx[i] = n.x;
-      g.ny[i] = n.y;
-      g.nz[i] = n.z;
-      g.z[i] = aovs.depth[i];
-      g.gx[i] = depthSlope(depthAt(x - 1, y), g.z[i], depthAt(x + 1, y));
-      g.gy[i] = depthSlope(depthAt(x, y - 1), g.z[i], depthAt(x, y + 1));
-    }
-  });
-  return g;
+struct Planes {
+  PlaneStack stack;
+  explicit Planes(size_t pixels) : stack(kPlaneCount, pixels) {}
+  const float* operator[](Plane p) const { return stack[p]; }
+  float* operator[](Plane p) { return stack[p]; }
+  // The demodulated colour in the two buffers the passes alternate between.
+  RgbPlanes colour(int buffer) {
+    const size_t first = kColour + 3 * size_t(buffer);
+    return {stack[first], stack[first + 1], stack[first + 2]};
+  }
+};
+
+// depthSlope of n pixels, given the depths one pixel before and after each (zero outside the image).
+void depthSlopes(const float* before, const float* centre, const float* after, float* slope, int n) {
+  for (int i = 0; i < n; ++i) slope[i] = depthSlope(before[i], centre[i], after[i]);
 }
 
-float meanLuminance(const RgbPlanes& c) {
-  const size_t n = c.r.size();
+void fillGuides(const AovImages& aovs, Planes& planes) {
+  const int w = int(aovs.width()), h = int(aovs.height());
+  const std::vector<float> zeros(size_t(w), 0.0f);
+  tbb::parallel_for(0, h, [&](int y) {
+    const size_t row = size_t(y) * w;
+    float *nx = planes[kNx] + row, *ny = planes[kNy] + row, *nz = planes[kNz] + row, *z = planes[kDepth] + row;
+    for (int x = 0; x < w; ++x) {
+      const Vec3 n = unitOrZero(aovs.normal.pixels[row + x]);
+      nx[x] = n.x;
+      ny[x] = n.y;
+      nz[x] = n.z;
+    }
+    std::copy_n(&aovs.depth[row], w, z);
+    const float* depth = aovs.depth.data();
+    float* slopeX = planes[kSlopeX] + row;
+    slopeX[0] = depthSlope(0.0f, z[0], w > 1 ? z[1] : 0.0f);
+    if (w > 2) depthSlopes(z, z + 1, z + 2, slopeX + 1, w - 2);
+    if (w > 1) slopeX[w - 1] = depthSlope(z[w - 2], z[w - 1], 0.0f);
+    depthSlopes(y > 0 ? depth + row - w : zeros.data(), z, y + 1 < h ? depth + row + w : zeros.data(),
+                planes[kSlopeY] + row, w);
+  });
+}
+
+float meanLuminance(const RgbPlanes& c, size_t n) {
   double sum = tbb::parallel_reduce(
       tbb::blocked_range<size_t>(0, n), 0.0,
       [&](const tbb::blocked_range<size_t>& range, double partial) {
@@ -59,26 +86,24 @@ struct CentreRow {
   const float *lum, *inverseWidth, *nx, *ny, *nz, *z, *gx, *gy;
 };
 struct TapRow {
-  const float *r, *g, *b, *nx, *ny, *nz, *z;
+  const float *r, *g, *b, *lum, *nx, *ny, *nz, *z;
 };
 
-// Adds the tap (dx, dy) to the sums of pixels [x0, x1) of a row. Compiled for AVX2 as well as the baseline
-// instruction set (chosen at run time); no FMA, so every build computes the same sums as the CUDA version.
-__attribute__((target_clones("avx512f", "avx2", "default"))) void accumulateTap(const CentreRow& c, const TapRow& t,
-                                                                       RowSums& sums, int x0, int x1, int dx,
-                                                                       int dy, AtrousPassConstants k) {
+// Adds the tap (dx, dy) to the sums of pixels [x0, x1) of a row. Compiled for x86-64-v4 (AVX-512) and -v3 (AVX2, FMA)
+// as well as the baseline instruction set, chosen at run time.
+__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"))) void accumulateTap(
+    const CentreRow& c, const TapRow& t, RowSums& sums, int x0, int x1, int dx, int dy, AtrousPassConstants k) {
   const float kernelWeight = b3Weight(dx) * b3Weight(dy);
   const int ox = dx * k.step;
   const float *pl = c.lum, *pw = c.inverseWidth, *pnx = c.nx, *pny = c.ny, *pnz = c.nz, *pz = c.z, *pgx = c.gx,
               *pgy = c.gy;
-  const float *qr = t.r, *qg = t.g, *qb = t.b, *qnx = t.nx, *qny = t.ny, *qnz = t.nz, *qz = t.z;
+  const float *qr = t.r, *qg = t.g, *qb = t.b, *ql = t.lum, *qnx = t.nx, *qny = t.ny, *qnz = t.nz, *qz = t.z;
   float *sr = sums.r.data(), *sg = sums.g.data(), *sb = sums.b.data(), *sw = sums.weight.data();
 #pragma GCC ivdep  // the sums and the planes never overlap
   for (int x = x0; x < x1; ++x) {
     const int q = x + ox;
     const AtrousCentre p{pl[x], pw[x], pnx[x], pny[x], pnz[x], pz[x], pgx[x], pgy[x]};
-    const float weight =
-        atrousWeight(dx, dy, kernelWeight, k, p, qr[q], qg[q], qb[q], qnx[q], qny[q], qnz[q], qz[q]);
+    const float weight = atrousWeight(dx, dy, kernelWeight, k, p, ql[q], qnx[q], qny[q], qnz[q], qz[q]);
     sr[x] += qr[q] * weight;
     sg[x] += qg[q] * weight;
     sb[x] += qb[q] * weight;
@@ -86,24 +111,60 @@ __attribute__((target_clones("avx512f", "avx2", "default"))) void accumulateTap(
   }
 }
 
+// The centre tap differs from itself in nothing: atrousWeight's exponent is zero and the weight is the kernel's.
+__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"))) void accumulateCentre(const TapRow& t,
+                                                                                                    RowSums& sums,
+                                                                                                    int x0, int x1) {
+  constexpr float kWeight = 0.375f * 0.375f;
+  const float *qr = t.r, *qg = t.g, *qb = t.b;
+  float *sr = sums.r.data(), *sg = sums.g.data(), *sb = sums.b.data(), *sw = sums.weight.data();
+#pragma GCC ivdep  // the sums and the planes never overlap
+  for (int x = x0; x < x1; ++x) {
+    sr[x] += qr[x] * kWeight;
+    sg[x] += qg[x] * kWeight;
+    sb[x] += qb[x] * kWeight;
+    sw[x] += kWeight;
+  }
+}
+
+// atrousInverseColorWidth of every pixel of row y. Pixels whose 3x3 neighbourhood lies inside the image take the
+// bounds-free variance in a loop that vectorises.
+__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"))) void inverseColorWidthRow(
+    const float* lum, int w, int h, int y, float colorSigma, float mean, float* out) {
+  auto edgePixel = [&](int x) {
+    out[x] = atrousInverseColorWidth(localLuminanceVariance(lum, w, h, x, y), colorSigma, mean);
+  };
+  if (y == 0 || y + 1 >= h || w < 3) {
+    for (int x = 0; x < w; ++x) edgePixel(x);
+    return;
+  }
+  const float *above = lum + size_t(y - 1) * w, *row = lum + size_t(y) * w, *below = lum + size_t(y + 1) * w;
+  edgePixel(0);
+  for (int x = 1; x + 1 < w; ++x)
+    out[x] = atrousInverseColorWidth(interiorLuminanceVariance(above, row, below, x), colorSigma, mean);
+  edgePixel(w - 1);
+}
+
 // One pass, tap by tap over whole rows so that the inner loop vectorises over contiguous pixels; every pixel
 // still sums its taps in the (dy, dx) order of the CUDA version.
-void atrousPass(const RgbPlanes& in, RgbPlanes& out, const GuidePlanes& g, const AtrousPassConstants& k,
-                float colorSigma, float mean, std::vector<float>& lum, std::vector<float>& inverseWidth) {
-  const int w = int(in.width), h = int(in.height);
-  tbb::parallel_for(size_t(0), lum.size(), [&](size_t i) { lum[i] = luminance(in.get(i)); });
+void atrousPass(Planes& planes, int from, int w, int h, const AtrousPassConstants& k, float colorSigma, float mean) {
+  const RgbPlanes in = planes.colour(from), out = planes.colour(1 - from);
+  float *lum = planes[kLuminance], *inverseWidth = planes[kInverseWidth];
   tbb::parallel_for(0, h, [&](int y) {
-    for (int x = 0; x < w; ++x)
-      inverseWidth[size_t(y) * w + x] =
-          atrousInverseColorWidth(localLuminanceVariance(lum.data(), w, h, x, y), colorSigma, mean);
+    const size_t row = size_t(y) * w;
+    for (int x = 0; x < w; ++x) lum[row + x] = luminance(in.get(row + x));
   });
+  tbb::parallel_for(0, h,
+                    [&](int y) { inverseColorWidthRow(lum, w, h, y, colorSigma, mean, inverseWidth + size_t(y) * w); });
+  const float *nx = planes[kNx], *ny = planes[kNy], *nz = planes[kNz], *z = planes[kDepth];
+  const float *slopeX = planes[kSlopeX], *slopeY = planes[kSlopeY];
   tbb::parallel_for(tbb::blocked_range<int>(0, h), [&](const tbb::blocked_range<int>& rows) {
-    RowSums sums(in.width);
+    RowSums sums{uint32_t(w)};
     for (int y = rows.begin(); y < rows.end(); ++y) {
       sums.clear();
       const size_t row = size_t(y) * w;
-      const CentreRow centre{&lum[row], &inverseWidth[row], &g.nx[row], &g.ny[row], &g.nz[row],
-                             &g.z[row], &g.gx[row], &g.gy[row]};
+      const CentreRow centre{lum + row, inverseWidth + row, nx + row,    ny + row, nz + row,
+                             z + row,   slopeX + row,       slopeY + row};
       // In spans short enough that the rows a span reads stay in the L1 cache over its 25 taps.
       for (int start = 0; start < w; start += kSpan) {
         const int end = std::min(w, start + kSpan);
@@ -111,11 +172,14 @@ void atrousPass(const RgbPlanes& in, RgbPlanes& out, const GuidePlanes& g, const
           const int qy = y + dy * k.step;
           if (qy < 0 || qy >= h) continue;
           const size_t tapRow = size_t(qy) * w;
-          const TapRow tap{&in.r[tapRow], &in.g[tapRow], &in.b[tapRow], &g.nx[tapRow],
-                           &g.ny[tapRow], &g.nz[tapRow], &g.z[tapRow]};
+          const TapRow tap{in.r + tapRow, in.g + tapRow, in.b + tapRow, lum + tapRow,
+                           nx + tapRow,   ny + tapRow,   nz + tapRow,   z + tapRow};
           for (int dx = -2; dx <= 2; ++dx) {
             const int ox = dx * k.step;
-            accumulateTap(centre, tap, sums, std::max(start, -ox), std::min(end, w - ox), dx, dy, k);
+            if (dx == 0 && dy == 0)
+              accumulateCentre(tap, sums, start, end);
+            else
+              accumulateTap(centre, tap, sums, std::max(start, -ox), std::min(end, w - ox), dx, dy, k);
           }
         }
       }
@@ -144,22 +208,23 @@ void validateAtrousInput(const Image& color, const AovImages& aovs, const Atrous
 
 Image atrousDenoise(const Image& color, const AovImages& aovs, const AtrousParams& params) {
   validateAtrousInput(color, aovs, params);
-  const GuidePlanes guides = makeGuides(aovs);
-  RgbPlanes a(color.width, color.height), b(color.width, color.height);
-  tbb::parallel_for(size_t(0), color.pixels.size(), [&](size_t i) {
+  const int w = int(color.width), h = int(color.height);
+  const size_t pixels = color.pixels.size();
+  Planes planes(pixels);
+  fillGuides(aovs, planes);
+  const RgbPlanes demodulated = planes.colour(0);
+  tbb::parallel_for(size_t(0), pixels, [&](size_t i) {
     const Vec3 c = color.pixels[i], albedo = aovs.albedo.pixels[i];
-    a.set(i, {c.x / demodulationFactor(albedo.x), c.y / demodulationFactor(albedo.y),
-              c.z / demodulationFactor(albedo.z)});
+    demodulated.set(i, {c.x / demodulationFactor(albedo.x), c.y / demodulationFactor(albedo.y),
+                        c.z / demodulationFactor(albedo.z)});
   });
-  const float mean = meanLuminance(a);
-  std::vector<float> lum(a.r.size()), inverseWidth(a.r.size());
-  for (int pass = 0; pass < params.passes; ++pass) {
-    atrousPass(a, b, guides, atrousPassConstants(params, pass), params.colorSigma, mean, lum, inverseWidth);
-    std::swap(a, b);
-  }
+  const float mean = meanLuminance(demodulated, pixels);
+  for (int pass = 0; pass < params.passes; ++pass)
+    atrousPass(planes, pass % 2, w, h, atrousPassConstants(params, pass), params.colorSigma, mean);
+  const RgbPlanes filtered = planes.colour(params.passes % 2);
   Image result(color.width, color.height);
-  tbb::parallel_for(size_t(0), result.pixels.size(), [&](size_t i) {
-    const Vec3 albedo = aovs.albedo.pixels[i], c = a.get(i);
+  tbb::parallel_for(size_t(0), pixels, [&](size_t i) {
+    const Vec3 albedo = aovs.albedo.pixels[i], c = filtered.get(i);
     result.pixels[i] = {c.x * demodulationFactor(albedo.x), c.y * demodulationFactor(albedo.y),
                         c.z * demodulationFactor(albedo.z)};
   });

@@ -12,7 +12,9 @@ constexpr float kMinDemodulationAlbedo = 0.01f;
 // The depth difference every tap may have regardless of the gradient, relative to depth and tap distance.
 constexpr float kAtrousDepthFloor = 1e-3f;
 
-CANDELA_FN float demodulationFactor(float albedo) { return fmaxf(albedo, kMinDemodulationAlbedo); }
+CANDELA_FN float demodulationFactor(float albedo) {
+  return albedo > kMinDemodulationAlbedo ? albedo : kMinDemodulationAlbedo;
+}
 
 CANDELA_FN Vec3 unitOrZero(Vec3 n) {
   const float len = sqrtf(dot(n, n));
@@ -49,7 +51,26 @@ CANDELA_FN float localLuminanceVariance(const float* luminanceOf, int w, int h, 
     }
   }
   const float mean = sum / weights;
-  return fmaxf(sumSquares / weights - mean * mean, 0.0f);
+  const float variance = sumSquares / weights - mean * mean;
+  return variance > 0.0f ? variance : 0.0f;
+}
+
+// localLuminanceVariance at a pixel x whose whole neighbourhood lies inside the image, given the rows above, at and
+// below it: the same operations in the same order (the weights sum to 16 exactly), without the bounds checks, so that a
+// loop over a row's pixels vectorises.
+CANDELA_FN float interiorLuminanceVariance(const float* above, const float* row, const float* below, int x) {
+  float sum = 0.0f, sumSquares = 0.0f;
+  const float* rows[3] = {above, row, below};
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      const float weight = float((dx == 0 ? 2 : 1) * (dy == 0 ? 2 : 1));
+      const float l = rows[dy + 1][x + dx];
+      sum += weight * l;
+      sumSquares += weight * l * l;
+    }
+  const float mean = sum / 16.0f;
+  const float variance = sumSquares / 16.0f - mean * mean;
+  return variance > 0.0f ? variance : 0.0f;
 }
 
 // Luminance differences count in units of this: colorSigma standard deviations of the local noise, plus a floor
@@ -74,11 +95,10 @@ struct AtrousCentre {
 };
 
 // The weight of the tap (dx, dy) in [-2, 2]^2 of a pass, whose kernel weight is b3Weight(dx) * b3Weight(dy).
-CANDELA_FN float atrousWeight(int dx, int dy, float kernelWeight, const AtrousPassConstants& k,
-                              AtrousCentre p, float qr, float qg, float qb, float qnx, float qny, float qnz,
-                              float qz) {
+CANDELA_FN float atrousWeight(int dx, int dy, float kernelWeight, const AtrousPassConstants& k, AtrousCentre p,
+                              float qLuminance, float qnx, float qny, float qnz, float qz) {
   const float ox = float(dx * k.step), oy = float(dy * k.step);
-  const float colorTerm = fabsf(luminance({qr, qg, qb}) - p.luminance) * p.inverseColorWidth;
+  const float colorTerm = fabsf(qLuminance - p.luminance) * p.inverseColorWidth;
   const float nx = qnx - p.nx, ny = qny - p.ny, nz = qnz - p.nz;
   const float expected = fabsf(p.gx * ox + p.gy * oy) + kAtrousDepthFloor * p.z * (fabsf(ox) + fabsf(oy));
   const float depthTerm = fabsf(qz - p.z) / (k.depthSigma * expected + 1e-30f);

@@ -27,9 +27,9 @@ struct Planes {
 
 // Adds the tap (dx, dy) to the sums of pixels [x0, x1) of a row; compiled for AVX2 as well as the baseline
 // instruction set (chosen at run time), without FMA, so every build computes the CUDA version's sums.
-__attribute__((target_clones("avx512f", "avx2", "default"))) void accumulateTap(Planes centre, Planes tap, RowSums& sums,
-                                                                       int x0, int x1, int dx, int dy,
-                                                                       BilateralScales scales) {
+__attribute__((target_clones("avx512f", "avx2", "default"))) void accumulateTap(Planes centre, Planes tap,
+                                                                                RowSums& sums, int x0, int x1, int dx,
+                                                                                int dy, BilateralScales scales) {
   const float *pr = centre.r, *pg = centre.g, *pb = centre.b, *qr = tap.r, *qg = tap.g, *qb = tap.b;
   float *sr = sums.r.data(), *sg = sums.g.data(), *sb = sums.b.data(), *sw = sums.weight.data();
 #pragma GCC ivdep  // the sums and the planes never overlap
@@ -51,8 +51,11 @@ Image bilateralFilter(const Image& input, const BilateralParams& params) {
   validateBilateralParams(params);
   const BilateralScales scales = bilateralScales(params);
   const int r = params.radius, w = int(input.width), h = int(input.height);
-  const RgbPlanes in(input);
-  RgbPlanes out(input.width, input.height);
+  const size_t pixels = input.pixels.size();
+  PlaneStack planes(3, pixels);
+  const RgbPlanes in{planes[0], planes[1], planes[2]};
+  for (size_t i = 0; i < pixels; ++i) in.set(i, input.pixels[i]);
+  Image output(input.width, input.height);
   tbb::parallel_for(tbb::blocked_range<int>(0, h), [&](const tbb::blocked_range<int>& rows) {
     RowSums sums(input.width);
     for (int y = rows.begin(); y < rows.end(); ++y) {
@@ -66,11 +69,10 @@ Image bilateralFilter(const Image& input, const BilateralParams& params) {
         for (int dx = -r; dx <= r; ++dx)
           accumulateTap(centre, tap, sums, std::max(0, -dx), std::min(w, w - dx), dx, dy, scales);
       }
-      for (int x = 0; x < w; ++x)
-        out.set(row + x, Vec3{sums.r[x], sums.g[x], sums.b[x]} / sums.weight[x]);
+      for (int x = 0; x < w; ++x) output.pixels[row + x] = Vec3{sums.r[x], sums.g[x], sums.b[x]} / sums.weight[x];
     }
   });
-  return out.toImage();
+  return output;
 }
 
 }  // namespace candela

@@ -1,31 +1,38 @@
 #pragma once
 // Images as separate float planes per channel, the layout the CPU filters' row loops vectorise over.
+#include <algorithm>
 #include <vector>
 
 #include "image/image.h"
 
 namespace candela {
 
-struct RgbPlanes {
-  uint32_t width = 0, height = 0;
-  std::vector<float> r, g, b;
+// Planes of one size in one allocation, each starting at another offset within a 4 KiB page. Large planes allocated one
+// by one all start at the same page offset, and a loop that reads the same pixel of many of them then keeps evicting
+// its own data from the few L1 cache sets those addresses share.
+class PlaneStack {
+ public:
+  PlaneStack(size_t count, size_t pixels)
+      : stride_((pixels + kPageFloats - 1) / kPageFloats * kPageFloats + kStaggerFloats), data_(count * stride_) {}
+  float* operator[](size_t plane) { return data_.data() + plane * stride_; }
+  const float* operator[](size_t plane) const { return data_.data() + plane * stride_; }
 
-  RgbPlanes() = default;
-  RgbPlanes(uint32_t w, uint32_t h) : width(w), height(h), r(size_t(w) * h), g(r.size()), b(r.size()) {}
-  explicit RgbPlanes(const Image& image) : RgbPlanes(image.width, image.height) {
-    for (size_t i = 0; i < r.size(); ++i) set(i, image.pixels[i]);
-  }
-  void set(size_t i, Vec3 c) {
+ private:
+  static constexpr size_t kPageFloats = 1024,
+                          kStaggerFloats = 64;  // 256 bytes: 16 planes, 16 offsets
+  size_t stride_;
+  std::vector<float> data_;
+};
+
+// The red, green and blue planes of an image.
+struct RgbPlanes {
+  float *r, *g, *b;
+  void set(size_t i, Vec3 c) const {
     r[i] = c.x;
     g[i] = c.y;
     b[i] = c.z;
   }
   Vec3 get(size_t i) const { return {r[i], g[i], b[i]}; }
-  Image toImage() const {
-    Image image(width, height);
-    for (size_t i = 0; i < r.size(); ++i) image.pixels[i] = get(i);
-    return image;
-  }
 };
 
 // Per-row sums of weighted colour and of the weights.

@@ -102,7 +102,7 @@ __global__ void atrousPassKernel(Planes p, int from, int w, int h, AtrousPassCon
       if (qx < 0 || qx >= w) continue;
       const size_t q = size_t(qy) * w + qx;
       const float kernelWeight = b3Weight(dx) * b3Weight(dy);
-      const float weight = atrousWeight(dx, dy, kernelWeight, k, centre, inR[q], inG[q], inB[q], p.nx[q], p.ny[q], p.nz[q], p.z[q]);
+      const float weight = atrousWeight(dx, dy, kernelWeight, k, centre, p.lum[from][q], p.nx[q], p.ny[q], p.nz[q], p.z[q]);
       sr += inR[q] * weight;
       sg += inG[q] * weight;
       sb += inB[q] * weight;
