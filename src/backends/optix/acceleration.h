@@ -4,8 +4,11 @@
 #include <cuda_runtime.h>
 #include <optix_types.h>
 
+#include <cstdint>
+#include <memory>
 #include <vector>
 
+#include "backends/optix/acceleration_statistics.h"
 #include "backends/optix/device_buffer.h"
 #include "kernel/scene_view.h"
 #include "scene/flat_scene.h"
@@ -14,21 +17,38 @@ namespace candela::optix {
 
 class AccelerationStructures {
  public:
-  // `device` is the uploaded copy of `flat`: the GAS builds read vertices and indices from it.
-  void build(OptixDeviceContext context, cudaStream_t stream, const FlatScene& flat, const SceneView& device);
+  // Brings the structures up to date with `flat`, whose arrays `device` holds on the GPU. `previous` is the
+  // scene of the last update (it may be `flat` itself, after a material edit) and is only read. A mesh keeps
+  // the GAS of a mesh of the previous update whose triangles it equals: the same positions and indices, and
+  // the same triangles whose materials can let rays through (they carry any-hit; the others have it
+  // disabled). Other meshes are built; the IAS is built again when any GAS or instance changed.
+  void update(OptixDeviceContext context, cudaStream_t stream, const FlatScene* previous, const FlatScene& flat,
+              const SceneView& device);
 
   OptixTraversableHandle topLevel() const { return topLevel_; }
   size_t deviceBytes() const;
+  const AccelerationStatistics& statistics() const { return statistics_; }
 
  private:
-  void buildMeshes(OptixDeviceContext context, cudaStream_t stream, const FlatScene& flat, const SceneView& device);
-  void buildInstances(OptixDeviceContext context, cudaStream_t stream, const FlatScene& flat);
+  // One mesh's GAS and what it was built from. Meshes with equal triangles share one.
+  struct MeshStructure {
+    uint32_t meshIndex = 0;  // in the scene of the update that made or last kept it
+    uint64_t key = 0;        // meshKey: tells most different meshes apart cheaply
+    std::vector<uint8_t> sbtIndices;  // per triangle, 1 where the material can let rays through
+    std::shared_ptr<DeviceBuffer> structure;  // null for meshes without triangles
+    OptixTraversableHandle handle = 0;
+  };
 
-  std::vector<DeviceBuffer> meshStructures_;
-  std::vector<OptixTraversableHandle> meshHandles_;  // 0 for meshes without triangles
+  void buildMeshes(OptixDeviceContext context, cudaStream_t stream, const FlatScene& flat, const SceneView& device,
+                   std::vector<MeshStructure>& meshes, const std::vector<size_t>& toBuild);
+  void buildInstances(OptixDeviceContext context, cudaStream_t stream, const std::vector<OptixInstance>& instances);
+
+  std::vector<MeshStructure> meshes_;  // one per mesh of the last update
+  std::vector<OptixInstance> instanceList_;
   DeviceBuffer instances_;
   DeviceBuffer topLevelStructure_;
   OptixTraversableHandle topLevel_ = 0;
+  AccelerationStatistics statistics_;
 };
 
 }  // namespace candela::optix
