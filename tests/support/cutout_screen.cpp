@@ -7,7 +7,11 @@ namespace candela::test {
 namespace {
 
 constexpr float kScreenHalfSize = 200.0f;
-constexpr float kCheckerPeriod = 0.25f;  // the camera sees a square of side 1
+constexpr float kCheckerPeriod = 0.5f;  // the camera sees a square of side 1
+// Texels per checker cell. Filtering blends neighbouring texels across one texel at each cell edge, and a GPU
+// texture unit computes that blend in 8-bit fixed point: with wide cells its rounding touches little of the
+// screen (with one texel per cell, an H200 let 2% less sky through than the exact filter).
+constexpr uint32_t kCellTexels = 64;
 
 // A quad facing `towards`, with texture coordinates that repeat every kCheckerPeriod in x and z.
 void appendTexturedQuad(Mesh& mesh, float y, float halfSize, Vec3 towards, uint32_t material) {
@@ -43,10 +47,12 @@ Scene makeCutoutScreen(ScreenCoverage coverage) {
   scene.materials = {floor, screen, culled};
 
   Texture checker;
-  checker.name = "a 2x2 checker";
-  checker.width = checker.height = 2;
+  checker.name = "a checker of 2x2 cells";
+  checker.width = checker.height = 2 * kCellTexels;
   checker.channels = 1;
-  checker.bytes = {255, 0, 0, 255};
+  for (uint32_t y = 0; y < checker.height; ++y)
+    for (uint32_t x = 0; x < checker.width; ++x)
+      checker.bytes.push_back((x / kCellTexels + y / kCellTexels) % 2 == 0 ? 255 : 0);
   scene.textures.push_back(checker);
 
   Mesh mesh;

@@ -13,7 +13,7 @@ enum class ScreenCoverage {
 
 // A grey diffuse floor (albedo kScreenFloorAlbedo) under a black screen parallel to it at height 1, lit by a
 // uniform sky of radiance 1. The camera sits halfway between them looking straight down; it sees a square of
-// the floor exactly 4 x 4 periods of the screen's checker wide, and, the floor being parallel to the image
+// the floor exactly 2 x 2 periods of the screen's checker wide, and, the floor being parallel to the image
 // plane, every point of that square equally often. Between camera and screen hangs a black single-sided quad
 // whose front faces the screen, so every ray from the floor meets its back face: culled, it must let them by.
 // Floor, screen and quad are one mesh.

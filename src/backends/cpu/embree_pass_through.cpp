@@ -13,7 +13,9 @@ void rejectPassThroughHits(const RTCFilterFunctionNArguments* args) {
     hit.b2 = RTCHitN_v(args->hit, args->N, i);
     hit.instanceId = RTCHitN_instID(args->hit, args->N, i, 0);
     hit.primitiveId = RTCHitN_primID(args->hit, args->N, i);
-    if (passesThrough(*context->scene, hit, context->direction, context->randomBits)) args->valid[i] = 0;
+    const SceneView& scene = *context->scene;
+    auto backFace = [&] { return meetsBackFace(scene, hit, context->direction); };
+    if (passesThrough(scene, hit, backFace, context->randomBits)) args->valid[i] = 0;
   }
 }
 

@@ -16,10 +16,11 @@ namespace candela::optix {
 
 namespace {
 
-// Geometry flags per SBT index (launch_params.h): any-hit only where a material can let rays through.
-const unsigned int kOpaqueFlags[1] = {OPTIX_GEOMETRY_FLAG_DISABLE_ANYHIT};
-const unsigned int kPassThroughFlags[1] = {OPTIX_GEOMETRY_FLAG_NONE};
-const unsigned int kMixedFlags[kGeometrySbtRecords] = {OPTIX_GEOMETRY_FLAG_DISABLE_ANYHIT, OPTIX_GEOMETRY_FLAG_NONE};
+// Geometry flags per SBT index (launch_params.h): any-hit only where a material uses alpha; back faces culled
+// (by rays that ask for it: scenes with cut-outs) only where a material culls them.
+const unsigned int kGeometryFlags[kGeometrySbtRecords] = {
+    OPTIX_GEOMETRY_FLAG_DISABLE_ANYHIT | OPTIX_GEOMETRY_FLAG_DISABLE_TRIANGLE_FACE_CULLING,
+    OPTIX_GEOMETRY_FLAG_DISABLE_TRIANGLE_FACE_CULLING, OPTIX_GEOMETRY_FLAG_DISABLE_ANYHIT, OPTIX_GEOMETRY_FLAG_NONE};
 
 uint64_t mix(uint64_t hash, uint64_t value) {
   return hash ^ (value + 0x9e3779b97f4a7c15ull + (hash << 6) + (hash >> 2));
@@ -55,19 +56,21 @@ bool sameTriangles(const FlatScene& a, uint32_t meshA, const FlatScene& b, uint3
          std::memcmp(ia, ib, 3 * size_t(ma.triangleCount) * sizeof(uint32_t)) == 0;
 }
 
-// Per triangle, the SBT index: 1 where its material can let rays through. Empty when none can.
+// Per triangle, the SBT index; empty when all are 0.
 std::vector<uint8_t> sbtIndices(const FlatScene& flat, const MeshRecord& mesh) {
   std::vector<uint8_t> indices;
   if (!flat.hasCutouts) return indices;
   for (uint32_t t = 0; t < mesh.triangleCount; ++t) {
-    const bool passes = canPassThrough(flat.materials[flat.triangleMaterials[mesh.firstTriangle + t]]);
-    if (passes && indices.empty()) indices.assign(mesh.triangleCount, 0);
-    if (passes) indices[t] = 1;
+    const uint8_t index = materialSbtIndex(flat.materials[flat.triangleMaterials[mesh.firstTriangle + t]]);
+    if (index != 0 && indices.empty()) indices.assign(mesh.triangleCount, 0);
+    if (index != 0) indices[t] = index;
   }
   return indices;
 }
 
 }  // namespace
+
+uint8_t materialSbtIndex(const Material& m) { return uint8_t((usesAlpha(m) ? 1 : 0) | (cullsBackFaces(m) ? 2 : 0)); }
 
 void AccelerationStructures::update(OptixDeviceContext context, cudaStream_t stream, const FlatScene* previous,
                                     const FlatScene& flat, const SceneView& device) {
@@ -77,6 +80,8 @@ void AccelerationStructures::update(OptixDeviceContext context, cudaStream_t str
 
   std::vector<MeshStructure> meshes(flat.meshes.size());
   std::vector<size_t> toBuild;
+  std::unordered_multimap<uint64_t, uint32_t> earlierByKey;  // meshes of this update that own a GAS
+  std::vector<std::pair<uint32_t, uint32_t>> sharing;        // a mesh, and the earlier one it equals
   for (uint32_t m = 0; m < flat.meshes.size(); ++m) {
     const MeshRecord& mesh = flat.meshes[m];
     MeshStructure& s = meshes[m];
@@ -84,18 +89,30 @@ void AccelerationStructures::update(OptixDeviceContext context, cudaStream_t str
     s.key = meshKey(flat, mesh);
     s.sbtIndices = sbtIndices(flat, mesh);
     if (mesh.triangleCount == 0) continue;
-    auto [first, last] = previousByKey.equal_range(s.key);
-    for (auto it = first; it != last; ++it) {
-      const MeshStructure& old = meshes_[it->second];
-      if (old.structure && old.sbtIndices == s.sbtIndices && sameTriangles(*previous, old.meshIndex, flat, m)) {
-        s.structure = old.structure;
-        s.handle = old.handle;
-        break;
-      }
+    auto equals = [&](const MeshStructure& other, const FlatScene& otherScene) {
+      return other.sbtIndices == s.sbtIndices && sameTriangles(otherScene, other.meshIndex, flat, m);
+    };
+    auto [firstEarlier, lastEarlier] = earlierByKey.equal_range(s.key);
+    auto earlier = std::find_if(firstEarlier, lastEarlier, [&](const auto& e) { return equals(meshes[e.second], flat); });
+    if (earlier != lastEarlier) {
+      sharing.emplace_back(m, earlier->second);
+      continue;
     }
-    if (!s.structure) toBuild.push_back(m);
+    auto [firstOld, lastOld] = previousByKey.equal_range(s.key);
+    auto old = std::find_if(firstOld, lastOld, [&](const auto& e) { return equals(meshes_[e.second], *previous); });
+    if (old != lastOld) {
+      s.structure = meshes_[old->second].structure;
+      s.handle = meshes_[old->second].handle;
+    } else {
+      toBuild.push_back(m);
+    }
+    earlierByKey.emplace(s.key, m);
   }
   buildMeshes(context, stream, flat, device, meshes, toBuild);
+  for (auto [m, earlierMesh] : sharing) {
+    meshes[m].structure = meshes[earlierMesh].structure;
+    meshes[m].handle = meshes[earlierMesh].handle;
+  }
 
   std::vector<OptixInstance> instances;
   for (size_t i = 0; i < flat.instances.size(); ++i) {
@@ -147,12 +164,12 @@ void AccelerationStructures::buildMeshes(OptixDeviceContext context, cudaStream_
     triangles.indexBuffer = CUdeviceptr(device.indices + 3 * size_t(mesh.firstTriangle));
     triangles.numSbtRecords = 1;
     if (sbt.empty()) {
-      triangles.flags = kOpaqueFlags;
-    } else if (std::all_of(sbt.begin(), sbt.end(), [](uint8_t i) { return i == 1; })) {
-      triangles.flags = kPassThroughFlags;
+      triangles.flags = &kGeometryFlags[0];
+    } else if (std::all_of(sbt.begin(), sbt.end(), [&](uint8_t i) { return i == sbt[0]; })) {
+      triangles.flags = &kGeometryFlags[sbt[0]];
     } else {
-      sbtIndexBuffers[b] = DeviceBuffer::fromVector(sbt, "a mesh's any-hit selection");
-      triangles.flags = kMixedFlags;
+      sbtIndexBuffers[b] = DeviceBuffer::fromVector(sbt, "a mesh's SBT indices");
+      triangles.flags = kGeometryFlags;
       triangles.numSbtRecords = kGeometrySbtRecords;
       triangles.sbtIndexOffsetBuffer = sbtIndexBuffers[b].address();
       triangles.sbtIndexOffsetSizeInBytes = sizeof(uint8_t);

@@ -15,13 +15,16 @@
 
 namespace candela::optix {
 
+// The SBT index (launch_params.h) of triangles with this material.
+uint8_t materialSbtIndex(const Material& m);
+
 class AccelerationStructures {
  public:
   // Brings the structures up to date with `flat`, whose arrays `device` holds on the GPU. `previous` is the
-  // scene of the last update (it may be `flat` itself, after a material edit) and is only read. A mesh keeps
-  // the GAS of a mesh of the previous update whose triangles it equals: the same positions and indices, and
-  // the same triangles whose materials can let rays through (they carry any-hit; the others have it
-  // disabled). Other meshes are built; the IAS is built again when any GAS or instance changed.
+  // scene of the last update (it may be `flat` itself, after a material edit) and is only read. A mesh shares
+  // the GAS of any mesh, of the previous update or built before it in this one, whose triangles it equals: the
+  // same positions, indices and SBT indices. Other meshes are built; the IAS is built again when any instance
+  // or the GAS it refers to changed.
   void update(OptixDeviceContext context, cudaStream_t stream, const FlatScene* previous, const FlatScene& flat,
               const SceneView& device);
 
@@ -30,11 +33,12 @@ class AccelerationStructures {
   const AccelerationStatistics& statistics() const { return statistics_; }
 
  private:
-  // One mesh's GAS and what it was built from. Meshes with equal triangles share one.
+  // One mesh's GAS and what it was built from. Meshes with equal triangles share one, so that a GAS a scene
+  // keeps has the same handle whichever of the equal meshes it is found through.
   struct MeshStructure {
     uint32_t meshIndex = 0;  // in the scene of the update that made or last kept it
     uint64_t key = 0;        // meshKey: tells most different meshes apart cheaply
-    std::vector<uint8_t> sbtIndices;  // per triangle, 1 where the material can let rays through
+    std::vector<uint8_t> sbtIndices;  // per triangle (materialSbtIndex); empty where all are 0
     std::shared_ptr<DeviceBuffer> structure;  // null for meshes without triangles
     OptixTraversableHandle handle = 0;
   };

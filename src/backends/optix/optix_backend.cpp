@@ -17,7 +17,6 @@
 #include "backends/optix/optix_error.h"
 #include "backends/optix/pipeline.h"
 #include "backends/optix/pixel_counters.h"
-#include "kernel/pass_through.h"
 #include "scene/flat_scene.h"
 
 namespace candela {
@@ -202,7 +201,7 @@ bool OptixBackend::setMaterials(const std::vector<Material>& materials) {
   if (!s.hasScene || materials.size() != s.flat.materials.size()) return false;
   bool cutoutsChange = false;
   for (size_t i = 0; i < materials.size(); ++i)
-    cutoutsChange = cutoutsChange || canPassThrough(materials[i]) != canPassThrough(s.flat.materials[i]);
+    cutoutsChange = cutoutsChange || materialSbtIndex(materials[i]) != materialSbtIndex(s.flat.materials[i]);
   if (!s.flat.replaceMaterials(materials)) return false;
   s.scene.updateMaterials(s.flat);
   if (cutoutsChange) s.acceleration.update(s.context.get(), s.context.stream(), &s.flat, s.flat, s.scene.view());

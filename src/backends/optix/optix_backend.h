@@ -55,8 +55,9 @@ class OptixBackend final : public Backend {
   // trace exactly those rays again, in the same order per pixel, with no shading.
   RawTraceTiming timeRawTrace(uint32_t warmup, uint32_t frames);
 
-  // setScene keeps the GAS of every mesh whose triangles did not change and rebuilds the IAS only when an
-  // instance or a GAS changed; setMaterials rebuilds the GASes of meshes whose cut-out triangles changed.
+  // setScene keeps the GAS of every mesh whose triangles did not change (meshes with equal triangles share
+  // one) and rebuilds the IAS only when an instance or a GAS changed; setMaterials rebuilds the GASes of meshes
+  // on which a material started or stopped using alpha or culling back faces.
   AccelerationStatistics accelerationStatistics() const;
 
  private:

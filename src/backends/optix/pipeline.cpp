@@ -95,8 +95,9 @@ Pipeline::Pipeline(OptixDeviceContext context, OptixModule module, const std::ve
   descriptions[shadowMiss].kind = OPTIX_PROGRAM_GROUP_KIND_MISS;
   descriptions[shadowMiss].miss.module = module;
   descriptions[shadowMiss].miss.entryFunctionName = "__miss__shadow";
-  // Both hit groups hold the pass-through any-hit program; geometry that cannot let rays through is built with
-  // any-hit disabled (acceleration.cpp), so only cut-outs run it. Shadow rays disable closest-hit.
+  // Both hit groups hold the pass-through any-hit program; triangles whose material does not use alpha are
+  // built with any-hit disabled (acceleration.cpp), so only those that do run it. Shadow rays disable
+  // closest-hit.
   descriptions[radianceHit].kind = OPTIX_PROGRAM_GROUP_KIND_HITGROUP;
   descriptions[radianceHit].hitgroup.moduleCH = module;
   descriptions[radianceHit].hitgroup.entryFunctionNameCH = "__closesthit__radiance";
@@ -138,7 +139,7 @@ Pipeline::Pipeline(OptixDeviceContext context, OptixModule module, const std::ve
 
   // Records carry only their program headers: every program reads scene data through the launch parameters.
   // The hit-group records repeat once per SBT index a mesh's triangles can have (kGeometrySbtRecords), which
-  // differ only in the any-hit flag the mesh's build gives them.
+  // differ only in the geometry flags the mesh's build gives them.
   std::vector<HeaderOnlyRecord> records(groups_.size() + (kGeometrySbtRecords - 1) * kRayTypeCount);
   for (size_t i = 0; i < groups_.size(); ++i)
     checkOptix(optixSbtRecordPackHeader(groups_[i], &records[i]), "packing a shader binding table record");

@@ -9,9 +9,11 @@ namespace candela::optix {
 
 class OptixTracer {
  public:
-  // `cutouts`: the scene has geometry with any-hit programs (SceneView::hasCutouts); without, rays skip them.
+  // `cutouts`: the scene has cut-outs (SceneView::hasCutouts). Then rays cull back faces, which only the
+  // triangles of materials that cull them allow (acceleration.cpp); without, rays skip any-hit programs.
   __device__ OptixTracer(OptixTraversableHandle traversable, bool cutouts)
-      : traversable_(traversable), anyHitFlag_(cutouts ? OPTIX_RAY_FLAG_NONE : OPTIX_RAY_FLAG_DISABLE_ANYHIT) {}
+      : traversable_(traversable),
+        cutoutFlags_(cutouts ? OPTIX_RAY_FLAG_CULL_BACK_FACING_TRIANGLES : OPTIX_RAY_FLAG_DISABLE_ANYHIT) {}
 
   // Closest hit: payload register 0 carries the random bits to the any-hit program (kernel/pass_through.h); then
   // the radiance closest-hit program writes t, barycentrics and ids into the five registers. The radiance miss
@@ -19,7 +21,7 @@ class OptixTracer {
   __device__ bool intersect(const Ray& ray, Hit& hit, uint32_t randomBits) const {
     uint32_t t = randomBits, b1 = 0, b2 = 0, instance = kMissedInstance, primitive = 0;
     optixTrace(traversable_, toFloat3(ray.origin), toFloat3(ray.direction), ray.tMin, ray.tMax, 0.0f,
-               OptixVisibilityMask(0xFF), anyHitFlag_, kRadianceRay, kRayTypeCount, kRadianceRay, t, b1, b2,
+               OptixVisibilityMask(0xFF), cutoutFlags_, kRadianceRay, kRayTypeCount, kRadianceRay, t, b1, b2,
                instance, primitive);
     if (instance == kMissedInstance) return false;
     hit.t = __uint_as_float(t);
@@ -36,7 +38,7 @@ class OptixTracer {
     uint32_t occluded = 1;
     optixTrace(traversable_, toFloat3(ray.origin), toFloat3(ray.direction), ray.tMin, ray.tMax, 0.0f,
                OptixVisibilityMask(0xFF),
-               OPTIX_RAY_FLAG_TERMINATE_ON_FIRST_HIT | OPTIX_RAY_FLAG_DISABLE_CLOSESTHIT | anyHitFlag_, kShadowRay,
+               OPTIX_RAY_FLAG_TERMINATE_ON_FIRST_HIT | OPTIX_RAY_FLAG_DISABLE_CLOSESTHIT | cutoutFlags_, kShadowRay,
                kRayTypeCount, kShadowRay, randomBits, occluded);
     return occluded != 0;
   }
@@ -45,7 +47,7 @@ class OptixTracer {
   __device__ static float3 toFloat3(Vec3 v) { return make_float3(v.x, v.y, v.z); }
 
   OptixTraversableHandle traversable_;
-  unsigned int anyHitFlag_;
+  unsigned int cutoutFlags_;
 };
 
 // An OptixTracer that also writes every ray it traces into a RayRecording, for the raw-trace mode.

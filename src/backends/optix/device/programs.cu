@@ -106,18 +106,17 @@ extern "C" __global__ void __closesthit__radiance() {
   optixSetPayload_4(optixGetPrimitiveIndex());
 }
 
-// Any-hit for both ray types, present only on geometry whose material can let rays through: drops the
-// candidate hit when the ray passes through it. Register 0 holds the query's random bits on the way in.
+// Any-hit for both ray types, run only on triangles whose material uses alpha: drops the candidate hit when
+// the ray passes through it. Register 0 holds the query's random bits on the way in. Back faces of materials
+// that cull them never get here: traversal culls them.
 extern "C" __global__ void __anyhit__passThrough() {
   const float2 barycentrics = optixGetTriangleBarycentrics();
-  const float3 direction = optixGetWorldRayDirection();
   Hit hit;
   hit.b1 = barycentrics.x;
   hit.b2 = barycentrics.y;
   hit.instanceId = optixGetInstanceId();
   hit.primitiveId = optixGetPrimitiveIndex();
-  if (passesThrough(params.scene, hit, Vec3{direction.x, direction.y, direction.z}, optixGetPayload_0()))
-    optixIgnoreIntersection();
+  if (passesThrough(params.scene, hit, [] { return false; }, optixGetPayload_0())) optixIgnoreIntersection();
 }
 
 extern "C" __global__ void __miss__shadow() { optixSetPayload_1(0); }
