@@ -35,8 +35,8 @@ CANDELA_FN Vec3 texturedLightRadiance(const SceneView& scene, const LightSample&
 // Unidirectional path tracing with next-event estimation and BSDF sampling combined by MIS (power heuristic),
 // Russian roulette after `rouletteDepth` bounces. `Tracer` answers the two ray queries:
 //   bool intersect(const Ray&, Hit&, uint32_t randomBits) const;  bool occluded(const Ray&, uint32_t randomBits) const;
-// Both look through cut-outs: a hit for which passesThrough(scene, hit, ray.direction, randomBits) holds is no
-// hit (kernel/pass_through.h).
+// Both look through cut-outs: a hit that passesThrough (kernel/pass_through.h) allows through, with these random
+// bits, is no hit.
 // Delta lobes (mirror, smooth glass) skip light sampling and take the emission they hit at full weight; rays
 // that refract continue on the far side of the surface.
 // With kWithAovs the path also records PathAovs at its first non-specular vertex; without, that code is not
