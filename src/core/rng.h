@@ -42,6 +42,8 @@ class PathSampler {
       : pixel_(pixel), sampleIndex_(sampleIndex), seed_(seed) {}
 
   CANDELA_FN float next1D() { return randomUniform(pixel_, sampleIndex_, dimension_++, seed_); }
+  // The next dimension's 32 random bits, for callers that hash them further.
+  CANDELA_FN uint32_t nextBits() { return pcg4d({pixel_, sampleIndex_, dimension_++, seed_}).x; }
 
  private:
   uint32_t pixel_;

@@ -5,8 +5,8 @@
 namespace candela {
 
 struct MissEverythingTracer {
-  __device__ bool intersect(const Ray&, Hit&) const { return false; }
-  __device__ bool occluded(const Ray&) const { return false; }
+  __device__ bool intersect(const Ray&, Hit&, uint32_t) const { return false; }
+  __device__ bool occluded(const Ray&, uint32_t) const { return false; }
 };
 
 __global__ void compileKernelForDevice(SceneView scene, Camera camera, RenderSettings settings, Vec3* out) {

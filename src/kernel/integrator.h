@@ -5,6 +5,7 @@
 #include "kernel/camera.h"
 #include "kernel/interaction.h"
 #include "kernel/lights.h"
+#include "kernel/pass_through.h"
 #include "kernel/render_settings.h"
 #include "kernel/textured_material.h"
 
@@ -15,44 +16,6 @@ struct PathResult {
   uint32_t rays = 0;  // camera, bounce and shadow rays traced for this path
   PathAovs aovs;      // filled only by the kWithAovs instantiations
 };
-
-// Surfaces crossed without scattering along one ray before it counts as blocked: bounds the work a stack of
-// cut-outs can cost.
-constexpr uint32_t kMaxPassThroughs = 64;
-
-// Whether a ray arriving from wo goes through this surface point untouched: a back face of a single-sided
-// opaque material, a texel under the alpha cutoff, or (alpha blending) with probability 1 - alpha, which is
-// stochastic transparency: unbiased for the blended result.
-template <class NextRandom>
-CANDELA_FN bool passesThrough(const SceneView& scene, const Material& m, const SurfaceInteraction& si, Vec3 wo,
-                              NextRandom&& nextRandom) {
-  bool transmissive = m.type == MaterialType::Glass || (m.type == MaterialType::Disney && m.specTrans > 0.0f);
-  if (!m.doubleSided && !transmissive && dot(wo, si.geometricNormal) < 0.0f) return true;
-  if (m.alphaMode == AlphaMode::Opaque) return false;
-  float alpha = materialAlpha(scene, m, si.uv);
-  if (m.alphaMode == AlphaMode::Mask) return alpha < m.alphaCutoff;
-  return alpha < 1.0f && nextRandom() >= alpha;
-}
-
-// A shadow ray's query: the tracer's any-hit query when nothing can be seen through, otherwise closest hits
-// stepped through cut-outs.
-template <class Tracer>
-CANDELA_FN bool occludedThroughCutouts(const SceneView& scene, const Tracer& tracer, Ray shadow,
-                                       PathSampler& sampler, uint32_t& rays) {
-  ++rays;
-  if (!scene.hasCutouts) return tracer.occluded(shadow);
-  for (uint32_t i = 0; i < kMaxPassThroughs; ++i) {
-    Hit hit;
-    if (i > 0) ++rays;
-    if (!tracer.intersect(shadow, hit)) return false;
-    SurfaceInteraction si = makeInteraction(scene, hit);
-    if (!passesThrough(scene, scene.materials[si.materialId], si, -shadow.direction, [&] { return sampler.next1D(); }))
-      return true;
-    shadow.origin = offsetRayOrigin(si.position, si.geometricNormal, shadow.direction);
-    shadow.tMax = shadow.tMax >= kInf ? kInf : shadow.tMax - hit.t;
-  }
-  return true;
-}
 
 // Radiance a sampled light point emits, with the emission texture of its material applied.
 CANDELA_FN Vec3 texturedLightRadiance(const SceneView& scene, const LightSample& ls) {
@@ -71,7 +34,9 @@ CANDELA_FN Vec3 texturedLightRadiance(const SceneView& scene, const LightSample&
 
 // Unidirectional path tracing with next-event estimation and BSDF sampling combined by MIS (power heuristic),
 // Russian roulette after `rouletteDepth` bounces. `Tracer` answers the two ray queries:
-//   bool intersect(const Ray&, Hit&) const;  bool occluded(const Ray&) const;
+//   bool intersect(const Ray&, Hit&, uint32_t randomBits) const;  bool occluded(const Ray&, uint32_t randomBits) const;
+// Both look through cut-outs: a hit that passesThrough (kernel/pass_through.h) allows through, with these random
+// bits, is no hit.
 // Delta lobes (mirror, smooth glass) skip light sampling and take the emission they hit at full weight; rays
 // that refract continue on the far side of the surface.
 // With kWithAovs the path also records PathAovs at its first non-specular vertex; without, that code is not
@@ -84,15 +49,15 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
   float etaScale = 1.0f;  // product of eta^2 over refractions: undoes their radiance scaling for roulette
   bool specularBounce = false;
   float bsdfPdf = 0.0f;        // solid-angle pdf of the BSDF sample that produced `ray`
-  Vec3 lastScatter = ray.origin;  // where that sample was taken (cut-outs move the ray's origin on)
-  uint32_t passThroughs = 0;
+  Vec3 lastScatter = ray.origin;  // where that sample was taken
   bool aovsPending = kWithAovs;
   float pathLength = 0.0f;  // camera to the current hit, summed while the AOVs are pending
-  auto nextRandom = [&] { return sampler.next1D(); };
+  // Random bits for a ray query's pass-through decisions; scenes without cut-outs never ask for them.
+  auto queryBits = [&] { return scene.hasCutouts ? sampler.nextBits() : 0u; };
   for (uint32_t depth = 0;;) {
     Hit hit;
     ++result.rays;
-    if (!tracer.intersect(ray, hit)) {
+    if (!tracer.intersect(ray, hit, queryBits())) {
       if (kWithAovs && aovsPending) result.aovs.albedo = beta;
       Vec3 le = environmentRadiance(scene, ray.direction);
       if (!isBlack(le) && (depth > 0 || scene.environment.visibleToCamera)) {
@@ -105,11 +70,6 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
     SurfaceInteraction si = makeInteraction(scene, hit);
     const Material& stored = scene.materials[si.materialId];
     Vec3 wo = -ray.direction;
-    if (scene.hasCutouts && passesThrough(scene, stored, si, wo, nextRandom)) {
-      if (++passThroughs > kMaxPassThroughs) break;
-      ray = {offsetRayOrigin(si.position, si.geometricNormal, ray.direction), ray.direction, 0.0f, kInf};
-      continue;
-    }
     Material material = evaluateMaterial(scene, stored, si.uv);
     applyNormalMap(scene, material, si);
     if (kWithAovs && aovsPending && !isSpecularMaterial(material)) {
@@ -147,7 +107,8 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
         if (!isBlack(f)) {
           Ray shadow{offsetRayOrigin(si.position, si.geometricNormal, ls.wi), ls.wi, 0.0f,
                      ls.distance >= kInf ? kInf : ls.distance * (1.0f - 1e-4f)};
-          if (!occludedThroughCutouts(scene, tracer, shadow, sampler, result.rays)) {
+          ++result.rays;
+          if (!tracer.occluded(shadow, queryBits())) {
             Vec3 le = ls.distance >= kInf ? ls.radiance : texturedLightRadiance(scene, ls);
             float w = powerHeuristic(ls.pdf, bsdf.pdf(wo, ls.wi));
             result.radiance += beta * f * le * (fabsf(dot(ls.wi, bsdf.normal())) * w / ls.pdf);

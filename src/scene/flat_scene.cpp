@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "kernel/pass_through.h"
 #include "scene/tangents.h"
 #include "scene/transform.h"
 
@@ -71,7 +72,7 @@ bool needsTangents(const Scene& scene, const Mesh& mesh) {
 
 bool anyCutouts(const std::vector<Material>& materials) {
   for (const Material& m : materials)
-    if (m.alphaMode != AlphaMode::Opaque || !m.doubleSided) return true;
+    if (canPassThrough(m)) return true;
   return false;
 }
 

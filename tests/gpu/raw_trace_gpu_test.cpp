@@ -4,12 +4,14 @@
 #include <cstring>
 
 #include "gpu_render.h"
+#include "support/cutout_screen.h"
 
 namespace candela {
 namespace {
 
 TEST(GpuRawTrace, ReplaysTheRaysOfTheNextSample) {
-  for (const Scene& scene : {makeCornellBox(), makeCornellSpheres()}) {
+  for (const Scene& scene :
+       {makeCornellBox(), makeCornellSpheres(), test::makeCutoutScreen(test::ScreenCoverage::CheckerMask)}) {
     auto backend = test::makeBackend<OptixBackend>(scene, test::squareImage(64, 9));
     backend->render(1);
     Image before = backend->readImage();

@@ -7,6 +7,7 @@
 #include "app/scene_loading.h"
 #include "gpu_render.h"
 #include "render_comparison.h"
+#include "support/cutout_screen.h"
 
 namespace candela {
 namespace {
@@ -30,6 +31,13 @@ TEST(GpuMaterialGallery, AgreesWithTheCpuBackend) { expectBackendsAgree(makeMate
 
 // Mirrors: delta lobes, paths that reach the light only by reflection.
 TEST(GpuMirrorCorridor, AgreesWithTheCpuBackend) { expectBackendsAgree(makeMirrorCorridor(), 51); }
+
+// Cut-outs (support/cutout_screen.h): an alpha-tested checker or alpha blending, and culled back faces, in
+// one mesh with an opaque floor; shadow and bounce rays cross them.
+TEST(GpuCutoutScreen, AgreesWithTheCpuBackend) {
+  expectBackendsAgree(test::makeCutoutScreen(test::ScreenCoverage::CheckerMask), 71);
+  expectBackendsAgree(test::makeCutoutScreen(test::ScreenCoverage::HalfBlend), 81);
+}
 
 // Textured glTF materials with a normal map, lit by an importance-sampled environment map.
 TEST(GpuDamagedHelmet, AgreesWithTheCpuBackendUnderAnEnvironmentMap) {

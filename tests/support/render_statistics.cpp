@@ -55,6 +55,22 @@ ImageMean imageMean(const Image& image) {
   return m;
 }
 
+ImageMean imageMean(const PixelStatistics& stats) {
+  double sum = 0.0, variance = 0.0;
+  const size_t n = stats.mean.pixels.size();
+  for (size_t i = 0; i < n; ++i) {
+    const Vec3 p = stats.mean.pixels[i], v = stats.varianceOfMean.pixels[i];
+    sum += (double(p.x) + p.y + p.z) / 3.0;
+    // The channels of a pixel are correlated: the mean of their standard deviations bounds their average's.
+    const double sd = (std::sqrt(double(v.x)) + std::sqrt(double(v.y)) + std::sqrt(double(v.z))) / 3.0;
+    variance += sd * sd;
+  }
+  ImageMean m;
+  m.mean = sum / double(n);
+  m.standardError = std::sqrt(variance) / double(n);
+  return m;
+}
+
 double twoSidedNormalQuantile(double alpha) {
   // Bisection on erfc(z / sqrt 2) = alpha; monotone, so this converges to full precision.
   double lo = 0.0, hi = 40.0;

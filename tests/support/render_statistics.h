@@ -25,6 +25,10 @@ struct ImageMean {
   double standardError = 0.0;
 };
 ImageMean imageMean(const Image& image);
+// Mean over all pixels and channels of a batched render, with its standard error from the pixels' own
+// variances of the mean (pixels independent). Unlike imageMean(stats.mean), right also where pixels differ
+// in expectation.
+ImageMean imageMean(const PixelStatistics& stats);
 
 // The z value beyond which a two-sided normal test rejects at `alpha` (inverse of erfc).
 double twoSidedNormalQuantile(double alpha);

@@ -29,14 +29,6 @@ std::unique_ptr<Backend> start(const BackendFactory& makeBackend, const Scene& s
   return backend;
 }
 
-void expectSameImage(const Image& a, const Image& b) {
-  ASSERT_EQ(a.pixels.size(), b.pixels.size());
-  size_t differing = 0;
-  for (size_t i = 0; i < a.pixels.size(); ++i)
-    if (std::memcmp(&a.pixels[i], &b.pixels[i], sizeof(Vec3)) != 0) ++differing;
-  EXPECT_EQ(differing, 0u) << "of " << a.pixels.size() << " pixels";
-}
-
 // Renders the original scene first, so that the edit must restart a film that holds samples.
 Image renderEdited(const BackendFactory& makeBackend, const Scene& original,
                    const std::function<void(Backend&)>& edit) {
@@ -55,6 +47,14 @@ Image renderRebuilt(const BackendFactory& makeBackend, const Scene& edited) {
 }
 
 }  // namespace
+
+void expectSameImage(const Image& a, const Image& b) {
+  ASSERT_EQ(a.pixels.size(), b.pixels.size());
+  size_t differing = 0;
+  for (size_t i = 0; i < a.pixels.size(); ++i)
+    if (std::memcmp(&a.pixels[i], &b.pixels[i], sizeof(Vec3)) != 0) ++differing;
+  EXPECT_EQ(differing, 0u) << "of " << a.pixels.size() << " pixels";
+}
 
 void expectMaterialEditMatchesRebuild(const BackendFactory& makeBackend) {
   const Scene original = makeMaterialGallery();

@@ -12,6 +12,9 @@ namespace candela::test {
 
 using BackendFactory = std::function<std::unique_ptr<Backend>()>;
 
+// Expects two images equal bit for bit.
+void expectSameImage(const Image& a, const Image& b);
+
 // The material gallery re-shaded with the PBR model and an overridden roughness.
 void expectMaterialEditMatchesRebuild(const BackendFactory& makeBackend);
 

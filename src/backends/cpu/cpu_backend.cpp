@@ -44,6 +44,7 @@ void CpuBackend::setScene(const Scene& scene) {
 
 bool CpuBackend::setMaterials(const std::vector<Material>& materials) {
   if (!flat_.replaceMaterials(materials)) return false;
+  if (!embree_.filtersMatch(flat_)) embree_.build(flat_);
   restart();
   return true;
 }
@@ -84,7 +85,7 @@ FrameStats CpuBackend::render(uint32_t samplesPerPixel) {
 template <bool kWithAovs>
 FrameStats CpuBackend::renderSamples(uint32_t samplesPerPixel) {
   const SceneView scene = flat_.hostView();
-  const EmbreeTracer tracer(embree_.topLevel());
+  const EmbreeTracer tracer(embree_.topLevel(), scene);
   const uint32_t firstSample = accumulated_;
   tbb::combinable<FrameStats> stats;
   tbb::parallel_for(

@@ -3,6 +3,9 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "backends/cpu/embree_pass_through.h"
+#include "kernel/pass_through.h"
+
 namespace candela {
 
 namespace {
@@ -11,6 +14,17 @@ void check(RTCDevice device, const char* what) {
   RTCError error = rtcGetDeviceError(device);
   if (error != RTC_ERROR_NONE)
     throw std::runtime_error(std::string("Embree failed while ") + what + " (error " + std::to_string(error) + ")");
+}
+
+std::vector<bool> meshesThatCanPassRays(const FlatScene& flat) {
+  std::vector<bool> result(flat.meshes.size(), false);
+  if (!flat.hasCutouts) return result;
+  for (size_t m = 0; m < flat.meshes.size(); ++m) {
+    const MeshRecord& mesh = flat.meshes[m];
+    for (uint32_t t = mesh.firstTriangle; t < mesh.firstTriangle + mesh.triangleCount && !result[m]; ++t)
+      result[m] = canPassThrough(flat.materials[flat.triangleMaterials[t]]);
+  }
+  return result;
 }
 
 }  // namespace
@@ -35,7 +49,9 @@ void EmbreeScene::release() {
 
 void EmbreeScene::build(const FlatScene& flat) {
   release();
-  for (const MeshRecord& mesh : flat.meshes) {
+  filtered_ = meshesThatCanPassRays(flat);
+  for (size_t m = 0; m < flat.meshes.size(); ++m) {
+    const MeshRecord& mesh = flat.meshes[m];
     RTCScene meshScene = rtcNewScene(device_);
     RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
     // Embree's own buffers carry the padding its SIMD loads need past the last vertex.
@@ -51,6 +67,10 @@ void EmbreeScene::build(const FlatScene& flat) {
     if (mesh.triangleCount > 0)
       std::memcpy(indices, flat.indices.data() + 3 * size_t(mesh.firstTriangle),
                   3 * size_t(mesh.triangleCount) * sizeof(uint32_t));
+    if (filtered_[m]) {
+      rtcSetGeometryIntersectFilterFunction(geometry, rejectPassThroughHits);
+      rtcSetGeometryOccludedFilterFunction(geometry, rejectPassThroughHits);
+    }
     rtcCommitGeometry(geometry);
     rtcAttachGeometry(meshScene, geometry);
     rtcReleaseGeometry(geometry);
@@ -73,5 +93,7 @@ void EmbreeScene::build(const FlatScene& flat) {
   rtcCommitScene(top_);
   check(device_, "building the instance BVH");
 }
+
+bool EmbreeScene::filtersMatch(const FlatScene& flat) const { return filtered_ == meshesThatCanPassRays(flat); }
 
 }  // namespace candela

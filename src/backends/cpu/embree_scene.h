@@ -8,7 +8,8 @@
 namespace candela {
 
 // Embree's view of a scene: one triangle geometry per mesh, each in its own scene, instanced into a top-level
-// scene with the instance transforms. Instance and primitive ids match SceneView's.
+// scene with the instance transforms. Instance and primitive ids match SceneView's. Meshes with a material that
+// can let rays through carry the pass-through filter functions (embree_pass_through.h); the others none.
 class EmbreeScene {
  public:
   EmbreeScene();
@@ -18,6 +19,8 @@ class EmbreeScene {
 
   void build(const FlatScene& flat);
   RTCScene topLevel() const { return top_; }
+  // Whether the meshes that carry filter functions are still those that need them after a material edit.
+  bool filtersMatch(const FlatScene& flat) const;
 
  private:
   void release();
@@ -25,6 +28,7 @@ class EmbreeScene {
   RTCDevice device_ = nullptr;
   RTCScene top_ = nullptr;
   std::vector<RTCScene> meshScenes_;
+  std::vector<bool> filtered_;  // per mesh: carries the filter functions
 };
 
 }  // namespace candela

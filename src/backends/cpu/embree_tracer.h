@@ -1,26 +1,31 @@
 #pragma once
 #include "backends/cpu/embree.h"
+#include "backends/cpu/embree_pass_through.h"
 #include "core/math.h"
 #include "kernel/hit.h"
+#include "kernel/scene_view.h"
 
 namespace candela {
 
-// The ray queries of the kernel integrator, answered by Embree.
+// The ray queries of the kernel integrator, answered by Embree. `view` is the scene Embree's structures were
+// built from; the filter functions on its cut-out geometry read it.
 class EmbreeTracer {
  public:
-  explicit EmbreeTracer(RTCScene scene) : scene_(scene) {}
+  EmbreeTracer(RTCScene scene, const SceneView& view) : scene_(scene), view_(view) {}
 
-  bool intersect(const Ray& ray, Hit& hit) const {
+  bool intersect(const Ray& ray, Hit& hit, uint32_t randomBits) const {
     RTCRayHit rh;
     setRay(rh.ray, ray);
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    PassThroughContext context = makeContext(ray, randomBits);
 #if CANDELA_EMBREE_VERSION >= 4
-    rtcIntersect1(scene_, &rh);
+    RTCIntersectArguments arguments;
+    rtcInitIntersectArguments(&arguments);
+    arguments.context = &context.base;
+    rtcIntersect1(scene_, &rh, &arguments);
 #else
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    rtcIntersect1(scene_, &context, &rh);
+    rtcIntersect1(scene_, &context.base, &rh);
 #endif
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
     hit.t = rh.ray.tfar;
@@ -31,20 +36,35 @@ class EmbreeTracer {
     return true;
   }
 
-  bool occluded(const Ray& ray) const {
+  bool occluded(const Ray& ray, uint32_t randomBits) const {
     RTCRay r;
     setRay(r, ray);
+    PassThroughContext context = makeContext(ray, randomBits);
 #if CANDELA_EMBREE_VERSION >= 4
-    rtcOccluded1(scene_, &r);
+    RTCOccludedArguments arguments;
+    rtcInitOccludedArguments(&arguments);
+    arguments.context = &context.base;
+    rtcOccluded1(scene_, &r, &arguments);
 #else
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    rtcOccluded1(scene_, &context, &r);
+    rtcOccluded1(scene_, &context.base, &r);
 #endif
     return r.tfar < 0.0f;  // Embree sets tfar to -inf when it finds an occluder
   }
 
  private:
+  PassThroughContext makeContext(const Ray& ray, uint32_t randomBits) const {
+    PassThroughContext context;
+#if CANDELA_EMBREE_VERSION >= 4
+    rtcInitRayQueryContext(&context.base);
+#else
+    rtcInitIntersectContext(&context.base);
+#endif
+    context.scene = &view_;
+    context.direction = ray.direction;
+    context.randomBits = randomBits;
+    return context;
+  }
+
   static void setRay(RTCRay& r, const Ray& ray) {
     r.org_x = ray.origin.x;
     r.org_y = ray.origin.y;
@@ -61,6 +81,7 @@ class EmbreeTracer {
   }
 
   RTCScene scene_;
+  const SceneView& view_;
 };
 
 }  // namespace candela

@@ -13,6 +13,11 @@ namespace candela::optix {
 // SBT offsets of the two ray types; every geometry has one hit-group record per type.
 enum RayType : uint32_t { kRadianceRay = 0, kShadowRay = 1, kRayTypeCount = 2 };
 
+// SBT indices a mesh's triangles can have (acceleration.cpp): bit 0 set where the material uses alpha (any-hit
+// runs), bit 1 where it culls back faces (traversal culls them). The hit-group records of all four are the same
+// programs (pipeline.cpp); the indices differ in the geometry flags the GAS gives them.
+constexpr uint32_t kGeometrySbtRecords = 4;
+
 // The radiance payload's instance register holds this when the ray missed.
 constexpr uint32_t kMissedInstance = 0xFFFFFFFFu;
 

@@ -187,17 +187,24 @@ std::string OptixBackend::deviceDescription() const { return state_->context.des
 void OptixBackend::setScene(const Scene& scene) {
   State& s = *state_;
   s.hasScene = false;
-  s.flat = FlatScene::build(scene);
-  s.scene.upload(s.flat);
-  s.acceleration.build(s.context.get(), s.context.stream(), s.flat, s.scene.view());
+  FlatScene flat = FlatScene::build(scene);
+  s.scene.upload(flat);
+  // s.flat is the scene of the structures' last update until this one succeeds.
+  s.acceleration.update(s.context.get(), s.context.stream(), &s.flat, flat, s.scene.view());
+  s.flat = std::move(flat);
   s.hasScene = true;
   s.restart();
 }
 
 bool OptixBackend::setMaterials(const std::vector<Material>& materials) {
   State& s = *state_;
-  if (!s.hasScene || !s.flat.replaceMaterials(materials)) return false;
+  if (!s.hasScene || materials.size() != s.flat.materials.size()) return false;
+  bool cutoutsChange = false;
+  for (size_t i = 0; i < materials.size(); ++i)
+    cutoutsChange = cutoutsChange || materialSbtIndex(materials[i]) != materialSbtIndex(s.flat.materials[i]);
+  if (!s.flat.replaceMaterials(materials)) return false;
   s.scene.updateMaterials(s.flat);
+  if (cutoutsChange) s.acceleration.update(s.context.get(), s.context.stream(), &s.flat, s.flat, s.scene.view());
   s.restart();
   return true;
 }
@@ -314,6 +321,8 @@ void OptixBackend::writeImageToDevice(Vec3* destination) const {
   checkCuda(cudaGetLastError(), "launching the image copy");
   checkCuda(cudaStreamSynchronize(s.context.stream()), "copying the image on the device");
 }
+
+AccelerationStatistics OptixBackend::accelerationStatistics() const { return state_->acceleration.statistics(); }
 
 RawTraceTiming OptixBackend::timeRawTrace(uint32_t warmup, uint32_t frames) {
   State& s = *state_;

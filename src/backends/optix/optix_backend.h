@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "backends/backend.h"
+#include "backends/optix/acceleration_statistics.h"
 
 namespace candela {
 
@@ -53,6 +54,11 @@ class OptixBackend final : public Backend {
   // sample index; the image is left alone), then times `frames` launches, after `warmup` untimed ones, that
   // trace exactly those rays again, in the same order per pixel, with no shading.
   RawTraceTiming timeRawTrace(uint32_t warmup, uint32_t frames);
+
+  // setScene keeps the GAS of every mesh whose triangles did not change (meshes with equal triangles share
+  // one) and rebuilds the IAS only when an instance or a GAS changed; setMaterials rebuilds the GASes of meshes
+  // on which a material started or stopped using alpha or culling back faces.
+  AccelerationStatistics accelerationStatistics() const;
 
  private:
   struct State;

@@ -55,7 +55,8 @@ OptixPipelineCompileOptions pipelineCompileOptions() {
   OptixPipelineCompileOptions options{};
   options.usesMotionBlur = 0;
   options.traversableGraphFlags = OPTIX_TRAVERSABLE_GRAPH_FLAG_ALLOW_SINGLE_LEVEL_INSTANCING;
-  options.numPayloadValues = 5;    // radiance: t, b1, b2, instance, primitive; shadow: occluded
+  // Radiance: random bits in, then t, b1, b2, instance, primitive out; shadow: random bits, occluded.
+  options.numPayloadValues = 5;
   options.numAttributeValues = 2;  // built-in triangle barycentrics
   options.exceptionFlags = OPTIX_EXCEPTION_FLAG_NONE;
   options.pipelineLaunchParamsVariableName = "params";
@@ -94,11 +95,17 @@ Pipeline::Pipeline(OptixDeviceContext context, OptixModule module, const std::ve
   descriptions[shadowMiss].kind = OPTIX_PROGRAM_GROUP_KIND_MISS;
   descriptions[shadowMiss].miss.module = module;
   descriptions[shadowMiss].miss.entryFunctionName = "__miss__shadow";
+  // Both hit groups hold the pass-through any-hit program; triangles whose material does not use alpha are
+  // built with any-hit disabled (acceleration.cpp), so only those that do run it. Shadow rays disable
+  // closest-hit.
   descriptions[radianceHit].kind = OPTIX_PROGRAM_GROUP_KIND_HITGROUP;
   descriptions[radianceHit].hitgroup.moduleCH = module;
   descriptions[radianceHit].hitgroup.entryFunctionNameCH = "__closesthit__radiance";
-  // Shadow rays disable closest-hit and any-hit, so their hit group has no programs.
+  descriptions[radianceHit].hitgroup.moduleAH = module;
+  descriptions[radianceHit].hitgroup.entryFunctionNameAH = "__anyhit__passThrough";
   descriptions[shadowHit].kind = OPTIX_PROGRAM_GROUP_KIND_HITGROUP;
+  descriptions[shadowHit].hitgroup.moduleAH = module;
+  descriptions[shadowHit].hitgroup.entryFunctionNameAH = "__anyhit__passThrough";
   groups_.assign(descriptions.size(), nullptr);
   OptixProgramGroupOptions groupOptions{};
   checkWithLog("creating the program groups", [&](char* log, size_t* logSize) {
@@ -131,9 +138,12 @@ Pipeline::Pipeline(OptixDeviceContext context, OptixModule module, const std::ve
              "setting the pipeline's stack size");
 
   // Records carry only their program headers: every program reads scene data through the launch parameters.
-  std::vector<HeaderOnlyRecord> records(groups_.size());
+  // The hit-group records repeat once per SBT index a mesh's triangles can have (kGeometrySbtRecords), which
+  // differ only in the geometry flags the mesh's build gives them.
+  std::vector<HeaderOnlyRecord> records(groups_.size() + (kGeometrySbtRecords - 1) * kRayTypeCount);
   for (size_t i = 0; i < groups_.size(); ++i)
     checkOptix(optixSbtRecordPackHeader(groups_[i], &records[i]), "packing a shader binding table record");
+  for (size_t i = groups_.size(); i < records.size(); ++i) records[i] = records[i - kRayTypeCount];
   records_ = DeviceBuffer::fromVector(records, "a shader binding table");
   const CUdeviceptr base = records_.address();
   tables_.resize(raygens);
@@ -145,7 +155,7 @@ Pipeline::Pipeline(OptixDeviceContext context, OptixModule module, const std::ve
     table.missRecordCount = kRayTypeCount;
     table.hitgroupRecordBase = base + radianceHit * sizeof(HeaderOnlyRecord);
     table.hitgroupRecordStrideInBytes = sizeof(HeaderOnlyRecord);
-    table.hitgroupRecordCount = kRayTypeCount;
+    table.hitgroupRecordCount = kGeometrySbtRecords * kRayTypeCount;
   }
 }
 

@@ -9,15 +9,20 @@ namespace candela::optix {
 
 class OptixTracer {
  public:
-  __device__ explicit OptixTracer(OptixTraversableHandle traversable) : traversable_(traversable) {}
+  // `cutouts`: the scene has cut-outs (SceneView::hasCutouts). Then rays cull back faces, which only the
+  // triangles of materials that cull them allow (acceleration.cpp); without, rays skip any-hit programs.
+  __device__ OptixTracer(OptixTraversableHandle traversable, bool cutouts)
+      : traversable_(traversable),
+        cutoutFlags_(cutouts ? OPTIX_RAY_FLAG_CULL_BACK_FACING_TRIANGLES : OPTIX_RAY_FLAG_DISABLE_ANYHIT) {}
 
-  // Closest hit: the radiance closest-hit program writes t, barycentrics and ids into the five payload
-  // registers. The radiance miss program is empty, so a miss leaves the instance register at its sentinel.
-  __device__ bool intersect(const Ray& ray, Hit& hit) const {
-    uint32_t t = 0, b1 = 0, b2 = 0, instance = kMissedInstance, primitive = 0;
+  // Closest hit: payload register 0 carries the random bits to the any-hit program (kernel/pass_through.h); then
+  // the radiance closest-hit program writes t, barycentrics and ids into the five registers. The radiance miss
+  // program is empty, so a miss leaves the instance register at its sentinel.
+  __device__ bool intersect(const Ray& ray, Hit& hit, uint32_t randomBits) const {
+    uint32_t t = randomBits, b1 = 0, b2 = 0, instance = kMissedInstance, primitive = 0;
     optixTrace(traversable_, toFloat3(ray.origin), toFloat3(ray.direction), ray.tMin, ray.tMax, 0.0f,
-               OptixVisibilityMask(0xFF), OPTIX_RAY_FLAG_DISABLE_ANYHIT, kRadianceRay, kRayTypeCount, kRadianceRay,
-               t, b1, b2, instance, primitive);
+               OptixVisibilityMask(0xFF), cutoutFlags_, kRadianceRay, kRayTypeCount, kRadianceRay, t, b1, b2,
+               instance, primitive);
     if (instance == kMissedInstance) return false;
     hit.t = __uint_as_float(t);
     hit.b1 = __uint_as_float(b1);
@@ -27,15 +32,14 @@ class OptixTracer {
     return true;
   }
 
-  // Any hit: traversal stops at the first one and runs no closest-hit program; only the shadow miss program
-  // clears the register.
-  __device__ bool occluded(const Ray& ray) const {
+  // Any hit that does not pass through: traversal stops at the first one and runs no closest-hit program; only
+  // the shadow miss program clears register 1. Register 0 carries the random bits, as for intersect.
+  __device__ bool occluded(const Ray& ray, uint32_t randomBits) const {
     uint32_t occluded = 1;
     optixTrace(traversable_, toFloat3(ray.origin), toFloat3(ray.direction), ray.tMin, ray.tMax, 0.0f,
                OptixVisibilityMask(0xFF),
-               OPTIX_RAY_FLAG_TERMINATE_ON_FIRST_HIT | OPTIX_RAY_FLAG_DISABLE_CLOSESTHIT |
-                   OPTIX_RAY_FLAG_DISABLE_ANYHIT,
-               kShadowRay, kRayTypeCount, kShadowRay, occluded);
+               OPTIX_RAY_FLAG_TERMINATE_ON_FIRST_HIT | OPTIX_RAY_FLAG_DISABLE_CLOSESTHIT | cutoutFlags_, kShadowRay,
+               kRayTypeCount, kShadowRay, randomBits, occluded);
     return occluded != 0;
   }
 
@@ -43,22 +47,23 @@ class OptixTracer {
   __device__ static float3 toFloat3(Vec3 v) { return make_float3(v.x, v.y, v.z); }
 
   OptixTraversableHandle traversable_;
+  unsigned int cutoutFlags_;
 };
 
 // An OptixTracer that also writes every ray it traces into a RayRecording, for the raw-trace mode.
 class RecordingTracer {
  public:
-  __device__ RecordingTracer(OptixTraversableHandle traversable, const RayRecording& recording, uint32_t pixel,
+  __device__ RecordingTracer(const OptixTracer& tracer, const RayRecording& recording, uint32_t pixel,
                              uint32_t pixelCount)
-      : tracer_(traversable), recording_(recording), pixel_(pixel), pixelCount_(pixelCount) {}
+      : tracer_(tracer), recording_(recording), pixel_(pixel), pixelCount_(pixelCount) {}
 
-  __device__ bool intersect(const Ray& ray, Hit& hit) const {
+  __device__ bool intersect(const Ray& ray, Hit& hit, uint32_t randomBits) const {
     record(ray, kRadianceRay);
-    return tracer_.intersect(ray, hit);
+    return tracer_.intersect(ray, hit, randomBits);
   }
-  __device__ bool occluded(const Ray& ray) const {
+  __device__ bool occluded(const Ray& ray, uint32_t randomBits) const {
     record(ray, kShadowRay);
-    return tracer_.occluded(ray);
+    return tracer_.occluded(ray, randomBits);
   }
   // Rays traced, recorded or not: more than slotsPerPixel means the recording is incomplete.
   __device__ uint32_t count() const { return count_; }

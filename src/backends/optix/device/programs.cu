@@ -1,4 +1,5 @@
-// The OptiX programs: raygen runs the shared path-tracing kernel; closest-hit and miss only answer ray queries.
+// The OptiX programs: raygen runs the shared path-tracing kernel; closest-hit, any-hit and miss only answer ray
+// queries.
 #include <optix.h>
 
 #include "backends/optix/device/optix_tracer.h"
@@ -20,6 +21,8 @@ __device__ uint32_t launchPixel() {
   return index.y * params.settings.width + index.x;
 }
 
+__device__ OptixTracer sceneTracer() { return OptixTracer(params.traversable, params.scene.hasCutouts != 0); }
+
 }  // namespace
 
 // Adds `samplesPerPixel` path samples to the pixel's sum; NaN/Inf/negative samples are dropped and counted.
@@ -28,7 +31,7 @@ template <bool kWithAovs>
 __device__ void renderPixel() {
   const uint3 index = optixGetLaunchIndex();
   const uint32_t pixel = launchPixel();
-  const OptixTracer tracer(params.traversable);
+  const OptixTracer tracer = sceneTracer();
   Vec3 sum{};
   PathAovs aovSum;
   uint32_t rays = 0, invalid = 0;
@@ -62,7 +65,7 @@ extern "C" __global__ void __raygen__renderWithAovs() { renderPixel<true>(); }
 extern "C" __global__ void __raygen__record() {
   const uint3 index = optixGetLaunchIndex();
   const uint32_t pixel = launchPixel();
-  const RecordingTracer tracer(params.traversable, params.recording, pixel,
+  const RecordingTracer tracer(sceneTracer(), params.recording, pixel,
                                params.settings.width * params.settings.height);
   PathResult path =
       renderPixelSample(params.scene, tracer, params.camera, params.settings, index.x, index.y, params.firstSample);
@@ -71,21 +74,24 @@ extern "C" __global__ void __raygen__record() {
 }
 
 // Traces the recorded rays again, in the same order and with the same ray types, with no shading at all: the
-// traversal ceiling for the path tracer's ray mix.
+// traversal ceiling for the path tracer's ray mix. Cut-outs run the same any-hit programs; their random bits
+// (which only alpha blending reads) are the slot's index instead of the path's, which makes the same decisions
+// with the same probabilities.
 extern "C" __global__ void __raygen__rawTrace() {
   const uint32_t pixel = launchPixel();
   const uint32_t pixelCount = params.settings.width * params.settings.height;
-  const OptixTracer tracer(params.traversable);
+  const OptixTracer tracer = sceneTracer();
   const uint32_t count = params.recording.counts[pixel];
   for (uint32_t i = 0; i < count; ++i) {
     const size_t slot = size_t(i) * pixelCount + pixel;
     const RecordedRay r = params.recording.rays[slot];
     const Ray ray{r.origin, r.direction, r.tMin, r.tMax};
+    const uint32_t randomBits = uint32_t(slot);
     if (params.recording.rayTypes[slot] == kRadianceRay) {
       Hit hit;
-      tracer.intersect(ray, hit);
+      tracer.intersect(ray, hit, randomBits);
     } else {
-      tracer.occluded(ray);
+      tracer.occluded(ray, randomBits);
     }
   }
   params.counters[pixel] = {count, 0};
@@ -100,4 +106,17 @@ extern "C" __global__ void __closesthit__radiance() {
   optixSetPayload_4(optixGetPrimitiveIndex());
 }
 
-extern "C" __global__ void __miss__shadow() { optixSetPayload_0(0); }
+// Any-hit for both ray types, run only on triangles whose material uses alpha: drops the candidate hit when
+// the ray passes through it. Register 0 holds the query's random bits on the way in. Back faces of materials
+// that cull them never get here: traversal culls them.
+extern "C" __global__ void __anyhit__passThrough() {
+  const float2 barycentrics = optixGetTriangleBarycentrics();
+  Hit hit;
+  hit.b1 = barycentrics.x;
+  hit.b2 = barycentrics.y;
+  hit.instanceId = optixGetInstanceId();
+  hit.primitiveId = optixGetPrimitiveIndex();
+  if (passesThrough(params.scene, hit, [] { return false; }, optixGetPayload_0())) optixIgnoreIntersection();
+}
+
+extern "C" __global__ void __miss__shadow() { optixSetPayload_1(0); }

@@ -1,0 +1,13 @@
+#pragma once
+#include <cstdint>
+
+namespace candela {
+
+// Acceleration-structure builds since a backend was made, for checking that scene updates rebuild only what
+// changed.
+struct AccelerationStatistics {
+  uint64_t meshBuilds = 0;      // GAS builds
+  uint64_t instanceBuilds = 0;  // IAS builds
+};
+
+}  // namespace candela
