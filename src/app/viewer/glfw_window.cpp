@@ -75,15 +75,19 @@ ImGuiLayer::~ImGuiLayer() {
   ImGui::DestroyContext();
 }
 
-void ImGuiLayer::beginFrame() {
-  std::optional<ImVec2> pointerAtClick = deliverOneFramesEvents();
+std::vector<KeyEvent> ImGuiLayer::beginFrame() {
+  std::vector<KeyEvent> keys;
+  std::optional<ImVec2> pointerAtClick = deliverOneFramesEvents(keys);
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   if (pointerAtClick) ImGui::GetIO().MousePos = *pointerAtClick;
   ImGui::NewFrame();
+  return keys;
 }
 
-std::optional<ImVec2> ImGuiLayer::deliverOneFramesEvents() {
+bool ImGuiLayer::kept(int key) const { return std::find(keptKeys_.begin(), keptKeys_.end(), key) != keptKeys_.end(); }
+
+std::optional<ImVec2> ImGuiLayer::deliverOneFramesEvents(std::vector<KeyEvent>& keys) {
   std::optional<ImVec2> pointer;
   std::vector<int> pressed;
   bool typed = false;
@@ -103,6 +107,14 @@ std::optional<ImVec2> ImGuiLayer::deliverOneFramesEvents() {
       typed = true;
       continue;
     }
+    if (kept(e.key)) {
+      keys.push_back({e.key, e.action});
+      if (e.action == GLFW_PRESS) {
+        ++next;
+        break;
+      }
+      continue;
+    }
     if (e.action == GLFW_PRESS) {
       if (typed) break;
       pressed.push_back(e.key);
@@ -110,6 +122,7 @@ std::optional<ImVec2> ImGuiLayer::deliverOneFramesEvents() {
       break;
     }
     ImGui_ImplGlfw_KeyCallback(window_, e.key, e.scancode, e.action, e.mods);
+    keys.push_back({e.key, e.action});
   }
   queue_.erase(queue_.begin(), queue_.begin() + ptrdiff_t(next));
   return pointer;

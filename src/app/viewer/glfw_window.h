@@ -25,6 +25,11 @@ class GlfwWindow {
   GLFWwindow* window_ = nullptr;
 };
 
+// A key event: GLFW's key and action.
+struct KeyEvent {
+  int key, action;
+};
+
 // Dear ImGui's context and its GLFW and OpenGL 3 backends for one window. It installs no GLFW callbacks: the
 // window's owner passes every event on through the on...() functions.
 class ImGuiLayer {
@@ -34,9 +39,15 @@ class ImGuiLayer {
   ImGuiLayer(const ImGuiLayer&) = delete;
   ImGuiLayer& operator=(const ImGuiLayer&) = delete;
 
-  // Hands ImGui the input events that fit in one frame (see InputEvent), then starts the frame.
-  void beginFrame();
+  // Hands ImGui the input events that fit in one frame (see InputEvent) and starts the frame. Returns that
+  // frame's key events in order, those kept from ImGui included; io.WantCaptureKeyboard now says whether ImGui
+  // takes them, as it was decided after every earlier event and before these.
+  std::vector<KeyEvent> beginFrame();
   void render();
+
+  // Events of `key` never reach ImGui; they still wait in the queue with the others, and a press of it is the
+  // last event of its frame, so that what the owner does for it follows exactly the events before it.
+  void keepFromImGui(int key) { keptKeys_.push_back(key); }
 
   void onKey(int key, int scancode, int action, int mods);
   void onChar(unsigned int codepoint);
@@ -54,7 +65,8 @@ class ImGuiLayer {
   // lost, and a click would land wherever the pointer had moved to since. So these events wait in a queue, and
   // each frame takes them in order only while they keep their meaning: no release of a key pressed in the same
   // frame, no typing after a key press, no key press after typing, and a mouse button event only at the start
-  // of a frame, ending it, with the pointer where it was at the time.
+  // of a frame, ending it, with the pointer where it was at the time. The owner takes its keys from the same
+  // queue (beginFrame's result), so that the keys typed into a text field are the ones ImGui holds back from it.
   enum class EventKind { Key, Char, MouseButton };
   struct InputEvent {
     EventKind kind;
@@ -62,11 +74,14 @@ class ImGuiLayer {
     int key, scancode, action, mods;  // `key` is the button for MouseButton
     double x, y;                      // the pointer, for MouseButton
   };
-  // Returns the pointer position of the mouse button event it delivered, if any.
-  std::optional<ImVec2> deliverOneFramesEvents();
+  // Delivers one frame's events; returns the pointer position of the mouse button event it delivered, if any,
+  // and adds the frame's key events to `keys`.
+  std::optional<ImVec2> deliverOneFramesEvents(std::vector<KeyEvent>& keys);
+  bool kept(int key) const;
 
   GLFWwindow* window_;
   std::vector<InputEvent> queue_;
+  std::vector<int> keptKeys_;
 };
 
 }  // namespace candela
