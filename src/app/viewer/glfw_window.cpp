@@ -85,14 +85,20 @@ std::vector<KeyEvent> ImGuiLayer::beginFrame() {
   return keys;
 }
 
+namespace {
+
+bool isModifier(int key) { return key >= GLFW_KEY_LEFT_SHIFT && key <= GLFW_KEY_RIGHT_SUPER; }
+
+}  // namespace
+
 bool ImGuiLayer::kept(int key) const { return std::find(keptKeys_.begin(), keptKeys_.end(), key) != keptKeys_.end(); }
 
 std::optional<ImVec2> ImGuiLayer::deliverOneFramesEvents(std::vector<KeyEvent>& keys) {
   std::optional<ImVec2> pointer;
-  std::vector<int> pressed;
   bool typed = false;
+  std::vector<int> released;
   size_t next = 0;
-  for (; next < queue_.size(); ++next) {
+  while (next < queue_.size()) {
     const InputEvent& e = queue_[next];
     if (e.kind == EventKind::MouseButton) {
       if (next > 0) break;
@@ -102,27 +108,19 @@ std::optional<ImVec2> ImGuiLayer::deliverOneFramesEvents(std::vector<KeyEvent>& 
       break;
     }
     if (e.kind == EventKind::Char) {
-      if (!pressed.empty()) break;
       ImGui_ImplGlfw_CharCallback(window_, e.codepoint);
       typed = true;
+      ++next;
       continue;
     }
-    if (kept(e.key)) {
-      keys.push_back({e.key, e.action});
-      if (e.action == GLFW_PRESS) {
-        ++next;
-        break;
-      }
-      continue;
-    }
-    if (e.action == GLFW_PRESS) {
-      if (typed) break;
-      pressed.push_back(e.key);
-    } else if (e.action == GLFW_RELEASE && std::find(pressed.begin(), pressed.end(), e.key) != pressed.end()) {
-      break;
-    }
-    ImGui_ImplGlfw_KeyCallback(window_, e.key, e.scancode, e.action, e.mods);
+    const bool press = e.action == GLFW_PRESS;
+    if (press && typed && isModifier(e.key)) break;
+    if (press && std::find(released.begin(), released.end(), e.key) != released.end()) break;
+    if (!kept(e.key)) ImGui_ImplGlfw_KeyCallback(window_, e.key, e.scancode, e.action, e.mods);
     keys.push_back({e.key, e.action});
+    ++next;
+    if (press) break;
+    if (e.action == GLFW_RELEASE) released.push_back(e.key);
   }
   queue_.erase(queue_.begin(), queue_.begin() + ptrdiff_t(next));
   return pointer;

@@ -45,8 +45,9 @@ class ImGuiLayer {
   std::vector<KeyEvent> beginFrame();
   void render();
 
-  // Events of `key` never reach ImGui; they still wait in the queue with the others, and a press of it is the
-  // last event of its frame, so that what the owner does for it follows exactly the events before it.
+  // Events of `key` never reach ImGui; they still wait in the queue with the others, and like every key press a
+  // press of it is the last event of its frame, so that what the owner does for it follows exactly the events
+  // before it.
   void keepFromImGui(int key) { keptKeys_.push_back(key); }
 
   void onKey(int key, int scancode, int action, int mods);
@@ -58,15 +59,19 @@ class ImGuiLayer {
   void onCursorEnter(int entered);
 
  private:
-  // ImGui 1.86 reads keys as up/down states once per frame, handles a frame's typed characters before its keys
-  // and a click before either, and takes the pointer's position when the frame starts, not when a button went
-  // down. At a few frames per second a key pressed and released between two frames would never be seen down,
-  // Backspace after typing would erase what came before it, text typed right after a click on a field would be
-  // lost, and a click would land wherever the pointer had moved to since. So these events wait in a queue, and
-  // each frame takes them in order only while they keep their meaning: no release of a key pressed in the same
-  // frame, no typing after a key press, no key press after typing, and a mouse button event only at the start
-  // of a frame, ending it, with the pointer where it was at the time. The owner takes its keys from the same
-  // queue (beginFrame's result), so that the keys typed into a text field are the ones ImGui holds back from it.
+  // ImGui 1.86 reads the keyboard as one up/down state per key and frame, handles a frame's typed characters
+  // before its key presses and a click before either, and takes the pointer's position when the frame starts, not
+  // when a button went down. At a few frames per second a key pressed and released between two frames would never
+  // be seen down, a key tapped twice would be seen pressed once, Ctrl+A whose Ctrl went up in the frame that A
+  // went down would be a plain A, Backspace before typing would erase what was typed after it, text typed right
+  // after a click on a field would be lost, and a click would land wherever the pointer had moved to since. So
+  // these events wait in a queue, and each frame takes them in order only while the state ImGui reads stays true
+  // to them: a key press ends the frame, so that ImGui reads the keyboard as it was right after that press (a
+  // chord's modifier went down in an earlier frame and is still down); a key released in a frame is not pressed
+  // again in it; a modifier press does not follow typing in its frame (a held Ctrl makes ImGui drop the frame's
+  // characters); and a mouse button event comes only at the start of a frame and ends it, with the pointer where
+  // it was at the time. The owner takes its keys from the same queue (beginFrame's result), so that the keys typed
+  // into a text field are the ones ImGui keeps from it.
   enum class EventKind { Key, Char, MouseButton };
   struct InputEvent {
     EventKind kind;
