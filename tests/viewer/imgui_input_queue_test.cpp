@@ -22,9 +22,9 @@ class ImGuiInputQueue : public ::testing::Test {
   void SetUp() override { layer_ = std::make_unique<ImGuiLayer>(window_->handle()); }
   void TearDown() override { layer_.reset(); }
 
-  // One frame with a text field; returns the key events the queue handed over.
-  std::vector<KeyEvent> frame() {
-    std::vector<KeyEvent> keys = layer_->beginFrame();
+  // One frame with a text field; returns the events the queue handed back.
+  std::vector<WindowEvent> frame() {
+    std::vector<WindowEvent> keys = layer_->beginFrame();
     ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
     ImGui::Begin("input", nullptr, ImGuiWindowFlags_NoSavedSettings);
     if (focusNextFrame_) ImGui::SetKeyboardFocusHere();
@@ -113,14 +113,33 @@ TEST_F(ImGuiInputQueue, AKeptKeyEndsItsFrame) {
   type('x');
   tap(GLFW_KEY_F12);
   type('y');
-  std::vector<KeyEvent> keys;
-  for (int i = 0; i < 16 && (keys.empty() || keys.back().key != GLFW_KEY_F12); ++i) keys = frame();
+  std::vector<WindowEvent> keys;
+  for (int i = 0; i < 16 && (keys.empty() || keys.back().code != GLFW_KEY_F12); ++i) keys = frame();
   ASSERT_FALSE(keys.empty());
-  EXPECT_EQ(keys.back().key, GLFW_KEY_F12);
+  EXPECT_EQ(keys.back().code, GLFW_KEY_F12);
   EXPECT_EQ(keys.back().action, GLFW_PRESS);
   EXPECT_EQ(text_, "abcx");
   settle();
   EXPECT_EQ(text_, "abcxy");
+}
+
+// The camera follows pointer moves and buttons from the same queue; moves before a click do not hold it back.
+TEST_F(ImGuiInputQueue, PointerMovesComeBackInOrderWithTheClicks) {
+  layer_->onCursorMove(10.0, 20.0);
+  layer_->onMouseButton(GLFW_MOUSE_BUTTON_RIGHT, GLFW_PRESS, 0, 10.0, 20.0);
+  layer_->onCursorMove(30.0, 40.0);
+  layer_->onMouseButton(GLFW_MOUSE_BUTTON_RIGHT, GLFW_RELEASE, 0, 30.0, 40.0);
+  const std::vector<WindowEvent> first = frame(), second = frame();
+  ASSERT_EQ(first.size(), 2u);
+  EXPECT_EQ(first[0].kind, WindowEvent::Kind::CursorMove);
+  EXPECT_EQ(first[0].x, 10.0);
+  EXPECT_EQ(first[1].kind, WindowEvent::Kind::MouseButton);
+  EXPECT_EQ(first[1].action, GLFW_PRESS);
+  ASSERT_EQ(second.size(), 2u);
+  EXPECT_EQ(second[0].kind, WindowEvent::Kind::CursorMove);
+  EXPECT_EQ(second[0].y, 40.0);
+  EXPECT_EQ(second[1].kind, WindowEvent::Kind::MouseButton);
+  EXPECT_EQ(second[1].action, GLFW_RELEASE);
 }
 
 }  // namespace

@@ -40,7 +40,9 @@ class Viewer {
   static Viewer& of(GLFWwindow* window) { return *static_cast<Viewer*>(glfwGetWindowUserPointer(window)); }
   void installCallbacks();
   bool cursorOverImage(double x) const;
-  void handleKeys(const std::vector<KeyEvent>& keys);
+  void handleInput(const std::vector<WindowEvent>& events);
+  void handleMouseButton(const WindowEvent& e);
+  void handleKey(const WindowEvent& e);
   FlyKeys heldFlyKeys() const;
 
   void showScene(Scene scene, const std::string& spec);
@@ -68,7 +70,7 @@ class Viewer {
   FramePlan lastPlan_;
   Camera lastCamera_;
   bool stateRequested_ = false;
-  double pointerX_ = 0.0, pointerY_ = 0.0;  // as of the last cursor event
+  double pointerX_ = 0.0, pointerY_ = 0.0;  // as of the last cursor event GLFW reported
   Vec2 openSceneField_;
   bool openSceneFieldActive_ = false;
   bool sceneJustShown_ = true;
@@ -104,36 +106,26 @@ Viewer::Viewer(const ViewerOptions& options)
 }
 
 void Viewer::installCallbacks() {
-  // Every event goes to ImGui first; the camera takes what ImGui does not want.
+  // Input waits in ImGui's queue; the viewer takes its share from there (handleInput), in the same order and frame
+  // as ImGui takes its own, so that what ImGui wants (a click on the panel, a key typed into a text field) never
+  // also moves the camera.
   GLFWwindow* w = window_.handle();
   glfwSetWindowUserPointer(w, this);
-  glfwSetMouseButtonCallback(w, [](GLFWwindow* window, int button, int action, int mods) {
-    Viewer& v = of(window);
-    v.imgui_.onMouseButton(button, action, mods, v.pointerX_, v.pointerY_);
-    if (button > GLFW_MOUSE_BUTTON_MIDDLE) return;
-    MouseButton b = button == GLFW_MOUSE_BUTTON_MIDDLE ? MouseButton::Middle
-                    : button == GLFW_MOUSE_BUTTON_RIGHT ? MouseButton::Right
-                                                        : MouseButton::Left;
-    if (action == GLFW_PRESS)
-      v.input_.buttonPressed(b, v.pointerX_, v.pointerY_, v.cursorOverImage(v.pointerX_));
-    else if (action == GLFW_RELEASE)
-      v.input_.buttonReleased(b);
-  });
-  // Events reach the viewer once per frame; where the pointer was at a click or a wheel step is where the
-  // cursor events before it had taken it, not where it is now.
+  // Where the pointer was at a click or a wheel step is where the cursor events before it had taken it.
   glfwSetCursorPosCallback(w, [](GLFWwindow* window, double x, double y) {
     Viewer& v = of(window);
     v.pointerX_ = x;
     v.pointerY_ = y;
-    v.input_.cursorMoved(x, y);
+    v.imgui_.onCursorMove(x, y);
+  });
+  glfwSetMouseButtonCallback(w, [](GLFWwindow* window, int button, int action, int mods) {
+    Viewer& v = of(window);
+    v.imgui_.onMouseButton(button, action, mods, v.pointerX_, v.pointerY_);
   });
   glfwSetScrollCallback(w, [](GLFWwindow* window, double dx, double dy) {
     Viewer& v = of(window);
-    v.imgui_.onScroll(dx, dy);
-    v.input_.wheel(dy, v.cursorOverImage(v.pointerX_));
+    v.imgui_.onScroll(dx, dy, v.pointerX_, v.pointerY_);
   });
-  // Keys wait in ImGui's input queue; the viewer takes its own from there (handleKeys), in the same order and
-  // frame as ImGui takes them, so that a key typed into a text field never also moves the camera.
   glfwSetKeyCallback(w, [](GLFWwindow* window, int key, int scancode, int action, int mods) {
     of(window).imgui_.onKey(key, scancode, action, mods);
   });
@@ -167,20 +159,40 @@ bool* flyKey(FlyKeys& keys, int key) {
 
 }  // namespace
 
-// Called after ImGui has started the frame that takes `keys`: io.WantCaptureKeyboard is ImGui's decision for them.
-void Viewer::handleKeys(const std::vector<KeyEvent>& keys) {
-  const bool panelTakesKeys = ImGui::GetIO().WantCaptureKeyboard;
-  for (const KeyEvent& e : keys) {
-    bool* fly = flyKey(flyKeys_, e.key);
-    if (e.action == GLFW_RELEASE && fly) *fly = false;
-    if (e.action != GLFW_PRESS) continue;
-    if (e.key == GLFW_KEY_F12) stateRequested_ = true;
-    if (panelTakesKeys) continue;
-    if (fly) *fly = true;
-    if (e.key == GLFW_KEY_F) camera_->frameScene();
-    if (e.key == GLFW_KEY_R) camera_->reset();
-    if (e.key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(window_.handle(), GLFW_TRUE);
+// Called after ImGui has started the frame that takes `events`: io.WantCaptureMouse and io.WantCaptureKeyboard
+// are ImGui's decisions for them.
+void Viewer::handleInput(const std::vector<WindowEvent>& events) {
+  for (const WindowEvent& e : events) {
+    switch (e.kind) {
+      case WindowEvent::Kind::CursorMove: input_.cursorMoved(e.x, e.y); break;
+      case WindowEvent::Kind::Wheel: input_.wheel(e.wheel, cursorOverImage(e.x)); break;
+      case WindowEvent::Kind::MouseButton: handleMouseButton(e); break;
+      case WindowEvent::Kind::Key: handleKey(e); break;
+    }
   }
+}
+
+void Viewer::handleMouseButton(const WindowEvent& e) {
+  if (e.code > GLFW_MOUSE_BUTTON_MIDDLE) return;
+  const MouseButton b = e.code == GLFW_MOUSE_BUTTON_MIDDLE  ? MouseButton::Middle
+                        : e.code == GLFW_MOUSE_BUTTON_RIGHT ? MouseButton::Right
+                                                            : MouseButton::Left;
+  if (e.action == GLFW_PRESS)
+    input_.buttonPressed(b, e.x, e.y, cursorOverImage(e.x));
+  else if (e.action == GLFW_RELEASE)
+    input_.buttonReleased(b);
+}
+
+void Viewer::handleKey(const WindowEvent& e) {
+  bool* fly = flyKey(flyKeys_, e.code);
+  if (e.action == GLFW_RELEASE && fly) *fly = false;
+  if (e.action != GLFW_PRESS) return;
+  if (e.code == GLFW_KEY_F12) stateRequested_ = true;
+  if (ImGui::GetIO().WantCaptureKeyboard) return;
+  if (fly) *fly = true;
+  if (e.code == GLFW_KEY_F) camera_->frameScene();
+  if (e.code == GLFW_KEY_R) camera_->reset();
+  if (e.code == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(window_.handle(), GLFW_TRUE);
 }
 
 FlyKeys Viewer::heldFlyKeys() const { return ImGui::GetIO().WantCaptureKeyboard ? FlyKeys{} : flyKeys_; }
@@ -235,8 +247,8 @@ void Viewer::frame(double now, double seconds) {
   const int imageWidth = std::max(framebufferWidth_ - kPanelWidth, 1);
   const int imageHeight = std::max(framebufferHeight_, 1);
 
-  // ImGui takes this frame's share of the queued input first; the camera takes the keys ImGui does not want.
-  handleKeys(imgui_.beginFrame());
+  // ImGui takes this frame's share of the queued input first; the camera takes what ImGui does not want.
+  handleInput(imgui_.beginFrame());
   input_.apply(*camera_, heldFlyKeys(), float(std::min(seconds, kMaxFlyStep)), float(imageHeight));
   const Camera camera = camera_->camera(float(imageWidth) / float(imageHeight));
   // A scene's first camera is where the view starts, not a motion.
