@@ -88,7 +88,7 @@ Viewer::Viewer(const ViewerOptions& options)
         std::fprintf(stderr, "%s\n", why.c_str());
         return backend;
       }()),
-      transfer_(session_) {
+      transfer_(session_, options.interop) {
   controls_.maxDepth = options.maxDepth;
   controls_.samplesPerFrame = options.samplesPerFrame;
   controls_.post = options.post;
