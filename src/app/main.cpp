@@ -200,6 +200,8 @@ void addViewOptions(CLI::App& cmd, ViewerOptions& options, std::string& toneMapp
   cmd.add_option("--backend", options.backend, "auto, cpu or optix (in this build: " + availableBackends() + ")")
       ->check(CLI::IsMember({"auto", "cpu", "optix"}))
       ->capture_default_str();
+  cmd.add_flag_callback("--no-interop", [&options] { options.interop = false; },
+                        "OptiX backend: show the image through a copy to the host, not CUDA-OpenGL interop");
   cmd.add_option("--width", options.width, "Image width in pixels; the panel sits beside the image")
       ->check(CLI::Range(64u, 16384u))
       ->capture_default_str();

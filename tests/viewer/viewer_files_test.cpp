@@ -115,6 +115,8 @@ TEST_F(ViewerFiles, StateFileAppearsWhole) {
   state.cameraPosition = {1, 2, 3};
   state.message = "could not open 'x'";
   state.messageIsError = true;
+  state.openSceneText = "no-such-scene";
+  state.openSceneFieldActive = true;
   const fs::path file = dir / "state.json";
   writeStateFile(file.string(), state);
   EXPECT_FALSE(fs::exists(file.string() + ".partial"));
@@ -123,6 +125,8 @@ TEST_F(ViewerFiles, StateFileAppearsWhole) {
   EXPECT_EQ(j["restarts"], 3);
   EXPECT_EQ(j["camera"]["position"][2], 3.0);
   EXPECT_TRUE(j["message_is_error"]);
+  EXPECT_EQ(j["open_scene_text"], "no-such-scene");
+  EXPECT_TRUE(j["open_scene_field_active"]);
 }
 
 TEST_F(ViewerFiles, ScreenshotShowsWhatThePostSettingsShow) {

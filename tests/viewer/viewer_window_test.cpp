@@ -29,6 +29,9 @@ using test::runCommand;
 
 const std::string kCandela = CANDELA_EXECUTABLE;
 constexpr double kProcessTimeout = 60.0;
+// The viewer takes at most one key press per frame from its input queue, and writes the state after every event
+// sent before the F12 that asks for it; at a few frames per second on a loaded machine that can take seconds.
+constexpr double kStateTimeout = 30.0;
 
 struct Png {
   int width = 0, height = 0;
@@ -120,7 +123,8 @@ TEST_F(ViewerWindow, FramesThenScreenshotMatchAHeadlessRender) {
   EXPECT_LE(worst, 1.0);
 }
 
-// Drives a running viewer with xdotool and reads the state it writes on F12.
+// Drives a running viewer with xdotool and reads the state it writes on F12: the state after every mouse and key
+// event sent before.
 class RunningViewer {
  public:
   RunningViewer(const fs::path& dir, std::vector<std::string> extraArgs)
@@ -152,12 +156,13 @@ class RunningViewer {
   json state() {
     fs::remove(statePath_);
     xdotool("key F12");
-    for (int i = 0; i < 500; ++i) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(kStateTimeout);
+    while (std::chrono::steady_clock::now() < deadline) {
       if (fs::exists(statePath_)) return json::parse(std::ifstream(statePath_));
       if (!child_.running()) throw std::runtime_error("the viewer exited: " + child_.stderrText());
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
-    throw std::runtime_error("the viewer wrote no state within 5 s");
+    throw std::runtime_error("the viewer wrote no state within " + std::to_string(int(kStateTimeout)) + " s");
   }
   // Asks for the state until `done` holds, for at most `seconds`.
   json stateWhen(const std::function<bool(const json&)>& done, double seconds = 10.0) {
@@ -273,24 +278,42 @@ TEST_F(ViewerWindow, ALoadErrorIsShownInTheWindow) {
   ASSERT_LT(fieldY, 800.0f);
 
   // The pointer leaves the field straight after the click, before the viewer's next frame: the click still
-  // lands on the field.
+  // lands on the field, and the text typed straight after it reaches the field.
   viewer.pointAt(fieldX, fieldY);
   RunningViewer::xdotool("click 1 mousemove_relative -- -200 -300");
   RunningViewer::xdotool("type --delay 20 no-such-scene");
+  json t = viewer.state();
+  EXPECT_TRUE(t["open_scene_field_active"]);
+  EXPECT_EQ(t["open_scene_text"], "no-such-scene");
+  // Typing into the field did not move the camera ('s' and 'e' are fly keys).
+  EXPECT_LT(distance(vec(t["camera"]["position"]), camera), kSame);
+  EXPECT_EQ(t["restarts"], s["restarts"]);
   RunningViewer::xdotool("key Return");
-  json t = viewer.stateWhen([](const json& j) { return !j["message"].get<std::string>().empty(); }, 5.0);
+  t = viewer.state();
+  EXPECT_FALSE(t["open_scene_field_active"]);
   EXPECT_TRUE(t["message_is_error"]);
   EXPECT_NE(t["message"].get<std::string>().find("could not open 'no-such-scene'"), std::string::npos) << t["message"];
   EXPECT_EQ(t["scene"], "cornell-box");
-  // Typing into the field did not fly the camera ('s' and 'e' are fly keys).
-  EXPECT_LT(distance(vec(t["camera"]["position"]), camera), kSame);
   EXPECT_TRUE(viewer.process().running());
 
+  // The field keeps the failed name for correcting; Ctrl+A and Backspace clear it. Neither these keys nor the
+  // new name ('a', 'w', 'e' fly, 'f' frames the scene, 'r' resets the camera) reach the camera.
   viewer.pointAt(fieldX, fieldY);
-  RunningViewer::xdotool("click 1 sleep 0.1 key ctrl+a BackSpace");
+  RunningViewer::xdotool("click 1");
+  t = viewer.state();
+  ASSERT_TRUE(t["open_scene_field_active"]);
+  EXPECT_EQ(t["open_scene_text"], "no-such-scene");
+  RunningViewer::xdotool("key ctrl+a BackSpace");
+  t = viewer.state();
+  EXPECT_EQ(t["open_scene_text"], "");
   RunningViewer::xdotool("type --delay 20 white-furnace");
+  t = viewer.state();
+  EXPECT_EQ(t["open_scene_text"], "white-furnace");
+  EXPECT_LT(distance(vec(t["camera"]["position"]), camera), kSame);
+  EXPECT_EQ(t["restarts"], s["restarts"]);
   RunningViewer::xdotool("key Return");
-  t = viewer.stateWhen([](const json& j) { return j["scene"] == "white-furnace"; }, 5.0);
+  t = viewer.state();
+  EXPECT_EQ(t["scene"], "white-furnace");
   EXPECT_FALSE(t["message_is_error"]);
 
   RunningViewer::xdotool("key Escape");

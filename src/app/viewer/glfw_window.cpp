@@ -75,56 +75,93 @@ ImGuiLayer::~ImGuiLayer() {
   ImGui::DestroyContext();
 }
 
-void ImGuiLayer::beginFrame() {
-  std::optional<ImVec2> pointerAtClick = deliverOneFramesEvents();
+std::vector<WindowEvent> ImGuiLayer::beginFrame() {
+  std::vector<WindowEvent> events;
+  std::optional<ImVec2> pointerAtClick = deliverOneFramesEvents(events);
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   if (pointerAtClick) ImGui::GetIO().MousePos = *pointerAtClick;
   ImGui::NewFrame();
+  return events;
 }
 
-std::optional<ImVec2> ImGuiLayer::deliverOneFramesEvents() {
+namespace {
+
+bool isModifier(int key) { return key >= GLFW_KEY_LEFT_SHIFT && key <= GLFW_KEY_RIGHT_SUPER; }
+
+}  // namespace
+
+bool ImGuiLayer::kept(int key) const { return std::find(keptKeys_.begin(), keptKeys_.end(), key) != keptKeys_.end(); }
+
+std::optional<ImVec2> ImGuiLayer::deliverOneFramesEvents(std::vector<WindowEvent>& events) {
   std::optional<ImVec2> pointer;
-  std::vector<int> pressed;
   bool typed = false;
+  bool imguiTookInput = false;  // a key, character or wheel event
+  std::vector<int> released;
   size_t next = 0;
   for (; next < queue_.size(); ++next) {
     const InputEvent& e = queue_[next];
+    if (e.kind == EventKind::CursorMove) {
+      events.push_back({WindowEvent::Kind::CursorMove, 0, 0, e.x, e.y, 0.0});
+      continue;
+    }
     if (e.kind == EventKind::MouseButton) {
-      if (next > 0) break;
+      if (imguiTookInput) break;
       ImGui_ImplGlfw_MouseButtonCallback(window_, e.key, e.action, e.mods);
+      events.push_back({WindowEvent::Kind::MouseButton, e.key, e.action, e.x, e.y, 0.0});
       pointer = ImVec2(float(e.x), float(e.y));
       ++next;
       break;
     }
-    if (e.kind == EventKind::Char) {
-      if (!pressed.empty()) break;
-      ImGui_ImplGlfw_CharCallback(window_, e.codepoint);
-      typed = true;
+    if (e.kind == EventKind::Wheel) {
+      ImGui_ImplGlfw_ScrollCallback(window_, e.dx, e.dy);
+      events.push_back({WindowEvent::Kind::Wheel, 0, 0, e.x, e.y, e.dy});
+      imguiTookInput = true;
       continue;
     }
-    if (e.action == GLFW_PRESS) {
-      if (typed) break;
-      pressed.push_back(e.key);
-    } else if (e.action == GLFW_RELEASE && std::find(pressed.begin(), pressed.end(), e.key) != pressed.end()) {
+    if (e.kind == EventKind::Char) {
+      ImGui_ImplGlfw_CharCallback(window_, e.codepoint);
+      typed = imguiTookInput = true;
+      continue;
+    }
+    const bool press = e.action == GLFW_PRESS;
+    if (press && typed && isModifier(e.key)) break;
+    if (press && std::find(released.begin(), released.end(), e.key) != released.end()) break;
+    if (!kept(e.key)) {
+      ImGui_ImplGlfw_KeyCallback(window_, e.key, e.scancode, e.action, e.mods);
+      imguiTookInput = true;
+    }
+    events.push_back({WindowEvent::Kind::Key, e.key, e.action, 0.0, 0.0, 0.0});
+    if (press) {
+      ++next;
       break;
     }
-    ImGui_ImplGlfw_KeyCallback(window_, e.key, e.scancode, e.action, e.mods);
+    if (e.action == GLFW_RELEASE) released.push_back(e.key);
   }
   queue_.erase(queue_.begin(), queue_.begin() + ptrdiff_t(next));
   return pointer;
 }
 
 void ImGuiLayer::onKey(int key, int scancode, int action, int mods) {
-  queue_.push_back({EventKind::Key, 0, key, scancode, action, mods, 0.0, 0.0});
+  queue_.push_back({EventKind::Key, 0, key, scancode, action, mods, 0.0, 0.0, 0.0, 0.0});
 }
 
-void ImGuiLayer::onChar(unsigned int codepoint) { queue_.push_back({EventKind::Char, codepoint, 0, 0, 0, 0, 0.0, 0.0}); }
+void ImGuiLayer::onChar(unsigned int codepoint) {
+  queue_.push_back({EventKind::Char, codepoint, 0, 0, 0, 0, 0.0, 0.0, 0.0, 0.0});
+}
 
 void ImGuiLayer::onMouseButton(int button, int action, int mods, double x, double y) {
-  queue_.push_back({EventKind::MouseButton, 0, button, 0, action, mods, x, y});
+  queue_.push_back({EventKind::MouseButton, 0, button, 0, action, mods, x, y, 0.0, 0.0});
 }
-void ImGuiLayer::onScroll(double dx, double dy) { ImGui_ImplGlfw_ScrollCallback(window_, dx, dy); }
+
+void ImGuiLayer::onCursorMove(double x, double y) {
+  queue_.push_back({EventKind::CursorMove, 0, 0, 0, 0, 0, x, y, 0.0, 0.0});
+}
+
+void ImGuiLayer::onScroll(double dx, double dy, double x, double y) {
+  queue_.push_back({EventKind::Wheel, 0, 0, 0, 0, 0, x, y, dx, dy});
+}
+
 void ImGuiLayer::onFocus(int focused) { ImGui_ImplGlfw_WindowFocusCallback(window_, focused); }
 void ImGuiLayer::onCursorEnter(int entered) { ImGui_ImplGlfw_CursorEnterCallback(window_, entered); }
 

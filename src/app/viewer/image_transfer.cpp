@@ -15,9 +15,14 @@ const char* const kCopyPath = "host copy (readImage + glTexSubImage2D)";
 
 }  // namespace
 
-ImageTransfer::ImageTransfer(const RenderSession& session) {
+ImageTransfer::ImageTransfer(const RenderSession& session, bool allowInterop) {
 #if CANDELA_HAS_OPTIX
-  if (const auto* optix = dynamic_cast<const OptixBackend*>(&session.backend())) {
+  const auto* optix = dynamic_cast<const OptixBackend*>(&session.backend());
+  if (optix && !allowInterop) {
+    description_ = std::string(kCopyPath) + ": interop switched off (--no-interop)";
+    return;
+  }
+  if (optix) {
     try {
       auto interop = std::make_shared<CudaGlInterop>(*optix);
       interop_ = [interop](ImageDisplay& display, uint32_t width, uint32_t height) {
@@ -31,6 +36,7 @@ ImageTransfer::ImageTransfer(const RenderSession& session) {
     }
   }
 #endif
+  (void)allowInterop;  // only the OptiX backend has an interop path
   description_ = std::string(kCopyPath) + ": the " + session.backend().name() + " backend renders on the host";
 }
 

@@ -12,8 +12,9 @@ namespace candela {
 
 class ImageTransfer {
  public:
-  // Needs a current OpenGL context; picks the path once, for the session's backend.
-  explicit ImageTransfer(const RenderSession& session);
+  // Needs a current OpenGL context; picks the path once, for the session's backend. With `allowInterop` false
+  // it takes the host copy even where interop would work, so that the two can be compared.
+  ImageTransfer(const RenderSession& session, bool allowInterop);
   ~ImageTransfer();
   ImageTransfer(const ImageTransfer&) = delete;
   ImageTransfer& operator=(const ImageTransfer&) = delete;

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
+#include <vector>
 
 #include "app/backend_factory.h"
 #include "app/scene_loading.h"
@@ -39,6 +40,9 @@ class Viewer {
   static Viewer& of(GLFWwindow* window) { return *static_cast<Viewer*>(glfwGetWindowUserPointer(window)); }
   void installCallbacks();
   bool cursorOverImage(double x) const;
+  void handleInput(const std::vector<WindowEvent>& events);
+  void handleMouseButton(const WindowEvent& e);
+  void handleKey(const WindowEvent& e);
   FlyKeys heldFlyKeys() const;
 
   void showScene(Scene scene, const std::string& spec);
@@ -62,11 +66,13 @@ class Viewer {
   InteractivePolicy policy_;
   ViewerControls controls_;
   PanelStatus status_;
+  FlyKeys flyKeys_;  // held, as the events taken from the input queue so far say
   FramePlan lastPlan_;
   Camera lastCamera_;
   bool stateRequested_ = false;
-  double pointerX_ = 0.0, pointerY_ = 0.0;  // as of the last cursor event
+  double pointerX_ = 0.0, pointerY_ = 0.0;  // as of the last cursor event GLFW reported
   Vec2 openSceneField_;
+  bool openSceneFieldActive_ = false;
   bool sceneJustShown_ = true;
   int framebufferWidth_ = 0;
   int framebufferHeight_ = 0;
@@ -82,7 +88,7 @@ Viewer::Viewer(const ViewerOptions& options)
         std::fprintf(stderr, "%s\n", why.c_str());
         return backend;
       }()),
-      transfer_(session_) {
+      transfer_(session_, options.interop) {
   controls_.maxDepth = options.maxDepth;
   controls_.samplesPerFrame = options.samplesPerFrame;
   controls_.post = options.post;
@@ -95,47 +101,33 @@ Viewer::Viewer(const ViewerOptions& options)
   glfwSetWindowSizeLimits(window_.handle(), kPanelWidth + kMinImageSide, kMinImageSide, GLFW_DONT_CARE,
                           GLFW_DONT_CARE);
   glfwGetCursorPos(window_.handle(), &pointerX_, &pointerY_);
+  imgui_.keepFromImGui(GLFW_KEY_F12);  // text fields have no use for it
   installCallbacks();
 }
 
 void Viewer::installCallbacks() {
-  // Every event goes to ImGui first; the camera takes what ImGui does not want.
+  // Input waits in ImGui's queue; the viewer takes its share from there (handleInput), in the same order and frame
+  // as ImGui takes its own, so that what ImGui wants (a click on the panel, a key typed into a text field) never
+  // also moves the camera.
   GLFWwindow* w = window_.handle();
   glfwSetWindowUserPointer(w, this);
-  glfwSetMouseButtonCallback(w, [](GLFWwindow* window, int button, int action, int mods) {
-    Viewer& v = of(window);
-    v.imgui_.onMouseButton(button, action, mods, v.pointerX_, v.pointerY_);
-    if (button > GLFW_MOUSE_BUTTON_MIDDLE) return;
-    MouseButton b = button == GLFW_MOUSE_BUTTON_MIDDLE ? MouseButton::Middle
-                    : button == GLFW_MOUSE_BUTTON_RIGHT ? MouseButton::Right
-                                                        : MouseButton::Left;
-    if (action == GLFW_PRESS)
-      v.input_.buttonPressed(b, v.pointerX_, v.pointerY_, v.cursorOverImage(v.pointerX_));
-    else if (action == GLFW_RELEASE)
-      v.input_.buttonReleased(b);
-  });
-  // Events reach the viewer once per frame; where the pointer was at a click or a wheel step is where the
-  // cursor events before it had taken it, not where it is now.
+  // Where the pointer was at a click or a wheel step is where the cursor events before it had taken it.
   glfwSetCursorPosCallback(w, [](GLFWwindow* window, double x, double y) {
     Viewer& v = of(window);
     v.pointerX_ = x;
     v.pointerY_ = y;
-    v.input_.cursorMoved(x, y);
+    v.imgui_.onCursorMove(x, y);
+  });
+  glfwSetMouseButtonCallback(w, [](GLFWwindow* window, int button, int action, int mods) {
+    Viewer& v = of(window);
+    v.imgui_.onMouseButton(button, action, mods, v.pointerX_, v.pointerY_);
   });
   glfwSetScrollCallback(w, [](GLFWwindow* window, double dx, double dy) {
     Viewer& v = of(window);
-    v.imgui_.onScroll(dx, dy);
-    v.input_.wheel(dy, v.cursorOverImage(v.pointerX_));
+    v.imgui_.onScroll(dx, dy, v.pointerX_, v.pointerY_);
   });
   glfwSetKeyCallback(w, [](GLFWwindow* window, int key, int scancode, int action, int mods) {
-    Viewer& v = of(window);
-    v.imgui_.onKey(key, scancode, action, mods);
-    if (action != GLFW_PRESS) return;
-    if (key == GLFW_KEY_F12) v.stateRequested_ = true;  // text fields have no use for it
-    if (ImGui::GetIO().WantCaptureKeyboard) return;
-    if (key == GLFW_KEY_F) v.camera_->frameScene();
-    if (key == GLFW_KEY_R) v.camera_->reset();
-    if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(window, GLFW_TRUE);
+    of(window).imgui_.onKey(key, scancode, action, mods);
   });
   glfwSetCharCallback(w, [](GLFWwindow* window, unsigned int c) { of(window).imgui_.onChar(c); });
   glfwSetWindowFocusCallback(w, [](GLFWwindow* window, int focused) { of(window).imgui_.onFocus(focused); });
@@ -150,18 +142,60 @@ bool Viewer::cursorOverImage(double x) const {
   return x < (framebufferWidth_ - kPanelWidth) * scale && !ImGui::GetIO().WantCaptureMouse;
 }
 
-FlyKeys Viewer::heldFlyKeys() const {
-  FlyKeys keys;
-  if (ImGui::GetIO().WantCaptureKeyboard) return keys;
-  auto held = [&](int key) { return glfwGetKey(window_.handle(), key) == GLFW_PRESS; };
-  keys.forward = held(GLFW_KEY_W);
-  keys.back = held(GLFW_KEY_S);
-  keys.left = held(GLFW_KEY_A);
-  keys.right = held(GLFW_KEY_D);
-  keys.down = held(GLFW_KEY_Q);
-  keys.up = held(GLFW_KEY_E);
-  return keys;
+namespace {
+
+// The FlyKeys entry that `key` holds, if it is a fly key.
+bool* flyKey(FlyKeys& keys, int key) {
+  switch (key) {
+    case GLFW_KEY_W: return &keys.forward;
+    case GLFW_KEY_S: return &keys.back;
+    case GLFW_KEY_A: return &keys.left;
+    case GLFW_KEY_D: return &keys.right;
+    case GLFW_KEY_Q: return &keys.down;
+    case GLFW_KEY_E: return &keys.up;
+    default: return nullptr;
+  }
 }
+
+}  // namespace
+
+// Called after ImGui has started the frame that takes `events`: io.WantCaptureMouse and io.WantCaptureKeyboard
+// are ImGui's decisions for them.
+void Viewer::handleInput(const std::vector<WindowEvent>& events) {
+  for (const WindowEvent& e : events) {
+    switch (e.kind) {
+      case WindowEvent::Kind::CursorMove: input_.cursorMoved(e.x, e.y); break;
+      case WindowEvent::Kind::Wheel: input_.wheel(e.wheel, cursorOverImage(e.x)); break;
+      case WindowEvent::Kind::MouseButton: handleMouseButton(e); break;
+      case WindowEvent::Kind::Key: handleKey(e); break;
+    }
+  }
+}
+
+void Viewer::handleMouseButton(const WindowEvent& e) {
+  if (e.code > GLFW_MOUSE_BUTTON_MIDDLE) return;
+  const MouseButton b = e.code == GLFW_MOUSE_BUTTON_MIDDLE  ? MouseButton::Middle
+                        : e.code == GLFW_MOUSE_BUTTON_RIGHT ? MouseButton::Right
+                                                            : MouseButton::Left;
+  if (e.action == GLFW_PRESS)
+    input_.buttonPressed(b, e.x, e.y, cursorOverImage(e.x));
+  else if (e.action == GLFW_RELEASE)
+    input_.buttonReleased(b);
+}
+
+void Viewer::handleKey(const WindowEvent& e) {
+  bool* fly = flyKey(flyKeys_, e.code);
+  if (e.action == GLFW_RELEASE && fly) *fly = false;
+  if (e.action != GLFW_PRESS) return;
+  if (e.code == GLFW_KEY_F12) stateRequested_ = true;
+  if (ImGui::GetIO().WantCaptureKeyboard) return;
+  if (fly) *fly = true;
+  if (e.code == GLFW_KEY_F) camera_->frameScene();
+  if (e.code == GLFW_KEY_R) camera_->reset();
+  if (e.code == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(window_.handle(), GLFW_TRUE);
+}
+
+FlyKeys Viewer::heldFlyKeys() const { return ImGui::GetIO().WantCaptureKeyboard ? FlyKeys{} : flyKeys_; }
 
 void Viewer::showScene(Scene scene, const std::string& spec) {
   validateScene(scene);
@@ -213,6 +247,8 @@ void Viewer::frame(double now, double seconds) {
   const int imageWidth = std::max(framebufferWidth_ - kPanelWidth, 1);
   const int imageHeight = std::max(framebufferHeight_, 1);
 
+  // ImGui takes this frame's share of the queued input first; the camera takes what ImGui does not want.
+  handleInput(imgui_.beginFrame());
   input_.apply(*camera_, heldFlyKeys(), float(std::min(seconds, kMaxFlyStep)), float(imageHeight));
   const Camera camera = camera_->camera(float(imageWidth) / float(imageHeight));
   // A scene's first camera is where the view starts, not a motion.
@@ -243,13 +279,13 @@ void Viewer::frame(double now, double seconds) {
   display_.draw(controls_.post, 0, 0, imageWidth, imageHeight);
 
   updateStatus(seconds);
-  imgui_.beginFrame();
   // The panel's edits take effect from the next frame on; its actions act on this frame's image.
   // ImGui lays out in window coordinates, which differ from framebuffer pixels on high-density displays.
   const float scale = ImGui::GetIO().DisplayFramebufferScale.x > 0.0f ? ImGui::GetIO().DisplayFramebufferScale.x : 1.0f;
   PanelRequests requests = drawPanel(status_, controls_, float(imageWidth) / scale, float(kPanelWidth) / scale,
                                      float(framebufferHeight_) / scale);
   openSceneField_ = requests.openSceneField;
+  openSceneFieldActive_ = requests.openSceneFieldActive;
   handle(requests);
   imgui_.render();
 }
@@ -292,6 +328,8 @@ void Viewer::writeState() {
   state.message = status_.message;
   state.messageIsError = status_.messageIsError;
   state.openSceneField = openSceneField_;
+  state.openSceneText = controls_.openSpec;
+  state.openSceneFieldActive = openSceneFieldActive_;
   try {
     writeStateFile(options_.stateFile, state);
   } catch (const std::exception& e) {

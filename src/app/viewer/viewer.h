@@ -12,6 +12,7 @@ struct ViewerOptions {
   std::string environmentPath;  // an .hdr or .exr map that lights the first scene instead of its own
   SceneCacheSettings sceneCache;
   std::string backend = "auto";
+  bool interop = true;  // false: the image reaches the screen through the host copy even where interop works
   uint32_t width = 960;  // of the image; the panel sits beside it
   uint32_t height = 720;
   uint32_t maxDepth = 8;

@@ -104,6 +104,8 @@ void writeStateFile(const std::string& path, const ViewerState& s) {
       {"message", s.message},
       {"message_is_error", s.messageIsError},
       {"open_scene_field", {s.openSceneField.x, s.openSceneField.y}},
+      {"open_scene_text", s.openSceneText},
+      {"open_scene_field_active", s.openSceneFieldActive},
   };
   const std::string temporary = path + ".partial";
   writeJson(temporary, json);

@@ -39,6 +39,8 @@ struct ViewerState {
   std::string message;  // the panel's last message
   bool messageIsError = false;
   Vec2 openSceneField;
+  std::string openSceneText;  // what the scene field holds
+  bool openSceneFieldActive = false;
 };
 void writeStateFile(const std::string& path, const ViewerState& state);
 

@@ -113,6 +113,7 @@ void drawActions(ViewerControls& c, PanelRequests& requests) {
                                                 ImGuiInputTextFlags_EnterReturnsTrue);
   const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
   requests.openSceneField = {0.5f * (lo.x + hi.x), 0.5f * (lo.y + hi.y)};
+  requests.openSceneFieldActive = ImGui::IsItemActive();
   ImGui::SameLine();
   requests.openScene = ImGui::Button("Open scene") || entered;
 }

@@ -33,6 +33,7 @@ struct PanelRequests {
   bool saveSceneFile = false;
   bool openScene = false;  // the Open button, or Enter in the scene field
   Vec2 openSceneField;     // the centre of the scene field in window coordinates, for scripts that drive the window
+  bool openSceneFieldActive = false;  // the scene field has the keyboard
 };
 
 // The docked panel at the right edge of the window: status, render settings, post-processing and actions.
