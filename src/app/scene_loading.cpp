@@ -11,25 +11,20 @@
 #include "scene/loaders/load_diagnostics.h"
 #include "scene/loaders/obj_loader.h"
 #include "scene/loaders/scene_file.h"
+#include "core/file_extension.h"
 
 namespace candela {
 
 namespace {
 
-std::string lowerExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
-
 Scene loadModel(const std::string& path, const SceneCacheSettings& cache, LoadWarnings& warnings) {
   return loadThroughSceneCache(path, cache, warnings, [&](LoadWarnings& w) {
-    return lowerExtension(path) == ".obj" ? loadObj(path, w) : loadGltf(path, w);
+    return lowerCaseExtension(path) == ".obj" ? loadObj(path, w) : loadGltf(path, w);
   });
 }
 
 Scene loadFile(const std::string& path, const SceneCacheSettings& cache, LoadWarnings& warnings) {
-  std::string ext = lowerExtension(path);
+  std::string ext = lowerCaseExtension(path);
   if (ext == ".obj" || ext == ".gltf" || ext == ".glb") return loadModel(path, cache, warnings);
   if (ext == ".json")
     return loadSceneFile(

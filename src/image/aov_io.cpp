@@ -1,4 +1,5 @@
 #include "image/aov_io.h"
+#include "core/file_extension.h"
 
 #include <stb/stb_image_write.h>
 
@@ -9,12 +10,6 @@
 namespace candela {
 
 namespace {
-
-std::string lowerExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
 
 std::string besidePath(const std::string& path, Aov aov) {
   std::filesystem::path p(path);
@@ -92,7 +87,7 @@ std::vector<std::string> writeImageWithAovs(const std::string& path, const Image
                                             const std::vector<Aov>& which) {
   if (!which.empty() && (aovs.width() != image.width || aovs.height() != image.height))
     throw std::invalid_argument("the AOVs differ in size from the image");
-  const std::string ext = lowerExtension(path);
+  const std::string ext = lowerCaseExtension(path);
   std::vector<std::string> written{path};
   if (ext == ".exr") {
     writeExrWithAovs(path, image, aovs, which);

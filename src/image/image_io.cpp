@@ -1,4 +1,5 @@
 #include "image/image_io.h"
+#include "core/file_extension.h"
 
 #include <stb/stb_image_write.h>
 
@@ -16,12 +17,6 @@
 namespace candela {
 
 namespace {
-
-std::string extensionOf(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
 
 [[noreturn]] void cannotWrite(const std::string& path, const std::string& why) {
   throw std::runtime_error("cannot write '" + path + "': " + why);
@@ -90,12 +85,12 @@ ToneMapper parseToneMapper(const std::string& name) {
 }
 
 bool isSupportedImageExtension(const std::string& path) {
-  std::string ext = extensionOf(path);
+  std::string ext = lowerCaseExtension(path);
   return ext == ".png" || ext == ".exr" || ext == ".pfm";
 }
 
 void writeImage(const std::string& path, const Image& image, const DisplaySettings& display) {
-  std::string ext = extensionOf(path);
+  std::string ext = lowerCaseExtension(path);
   if (ext == ".png")
     writePng(path, image, display);
   else if (ext == ".exr")

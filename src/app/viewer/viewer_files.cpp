@@ -9,6 +9,7 @@
 
 #include "image/filters/bilateral.h"
 #include "image/image_io.h"
+#include "core/file_extension.h"
 
 namespace candela {
 
@@ -33,12 +34,6 @@ void saveScreenshot(const std::string& path, const Image& accumulated, const Pos
 
 namespace {
 
-std::string lowerExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
-
 // The "models" of the scene file at `path`, their files made absolute.
 nlohmann::ordered_json modelsOfSceneFile(const std::string& path) {
   std::ifstream in(path);
@@ -58,7 +53,7 @@ std::string writeViewFile(const std::string& path, const std::string& sceneSpec,
                           const CameraDescription& camera, const RenderSettings& settings,
                           const ViewerControls& controls) {
   nlohmann::ordered_json json;
-  const std::string ext = lowerExtension(sceneSpec);
+  const std::string ext = lowerCaseExtension(sceneSpec);
   const bool isFile = std::filesystem::is_regular_file(sceneSpec);
   if (isFile && (ext == ".obj" || ext == ".gltf" || ext == ".glb"))
     json["models"] = nlohmann::ordered_json::array({{{"file", std::filesystem::absolute(sceneSpec).string()}}});

@@ -12,16 +12,11 @@
 
 #include "scene/loaders/file_bytes.h"
 #include "scene/loaders/load_diagnostics.h"
+#include "core/file_extension.h"
 
 namespace candela {
 
 namespace {
-
-std::string lowerExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
 
 void checkSize(const std::string& name, int width, int height, size_t bytesPerPixel) {
   if (width <= 0 || height <= 0) failLoad(name, "image has no pixels");
@@ -156,7 +151,7 @@ Texture loadExr(const std::string& path) {
 }  // namespace
 
 Texture loadEnvironmentImage(const std::string& path) {
-  std::string ext = lowerExtension(path);
+  std::string ext = lowerCaseExtension(path);
   if (ext == ".exr") return loadExr(path);
   std::vector<uint8_t> bytes = readFileBytes(path);
   if (!stbi_is_hdr_from_memory(bytes.data(), int(std::min(bytes.size(), size_t(INT_MAX)))))
