@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <map>
 
 #include "app/backend_factory.h"
 #include "app/render_job.h"
@@ -216,7 +217,12 @@ void addViewOptions(CLI::App& cmd, ViewerOptions& options, std::string& toneMapp
       ->check(CLI::Range(1u, 1024u))
       ->capture_default_str();
   cmd.add_option("--exposure", options.post.display.exposure, "Exposure in stops")->capture_default_str();
-  cmd.add_flag("--atrous", options.post.atrous, "Start with the a-trous denoiser on (the panel switches it)");
+  const std::map<std::string, DenoiserChoice> denoisers{
+      {"none", DenoiserChoice::None}, {"atrous", DenoiserChoice::Atrous}, {"optix", DenoiserChoice::Optix}};
+  cmd.add_option("--denoise", options.post.denoiser,
+                 "Denoiser to start with (the panel switches it): none; atrous; optix (the OptiX AI denoiser)")
+      ->transform(CLI::CheckedTransformer(denoisers, CLI::ignore_case))
+      ->default_str("none");
   cmd.add_option("--tonemap", toneMapper, "Tone mapper: aces, reinhard or clamp (linear)")
       ->check(CLI::IsMember({"aces", "reinhard", "clamp"}))
       ->capture_default_str();

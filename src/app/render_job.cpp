@@ -7,7 +7,6 @@
 #include "app/backend_factory.h"
 #include "app/progress.h"
 #include "app/scene_loading.h"
-#include "image/filters/atrous_kernel.h"
 #if CANDELA_HAS_OPTIX
 #include "backends/optix/optix_backend.h"
 #include "backends/optix/optix_denoiser.h"
@@ -35,9 +34,7 @@ bool needsAovs(const RenderJob& job) {
 void denoiseWithOptixGuides([[maybe_unused]] RenderOutcome& outcome, [[maybe_unused]] const AovImages& aovs) {
 #if CANDELA_HAS_OPTIX
   try {
-    Image normal = aovs.normal;
-    for (Vec3& n : normal.pixels) n = unitOrZero(n);
-    outcome.image = denoiseWithOptix(outcome.image, {&aovs.albedo, &normal});
+    outcome.image = denoiseWithOptix(outcome.image, {&aovs.albedo, &aovs.normal});
   } catch (const std::runtime_error& e) {
     std::fprintf(stderr, "candela: %s; the image is kept without denoising\n", e.what());
   }

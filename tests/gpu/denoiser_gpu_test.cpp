@@ -7,6 +7,7 @@
 
 #include "backends/optix/optix_denoiser.h"
 #include "gpu_render.h"
+#include "support/scene_edits.h"
 
 namespace candela {
 namespace {
@@ -52,8 +53,7 @@ TEST(GpuDenoiser, DenoisesWithGuidesOrSaysWhyNot) {
   backend->setAovsEnabled(true);
   backend->render(4);
   const Image noisy = backend->readImage();
-  AovImages aovs = backend->readAovs();
-  for (Vec3& n : aovs.normal.pixels) n = length(n) > 0.0f ? normalize(n) : n;
+  const AovImages aovs = backend->readAovs();
   Image denoised;
   try {
     denoised = denoiseWithOptix(noisy, {&aovs.albedo, &aovs.normal});
@@ -64,6 +64,33 @@ TEST(GpuDenoiser, DenoisesWithGuidesOrSaysWhyNot) {
   const Image reference = renderCornellBox(2, 4096);
   for (Vec3 p : denoised.pixels) ASSERT_TRUE(isFinite(p));
   EXPECT_LT(relativeMse(denoised, reference), 0.5 * relativeMse(noisy, reference));
+}
+
+// The viewer keeps one denoiser across frames and window sizes: each image must come out as a denoiser made for
+// it alone would give it.
+TEST(GpuDenoiser, AKeptDenoiserGivesTheImagesOfFreshOnesOrSaysWhyNot) {
+  auto backend = test::makeBackend<OptixBackend>(makeCornellBox(), test::squareImage(96, 1));
+  backend->setAovsEnabled(true);
+  backend->render(4);
+  const Image small = backend->readImage();
+  const AovImages smallAovs = backend->readAovs();
+  const Image large = renderCornellBox(3, 4);
+  try {
+    OptixImageDenoiser kept({true, true});
+    const Image first = kept.denoise(small, {&smallAovs.albedo, &smallAovs.normal});
+    EXPECT_THROW(kept.denoise(large), std::invalid_argument) << "made with guides, given none";
+    const Image again = kept.denoise(small, {&smallAovs.albedo, &smallAovs.normal});
+    test::expectSameImage(again, first);
+    test::expectSameImage(denoiseWithOptix(small, {&smallAovs.albedo, &smallAovs.normal}), first);
+    OptixImageDenoiser colourOnly({});
+    const Image largeKept = colourOnly.denoise(large);
+    EXPECT_EQ(colourOnly.denoise(small).width, small.width) << "resized for another image";
+    test::expectSameImage(colourOnly.denoise(large), largeKept);
+    test::expectSameImage(denoiseWithOptix(large), largeKept);
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("OptiX error 7990"), std::string::npos) << e.what();
+    GTEST_SKIP() << "no denoiser weights in this driver: " << e.what();
+  }
 }
 
 TEST(GpuDenoiser, RejectsGuidesOfAnotherSize) {

@@ -13,7 +13,9 @@
 #     rendering;
 #   - the window shows the film as the PNG writer tone maps it, to one 8-bit step (GLSL against CPU);
 #   - the film agrees statistically with the headless render (image_compare agree), and disagrees with a
-#     direct-light-only render, which shows the comparison can tell.
+#     direct-light-only render, which shows the comparison can tell;
+#   - with the OptiX AI denoiser chosen, the film is denoised, or the viewer says why it cannot be and shows
+#     the plain interop window.
 # Prints the fps each run's panel showed at the end. Exit status: the number of failed checks. Leaves the images
 # and logs in <output dir>. Size and length: WIDTH, HEIGHT, FRAMES (default 1280 x 720, 300 frames).
 set -uo pipefail
@@ -71,6 +73,20 @@ result=$("$compare" agree "$out/interop.png" "$out/direct.png" 2>&1)
 [ $? -eq 1 ]
 check disagrees_with_direct_only $? "$result"
 
-echo "fps: interop $(fps interop); host copy $(fps copy); $width x $height, $frames frames, 1 sample per pixel each"
+# The OptiX AI denoiser chosen at start: it denoises (the film differs from the plain one), or, where it cannot
+# run (a driver without the denoiser's weights, OptiX error 7990), the panel says why and the viewer renders on
+# as if none had been chosen: then its window is the plain interop window, pixel for pixel.
+view denoised --denoise optix
+if grep -q '^no OptiX AI denoiser: ' "$out/denoised.log"; then
+  result=$("$compare" exact "$out/denoised-window.png" "$out/interop-window.png" --crop "$width" "$height" 2>&1)
+  check optix_denoiser_unavailable_renders_on $? "$(grep '^no OptiX AI denoiser: ' "$out/denoised.log"); $result"
+else
+  result=$("$compare" exact "$out/denoised.png" "$out/interop.png" 2>&1)
+  [ $? -eq 1 ]
+  check optix_denoiser_changes_the_film $? "$result"
+fi
+
+echo "fps: interop $(fps interop); host copy $(fps copy); OptiX AI denoiser chosen $(fps denoised);" \
+  "$width x $height, $frames frames, 1 sample per pixel each"
 echo "viewer interop: $failures failed"
 exit "$failures"

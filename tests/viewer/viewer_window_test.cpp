@@ -326,6 +326,35 @@ std::string lastLine(std::string text) {
   return text.substr(text.find_last_of('\n') + 1);
 }
 
+// The OptiX AI denoiser asked for at start: a build without it refuses in one sentence; a build with it denoises,
+// or, where it cannot run (no GPU, or a driver without the denoiser's weights), says why in the panel and renders
+// on without denoising.
+TEST_F(ViewerWindow, TheOptixDenoiserRunsOrThePanelSaysWhyNot) {
+#if CANDELA_HAS_OPTIX
+  RunningViewer viewer(dir_, {"cornell-box", "--width", "64", "--height", "64", "--max-depth", "1", "--denoise",
+                              "optix"});
+  const json s = viewer.state();
+  const std::string message = s["message"];
+  if (s["message_is_error"]) {
+    EXPECT_EQ(message.rfind("no OptiX AI denoiser: ", 0), 0u) << message;
+    EXPECT_NE(message.find("; denoising is off"), std::string::npos) << message;
+    EXPECT_EQ(s["denoiser"], "none");
+  } else {
+    EXPECT_EQ(s["denoiser"], "optix") << message;
+  }
+  const uint32_t samples = s["accumulated_samples"];
+  viewer.stateWhen([&](const json& t) { return t["accumulated_samples"].get<uint32_t>() > samples; });
+  RunningViewer::xdotool("key Escape");
+  EXPECT_EQ(viewer.process().wait(10.0), 0) << viewer.process().stderrText();
+#else
+  std::string text;
+  EXPECT_EQ(runCommand({kCandela, "view", "--denoise", "optix", "--frames", "1"}, kProcessTimeout, &text), 1);
+  EXPECT_EQ(lastLine(text).rfind("candela: --denoise optix needs the OptiX backend, which is not in this build", 0),
+            0u)
+      << text;
+#endif
+}
+
 TEST_F(ViewerWindow, WithoutADisplayItSaysSoAndFails) {
   ChildProcess child({kCandela, "view", "--frames", "1"}, path("stderr.txt"), /*display=*/false);
   EXPECT_EQ(child.wait(kProcessTimeout), 1);

@@ -5,12 +5,18 @@
 
 namespace candela {
 
+// The denoiser the accumulated image goes through before the display passes. Each makes the backend accumulate
+// the AOVs (albedo, normal, depth) that guide it.
+enum class DenoiserChoice {
+  None,
+  Atrous,  // where the backend's film is: the CPU filter, or CUDA for the optix backend
+  Optix,   // the OptiX AI denoiser, on the GPU, from the image and AOVs read back
+};
+
 // What happens to the accumulated image between the backend and the screen (or a screenshot).
 struct PostSettings {
   DisplaySettings display;
-  // The a-trous denoiser on every frame, where the backend's film is (CPU filter, or CUDA for the optix backend);
-  // it makes the backend accumulate the AOVs that guide it.
-  bool atrous = false;
+  DenoiserChoice denoiser = DenoiserChoice::None;
   AtrousParams atrousParams;
   bool bilateral = false;
   BilateralParams bilateralParams;

@@ -18,6 +18,7 @@
 #include "app/viewer/interactive_policy.h"
 #include "app/viewer/orbit_camera.h"
 #include "app/viewer/render_session.h"
+#include "app/viewer/viewer_denoiser.h"
 #include "app/viewer/viewer_files.h"
 #include "app/viewer/viewer_panel.h"
 #include "app/viewer/window_capture.h"
@@ -52,7 +53,8 @@ class Viewer {
   void writeState();
   void writeExitFiles();
   void report(const std::string& message, bool isError);
-  Image accumulatedImage() const;
+  void prepareDenoiser();
+  Image accumulatedImage();
 
   ViewerOptions options_;
   GlfwWindow window_;
@@ -60,6 +62,7 @@ class Viewer {
   ImageDisplay display_;
   RenderSession session_;
   ImageTransfer transfer_;
+  ViewerDenoiser denoiser_;
   std::unique_ptr<OrbitCamera> camera_;
   std::string sceneSpec_;
   CameraInput input_;
@@ -263,10 +266,11 @@ void Viewer::frame(double now, double seconds) {
   settings.maxDepth = controls_.maxDepth;
   settings.seed = options_.seed;
   auto start = std::chrono::steady_clock::now();
-  session_.setAovsEnabled(controls_.post.atrous);
+  prepareDenoiser();
+  session_.setAovsEnabled(controls_.post.denoiser != DenoiserChoice::None);
   session_.renderFrame(camera, settings, lastPlan_.samplesPerPixel, controls_.accumulate);
   // The denoised image is made on the host side of the backend; the plain one may stay on the device (interop).
-  if (controls_.post.atrous)
+  if (controls_.post.denoiser != DenoiserChoice::None)
     display_.upload(accumulatedImage());
   else
     transfer_.transfer(session_, display_);
@@ -290,9 +294,21 @@ void Viewer::frame(double now, double seconds) {
   imgui_.render();
 }
 
-// What the window shows before its GPU passes: the film, denoised when the a-trous denoiser is on.
-Image Viewer::accumulatedImage() const {
-  return controls_.post.atrous ? session_.atrousImage(controls_.post.atrousParams) : session_.image();
+// The OptiX AI denoiser is made when first chosen; where it cannot run the panel says why and denoising goes off,
+// before any frame is rendered for it.
+void Viewer::prepareDenoiser() {
+  if (controls_.post.denoiser != DenoiserChoice::Optix) return;
+  try {
+    denoiser_.prepareOptix();
+  } catch (const std::runtime_error& e) {
+    controls_.post.denoiser = DenoiserChoice::None;
+    report(std::string("no OptiX AI denoiser: ") + e.what() + "; denoising is off", true);
+  }
+}
+
+// What the window shows before its GPU passes: the film, through the chosen denoiser.
+Image Viewer::accumulatedImage() {
+  return denoiser_.apply(session_, controls_.post.denoiser, controls_.post.atrousParams);
 }
 
 void Viewer::updateStatus(double seconds) {
@@ -325,6 +341,9 @@ void Viewer::writeState() {
   state.cameraForward = camera_->forward();
   state.cameraTarget = camera_->target();
   state.cameraDistance = camera_->distance();
+  state.denoiser = controls_.post.denoiser == DenoiserChoice::Optix    ? "optix"
+                   : controls_.post.denoiser == DenoiserChoice::Atrous ? "atrous"
+                                                                       : "none";
   state.message = status_.message;
   state.messageIsError = status_.messageIsError;
   state.openSceneField = openSceneField_;
@@ -371,6 +390,9 @@ int Viewer::run() {
 }  // namespace
 
 int runViewer(const ViewerOptions& options) {
+  if (options.post.denoiser == DenoiserChoice::Optix && !ViewerDenoiser::optixInThisBuild())
+    throw std::runtime_error("--denoise optix needs the OptiX backend, which is not in this build (see README, "
+                             "'GPU backend')");
   Viewer viewer(options);
   return viewer.run();
 }

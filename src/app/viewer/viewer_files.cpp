@@ -96,6 +96,7 @@ void writeStateFile(const std::string& path, const ViewerState& s) {
         {"forward", vec(s.cameraForward)},
         {"target", vec(s.cameraTarget)},
         {"distance", s.cameraDistance}}},
+      {"denoiser", s.denoiser},
       {"message", s.message},
       {"message_is_error", s.messageIsError},
       {"open_scene_field", {s.openSceneField.x, s.openSceneField.y}},

@@ -36,7 +36,8 @@ struct ViewerState {
   std::string backend;
   Vec3 cameraPosition, cameraForward, cameraTarget;
   float cameraDistance = 0.0f;
-  std::string message;  // the panel's last message
+  std::string denoiser;  // "none", "atrous" or "optix"
+  std::string message;   // the panel's last message
   bool messageIsError = false;
   Vec2 openSceneField;
   std::string openSceneText;  // what the scene field holds

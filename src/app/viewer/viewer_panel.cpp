@@ -6,12 +6,15 @@
 #include <optional>
 #include <span>
 
+#include "app/viewer/viewer_denoiser.h"
+
 namespace candela {
 
 namespace {
 
 const ImVec4 kErrorColour{1.0f, 0.45f, 0.4f, 1.0f};
 const ImVec4 kOkColour{0.55f, 0.9f, 0.55f, 1.0f};
+constexpr float kDenoiserComboWidth = 120.0f;
 
 bool sliderUint(const char* label, uint32_t& value, int lo, int hi) {
   int v = int(value);
@@ -86,9 +89,13 @@ void drawPost(PostSettings& post) {
   if (ImGui::Combo("Tone mapper", &mapper, "ACES filmic\0Clamp\0Reinhard\0")) post.display.toneMapper = ToneMapper(mapper);
   ImGui::SliderFloat("Exposure", &post.display.exposure, -10.0f, 10.0f, "%.2f stops");
   // One row, so that the panel still fits a short window.
-  ImGui::Checkbox("A-trous", &post.atrous);
+  int denoiser = int(post.denoiser);
+  ImGui::SetNextItemWidth(kDenoiserComboWidth);
+  const char* const choices = ViewerDenoiser::optixInThisBuild() ? "No denoiser\0A-trous\0OptiX AI\0"
+                                                                 : "No denoiser\0A-trous\0";
+  if (ImGui::Combo("##denoiser", &denoiser, choices)) post.denoiser = DenoiserChoice(denoiser);
   ImGui::SameLine();
-  ImGui::BeginDisabled(!post.atrous);
+  ImGui::BeginDisabled(post.denoiser != DenoiserChoice::Atrous);
   ImGui::SliderInt("Passes", &post.atrousParams.passes, 1, kMaxAtrousPasses, "%d", ImGuiSliderFlags_AlwaysClamp);
   ImGui::EndDisabled();
   ImGui::Checkbox("Bilateral filter", &post.bilateral);

@@ -6,10 +6,12 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "backends/optix/device_buffer.h"
 #include "backends/optix/optix_context.h"
 #include "backends/optix/optix_error.h"
+#include "image/filters/atrous_kernel.h"
 
 namespace candela {
 
@@ -56,66 +58,112 @@ void requireSameSize(const Image* guide, const Image& beauty, const char* name) 
     throw std::invalid_argument(std::string("the denoiser's ") + name + " guide differs in size from the image");
 }
 
+// A guide the denoiser was made for must be given, the size of the image; one it was not made for must not.
+void checkGuide(const Image* guide, bool expected, const Image& beauty, const char* name) {
+  if (bool(guide) != expected)
+    throw std::invalid_argument(std::string("the denoiser was made ") + (expected ? "with" : "without") + " the " +
+                                name + " guide");
+  requireSameSize(guide, beauty, name);
+}
+
 }  // namespace
 
-Image denoiseWithOptix(const Image& beauty, const DenoiserGuides& guides) {
-  requireSameSize(guides.albedo, beauty, "albedo");
-  requireSameSize(guides.normal, beauty, "normal");
-  const uint32_t width = beauty.width, height = beauty.height;
+struct OptixImageDenoiser::State {
+  explicit State(DenoiserGuideKinds guideKinds) : kinds(guideKinds), denoiser(context.get(), options(guideKinds)) {}
+
+  static OptixDenoiserOptions options(DenoiserGuideKinds kinds) {
+    OptixDenoiserOptions options{};
+    options.guideAlbedo = kinds.albedo ? 1u : 0u;
+    options.guideNormal = kinds.normal ? 1u : 0u;
+    options.denoiseAlpha = OPTIX_DENOISER_ALPHA_MODE_COPY;
+    return options;
+  }
+
+  // Memory and set-up for images of this size, unless the last image had it.
+  void prepare(uint32_t newWidth, uint32_t newHeight) {
+    if (newWidth == width && newHeight == height) return;
+    width = height = 0;  // until set-up has succeeded
+    OptixDenoiserSizes sizes{};
+    checkDenoiser(optixDenoiserComputeMemoryResources(denoiser.get(), newWidth, newHeight, &sizes),
+                  "sizing the denoiser's memory");
+    state = DeviceBuffer(sizes.stateSizeInBytes, "the denoiser's state");
+    scratch = DeviceBuffer(std::max({sizes.withoutOverlapScratchSizeInBytes, sizes.computeIntensitySizeInBytes,
+                                     sizes.computeAverageColorSizeInBytes}),
+                           "the denoiser's scratch memory");
+    checkDenoiser(optixDenoiserSetup(denoiser.get(), context.stream(), newWidth, newHeight, state.address(),
+                                     state.size(), scratch.address(), scratch.size()),
+                  "setting the denoiser up");
+    const size_t bytes = size_t(newWidth) * newHeight * sizeof(Vec3);
+    input = DeviceBuffer(bytes, "the image to denoise");
+    output = DeviceBuffer(bytes, "the denoised image");
+    albedo = kinds.albedo ? DeviceBuffer(bytes, "the albedo guide") : DeviceBuffer();
+    normal = kinds.normal ? DeviceBuffer(bytes, "the normal guide") : DeviceBuffer();
+    width = newWidth;
+    height = newHeight;
+  }
+
+  DenoiserGuideKinds kinds;
   OptixContext context;
-  cudaStream_t stream = context.stream();
+  DenoiserHandle denoiser;
+  uint32_t width = 0, height = 0;
+  DeviceBuffer state, scratch, input, output, albedo, normal;
+  DeviceBuffer intensity{sizeof(float), "the denoiser's intensity"};
+  DeviceBuffer averageColor{3 * sizeof(float), "the denoiser's average colour"};
+};
 
-  OptixDenoiserOptions options{};
-  options.guideAlbedo = guides.albedo ? 1u : 0u;
-  options.guideNormal = guides.normal ? 1u : 0u;
-  options.denoiseAlpha = OPTIX_DENOISER_ALPHA_MODE_COPY;
-  DenoiserHandle denoiser(context.get(), options);
+OptixImageDenoiser::OptixImageDenoiser(DenoiserGuideKinds kinds) : state_(std::make_unique<State>(kinds)) {}
 
-  OptixDenoiserSizes sizes{};
-  checkDenoiser(optixDenoiserComputeMemoryResources(denoiser.get(), width, height, &sizes),
-                "sizing the denoiser's memory");
-  DeviceBuffer state(sizes.stateSizeInBytes, "the denoiser's state");
-  DeviceBuffer scratch(std::max({sizes.withoutOverlapScratchSizeInBytes, sizes.computeIntensitySizeInBytes,
-                                 sizes.computeAverageColorSizeInBytes}),
-                       "the denoiser's scratch memory");
-  checkDenoiser(optixDenoiserSetup(denoiser.get(), stream, width, height, state.address(), state.size(),
-                                   scratch.address(), scratch.size()),
-                "setting the denoiser up");
+OptixImageDenoiser::~OptixImageDenoiser() = default;
 
-  DeviceBuffer input = DeviceBuffer::fromVector(beauty.pixels, "the image to denoise");
-  DeviceBuffer output(input.size(), "the denoised image");
-  DeviceBuffer albedo = guides.albedo ? DeviceBuffer::fromVector(guides.albedo->pixels, "the albedo guide")
-                                      : DeviceBuffer();
-  DeviceBuffer normal = guides.normal ? DeviceBuffer::fromVector(guides.normal->pixels, "the normal guide")
-                                      : DeviceBuffer();
-  DeviceBuffer intensity(sizeof(float), "the denoiser's intensity");
-  DeviceBuffer averageColor(3 * sizeof(float), "the denoiser's average colour");
+Image OptixImageDenoiser::denoise(const Image& beauty, const DenoiserGuides& guides) {
+  State& s = *state_;
+  checkGuide(guides.albedo, s.kinds.albedo, beauty, "albedo");
+  checkGuide(guides.normal, s.kinds.normal, beauty, "normal");
+  const uint32_t width = beauty.width, height = beauty.height;
+  s.prepare(width, height);
+  const size_t bytes = s.input.size();
+  s.input.upload(beauty.pixels.data(), bytes);
+  if (guides.albedo) s.albedo.upload(guides.albedo->pixels.data(), bytes);
+  if (guides.normal) {
+    std::vector<Vec3> unit(guides.normal->pixels.size());
+    std::transform(guides.normal->pixels.begin(), guides.normal->pixels.end(), unit.begin(), unitOrZero);
+    s.normal.upload(unit.data(), bytes);
+  }
 
   OptixDenoiserLayer layer{};
-  layer.input = float3Image(input, width, height);
-  layer.output = float3Image(output, width, height);
+  layer.input = float3Image(s.input, width, height);
+  layer.output = float3Image(s.output, width, height);
   OptixDenoiserGuideLayer guideLayer{};
-  if (guides.albedo) guideLayer.albedo = float3Image(albedo, width, height);
-  if (guides.normal) guideLayer.normal = float3Image(normal, width, height);
+  if (guides.albedo) guideLayer.albedo = float3Image(s.albedo, width, height);
+  if (guides.normal) guideLayer.normal = float3Image(s.normal, width, height);
 
-  checkDenoiser(optixDenoiserComputeIntensity(denoiser.get(), stream, &layer.input, intensity.address(),
-                                              scratch.address(), scratch.size()),
+  cudaStream_t stream = s.context.stream();
+  checkDenoiser(optixDenoiserComputeIntensity(s.denoiser.get(), stream, &layer.input, s.intensity.address(),
+                                              s.scratch.address(), s.scratch.size()),
                 "measuring the image's intensity");
-  checkDenoiser(optixDenoiserComputeAverageColor(denoiser.get(), stream, &layer.input, averageColor.address(),
-                                                 scratch.address(), scratch.size()),
+  checkDenoiser(optixDenoiserComputeAverageColor(s.denoiser.get(), stream, &layer.input, s.averageColor.address(),
+                                                 s.scratch.address(), s.scratch.size()),
                 "measuring the image's average colour");
   OptixDenoiserParams params{};
-  params.hdrIntensity = intensity.address();
-  params.hdrAverageColor = averageColor.address();
+  params.hdrIntensity = s.intensity.address();
+  params.hdrAverageColor = s.averageColor.address();
   params.blendFactor = 0.0f;
-  checkDenoiser(optixDenoiserInvoke(denoiser.get(), stream, &params, state.address(), state.size(), &guideLayer,
-                                    &layer, 1, 0, 0, scratch.address(), scratch.size()),
+  checkDenoiser(optixDenoiserInvoke(s.denoiser.get(), stream, &params, s.state.address(), s.state.size(),
+                                    &guideLayer, &layer, 1, 0, 0, s.scratch.address(), s.scratch.size()),
                 "denoising");
   checkCuda(cudaStreamSynchronize(stream), "denoising");
 
   Image result(width, height);
-  output.download(result.pixels.data(), output.size());
+  s.output.download(result.pixels.data(), bytes);
   return result;
+}
+
+Image denoiseWithOptix(const Image& beauty, const DenoiserGuides& guides) {
+  // Before the GPU is asked for anything, so that a wrong call says so even where the denoiser cannot run.
+  requireSameSize(guides.albedo, beauty, "albedo");
+  requireSameSize(guides.normal, beauty, "normal");
+  OptixImageDenoiser denoiser({guides.albedo != nullptr, guides.normal != nullptr});
+  return denoiser.denoise(beauty, guides);
 }
 
 }  // namespace candela

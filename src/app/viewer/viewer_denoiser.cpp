@@ -1,0 +1,44 @@
+#include "app/viewer/viewer_denoiser.h"
+
+#include <memory>
+#include <stdexcept>
+
+#if CANDELA_HAS_OPTIX
+#include "backends/optix/optix_denoiser.h"
+#endif
+
+namespace candela {
+
+bool ViewerDenoiser::optixInThisBuild() {
+#if CANDELA_HAS_OPTIX
+  return true;
+#else
+  return false;
+#endif
+}
+
+void ViewerDenoiser::prepareOptix() {
+  if (optix_) return;
+#if CANDELA_HAS_OPTIX
+  auto denoiser = std::make_shared<OptixImageDenoiser>(DenoiserGuideKinds{true, true});
+  optix_ = [denoiser](const Image& beauty, const AovImages& aovs) {
+    return denoiser->denoise(beauty, {&aovs.albedo, &aovs.normal});
+  };
+#else
+  throw std::runtime_error("the OptiX AI denoiser comes with the OptiX backend, which is not in this build (see "
+                           "README, 'GPU backend')");
+#endif
+}
+
+Image ViewerDenoiser::apply(const RenderSession& session, DenoiserChoice choice, const AtrousParams& atrousParams) {
+  switch (choice) {
+    case DenoiserChoice::None: return session.image();
+    case DenoiserChoice::Atrous: return session.atrousImage(atrousParams);
+    case DenoiserChoice::Optix:
+      if (!optix_) throw std::logic_error("the OptiX AI denoiser was not prepared");
+      return optix_(session.image(), session.backend().readAovs());
+  }
+  throw std::logic_error("unknown denoiser");
+}
+
+}  // namespace candela
