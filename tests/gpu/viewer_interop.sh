@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # viewer_interop.sh <candela> <image_compare> <output dir>: the OptiX viewer's two ways to the screen on a machine
 # with an NVIDIA GPU and an X display whose OpenGL runs on that GPU (Xvfb with NVIDIA's client GLX,
-# __GLX_VENDOR_LIBRARY_NAME=nvidia; that library loads libxcb-glx.so.0 at run time and, without it, lists no
-# FBConfig). `candela view` runs twice with the same scene, seed and frames, once through
+# __GLX_VENDOR_LIBRARY_NAME=nvidia; that library loads libX11-xcb, libxcb-glx, -dri3, -present, -randr, -sync and
+# -xfixes at run time and, where one is missing, lists no FBConfig). `candela view` runs twice with the same scene, seed and frames, once through
 # CUDA-OpenGL interop and once through the host copy (--no-interop), and a headless `candela render` of the same
 # scene and samples runs with another seed. Checks, each printed as PASS or FAIL:
 #   - each run took the path it was asked for;
