@@ -143,6 +143,9 @@ int runBench(const RenderJob& job) {
       {"invalid_samples", outcome.stats.invalidSamples},
       {"warmup_frames", job.warmupFrames},
       {"median_ms_per_frame", median(outcome.frameMilliseconds)},
+      {"load_seconds", outcome.loadSeconds},
+      {"backend_start_seconds", outcome.backendStartSeconds},
+      {"first_frame_seconds", outcome.firstFrameSeconds},
   };
   // GPU backends time every launch with device events: frame rate and throughput from the median launch.
   if (!outcome.deviceFrameMilliseconds.empty()) {

@@ -16,6 +16,10 @@ namespace candela {
 
 namespace {
 
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 // Only the optix backend has a raw-trace mode; runRenderJob checks that before rendering.
 void timeRawTrace([[maybe_unused]] Backend& backend, [[maybe_unused]] const RenderJob& job,
                   [[maybe_unused]] RenderOutcome& outcome) {
@@ -62,7 +66,9 @@ RenderOutcome runRenderJob(const RenderJob& job, bool showProgress) {
     throw std::runtime_error("--denoise optix needs the OptiX backend, which is not in this build (see README, "
                              "'GPU backend')");
 #endif
+  const auto loadStart = std::chrono::steady_clock::now();
   Scene scene = loadScene(job.sceneSpec, {job.environmentPath, job.sceneCache});
+  const double loadSeconds = secondsSince(loadStart);
   applyOverrides(scene.materials, job.materialOverrides);
   RenderJob hinted = job;
   const RenderHints& hints = scene.renderHints;
@@ -70,28 +76,39 @@ RenderOutcome runRenderJob(const RenderJob& job, bool showProgress) {
   if (hints.height && !job.given.height) hinted.settings.height = *hints.height;
   if (hints.samplesPerPixel && !job.given.samplesPerPixel) hinted.samplesPerPixel = *hints.samplesPerPixel;
   if (hints.maxDepth && !job.given.maxDepth) hinted.settings.maxDepth = *hints.maxDepth;
-  return renderLoadedScene(hinted, scene, showProgress);
+  RenderOutcome outcome = renderLoadedScene(hinted, scene, showProgress);
+  outcome.loadSeconds = loadSeconds;
+  return outcome;
 }
 
 RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool showProgress) {
+  using Clock = std::chrono::steady_clock;
+  RenderOutcome outcome;
+  const auto backendStart = Clock::now();
   std::string why;
   std::unique_ptr<Backend> backend = createBackend(job.backend, why);
+  outcome.backendStartSeconds = secondsSince(backendStart);
   std::fprintf(stderr, "%s\n", why.c_str());
   if (job.rawTrace && backend->name() != "optix")
     throw std::runtime_error("the raw-trace mode needs the optix backend, not " + backend->name());
+  const auto setupStart = Clock::now();
   backend->setScene(scene);
   backend->setSettings(job.settings);
   backend->setAovsEnabled(needsAovs(job));
   backend->setCamera(scene.camera.toCamera(float(job.settings.width) / float(job.settings.height)));
+  // render() returns when its launch has finished, on either backend.
+  auto renderFrame = [&] {
+    FrameStats frame = backend->render(1);
+    if (outcome.firstFrameSeconds == 0.0) outcome.firstFrameSeconds = secondsSince(setupStart);
+    return frame;
+  };
 
-  RenderOutcome outcome;
-  for (uint32_t w = 0; w < job.warmupFrames; ++w) backend->render(1);
+  for (uint32_t w = 0; w < job.warmupFrames; ++w) renderFrame();
   ProgressReporter progress("rendering", job.samplesPerPixel);
-  using Clock = std::chrono::steady_clock;
   auto start = Clock::now();
   for (uint32_t s = 0; s < job.samplesPerPixel; ++s) {
     auto frameStart = Clock::now();
-    FrameStats frame = backend->render(1);
+    FrameStats frame = renderFrame();
     outcome.frameMilliseconds.push_back(std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count());
     if (frame.deviceMilliseconds > 0.0) outcome.deviceFrameMilliseconds.push_back(frame.deviceMilliseconds);
     outcome.stats.rays += frame.rays;

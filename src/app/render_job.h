@@ -35,6 +35,11 @@ struct RenderOutcome {
   AovImages aovs;  // when RenderJob::aovs is not empty
   FrameStats stats;
   double seconds = 0.0;  // rendering only: scene loading and acceleration-structure builds excluded
+  // Until the first image: reading the scene (runRenderJob only), starting the backend (device and programs),
+  // and from handing it the scene to the end of its first launch (acceleration structures, uploads).
+  double loadSeconds = 0.0;
+  double backendStartSeconds = 0.0;
+  double firstFrameSeconds = 0.0;
   std::string backendName;
   std::string deviceName;
   std::string sceneName;

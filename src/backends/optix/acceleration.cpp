@@ -22,6 +22,11 @@ const unsigned int kGeometryFlags[kGeometrySbtRecords] = {
     OPTIX_GEOMETRY_FLAG_DISABLE_ANYHIT | OPTIX_GEOMETRY_FLAG_DISABLE_TRIANGLE_FACE_CULLING,
     OPTIX_GEOMETRY_FLAG_DISABLE_TRIANGLE_FACE_CULLING, OPTIX_GEOMETRY_FLAG_DISABLE_ANYHIT, OPTIX_GEOMETRY_FLAG_NONE};
 
+size_t alignedSize(size_t bytes) {
+  return (bytes + OPTIX_ACCEL_BUFFER_BYTE_ALIGNMENT - 1) / OPTIX_ACCEL_BUFFER_BYTE_ALIGNMENT *
+         OPTIX_ACCEL_BUFFER_BYTE_ALIGNMENT;
+}
+
 uint64_t mix(uint64_t hash, uint64_t value) {
   return hash ^ (value + 0x9e3779b97f4a7c15ull + (hash << 6) + (hash >> 2));
 }
@@ -181,41 +186,46 @@ void AccelerationStructures::buildMeshes(OptixDeviceContext context, cudaStream_
   options.buildFlags = OPTIX_BUILD_FLAG_PREFER_FAST_TRACE | OPTIX_BUILD_FLAG_ALLOW_COMPACTION;
   options.operation = OPTIX_BUILD_OPERATION_BUILD;
 
-  // Sizes first, so that one scratch buffer serves every build on the stream.
+  // Sizes first, so that one scratch buffer serves every build on the stream, and one allocation holds every
+  // GAS before compaction and one every GAS after: scenes have tens of thousands of meshes, and a cudaMalloc and
+  // cudaFree per GAS took seconds for them.
   std::vector<OptixAccelBufferSizes> sizes(count);
-  size_t scratchBytes = 0;
+  std::vector<size_t> offsets(count);
+  size_t scratchBytes = 0, uncompactedBytes = 0;
   for (size_t b = 0; b < count; ++b) {
     checkOptix(optixAccelComputeMemoryUsage(context, &options, &inputs[b], 1, &sizes[b]),
                "sizing a mesh acceleration structure");
     scratchBytes = std::max(scratchBytes, sizes[b].tempSizeInBytes);
+    offsets[b] = uncompactedBytes;
+    uncompactedBytes += alignedSize(sizes[b].outputSizeInBytes);
   }
   DeviceBuffer scratch(scratchBytes, "acceleration-structure build scratch memory");
+  DeviceBuffer uncompacted(uncompactedBytes, "the mesh acceleration structures before compaction");
   DeviceBuffer compactedSizes(count * sizeof(uint64_t), "compacted sizes");
 
-  std::vector<DeviceBuffer> uncompacted(count);
   std::vector<OptixTraversableHandle> handles(count, 0);
   for (size_t b = 0; b < count; ++b) {
-    uncompacted[b] = DeviceBuffer(sizes[b].outputSizeInBytes, "a mesh acceleration structure");
     OptixAccelEmitDesc emit{};
     emit.type = OPTIX_PROPERTY_TYPE_COMPACTED_SIZE;
     emit.result = compactedSizes.address() + b * sizeof(uint64_t);
     checkOptix(optixAccelBuild(context, stream, &options, &inputs[b], 1, scratch.address(), scratch.size(),
-                               uncompacted[b].address(), uncompacted[b].size(), &handles[b], &emit, 1),
+                               uncompacted.address() + offsets[b], sizes[b].outputSizeInBytes, &handles[b], &emit, 1),
                "building a mesh acceleration structure");
   }
   checkCuda(cudaStreamSynchronize(stream), "building the mesh acceleration structures");
 
-  std::vector<uint64_t> compacted(count);
-  compactedSizes.download(compacted.data(), count * sizeof(uint64_t));
+  std::vector<uint64_t> compactedSize(count);
+  compactedSizes.download(compactedSize.data(), count * sizeof(uint64_t));
+  size_t compactedBytes = 0;
+  for (size_t b = 0; b < count; ++b) {
+    offsets[b] = compactedBytes;
+    compactedBytes += alignedSize(compactedSize[b]);
+  }
+  auto compacted = std::make_shared<DeviceBuffer>(compactedBytes, "the mesh acceleration structures");
   for (size_t b = 0; b < count; ++b) {
     MeshStructure& s = meshes[toBuild[b]];
-    if (compacted[b] >= uncompacted[b].size()) {
-      s.structure = std::make_shared<DeviceBuffer>(std::move(uncompacted[b]));
-      s.handle = handles[b];
-      continue;
-    }
-    s.structure = std::make_shared<DeviceBuffer>(compacted[b], "a compacted mesh acceleration structure");
-    checkOptix(optixAccelCompact(context, stream, handles[b], s.structure->address(), s.structure->size(),
+    s.structure = compacted;
+    checkOptix(optixAccelCompact(context, stream, handles[b], compacted->address() + offsets[b], compactedSize[b],
                                  &s.handle),
                "compacting a mesh acceleration structure");
   }

@@ -39,7 +39,9 @@ class AccelerationStructures {
     uint32_t meshIndex = 0;  // in the scene of the update that made or last kept it
     uint64_t key = 0;        // meshKey: tells most different meshes apart cheaply
     std::vector<uint8_t> sbtIndices;  // per triangle (materialSbtIndex); empty where all are 0
-    std::shared_ptr<DeviceBuffer> structure;  // null for meshes without triangles
+    // The allocation that holds the GAS, with those of the meshes built in the same update; it lives while one
+    // of them is kept. Null for meshes without triangles.
+    std::shared_ptr<DeviceBuffer> structure;
     OptixTraversableHandle handle = 0;
   };
 
