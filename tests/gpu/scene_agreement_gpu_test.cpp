@@ -2,7 +2,11 @@
 // environment maps must agree (see expectRendersAgree): the GPU runs the same kernel on its own traversal.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "app/scene_loading.h"
 #include "gpu_render.h"
@@ -17,6 +21,46 @@ constexpr uint32_t kBatches = 32;
 constexpr uint32_t kSamplesPerBatch = 32;
 constexpr uint32_t kBlock = 4;
 constexpr double kAlpha = 0.01;
+
+// `scene` with every instance's mesh cut into meshes of at most `triangles` triangles, each keeping only the
+// vertices it uses and having that instance alone. Each instance's pieces are moved in object space by an
+// offset of their own, which the instance's transform takes back, so that no two pieces are equal meshes.
+Scene splitIntoMeshes(const Scene& scene, size_t triangles) {
+  Scene split = scene;
+  split.meshes.clear();
+  split.instances.clear();
+  for (size_t i = 0; i < scene.instances.size(); ++i) {
+    Instance instance = scene.instances[i];
+    const Vec3 offset{0.5f * float(i + 1), 0.25f, 0.0f};
+    const Vec3 shift = instance.objectToWorld.vector(offset);
+    instance.objectToWorld.m[3] -= shift.x;
+    instance.objectToWorld.m[7] -= shift.y;
+    instance.objectToWorld.m[11] -= shift.z;
+    const Mesh& mesh = scene.meshes[instance.meshId];
+    for (size_t first = 0; first < mesh.triangleCount(); first += triangles) {
+      Mesh piece;
+      piece.name = mesh.name + " piece " + std::to_string(first / triangles);
+      std::vector<uint32_t> remap(mesh.positions.size(), UINT32_MAX);
+      for (size_t t = first; t < std::min(first + triangles, mesh.triangleCount()); ++t) {
+        piece.triangleMaterials.push_back(mesh.triangleMaterials[t]);
+        for (size_t k = 0; k < 3; ++k) {
+          const uint32_t v = mesh.indices[3 * t + k];
+          if (remap[v] == UINT32_MAX) {
+            remap[v] = uint32_t(piece.positions.size());
+            piece.positions.push_back(mesh.positions[v] + offset);
+            if (!mesh.normals.empty()) piece.normals.push_back(mesh.normals[v]);
+            if (!mesh.uvs.empty()) piece.uvs.push_back(mesh.uvs[v]);
+            if (!mesh.tangents.empty()) piece.tangents.push_back(mesh.tangents[v]);
+          }
+          piece.indices.push_back(remap[v]);
+        }
+      }
+      split.instances.push_back({uint32_t(split.meshes.size()), instance.objectToWorld});
+      split.meshes.push_back(std::move(piece));
+    }
+  }
+  return split;
+}
 
 void expectBackendsAgree(const Scene& scene, uint32_t seed) {
   test::PixelStatistics cpu = test::batchStatistics<CpuBackend>(scene, test::squareImage(kSize, seed), kBatches,
@@ -37,6 +81,17 @@ TEST(GpuMirrorCorridor, AgreesWithTheCpuBackend) { expectBackendsAgree(makeMirro
 TEST(GpuCutoutScreen, AgreesWithTheCpuBackend) {
   expectBackendsAgree(test::makeCutoutScreen(test::ScreenCoverage::CheckerMask), 71);
   expectBackendsAgree(test::makeCutoutScreen(test::ScreenCoverage::HalfBlend), 81);
+}
+
+// Scenes of many meshes have them built many to a GAS, in world space (acceleration.cpp): the Cornell spheres
+// cut into about 5,000 meshes of one instance each (several batches, and both spheres' transforms) must render
+// as the CPU backend renders them.
+TEST(GpuManyMeshes, AgreesWithTheCpuBackend) {
+  const Scene split = splitIntoMeshes(makeCornellSpheres(), 64);
+  ASSERT_GT(split.meshes.size(), 4000u);
+  auto backend = test::makeBackend<OptixBackend>(split, test::squareImage(kSize, 1));
+  EXPECT_GT(backend->accelerationStatistics().batchedMeshes, 4000u);
+  expectBackendsAgree(split, 91);
 }
 
 // Textured glTF materials with a normal map, lit by an importance-sampled environment map.

@@ -4,9 +4,11 @@
 #include <optix_stubs.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <unordered_map>
 #include <unordered_set>
+#include <utility>
 
 #include "backends/optix/launch_params.h"
 #include "backends/optix/optix_error.h"
@@ -21,6 +23,30 @@ namespace {
 const unsigned int kGeometryFlags[kGeometrySbtRecords] = {
     OPTIX_GEOMETRY_FLAG_DISABLE_ANYHIT | OPTIX_GEOMETRY_FLAG_DISABLE_TRIANGLE_FACE_CULLING,
     OPTIX_GEOMETRY_FLAG_DISABLE_TRIANGLE_FACE_CULLING, OPTIX_GEOMETRY_FLAG_DISABLE_ANYHIT, OPTIX_GEOMETRY_FLAG_NONE};
+
+// Below this many meshes to build, each gets a GAS of its own.
+constexpr size_t kMinMeshesToBatch = 256;
+
+Vec3 lower(Vec3 a, Vec3 b) { return {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)}; }
+Vec3 upper(Vec3 a, Vec3 b) { return {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)}; }
+
+// The 63-bit Morton code of `p` on a 2^21 grid over the box [lo, hi].
+uint64_t mortonCode(Vec3 p, Vec3 lo, Vec3 hi) {
+  auto spread = [](uint64_t x) {  // the 21 bits of x, two zero bits after each
+    x &= 0x1fffff;
+    x = (x | x << 32) & 0x1f00000000ffffull;
+    x = (x | x << 16) & 0x1f0000ff0000ffull;
+    x = (x | x << 8) & 0x100f00f00f00f00full;
+    x = (x | x << 4) & 0x10c30c30c30c30c3ull;
+    x = (x | x << 2) & 0x1249249249249249ull;
+    return x;
+  };
+  auto cell = [](float v, float a, float b) {
+    const float t = b > a ? (v - a) / (b - a) : 0.0f;
+    return uint64_t(std::clamp(t, 0.0f, 1.0f) * float((1u << 21) - 1));
+  };
+  return spread(cell(p.x, lo.x, hi.x)) << 2 | spread(cell(p.y, lo.y, hi.y)) << 1 | spread(cell(p.z, lo.z, hi.z));
+}
 
 size_t alignedSize(size_t bytes) {
   return (bytes + OPTIX_ACCEL_BUFFER_BYTE_ALIGNMENT - 1) / OPTIX_ACCEL_BUFFER_BYTE_ALIGNMENT *
@@ -81,10 +107,11 @@ void AccelerationStructures::update(OptixDeviceContext context, cudaStream_t str
                                     const FlatScene& flat, const SceneView& device) {
   std::unordered_multimap<uint64_t, size_t> previousByKey;
   if (previous)
-    for (size_t i = 0; i < meshes_.size(); ++i) previousByKey.emplace(meshes_[i].key, i);
+    for (size_t i = 0; i < meshes_.size(); ++i)
+      if (meshes_[i].batch < 0) previousByKey.emplace(meshes_[i].key, i);
 
   std::vector<MeshStructure> meshes(flat.meshes.size());
-  std::vector<size_t> toBuild;
+  std::vector<uint32_t> toBuild;
   std::unordered_multimap<uint64_t, uint32_t> earlierByKey;  // meshes of this update that own a GAS
   std::vector<std::pair<uint32_t, uint32_t>> sharing;        // a mesh, and the earlier one it equals
   for (uint32_t m = 0; m < flat.meshes.size(); ++m) {
@@ -113,25 +140,38 @@ void AccelerationStructures::update(OptixDeviceContext context, cudaStream_t str
     }
     earlierByKey.emplace(s.key, m);
   }
-  buildMeshes(context, stream, flat, device, meshes, toBuild);
+  std::vector<Batch> batches;
+  buildMeshes(context, stream, flat, device, meshes, groupForBuilding(flat, meshes, toBuild, sharing), batches);
   for (auto [m, earlierMesh] : sharing) {
     meshes[m].structure = meshes[earlierMesh].structure;
     meshes[m].handle = meshes[earlierMesh].handle;
   }
 
   std::vector<OptixInstance> instances;
-  for (size_t i = 0; i < flat.instances.size(); ++i) {
-    const InstanceRecord& record = flat.instances[i];
-    if (meshes[record.meshId].handle == 0) continue;  // nothing to hit
+  auto addInstance = [&](const float (&transform)[12], uint32_t id, OptixTraversableHandle handle) {
     OptixInstance instance{};
-    std::memcpy(instance.transform, record.objectToWorld.m, sizeof instance.transform);
-    instance.instanceId = uint32_t(i);
+    std::memcpy(instance.transform, transform, sizeof instance.transform);
+    instance.instanceId = id;
     instance.sbtOffset = 0;
     instance.visibilityMask = 0xFF;
     instance.flags = OPTIX_INSTANCE_FLAG_NONE;
-    instance.traversableHandle = meshes[record.meshId].handle;
+    instance.traversableHandle = handle;
     instances.push_back(instance);
+  };
+  for (size_t i = 0; i < flat.instances.size(); ++i) {
+    const InstanceRecord& record = flat.instances[i];
+    // Batched meshes are reached through their batch; meshes without triangles have nothing to hit.
+    if (meshes[record.meshId].batch >= 0 || meshes[record.meshId].handle == 0) continue;
+    addInstance(record.objectToWorld.m, uint32_t(i), meshes[record.meshId].handle);
   }
+  firstBatchId_ = uint32_t(flat.instances.size());
+  const float identity[12] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
+  std::vector<uint32_t> batchInstances(batches.size() * kMaxBatchInputs, 0);
+  for (size_t b = 0; b < batches.size(); ++b) {
+    addInstance(identity, firstBatchId_ + uint32_t(b), batches[b].handle);
+    std::copy(batches[b].instances.begin(), batches[b].instances.end(), batchInstances.begin() + b * kMaxBatchInputs);
+  }
+  batchInstances_ = DeviceBuffer::fromVector(batchInstances, "the instances of batched meshes");
   // A GAS built now has a new handle (the GASes it could share an address with are still alive), so an
   // unchanged list means an unchanged IAS.
   const bool instancesChanged =
@@ -139,77 +179,168 @@ void AccelerationStructures::update(OptixDeviceContext context, cudaStream_t str
       std::memcmp(instances.data(), instanceList_.data(), instances.size() * sizeof(OptixInstance)) != 0;
   if (instancesChanged) buildInstances(context, stream, instances);
   meshes_ = std::move(meshes);
+  batches_ = std::move(batches);
   instanceList_ = std::move(instances);
   statistics_.meshBuilds += toBuild.size();
+  for (const Batch& batch : batches_) statistics_.batchedMeshes += batch.instances.size();
   if (instancesChanged) ++statistics_.instanceBuilds;
+}
+
+std::vector<AccelerationStructures::BuildGroup> AccelerationStructures::groupForBuilding(
+    const FlatScene& flat, const std::vector<MeshStructure>& meshes, const std::vector<uint32_t>& toBuild,
+    const std::vector<std::pair<uint32_t, uint32_t>>& sharing) const {
+  std::vector<BuildGroup> groups;
+  std::vector<uint32_t> instanceCount(flat.meshes.size(), 0);
+  for (const InstanceRecord& record : flat.instances) ++instanceCount[record.meshId];
+  std::vector<bool> sharedWith(flat.meshes.size(), false);  // a mesh whose GAS a later mesh takes
+  for (auto [m, earlierMesh] : sharing) sharedWith[earlierMesh] = true;
+  std::vector<uint32_t> instanceOf(flat.meshes.size(), 0);
+  for (uint32_t i = 0; i < flat.instances.size(); ++i) instanceOf[flat.instances[i].meshId] = i;
+  // A batch's triangles share one SBT index (geometry flags); culling, where the flags ask for it, is decided by
+  // the winding in world space, which a mirroring transform turns over.
+  auto batchClass = [&](uint32_t m) -> int {
+    const std::vector<uint8_t>& sbt = meshes[m].sbtIndices;
+    if (instanceCount[m] != 1 || sharedWith[m]) return -1;
+    if (!std::all_of(sbt.begin(), sbt.end(), [&](uint8_t i) { return i == sbt[0]; })) return -1;
+    const int sbtIndex = sbt.empty() ? 0 : sbt[0];
+    const float* t = flat.instances[instanceOf[m]].objectToWorld.m;
+    const float determinant = t[0] * (t[5] * t[10] - t[6] * t[9]) - t[1] * (t[4] * t[10] - t[6] * t[8]) +
+                              t[2] * (t[4] * t[9] - t[5] * t[8]);
+    if ((sbtIndex & 2) && !(determinant > 0.0f)) return -1;
+    return sbtIndex;
+  };
+  const bool batching = toBuild.size() >= kMinMeshesToBatch;
+  std::vector<std::vector<uint32_t>> batchable(kGeometrySbtRecords);  // per SBT index
+  for (uint32_t m : toBuild) {
+    const int sbtIndex = batching ? batchClass(m) : -1;
+    if (sbtIndex < 0)
+      groups.push_back({{m}, false});
+    else
+      batchable[size_t(sbtIndex)].push_back(m);
+  }
+  // Batches of meshes near each other, so that the batches' boxes overlap little in the IAS: the meshes in the
+  // Morton order of their world-space centres.
+  std::vector<Vec3> centre(flat.meshes.size());
+  Vec3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+  for (const std::vector<uint32_t>& list : batchable)
+    for (uint32_t m : list) {
+      const MeshRecord& mesh = flat.meshes[m];
+      Vec3 meshLo{INFINITY, INFINITY, INFINITY}, meshHi{-INFINITY, -INFINITY, -INFINITY};
+      for (uint32_t v = 0; v < mesh.vertexCount; ++v) {
+        meshLo = lower(meshLo, flat.positions[mesh.firstVertex + v]);
+        meshHi = upper(meshHi, flat.positions[mesh.firstVertex + v]);
+      }
+      centre[m] = flat.instances[instanceOf[m]].objectToWorld.point(0.5f * (meshLo + meshHi));
+      lo = lower(lo, centre[m]);
+      hi = upper(hi, centre[m]);
+    }
+  for (std::vector<uint32_t>& list : batchable) {
+    std::vector<std::pair<uint64_t, uint32_t>> ordered;
+    for (uint32_t m : list) ordered.emplace_back(mortonCode(centre[m], lo, hi), m);
+    std::sort(ordered.begin(), ordered.end());
+    for (size_t first = 0; first < ordered.size(); first += kMaxBatchInputs) {
+      BuildGroup batch{{}, true};
+      for (size_t i = first; i < std::min(first + kMaxBatchInputs, ordered.size()); ++i)
+        batch.meshes.push_back(ordered[i].second);
+      groups.push_back(std::move(batch));
+    }
+  }
+  return groups;
 }
 
 void AccelerationStructures::buildMeshes(OptixDeviceContext context, cudaStream_t stream, const FlatScene& flat,
                                          const SceneView& device, std::vector<MeshStructure>& meshes,
-                                         const std::vector<size_t>& toBuild) {
-  if (toBuild.empty()) return;
-  const size_t count = toBuild.size();
-  std::vector<CUdeviceptr> vertexBuffers(count);
-  std::vector<OptixBuildInput> inputs(count);
-  std::vector<DeviceBuffer> sbtIndexBuffers(count);
-  for (size_t b = 0; b < count; ++b) {
-    const MeshRecord& mesh = flat.meshes[toBuild[b]];
-    const std::vector<uint8_t>& sbt = meshes[toBuild[b]].sbtIndices;
-    vertexBuffers[b] = CUdeviceptr(device.positions + mesh.firstVertex);
-    OptixBuildInput& input = inputs[b];
-    input.type = OPTIX_BUILD_INPUT_TYPE_TRIANGLES;
-    OptixBuildInputTriangleArray& triangles = input.triangleArray;
-    triangles.vertexFormat = OPTIX_VERTEX_FORMAT_FLOAT3;
-    triangles.vertexStrideInBytes = sizeof(Vec3);
-    triangles.numVertices = mesh.vertexCount;
-    triangles.vertexBuffers = &vertexBuffers[b];
-    triangles.indexFormat = OPTIX_INDICES_FORMAT_UNSIGNED_INT3;
-    triangles.indexStrideInBytes = 3 * sizeof(uint32_t);
-    triangles.numIndexTriplets = mesh.triangleCount;
-    triangles.indexBuffer = CUdeviceptr(device.indices + 3 * size_t(mesh.firstTriangle));
-    triangles.numSbtRecords = 1;
-    if (sbt.empty()) {
-      triangles.flags = &kGeometryFlags[0];
-    } else if (std::all_of(sbt.begin(), sbt.end(), [&](uint8_t i) { return i == sbt[0]; })) {
-      triangles.flags = &kGeometryFlags[sbt[0]];
-    } else {
-      sbtIndexBuffers[b] = DeviceBuffer::fromVector(sbt, "a mesh's SBT indices");
-      triangles.flags = kGeometryFlags;
-      triangles.numSbtRecords = kGeometrySbtRecords;
-      triangles.sbtIndexOffsetBuffer = sbtIndexBuffers[b].address();
-      triangles.sbtIndexOffsetSizeInBytes = sizeof(uint8_t);
-      triangles.sbtIndexOffsetStrideInBytes = sizeof(uint8_t);
-    }
+                                         const std::vector<BuildGroup>& groups, std::vector<Batch>& batches) {
+  if (groups.empty()) return;
+  size_t inputCount = 0, batchedCount = 0;
+  for (const BuildGroup& g : groups) {
+    inputCount += g.meshes.size();
+    if (g.batch) batchedCount += g.meshes.size();
   }
+  // A batched mesh is built in world space: its one instance's transform is applied during the build.
+  std::vector<uint32_t> instanceOf(flat.meshes.size(), 0);
+  for (uint32_t i = 0; i < flat.instances.size(); ++i) instanceOf[flat.instances[i].meshId] = i;
+  std::vector<float> transforms;
+  transforms.reserve(batchedCount * 12);
+  for (const BuildGroup& g : groups)
+    if (g.batch)
+      for (uint32_t m : g.meshes)
+        transforms.insert(transforms.end(), std::begin(flat.instances[instanceOf[m]].objectToWorld.m),
+                          std::end(flat.instances[instanceOf[m]].objectToWorld.m));
+  const DeviceBuffer transformBuffer = DeviceBuffer::fromVector(transforms, "the transforms of batched meshes");
+
+  std::vector<CUdeviceptr> vertexBuffers(inputCount);
+  std::vector<OptixBuildInput> inputs(inputCount);
+  std::vector<DeviceBuffer> sbtIndexBuffers(inputCount);
+  size_t next = 0, nextTransform = 0;
+  for (const BuildGroup& g : groups)
+    for (uint32_t m : g.meshes) {
+      const size_t b = next++;
+      const MeshRecord& mesh = flat.meshes[m];
+      const std::vector<uint8_t>& sbt = meshes[m].sbtIndices;
+      vertexBuffers[b] = CUdeviceptr(device.positions + mesh.firstVertex);
+      OptixBuildInput& input = inputs[b];
+      input.type = OPTIX_BUILD_INPUT_TYPE_TRIANGLES;
+      OptixBuildInputTriangleArray& triangles = input.triangleArray;
+      triangles.vertexFormat = OPTIX_VERTEX_FORMAT_FLOAT3;
+      triangles.vertexStrideInBytes = sizeof(Vec3);
+      triangles.numVertices = mesh.vertexCount;
+      triangles.vertexBuffers = &vertexBuffers[b];
+      triangles.indexFormat = OPTIX_INDICES_FORMAT_UNSIGNED_INT3;
+      triangles.indexStrideInBytes = 3 * sizeof(uint32_t);
+      triangles.numIndexTriplets = mesh.triangleCount;
+      triangles.indexBuffer = CUdeviceptr(device.indices + 3 * size_t(mesh.firstTriangle));
+      triangles.numSbtRecords = 1;
+      if (g.batch) {
+        triangles.preTransform = transformBuffer.address() + nextTransform++ * 12 * sizeof(float);
+        triangles.transformFormat = OPTIX_TRANSFORM_FORMAT_MATRIX_FLOAT12;
+      }
+      if (sbt.empty()) {
+        triangles.flags = &kGeometryFlags[0];
+      } else if (std::all_of(sbt.begin(), sbt.end(), [&](uint8_t i) { return i == sbt[0]; })) {
+        triangles.flags = &kGeometryFlags[sbt[0]];
+      } else {
+        sbtIndexBuffers[b] = DeviceBuffer::fromVector(sbt, "a mesh's SBT indices");
+        triangles.flags = kGeometryFlags;
+        triangles.numSbtRecords = kGeometrySbtRecords;
+        triangles.sbtIndexOffsetBuffer = sbtIndexBuffers[b].address();
+        triangles.sbtIndexOffsetSizeInBytes = sizeof(uint8_t);
+        triangles.sbtIndexOffsetStrideInBytes = sizeof(uint8_t);
+      }
+    }
 
   OptixAccelBuildOptions options{};
   options.buildFlags = OPTIX_BUILD_FLAG_PREFER_FAST_TRACE | OPTIX_BUILD_FLAG_ALLOW_COMPACTION;
   options.operation = OPTIX_BUILD_OPERATION_BUILD;
 
   // Sizes first, so that one scratch buffer serves every build on the stream, and one allocation holds every
-  // GAS before compaction and one every GAS after: scenes have tens of thousands of meshes, and a cudaMalloc and
-  // cudaFree per GAS took seconds for them.
+  // GAS before compaction and one every GAS after.
+  const size_t count = groups.size();
+  std::vector<size_t> firstInput(count);
   std::vector<OptixAccelBufferSizes> sizes(count);
   std::vector<size_t> offsets(count);
   size_t scratchBytes = 0, uncompactedBytes = 0;
-  for (size_t b = 0; b < count; ++b) {
-    checkOptix(optixAccelComputeMemoryUsage(context, &options, &inputs[b], 1, &sizes[b]),
+  for (size_t g = 0, input = 0; g < count; input += groups[g].meshes.size(), ++g) {
+    firstInput[g] = input;
+    checkOptix(optixAccelComputeMemoryUsage(context, &options, &inputs[input], uint32_t(groups[g].meshes.size()),
+                                            &sizes[g]),
                "sizing a mesh acceleration structure");
-    scratchBytes = std::max(scratchBytes, sizes[b].tempSizeInBytes);
-    offsets[b] = uncompactedBytes;
-    uncompactedBytes += alignedSize(sizes[b].outputSizeInBytes);
+    scratchBytes = std::max(scratchBytes, sizes[g].tempSizeInBytes);
+    offsets[g] = uncompactedBytes;
+    uncompactedBytes += alignedSize(sizes[g].outputSizeInBytes);
   }
   DeviceBuffer scratch(scratchBytes, "acceleration-structure build scratch memory");
   DeviceBuffer uncompacted(uncompactedBytes, "the mesh acceleration structures before compaction");
   DeviceBuffer compactedSizes(count * sizeof(uint64_t), "compacted sizes");
 
   std::vector<OptixTraversableHandle> handles(count, 0);
-  for (size_t b = 0; b < count; ++b) {
+  for (size_t g = 0; g < count; ++g) {
     OptixAccelEmitDesc emit{};
     emit.type = OPTIX_PROPERTY_TYPE_COMPACTED_SIZE;
-    emit.result = compactedSizes.address() + b * sizeof(uint64_t);
-    checkOptix(optixAccelBuild(context, stream, &options, &inputs[b], 1, scratch.address(), scratch.size(),
-                               uncompacted.address() + offsets[b], sizes[b].outputSizeInBytes, &handles[b], &emit, 1),
+    emit.result = compactedSizes.address() + g * sizeof(uint64_t);
+    checkOptix(optixAccelBuild(context, stream, &options, &inputs[firstInput[g]], uint32_t(groups[g].meshes.size()),
+                               scratch.address(), scratch.size(), uncompacted.address() + offsets[g],
+                               sizes[g].outputSizeInBytes, &handles[g], &emit, 1),
                "building a mesh acceleration structure");
   }
   checkCuda(cudaStreamSynchronize(stream), "building the mesh acceleration structures");
@@ -217,17 +348,30 @@ void AccelerationStructures::buildMeshes(OptixDeviceContext context, cudaStream_
   std::vector<uint64_t> compactedSize(count);
   compactedSizes.download(compactedSize.data(), count * sizeof(uint64_t));
   size_t compactedBytes = 0;
-  for (size_t b = 0; b < count; ++b) {
-    offsets[b] = compactedBytes;
-    compactedBytes += alignedSize(compactedSize[b]);
+  for (size_t g = 0; g < count; ++g) {
+    offsets[g] = compactedBytes;
+    compactedBytes += alignedSize(compactedSize[g]);
   }
   auto compacted = std::make_shared<DeviceBuffer>(compactedBytes, "the mesh acceleration structures");
-  for (size_t b = 0; b < count; ++b) {
-    MeshStructure& s = meshes[toBuild[b]];
-    s.structure = compacted;
-    checkOptix(optixAccelCompact(context, stream, handles[b], compacted->address() + offsets[b], compactedSize[b],
-                                 &s.handle),
+  for (size_t g = 0; g < count; ++g) {
+    OptixTraversableHandle handle = 0;
+    checkOptix(optixAccelCompact(context, stream, handles[g], compacted->address() + offsets[g], compactedSize[g],
+                                 &handle),
                "compacting a mesh acceleration structure");
+    const BuildGroup& group = groups[g];
+    if (group.batch) {
+      Batch batch;
+      batch.handle = handle;
+      for (uint32_t m : group.meshes) batch.instances.push_back(instanceOf[m]);
+      for (uint32_t m : group.meshes) {
+        meshes[m].structure = compacted;
+        meshes[m].batch = int32_t(batches.size());
+      }
+      batches.push_back(std::move(batch));
+    } else {
+      meshes[group.meshes[0]].structure = compacted;
+      meshes[group.meshes[0]].handle = handle;
+    }
   }
   checkCuda(cudaStreamSynchronize(stream), "compacting the mesh acceleration structures");
 }
@@ -258,7 +402,7 @@ void AccelerationStructures::buildInstances(OptixDeviceContext context, cudaStre
 }
 
 size_t AccelerationStructures::deviceBytes() const {
-  size_t total = instances_.size() + topLevelStructure_.size();
+  size_t total = instances_.size() + topLevelStructure_.size() + batchInstances_.size();
   std::unordered_set<const DeviceBuffer*> counted;
   for (const MeshStructure& s : meshes_)
     if (s.structure && counted.insert(s.structure.get()).second) total += s.structure->size();

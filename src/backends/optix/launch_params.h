@@ -18,6 +18,13 @@ enum RayType : uint32_t { kRadianceRay = 0, kShadowRay = 1, kRayTypeCount = 2 };
 // programs (pipeline.cpp); the indices differ in the geometry flags the GAS gives them.
 constexpr uint32_t kGeometrySbtRecords = 4;
 
+// Meshes of one instance and no cut-outs are built many to a GAS, one build input each, when a scene has many
+// (acceleration.cpp): build input k takes SBT index k, so the hit-group records repeat for as many indices as a
+// batch has inputs at most, and the batch's IAS instance id (from LaunchParameters::firstBatchId on) says where
+// the instance ids of its inputs lie in LaunchParameters::batchInstances.
+constexpr uint32_t kMaxBatchInputs = 16384;
+constexpr uint32_t kHitRecordSets = kMaxBatchInputs > kGeometrySbtRecords ? kMaxBatchInputs : kGeometrySbtRecords;
+
 // The radiance payload's instance register holds this when the ray missed.
 constexpr uint32_t kMissedInstance = 0xFFFFFFFFu;
 
@@ -61,6 +68,8 @@ struct LaunchParameters {
   AovAccumulation aovs;          // null pointers unless the AOVs are enabled
   PixelCounters* counters = nullptr;
   RayRecording recording;
+  const uint32_t* batchInstances = nullptr;  // kMaxBatchInputs per batch: the instance id of each build input
+  uint32_t firstBatchId = 0xFFFFFFFFu;       // IAS instance ids from here on are batches
 };
 
 }  // namespace candela::optix

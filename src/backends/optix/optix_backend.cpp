@@ -93,6 +93,8 @@ struct OptixBackend::State {
     p.camera = camera;
     p.settings = settings;
     p.traversable = acceleration.topLevel();
+    p.batchInstances = acceleration.batchInstances();
+    p.firstBatchId = acceleration.firstBatchId();
     p.accumulation = accumulation.as<Vec3>();
     p.aovs = {albedoSum.as<Vec3>(), normalSum.as<Vec3>(), depthSum.as<float>()};
     p.counters = counters.as<PixelCounters>();

@@ -138,9 +138,9 @@ Pipeline::Pipeline(OptixDeviceContext context, OptixModule module, const std::ve
              "setting the pipeline's stack size");
 
   // Records carry only their program headers: every program reads scene data through the launch parameters.
-  // The hit-group records repeat once per SBT index a mesh's triangles can have (kGeometrySbtRecords), which
-  // differ only in the geometry flags the mesh's build gives them.
-  std::vector<HeaderOnlyRecord> records(groups_.size() + (kGeometrySbtRecords - 1) * kRayTypeCount);
+  // The hit-group records repeat once per SBT index a triangle can have (kHitRecordSets: a mesh's cut-out
+  // classes, or a batch's build inputs), which differ only in the geometry flags the build gives them.
+  std::vector<HeaderOnlyRecord> records(groups_.size() + (kHitRecordSets - 1) * kRayTypeCount);
   for (size_t i = 0; i < groups_.size(); ++i)
     checkOptix(optixSbtRecordPackHeader(groups_[i], &records[i]), "packing a shader binding table record");
   for (size_t i = groups_.size(); i < records.size(); ++i) records[i] = records[i - kRayTypeCount];
@@ -155,7 +155,7 @@ Pipeline::Pipeline(OptixDeviceContext context, OptixModule module, const std::ve
     table.missRecordCount = kRayTypeCount;
     table.hitgroupRecordBase = base + radianceHit * sizeof(HeaderOnlyRecord);
     table.hitgroupRecordStrideInBytes = sizeof(HeaderOnlyRecord);
-    table.hitgroupRecordCount = kGeometrySbtRecords * kRayTypeCount;
+    table.hitgroupRecordCount = kHitRecordSets * kRayTypeCount;
   }
 }
 

@@ -97,12 +97,20 @@ extern "C" __global__ void __raygen__rawTrace() {
   params.counters[pixel] = {count, 0};
 }
 
+// The scene's instance of the hit triangle: the IAS instance's, or for a batch of meshes the instance of the
+// build input the triangle came from (launch_params.h).
+__device__ uint32_t hitInstance() {
+  const uint32_t id = optixGetInstanceId();
+  if (id < params.firstBatchId) return id;
+  return params.batchInstances[(id - params.firstBatchId) * kMaxBatchInputs + optixGetSbtGASIndex()];
+}
+
 extern "C" __global__ void __closesthit__radiance() {
   const float2 barycentrics = optixGetTriangleBarycentrics();
   optixSetPayload_0(__float_as_uint(optixGetRayTmax()));
   optixSetPayload_1(__float_as_uint(barycentrics.x));
   optixSetPayload_2(__float_as_uint(barycentrics.y));
-  optixSetPayload_3(optixGetInstanceId());
+  optixSetPayload_3(hitInstance());
   optixSetPayload_4(optixGetPrimitiveIndex());
 }
 
@@ -114,7 +122,7 @@ extern "C" __global__ void __anyhit__passThrough() {
   Hit hit;
   hit.b1 = barycentrics.x;
   hit.b2 = barycentrics.y;
-  hit.instanceId = optixGetInstanceId();
+  hit.instanceId = hitInstance();
   hit.primitiveId = optixGetPrimitiveIndex();
   if (passesThrough(params.scene, hit, [] { return false; }, optixGetPayload_0())) optixIgnoreIntersection();
 }
