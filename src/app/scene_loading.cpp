@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "core/bounds.h"
 #include "scene/builtin_scenes.h"
 #include "scene/loaders/gltf_loader.h"
 #include "scene/loaders/image_decoding.h"
@@ -40,16 +41,12 @@ Scene loadFile(const std::string& path, const SceneCacheSettings& cache, LoadWar
 }  // namespace
 
 void frameSceneBounds(Scene& scene) {
-  Vec3 lo{kInf, kInf, kInf}, hi{-kInf, -kInf, -kInf};
+  Bounds3 bounds;
   for (const Instance& inst : scene.instances)
-    for (Vec3 p : scene.meshes[inst.meshId].positions) {
-      Vec3 w = inst.objectToWorld.point(p);
-      lo = {std::min(lo.x, w.x), std::min(lo.y, w.y), std::min(lo.z, w.z)};
-      hi = {std::max(hi.x, w.x), std::max(hi.y, w.y), std::max(hi.z, w.z)};
-    }
-  if (!(lo.x <= hi.x)) return;  // nothing to frame
-  Vec3 centre = (lo + hi) * 0.5f;
-  float radius = std::max(0.5f * length(hi - lo), 1e-3f);
+    for (Vec3 p : scene.meshes[inst.meshId].positions) bounds.extend(inst.objectToWorld.point(p));
+  if (!(bounds.lo.x <= bounds.hi.x)) return;  // nothing to frame
+  Vec3 centre = bounds.centre();
+  float radius = std::max(bounds.radius(), 1e-3f);
   CameraDescription& c = scene.camera;
   c.verticalFovDegrees = 40.0f;
   float distance = 1.1f * radius / std::sin(0.5f * c.verticalFovDegrees * kPi / 180.0f);

@@ -26,10 +26,7 @@ void buildLightTable(const Scene& scene, FlatScene& flat) {
     const Mesh& mesh = scene.meshes[inst.meshId];
     // Kernel code takes a triangle's front from its object-space winding carried by the normal transform, which
     // a mirroring transform does not flip, while it reverses the world-space winding of the corners kept here.
-    const float* a = inst.objectToWorld.m;
-    float det = a[0] * (a[5] * a[10] - a[6] * a[9]) - a[1] * (a[4] * a[10] - a[6] * a[8]) +
-                a[2] * (a[4] * a[9] - a[5] * a[8]);
-    const float frontSign = det < 0.0f ? -1.0f : 1.0f;
+    const float frontSign = inst.objectToWorld.determinant() < 0.0f ? -1.0f : 1.0f;
     for (size_t t = 0; t < mesh.triangleCount(); ++t) {
       const Material& m = scene.materials[mesh.triangleMaterials[t]];
       if (luminance(m.emission) <= 0.0f) continue;

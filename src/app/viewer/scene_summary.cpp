@@ -4,11 +4,6 @@
 
 namespace candela {
 
-void Bounds3::extend(Vec3 p) {
-  lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-  hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-}
-
 SceneSummary summarizeScene(const Scene& scene) {
   SceneSummary summary;
   summary.meshes = scene.meshes.size();

@@ -4,7 +4,6 @@
 #include <optix_stubs.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstring>
 #include <unordered_map>
 #include <unordered_set>
@@ -12,6 +11,7 @@
 
 #include "backends/optix/launch_params.h"
 #include "backends/optix/optix_error.h"
+#include "core/bounds.h"
 #include "kernel/pass_through.h"
 
 namespace candela::optix {
@@ -26,9 +26,6 @@ const unsigned int kGeometryFlags[kGeometrySbtRecords] = {
 
 // Below this many meshes to build, each gets a GAS of its own.
 constexpr size_t kMinMeshesToBatch = 256;
-
-Vec3 lower(Vec3 a, Vec3 b) { return {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)}; }
-Vec3 upper(Vec3 a, Vec3 b) { return {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)}; }
 
 // The 63-bit Morton code of `p` on a 2^21 grid over the box [lo, hi].
 uint64_t mortonCode(Vec3 p, Vec3 lo, Vec3 hi) {
@@ -85,6 +82,12 @@ bool sameTriangles(const FlatScene& a, uint32_t meshA, const FlatScene& b, uint3
   if (pa == pb && ia == ib) return true;
   return std::memcmp(pa, pb, ma.vertexCount * sizeof(Vec3)) == 0 &&
          std::memcmp(ia, ib, 3 * size_t(ma.triangleCount) * sizeof(uint32_t)) == 0;
+}
+
+// The SBT index all of a mesh's triangles have (sbtIndices), or -1 where they differ.
+int uniformSbtIndex(const std::vector<uint8_t>& sbt) {
+  if (sbt.empty()) return 0;
+  return std::all_of(sbt.begin(), sbt.end(), [&](uint8_t i) { return i == sbt[0]; }) ? sbt[0] : -1;
 }
 
 // Per triangle, the SBT index; empty when all are 0.
@@ -179,10 +182,9 @@ void AccelerationStructures::update(OptixDeviceContext context, cudaStream_t str
       std::memcmp(instances.data(), instanceList_.data(), instances.size() * sizeof(OptixInstance)) != 0;
   if (instancesChanged) buildInstances(context, stream, instances);
   meshes_ = std::move(meshes);
-  batches_ = std::move(batches);
   instanceList_ = std::move(instances);
   statistics_.meshBuilds += toBuild.size();
-  for (const Batch& batch : batches_) statistics_.batchedMeshes += batch.instances.size();
+  for (const Batch& batch : batches) statistics_.batchedMeshes += batch.instances.size();
   if (instancesChanged) ++statistics_.instanceBuilds;
 }
 
@@ -199,14 +201,10 @@ std::vector<AccelerationStructures::BuildGroup> AccelerationStructures::groupFor
   // A batch's triangles share one SBT index (geometry flags); culling, where the flags ask for it, is decided by
   // the winding in world space, which a mirroring transform turns over.
   auto batchClass = [&](uint32_t m) -> int {
-    const std::vector<uint8_t>& sbt = meshes[m].sbtIndices;
     if (instanceCount[m] != 1 || sharedWith[m]) return -1;
-    if (!std::all_of(sbt.begin(), sbt.end(), [&](uint8_t i) { return i == sbt[0]; })) return -1;
-    const int sbtIndex = sbt.empty() ? 0 : sbt[0];
-    const float* t = flat.instances[instanceOf[m]].objectToWorld.m;
-    const float determinant = t[0] * (t[5] * t[10] - t[6] * t[9]) - t[1] * (t[4] * t[10] - t[6] * t[8]) +
-                              t[2] * (t[4] * t[9] - t[5] * t[8]);
-    if ((sbtIndex & 2) && !(determinant > 0.0f)) return -1;
+    const int sbtIndex = uniformSbtIndex(meshes[m].sbtIndices);
+    if (sbtIndex < 0) return -1;
+    if ((sbtIndex & 2) && !(flat.instances[instanceOf[m]].objectToWorld.determinant() > 0.0f)) return -1;
     return sbtIndex;
   };
   const bool batching = toBuild.size() >= kMinMeshesToBatch;
@@ -214,34 +212,32 @@ std::vector<AccelerationStructures::BuildGroup> AccelerationStructures::groupFor
   for (uint32_t m : toBuild) {
     const int sbtIndex = batching ? batchClass(m) : -1;
     if (sbtIndex < 0)
-      groups.push_back({{m}, false});
+      groups.push_back({{m}, {}, false});
     else
       batchable[size_t(sbtIndex)].push_back(m);
   }
   // Batches of meshes near each other, so that the batches' boxes overlap little in the IAS: the meshes in the
   // Morton order of their world-space centres.
   std::vector<Vec3> centre(flat.meshes.size());
-  Vec3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+  Bounds3 centres;
   for (const std::vector<uint32_t>& list : batchable)
     for (uint32_t m : list) {
       const MeshRecord& mesh = flat.meshes[m];
-      Vec3 meshLo{INFINITY, INFINITY, INFINITY}, meshHi{-INFINITY, -INFINITY, -INFINITY};
-      for (uint32_t v = 0; v < mesh.vertexCount; ++v) {
-        meshLo = lower(meshLo, flat.positions[mesh.firstVertex + v]);
-        meshHi = upper(meshHi, flat.positions[mesh.firstVertex + v]);
-      }
-      centre[m] = flat.instances[instanceOf[m]].objectToWorld.point(0.5f * (meshLo + meshHi));
-      lo = lower(lo, centre[m]);
-      hi = upper(hi, centre[m]);
+      Bounds3 meshBounds;
+      for (uint32_t v = 0; v < mesh.vertexCount; ++v) meshBounds.extend(flat.positions[mesh.firstVertex + v]);
+      centre[m] = flat.instances[instanceOf[m]].objectToWorld.point(meshBounds.centre());
+      centres.extend(centre[m]);
     }
   for (std::vector<uint32_t>& list : batchable) {
     std::vector<std::pair<uint64_t, uint32_t>> ordered;
-    for (uint32_t m : list) ordered.emplace_back(mortonCode(centre[m], lo, hi), m);
+    for (uint32_t m : list) ordered.emplace_back(mortonCode(centre[m], centres.lo, centres.hi), m);
     std::sort(ordered.begin(), ordered.end());
     for (size_t first = 0; first < ordered.size(); first += kMaxBatchInputs) {
-      BuildGroup batch{{}, true};
-      for (size_t i = first; i < std::min(first + kMaxBatchInputs, ordered.size()); ++i)
+      BuildGroup batch{{}, {}, true};
+      for (size_t i = first; i < std::min(first + kMaxBatchInputs, ordered.size()); ++i) {
         batch.meshes.push_back(ordered[i].second);
+        batch.instances.push_back(instanceOf[ordered[i].second]);
+      }
       groups.push_back(std::move(batch));
     }
   }
@@ -258,15 +254,12 @@ void AccelerationStructures::buildMeshes(OptixDeviceContext context, cudaStream_
     if (g.batch) batchedCount += g.meshes.size();
   }
   // A batched mesh is built in world space: its one instance's transform is applied during the build.
-  std::vector<uint32_t> instanceOf(flat.meshes.size(), 0);
-  for (uint32_t i = 0; i < flat.instances.size(); ++i) instanceOf[flat.instances[i].meshId] = i;
   std::vector<float> transforms;
   transforms.reserve(batchedCount * 12);
   for (const BuildGroup& g : groups)
-    if (g.batch)
-      for (uint32_t m : g.meshes)
-        transforms.insert(transforms.end(), std::begin(flat.instances[instanceOf[m]].objectToWorld.m),
-                          std::end(flat.instances[instanceOf[m]].objectToWorld.m));
+    for (uint32_t i : g.instances)
+      transforms.insert(transforms.end(), std::begin(flat.instances[i].objectToWorld.m),
+                        std::end(flat.instances[i].objectToWorld.m));
   const DeviceBuffer transformBuffer = DeviceBuffer::fromVector(transforms, "the transforms of batched meshes");
 
   std::vector<CUdeviceptr> vertexBuffers(inputCount);
@@ -295,10 +288,9 @@ void AccelerationStructures::buildMeshes(OptixDeviceContext context, cudaStream_
         triangles.preTransform = transformBuffer.address() + nextTransform++ * 12 * sizeof(float);
         triangles.transformFormat = OPTIX_TRANSFORM_FORMAT_MATRIX_FLOAT12;
       }
-      if (sbt.empty()) {
-        triangles.flags = &kGeometryFlags[0];
-      } else if (std::all_of(sbt.begin(), sbt.end(), [&](uint8_t i) { return i == sbt[0]; })) {
-        triangles.flags = &kGeometryFlags[sbt[0]];
+      const int sbtIndex = uniformSbtIndex(sbt);
+      if (sbtIndex >= 0) {
+        triangles.flags = &kGeometryFlags[sbtIndex];
       } else {
         sbtIndexBuffers[b] = DeviceBuffer::fromVector(sbt, "a mesh's SBT indices");
         triangles.flags = kGeometryFlags;
@@ -360,14 +352,11 @@ void AccelerationStructures::buildMeshes(OptixDeviceContext context, cudaStream_
                "compacting a mesh acceleration structure");
     const BuildGroup& group = groups[g];
     if (group.batch) {
-      Batch batch;
-      batch.handle = handle;
-      for (uint32_t m : group.meshes) batch.instances.push_back(instanceOf[m]);
       for (uint32_t m : group.meshes) {
         meshes[m].structure = compacted;
         meshes[m].batch = int32_t(batches.size());
       }
-      batches.push_back(std::move(batch));
+      batches.push_back({handle, group.instances});
     } else {
       meshes[group.meshes[0]].structure = compacted;
       meshes[group.meshes[0]].handle = handle;

@@ -57,6 +57,7 @@ class AccelerationStructures {
   // Meshes built into one GAS: one mesh of any kind, or a batch of meshes of one instance each.
   struct BuildGroup {
     std::vector<uint32_t> meshes;
+    std::vector<uint32_t> instances;  // a batch's: the one instance of each mesh
     bool batch = false;
   };
   struct Batch {
@@ -73,7 +74,6 @@ class AccelerationStructures {
   void buildInstances(OptixDeviceContext context, cudaStream_t stream, const std::vector<OptixInstance>& instances);
 
   std::vector<MeshStructure> meshes_;  // one per mesh of the last update
-  std::vector<Batch> batches_;
   DeviceBuffer batchInstances_;
   uint32_t firstBatchId_ = 0xFFFFFFFFu;
   std::vector<OptixInstance> instanceList_;
