@@ -220,8 +220,8 @@ void addViewOptions(CLI::App& cmd, ViewerOptions& options, std::string& toneMapp
       ->check(CLI::Range(1u, 1024u))
       ->capture_default_str();
   cmd.add_option("--exposure", options.post.display.exposure, "Exposure in stops")->capture_default_str();
-  const std::map<std::string, DenoiserChoice> denoisers{
-      {"none", DenoiserChoice::None}, {"atrous", DenoiserChoice::Atrous}, {"optix", DenoiserChoice::Optix}};
+  std::map<std::string, DenoiserChoice> denoisers;
+  for (DenoiserChoice choice : kDenoiserChoices) denoisers[denoiserName(choice)] = choice;
   cmd.add_option("--denoise", options.post.denoiser,
                  "Denoiser to start with (the panel switches it): none; atrous; optix (the OptiX AI denoiser)")
       ->transform(CLI::CheckedTransformer(denoisers, CLI::ignore_case))

@@ -12,6 +12,17 @@ enum class DenoiserChoice {
   Atrous,  // where the backend's film is: the CPU filter, or CUDA for the optix backend
   Optix,   // the OptiX AI denoiser, on the GPU, from the image and AOVs read back
 };
+constexpr DenoiserChoice kDenoiserChoices[] = {DenoiserChoice::None, DenoiserChoice::Atrous, DenoiserChoice::Optix};
+
+// The choice's name on the command line and in the viewer's state file.
+constexpr const char* denoiserName(DenoiserChoice choice) {
+  switch (choice) {
+    case DenoiserChoice::Atrous: return "atrous";
+    case DenoiserChoice::Optix: return "optix";
+    case DenoiserChoice::None: break;
+  }
+  return "none";
+}
 
 // What happens to the accumulated image between the backend and the screen (or a screenshot).
 struct PostSettings {

@@ -341,9 +341,7 @@ void Viewer::writeState() {
   state.cameraForward = camera_->forward();
   state.cameraTarget = camera_->target();
   state.cameraDistance = camera_->distance();
-  state.denoiser = controls_.post.denoiser == DenoiserChoice::Optix    ? "optix"
-                   : controls_.post.denoiser == DenoiserChoice::Atrous ? "atrous"
-                                                                       : "none";
+  state.denoiser = denoiserName(controls_.post.denoiser);
   state.message = status_.message;
   state.messageIsError = status_.messageIsError;
   state.openSceneField = openSceneField_;
