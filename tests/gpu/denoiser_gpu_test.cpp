@@ -18,6 +18,18 @@ Image renderCornellBox(uint32_t seed, uint32_t spp) {
   return backend->readImage();
 }
 
+// A 4-spp Cornell box with the AOVs that guide the denoiser.
+struct GuidedRender {
+  Image image;
+  AovImages aovs;
+};
+GuidedRender renderWithGuides(uint32_t size) {
+  auto backend = test::makeBackend<OptixBackend>(makeCornellBox(), test::squareImage(size, 1));
+  backend->setAovsEnabled(true);
+  backend->render(4);
+  return {backend->readImage(), backend->readAovs()};
+}
+
 // Mean over pixels and channels of (a - b)^2 / (b^2 + 1e-2), the usual relative MSE.
 double relativeMse(const Image& a, const Image& b) {
   double sum = 0.0;
@@ -49,11 +61,7 @@ TEST(GpuDenoiser, DenoisesOrSaysWhyNot) {
 
 // With the albedo and normal guides from the backend's AOVs, as `candela render --denoise optix` feeds them.
 TEST(GpuDenoiser, DenoisesWithGuidesOrSaysWhyNot) {
-  auto backend = test::makeBackend<OptixBackend>(makeCornellBox(), test::squareImage(128, 1));
-  backend->setAovsEnabled(true);
-  backend->render(4);
-  const Image noisy = backend->readImage();
-  const AovImages aovs = backend->readAovs();
+  const auto [noisy, aovs] = renderWithGuides(128);
   Image denoised;
   try {
     denoised = denoiseWithOptix(noisy, {&aovs.albedo, &aovs.normal});
@@ -69,11 +77,7 @@ TEST(GpuDenoiser, DenoisesWithGuidesOrSaysWhyNot) {
 // The viewer keeps one denoiser across frames and window sizes: each image must come out as a denoiser made for
 // it alone would give it.
 TEST(GpuDenoiser, AKeptDenoiserGivesTheImagesOfFreshOnesOrSaysWhyNot) {
-  auto backend = test::makeBackend<OptixBackend>(makeCornellBox(), test::squareImage(96, 1));
-  backend->setAovsEnabled(true);
-  backend->render(4);
-  const Image small = backend->readImage();
-  const AovImages smallAovs = backend->readAovs();
+  const auto [small, smallAovs] = renderWithGuides(96);
   const Image large = renderCornellBox(3, 4);
   try {
     OptixImageDenoiser kept({true, true});
