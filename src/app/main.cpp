@@ -32,6 +32,16 @@ void addSceneCacheOptions(CLI::App& cmd, SceneCacheSettings& cache) {
                  "~/.cache/candela)");
 }
 
+void addSamplerOption(CLI::App& cmd, SamplerKind& sampler) {
+  cmd.add_option_function<std::string>(
+         "--sampler",
+         [&sampler](const std::string& name) { sampler = name == "sobol" ? SamplerKind::Sobol : SamplerKind::Independent; },
+         "Random numbers of the paths: sobol (Owen-scrambled Sobol points, stratified per pixel) or independent "
+         "(white noise)")
+      ->check(CLI::IsMember({"sobol", "independent"}))
+      ->default_str("sobol");
+}
+
 void addRenderOptions(CLI::App& cmd, RenderJob& job) {
   std::string scenes;
   for (const std::string& n : builtinSceneNames()) scenes += (scenes.empty() ? "" : ", ") + n;
@@ -54,6 +64,7 @@ void addRenderOptions(CLI::App& cmd, RenderJob& job) {
       ->capture_default_str();
   cmd.add_option("--seed", job.settings.seed, "Seed of the random sequence; same seed, same image")
       ->capture_default_str();
+  addSamplerOption(cmd, job.settings.sampler);
   // Validated while parsing, so a bad value is a usage error (exit status 2) like any other.
   auto validated = [](auto apply) {
     return CLI::Validator(
@@ -135,6 +146,7 @@ int runBench(const RenderJob& job) {
       {"height", job.settings.height},
       {"spp", job.samplesPerPixel},
       {"max_depth", job.settings.maxDepth},
+      {"sampler", job.settings.sampler == SamplerKind::Sobol ? "sobol" : "independent"},
       {"backend", outcome.backendName},
       {"device", outcome.deviceName},
       {"seconds", outcome.seconds},
@@ -216,6 +228,7 @@ void addViewOptions(CLI::App& cmd, ViewerOptions& options, std::string& toneMapp
       ->check(CLI::Range(1u, 1024u))
       ->capture_default_str();
   cmd.add_option("--seed", options.seed, "Seed of the random sequence")->capture_default_str();
+  addSamplerOption(cmd, options.sampler);
   cmd.add_option("--spp-per-frame", options.samplesPerFrame, "Samples per pixel added each frame at rest")
       ->check(CLI::Range(1u, 1024u))
       ->capture_default_str();

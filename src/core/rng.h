@@ -35,21 +35,4 @@ CANDELA_FN float randomUniform(uint32_t pixel, uint32_t sampleIndex, uint32_t di
   return bitsToUnitFloat(pcg4d({pixel, sampleIndex, dimension, seed}).x);
 }
 
-// Hands out consecutive dimensions of one path sample.
-class PathSampler {
- public:
-  CANDELA_FN PathSampler(uint32_t pixel, uint32_t sampleIndex, uint32_t seed)
-      : pixel_(pixel), sampleIndex_(sampleIndex), seed_(seed) {}
-
-  CANDELA_FN float next1D() { return randomUniform(pixel_, sampleIndex_, dimension_++, seed_); }
-  // The next dimension's 32 random bits, for callers that hash them further.
-  CANDELA_FN uint32_t nextBits() { return pcg4d({pixel_, sampleIndex_, dimension_++, seed_}).x; }
-
- private:
-  uint32_t pixel_;
-  uint32_t sampleIndex_;
-  uint32_t seed_;
-  uint32_t dimension_ = 0;
-};
-
 }  // namespace candela

@@ -1,5 +1,5 @@
 #pragma once
-#include "core/rng.h"
+#include "core/path_sampler.h"
 #include "kernel/aovs.h"
 #include "kernel/bsdf/bsdf.h"
 #include "kernel/camera.h"
@@ -98,7 +98,7 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
 
     // Next-event estimation.
     float uSelect = sampler.next1D();
-    Vec2 uLight{sampler.next1D(), sampler.next1D()};
+    Vec2 uLight = sampler.next2D();
     if (!bsdf.isDelta()) {
       LightSample ls = sampleLight(scene, si.position, uSelect, uLight);
       bool reachable = dot(ls.wi, si.geometricNormal) * woSide > 0.0f || bsdf.hasTransmission();
@@ -119,7 +119,7 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
 
     // Continue the path by sampling the BSDF.
     float uChoice = sampler.next1D();
-    Vec2 uBsdf{sampler.next1D(), sampler.next1D()};
+    Vec2 uBsdf = sampler.next2D();
     BsdfSample bs = bsdf.sample(wo, uChoice, uBsdf);
     if (!bs.valid || isBlack(bs.f) || !sidesAgree(bs.wi)) break;
     beta *= bs.f * (fabsf(dot(bs.wi, bsdf.normal())) / bs.pdf);
@@ -148,11 +148,12 @@ template <bool kWithAovs = false, class Tracer>
 CANDELA_HD PathResult renderPixelSample(const SceneView& scene, const Tracer& tracer, const Camera& camera,
                                         const RenderSettings& settings, uint32_t x, uint32_t y,
                                         uint32_t sampleIndex) {
-  PathSampler sampler(y * settings.width + x, sampleIndex, settings.seed);
-  float jx = sampler.next1D(), jy = sampler.next1D();
+  PathSampler sampler(y * settings.width + x, sampleIndex, settings.seed, settings.sampler);
+  Vec2 jitter = sampler.next2D();
   Vec2 uLens;
-  if (camera.lensRadius > 0.0f) uLens = {sampler.next1D(), sampler.next1D()};
-  Ray ray = camera.generateRay(float(x) + jx, float(y) + jy, int(settings.width), int(settings.height), uLens);
+  if (camera.lensRadius > 0.0f) uLens = sampler.next2D();
+  Ray ray = camera.generateRay(float(x) + jitter.x, float(y) + jitter.y, int(settings.width), int(settings.height),
+                               uLens);
   return tracePath<kWithAovs>(scene, tracer, ray, sampler, settings);
 }
 

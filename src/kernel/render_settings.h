@@ -1,6 +1,8 @@
 #pragma once
 #include <cstdint>
 
+#include "core/path_sampler.h"
+
 namespace candela {
 
 struct RenderSettings {
@@ -9,6 +11,7 @@ struct RenderSettings {
   uint32_t maxDepth = 8;       // path segments after the camera ray; 1 = direct lighting only
   uint32_t rouletteDepth = 3;  // bounces before Russian roulette may end a path
   uint32_t seed = 0;
+  SamplerKind sampler = SamplerKind::Sobol;
 };
 
 }  // namespace candela

@@ -4,6 +4,6 @@
 
 namespace candela::test {
 
-INSTANTIATE_TYPED_TEST_SUITE_P(Optix, AnalyticScenes, ::testing::Types<OptixBackend>);
+INSTANTIATE_TYPED_TEST_SUITE_P(Optix, AnalyticScenes, EverySampler<OptixBackend>);
 
 }  // namespace candela::test

@@ -25,11 +25,6 @@ TEST(Rng, StaysInTheUnitInterval) {
   EXPECT_LT(bitsToUnitFloat(0xFFFFFFFFu), 1.0f);
 }
 
-TEST(PathSampler, WalksConsecutiveDimensions) {
-  PathSampler sampler(3, 4, 5);
-  for (uint32_t d = 0; d < 16; ++d) EXPECT_EQ(sampler.next1D(), randomUniform(3, 4, d, 5));
-}
-
 // Pairs of numbers must fill the unit square uniformly whichever input varies: consecutive dimensions of one
 // sample, one dimension over consecutive samples, and neighbouring pixels.
 enum class Pairing { Dimensions, Samples, Pixels };

@@ -4,6 +4,6 @@
 
 namespace candela::test {
 
-INSTANTIATE_TYPED_TEST_SUITE_P(Cpu, AnalyticScenes, ::testing::Types<CpuBackend>);
+INSTANTIATE_TYPED_TEST_SUITE_P(Cpu, AnalyticScenes, EverySampler<CpuBackend>);
 
 }  // namespace candela::test

@@ -265,6 +265,7 @@ void Viewer::frame(double now, double seconds) {
   settings.height = lastPlan_.height;
   settings.maxDepth = controls_.maxDepth;
   settings.seed = options_.seed;
+  settings.sampler = options_.sampler;
   auto start = std::chrono::steady_clock::now();
   prepareDenoiser();
   session_.setAovsEnabled(controls_.post.denoiser != DenoiserChoice::None);

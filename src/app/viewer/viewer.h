@@ -3,6 +3,7 @@
 #include <string>
 
 #include "app/viewer/post_settings.h"
+#include "core/path_sampler.h"
 #include "scene/cache/scene_cache.h"
 
 namespace candela {
@@ -17,6 +18,7 @@ struct ViewerOptions {
   uint32_t height = 720;
   uint32_t maxDepth = 8;
   uint32_t seed = 0;
+  SamplerKind sampler = SamplerKind::Sobol;
   uint32_t samplesPerFrame = 1;
   PostSettings post;
   uint32_t frames = 0;         // render this many frames, then exit; 0: until the window closes
