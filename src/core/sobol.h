@@ -21,11 +21,17 @@ CANDELA_FN uint32_t reverseBits(uint32_t v) {
 // every aligned block of 2^m consecutive points has exactly one point in each elementary interval of area 2^-m.
 CANDELA_FN uint32_t sobolDimension0(uint32_t index) { return reverseBits(index); }
 
+// Its generator matrix is Pascal's triangle mod 2: output bit j (from the top) is the parity of the index bits k
+// with C(k, j) odd, that is (Lucas) of the bits k whose positions contain j's bits. That superset parity over the
+// five bits of a position is five shift-xor steps, as in a zeta transform, instead of a loop over the index bits.
 CANDELA_FN uint32_t sobolDimension1(uint32_t index) {
-  // Generator matrix: Pascal's triangle mod 2, column k = v_k with v_0 = 2^31 and v_k = v_{k-1} ^ (v_{k-1} >> 1).
-  uint32_t result = 0;
-  for (uint32_t v = 1u << 31; index != 0; index >>= 1, v ^= v >> 1) result ^= v & (0u - (index & 1u));
-  return result;
+  uint32_t z = index;
+  z ^= (z >> 1) & 0x55555555u;
+  z ^= (z >> 2) & 0x33333333u;
+  z ^= (z >> 4) & 0x0F0F0F0Fu;
+  z ^= (z >> 8) & 0x00FF00FFu;
+  z ^= (z >> 16) & 0x0000FFFFu;
+  return reverseBits(z);
 }
 
 // Hash-based Owen scrambling (Burley 2020, "Practical Hash-based Owen Scrambling", after Laine and Karras 2011):

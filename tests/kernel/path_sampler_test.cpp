@@ -55,6 +55,23 @@ TEST(SobolSequence, StartsWithTheKnownPoints) {
   }
 }
 
+// The second dimension by its definition: the index's bits select columns v_k of the generator matrix, v_0 = 2^31
+// and v_k = v_{k-1} ^ (v_{k-1} >> 1).
+uint32_t sobolDimension1ByColumns(uint32_t index) {
+  uint32_t result = 0;
+  for (uint32_t v = 1u << 31; index != 0; index >>= 1, v ^= v >> 1)
+    if (index & 1u) result ^= v;
+  return result;
+}
+
+TEST(SobolSequence, SecondDimensionMatchesItsGeneratorMatrix) {
+  uint32_t index = 0;
+  for (uint32_t i = 0; i < 100000; ++i, index = index * 1664525u + 1013904223u) {
+    ASSERT_EQ(sobolDimension1(i), sobolDimension1ByColumns(i)) << i;
+    ASSERT_EQ(sobolDimension1(index), sobolDimension1ByColumns(index)) << index;
+  }
+}
+
 TEST(SobolSequence, OwenScramblingKeepsLeadingBitsTogether) {
   // Values that share their top k bits still share them after scrambling, whatever the seed.
   for (uint32_t seed : {0u, 1u, 0xDEADBEEFu}) {
