@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 
 #include "scene/loaders/load_diagnostics.h"
@@ -25,7 +26,9 @@ const char* kindOf(mode_t mode) {
 }
 
 std::string gib(uint64_t bytes) {
-  return std::to_string(bytes >> 30) + (bytes % (uint64_t(1) << 30) ? "+" : "") + " GiB";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g GiB", double(bytes) / double(uint64_t(1) << 30));
+  return text;
 }
 
 }  // namespace
