@@ -140,23 +140,57 @@ TEST(PathConfinement, GltfBuffersOutsideTheFolderAreAnError) {
   fs::current_path(before);
 }
 
-TEST(PathConfinement, GltfImagesOutsideTheFolderAreAWarning) {
-  TempFolder dir;
-  writePng(dir.file("outside.png"));
-  writePng(dir.file("model/a+b.png"));
+// A triangle in an external buffer: 36 bytes of positions, 6 of indices.
+void writeTriangleBuffer(const std::string& path) {
   std::vector<uint8_t> buffer(36 + 6);
   float positions[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
   uint16_t indices[3] = {0, 1, 2};
   std::memcpy(buffer.data(), positions, 36);
   std::memcpy(buffer.data() + 36, indices, 6);
-  std::ofstream(dir.file("model/m.bin"), std::ios::binary).write(reinterpret_cast<const char*>(buffer.data()), 42);
-  json g = {
+  fs::create_directories(fs::path(path).parent_path());
+  std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(buffer.data()), 42);
+}
+
+json triangleInBuffer(const std::string& uri) {
+  return {
       {"asset", {{"version", "2.0"}}},
-      {"buffers", {{{"uri", "m.bin"}, {"byteLength", 42}}}},
+      {"buffers", {{{"uri", uri}, {"byteLength", 42}}}},
       {"bufferViews", {{{"buffer", 0}, {"byteLength", 36}}, {{"buffer", 0}, {"byteOffset", 36}, {"byteLength", 6}}}},
       {"accessors",
        {{{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}},
         {{"bufferView", 1}, {"componentType", 5123}, {"count", 3}, {"type", "SCALAR"}}}},
+      {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"indices", 1}}}}}}},
+      {"nodes", {{{"mesh", 0}}}},
+  };
+}
+
+TEST(PathConfinement, GltfBufferUrisAreDecodedAsRfc3986Says) {
+  TempFolder dir;
+  writeTriangleBuffer(dir.file("model/a+b.bin"));  // no "a b.bin": '+' is no space in a path
+  writeTriangleBuffer(dir.file("model/c d.bin"));
+  writeTriangleBuffer(dir.file("model/sub/e.bin"));
+  LoadWarnings warnings;
+  for (const char* uri : {"a+b.bin", "c%20d.bin", "sub%2Fe.bin", "sub/../a%2Bb.bin"}) {
+    Scene s = loadGltf(dir.write("model/m.gltf", triangleInBuffer(uri).dump()), warnings);
+    EXPECT_EQ(s.triangleCount(), 1u) << uri;
+  }
+  std::string gltf = dir.write("model/m.gltf", triangleInBuffer("a%zz.bin").dump());
+  try {
+    loadGltf(gltf, warnings);
+    ADD_FAILURE() << "a malformed URI was read";
+  } catch (const LoadError& e) {
+    EXPECT_NE(std::string(e.what()).find("names no file (a relative path with valid %-escapes)"), std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(PathConfinement, GltfImagesOutsideTheFolderAreAWarning) {
+  TempFolder dir;
+  writePng(dir.file("outside.png"));
+  writePng(dir.file("model/a+b.png"));
+  writeTriangleBuffer(dir.file("model/m.bin"));
+  json g = triangleInBuffer("m.bin");
+  g.update({
       {"images", {{{"uri", "..%2Foutside.png"}}, {{"uri", "a+b.png"}}, {{"uri", "a%00.png"}}, {{"uri", "file:///etc/passwd"}}}},
       {"textures", {{{"source", 0}}, {{"source", 1}}, {{"source", 2}}, {{"source", 3}}}},
       {"materials",
@@ -170,8 +204,7 @@ TEST(PathConfinement, GltfImagesOutsideTheFolderAreAWarning) {
            {{"attributes", {{"POSITION", 0}}}, {"indices", 1}, {"material", 1}},
            {{"attributes", {{"POSITION", 0}}}, {"indices", 1}, {"material", 2}},
            {{"attributes", {{"POSITION", 0}}}, {"indices", 1}, {"material", 3}}}}}}},
-      {"nodes", {{{"mesh", 0}}}},
-  };
+  });
   std::string gltf = dir.write("model/m.gltf", g.dump());
   LoadWarnings warnings;
   Scene s = loadGltf(gltf, warnings);

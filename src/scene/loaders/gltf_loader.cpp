@@ -14,6 +14,7 @@
 
 #include "scene/loaders/file_bytes.h"
 #include "scene/loaders/gltf_accessors.h"
+#include "scene/loaders/gltf_buffer_uris.h"
 #include "scene/loaders/gltf_materials.h"
 #include "scene/loaders/path_confinement.h"
 #include "scene/loaders/texture_table.h"
@@ -64,12 +65,15 @@ std::string firstLine(const std::string& s) {
   return line;
 }
 
-// tinygltf's file callbacks, which read the external buffers of a .gltf. tinygltf decodes a buffer's URI and
-// looks for it in the glTF file's folder ("<baseDir>/<path>") and then in the working directory
-// ("./<path>"): the second is never answered, and the first must stay inside the folder that `rule` allows.
+// tinygltf's file callbacks, which read the external buffers of a .gltf. tinygltf decodes a buffer's URI its
+// own way and looks for it in the glTF file's folder ("<baseDir>/<path>") and then in the working directory
+// ("./<path>"): the second is never answered; the first is decoded again from the URI as written, and must stay
+// inside the folder that `rule` allows.
 struct FileAccess {
   std::string baseDir;  // empty: nothing outside the given bytes may be read
   PathRule rule;
+  std::string_view json;  // the glTF's JSON, read for its buffer URIs when the first one is asked about
+  std::optional<GltfBufferUris> bufferUris;
   std::vector<std::string> filesRead;  // buffers, for Scene::inputFiles
   std::string refusal;  // why the last path asked about may not be read
 
@@ -77,9 +81,16 @@ struct FileAccess {
   std::optional<std::string> allowed(const std::string& path) {
     const std::string prefix = baseDir.empty() || baseDir.back() == '/' ? baseDir : baseDir + "/";
     if (baseDir.empty() || path.compare(0, prefix.size(), prefix) != 0) return std::nullopt;
-    ResolvedPath resolved = resolveModelPath(baseDir, path.substr(prefix.size()), rule);
+    const std::string decoded = path.substr(prefix.size());
+    if (!bufferUris) bufferUris.emplace(json);
+    std::optional<std::string> reference = bufferUris->pathFor(decoded);
+    if (!reference) {
+      refusal = "buffer '" + decoded + "' names no file (a relative path with valid %-escapes)";
+      return std::nullopt;
+    }
+    ResolvedPath resolved = resolveModelPath(baseDir, *reference, rule);
     if (!resolved.allowed()) {
-      refusal = "buffer '" + path.substr(prefix.size()) + "' " + resolved.refusal;
+      refusal = "buffer '" + *reference + "' " + resolved.refusal;
       return std::nullopt;
     }
     return resolved.path;
@@ -432,7 +443,7 @@ Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, c
     failLoad(name, "JSON nests deeper than " + std::to_string(kMaxJsonDepth) + " levels");
 
   tinygltf::TinyGLTF loader;
-  FileAccess access{baseDir, files, {}, {}};
+  FileAccess access{baseDir, files, json ? std::string_view(json, jsonSize) : std::string_view(), {}, {}, {}};
   loader.SetFsCallbacks({&fileExists, &expandFilePath, &readWholeFile, &writeWholeFile, &access});
   loader.SetImageLoader(&keepEncodedImage, nullptr);
   tinygltf::Model model;
