@@ -238,15 +238,29 @@ TEST(PathConfinement, SceneFilesNameModelsInTheirFolder) {
   }
   EXPECT_EQ(loadSceneFile(scene, &loadModel, warnings, OutsidePaths::Allowed).triangleCount(), 1u);
 
-  std::string withMap = dir.write("scenes/e.json", R"({"models": [{"file": "t.obj"}], "environment": {"map": "/etc/passwd"}})");
+  // Through a symbolic link too.
+  fs::create_directory_symlink(dir.file("models"), dir.file("scenes/linked"));
+  std::string linked = dir.write("scenes/linked.json", R"({"models": [{"file": "linked/t.obj"}]})");
+  EXPECT_THROW(loadSceneFile(linked, &loadModel, warnings), LoadError);
+
+  std::string withMap = dir.write("scenes/e.json", R"({"models": [{"file": "t.obj"}], "environment": {"map": "../sky.hdr"}})");
   dir.write("scenes/t.obj", kTriangleObj);
   try {
     loadSceneFile(withMap, &loadModel, warnings);
     ADD_FAILURE() << "an environment map outside the scene file's folder was read";
   } catch (const LoadError& e) {
-    EXPECT_NE(std::string(e.what()).find(withMap + ": environment.map: '/etc/passwd' leads to /etc/passwd"),
+    EXPECT_NE(std::string(e.what()).find(withMap + ": environment.map: '../sky.hdr' leads to " + dir.file("sky.hdr")),
               std::string::npos) << e.what();
   }
+}
+
+// An absolute path is the scene file's author's choice, as in the views the viewer saves.
+TEST(PathConfinement, SceneFilesMayNameModelsByAbsolutePath) {
+  TempFolder dir;
+  dir.write("models/t.obj", kTriangleObj);
+  json scene = {{"models", {{{"file", dir.file("models/t.obj")}}}}};
+  LoadWarnings warnings;
+  EXPECT_EQ(loadSceneFile(dir.write("views/v.json", scene.dump()), &loadModel, warnings).triangleCount(), 1u);
 }
 
 }  // namespace

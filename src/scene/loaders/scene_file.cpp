@@ -142,10 +142,13 @@ void overrideMaterial(Material& m, const Node& o, LoadWarnings& warnings) {
     o.fail("colours must not be negative");
 }
 
-// The file a scene file names, which must follow the same rule as a model's references (path_confinement.h):
-// the scene file may come from the same untrusted place as its models.
+// The file a scene file names. A relative path follows the rule of a model's references (path_confinement.h),
+// since a scene file may come in one bundle with its models from an untrusted place. An absolute path is its
+// author's deliberate choice (the viewer saves views naming their models so) and is taken as it is.
 std::string resolve(const Node& name, const PathRule& rule) {
-  ResolvedPath path = resolveModelPath(rule.folder, name.string(), rule);
+  const bool absolute = fs::path(name.string()).is_absolute();
+  const PathRule asWritten{rule.folder, OutsidePaths::Allowed};
+  ResolvedPath path = resolveModelPath(rule.folder, name.string(), absolute ? asWritten : rule);
   if (!path.allowed()) name.fail("'" + name.string() + "' " + path.refusal);
   return path.path;
 }

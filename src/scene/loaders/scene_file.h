@@ -10,7 +10,8 @@ namespace candela {
 
 // Loads a JSON scene file (docs/scene-file.md describes the format): models (.obj, .gltf, .glb) with transforms
 // and material overrides, a camera (thin lens included), an environment and render settings. Paths are relative
-// to the scene file and must lead inside its folder unless `outside` allows others (path_confinement.h).
+// to the scene file and must lead inside its folder unless `outside` allows others (path_confinement.h);
+// absolute paths are taken as they are.
 // `loadModel` loads one model file (the caller decides about caching, and about the rule for the model's own
 // references). Errors throw LoadError naming the file and the JSON path ("scene.json: models[1].transform.scale:
 // expected a number or 3 numbers"), or the line and column of invalid JSON ("scene.json:3:7: invalid JSON: ...").
