@@ -51,17 +51,18 @@ std::string printableText(std::string_view text) {
     } else if (c >= 0x20 && c < 0x7F) {
       out += char(c);
       ++i;
-    } else if (uint32_t codePoint = 0; c >= 0x80) {
-      size_t length = utf8Sequence(text.substr(i), codePoint);
+    } else if (c < 0x80) {
+      appendEscaped(out, c);
+      ++i;
+    } else {
+      uint32_t codePoint = 0;
+      const size_t length = utf8Sequence(text.substr(i), codePoint);
       if (length > 0 && !isHiddenControl(codePoint)) {
         out.append(text.substr(i, length));
-      } else {
+      } else {  // the whole sequence of a hidden control, or the one byte that starts no valid sequence
         for (size_t k = 0; k < std::max<size_t>(length, 1); ++k) appendEscaped(out, uint8_t(text[i + k]));
       }
       i += std::max<size_t>(length, 1);
-    } else {
-      appendEscaped(out, c);
-      ++i;
     }
   }
   while (!out.empty() && out.back() == ' ') out.pop_back();
