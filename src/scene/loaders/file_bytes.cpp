@@ -31,20 +31,27 @@ std::string gib(uint64_t bytes) {
   return text;
 }
 
+std::string notRegular(const struct stat& st) {
+  return std::string("is ") + kindOf(st.st_mode) + ", not a file that can be loaded";
+}
+
 }  // namespace
 
 uint64_t maxInputFileBytes() { return maxBytes.load(std::memory_order_relaxed); }
 void setMaxInputFileBytes(uint64_t bytes) { maxBytes.store(bytes, std::memory_order_relaxed); }
 
 InputFile::InputFile(const std::string& path) : path_(path) {
+  // A device is not even opened where that can be helped (opening some has effects: a tape rewinds, a modem
+  // line is taken); the check after opening is the one that counts, as the path may change in between.
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) failLoad(path, notRegular(st));
   fd_ = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
   if (fd_ < 0) failLoad(path, std::string("cannot open: ") + std::strerror(errno));
-  struct stat st {};
   std::string refusal;
   if (::fstat(fd_, &st) != 0)
     refusal = std::string("cannot read: ") + std::strerror(errno);
   else if (!S_ISREG(st.st_mode))
-    refusal = std::string("is ") + kindOf(st.st_mode) + ", not a file that can be loaded";
+    refusal = notRegular(st);
   else if (uint64_t(st.st_size) > maxInputFileBytes())
     refusal = "is " + std::to_string(uint64_t(st.st_size)) + " bytes, larger than the " + gib(maxInputFileBytes()) +
               " a file may be (--max-file-gib raises the limit)";
