@@ -17,19 +17,28 @@
 #include "image/aov_io.h"
 #include "image/image_io.h"
 #include "scene/builtin_scenes.h"
+#include "scene/loaders/file_bytes.h"
+#include "scene/loaders/load_diagnostics.h"
 
 using namespace candela;
 
 namespace {
 
-// The scene cache is on for the commands; the library's default is off.
-void addSceneCacheOptions(CLI::App& cmd, SceneCacheSettings& cache) {
+// How scene files are read. The scene cache is on for the commands; the library's default is off.
+void addSceneInputOptions(CLI::App& cmd, SceneCacheSettings& cache, OutsidePaths& outsidePaths) {
   cache.enabled = true;
   cmd.add_flag_callback("--no-cache", [&cache] { cache.enabled = false; },
                         "Load models afresh, neither reading nor writing the scene cache");
   cmd.add_option("--cache-dir", cache.directory,
                  "Folder of the scene cache (default: $CANDELA_CACHE_DIR, else $XDG_CACHE_HOME/candela, else "
                  "~/.cache/candela)");
+  cmd.add_flag_callback("--allow-outside-paths", [&outsidePaths] { outsidePaths = OutsidePaths::Allowed; },
+                        "Let models and scene files read files outside their own folders (refused by default; "
+                        "such models bypass the scene cache)");
+  cmd.add_option_function<double>(
+         "--max-file-gib", [](double gib) { setMaxInputFileBytes(uint64_t(gib * double(1 << 30))); },
+         "Largest file a scene may read, in GiB (default: " + std::to_string(kDefaultMaxInputFileBytes >> 30) + ")")
+      ->check(CLI::Range(0.001, 1e6));
 }
 
 void addSamplerOption(CLI::App& cmd, SamplerKind& sampler) {
@@ -48,7 +57,7 @@ void addRenderOptions(CLI::App& cmd, RenderJob& job) {
   cmd.add_option("scene", job.sceneSpec, "Scene file (.obj, .gltf, .glb, .json) or built-in scene (" + scenes + ")")
       ->capture_default_str();
   cmd.add_option("--env", job.environmentPath, "Environment map (.hdr or .exr) that lights the scene");
-  addSceneCacheOptions(cmd, job.sceneCache);
+  addSceneInputOptions(cmd, job.sceneCache, job.outsidePaths);
   cmd.add_option("--spp", job.samplesPerPixel, "Samples per pixel")
       ->check(CLI::Range(1u, 1u << 24))
       ->capture_default_str();
@@ -185,9 +194,9 @@ int runBench(const RenderJob& job) {
   return 0;
 }
 
-int runLoad(const std::string& spec, const SceneCacheSettings& cache) {
+int runLoad(const std::string& spec, const SceneLoadOptions& options) {
   auto start = std::chrono::steady_clock::now();
-  Scene scene = loadScene(spec, {{}, cache});
+  Scene scene = loadScene(spec, options);
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   size_t vertices = 0;
   for (const Mesh& m : scene.meshes) vertices += m.positions.size();
@@ -212,7 +221,7 @@ void addViewOptions(CLI::App& cmd, ViewerOptions& options, std::string& toneMapp
   cmd.add_option("scene", options.sceneSpec, "Scene file (.obj, .gltf, .glb, .json) or built-in scene (" + scenes + ")")
       ->capture_default_str();
   cmd.add_option("--env", options.environmentPath, "Environment map (.hdr or .exr) that lights the scene");
-  addSceneCacheOptions(cmd, options.sceneCache);
+  addSceneInputOptions(cmd, options.sceneCache, options.outsidePaths);
   cmd.add_option("--backend", options.backend, "auto, cpu or optix (in this build: " + availableBackends() + ")")
       ->check(CLI::IsMember({"auto", "cpu", "optix"}))
       ->capture_default_str();
@@ -334,8 +343,8 @@ int main(int argc, char** argv) {
   std::string inspectSpec;
   CLI::App* inspect = app.add_subcommand("load", "Load a scene and print its size and loading time as one JSON object");
   inspect->add_option("scene", inspectSpec, "Scene file or built-in scene")->required();
-  SceneCacheSettings inspectCache;
-  addSceneCacheOptions(*inspect, inspectCache);
+  SceneLoadOptions inspectOptions;
+  addSceneInputOptions(*inspect, inspectOptions.cache, inspectOptions.outsidePaths);
 
   try {
     app.parse(argc, argv);
@@ -356,15 +365,18 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (*inspect) return runLoad(inspectSpec, inspectCache);
+    if (*inspect) return runLoad(inspectSpec, inspectOptions);
     if (*render) {
       display.toneMapper = parseToneMapper(toneMapper);
       return runRender(renderJob, output, display);
     }
     if (*view) return runView(viewOptions, viewToneMapper);
     return runBench(benchJob);
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "candela: not enough memory for the %s command\n", app.get_subcommands().front()->get_name().c_str());
+    return 1;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "candela: %s\n", e.what());
+    std::fprintf(stderr, "candela: %s\n", printableText(e.what()).c_str());
     return 1;
   }
 }

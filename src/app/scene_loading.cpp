@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <new>
 #include <stdexcept>
 
 #include "core/bounds.h"
@@ -18,23 +19,42 @@ namespace candela {
 
 namespace {
 
-Scene loadModel(const std::string& path, const SceneCacheSettings& cache, LoadWarnings& warnings) {
+Scene loadModel(const std::string& path, const SceneLoadOptions& options, LoadWarnings& warnings) {
+  SceneCacheSettings cache = options.cache;
+  cache.enabled &= options.outsidePaths == OutsidePaths::Refused;
   return loadThroughSceneCache(path, cache, warnings, [&](LoadWarnings& w) {
-    return lowerCaseExtension(path) == ".obj" ? loadObj(path, w) : loadGltf(path, w);
+    return lowerCaseExtension(path) == ".obj" ? loadObj(path, w, options.outsidePaths)
+                                              : loadGltf(path, w, options.outsidePaths);
   });
 }
 
-Scene loadFile(const std::string& path, const SceneCacheSettings& cache, LoadWarnings& warnings) {
+// A file whose content asks for more memory than there is (a model of more triangles than fit) is refused with
+// a sentence naming it rather than std::bad_alloc's name.
+template <class Load>
+auto withMemoryReported(const std::string& file, Load load) {
+  try {
+    return load();
+  } catch (const std::bad_alloc&) {
+    throw std::runtime_error(printableText(file) + ": not enough memory to load it");
+  }
+}
+
+Scene loadFile(const std::string& path, const SceneLoadOptions& options, LoadWarnings& warnings) {
   std::string ext = lowerCaseExtension(path);
-  if (ext == ".obj" || ext == ".gltf" || ext == ".glb") return loadModel(path, cache, warnings);
+  if (ext == ".obj" || ext == ".gltf" || ext == ".glb")
+    return withMemoryReported(path, [&] { return loadModel(path, options, warnings); });
   if (ext == ".json")
     return loadSceneFile(
-        path, [&](const std::string& model, LoadWarnings& w) { return loadModel(model, cache, w); }, warnings);
+        path,
+        [&](const std::string& model, LoadWarnings& w) {
+          return withMemoryReported(model, [&] { return loadModel(model, options, w); });
+        },
+        warnings, options.outsidePaths);
   std::string names;
   for (const std::string& n : builtinSceneNames()) names += (names.empty() ? "" : ", ") + n;
   if (!std::filesystem::exists(path))
-    throw std::runtime_error("unknown scene '" + path + "': not a file, nor a built-in scene (" + names + ")");
-  throw std::runtime_error(path + ": unknown scene format '" + ext + "' (use .obj, .gltf, .glb or .json, or a built-in scene: " + names +
+    throw std::runtime_error("unknown scene '" + printableText(path) + "': not a file, nor a built-in scene (" + names + ")");
+  throw std::runtime_error(printableText(path) + ": unknown scene format '" + printableText(ext) + "' (use .obj, .gltf, .glb or .json, or a built-in scene: " + names +
                            ")");
 }
 
@@ -61,13 +81,16 @@ void frameSceneBounds(Scene& scene) {
 Scene loadScene(const std::string& spec, const SceneLoadOptions& options) {
   Scene scene;
   LoadWarnings warnings;
-  if (!makeBuiltinScene(spec, scene)) scene = loadFile(spec, options.cache, warnings);
+  if (!makeBuiltinScene(spec, scene))
+    scene = withMemoryReported(spec, [&] { return loadFile(spec, options, warnings); });
   if (!options.environmentPath.empty()) {
     Environment env;
-    env.map = loadEnvironmentImage(options.environmentPath);
+    const std::string& map = options.environmentPath;
+    env.map = withMemoryReported(map, [&] { return loadEnvironmentImage(map); });
     scene.environment = std::move(env);
   }
-  for (const std::string& w : warnings.messages) std::fprintf(stderr, "candela: warning: %s\n", w.c_str());
+  for (const std::string& w : warnings.messages)
+    std::fprintf(stderr, "candela: warning: %s\n", printableText(w).c_str());
   if (scene.cameraMissing) frameSceneBounds(scene);
   return scene;
 }

@@ -1,6 +1,8 @@
 // libFuzzer entry point for the glTF loader (.gltf text or .glb bytes, no external files).
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
+#include <string>
 
 #include "scene/loaders/gltf_loader.h"
 
@@ -9,7 +11,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {
     candela::Scene scene = candela::loadGltfBytes("fuzz.gltf", data, size, warnings);
     candela::validateScene(scene);
-  } catch (const candela::LoadError&) {
+  } catch (const candela::LoadError& e) {
+    // Messages quote the input: they must reach a terminal as one printable line (load_diagnostics.h).
+    if (candela::printableText(e.what()) != e.what()) std::abort();
   }
+  for (const std::string& w : warnings.messages)
+    if (candela::printableText(w) != w) std::abort();
   return 0;
 }

@@ -1,6 +1,8 @@
 // libFuzzer entry point for the OBJ loader: any text must load or throw LoadError, never crash or hang.
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
+#include <string>
 #include <string_view>
 
 #include "scene/loaders/obj_loader.h"
@@ -10,7 +12,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {
     candela::Scene scene = candela::loadObjText("fuzz.obj", {reinterpret_cast<const char*>(data), size}, warnings);
     candela::validateScene(scene);
-  } catch (const candela::LoadError&) {
+  } catch (const candela::LoadError& e) {
+    // Messages quote the input: they must reach a terminal as one printable line (load_diagnostics.h).
+    if (candela::printableText(e.what()) != e.what()) std::abort();
   }
+  for (const std::string& w : warnings.messages)
+    if (candela::printableText(w) != w) std::abort();
   return 0;
 }

@@ -79,7 +79,7 @@ TEST(SceneFile, ModelsTransformsOverridesCameraEnvironmentAndSettings) {
 TEST(SceneFile, ErrorsNameTheJsonPathOrLine) {
   TempFolder dir;
   dir.write("t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-  EXPECT_NE(errorOf(dir, "{\n  \"models\": [\n    {\"file\": \"t.obj\"},,\n  ]\n}").find("s.json:3: invalid JSON"),
+  EXPECT_NE(errorOf(dir, "{\n  \"models\": [\n    {\"file\": \"t.obj\"},,\n  ]\n}").find("s.json:3:23: invalid JSON"),
             std::string::npos);
   EXPECT_NE(errorOf(dir, R"({"models": [{"file": "t.obj", "transform": {"scale": "big"}}]})")
                 .find("s.json: models[0].transform.scale: expected 3 numbers"),

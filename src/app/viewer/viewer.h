@@ -5,6 +5,7 @@
 #include "app/viewer/post_settings.h"
 #include "core/path_sampler.h"
 #include "scene/cache/scene_cache.h"
+#include "scene/loaders/path_confinement.h"
 
 namespace candela {
 
@@ -12,6 +13,7 @@ struct ViewerOptions {
   std::string sceneSpec = "cornell-box";
   std::string environmentPath;  // an .hdr or .exr map that lights the first scene instead of its own
   SceneCacheSettings sceneCache;
+  OutsidePaths outsidePaths = OutsidePaths::Refused;  // whether models may refer to files outside their folders
   std::string backend = "auto";
   bool interop = true;  // false: the image reaches the screen through the host copy even where interop works
   uint32_t width = 960;  // of the image; the panel sits beside it

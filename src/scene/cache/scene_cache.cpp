@@ -1,5 +1,6 @@
 #include "scene/cache/scene_cache.h"
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 #include <xxhash.h>
@@ -82,8 +83,14 @@ void writeSceneCache(const std::string& cacheFile, const std::string& modelPath,
 }
 
 SceneCacheRead readSceneCache(const std::string& cacheFile, const std::string& modelPath, CachedScene& out) {
-  File file(std::fopen(cacheFile.c_str(), "rb"), &std::fclose);
-  if (!file) return SceneCacheRead::Missing;
+  // Opened without blocking, so that a FIFO in its place is found not to be a regular file below.
+  const int fd = ::open(cacheFile.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) return SceneCacheRead::Missing;
+  File file(::fdopen(fd, "rb"), &std::fclose);
+  if (!file) {
+    ::close(fd);
+    return SceneCacheRead::Missing;
+  }
   struct stat st;
   if (::fstat(::fileno(file.get()), &st) != 0 || !S_ISREG(st.st_mode)) return SceneCacheRead::Damaged;
   BinaryReader in(file.get(), uint64_t(st.st_size));

@@ -14,7 +14,9 @@
 
 #include "scene/loaders/file_bytes.h"
 #include "scene/loaders/gltf_accessors.h"
+#include "scene/loaders/gltf_buffer_uris.h"
 #include "scene/loaders/gltf_materials.h"
+#include "scene/loaders/path_confinement.h"
 #include "scene/loaders/texture_table.h"
 #include "scene/transform.h"
 
@@ -63,37 +65,51 @@ std::string firstLine(const std::string& s) {
   return line;
 }
 
-std::string percentDecode(const std::string& uri) {
-  std::string out;
-  for (size_t i = 0; i < uri.size(); ++i) {
-    if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit((unsigned char)uri[i + 1]) &&
-        std::isxdigit((unsigned char)uri[i + 2])) {
-      out += char(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
-      i += 2;
-    } else {
-      out += uri[i];
-    }
-  }
-  return out;
-}
-
+// tinygltf's file callbacks, which read the external buffers of a .gltf. tinygltf decodes a buffer's URI its
+// own way and looks for it in the glTF file's folder ("<baseDir>/<path>") and then in the working directory
+// ("./<path>"): the second is never answered; the first is decoded again from the URI as written, and must stay
+// inside the folder that `rule` allows.
 struct FileAccess {
   std::string baseDir;  // empty: nothing outside the given bytes may be read
+  PathRule rule;
+  std::string_view json;  // the glTF's JSON, read for its buffer URIs when the first one is asked about
+  std::optional<GltfBufferUris> bufferUris;
   std::vector<std::string> filesRead;  // buffers, for Scene::inputFiles
+  std::string refusal;  // why the last path asked about may not be read
+
+  // The path tinygltf asks about, when it is one in the glTF file's folder and may be read.
+  std::optional<std::string> allowed(const std::string& path) {
+    const std::string prefix = baseDir.empty() || baseDir.back() == '/' ? baseDir : baseDir + "/";
+    if (baseDir.empty() || path.compare(0, prefix.size(), prefix) != 0) return std::nullopt;
+    const std::string decoded = path.substr(prefix.size());
+    if (!bufferUris) bufferUris.emplace(json);
+    std::optional<std::string> reference = bufferUris->pathFor(decoded);
+    if (!reference) {
+      refusal = "buffer '" + decoded + "' names no file (a relative path with valid %-escapes)";
+      return std::nullopt;
+    }
+    ResolvedPath resolved = resolveModelPath(baseDir, *reference, rule);
+    if (!resolved.allowed()) {
+      refusal = "buffer '" + *reference + "' " + resolved.refusal;
+      return std::nullopt;
+    }
+    return resolved.path;
+  }
 };
 
 bool fileExists(const std::string& path, void* user) {
-  auto* access = static_cast<FileAccess*>(user);
+  std::optional<std::string> file = static_cast<FileAccess*>(user)->allowed(path);
   std::error_code ec;
-  return !access->baseDir.empty() && fs::is_regular_file(path, ec);
+  return file && fs::exists(*file, ec);
 }
 std::string expandFilePath(const std::string& path, void*) { return path; }
 bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
   auto* access = static_cast<FileAccess*>(user);
-  if (access->baseDir.empty()) return false;
-  access->filesRead.push_back(path);
+  std::optional<std::string> file = access->allowed(path);
+  if (!file) return false;
+  access->filesRead.push_back(*file);
   try {
-    *out = readFileBytes(path);
+    *out = readFileBytes(*file);
     return true;
   } catch (const LoadError& e) {
     if (err) *err += e.what();
@@ -128,8 +144,9 @@ glm::mat4 localTransform(const tinygltf::Node& node) {
 
 class GltfSceneBuilder {
  public:
-  GltfSceneBuilder(const tinygltf::Model& model, std::string file, std::string baseDir, LoadWarnings& warnings)
-      : model_(model), file_(std::move(file)), baseDir_(std::move(baseDir)), warnings_(warnings), accessors_(model, file_) {}
+  GltfSceneBuilder(const tinygltf::Model& model, std::string file, const PathRule& files, LoadWarnings& warnings)
+      : model_(model), file_(std::move(file)), baseDir_(files.folder), warnings_(warnings), accessors_(model, file_),
+        textures_(files) {}
 
   Scene build() {
     scene_.name = fs::path(file_).stem().string();
@@ -391,8 +408,11 @@ class GltfSceneBuilder {
     if (!image.image.empty())
       return textures_.fromMemory(imageWhere, file_ + ": " + imageWhere, image.image, srgb, wrap);
     if (!image.uri.empty() && !baseDir_.empty()) {
-      fs::path path = fs::path(baseDir_) / percentDecode(image.uri);
-      return textures_.fromFile(path.lexically_normal().string(), srgb, wrap);
+      std::optional<std::string> path = uriToPath(image.uri);
+      if (path && !path->empty()) return textures_.fromFile(joinModelPath(baseDir_, *path), srgb, wrap);
+      warnings_.add(file_, imageWhere + ".uri '" + image.uri + "' names no file in the glTF file's folder (a "
+                           "relative path with valid %-escapes); the material is left untextured");
+      return kNoTexture;
     }
     warnings_.add(file_, imageWhere + " has no data; the material is left untextured");
     return kNoTexture;
@@ -413,8 +433,9 @@ class GltfSceneBuilder {
   bool skinned_ = false;
 };
 
-Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, const std::string& baseDir,
+Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, const PathRule& files,
                     LoadWarnings& warnings) {
+  const std::string& baseDir = files.folder;
   if (size == 0) failLoad(name, "file is empty");
   bool binary = isGlb(data, size);
   auto [json, jsonSize] = binary ? glbJson(data, size) : std::pair{reinterpret_cast<const char*>(data), size};
@@ -422,7 +443,7 @@ Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, c
     failLoad(name, "JSON nests deeper than " + std::to_string(kMaxJsonDepth) + " levels");
 
   tinygltf::TinyGLTF loader;
-  FileAccess access{baseDir, {}};
+  FileAccess access{baseDir, files, json ? std::string_view(json, jsonSize) : std::string_view(), {}, {}, {}};
   loader.SetFsCallbacks({&fileExists, &expandFilePath, &readWholeFile, &writeWholeFile, &access});
   loader.SetImageLoader(&keepEncodedImage, nullptr);
   tinygltf::Model model;
@@ -430,28 +451,28 @@ Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, c
   bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, data, unsigned(std::min<size_t>(size, UINT32_MAX)), baseDir)
                    : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(data),
                                                 unsigned(std::min<size_t>(size, UINT32_MAX)), baseDir);
+  if (!ok && !access.refusal.empty()) failLoad(name, access.refusal);
   if (!ok) failLoad(name, err.empty() ? "not a valid glTF file" : firstLine(err));
   std::istringstream lines(warn);
   std::string line;
   while (std::getline(lines, line))
     if (!firstLine(line).empty()) warnings.add(name, firstLine(line));
-  Scene scene = GltfSceneBuilder(model, name, baseDir, warnings).build();
+  Scene scene = GltfSceneBuilder(model, name, files, warnings).build();
   scene.inputFiles.insert(scene.inputFiles.begin(), access.filesRead.begin(), access.filesRead.end());
   return scene;
 }
 
 }  // namespace
 
-Scene loadGltf(const std::string& path, LoadWarnings& warnings) {
+Scene loadGltf(const std::string& path, LoadWarnings& warnings, OutsidePaths outside) {
   std::vector<uint8_t> bytes = readFileBytes(path);
-  std::string baseDir = fs::path(path).parent_path().string();
-  Scene scene = loadFromBytes(path, bytes.data(), bytes.size(), baseDir.empty() ? "." : baseDir, warnings);
+  Scene scene = loadFromBytes(path, bytes.data(), bytes.size(), PathRule::forFile(path, outside), warnings);
   scene.inputFiles.insert(scene.inputFiles.begin(), path);
   return scene;
 }
 
 Scene loadGltfBytes(const std::string& name, const uint8_t* data, size_t size, LoadWarnings& warnings) {
-  return loadFromBytes(name, data, size, "", warnings);
+  return loadFromBytes(name, data, size, PathRule{}, warnings);
 }
 
 }  // namespace candela

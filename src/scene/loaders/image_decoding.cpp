@@ -152,7 +152,10 @@ Texture loadExr(const std::string& path) {
 
 Texture loadEnvironmentImage(const std::string& path) {
   std::string ext = lowerCaseExtension(path);
-  if (ext == ".exr") return loadExr(path);
+  if (ext == ".exr") {
+    const InputFile checked(path);  // OpenEXR opens it by name: a FIFO would block it, a device feed it forever
+    return loadExr(path);
+  }
   std::vector<uint8_t> bytes = readFileBytes(path);
   if (!stbi_is_hdr_from_memory(bytes.data(), int(std::min(bytes.size(), size_t(INT_MAX)))))
     failLoad(path, "an environment map must be a Radiance .hdr or an OpenEXR .exr image");

@@ -19,15 +19,15 @@ namespace fs = std::filesystem;
 // which reads on one thread and holds its own copy of every attribute plus a 12-byte index triple per corner (and
 // a vector per face) before the Scene is built: a 10M-triangle file took 25 s and peaked at 3.6 times the memory
 // of the loaded scene (docs/performance.md). tinyobjloader still parses the material libraries.
-Scene loadObjSource(const std::string& name, ObjTextSource& text, const std::optional<std::string>& directory,
+Scene loadObjSource(const std::string& name, ObjTextSource& text, const std::optional<PathRule>& files,
                     LoadWarnings& warnings, const ObjReadOptions& options) {
-  ObjMaterialLibraries libraries(name, directory, warnings);
+  ObjMaterialLibraries libraries(name, files, warnings);
   ObjGeometry geometry = readObjGeometry(name, text, libraries, warnings, options);
   libraries.reportUnknownNames();
 
   Scene scene;
   scene.name = fs::path(name).stem().string();
-  TextureTable textures;
+  TextureTable textures(files.value_or(PathRule{}));
   for (size_t i = 0; i < libraries.materials().size(); ++i) {
     const tinyobj::material_t& mtl = libraries.materials()[i];
     const std::string& source = libraries.sourceOf(i);
@@ -50,10 +50,10 @@ Scene loadObjSource(const std::string& name, ObjTextSource& text, const std::opt
 
 }  // namespace
 
-Scene loadObj(const std::string& path, LoadWarnings& warnings) {
+Scene loadObj(const std::string& path, LoadWarnings& warnings, OutsidePaths outside) {
   const ObjReadOptions options;
   std::unique_ptr<ObjTextSource> text = openObjTextFile(path, options.windowBytes);
-  Scene scene = loadObjSource(path, *text, fs::path(path).parent_path().string(), warnings, options);
+  Scene scene = loadObjSource(path, *text, PathRule::forFile(path, outside), warnings, options);
   scene.inputFiles.insert(scene.inputFiles.begin(), path);
   return scene;
 }

@@ -4,6 +4,7 @@
 
 #include "scene/loaders/load_diagnostics.h"
 #include "scene/loaders/obj_geometry_reader.h"
+#include "scene/loaders/path_confinement.h"
 #include "scene/scene.h"
 
 namespace candela {
@@ -12,9 +13,9 @@ namespace candela {
 // geometry is parsed in parallel (obj_geometry_reader.h), polygons are triangulated, relative (negative)
 // references resolved, every object and group goes into one mesh with a material per triangle, and missing
 // normals are generated (obj_mesh_builder.h). UVs follow the Mesh convention (v = 0 at the top of the image),
-// so OBJ's v is flipped. A missing .mtl or texture is a warning; malformed geometry throws LoadError naming the
-// file and line.
-Scene loadObj(const std::string& path, LoadWarnings& warnings);
+// so OBJ's v is flipped. A missing .mtl or texture is a warning, and so is one outside the OBJ file's folder
+// unless `outside` allows it (path_confinement.h); malformed geometry throws LoadError naming the file and line.
+Scene loadObj(const std::string& path, LoadWarnings& warnings, OutsidePaths outside = OutsidePaths::Refused);
 
 // The same for OBJ text in memory, with no material libraries; `name` stands for the file in messages.
 Scene loadObjText(const std::string& name, std::string_view text, LoadWarnings& warnings,

@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
+
+#include "scene/loaders/file_bytes.h"
 
 namespace candela {
 
@@ -32,34 +33,41 @@ std::vector<std::string> libraryNames(std::string_view text) {
 
 }  // namespace
 
-ObjMaterialLibraries::ObjMaterialLibraries(std::string objFile, std::optional<std::string> directory,
-                                           LoadWarnings& warnings)
-    : objFile_(std::move(objFile)), directory_(std::move(directory)), warnings_(warnings) {}
+ObjMaterialLibraries::ObjMaterialLibraries(std::string objFile, std::optional<PathRule> files, LoadWarnings& warnings)
+    : objFile_(std::move(objFile)), rule_(std::move(files)), warnings_(warnings) {}
 
 void ObjMaterialLibraries::loadLibraries(size_t line, std::string_view text) {
-  if (!directory_) return;
+  if (!rule_) return;
   std::vector<std::string> names = libraryNames(text);
   if (names.empty()) warnings_.add(objFile_ + ":" + std::to_string(line), "'mtllib' names no file");
   for (const std::string& name : names) load(line, name);
 }
 
 void ObjMaterialLibraries::load(size_t line, const std::string& name) {
-  std::string file = name;
-  std::replace(file.begin(), file.end(), '\\', '/');
-  fs::path path = (fs::path(*directory_) / file).lexically_normal();
-  if (std::find(files_.begin(), files_.end(), path.string()) != files_.end()) return;
-  files_.push_back(path.string());
-  std::ifstream in(path, std::ios::binary);
-  std::error_code ec;
-  if (!in || fs::is_directory(path, ec)) {
-    warnings_.add(objFile_ + ":" + std::to_string(line),
-                  "material library '" + name + "' not found; its materials are replaced by grey");
+  const std::string where = objFile_ + ":" + std::to_string(line);
+  ResolvedPath path = resolveModelPath(rule_->folder, name, *rule_);
+  if (std::find(files_.begin(), files_.end(), path.path) != files_.end()) return;
+  if (!path.allowed()) {
+    warnings_.add(where, "material library '" + name + "' " + path.refusal + "; its materials are replaced by grey");
     return;
   }
+  files_.push_back(path.path);
+  std::vector<uint8_t> bytes;
+  try {
+    bytes = readFileBytes(path.path);
+  } catch (const LoadError& e) {
+    std::error_code ec;
+    const std::string why = fs::exists(path.path, ec) ? std::string("cannot be read (") + e.what() + ")" : "not found";
+    warnings_.add(where, "material library '" + name + "' " + why + "; its materials are replaced by grey");
+    return;
+  }
+  // A UTF-8 byte order mark would hide the first statement from tinyobjloader.
+  const size_t start = bytes.size() >= 3 && bytes[0] == 0xEF && bytes[1] == 0xBB && bytes[2] == 0xBF ? 3 : 0;
+  std::istringstream in(std::string(bytes.begin() + std::ptrdiff_t(start), bytes.end()));
   std::string mtlWarnings, mtlErrors;
   tinyobj::LoadMtl(&index_, &materials_, &in, &mtlWarnings, &mtlErrors);
-  forwardMessages(path.string(), mtlWarnings + mtlErrors);
-  sources_.resize(materials_.size(), path.string());
+  forwardMessages(path.path, mtlWarnings + mtlErrors);
+  sources_.resize(materials_.size(), path.path);
 }
 
 // tinyobjloader's messages, one line each, repeated ones counted.

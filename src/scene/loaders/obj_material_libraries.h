@@ -8,16 +8,18 @@
 
 #include "scene/loaders/load_diagnostics.h"
 #include "scene/loaders/obj_geometry_reader.h"
+#include "scene/loaders/path_confinement.h"
 
 namespace candela {
 
 // The material libraries an OBJ file names, parsed by tinyobjloader's MTL reader, and the lookups of the file's
 // "usemtl" statements. Every library of an "mtllib" statement is read, relative to the OBJ file's directory (a
-// '\' escapes a space in a name); a missing one is a warning, and so is a material name found in none.
+// '\' escapes a space in a name); a missing one is a warning, and so is one that `files` does not allow
+// (outside the OBJ file's folder), and a material name found in none.
 class ObjMaterialLibraries : public ObjMaterialResolver {
  public:
-  // Without a `directory` (text that is not a file) "mtllib" statements are ignored.
-  ObjMaterialLibraries(std::string objFile, std::optional<std::string> directory, LoadWarnings& warnings);
+  // Without `files` (text that is not a file) "mtllib" statements are ignored.
+  ObjMaterialLibraries(std::string objFile, std::optional<PathRule> files, LoadWarnings& warnings);
 
   void loadLibraries(size_t line, std::string_view names) override;
   uint32_t find(size_t line, std::string_view name) override;
@@ -34,7 +36,7 @@ class ObjMaterialLibraries : public ObjMaterialResolver {
   void forwardMessages(const std::string& file, const std::string& text);
 
   std::string objFile_;
-  std::optional<std::string> directory_;
+  std::optional<PathRule> rule_;
   LoadWarnings& warnings_;
   std::vector<tinyobj::material_t> materials_;
   std::map<std::string, int> index_;

@@ -1,7 +1,5 @@
 #include "scene/loaders/obj_text_source.h"
 
-#include <fcntl.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -9,6 +7,7 @@
 #include <cstring>
 #include <vector>
 
+#include "scene/loaders/file_bytes.h"
 #include "scene/loaders/load_diagnostics.h"
 
 namespace candela {
@@ -21,9 +20,14 @@ size_t wholeLines(std::string_view piece) {
   return last == std::string_view::npos ? 0 : last + 1;
 }
 
+// A UTF-8 byte order mark, which some editors write at the start of a text file: it is no part of the first
+// statement (which would otherwise not be recognised, losing the first vertex).
+size_t byteOrderMarkLength(std::string_view start) { return start.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0; }
+
 class MemoryText : public ObjTextSource {
  public:
-  MemoryText(std::string_view text, size_t windowBytes) : text_(text), windowBytes_(std::max<size_t>(windowBytes, 1)) {}
+  MemoryText(std::string_view text, size_t windowBytes)
+      : text_(text), windowBytes_(std::max<size_t>(windowBytes, 1)), position_(byteOrderMarkLength(text)) {}
 
   Window next() override {
     const size_t start = position_;
@@ -45,16 +49,15 @@ class MemoryText : public ObjTextSource {
  private:
   std::string_view text_;
   size_t windowBytes_;
-  size_t position_ = 0;
+  size_t position_;
 };
 
 class FileText : public ObjTextSource {
  public:
-  FileText(std::string path, int fd, size_t windowBytes)
-      : path_(std::move(path)), fd_(fd), buffer_(std::max<size_t>(windowBytes, 1)) {}
-  ~FileText() override { ::close(fd_); }
-  FileText(const FileText&) = delete;
-  FileText& operator=(const FileText&) = delete;
+  FileText(const std::string& path, size_t windowBytes)
+      // No larger than the file, so that a small file costs no large buffer; 4 bytes at least, to see a whole
+      // byte order mark.
+      : file_(path), buffer_(std::max<uint64_t>(std::min<uint64_t>(windowBytes, file_.size()), 4)) {}
 
   Window next() override {
     std::memmove(buffer_.data(), buffer_.data() + handedOver_, filled_ - handedOver_);
@@ -62,11 +65,18 @@ class FileText : public ObjTextSource {
     offset_ += handedOver_;
     for (;;) {
       while (!atEnd_ && filled_ < buffer_.size()) {
-        ssize_t n = ::read(fd_, buffer_.data() + filled_, buffer_.size() - filled_);
+        // No further than the size the file had when it was opened: one that grows is not followed without end.
+        uint64_t left = file_.size() - std::min(file_.size(), offset_ + filled_);
+        size_t wanted = size_t(std::min<uint64_t>(buffer_.size() - filled_, left));
+        ssize_t n = ::read(file_.descriptor(), buffer_.data() + filled_, wanted);
         if (n < 0 && errno == EINTR) continue;
-        if (n < 0) failLoad(path_, std::string("read error: ") + std::strerror(errno));
+        if (n < 0) failLoad(file_.path(), std::string("read error: ") + std::strerror(errno));
         if (n == 0) atEnd_ = true;
         filled_ += size_t(n);
+      }
+      if (offset_ == 0 && handedOver_ == 0 && byteOrderMarkLength({buffer_.data(), filled_}) > 0) {
+        handedOver_ = byteOrderMarkLength({buffer_.data(), filled_});
+        return next();
       }
       std::string_view data(buffer_.data(), filled_);
       handedOver_ = atEnd_ ? filled_ : wholeLines(data);
@@ -79,17 +89,18 @@ class FileText : public ObjTextSource {
     std::string text(size, '\0');
     size_t done = 0;
     while (done < size) {
-      ssize_t n = ::pread(fd_, text.data() + done, size - done, off_t(offset + done));
+      ssize_t n = ::pread(file_.descriptor(), text.data() + done, size - done, off_t(offset + done));
       if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) failLoad(path_, n == 0 ? std::string("changed while it was read") : std::string("read error: ") + std::strerror(errno));
+      if (n <= 0)
+        failLoad(file_.path(),
+                 n == 0 ? std::string("changed while it was read") : std::string("read error: ") + std::strerror(errno));
       done += size_t(n);
     }
     return text;
   }
 
  private:
-  std::string path_;
-  int fd_;
+  InputFile file_;
   std::vector<char> buffer_;
   size_t filled_ = 0, handedOver_ = 0;
   uint64_t offset_ = 0;
@@ -99,17 +110,7 @@ class FileText : public ObjTextSource {
 }  // namespace
 
 std::unique_ptr<ObjTextSource> openObjTextFile(const std::string& path, size_t windowBytes) {
-  int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) failLoad(path, std::string("cannot open: ") + std::strerror(errno));
-  struct stat st {};
-  const bool known = ::fstat(fd, &st) == 0;
-  if (known && S_ISDIR(st.st_mode)) {
-    ::close(fd);
-    failLoad(path, "is a directory");
-  }
-  // No larger than the file, so that a small file costs no large buffer.
-  size_t buffer = known ? std::min(windowBytes, size_t(std::max<off_t>(st.st_size, 1))) : windowBytes;
-  return std::make_unique<FileText>(path, fd, buffer);
+  return std::make_unique<FileText>(path, windowBytes);
 }
 
 std::unique_ptr<ObjTextSource> objTextInMemory(std::string_view text, size_t windowBytes) {

@@ -23,8 +23,9 @@ class ObjTextSource {
   virtual std::string reread(uint64_t offset, size_t size) = 0;
 };
 
-// A file, read in windows of about `windowBytes` (more where a line is longer). Throws LoadError naming the
-// file when it cannot be opened or read.
+// A file, read in windows of about `windowBytes` (more where a line is longer), opened as InputFile
+// (file_bytes.h) does: a regular file no larger than the limit. Throws LoadError naming the file when it cannot
+// be opened or read. Both sources skip a UTF-8 byte order mark at the start; offsets still count its bytes.
 std::unique_ptr<ObjTextSource> openObjTextFile(const std::string& path, size_t windowBytes);
 
 // Text in memory, which must outlive the source.

@@ -10,6 +10,7 @@
 
 #include "scene/loaders/file_bytes.h"
 #include "scene/loaders/image_decoding.h"
+#include "scene/loaders/path_confinement.h"
 #include "scene/transform.h"
 
 namespace candela {
@@ -141,13 +142,55 @@ void overrideMaterial(Material& m, const Node& o, LoadWarnings& warnings) {
     o.fail("colours must not be negative");
 }
 
-std::string resolve(const fs::path& base, const std::string& relative) {
-  fs::path p(relative);
-  return (p.is_absolute() ? p : base / p).lexically_normal().string();
+// The file a scene file names. A relative path follows the rule of a model's references (path_confinement.h),
+// since a scene file may come in one bundle with its models from an untrusted place. An absolute path is its
+// author's deliberate choice (the viewer saves views naming their models so) and is taken as it is.
+std::string resolve(const Node& name, const PathRule& rule) {
+  const bool absolute = fs::path(name.string()).is_absolute();
+  const PathRule asWritten{rule.folder, OutsidePaths::Allowed};
+  ResolvedPath path = resolveModelPath(rule.folder, name.string(), absolute ? asWritten : rule);
+  if (!path.allowed()) name.fail("'" + name.string() + "' " + path.refusal);
+  return path.path;
 }
 
-size_t lineOfOffset(const std::string& text, size_t offset) {
-  return size_t(std::count(text.begin(), text.begin() + std::ptrdiff_t(std::min(offset, text.size())), '\n')) + 1;
+// Where byte `offset` of `text` is: "12:5" (line and column, from 1).
+std::string placeOfOffset(const std::string& text, size_t offset) {
+  offset = std::min(offset, text.size());
+  size_t lineStart = text.rfind('\n', offset == 0 ? std::string::npos : offset - 1);
+  lineStart = lineStart == std::string::npos ? 0 : lineStart + 1;
+  size_t line = size_t(std::count(text.begin(), text.begin() + std::ptrdiff_t(lineStart), '\n')) + 1;
+  return std::to_string(line) + ":" + std::to_string(offset - lineStart + 1);
+}
+
+// nlohmann's DOM builder that keeps where parsing failed instead of throwing: not every error says (a number
+// too large for a double, out_of_range.406, carries no position).
+class PlacedDomParser : public nlohmann::detail::json_sax_dom_parser<json> {
+ public:
+  explicit PlacedDomParser(json& result) : json_sax_dom_parser(result, /*allow_exceptions=*/false) {}
+
+  bool parse_error(std::size_t position, const std::string& token, const json::exception& e) {
+    // `position` counts the characters read: for a number out of range, those of the number too (the start
+    // of which is the place to show); for a syntax error, up to the offending character.
+    const size_t back = dynamic_cast<const json::out_of_range*>(&e) ? token.size() : 1;
+    errorOffset = position >= back ? position - back : 0;
+    error = e.what();
+    size_t tag = error.find("] ");  // "[json.exception.parse_error.101] parse error at line 1, column 2: ..."
+    if (tag != std::string::npos) error = error.substr(tag + 2);
+    size_t located = error.find(": ");
+    if (error.rfind("parse error at line", 0) == 0 && located != std::string::npos) error = error.substr(located + 2);
+    return false;
+  }
+
+  std::string error;
+  size_t errorOffset = 0;
+};
+
+json parseJson(const std::string& path, const std::string& text) {
+  json doc;
+  PlacedDomParser parser(doc);
+  if (!json::sax_parse(text, &parser))
+    failLoad(path + ":" + placeOfOffset(text, parser.errorOffset), "invalid JSON: " + parser.error);
+  return doc;
 }
 
 }  // namespace
@@ -175,19 +218,11 @@ void appendScene(Scene& scene, Scene&& part, const Affine3x4& transform) {
     scene.instances.push_back({inst.meshId + meshBase, toAffine(outer * toMat4(inst.objectToWorld))});
 }
 
-Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadWarnings& warnings) {
+Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadWarnings& warnings,
+                    OutsidePaths outside) {
   std::vector<uint8_t> bytes = readFileBytes(path);
-  std::string text(bytes.begin(), bytes.end());
-  json doc;
-  try {
-    doc = json::parse(text);
-  } catch (const json::parse_error& e) {
-    std::string what = e.what();
-    size_t colon = what.find("]: ");
-    what = colon == std::string::npos ? what : what.substr(colon + 3);
-    failLoad(path, lineOfOffset(text, e.byte > 0 ? e.byte - 1 : 0), "invalid JSON: " + what);
-  }
-  const fs::path base = fs::path(path).parent_path();
+  const json doc = parseJson(path, std::string(bytes.begin(), bytes.end()));
+  const PathRule files = PathRule::forFile(path, outside);
   Node root(doc, "", path);
   root.expectObject({"models", "camera", "environment", "render"}, warnings);
 
@@ -199,7 +234,7 @@ Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadW
   for (size_t i = 0; i < models.size(); ++i) {
     Node model = models.at(i);
     model.expectObject({"file", "transform", "materials"}, warnings);
-    std::string file = resolve(base, model["file"].string());
+    std::string file = resolve(model["file"], files);
     std::string ext = fs::path(file).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
     if (ext != ".obj" && ext != ".gltf" && ext != ".glb") model["file"].fail("models must be .obj, .gltf or .glb files");
@@ -254,7 +289,7 @@ Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadW
     Node e = root["environment"];
     e.expectObject({"map", "radiance", "intensity", "rotation_degrees", "visible"}, warnings);
     Environment env;
-    if (e.has("map")) env.map = loadEnvironmentImage(resolve(base, e["map"].string()));
+    if (e.has("map")) env.map = loadEnvironmentImage(resolve(e["map"], files));
     if (e.has("radiance")) env.radiance = e["radiance"].vec3();
     if (env.radiance.x < 0 || env.radiance.y < 0 || env.radiance.z < 0) e["radiance"].fail("must not be negative");
     if (e.has("intensity")) env.intensity = e["intensity"].number(0.0f, 1e30f);

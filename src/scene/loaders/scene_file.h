@@ -3,16 +3,21 @@
 #include <string>
 
 #include "scene/loaders/load_diagnostics.h"
+#include "scene/loaders/path_confinement.h"
 #include "scene/scene.h"
 
 namespace candela {
 
 // Loads a JSON scene file (docs/scene-file.md describes the format): models (.obj, .gltf, .glb) with transforms
 // and material overrides, a camera (thin lens included), an environment and render settings. Paths are relative
-// to the scene file. `loadModel` loads one model file (the caller decides about caching). Errors throw LoadError
-// naming the file and the JSON path ("scene.json: models[1].transform.scale: expected a number or 3 numbers").
+// to the scene file and must lead inside its folder unless `outside` allows others (path_confinement.h);
+// absolute paths are taken as they are.
+// `loadModel` loads one model file (the caller decides about caching, and about the rule for the model's own
+// references). Errors throw LoadError naming the file and the JSON path ("scene.json: models[1].transform.scale:
+// expected a number or 3 numbers"), or the line and column of invalid JSON ("scene.json:3:7: invalid JSON: ...").
 using ModelLoader = std::function<Scene(const std::string& path, LoadWarnings& warnings)>;
-Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadWarnings& warnings);
+Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadWarnings& warnings,
+                    OutsidePaths outside = OutsidePaths::Refused);
 
 // Appends `part` to `scene` under `transform`: meshes, materials and textures are renumbered.
 void appendScene(Scene& scene, Scene&& part, const Affine3x4& transform);

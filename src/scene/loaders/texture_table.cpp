@@ -19,6 +19,7 @@ int32_t TextureTable::fromFile(const std::string& path, bool srgb, TextureWrap w
   Request r;
   r.name = path;
   r.path = path;
+  r.refusal = confineModelPath(path, rule_).refusal;
   r.srgb = srgb;
   r.wrap = wrap;
   return add("file:" + path, std::move(r));
@@ -40,6 +41,7 @@ void TextureTable::finish(Scene& scene, size_t firstMaterial, LoadWarnings& warn
   tbb::parallel_for(size_t(0), requests_.size(), [&](size_t i) {
     Request& r = requests_[i];
     try {
+      if (!r.refusal.empty()) failLoad(r.path, r.refusal);
       if (!r.path.empty()) r.bytes = readFileBytes(r.path);
       decoded[i] = decodeImage(r.name, r.bytes.data(), r.bytes.size(), r.srgb);
       decoded[i]->wrap = r.wrap;
@@ -51,7 +53,7 @@ void TextureTable::finish(Scene& scene, size_t firstMaterial, LoadWarnings& warn
 
   std::vector<int32_t> finalIndex(requests_.size(), kNoTexture);
   for (size_t i = 0; i < requests_.size(); ++i) {
-    if (!requests_[i].path.empty()) scene.inputFiles.push_back(requests_[i].path);
+    if (!requests_[i].path.empty() && requests_[i].refusal.empty()) scene.inputFiles.push_back(requests_[i].path);
     if (!decoded[i]) {
       warnings.messages.push_back(failures[i] + " (the texture is left out)");
       continue;
