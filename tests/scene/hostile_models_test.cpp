@@ -2,14 +2,22 @@
 // must load (or be refused) in seconds.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <chrono>
 #include <cmath>
 #include <string>
 
+#include "app/scene_loading.h"
+#include "scene/loaders/gltf_loader.h"
 #include "scene/loaders/obj_loader.h"
+#include "scene/scene_repair.h"
+#include "scene/scene_test_files.h"
 
 namespace candela {
 namespace {
+
+using nlohmann::json;
 
 constexpr double kSecondsAllowed = 20.0;  // each case takes well under a second in a release build
 
@@ -82,6 +90,74 @@ TEST(HostileObj, APositionWithManyTextureCoordinatesSharesVerticesInLinearTime) 
   Scene s = loadObjTimed(text, warnings);
   EXPECT_EQ(s.triangleCount(), size_t(uvs));
   EXPECT_EQ(s.meshes[0].positions.size(), size_t(uvs) + 2) << "one vertex per texture coordinate, shared otherwise";
+}
+
+// One triangle, positions only, and the node graph a test gives.
+json triangleGltf(const json& nodes, const json& rootNodes) {
+  return {
+      {"asset", {{"version", "2.0"}}},
+      {"buffers",
+       {{{"byteLength", 36},
+         {"uri", "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}}}},
+      {"bufferViews", {{{"buffer", 0}, {"byteLength", 36}}}},
+      {"accessors", {{{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}}}},
+      {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}}}}}}},
+      {"nodes", nodes},
+      {"scenes", {{{"nodes", rootNodes}}}},
+  };
+}
+
+std::string gltfError(const json& gltf) {
+  const std::string text = gltf.dump();
+  LoadWarnings warnings;
+  Stopwatch clock;
+  try {
+    loadGltfBytes("hostile.gltf", reinterpret_cast<const uint8_t*>(text.data()), text.size(), warnings);
+  } catch (const LoadError& e) {
+    EXPECT_LT(clock.seconds(), kSecondsAllowed);
+    return e.what();
+  }
+  return "";
+}
+
+TEST(HostileGltf, RepeatedChildrenAreRefusedInsteadOfVisitedExponentiallyOften) {
+  // Node i lists node i + 1 twice: 2^40 paths to the last node.
+  json nodes = json::array();
+  for (int i = 0; i < 40; ++i) nodes.push_back({{"mesh", 0}, {"children", {i + 1, i + 1}}});
+  nodes.push_back({{"mesh", 0}});
+  std::string error = gltfError(triangleGltf(nodes, {0}));
+  EXPECT_EQ(error,
+            "hostile.gltf: nodes[40]: listed again in nodes[39].children; a node may have only one parent and be "
+            "listed once");
+}
+
+TEST(HostileGltf, NodesWithTwoParentsOrListedTwiceAsRootsAreRefused) {
+  json twoParents = {{{"children", {2}}}, {{"children", {2}}}, {{"mesh", 0}}};
+  EXPECT_NE(gltfError(triangleGltf(twoParents, {0, 1}))
+                .find("hostile.gltf: nodes[2]: listed again in nodes[1].children"),
+            std::string::npos);
+  EXPECT_NE(gltfError(triangleGltf({{{"mesh", 0}}}, {0, 0})).find("nodes[0]: listed again in scenes[0].nodes"),
+            std::string::npos);
+}
+
+TEST(HostileGltf, CyclesAreRefusedNamingTheNode) {
+  json cycle = {{{"children", {1}}}, {{"mesh", 0}, {"children", {0}}}};
+  EXPECT_EQ(gltfError(triangleGltf(cycle, {0})),
+            "hostile.gltf: nodes[0]: the node is its own ancestor (a cycle through nodes[1].children)");
+}
+
+TEST(HostileGltf, AFlattenedNodeIsDroppedWithAWarningByTheSceneRepair) {
+  test::TempFolder dir;
+  json nodes = {{{"mesh", 0}}, {{"mesh", 0}, {"scale", {1, 1, 0}}}};
+  std::string file = dir.write("flat.gltf", triangleGltf(nodes, {0, 1}).dump());
+  LoadWarnings warnings;
+  Scene s = loadGltf(file, warnings);
+  repairScene(s, file, warnings);
+  EXPECT_EQ(s.instances.size(), 1u);
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_NE(warnings.messages[0].find("flat.gltf: 1 instances dropped: their transform is not finite, is singular"),
+            std::string::npos);
+  EXPECT_EQ(loadScene(file).instances.size(), 1u) << "loading repairs";
 }
 
 }  // namespace
