@@ -252,6 +252,28 @@ TEST(SceneRepair, LoadSceneRepairsModelsAlsoFromTheCache) {
   EXPECT_FALSE(std::filesystem::is_empty(dir.file("cache")));
 }
 
+TEST(SceneRepair, LoadSceneClampsSceneFileEmissionOverridesAndMaximalRgbeEnvironments) {
+  TempFolder dir;
+  dir.write("lamp.obj", "mtllib lamp.mtl\nusemtl lamp\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  dir.write("lamp.mtl", "newmtl lamp\nKd 0.5 0.5 0.5\n");
+  // Flat RGBE pixels with the largest mantissa and exponent: about 1.7e38 each.
+  std::string hdr = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 2\n" + std::string(8, '\xff');
+  dir.write("max.hdr", hdr);
+  std::string scene = dir.write("scene.json", R"({"models": [{"file": "lamp.obj",
+      "materials": {"lamp": {"emission": [3e38, 3e38, 1]}}}], "environment": {"map": "max.hdr", "intensity": 2}})");
+  Scene s = loadScene(scene);
+  EXPECT_EQ(s.materials[0].emission.x, kMaxRadiance);
+  EXPECT_EQ(s.materials[0].emission.z, 1.0f);
+  ASSERT_TRUE(s.environment.hasMap());
+  for (float texel : s.environment.map.floats) EXPECT_LE(texel * s.environment.intensity, kMaxRadiance);
+
+  SceneLoadOptions replaced;
+  replaced.environmentPath = dir.file("max.hdr");
+  Scene lit = loadScene(dir.file("lamp.obj"), replaced);
+  ASSERT_TRUE(lit.environment.hasMap());
+  EXPECT_EQ(lit.environment.map.floats[0], kMaxRadiance);
+}
+
 TEST(SceneRepair, SceneFileCamerasAndTransformsOutOfRangeFailWithOneLine) {
   TempFolder dir;
   dir.write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
