@@ -10,6 +10,7 @@
 
 #include "app/scene_loading.h"
 #include "scene/loaders/gltf_loader.h"
+#include "scene/loaders/normal_generation.h"
 #include "scene/loaders/obj_loader.h"
 #include "scene/scene_repair.h"
 #include "scene/scene_test_files.h"
@@ -62,6 +63,35 @@ TEST(HostileObj, AHubVertexOfManyDifferentlyFacingTrianglesGetsASmoothNormal) {
   ASSERT_EQ(s.triangleCount(), size_t(slices));
   const Mesh& m = s.meshes[0];
   EXPECT_NEAR(m.normals[m.indices[0]].z, 1.0f, 1e-3f) << "the tip's normal is the cone's axis";
+}
+
+TEST(HostileObj, AHubOfManyDistinctNormalsStillKeepsTheCreaseBetweenTwoFans) {
+  // 300 triangles around the origin facing about +z, 300 facing about +y: more distinct normals than are
+  // compared exactly, in two groups 90 degrees apart, far beyond the 45-degree crease.
+  const int slices = 300;
+  std::vector<Vec3> positions = {{0, 0, 0}};
+  std::vector<uint32_t> corners;
+  for (int fan = 0; fan < 2; ++fan) {
+    const uint32_t first = uint32_t(positions.size());
+    for (int i = 0; i <= slices; ++i) {
+      float a = 0.5f * kPi * float(i) / slices, c = std::cos(a), s = std::sin(a);
+      positions.push_back(fan == 0 ? Vec3{c, s, -0.05f} : Vec3{s, -0.05f, c});
+    }
+    for (uint32_t i = 0; i < uint32_t(slices); ++i) corners.insert(corners.end(), {0, first + i, first + i + 1});
+  }
+  std::vector<uint32_t> groups(2 * slices, 0);
+  std::vector<uint8_t> needs(2 * slices, 1);
+  NormalGenerationInput in;
+  in.positions = &positions;
+  in.cornerPositions = corners.data();
+  in.triangleCount = 2 * slices;
+  in.smoothingGroups = groups.data();
+  in.needsNormals = needs.data();
+  std::vector<Vec3> normals = generateCornerNormals(in);
+  for (int t = 0; t < 2 * slices; ++t) {
+    Vec3 hub = normals[3 * size_t(t)];
+    EXPECT_GT(t < slices ? hub.z : hub.y, 0.99f) << "triangle " << t;
+  }
 }
 
 TEST(HostileObj, AFaceOfAMillionCornersIsCutIntoAFanWithAWarning) {
