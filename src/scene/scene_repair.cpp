@@ -314,7 +314,7 @@ size_t clampValues(Vec3& v, float limit) {
   return clampValues(&v.x, 1, limit) + clampValues(&v.y, 1, limit) + clampValues(&v.z, 1, limit);
 }
 
-void clampRadiance(Scene& scene, const std::string& file, LoadWarnings& warnings) {
+void clampEmittedRadiance(Scene& scene, const std::string& file, LoadWarnings& warnings) {
   const std::string limit = compact(kMaxRadiance);
   size_t materials = 0;
   // The largest emission each float texture multiplies, so that texel times emission stays within the limit.
@@ -359,10 +359,14 @@ void checkCamera(const CameraDescription& c, const std::string& file) {
   if (!withinRange(c.eye, kMaxCameraCoordinate)) fail("position", describe(c.eye) + " is " + range);
   if (!withinRange(c.target, kMaxCameraCoordinate)) fail("target", describe(c.target) + " is " + range);
   if (!withinRange(c.up, kMaxCameraCoordinate)) fail("up", describe(c.up) + " is " + range);
+  // As Camera::lookAt computes its frame: neither normalisation may divide by zero.
   const Vec3 forward = c.target - c.eye;
-  if (!(dot(forward, forward) > 0.0f)) fail("target", "the camera's position and target coincide");
-  const Vec3 f = unitLength(forward), u = unitLength(c.up);
-  if (!(length(cross(f, u)) > 1e-6f)) fail("up", describe(c.up) + " is zero or parallel to the viewing direction");
+  if (!(dot(forward, forward) >= std::numeric_limits<float>::min()))
+    fail("target", "the camera's position and target coincide");
+  const Vec3 right = cross(normalize(forward), c.up);
+  const float rightSquared = dot(right, right);
+  if (!(rightSquared >= std::numeric_limits<float>::min() && rightSquared > 1e-12f * dot(c.up, c.up)))
+    fail("up", describe(c.up) + " is zero or parallel to the viewing direction");
   if (!(c.verticalFovDegrees > 0.0f && c.verticalFovDegrees < 180.0f))
     fail("fov_degrees", compact(c.verticalFovDegrees) + " is not between 0 and 180 degrees");
   if (!(c.apertureRadius >= 0.0f && c.apertureRadius <= kMaxCameraCoordinate))
@@ -376,7 +380,7 @@ void checkCamera(const CameraDescription& c, const std::string& file) {
 void repairScene(Scene& scene, const std::string& file, LoadWarnings& warnings) {
   repairMeshes(scene, file, warnings);
   repairInstances(scene, file, warnings);
-  clampRadiance(scene, file, warnings);
+  clampEmittedRadiance(scene, file, warnings);
   if (!scene.cameraMissing) checkCamera(scene.camera, file);
   validateScene(scene);
 }

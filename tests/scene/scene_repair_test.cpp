@@ -218,6 +218,8 @@ TEST(SceneRepair, ImpossibleCamerasAreRejectedNamingTheField) {
       {"camera.target", [](CameraDescription& c) { c.target = c.eye; }},
       {"camera.up", [](CameraDescription& c) { c.up = c.target - c.eye; }},
       {"camera.up", [](CameraDescription& c) { c.up = {0, 0, 0}; }},
+      {"camera.up", [](CameraDescription& c) { c.up = {0, 1e-30f, 0}; }},
+      {"camera.target", [](CameraDescription& c) { c.eye = {0, 0, 0}; c.target = {0, 0, 1e-30f}; }},
       {"camera.fov_degrees", [](CameraDescription& c) { c.verticalFovDegrees = 180.0f; }},
       {"camera.fov_degrees", [](CameraDescription& c) { c.verticalFovDegrees = 0.0f; }},
       {"camera.aperture_radius", [](CameraDescription& c) { c.apertureRadius = 1e30f; }},
