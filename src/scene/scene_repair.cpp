@@ -214,24 +214,41 @@ Bounds3 meshBounds(const Mesh& mesh) {
       });
 }
 
-// Triangles out of range are worth a warning for each mesh (up to kMaxMeshWarnings); triangles without area,
-// common in ordinary models (the poles of a UV sphere), one line for the scene.
-void repairMeshes(Scene& scene, const std::string& file, LoadWarnings& warnings) {
-  size_t trianglesBefore = 0, trianglesAfter = 0, meshesWarned = 0, meshesNotNamed = 0, outOfRangeNotNamed = 0;
-  size_t noArea = 0, meshesWithoutArea = 0, badAttributes = 0;
+// What repairing one mesh did, and the bounds of what is left of it.
+struct MeshRepair {
+  DroppedTriangles dropped;
+  size_t badAttributes = 0;
+  Bounds3 bounds;
+};
+
+// Meshes are repaired in parallel, and each one's triangles and vertices in parallel too. Triangles out of range
+// are worth a warning for each mesh (up to kMaxMeshWarnings); triangles without area, common in ordinary models
+// (the poles of a UV sphere), one line for the scene.
+std::vector<MeshRepair> repairMeshes(Scene& scene, const std::string& file, LoadWarnings& warnings) {
+  std::vector<MeshRepair> repairs(scene.meshes.size());
+  for (const Mesh& mesh : scene.meshes)
+    if (mesh.indices.size() % 3 != 0) return repairs;  // validateScene names this
+  tbb::parallel_for(size_t(0), scene.meshes.size(), [&](size_t m) {
+    Mesh& mesh = scene.meshes[m];
+    repairs[m].dropped = dropUnusableTriangles(mesh);
+    repairs[m].badAttributes = repairAttributes(mesh);
+    repairs[m].bounds = meshBounds(mesh);
+  });
+
+  size_t meshesWarned = 0, meshesNotNamed = 0, outOfRangeNotNamed = 0, noArea = 0, meshesWithoutArea = 0;
+  size_t badAttributes = 0, trianglesLeft = 0, trianglesDropped = 0;
   const std::string range = "a vertex not finite or beyond +-" + compact(kMaxSceneCoordinate);
-  for (Mesh& mesh : scene.meshes) {
-    trianglesBefore += mesh.triangleCount();
-    if (mesh.indices.size() % 3 != 0) return;  // validateScene names this
-    const DroppedTriangles dropped = dropUnusableTriangles(mesh);
-    trianglesAfter += mesh.triangleCount();
-    badAttributes += repairAttributes(mesh);
+  for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    const DroppedTriangles& dropped = repairs[m].dropped;
+    trianglesLeft += scene.meshes[m].triangleCount();
+    trianglesDropped += dropped.outOfRange + dropped.noArea;
+    badAttributes += repairs[m].badAttributes;
     noArea += dropped.noArea;
     meshesWithoutArea += dropped.noArea > 0 ? 1 : 0;
     if (dropped.outOfRange == 0) continue;
     if (meshesWarned++ < kMaxMeshWarnings) {
-      warnings.add(file, "mesh '" + mesh.name + "': " + std::to_string(dropped.outOfRange) + " triangles dropped: " +
-                             range);
+      warnings.add(file, "mesh '" + scene.meshes[m].name + "': " + std::to_string(dropped.outOfRange) +
+                             " triangles dropped: " + range);
     } else {
       ++meshesNotNamed;
       outOfRangeNotNamed += dropped.outOfRange;
@@ -246,11 +263,13 @@ void repairMeshes(Scene& scene, const std::string& file, LoadWarnings& warnings)
   if (badAttributes > 0)
     warnings.add(file, std::to_string(badAttributes) +
                            " non-finite normals, texture coordinates or tangents replaced with zero");
-  if (trianglesBefore > 0 && trianglesAfter == 0)
+  if (trianglesDropped > 0 && trianglesLeft == 0)
     failLoad(file, "no triangle is usable: all have no area or lie beyond +-" + compact(kMaxSceneCoordinate));
+  return repairs;
 }
 
-void repairInstances(Scene& scene, const std::string& file, LoadWarnings& warnings) {
+void repairInstances(Scene& scene, const std::vector<MeshRepair>& repairs, const std::string& file,
+                     LoadWarnings& warnings) {
   if (scene.instances.size() > kMaxInstances)
     failLoad(file, "has " + std::to_string(scene.instances.size()) + " instances; at most " +
                        std::to_string(kMaxInstances) + " are supported");
@@ -261,7 +280,7 @@ void repairInstances(Scene& scene, const std::string& file, LoadWarnings& warnin
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     if (scene.meshes[m].triangleCount() == 0) continue;
     newMeshId[m] = uint32_t(kept);
-    bounds.push_back(meshBounds(scene.meshes[m]));
+    bounds.push_back(repairs[m].bounds);
     if (kept != m) scene.meshes[kept] = std::move(scene.meshes[m]);
     ++kept;
   }
@@ -378,8 +397,8 @@ void checkCamera(const CameraDescription& c, const std::string& file) {
 }  // namespace
 
 void repairScene(Scene& scene, const std::string& file, LoadWarnings& warnings) {
-  repairMeshes(scene, file, warnings);
-  repairInstances(scene, file, warnings);
+  const std::vector<MeshRepair> repairs = repairMeshes(scene, file, warnings);
+  repairInstances(scene, repairs, file, warnings);
   clampEmittedRadiance(scene, file, warnings);
   if (!scene.cameraMissing) checkCamera(scene.camera, file);
   validateScene(scene);
