@@ -129,9 +129,10 @@ int runRender(const RenderJob& job, const std::string& output, const DisplaySett
   checkOutputPath(output);
   RenderOutcome outcome = runRenderJob(job, /*showProgress=*/true);
   std::vector<std::string> written = writeImageWithAovs(output, outcome.image, display, outcome.aovs, job.aovs);
-  double samples = double(job.settings.width) * job.settings.height * job.samplesPerPixel;
+  const RenderSettings& rendered = outcome.settings;
+  double samples = double(rendered.width) * rendered.height * outcome.samplesPerPixel;
   std::fprintf(stderr, "rendered %ux%u at %u spp in %.2f s: %s Msamples/s, %s Mrays/s, %llu invalid samples dropped\n",
-               job.settings.width, job.settings.height, job.samplesPerPixel, outcome.seconds,
+               rendered.width, rendered.height, outcome.samplesPerPixel, outcome.seconds,
                formatRate(samples / outcome.seconds).c_str(), formatRate(double(outcome.stats.rays) / outcome.seconds).c_str(),
                (unsigned long long)outcome.stats.invalidSamples);
   for (const std::string& path : written) std::printf("%s\n", std::filesystem::absolute(path).string().c_str());
@@ -146,16 +147,17 @@ double median(std::vector<double> values) {
 
 int runBench(const RenderJob& job) {
   RenderOutcome outcome = runRenderJob(job, /*showProgress=*/false);
-  double samples = double(job.settings.width) * job.settings.height * job.samplesPerPixel;
-  double samplesPerFrame = double(job.settings.width) * job.settings.height;
-  double raysPerFrame = double(outcome.stats.rays) / double(job.samplesPerPixel);
+  const RenderSettings& rendered = outcome.settings;
+  double samples = double(rendered.width) * rendered.height * outcome.samplesPerPixel;
+  double samplesPerFrame = double(rendered.width) * rendered.height;
+  double raysPerFrame = double(outcome.stats.rays) / double(outcome.samplesPerPixel);
   nlohmann::ordered_json report = {
       {"scene", outcome.sceneName},
-      {"width", job.settings.width},
-      {"height", job.settings.height},
-      {"spp", job.samplesPerPixel},
-      {"max_depth", job.settings.maxDepth},
-      {"sampler", job.settings.sampler == SamplerKind::Sobol ? "sobol" : "independent"},
+      {"width", rendered.width},
+      {"height", rendered.height},
+      {"spp", outcome.samplesPerPixel},
+      {"max_depth", rendered.maxDepth},
+      {"sampler", rendered.sampler == SamplerKind::Sobol ? "sobol" : "independent"},
       {"backend", outcome.backendName},
       {"device", outcome.deviceName},
       {"seconds", outcome.seconds},

@@ -84,6 +84,8 @@ RenderOutcome runRenderJob(const RenderJob& job, bool showProgress) {
 RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool showProgress) {
   using Clock = std::chrono::steady_clock;
   RenderOutcome outcome;
+  outcome.settings = job.settings;
+  outcome.samplesPerPixel = job.samplesPerPixel;
   const auto backendStart = Clock::now();
   std::string why;
   std::unique_ptr<Backend> backend = createBackend(job.backend, why);

@@ -33,6 +33,9 @@ struct RenderJob {
 };
 
 struct RenderOutcome {
+  // What was rendered: the command line's settings, or the scene file's render hints where it gave none.
+  RenderSettings settings;
+  uint32_t samplesPerPixel = 0;
   Image image;
   AovImages aovs;  // when RenderJob::aovs is not empty
   FrameStats stats;

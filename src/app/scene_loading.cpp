@@ -13,6 +13,7 @@
 #include "scene/loaders/load_diagnostics.h"
 #include "scene/loaders/obj_loader.h"
 #include "scene/loaders/scene_file.h"
+#include "scene/scene_repair.h"
 #include "core/file_extension.h"
 
 namespace candela {
@@ -89,6 +90,7 @@ Scene loadScene(const std::string& spec, const SceneLoadOptions& options) {
     env.map = withMemoryReported(map, [&] { return loadEnvironmentImage(map); });
     scene.environment = std::move(env);
   }
+  repairScene(scene, spec, warnings);
   for (const std::string& w : warnings.messages)
     std::fprintf(stderr, "candela: warning: %s\n", printableText(w).c_str());
   if (scene.cameraMissing) frameSceneBounds(scene);

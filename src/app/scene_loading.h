@@ -15,7 +15,8 @@ struct SceneLoadOptions {
   OutsidePaths outsidePaths = OutsidePaths::Refused;
 };
 
-// A built-in scene name or a scene file (.obj, .gltf, .glb, .json), chosen by extension. Warnings go to stderr,
+// A built-in scene name or a scene file (.obj, .gltf, .glb, .json), chosen by extension, repaired (repairScene:
+// unusable triangles and instances dropped, radiance clamped, the camera checked). Warnings go to stderr,
 // one line each. A scene without a camera gets one that frames its bounds. Throws std::runtime_error with one
 // line naming the file on failure, running out of memory included.
 Scene loadScene(const std::string& spec, const SceneLoadOptions& options = {});

@@ -4,6 +4,18 @@
 
 namespace candela {
 
+// The largest coordinate a camera ray may start at. Scene loading keeps cameras far inside it; the bound is what
+// the ray tracers accept (Embree refuses rays beyond about 1.8e18, and its checked builds abort on them).
+constexpr float kMaxCameraRayOrigin = 1e18f;
+
+// Whether a ray from Camera::generateRay can be traced: a finite origin within kMaxCameraRayOrigin and a finite,
+// non-zero direction. Written as comparisons that NaN fails.
+CANDELA_FN bool isTraceableCameraRay(const Ray& ray) {
+  const Vec3 o = ray.origin, d = ray.direction;
+  return fabsf(o.x) <= kMaxCameraRayOrigin && fabsf(o.y) <= kMaxCameraRayOrigin && fabsf(o.z) <= kMaxCameraRayOrigin &&
+         fabsf(d.x) <= 2.0f && fabsf(d.y) <= 2.0f && fabsf(d.z) <= 2.0f && dot(d, d) > 0.5f;
+}
+
 // Pinhole camera, or a thin lens when `lensRadius` > 0. `right` and `up` are scaled so that pixel offsets in
 // [-1, 1] span the image plane at distance 1 along `forward`. A thin lens keeps the plane at `focusDistance`
 // along `forward` sharp.

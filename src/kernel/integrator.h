@@ -143,7 +143,8 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
 // NaN, infinite or negative estimates come from numerical failures; they are dropped, never accumulated.
 CANDELA_FN bool isValidSample(Vec3 l) { return isFinite(l) && l.x >= 0.0f && l.y >= 0.0f && l.z >= 0.0f; }
 
-// One sample of pixel (x, y): a jittered camera ray, then the path.
+// One sample of pixel (x, y): a jittered camera ray, then the path. A camera ray that cannot be traced
+// (isTraceableCameraRay) is not: the sample gets a negative estimate, which isValidSample drops and counts.
 template <bool kWithAovs = false, class Tracer>
 CANDELA_HD PathResult renderPixelSample(const SceneView& scene, const Tracer& tracer, const Camera& camera,
                                         const RenderSettings& settings, uint32_t x, uint32_t y,
@@ -154,6 +155,11 @@ CANDELA_HD PathResult renderPixelSample(const SceneView& scene, const Tracer& tr
   if (camera.lensRadius > 0.0f) uLens = sampler.next2D();
   Ray ray = camera.generateRay(float(x) + jitter.x, float(y) + jitter.y, int(settings.width), int(settings.height),
                                uLens);
+  if (!isTraceableCameraRay(ray)) {
+    PathResult dropped;
+    dropped.radiance = {-1.0f, -1.0f, -1.0f};
+    return dropped;
+  }
   return tracePath<kWithAovs>(scene, tracer, ray, sampler, settings);
 }
 

@@ -1,16 +1,17 @@
-// libFuzzer entry point for the glTF loader (.gltf text or .glb bytes, no external files).
+// libFuzzer entry point for the glTF loader (.gltf text or .glb bytes, no external files) and the scene repair.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <string>
 
 #include "scene/loaders/gltf_loader.h"
+#include "scene/scene_repair.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   candela::LoadWarnings warnings;
   try {
     candela::Scene scene = candela::loadGltfBytes("fuzz.gltf", data, size, warnings);
-    candela::validateScene(scene);
+    candela::repairScene(scene, "fuzz.gltf", warnings);  // ends with validateScene
   } catch (const candela::LoadError& e) {
     // Messages quote the input: they must reach a terminal as one printable line (load_diagnostics.h).
     if (candela::printableText(e.what()) != e.what()) std::abort();

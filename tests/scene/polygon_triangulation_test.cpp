@@ -69,5 +69,27 @@ TEST(PolygonTriangulation, LargeAndDegeneratePolygonsStillGiveEveryTriangle) {
   expectTiles(repeated, triangulate(repeated));
 }
 
+TEST(PolygonTriangulation, ClippingIsBoundedToLinearTimeAndSaysWhenItFellBackToAFan) {
+  // A thick spiral: ear clipping along its outline would test about 5000 corners per corner, cubic in the size.
+  std::vector<Vec3> spiral;
+  for (int i = 0; i < 128; ++i) spiral.push_back({(1.5f + 0.3f * float(i)) * std::cos(0.3f * float(i)),
+                                                  (1.5f + 0.3f * float(i)) * std::sin(0.3f * float(i)), 0});
+  for (int i = 127; i >= 0; --i) spiral.push_back({(1.0f + 0.3f * float(i)) * std::cos(0.3f * float(i)),
+                                                   (1.0f + 0.3f * float(i)) * std::sin(0.3f * float(i)), 0});
+  std::vector<uint32_t> triangles;
+  EXPECT_FALSE(triangulatePolygon(spiral, triangles));
+  EXPECT_EQ(triangles.size(), 3 * (spiral.size() - 2));
+
+  std::vector<Vec3> circle;  // convex: every corner is an ear, well within the budget
+  for (size_t i = 0; i < kMaxEarClippedCorners; ++i)
+    circle.push_back({std::cos(float(i) * 0.02f), std::sin(float(i) * 0.02f), 0});
+  triangles.clear();
+  EXPECT_TRUE(triangulatePolygon(circle, triangles));
+  expectTiles(circle, triangles);
+  circle.push_back({0, -1, 0});
+  triangles.clear();
+  EXPECT_FALSE(triangulatePolygon(circle, triangles)) << "more corners than kMaxEarClippedCorners";
+}
+
 }  // namespace
 }  // namespace candela

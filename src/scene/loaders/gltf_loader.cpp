@@ -18,6 +18,7 @@
 #include "scene/loaders/gltf_materials.h"
 #include "scene/loaders/path_confinement.h"
 #include "scene/loaders/texture_table.h"
+#include "scene/scene_repair.h"
 #include "scene/transform.h"
 
 namespace candela {
@@ -27,7 +28,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr int kMaxJsonDepth = 128;     // deeper JSON is not a plausible glTF and would exhaust the stack
-constexpr int kMaxNodeDepth = 1024;    // a deeper node hierarchy is taken for a cycle
+constexpr int kMaxNodeDepth = 1024;    // deeper node hierarchies would exhaust the stack
 
 // The deepest nesting of arrays and objects in JSON text (strings skipped).
 int jsonDepth(const char* p, size_t n) {
@@ -187,7 +188,16 @@ class GltfSceneBuilder {
     if (index < 0 || size_t(index) >= model_.nodes.size())
       failLoad(file_, from + ": node " + std::to_string(index) + " does not exist");
     std::string where = "nodes[" + std::to_string(index) + "]";
-    if (depth > kMaxNodeDepth) failLoad(file_, where + ": the node hierarchy is too deep or has a cycle");
+    if (depth > kMaxNodeDepth)
+      failLoad(file_, where + ": the node hierarchy is deeper than " + std::to_string(kMaxNodeDepth));
+    // Every node is entered once: a node listed twice, or with two parents, would be instanced again with all
+    // its descendants (doubling at every level), and a cycle would never end. glTF allows neither.
+    nodeStates_.resize(model_.nodes.size(), NodeState::Unvisited);
+    if (nodeStates_[size_t(index)] == NodeState::OnPath)
+      failLoad(file_, where + ": the node is its own ancestor (a cycle through " + from + ")");
+    if (nodeStates_[size_t(index)] == NodeState::Done)
+      failLoad(file_, where + ": listed again in " + from + "; a node may have only one parent and be listed once");
+    nodeStates_[size_t(index)] = NodeState::OnPath;
     const tinygltf::Node& node = model_.nodes[size_t(index)];
     glm::mat4 world = parent * localTransform(node);
     for (int i = 0; i < 16; ++i)
@@ -195,13 +205,18 @@ class GltfSceneBuilder {
     if (node.mesh >= 0) {
       if (size_t(node.mesh) >= model_.meshes.size())
         failLoad(file_, where + ".mesh: mesh " + std::to_string(node.mesh) + " does not exist");
-      if (std::optional<uint32_t> mesh = meshFor(node.mesh)) scene_.instances.push_back({*mesh, toAffine(world)});
+      if (std::optional<uint32_t> mesh = meshFor(node.mesh)) {
+        if (scene_.instances.size() == kMaxInstances)
+          failLoad(file_, where + ": more than " + std::to_string(kMaxInstances) + " mesh instances");
+        scene_.instances.push_back({*mesh, toAffine(world)});
+      }
     }
     if (node.camera >= 0 && !cameraFound_) takeCamera(node.camera, world, where);
     if (node.extensions.count("KHR_lights_punctual")) ++punctualLights_;
     if (node.skin >= 0) skinned_ = true;
     for (size_t c = 0; c < node.children.size(); ++c)
       visit(node.children[c], world, depth + 1, where + ".children");
+    nodeStates_[size_t(index)] = NodeState::Done;
   }
 
   void takeCamera(int index, const glm::mat4& world, const std::string& where) {
@@ -431,6 +446,8 @@ class GltfSceneBuilder {
   bool cameraFound_ = false;
   size_t punctualLights_ = 0;
   bool skinned_ = false;
+  enum class NodeState : uint8_t { Unvisited, OnPath, Done };
+  std::vector<NodeState> nodeStates_;  // by node index, for the traversal
 };
 
 Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, const PathRule& files,

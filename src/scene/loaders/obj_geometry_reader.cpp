@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <numeric>
 
 #include "scene/loaders/obj_chunk_parser.h"
 #include "scene/loaders/polygon_triangulation.h"
@@ -51,12 +52,13 @@ std::vector<T> concatenate(std::vector<ObjChunk>& chunks, PageVector<T> ObjChunk
 }
 
 // Turns a chunk's faces into triangles: its corner arrays then hold 3 corners per triangle, and its face arrays
-// one resolved smoothing group and material per triangle.
-void triangulateChunk(ObjChunk& c, const ChunkMaterials& m, const std::vector<Vec3>& positions) {
+// one resolved smoothing group and material per triangle. Returns how many polygons were too large or complex to
+// follow their outline (triangulatePolygon).
+size_t triangulateChunk(ObjChunk& c, const ChunkMaterials& m, const std::vector<Vec3>& positions) {
   for (uint32_t& s : c.faceSmoothing)
     if (s == kObjInherited) s = m.smoothingAtStart;
   for (uint32_t& k : c.faceMaterial) k = k == kObjInherited ? m.atStart : m.ofStatement[k];
-  if (c.faceSizes.empty()) return;  // all triangles already
+  if (c.faceSizes.empty()) return 0;  // all triangles already
 
   size_t triangles = 0;
   for (uint32_t n : c.faceSizes) triangles += n - 2;
@@ -69,13 +71,13 @@ void triangulateChunk(ObjChunk& c, const ChunkMaterials& m, const std::vector<Ve
   materials.reserve(triangles);
   std::vector<Vec3> polygon;
   std::vector<uint32_t> corners;
-  size_t first = 0;
+  size_t first = 0, fanned = 0;
   for (size_t f = 0; f < c.faceSizes.size(); ++f) {
     const size_t n = c.faceSizes[f];
     polygon.resize(n);
     for (size_t k = 0; k < n; ++k) polygon[k] = positions[c.cornerPositions[first + k]];
     corners.clear();
-    triangulatePolygon(polygon, corners);
+    if (!triangulatePolygon(polygon, corners)) ++fanned;
     for (uint32_t k : corners) {
       cornerPositions.push_back(c.cornerPositions[first + k]);
       cornerUvs.push_back(c.cornerUvs[first + k]);
@@ -91,6 +93,7 @@ void triangulateChunk(ObjChunk& c, const ChunkMaterials& m, const std::vector<Ve
   c.faceSmoothing = std::move(smoothing);
   c.faceMaterial = std::move(materials);
   PageVector<uint32_t>().swap(c.faceSizes);
+  return fanned;
 }
 
 class GeometryReader {
@@ -215,8 +218,13 @@ class GeometryReader {
   ObjGeometry assemble() {
     ObjGeometry g;
     g.positions = concatenate(chunks_, &ObjChunk::positions);
+    std::vector<size_t> fanned(chunks_.size());
     tbb::parallel_for(size_t(0), chunks_.size(),
-                      [&](size_t i) { triangulateChunk(chunks_[i], chunkMaterials_[i], g.positions); });
+                      [&](size_t i) { fanned[i] = triangulateChunk(chunks_[i], chunkMaterials_[i], g.positions); });
+    if (size_t n = std::accumulate(fanned.begin(), fanned.end(), size_t(0)); n > 0)
+      warnings_.add(name_, std::to_string(n) + " polygons with more than " + std::to_string(kMaxEarClippedCorners) +
+                               " corners, or too intricate to triangulate along their outline in linear time, are cut "
+                               "into fans (concave ones are covered wrongly)");
     size_t triangles = 0;
     for (const ObjChunk& c : chunks_) triangles += c.faceCount();
     if (triangles > INT32_MAX / 3) failLoad(name_, "has more than 715827882 triangles");

@@ -3,6 +3,9 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
+#include <cstring>
+#include <unordered_map>
 
 #include "scene/loaders/normal_generation.h"
 
@@ -47,11 +50,42 @@ std::vector<Vec3> generateMissingNormals(ObjGeometry& g) {
   return generateCornerNormals(in);
 }
 
+// What makes a corner's vertex: its position, texture coordinate and normal (a generated normal by its value).
+struct VertexKey {
+  uint32_t position;
+  int32_t uv;
+  int32_t normal;  // a normal of the file, or -1 for a generated one
+  std::array<uint32_t, 3> generated;  // bits of the generated normal, +0 for -0
+
+  bool operator==(const VertexKey&) const = default;
+};
+
+struct VertexKeyHash {
+  size_t operator()(const VertexKey& k) const {
+    uint64_t h = k.position;
+    for (uint32_t x : {uint32_t(k.uv), uint32_t(k.normal), k.generated[0], k.generated[1], k.generated[2]})
+      h = (h ^ x) * 0x100000001B3ull;
+    return size_t(h ^ (h >> 29));
+  }
+};
+
+uint32_t bitsOf(float x) {
+  uint32_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  return x == 0.0f ? 0u : bits;
+}
+
 bool sameGeneratedNormal(Vec3 a, Vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+
+// A position's vertices are found by walking its list; past this many, further ones go into a hash table, so
+// that a position with very many distinct attributes costs constant time per corner instead of linear.
+constexpr uint32_t kMaxListedVertices = 16;
 
 // Gives every corner its vertex, in order of first use, and overwrites cornerPositions with the vertex indices.
 std::vector<Vertex> shareVertices(ObjGeometry& g, const std::vector<Vec3>& generated) {
   std::vector<uint32_t> head(g.positions.size(), kEnd);
+  std::vector<uint8_t> listed(g.positions.size(), 0);
+  std::unordered_map<VertexKey, uint32_t, VertexKeyHash> crowded;
   std::vector<Vertex> vertices;
   vertices.reserve(g.positions.size());
   for (size_t c = 0; c < g.cornerPositions.size(); ++c) {
@@ -66,10 +100,17 @@ std::vector<Vertex> shareVertices(ObjGeometry& g, const std::vector<Vec3>& gener
         break;
       }
     }
-    if (found == kEnd) {
+    if (found == kEnd && listed[p] == kMaxListedVertices) {
+      VertexKey key{p, uv, n >= 0 ? n : -1, {}};
+      if (n < 0) key.generated = {bitsOf(generated[c].x), bitsOf(generated[c].y), bitsOf(generated[c].z)};
+      auto [it, added] = crowded.try_emplace(key, uint32_t(vertices.size()));
+      if (added) vertices.push_back({p, uv, n >= 0 ? n : -1 - int32_t(c), kEnd});
+      found = it->second;
+    } else if (found == kEnd) {
       found = uint32_t(vertices.size());
       vertices.push_back({p, uv, n >= 0 ? n : -1 - int32_t(c), head[p]});
       head[p] = found;
+      ++listed[p];
     }
     g.cornerPositions[c] = found;
   }

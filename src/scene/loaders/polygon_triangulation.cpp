@@ -67,12 +67,19 @@ bool isEar(const std::vector<Point>& p, const std::vector<size_t>& remaining, si
   return true;
 }
 
-void clipEars(const std::vector<Point>& p, std::vector<uint32_t>& out) {
+// False when clipping ran past its budget of kEarTestsPerCorner corner tests per corner (a polygon whose ears are
+// hard to find makes ear clipping cubic) and the rest was cut into a fan.
+bool clipEars(const std::vector<Point>& p, std::vector<uint32_t>& out) {
   std::vector<size_t> remaining(p.size());
   std::iota(remaining.begin(), remaining.end(), size_t(0));
-  size_t at = 0, triedSinceClip = 0;
+  size_t at = 0, triedSinceClip = 0, budget = kEarTestsPerCorner * p.size();
   while (remaining.size() > 3 && triedSinceClip < remaining.size()) {
     const size_t n = remaining.size();
+    if (budget < n) {
+      fan(remaining, out);
+      return false;
+    }
+    budget -= n;
     at %= n;
     size_t a = remaining[(at + n - 1) % n], b = remaining[at], c = remaining[(at + 1) % n];
     if (isEar(p, remaining, a, b, c)) {
@@ -85,23 +92,31 @@ void clipEars(const std::vector<Point>& p, std::vector<uint32_t>& out) {
     }
   }
   fan(remaining, out);  // what is left is a triangle, or has no ear with area
+  return true;
 }
 
 }  // namespace
 
-void triangulatePolygon(std::span<const Vec3> corners, std::vector<uint32_t>& triangles) {
+bool triangulatePolygon(std::span<const Vec3> corners, std::vector<uint32_t>& triangles) {
   const size_t n = corners.size();
-  if (n < 3) return;
-  if (n == 3) return emit(triangles, 0, 1, 2);
+  if (n < 3) return true;
+  if (n == 3) {
+    emit(triangles, 0, 1, 2);
+    return true;
+  }
   std::vector<Point> points;
   bool projected = project(corners, points);
-  if (n == 4) return quad(corners, points, projected, triangles);
+  if (n == 4) {
+    quad(corners, points, projected, triangles);
+    return true;
+  }
   if (!projected || n > kMaxEarClippedCorners) {
     std::vector<size_t> all(n);
     std::iota(all.begin(), all.end(), size_t(0));
-    return fan(all, triangles);
+    fan(all, triangles);
+    return !projected;
   }
-  clipEars(points, triangles);
+  return clipEars(points, triangles);
 }
 
 }  // namespace candela

@@ -11,6 +11,7 @@
 #include "scene/loaders/file_bytes.h"
 #include "scene/loaders/image_decoding.h"
 #include "scene/loaders/path_confinement.h"
+#include "scene/scene_repair.h"
 #include "scene/transform.h"
 
 namespace candela {
@@ -262,6 +263,8 @@ Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadW
       modelCamera = c;
     }
     appendScene(scene, std::move(part), toAffine(transform));
+    if (scene.instances.size() > kMaxInstances)
+      model.fail("the models hold more than " + std::to_string(kMaxInstances) + " mesh instances in all");
   }
 
   scene.cameraMissing = true;

@@ -1,0 +1,41 @@
+#pragma once
+#include <cstddef>
+#include <string>
+
+#include "scene/loaders/load_diagnostics.h"
+#include "scene/scene.h"
+
+namespace candela {
+
+// The range of numbers a scene may hold, chosen so that float ray arithmetic stays finite and meaningful
+// (docs/scene-file.md, "Limits"). Embree, for one, refuses rays with coordinates beyond about 1.8e18.
+//
+// Vertex positions, in object and in world space.
+constexpr float kMaxSceneCoordinate = 1e8f;
+// The camera's position and target: room to frame a scene of the largest extent from outside it.
+constexpr float kMaxCameraCoordinate = 1e9f;
+// An instance transform may shrink no direction by more than this factor (its inverse stays bounded).
+constexpr float kMinInstanceScale = 1e-8f;
+// Emitted radiance per channel (W/(m^2 sr)): emission times strength, emission texels times emission, environment
+// texels times intensity. Far above the emitters of scenes candela is meant for (a frosted 100 W bulb: about 3e3),
+// yet small enough that the sum of millions of samples stays finite in float.
+constexpr float kMaxRadiance = 1e6f;
+// Instances over the whole scene.
+constexpr size_t kMaxInstances = 10'000'000;
+
+// Repairs a loaded scene once, before it is rendered, so that no number in it can make a backend fail:
+// - triangles that use a non-finite vertex or one beyond kMaxSceneCoordinate are dropped (one warning per mesh
+//   with the count, for the first ten meshes), and so are triangles without area (one warning for the scene);
+//   meshes left without triangles are removed;
+// - instances whose transform is not finite, is singular or shrinks some direction below kMinInstanceScale, or
+//   that would place their mesh beyond kMaxSceneCoordinate, are dropped (one warning);
+// - non-finite normals, texture coordinates and tangents become zero, and normals and tangents of extreme length
+//   are rescaled to unit length (a zero normal makes the renderer use the geometric one);
+// - emitted radiance (material emission, float texels of emission textures, the environment) is clamped to
+//   kMaxRadiance per channel (one warning each); float texels that are not finite or negative become 0.
+// Warnings name `file`. Throws LoadError naming `file` for what cannot be repaired: an impossible camera (the
+// field and why), more than kMaxInstances instances, or a scene with triangles none of which survive.
+// Afterwards validateScene holds.
+void repairScene(Scene& scene, const std::string& file, LoadWarnings& warnings);
+
+}  // namespace candela
