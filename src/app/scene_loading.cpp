@@ -18,9 +18,13 @@ namespace candela {
 
 namespace {
 
-Scene loadModel(const std::string& path, const SceneCacheSettings& cache, LoadWarnings& warnings) {
+// With the scene cache, each model is loaded on its own (a cache file holds a whole model, textures included);
+// without it, the models of a scene file share `shared` (shared_model_assets.h).
+Scene loadModel(const std::string& path, const SceneCacheSettings& cache, LoadWarnings& warnings,
+                SharedModelAssets* shared = nullptr) {
+  if (cache.enabled) shared = nullptr;
   return loadThroughSceneCache(path, cache, warnings, [&](LoadWarnings& w) {
-    return lowerCaseExtension(path) == ".obj" ? loadObj(path, w) : loadGltf(path, w);
+    return lowerCaseExtension(path) == ".obj" ? loadObj(path, w, shared) : loadGltf(path, w, shared);
   });
 }
 
@@ -29,7 +33,11 @@ Scene loadFile(const std::string& path, const SceneCacheSettings& cache, LoadWar
   if (ext == ".obj" || ext == ".gltf" || ext == ".glb") return loadModel(path, cache, warnings);
   if (ext == ".json")
     return loadSceneFile(
-        path, [&](const std::string& model, LoadWarnings& w) { return loadModel(model, cache, w); }, warnings);
+        path,
+        [&](const std::string& model, LoadWarnings& w, SharedModelAssets& shared) {
+          return loadModel(model, cache, w, &shared);
+        },
+        warnings);
   std::string names;
   for (const std::string& n : builtinSceneNames()) names += (names.empty() ? "" : ", ") + n;
   if (!std::filesystem::exists(path))

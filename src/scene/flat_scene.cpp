@@ -80,7 +80,8 @@ void packTextures(const Scene& scene, FlatScene& flat) {
     view.height = t.height;
     view.channels = t.channels;
     view.srgb = t.srgb ? 1u : 0u;
-    view.wrap = t.wrap;
+    view.wrapU = t.wrapU;
+    view.wrapV = t.wrapV;
     if (!t.bytes.empty()) {
       view.format = TexelFormat::Unorm8;
       view.offset = flat.texelBytes.size();

@@ -31,7 +31,8 @@ struct Texture {
   uint32_t height = 0;
   uint32_t channels = 4;
   bool srgb = false;
-  TextureWrap wrap = TextureWrap::Repeat;
+  TextureWrap wrapU = TextureWrap::Repeat;  // across the columns
+  TextureWrap wrapV = TextureWrap::Repeat;  // down the rows
   std::vector<uint8_t> bytes;   // 8-bit images: width * height * channels
   std::vector<float> floats;    // float images: width * height * channels
 };

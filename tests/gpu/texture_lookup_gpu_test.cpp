@@ -38,7 +38,7 @@ TestTexture randomTexture(TexelFormat format, TextureWrap wrap, uint32_t channel
   view.channels = channels;
   view.format = format;
   view.srgb = srgb ? 1u : 0u;
-  view.wrap = wrap;
+  view.wrapU = view.wrapV = wrap;
   const size_t count = size_t(kWidth) * kHeight * channels;
   for (size_t i = 0; i < count; ++i) {
     if (format == TexelFormat::Unorm8)
@@ -86,7 +86,7 @@ float lookupBound(const TexelArrays& arrays, Vec2 uv, int channel) {
   float lo = INFINITY, hi = -INFINITY;
   for (int dy = 0; dy < 2; ++dy)
     for (int dx = 0; dx < 2; ++dx) {
-      const int xi = wrapTexel(x0 + dx, int(t.width), t.wrap), yi = wrapTexel(y0 + dy, int(t.height), t.wrap);
+      const int xi = wrapTexel(x0 + dx, int(t.width), t.wrapU), yi = wrapTexel(y0 + dy, int(t.height), t.wrapV);
       Vec4 c = fetchTexel(arrays, t, xi, yi);
       lo = std::min(lo, channelOf(c, channel));
       hi = std::max(hi, channelOf(c, channel));
@@ -174,7 +174,7 @@ TEST(TextureLookupBound, RejectsCommonMistakes) {
   EXPECT_TRUE(mostlyRejected(lookups(srgb, [](Vec2 uv) { return Vec2{uv.x + 0.5f / kWidth, uv.y}; })));
   EXPECT_TRUE(mostlyRejected(lookups(srgb, [](Vec2 uv) { return Vec2{uv.x, 1.0f - uv.y}; })));
   TestTexture repeat = srgb;
-  repeat.views[0].wrap = TextureWrap::Repeat;
+  repeat.views[0].wrapU = repeat.views[0].wrapV = TextureWrap::Repeat;
   EXPECT_TRUE(mostlyRejected(lookups(repeat, [](Vec2 uv) { return uv; })));
   TestTexture linear = srgb;
   linear.views[0].srgb = 0;

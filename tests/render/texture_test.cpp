@@ -21,7 +21,7 @@ struct SmallTexture {
   explicit SmallTexture(TextureWrap wrap, bool srgb = false) {
     view.width = view.height = 2;
     view.channels = 1;
-    view.wrap = wrap;
+    view.wrapU = view.wrapV = wrap;
     view.srgb = srgb ? 1u : 0u;
     arrays = {&view, 1, bytes.data(), nullptr};
   }
@@ -54,6 +54,20 @@ TEST(Texture, WrapModes) {
   EXPECT_NEAR(mirror.at(-0.25f, 0.25f), mirror.at(0.25f, 0.25f), 1e-6f);
   EXPECT_NEAR(clamp.at(7.0f, 0.75f), 1.0f, 1e-6f);
   EXPECT_NEAR(repeat.at(-1e30f, 0.25f), repeat.at(-1e30f, 0.25f), 0.0f);  // no overflow, no NaN
+}
+
+TEST(Texture, WrapModesArePerAxis) {
+  // Repeat across, clamp down: half a texel past the left edge blends with the right column, half a texel above
+  // the top edge stays on the top row.
+  SmallTexture t(TextureWrap::Repeat);
+  t.view.wrapV = TextureWrap::Clamp;
+  EXPECT_NEAR(t.at(0.0f, 0.25f), 0.1f, 1e-6f);
+  EXPECT_NEAR(t.at(0.25f, 0.0f), 0.0f, 1e-6f);
+  EXPECT_NEAR(t.at(0.25f, 1.25f), 0.4f, 1e-6f);  // clamped to the bottom row, not repeated to the top
+  t.view.wrapU = TextureWrap::Clamp;
+  t.view.wrapV = TextureWrap::Repeat;
+  EXPECT_NEAR(t.at(0.25f, 0.0f), 0.2f, 1e-6f);
+  EXPECT_NEAR(t.at(1.25f, 0.25f), 0.2f, 1e-6f);
 }
 
 TEST(Texture, SrgbDecodesColourButNotAlpha) {

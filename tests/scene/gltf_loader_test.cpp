@@ -184,6 +184,20 @@ TEST(GltfLoader, UniformTextureTransformIsBakedIntoUvs) {
   EXPECT_FLOAT_EQ(s.meshes[0].uvs[2].y, 2.0f);
 }
 
+TEST(GltfLoader, SamplerWrapModesArePerAxis) {
+  json g = triangleGltf();
+  std::vector<uint8_t> png = readFileBytes(std::string(CANDELA_SOURCE_DIR) + "/tests/scene/data/checker.png");
+  g["images"] = {{{"uri", "data:image/png;base64," + base64(png)}}};
+  g["samplers"] = {{{"wrapS", 33071}, {"wrapT", 33648}}};  // clamp to edge across, mirrored repeat down
+  g["textures"] = {{{"source", 0}, {"sampler", 0}}};
+  g["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+  g["meshes"][0]["primitives"][0]["material"] = 0;
+  Scene s = load(g);
+  ASSERT_EQ(s.textures.size(), 1u);
+  EXPECT_EQ(s.textures[0].wrapU, TextureWrap::Clamp);
+  EXPECT_EQ(s.textures[0].wrapV, TextureWrap::Mirror);
+}
+
 TEST(GltfLoader, BadInputNamesFileAndJsonPath) {
   EXPECT_NE(errorOf(std::string("{\"asset\": {\"version\": \"2.0\"")).find("test.gltf: "), std::string::npos);
   EXPECT_NE(errorOf(std::string("not json at all")).find("test.gltf: "), std::string::npos);

@@ -2,6 +2,7 @@
 
 #include "app/scene_loading.h"
 #include "kernel/camera.h"
+#include "scene/loaders/file_bytes.h"
 #include "scene/loaders/gltf_loader.h"
 #include "scene/loaders/obj_loader.h"
 #include "scene/loaders/scene_file.h"
@@ -12,8 +13,8 @@ namespace {
 
 using test::TempFolder;
 
-Scene loadModel(const std::string& path, LoadWarnings& warnings) {
-  return path.ends_with(".obj") ? loadObj(path, warnings) : loadGltf(path, warnings);
+Scene loadModel(const std::string& path, LoadWarnings& warnings, SharedModelAssets& shared) {
+  return path.ends_with(".obj") ? loadObj(path, warnings, &shared) : loadGltf(path, warnings, &shared);
 }
 
 const char* kTriangleObj = "mtllib t.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n";
@@ -74,6 +75,61 @@ TEST(SceneFile, ModelsTransformsOverridesCameraEnvironmentAndSettings) {
   for (const auto& w : warnings.messages) all += w + "\n";
   EXPECT_NE(all.find("colour: unknown key"), std::string::npos) << all;
   EXPECT_NE(all.find("materials.blue: no material of that name"), std::string::npos) << all;
+}
+
+TEST(SceneFile, AFileNamedByManyModelsIsLoadedOnceAndInstanced) {
+  TempFolder dir;
+  dir.write("models/t.obj", kTriangleObj);
+  dir.write("models/t.mtl", "newmtl red\nKd 1 0 0\n");
+  size_t loads = 0;
+  ModelLoader counting = [&](const std::string& path, LoadWarnings& w, SharedModelAssets& shared) {
+    ++loads;
+    return loadModel(path, w, shared);
+  };
+  LoadWarnings warnings;
+  Scene s = loadSceneFile(dir.write("s.json", R"({"models": [
+      {"file": "models/t.obj"},
+      {"file": "models/t.obj", "transform": {"translate": [10, 0, 0]}},
+      {"file": "models/../models/t.obj", "transform": {"translate": [20, 0, 0]}},
+      {"file": "models/t.obj", "materials": {"red": {"type": "mirror"}}}
+    ]})"), counting, warnings);
+  validateScene(s);
+  EXPECT_EQ(loads, 2u);  // the one with other material overrides needs its own materials
+  ASSERT_EQ(s.meshes.size(), 2u);
+  ASSERT_EQ(s.instances.size(), 4u);
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(s.instances[size_t(i)].meshId, 0u);
+  EXPECT_EQ(s.instances[3].meshId, 1u);
+  EXPECT_NEAR(s.instances[1].objectToWorld.point({0, 0, 0}).x, 10.0f, 1e-6f);
+  EXPECT_NEAR(s.instances[2].objectToWorld.point({0, 0, 0}).x, 20.0f, 1e-6f);
+  EXPECT_EQ(s.materials.size(), 2u);
+}
+
+// Many OBJ files that all name one material library: the library is parsed once, each model keeps only the
+// materials its faces use, and each texture is decoded and held once for the whole scene.
+TEST(SceneFile, ModelsSharingAMaterialLibraryShareItsTextures) {
+  TempFolder dir;
+  std::vector<uint8_t> png = readFileBytes(std::string(CANDELA_SOURCE_DIR) + "/tests/scene/data/checker.png");
+  dir.write("tex/a.png", std::string(png.begin(), png.end()));
+  dir.write("tex/b.png", std::string(png.begin(), png.end()));
+  dir.write("lib.mtl", "newmtl a\nKd 1 1 1\nmap_Kd tex/a.png\nnewmtl b\nKd 1 1 1\nmap_Kd tex/b.png\n"
+                       "newmtl unused\nKd 1 1 1\nmap_Kd tex/missing.png\n");
+  std::string models;
+  for (int i = 0; i < 6; ++i) {
+    std::string name = "m" + std::to_string(i) + ".obj";
+    dir.write(name, std::string("mtllib lib.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl ") + (i % 2 ? "a" : "b") +
+                        "\nf 1 2 3\n");
+    models += std::string(i ? "," : "") + R"({"file": ")" + name + R"("})";
+  }
+  LoadWarnings warnings;
+  Scene s = loadSceneFile(dir.write("s.json", R"({"models": [)" + models + "]}"), &loadModel, warnings);
+  validateScene(s);
+  ASSERT_EQ(s.materials.size(), 6u);  // one used material per model
+  EXPECT_EQ(s.textures.size(), 2u);
+  for (size_t m = 0; m < s.materials.size(); ++m)
+    EXPECT_EQ(s.materials[m].baseColorTexture, s.materials[m % 2].baseColorTexture);
+  EXPECT_NE(s.materials[0].baseColorTexture, s.materials[1].baseColorTexture);
+  // The unused material's missing texture is never looked for.
+  for (const std::string& w : warnings.messages) EXPECT_EQ(w.find("missing.png"), std::string::npos) << w;
 }
 
 TEST(SceneFile, ErrorsNameTheJsonPathOrLine) {

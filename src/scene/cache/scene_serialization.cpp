@@ -13,7 +13,8 @@ void writeTexture(BinaryWriter& out, const Texture& t) {
   out.value(t.height);
   out.value(t.channels);
   out.value(uint8_t(t.srgb));
-  out.value(t.wrap);
+  out.value(t.wrapU);
+  out.value(t.wrapV);
   out.array(t.bytes);
   out.array(t.floats);
 }
@@ -25,7 +26,8 @@ void readTexture(BinaryReader& in, Texture& t) {
   in.value(t.height);
   in.value(t.channels);
   in.value(srgb);
-  in.value(t.wrap);
+  in.value(t.wrapU);
+  in.value(t.wrapV);
   in.array(t.bytes);
   in.array(t.floats);
   t.srgb = srgb != 0;

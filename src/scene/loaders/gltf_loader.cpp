@@ -128,8 +128,11 @@ glm::mat4 localTransform(const tinygltf::Node& node) {
 
 class GltfSceneBuilder {
  public:
-  GltfSceneBuilder(const tinygltf::Model& model, std::string file, std::string baseDir, LoadWarnings& warnings)
-      : model_(model), file_(std::move(file)), baseDir_(std::move(baseDir)), warnings_(warnings), accessors_(model, file_) {}
+  // Textures go to `sharedTextures` when given (and are left for its owner to finish), else to the builder's own.
+  GltfSceneBuilder(const tinygltf::Model& model, std::string file, std::string baseDir, LoadWarnings& warnings,
+                   TextureTable* sharedTextures)
+      : model_(model), file_(std::move(file)), baseDir_(std::move(baseDir)), warnings_(warnings), accessors_(model, file_),
+        textures_(sharedTextures ? *sharedTextures : ownTextures_), sharesTextures_(sharedTextures != nullptr) {}
 
   Scene build() {
     scene_.name = fs::path(file_).stem().string();
@@ -160,7 +163,7 @@ class GltfSceneBuilder {
                                " KHR_lights_punctual lights are ignored: only emissive surfaces and the environment "
                                "emit light in candela");
     if (skinned_) warnings_.add(file_, "skins are ignored; meshes are loaded in their bind pose");
-    textures_.finish(scene_, 0, warnings_);
+    if (!sharesTextures_) textures_.finish(scene_, 0, warnings_);
     scene_.cameraMissing = !cameraFound_;
     return std::move(scene_);
   }
@@ -374,12 +377,15 @@ class GltfSceneBuilder {
       return kNoTexture;
     }
     const tinygltf::Texture& t = model_.textures[size_t(index)];
-    TextureWrap wrap = TextureWrap::Repeat;
-    if (t.sampler >= 0 && size_t(t.sampler) < model_.samplers.size()) {
-      int w = model_.samplers[size_t(t.sampler)].wrapS;
-      wrap = w == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE ? TextureWrap::Clamp
+    auto wrapMode = [](int w) {
+      return w == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE     ? TextureWrap::Clamp
              : w == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT ? TextureWrap::Mirror
                                                           : TextureWrap::Repeat;
+    };
+    TextureWrap wrapU = TextureWrap::Repeat, wrapV = TextureWrap::Repeat;
+    if (t.sampler >= 0 && size_t(t.sampler) < model_.samplers.size()) {
+      wrapU = wrapMode(model_.samplers[size_t(t.sampler)].wrapS);
+      wrapV = wrapMode(model_.samplers[size_t(t.sampler)].wrapT);
     }
     if (t.source < 0 || size_t(t.source) >= model_.images.size()) {
       std::string ext = t.extensions.empty() ? "" : " (it uses " + t.extensions.begin()->first + ", which is not supported)";
@@ -389,10 +395,10 @@ class GltfSceneBuilder {
     const tinygltf::Image& image = model_.images[size_t(t.source)];
     std::string imageWhere = "images[" + std::to_string(t.source) + "]";
     if (!image.image.empty())
-      return textures_.fromMemory(imageWhere, file_ + ": " + imageWhere, image.image, srgb, wrap);
+      return textures_.fromMemory(file_ + ": " + imageWhere, file_ + ": " + imageWhere, image.image, srgb, wrapU, wrapV);
     if (!image.uri.empty() && !baseDir_.empty()) {
       fs::path path = fs::path(baseDir_) / percentDecode(image.uri);
-      return textures_.fromFile(path.lexically_normal().string(), srgb, wrap);
+      return textures_.fromFile(path.lexically_normal().string(), srgb, wrapU, wrapV);
     }
     warnings_.add(file_, imageWhere + " has no data; the material is left untextured");
     return kNoTexture;
@@ -404,7 +410,9 @@ class GltfSceneBuilder {
   LoadWarnings& warnings_;
   GltfAccessorReader accessors_;
   Scene scene_;
-  TextureTable textures_;
+  TextureTable ownTextures_;
+  TextureTable& textures_;
+  bool sharesTextures_;
   std::vector<std::optional<UvTransform>> uvTransforms_;
   std::map<int, std::optional<uint32_t>> meshes_;
   std::optional<uint32_t> defaultMaterial_;
@@ -414,7 +422,7 @@ class GltfSceneBuilder {
 };
 
 Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, const std::string& baseDir,
-                    LoadWarnings& warnings) {
+                    LoadWarnings& warnings, TextureTable* sharedTextures) {
   if (size == 0) failLoad(name, "file is empty");
   bool binary = isGlb(data, size);
   auto [json, jsonSize] = binary ? glbJson(data, size) : std::pair{reinterpret_cast<const char*>(data), size};
@@ -435,23 +443,24 @@ Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, c
   std::string line;
   while (std::getline(lines, line))
     if (!firstLine(line).empty()) warnings.add(name, firstLine(line));
-  Scene scene = GltfSceneBuilder(model, name, baseDir, warnings).build();
+  Scene scene = GltfSceneBuilder(model, name, baseDir, warnings, sharedTextures).build();
   scene.inputFiles.insert(scene.inputFiles.begin(), access.filesRead.begin(), access.filesRead.end());
   return scene;
 }
 
 }  // namespace
 
-Scene loadGltf(const std::string& path, LoadWarnings& warnings) {
+Scene loadGltf(const std::string& path, LoadWarnings& warnings, SharedModelAssets* shared) {
   std::vector<uint8_t> bytes = readFileBytes(path);
   std::string baseDir = fs::path(path).parent_path().string();
-  Scene scene = loadFromBytes(path, bytes.data(), bytes.size(), baseDir.empty() ? "." : baseDir, warnings);
+  Scene scene = loadFromBytes(path, bytes.data(), bytes.size(), baseDir.empty() ? "." : baseDir, warnings,
+                              shared ? &shared->textures : nullptr);
   scene.inputFiles.insert(scene.inputFiles.begin(), path);
   return scene;
 }
 
 Scene loadGltfBytes(const std::string& name, const uint8_t* data, size_t size, LoadWarnings& warnings) {
-  return loadFromBytes(name, data, size, "", warnings);
+  return loadFromBytes(name, data, size, "", warnings, nullptr);
 }
 
 }  // namespace candela

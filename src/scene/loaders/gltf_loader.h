@@ -3,6 +3,7 @@
 #include <string>
 
 #include "scene/loaders/load_diagnostics.h"
+#include "scene/loaders/shared_model_assets.h"
 #include "scene/scene.h"
 
 namespace candela {
@@ -14,8 +15,9 @@ namespace candela {
 // normal transform carries it. The first camera met in the node hierarchy becomes the scene's camera.
 // KHR_lights_punctual lights cannot be rendered by the area-light model and are ignored with a warning; so are
 // skins and morph targets (the static pose is loaded). Materials: see gltf_materials.h. Invalid input throws
-// LoadError naming the file and the JSON path of the problem.
-Scene loadGltf(const std::string& path, LoadWarnings& warnings);
+// LoadError naming the file and the JSON path of the problem. With `shared`, textures are left for
+// shared->textures.finish() (shared_model_assets.h).
+Scene loadGltf(const std::string& path, LoadWarnings& warnings, SharedModelAssets* shared = nullptr);
 
 // The same for a .gltf or .glb held in memory; external buffers and images are not read. `name` stands for the
 // file in messages.

@@ -33,8 +33,8 @@ class TextureSlots {
     std::string file = name;
     std::replace(file.begin(), file.end(), '\\', '/');
     std::filesystem::path path = std::filesystem::path(file).is_absolute() ? std::filesystem::path(file) : directory_ / file;
-    return textures_.fromFile(path.lexically_normal().string(), srgb,
-                              options.clamp ? TextureWrap::Clamp : TextureWrap::Repeat);
+    TextureWrap wrap = options.clamp ? TextureWrap::Clamp : TextureWrap::Repeat;
+    return textures_.fromFile(path.lexically_normal().string(), srgb, wrap, wrap);
   }
 
   void ignore(const std::string& name, const std::string& why) {

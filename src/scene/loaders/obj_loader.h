@@ -4,6 +4,7 @@
 
 #include "scene/loaders/load_diagnostics.h"
 #include "scene/loaders/obj_geometry_reader.h"
+#include "scene/loaders/shared_model_assets.h"
 #include "scene/scene.h"
 
 namespace candela {
@@ -13,8 +14,10 @@ namespace candela {
 // references resolved, every object and group goes into one mesh with a material per triangle, and missing
 // normals are generated (obj_mesh_builder.h). UVs follow the Mesh convention (v = 0 at the top of the image),
 // so OBJ's v is flipped. A missing .mtl or texture is a warning; malformed geometry throws LoadError naming the
-// file and line.
-Scene loadObj(const std::string& path, LoadWarnings& warnings);
+// file and line. Only the materials that faces use are kept (in library order, then "default" for faces with
+// none). With `shared`, material libraries come from and go to its cache and the materials' textures are left
+// for shared->textures.finish() (shared_model_assets.h).
+Scene loadObj(const std::string& path, LoadWarnings& warnings, SharedModelAssets* shared = nullptr);
 
 // The same for OBJ text in memory, with no material libraries; `name` stands for the file in messages.
 Scene loadObjText(const std::string& name, std::string_view text, LoadWarnings& warnings,

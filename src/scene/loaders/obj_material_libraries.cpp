@@ -30,11 +30,40 @@ std::vector<std::string> libraryNames(std::string_view text) {
   return names;
 }
 
+// tinyobjloader's messages, one line each, repeated ones counted.
+void forwardMessages(const std::string& file, const std::string& text, LoadWarnings& warnings) {
+  std::map<std::string, size_t> counts;
+  std::vector<std::string> order;
+  std::istringstream lines(text);
+  std::string line;
+  while (std::getline(lines, line)) {
+    while (!line.empty() && (line.back() == '.' || line.back() == ' ' || line.back() == '\r')) line.pop_back();
+    if (line.empty()) continue;
+    if (counts[line]++ == 0) order.push_back(line);
+  }
+  for (const std::string& l : order) warnings.add(file, counts[l] > 1 ? l + " (" + std::to_string(counts[l]) + " times)" : l);
+}
+
 }  // namespace
 
+const MtlLibraryCache::Library& MtlLibraryCache::get(const std::string& path, LoadWarnings& warnings) {
+  std::unique_ptr<Library>& library = libraries_[path];
+  if (library) return *library;
+  library = std::make_unique<Library>();
+  std::ifstream in(path, std::ios::binary);
+  std::error_code ec;
+  if (!in || fs::is_directory(path, ec)) return *library;
+  library->found = true;
+  std::map<std::string, int> index;
+  std::string mtlWarnings, mtlErrors;
+  tinyobj::LoadMtl(&index, &library->materials, &in, &mtlWarnings, &mtlErrors);
+  forwardMessages(path, mtlWarnings + mtlErrors, warnings);
+  return *library;
+}
+
 ObjMaterialLibraries::ObjMaterialLibraries(std::string objFile, std::optional<std::string> directory,
-                                           LoadWarnings& warnings)
-    : objFile_(std::move(objFile)), directory_(std::move(directory)), warnings_(warnings) {}
+                                           MtlLibraryCache& cache, LoadWarnings& warnings)
+    : objFile_(std::move(objFile)), directory_(std::move(directory)), cache_(cache), warnings_(warnings) {}
 
 void ObjMaterialLibraries::loadLibraries(size_t line, std::string_view text) {
   if (!directory_) return;
@@ -49,31 +78,18 @@ void ObjMaterialLibraries::load(size_t line, const std::string& name) {
   fs::path path = (fs::path(*directory_) / file).lexically_normal();
   if (std::find(files_.begin(), files_.end(), path.string()) != files_.end()) return;
   files_.push_back(path.string());
-  std::ifstream in(path, std::ios::binary);
-  std::error_code ec;
-  if (!in || fs::is_directory(path, ec)) {
+  const MtlLibraryCache::Library& library = cache_.get(path.string(), warnings_);
+  if (!library.found) {
     warnings_.add(objFile_ + ":" + std::to_string(line),
                   "material library '" + name + "' not found; its materials are replaced by grey");
     return;
   }
-  std::string mtlWarnings, mtlErrors;
-  tinyobj::LoadMtl(&index_, &materials_, &in, &mtlWarnings, &mtlErrors);
-  forwardMessages(path.string(), mtlWarnings + mtlErrors);
-  sources_.resize(materials_.size(), path.string());
-}
-
-// tinyobjloader's messages, one line each, repeated ones counted.
-void ObjMaterialLibraries::forwardMessages(const std::string& file, const std::string& text) {
-  std::map<std::string, size_t> counts;
-  std::vector<std::string> order;
-  std::istringstream lines(text);
-  std::string line;
-  while (std::getline(lines, line)) {
-    while (!line.empty() && (line.back() == '.' || line.back() == ' ' || line.back() == '\r')) line.pop_back();
-    if (line.empty()) continue;
-    if (counts[line]++ == 0) order.push_back(line);
+  // As tinyobjloader merges libraries: a name already known keeps its first material.
+  for (const tinyobj::material_t& m : library.materials) {
+    index_.try_emplace(m.name, int(materials_.size()));
+    materials_.push_back(m);
   }
-  for (const std::string& l : order) warnings_.add(file, counts[l] > 1 ? l + " (" + std::to_string(counts[l]) + " times)" : l);
+  sources_.resize(materials_.size(), path.string());
 }
 
 uint32_t ObjMaterialLibraries::find(size_t line, std::string_view name) {

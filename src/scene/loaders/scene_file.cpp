@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
+#include <tuple>
 
 #include "scene/loaders/file_bytes.h"
 #include "scene/loaders/image_decoding.h"
@@ -154,21 +156,30 @@ size_t lineOfOffset(const std::string& text, size_t offset) {
 
 void appendScene(Scene& scene, Scene&& part, const Affine3x4& transform) {
   uint32_t meshBase = uint32_t(scene.meshes.size()), materialBase = uint32_t(scene.materials.size());
-  int32_t textureBase = int32_t(scene.textures.size());
   for (Mesh& m : part.meshes) {
     for (uint32_t& id : m.triangleMaterials) id += materialBase;
     scene.meshes.push_back(std::move(m));
+  }
+  using TextureKey = std::tuple<std::string, bool, TextureWrap, TextureWrap>;
+  auto keyOf = [](const Texture& t) { return TextureKey{t.name, t.srgb, t.wrapU, t.wrapV}; };
+  std::map<TextureKey, int32_t> known;
+  for (size_t t = 0; t < scene.textures.size(); ++t) known.try_emplace(keyOf(scene.textures[t]), int32_t(t));
+  std::vector<int32_t> textureId(part.textures.size());
+  for (size_t t = 0; t < part.textures.size(); ++t) {
+    auto [it, added] = known.try_emplace(keyOf(part.textures[t]), int32_t(scene.textures.size()));
+    if (added) scene.textures.push_back(std::move(part.textures[t]));
+    textureId[t] = it->second;
   }
   part.materialNames.resize(part.materials.size());
   for (size_t i = 0; i < part.materials.size(); ++i) {
     Material m = part.materials[i];
     for (int32_t* t : {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.roughnessTexture, &m.metallicTexture,
                        &m.emissionTexture, &m.normalTexture, &m.opacityTexture})
-      if (*t != kNoTexture) *t += textureBase;
+      // A part loaded with SharedModelAssets has no textures of its own: its ids point into the shared table.
+      if (*t != kNoTexture && !part.textures.empty()) *t = textureId[size_t(*t)];
     scene.materials.push_back(m);
     scene.materialNames.push_back(part.materialNames[i]);
   }
-  for (Texture& t : part.textures) scene.textures.push_back(std::move(t));
   scene.inputFiles.insert(scene.inputFiles.end(), part.inputFiles.begin(), part.inputFiles.end());
   glm::mat4 outer = toMat4(transform);
   for (const Instance& inst : part.instances)
@@ -194,6 +205,9 @@ Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadW
   Scene scene;
   scene.name = fs::path(path).stem().string();
   std::optional<CameraDescription> modelCamera;
+  SharedModelAssets shared;
+  // A model file loaded before with the same material overrides: its instances, relative to its transform.
+  std::map<std::pair<std::string, std::string>, std::vector<Instance>> loaded;
   Node models = root["models"];
   if (models.size() == 0) models.fail("a scene needs at least one model");
   for (size_t i = 0; i < models.size(); ++i) {
@@ -203,8 +217,17 @@ Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadW
     std::string ext = fs::path(file).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
     if (ext != ".obj" && ext != ".gltf" && ext != ".glb") model["file"].fail("models must be .obj, .gltf or .glb files");
-    Scene part = loadModel(file, warnings);
     glm::mat4 transform = model.has("transform") ? transformOf(model["transform"], warnings) : glm::mat4(1.0f);
+    std::pair<std::string, std::string> key{file, model.has("materials") ? doc["models"][i]["materials"].dump() : ""};
+    if (auto it = loaded.find(key); it != loaded.end()) {
+      for (const Instance& inst : it->second)
+        scene.instances.push_back({inst.meshId, toAffine(transform * toMat4(inst.objectToWorld))});
+      continue;
+    }
+    Scene part = loadModel(file, warnings, shared);
+    std::vector<Instance>& instances = loaded[key];
+    for (const Instance& inst : part.instances)
+      instances.push_back({inst.meshId + uint32_t(scene.meshes.size()), inst.objectToWorld});
     if (model.has("materials")) {
       if (!model["materials"].isObject()) model["materials"].fail("expected an object of material names");
       const json& overrides = doc["models"][i]["materials"];
@@ -228,6 +251,7 @@ Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadW
     }
     appendScene(scene, std::move(part), toAffine(transform));
   }
+  shared.textures.finish(scene, 0, warnings);
 
   scene.cameraMissing = true;
   if (modelCamera) {

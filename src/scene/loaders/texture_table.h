@@ -10,15 +10,17 @@
 
 namespace candela {
 
-// Collects the textures a file's materials refer to, each distinct (source, encoding, wrap) once, and decodes
-// them all at the end, in parallel. Materials hold provisional indices until finish() rewrites them; a texture
+// Collects the textures materials refer to, each distinct (source, encoding, wrap modes) once, and decodes
+// them all at the end, in parallel. One table may serve all the models of a scene (shared_model_assets.h). Materials hold provisional indices until finish() rewrites them; a texture
 // that is missing or unreadable gives a warning and leaves its materials untextured.
 class TextureTable {
  public:
   // An image file, or an image already in memory (`bytes`) that `name` describes for messages.
-  int32_t fromFile(const std::string& path, bool srgb, TextureWrap wrap = TextureWrap::Repeat);
+  // `key` names in-memory bytes uniquely within the table (the file that embeds them and where).
+  int32_t fromFile(const std::string& path, bool srgb, TextureWrap wrapU = TextureWrap::Repeat,
+                   TextureWrap wrapV = TextureWrap::Repeat);
   int32_t fromMemory(const std::string& key, const std::string& name, std::vector<uint8_t> bytes, bool srgb,
-                     TextureWrap wrap = TextureWrap::Repeat);
+                     TextureWrap wrapU = TextureWrap::Repeat, TextureWrap wrapV = TextureWrap::Repeat);
 
   // Decodes everything requested, appends the textures to `scene` (and their files to scene.inputFiles) and
   // points the texture fields of scene.materials[firstMaterial...] at them.
@@ -30,11 +32,11 @@ class TextureTable {
     std::string path;            // empty when the bytes are in memory
     std::vector<uint8_t> bytes;
     bool srgb = false;
-    TextureWrap wrap = TextureWrap::Repeat;
+    TextureWrap wrapU = TextureWrap::Repeat, wrapV = TextureWrap::Repeat;
   };
   int32_t add(const std::string& key, Request request);
 
-  std::map<std::tuple<std::string, bool, TextureWrap>, int32_t> index_;
+  std::map<std::tuple<std::string, bool, TextureWrap, TextureWrap>, int32_t> index_;
   std::vector<Request> requests_;
 };
 
