@@ -14,6 +14,7 @@
 
 #include "scene/loaders/file_bytes.h"
 #include "scene/loaders/gltf_accessors.h"
+#include "scene/loaders/gltf_extensions.h"
 #include "scene/loaders/gltf_materials.h"
 #include "scene/loaders/texture_table.h"
 #include "scene/transform.h"
@@ -135,6 +136,7 @@ class GltfSceneBuilder {
         textures_(sharedTextures ? *sharedTextures : ownTextures_), sharesTextures_(sharedTextures != nullptr) {}
 
   Scene build() {
+    checkGltfExtensions(model_, file_, warnings_);
     scene_.name = fs::path(file_).stem().string();
     for (size_t i = 0; i < model_.materials.size(); ++i) {
       GltfMaterial m = materialFromGltf(model_, int(i), file_, [this](int t, bool srgb) { return texture(t, srgb); },
@@ -142,6 +144,7 @@ class GltfSceneBuilder {
       scene_.materials.push_back(m.material);
       scene_.materialNames.push_back(model_.materials[i].name);
       uvTransforms_.push_back(m.uvTransform);
+      texCoords_.push_back(m.texCoord);
     }
     std::vector<int> roots;
     int sceneIndex = model_.defaultScene >= 0 ? model_.defaultScene : (model_.scenes.empty() ? -1 : 0);
@@ -276,9 +279,14 @@ class GltfSceneBuilder {
         part.normals = accessors_.readVec3(a, where + ".attributes.NORMAL");
         sameCount(part.normals.size(), "NORMAL");
       }
-      if (int a = attribute("TEXCOORD_0"); a >= 0) {
-        part.uvs = accessors_.readTexcoords(a, where + ".attributes.TEXCOORD_0");
-        sameCount(part.uvs.size(), "TEXCOORD_0");
+      if (prim.material >= 0 && size_t(prim.material) >= model_.materials.size())
+        failLoad(file_, where + ".material: material " + std::to_string(prim.material) + " does not exist");
+      std::string texCoord = "TEXCOORD_" + std::to_string(prim.material >= 0 ? texCoords_[size_t(prim.material)] : 0);
+      if (int a = attribute(texCoord.c_str()); a >= 0) {
+        part.uvs = accessors_.readVec2(a, where + ".attributes." + texCoord);
+        sameCount(part.uvs.size(), texCoord.c_str());
+      } else if (texCoord != "TEXCOORD_0") {
+        warnings_.add(file_, where + ": the material's textures read " + texCoord + ", which the primitive lacks");
       }
       if (int a = attribute("TANGENT"); a >= 0) {
         part.tangents = accessors_.readVec4(a, where + ".attributes.TANGENT");
@@ -296,8 +304,6 @@ class GltfSceneBuilder {
         for (size_t i = 0; i < n; ++i) indices[i] = uint32_t(i);
       }
       part.indices = toTriangleList(indices, prim.mode);
-      if (prim.material >= 0 && size_t(prim.material) >= model_.materials.size())
-        failLoad(file_, where + ".material: material " + std::to_string(prim.material) + " does not exist");
       part.material = prim.material >= 0 ? uint32_t(prim.material) : defaultMaterial();
       if (prim.material >= 0 && uvTransforms_[size_t(prim.material)])
         for (Vec2& uv : part.uvs) uv = uvTransforms_[size_t(prim.material)]->apply(uv);
@@ -414,6 +420,7 @@ class GltfSceneBuilder {
   TextureTable& textures_;
   bool sharesTextures_;
   std::vector<std::optional<UvTransform>> uvTransforms_;
+  std::vector<int> texCoords_;  // the TEXCOORD set each material's textures read
   std::map<int, std::optional<uint32_t>> meshes_;
   std::optional<uint32_t> defaultMaterial_;
   bool cameraFound_ = false;
@@ -438,7 +445,10 @@ Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, c
   bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, data, unsigned(std::min<size_t>(size, UINT32_MAX)), baseDir)
                    : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(data),
                                                 unsigned(std::min<size_t>(size, UINT32_MAX)), baseDir);
-  if (!ok) failLoad(name, err.empty() ? "not a valid glTF file" : firstLine(err));
+  if (!ok) {
+    if (json) refuseUnsupportedRequiredExtensions(json, jsonSize, name);
+    failLoad(name, err.empty() ? "not a valid glTF file" : firstLine(err));
+  }
   std::istringstream lines(warn);
   std::string line;
   while (std::getline(lines, line))
