@@ -30,6 +30,27 @@ TEST(MaterialRender, LosslessDeltaMaterialsVanishInTheFurnace) {
   }
 }
 
+// A transmissive material of ior 1 is index-matched to the air around it: light passes straight through,
+// whatever the roughness, so in the furnace the sphere vanishes as lossless glass does. It used to render black
+// with invalid samples (TransmissionRoughnessTest's 'Air' row).
+TEST(MaterialRender, IndexMatchedTransmissionPassesLightStraightThrough) {
+  for (float roughness : {0.0f, 0.3f, 1.0f}) {
+    Material air;
+    air.type = MaterialType::Disney;
+    air.baseColor = {1, 1, 1};
+    air.specTrans = 1.0f;
+    air.ior = 1.0f;
+    air.roughness = roughness;
+    RenderSettings settings;
+    settings.width = settings.height = 16;
+    settings.maxDepth = 8;
+    settings.rouletteDepth = 1000;
+    PixelStatistics s = luminanceStatistics(renderCpu(furnaceSphere(air), settings, 16));
+    EXPECT_NEAR(s.min, 1.0, 1e-4) << "roughness " << roughness;
+    EXPECT_NEAR(s.max, 1.0, 1e-4) << "roughness " << roughness;
+  }
+}
+
 // Direct lighting only (depth 1) on a convex object under a uniform sky of radiance 1: each pixel estimates
 // the directional albedo at its view angle, here within 2 degrees of normal incidence. The reference is the
 // quadrature of eval() at normal incidence, which shares no code with light or BSDF sampling. Tolerance:
