@@ -46,6 +46,44 @@ Scene loadFile(const std::string& path, const SceneCacheSettings& cache, LoadWar
                            ")");
 }
 
+bool hasLightSource(const Scene& scene) {
+  const Environment& env = scene.environment;
+  if (env.intensity > 0.0f && (env.hasMap() || !isBlack(env.radiance))) return true;
+  std::vector<bool> emissive(scene.materials.size());
+  for (size_t m = 0; m < scene.materials.size(); ++m) emissive[m] = !isBlack(scene.materials[m].emission);
+  std::vector<bool> instanced(scene.meshes.size());
+  for (const Instance& inst : scene.instances) instanced[inst.meshId] = true;
+  for (size_t i = 0; i < scene.meshes.size(); ++i)
+    if (instanced[i])
+      for (uint32_t m : scene.meshes[i].triangleMaterials)
+        if (m < emissive.size() && emissive[m]) return true;
+  return false;
+}
+
+// Takes the camera `choice` names (a name or an index into scene.cameras), or warns which one was taken when
+// the file has several.
+void chooseCamera(Scene& scene, const std::string& spec, const std::string& choice, LoadWarnings& warnings) {
+  auto list = [&] {
+    std::string names;
+    for (size_t i = 0; i < scene.cameras.size(); ++i)
+      names += (i ? ", " : "") + std::to_string(i) + " '" + scene.cameras[i].name + "'";
+    return names.empty() ? std::string("none") : names;
+  };
+  if (choice.empty()) {
+    if (scene.cameras.size() > 1)
+      warnings.add(spec, std::to_string(scene.cameras.size()) + " cameras; taking 0 '" + scene.cameras[0].name +
+                             "' (choose with --camera NAME|INDEX: " + list() + ")");
+    return;
+  }
+  for (size_t i = 0; i < scene.cameras.size(); ++i)
+    if (scene.cameras[i].name == choice || std::to_string(i) == choice) {
+      scene.camera = scene.cameras[i].description;
+      scene.cameraMissing = false;
+      return;
+    }
+  throw std::runtime_error(spec + ": no camera '" + choice + "' (cameras: " + list() + ")");
+}
+
 }  // namespace
 
 void frameSceneBounds(Scene& scene) {
@@ -75,6 +113,10 @@ Scene loadScene(const std::string& spec, const SceneLoadOptions& options) {
     env.map = loadEnvironmentImage(options.environmentPath);
     scene.environment = std::move(env);
   }
+  chooseCamera(scene, spec, options.camera, warnings);
+  if (!hasLightSource(scene))
+    warnings.add(spec, "the scene has no light source (no emissive surface, no environment): the image will be "
+                       "black; light it with --env");
   for (const std::string& w : warnings.messages) std::fprintf(stderr, "candela: warning: %s\n", w.c_str());
   if (scene.cameraMissing) frameSceneBounds(scene);
   return scene;

@@ -58,6 +58,12 @@ struct CameraDescription {
   }
 };
 
+// A camera an input file defines, under the name it gives (or a description of where it is).
+struct NamedCamera {
+  std::string name;
+  CameraDescription description;
+};
+
 // Light from infinitely far away: a constant `radiance`, or an equirectangular `map` (float RGB, top row the
 // zenith, see kernel/environment.h for the orientation) scaled by `intensity` and turned about +Y.
 struct Environment {
@@ -87,6 +93,7 @@ struct Scene {
   CameraDescription camera;
   RenderHints renderHints;
   bool cameraMissing = false;  // the input had no camera: `camera` is to be framed around the scene's bounds
+  std::vector<NamedCamera> cameras;  // every camera the input defines, in order; `camera` is the first
   // The files the scene was read from: the model, its material libraries, buffers and images (what the scene
   // cache checks for changes).
   std::vector<std::string> inputFiles;

@@ -70,6 +70,11 @@ void expectSameScene(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.renderHints.samplesPerPixel, b.renderHints.samplesPerPixel);
   EXPECT_EQ(a.renderHints.maxDepth, b.renderHints.maxDepth);
   EXPECT_EQ(a.cameraMissing, b.cameraMissing);
+  ASSERT_EQ(a.cameras.size(), b.cameras.size());
+  for (size_t i = 0; i < a.cameras.size(); ++i) {
+    EXPECT_EQ(a.cameras[i].name, b.cameras[i].name);
+    EXPECT_EQ(std::memcmp(&a.cameras[i].description, &b.cameras[i].description, sizeof(CameraDescription)), 0);
+  }
   EXPECT_EQ(a.inputFiles, b.inputFiles);
 }
 
@@ -113,6 +118,7 @@ Scene richScene() {
   s.renderHints.width = 320;
   s.renderHints.maxDepth = 4;
   s.cameraMissing = true;
+  s.cameras = {{"front", s.camera}, {"side", CameraDescription{}}};
   s.inputFiles = {"model.obj", "model.mtl"};
   return s;
 }

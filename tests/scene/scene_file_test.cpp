@@ -184,5 +184,62 @@ TEST(SceneLoading, FramesScenesWithoutCamera) {
   EXPECT_THROW(loadScene("no-such-scene"), std::runtime_error);
 }
 
+// A glTF with two named cameras and no light: the first camera is taken with a warning naming it and how to
+// choose; --camera takes another by name or index; an unknown one is an error listing them; the missing light
+// source is a warning.
+TEST(SceneLoading, NamesTheCameraTakenAndWarnsWhenNothingEmitsLight) {
+  TempFolder dir;
+  std::string gltf = R"({"asset": {"version": "2.0"},
+    "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+    "bufferViews": [{"buffer": 0, "byteLength": 36}],
+    "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+    "cameras": [{"name": "front", "type": "perspective", "perspective": {"yfov": 0.5, "znear": 0.1}},
+                {"name": "side", "type": "perspective", "perspective": {"yfov": 0.7, "znear": 0.1}}],
+    "nodes": [{"mesh": 0}, {"camera": 0, "translation": [0, 0, 3]}, {"camera": 1, "translation": [3, 0, 0]}],
+    "scenes": [{"nodes": [0, 1, 2]}]})";
+  std::string path = dir.write("two.gltf", gltf);
+  SceneLoadOptions options;
+  options.cache.enabled = false;
+  testing::internal::CaptureStderr();
+  Scene first = loadScene(path, options);
+  std::string warnings = testing::internal::GetCapturedStderr();
+  EXPECT_FLOAT_EQ(first.camera.eye.z, 3.0f);
+  EXPECT_NE(warnings.find("2 cameras; taking 0 'front' (choose with --camera NAME|INDEX: 0 'front', 1 'side')"),
+            std::string::npos) << warnings;
+  EXPECT_NE(warnings.find("the scene has no light source"), std::string::npos) << warnings;
+
+  for (const char* choice : {"side", "1"}) {
+    options.camera = choice;
+    testing::internal::CaptureStderr();
+    Scene side = loadScene(path, options);
+    warnings = testing::internal::GetCapturedStderr();
+    EXPECT_FLOAT_EQ(side.camera.eye.x, 3.0f) << choice;
+    EXPECT_EQ(warnings.find("cameras; taking"), std::string::npos) << warnings;
+  }
+  options.camera = "top";
+  testing::internal::CaptureStderr();
+  try {
+    loadScene(path, options);
+    ADD_FAILURE() << "expected an error for an unknown camera";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("no camera 'top' (cameras: 0 'front', 1 'side')"), std::string::npos) << e.what();
+  }
+  testing::internal::GetCapturedStderr();
+
+  // Lit by an environment, through a scene file whose own camera comes first: no warning about light.
+  options.camera = "models[0]: side";
+  testing::internal::CaptureStderr();
+  Scene lit = loadScene(dir.write("s.json", R"({"models": [{"file": "two.gltf", "transform": {"translate": [0, 1, 0]}}],
+      "camera": {"position": [0, 0, 9], "target": [0, 0, 0]}, "environment": {"radiance": [1, 1, 1]}})"),
+                        options);
+  warnings = testing::internal::GetCapturedStderr();
+  EXPECT_EQ(warnings.find("no light source"), std::string::npos) << warnings;
+  ASSERT_EQ(lit.cameras.size(), 3u);
+  EXPECT_EQ(lit.cameras[0].name, "camera");
+  EXPECT_FLOAT_EQ(lit.camera.eye.x, 3.0f);
+  EXPECT_FLOAT_EQ(lit.camera.eye.y, 1.0f);
+}
+
 }  // namespace
 }  // namespace candela

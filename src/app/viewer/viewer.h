@@ -11,6 +11,7 @@ struct ViewerOptions {
   std::string sceneSpec = "cornell-box";
   std::string environmentPath;  // an .hdr or .exr map that lights the first scene instead of its own
   SceneCacheSettings sceneCache;
+  std::string camera;  // the name or index of the first scene's camera to take; empty: the first
   std::string backend = "auto";
   bool interop = true;  // false: the image reaches the screen through the host copy even where interop works
   uint32_t width = 960;  // of the image; the panel sits beside it

@@ -87,6 +87,11 @@ void writeScene(BinaryWriter& out, const Scene& s) {
   writeOptional(out, s.renderHints.samplesPerPixel);
   writeOptional(out, s.renderHints.maxDepth);
   out.value(uint8_t(s.cameraMissing));
+  out.value(uint64_t(s.cameras.size()));
+  for (const NamedCamera& c : s.cameras) {
+    out.string(c.name);
+    out.value(c.description);
+  }
   out.value(uint64_t(s.inputFiles.size()));
   for (const std::string& f : s.inputFiles) out.string(f);
 }
@@ -123,6 +128,11 @@ bool readScene(BinaryReader& in, Scene& s) {
   readOptional(in, s.renderHints.maxDepth);
   in.value(flag);
   s.cameraMissing = flag != 0;
+  s.cameras.resize(size_t(in.count(kStringBytes + sizeof(CameraDescription))));
+  for (NamedCamera& c : s.cameras) {
+    in.string(c.name);
+    in.value(c.description);
+  }
   s.inputFiles.resize(size_t(in.count(kStringBytes)));
   for (std::string& f : s.inputFiles) in.string(f);
   return in.ok();

@@ -186,7 +186,7 @@ class GltfSceneBuilder {
         failLoad(file_, where + ".mesh: mesh " + std::to_string(node.mesh) + " does not exist");
       if (std::optional<uint32_t> mesh = meshFor(node.mesh)) scene_.instances.push_back({*mesh, toAffine(world)});
     }
-    if (node.camera >= 0 && !cameraFound_) takeCamera(node.camera, world, where);
+    if (node.camera >= 0) takeCamera(node.camera, world, where);
     if (node.extensions.count("KHR_lights_punctual")) ++punctualLights_;
     if (node.skin >= 0) skinned_ = true;
     for (size_t c = 0; c < node.children.size(); ++c)
@@ -205,13 +205,15 @@ class GltfSceneBuilder {
     glm::vec3 forward = glm::normalize(glm::vec3(world * glm::vec4(0, 0, -1, 0)));
     glm::vec3 up = glm::normalize(glm::vec3(world * glm::vec4(0, 1, 0, 0)));
     float yfov = float(c.perspective.yfov) * 180.0f / kPi;
-    CameraDescription& d = scene_.camera;
+    CameraDescription d;
     d.eye = {eye.x, eye.y, eye.z};
     d.target = {eye.x + forward.x, eye.y + forward.y, eye.z + forward.z};
     d.up = {up.x, up.y, up.z};
     d.verticalFovDegrees = std::isfinite(yfov) && yfov > 0.0f && yfov < 180.0f ? yfov : 40.0f;
     if (!isFinite(d.eye) || !isFinite(d.target) || !isFinite(d.up)) return;
+    if (!cameraFound_) scene_.camera = d;
     cameraFound_ = true;
+    scene_.cameras.push_back({c.name.empty() ? "cameras[" + std::to_string(index) + "] at " + where : c.name, d});
   }
 
   std::optional<uint32_t> meshFor(int gltfMesh) {

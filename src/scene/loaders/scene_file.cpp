@@ -242,13 +242,15 @@ Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadW
         if (!found) warnings.add(path, "models[" + std::to_string(i) + "].materials." + name + ": no material of that name in " + file);
       }
     }
-    if (!part.cameraMissing && !modelCamera) {
-      CameraDescription c = part.camera;
+    auto placed = [&](CameraDescription c) {
       c.eye = toAffine(transform).point(c.eye);
       c.target = toAffine(transform).point(c.target);
       c.up = normalize(toAffine(transform).vector(c.up));
-      modelCamera = c;
-    }
+      return c;
+    };
+    if (!part.cameraMissing && !modelCamera) modelCamera = placed(part.camera);
+    for (const NamedCamera& c : part.cameras)
+      scene.cameras.push_back({"models[" + std::to_string(i) + "]: " + c.name, placed(c.description)});
     appendScene(scene, std::move(part), toAffine(transform));
   }
   shared.textures.finish(scene, 0, warnings);
@@ -273,6 +275,7 @@ Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadW
     if (length(forward) == 0.0f) c.fail("position and target coincide");
     if (length(cross(forward, cam.up)) == 0.0f) c["up"].fail("up is parallel to the viewing direction");
     scene.cameraMissing = false;
+    scene.cameras.insert(scene.cameras.begin(), {"camera", cam});
   }
   if (root.has("environment")) {
     Node e = root["environment"];
