@@ -71,7 +71,7 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
     SurfaceInteraction si = makeInteraction(scene, hit);
     const Material& stored = scene.materials[si.materialId];
     Vec3 wo = -ray.direction;
-    Material material = evaluateMaterial(scene, stored, si.uv);
+    Material material = evaluateMaterial(scene, stored, si);
     applyNormalMap(scene, material, si);
     keepReflectionAboveSurface(si, wo);
     if (kWithAovs && aovsPending && !isSpecularMaterial(material)) {

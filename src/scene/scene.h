@@ -18,6 +18,7 @@ struct Mesh {
   std::vector<Vec3> normals;  // empty, or one per position
   std::vector<Vec2> uvs;      // empty, or one per position; v runs down the image rows (glTF's convention)
   std::vector<Vec4> tangents;  // empty, or one per position: unit tangent along +u and the bitangent sign
+  std::vector<Vec3> colors;    // empty, or one per position: linear RGB that multiplies the base colour
   std::vector<uint32_t> indices;  // 3 per triangle
   std::vector<uint32_t> triangleMaterials;  // one per triangle
 

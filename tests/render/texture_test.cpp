@@ -108,9 +108,42 @@ TEST(Texture, MaterialFactorsMultiplyTexels) {
   Scene withMesh = scene;
   withMesh.materials = {m};
   FlatScene built = FlatScene::build(withMesh);
-  Material e = evaluateMaterial(built.hostView(), m, {0.5f, 0.5f});
+  SurfaceInteraction at;
+  at.uv = {0.5f, 0.5f};
+  Material e = evaluateMaterial(built.hostView(), m, at);
   EXPECT_NEAR(e.roughness, 0.5f * 128.0f / 255.0f, 1e-6f);
   EXPECT_NEAR(e.metallic, 0.8f, 1e-6f);
+}
+
+// glTF COLOR_0: the interpolated vertex colour multiplies the base colour; meshes without colours stay white.
+TEST(Texture, VertexColoursMultiplyTheBaseColour) {
+  Scene scene;
+  Mesh coloured;
+  coloured.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  coloured.indices = {0, 1, 2};
+  coloured.triangleMaterials = {0};
+  coloured.colors = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  Mesh plain = coloured;
+  plain.colors.clear();
+  scene.meshes = {plain, coloured};
+  scene.instances = {{0, Affine3x4{}}, {1, Affine3x4{}}};
+  Material m;
+  m.baseColor = {0.5f, 0.5f, 0.5f};
+  scene.materials = {m};
+  FlatScene built = FlatScene::build(scene);
+  SceneView view = built.hostView();
+  Hit hit;
+  hit.b1 = 0.25f;
+  hit.b2 = 0.5f;
+  hit.instanceId = 1;
+  Material e = evaluateMaterial(view, m, makeInteraction(view, hit));
+  EXPECT_NEAR(e.baseColor.x, 0.5f * 0.25f, 1e-6f);
+  EXPECT_NEAR(e.baseColor.y, 0.5f * 0.25f, 1e-6f);
+  EXPECT_NEAR(e.baseColor.z, 0.5f * 0.5f, 1e-6f);
+  hit.instanceId = 0;
+  e = evaluateMaterial(view, m, makeInteraction(view, hit));
+  EXPECT_FLOAT_EQ(e.baseColor.x, 0.5f);
+  EXPECT_FLOAT_EQ(e.baseColor.z, 0.5f);
 }
 
 Mesh quadWithUvs(bool mirrored) {

@@ -298,6 +298,32 @@ TEST(GltfLoader, TexturesReadingTexcoord1GetThatSet) {
   EXPECT_FLOAT_EQ(s.meshes[0].uvs[2].y, 0.0f);
 }
 
+TEST(GltfLoader, VertexColoursAreLoaded) {
+  json g = triangleGltf();
+  std::vector<uint8_t> buffer;
+  append(buffer, std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1});
+  append(buffer, std::vector<uint16_t>{0, 1, 2, 0});
+  append(buffer, std::vector<uint8_t>{255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 128});  // normalised RGBA
+  g["buffers"][0] = {{"byteLength", buffer.size()}, {"uri", "data:application/octet-stream;base64," + base64(buffer)}};
+  g["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 104}, {"byteLength", 12}});
+  g["accessors"].push_back(
+      {{"bufferView", 3}, {"componentType", 5121}, {"normalized", true}, {"count", 3}, {"type", "VEC4"}});
+  json coloured = g["meshes"][0]["primitives"][0];
+  coloured["attributes"]["COLOR_0"] = 4;
+  g["meshes"][0]["primitives"] = {coloured, g["meshes"][0]["primitives"][0]};  // the second has no colours
+  LoadWarnings warnings;
+  Scene s = load(g, warnings);
+  validateScene(s);
+  const Mesh& m = s.meshes[0];
+  ASSERT_EQ(m.colors.size(), 6u);
+  EXPECT_FLOAT_EQ(m.colors[0].x, 1.0f);
+  EXPECT_FLOAT_EQ(m.colors[1].y, 1.0f);
+  EXPECT_FLOAT_EQ(m.colors[2].x, 0.0f);
+  EXPECT_FLOAT_EQ(m.colors[4].x, 1.0f);  // white where the primitive has none
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_NE(warnings.messages[0].find("COLOR_0: the alpha of vertex colours is ignored"), std::string::npos);
+}
+
 TEST(GltfLoader, UnlitMaterialsEmitTheirBaseColour) {
   json g = triangleGltf();
   g["materials"] = {{{"pbrMetallicRoughness", {{"baseColorFactor", {0.2, 0.4, 0.6, 1}}}},

@@ -52,7 +52,7 @@ void readOptional(BinaryReader& in, std::optional<T>& v) {
 }
 
 // The least a mesh, a texture or a string takes in the file, for checking counts before allocating.
-constexpr uint64_t kMeshBytes = 7 * sizeof(uint64_t);
+constexpr uint64_t kMeshBytes = 8 * sizeof(uint64_t);
 constexpr uint64_t kTextureBytes = 3 * sizeof(uint64_t);
 constexpr uint64_t kStringBytes = sizeof(uint64_t);
 
@@ -67,6 +67,7 @@ void writeScene(BinaryWriter& out, const Scene& s) {
     out.array(m.normals);
     out.array(m.uvs);
     out.array(m.tangents);
+    out.array(m.colors);
     out.array(m.indices);
     out.array(m.triangleMaterials);
   }
@@ -105,6 +106,7 @@ bool readScene(BinaryReader& in, Scene& s) {
     in.array(m.normals);
     in.array(m.uvs);
     in.array(m.tangents);
+    in.array(m.colors);
     in.array(m.indices);
     in.array(m.triangleMaterials);
   }

@@ -250,6 +250,7 @@ class GltfSceneBuilder {
       std::vector<Vec3> positions, normals;
       std::vector<Vec2> uvs;
       std::vector<Vec4> tangents;
+      std::vector<Vec3> colors;
       std::vector<uint32_t> indices;
       uint32_t material;
     };
@@ -290,6 +291,17 @@ class GltfSceneBuilder {
       } else if (texCoord != "TEXCOORD_0") {
         warnings_.add(file_, where + ": the material's textures read " + texCoord + ", which the primitive lacks");
       }
+      if (int a = attribute("COLOR_0"); a >= 0) {
+        std::vector<Vec4> rgba = accessors_.readColours(a, where + ".attributes.COLOR_0");
+        sameCount(rgba.size(), "COLOR_0");
+        part.colors.resize(rgba.size());
+        bool translucent = false;
+        for (size_t i = 0; i < rgba.size(); ++i) {
+          part.colors[i] = {rgba[i].x, rgba[i].y, rgba[i].z};
+          translucent |= rgba[i].w < 1.0f;
+        }
+        if (translucent) warnings_.add(file_, where + ".attributes.COLOR_0: the alpha of vertex colours is ignored");
+      }
       if (int a = attribute("TANGENT"); a >= 0) {
         part.tangents = accessors_.readVec4(a, where + ".attributes.TANGENT");
         sameCount(part.tangents.size(), "TANGENT");
@@ -314,17 +326,18 @@ class GltfSceneBuilder {
 
     Mesh mesh;
     mesh.name = gm.name.empty() ? "meshes[" + std::to_string(meshIndex) + "]" : gm.name;
-    bool anyNormals = false, allNormals = true, anyUvs = false, allTangents = !parts.empty();
+    bool anyNormals = false, allNormals = true, anyUvs = false, anyColors = false, allTangents = !parts.empty();
     for (const Part& p : parts) {
       anyNormals |= !p.normals.empty();
       allNormals &= !p.normals.empty();
       anyUvs |= !p.uvs.empty();
+      anyColors |= !p.colors.empty();
       allTangents &= !p.tangents.empty();
     }
     for (Part& p : parts) {
       // glTF asks for flat shading where normals are missing; when other primitives of the mesh have normals,
       // this primitive's triangles get their own vertices with the face normal.
-      if (anyNormals && !allNormals && p.normals.empty()) unweldWithFaceNormals(p.positions, p.uvs, p.tangents, p.indices, p.normals);
+      if (anyNormals && !allNormals && p.normals.empty()) unweldWithFaceNormals(p);
       if (mesh.positions.size() + p.positions.size() > uint64_t(UINT32_MAX))
         failLoad(file_, "meshes[" + std::to_string(meshIndex) + "]: too many vertices");
       uint32_t base = uint32_t(mesh.positions.size());
@@ -333,6 +346,10 @@ class GltfSceneBuilder {
       if (anyUvs) {
         if (p.uvs.empty()) p.uvs.resize(p.positions.size());
         mesh.uvs.insert(mesh.uvs.end(), p.uvs.begin(), p.uvs.end());
+      }
+      if (anyColors) {
+        if (p.colors.empty()) p.colors.resize(p.positions.size(), Vec3{1, 1, 1});
+        mesh.colors.insert(mesh.colors.end(), p.colors.begin(), p.colors.end());
       }
       if (allTangents) mesh.tangents.insert(mesh.tangents.end(), p.tangents.begin(), p.tangents.end());
       for (uint32_t i : p.indices) mesh.indices.push_back(base + i);
@@ -356,9 +373,10 @@ class GltfSceneBuilder {
     return out;
   }
 
-  static void unweldWithFaceNormals(std::vector<Vec3>& positions, std::vector<Vec2>& uvs, std::vector<Vec4>& tangents,
-                                    std::vector<uint32_t>& indices, std::vector<Vec3>& normals) {
-    std::vector<Vec3> p;
+  template <class Part>
+  static void unweldWithFaceNormals(Part& part) {
+    auto& [positions, normals, uvs, tangents, colors, indices, material] = part;
+    std::vector<Vec3> p, col;
     std::vector<Vec2> uv;
     std::vector<Vec4> tg;
     for (size_t t = 0; t < indices.size() / 3; ++t) {
@@ -369,6 +387,7 @@ class GltfSceneBuilder {
         p.push_back(positions[c[k]]);
         if (!uvs.empty()) uv.push_back(uvs[c[k]]);
         if (!tangents.empty()) tg.push_back(tangents[c[k]]);
+        if (!colors.empty()) col.push_back(colors[c[k]]);
         normals.push_back(len > 0.0f ? n / len : Vec3{});
       }
     }
@@ -376,6 +395,7 @@ class GltfSceneBuilder {
     positions = std::move(p);
     uvs = std::move(uv);
     tangents = std::move(tg);
+    colors = std::move(col);
   }
 
   int32_t texture(int index, bool srgb) {
