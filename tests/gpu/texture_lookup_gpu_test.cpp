@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <random>
 #include <sstream>
 
@@ -121,8 +122,10 @@ Outliers outsideBound(const TexelArrays& reference, const std::vector<Vec2>& uvs
   return o;
 }
 
-void expectDeviceAgrees(TexelFormat format, TextureWrap wrap, uint32_t channels, bool srgb, uint32_t seed) {
+void expectDeviceAgrees(TexelFormat format, TextureWrap wrap, uint32_t channels, bool srgb, uint32_t seed,
+                        std::optional<TextureWrap> wrapV = std::nullopt) {
   TestTexture texture = randomTexture(format, wrap, channels, srgb, seed);
+  if (wrapV) texture.views[0].wrapV = *wrapV;
   optix::DeviceTextures device(texture.views, texture.bytes, texture.floats);
   ASSERT_NE(device.views()[0].deviceTexture, 0u);
   optix::DeviceBuffer views = optix::DeviceBuffer::fromVector(device.views(), "texture views");
@@ -149,6 +152,13 @@ TEST(GpuTextureLookup, FloatAgreesWithTheHostForEveryWrapMode) {
   expectDeviceAgrees(TexelFormat::Float32, TextureWrap::Repeat, 4, false, 7);
   expectDeviceAgrees(TexelFormat::Float32, TextureWrap::Clamp, 4, false, 8);
   expectDeviceAgrees(TexelFormat::Float32, TextureWrap::Mirror, 4, false, 9);
+}
+
+// glTF samplers give each axis its own mode (wrapS across, wrapT down).
+TEST(GpuTextureLookup, WrapModesPerAxisAgreeWithTheHost) {
+  expectDeviceAgrees(TexelFormat::Unorm8, TextureWrap::Repeat, 4, false, 40, TextureWrap::Clamp);
+  expectDeviceAgrees(TexelFormat::Unorm8, TextureWrap::Clamp, 4, true, 41, TextureWrap::Mirror);
+  expectDeviceAgrees(TexelFormat::Float32, TextureWrap::Mirror, 4, false, 42, TextureWrap::Repeat);
 }
 
 // Grey, grey + alpha and RGB images are widened to four channels the way the host reads them.
