@@ -324,6 +324,34 @@ TEST(GltfLoader, VertexColoursAreLoaded) {
   EXPECT_NE(warnings.messages[0].find("COLOR_0: the alpha of vertex colours is ignored"), std::string::npos);
 }
 
+TEST(GltfLoader, GpuInstancingMakesAnInstancePerElement) {
+  json g = triangleGltf();
+  std::vector<uint8_t> buffer;
+  append(buffer, std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1});
+  append(buffer, std::vector<uint16_t>{0, 1, 2, 0});
+  append(buffer, std::vector<float>{0, 0, 0, 5, 0, 0, 0, 7, 0});  // translations
+  append(buffer, std::vector<float>{1, 1, 1, 2, 2, 2, 1, 1, 1});  // scales
+  g["buffers"][0] = {{"byteLength", buffer.size()}, {"uri", "data:application/octet-stream;base64," + base64(buffer)}};
+  g["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 104}, {"byteLength", 72}});
+  g["accessors"].push_back({{"bufferView", 3}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}});
+  g["accessors"].push_back({{"bufferView", 3}, {"byteOffset", 36}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}});
+  g["nodes"][0]["translation"] = {0, 0, 10};
+  g["nodes"][0]["extensions"] = {{"EXT_mesh_gpu_instancing", {{"attributes", {{"TRANSLATION", 4}, {"SCALE", 5}}}}}};
+  g["extensionsUsed"] = g["extensionsRequired"] = {"EXT_mesh_gpu_instancing"};
+  Scene s = load(g);
+  ASSERT_EQ(s.meshes.size(), 1u);
+  ASSERT_EQ(s.instances.size(), 3u);
+  // Each instance's transform comes before the node's: vertex (1, 0, 0) of instance 1 is scaled by 2, moved by
+  // (5, 0, 0), then by the node's (0, 0, 10).
+  Vec3 p = s.instances[1].objectToWorld.point({1, 0, 0});
+  EXPECT_FLOAT_EQ(p.x, 7.0f);
+  EXPECT_FLOAT_EQ(p.z, 10.0f);
+  EXPECT_FLOAT_EQ(s.instances[2].objectToWorld.point({0, 0, 0}).y, 7.0f);
+
+  g["accessors"][5]["count"] = 2;
+  EXPECT_NE(errorOf(g).find("the attributes have different counts"), std::string::npos);
+}
+
 TEST(GltfLoader, UnlitMaterialsEmitTheirBaseColour) {
   json g = triangleGltf();
   g["materials"] = {{{"pbrMetallicRoughness", {{"baseColorFactor", {0.2, 0.4, 0.6, 1}}}},

@@ -12,9 +12,10 @@ namespace candela {
 namespace {
 
 // Read fully or in part; where in part, the loader warns about what it leaves out.
-constexpr std::array<std::string_view, 9> kSupported = {
-    "KHR_materials_clearcoat", "KHR_materials_emissive_strength", "KHR_materials_ior",   "KHR_materials_sheen",
-    "KHR_materials_specular",  "KHR_materials_transmission",      "KHR_materials_unlit", "KHR_mesh_quantization",
+constexpr std::array<std::string_view, 10> kSupported = {
+    "EXT_mesh_gpu_instancing", "KHR_materials_clearcoat",    "KHR_materials_emissive_strength",
+    "KHR_materials_ior",       "KHR_materials_sheen",        "KHR_materials_specular",
+    "KHR_materials_transmission", "KHR_materials_unlit",     "KHR_mesh_quantization",
     "KHR_texture_transform"};
 
 // Not supported, but ignored with a warning of their own when used (the loader counts the lights).

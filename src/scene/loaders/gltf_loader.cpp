@@ -184,13 +184,54 @@ class GltfSceneBuilder {
     if (node.mesh >= 0) {
       if (size_t(node.mesh) >= model_.meshes.size())
         failLoad(file_, where + ".mesh: mesh " + std::to_string(node.mesh) + " does not exist");
-      if (std::optional<uint32_t> mesh = meshFor(node.mesh)) scene_.instances.push_back({*mesh, toAffine(world)});
+      if (std::optional<uint32_t> mesh = meshFor(node.mesh)) addInstances(*mesh, node, world, where);
     }
     if (node.camera >= 0) takeCamera(node.camera, world, where);
     if (node.extensions.count("KHR_lights_punctual")) ++punctualLights_;
     if (node.skin >= 0) skinned_ = true;
     for (size_t c = 0; c < node.children.size(); ++c)
       visit(node.children[c], world, depth + 1, where + ".children");
+  }
+
+  // One instance of `mesh` at the node's transform, or, with EXT_mesh_gpu_instancing, one per element of its
+  // TRANSLATION, ROTATION and SCALE accessors, each applied before the node's transform.
+  void addInstances(uint32_t mesh, const tinygltf::Node& node, const glm::mat4& world, const std::string& where) {
+    auto ext = node.extensions.find("EXT_mesh_gpu_instancing");
+    if (ext == node.extensions.end() || !ext->second.Has("attributes")) {
+      scene_.instances.push_back({mesh, toAffine(world)});
+      return;
+    }
+    const tinygltf::Value& attributes = ext->second.Get("attributes");
+    std::string at = where + ".extensions.EXT_mesh_gpu_instancing.attributes.";
+    auto accessorOf = [&](const char* name) {
+      return attributes.Has(name) && attributes.Get(name).IsInt() ? attributes.Get(name).GetNumberAsInt() : -1;
+    };
+    std::vector<Vec3> translations, scales;
+    std::vector<Vec4> rotations;
+    if (int a = accessorOf("TRANSLATION"); a >= 0) translations = accessors_.readVec3(a, at + "TRANSLATION");
+    if (int a = accessorOf("ROTATION"); a >= 0) rotations = accessors_.readVec4(a, at + "ROTATION");
+    if (int a = accessorOf("SCALE"); a >= 0) scales = accessors_.readVec3(a, at + "SCALE");
+    size_t count = std::max({translations.size(), rotations.size(), scales.size()});
+    for (size_t n : {translations.size(), rotations.size(), scales.size()})
+      if (n != 0 && n != count)
+        failLoad(file_, at + "*: the attributes have different counts (" + std::to_string(n) + " and " +
+                            std::to_string(count) + ")");
+    for (size_t i = 0; i < count; ++i) {
+      glm::mat4 local(1.0f);
+      if (!translations.empty())
+        local = glm::translate(local, glm::vec3(translations[i].x, translations[i].y, translations[i].z));
+      if (!rotations.empty())
+        local *= glm::mat4_cast(glm::normalize(glm::quat(rotations[i].w, rotations[i].x, rotations[i].y, rotations[i].z)));
+      if (!scales.empty()) local = glm::scale(local, glm::vec3(scales[i].x, scales[i].y, scales[i].z));
+      glm::mat4 instance = world * local;
+      bool finite = true;
+      for (int k = 0; k < 16; ++k) finite &= std::isfinite(glm::value_ptr(instance)[k]);
+      if (!finite) {
+        warnings_.add(file_, at + "*: instance " + std::to_string(i) + " has a non-finite transform and is left out");
+        continue;
+      }
+      scene_.instances.push_back({mesh, toAffine(instance)});
+    }
   }
 
   void takeCamera(int index, const glm::mat4& world, const std::string& where) {
