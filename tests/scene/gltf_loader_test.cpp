@@ -296,6 +296,17 @@ TEST(GltfLoader, TexturesReadingTexcoord1GetThatSet) {
   EXPECT_FLOAT_EQ(s.meshes[0].uvs[0].x, 1.0f);
   EXPECT_FLOAT_EQ(s.meshes[0].uvs[2].x, 1.0f);
   EXPECT_FLOAT_EQ(s.meshes[0].uvs[2].y, 0.0f);
+
+  // A transform naming a set the primitive lacks (here an absurd one) leaves the primitive untextured-by-uv,
+  // with a warning, and nothing overflows.
+  g["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"] = {
+      {"KHR_texture_transform", {{"texCoord", 1e300}}}};
+  LoadWarnings warnings;
+  s = load(g, warnings);
+  EXPECT_TRUE(s.meshes[0].uvs.empty());
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_NE(warnings.messages[0].find("TEXCOORD_255, which the primitive lacks"), std::string::npos)
+      << warnings.messages[0];
 }
 
 TEST(GltfLoader, VertexColoursAreLoaded) {

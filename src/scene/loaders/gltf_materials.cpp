@@ -63,7 +63,9 @@ class TextureRefs {
     const tinygltf::Value* t = extension(extensions, "KHR_texture_transform");
     transforms_.push_back(t ? transformOf(*t) : UvTransform{});
     // The transform's texCoord, when it has one, replaces the texture's (KHR_texture_transform).
-    texCoords_.push_back(t ? int(number(*t, "texCoord", texCoord)) : texCoord);
+    // (Clamped before the conversion: a hostile number must not overflow int.)
+    double set = t ? number(*t, "texCoord", texCoord) : texCoord;
+    texCoords_.push_back(int(std::clamp(set, 0.0, 255.0)));
     return resolve_(index, srgb);
   }
 
