@@ -18,26 +18,25 @@ namespace candela {
 
 namespace {
 
-// With the scene cache, each model is loaded on its own (a cache file holds a whole model, textures included);
-// without it, the models of a scene file share `shared` (shared_model_assets.h).
-Scene loadModel(const std::string& path, const SceneCacheSettings& cache, LoadWarnings& warnings,
-                SharedModelAssets* shared = nullptr) {
-  if (cache.enabled) shared = nullptr;
-  return loadThroughSceneCache(path, cache, warnings, [&](LoadWarnings& w) {
-    return lowerCaseExtension(path) == ".obj" ? loadObj(path, w, shared) : loadGltf(path, w, shared);
-  });
+Scene loadModelFile(const std::string& path, LoadWarnings& warnings, SharedModelAssets* shared) {
+  return lowerCaseExtension(path) == ".obj" ? loadObj(path, warnings, shared) : loadGltf(path, warnings, shared);
 }
 
 Scene loadFile(const std::string& path, const SceneCacheSettings& cache, LoadWarnings& warnings) {
   std::string ext = lowerCaseExtension(path);
-  if (ext == ".obj" || ext == ".gltf" || ext == ".glb") return loadModel(path, cache, warnings);
+  if (ext == ".obj" || ext == ".gltf" || ext == ".glb")
+    return loadThroughSceneCache(path, cache, warnings, [&](LoadWarnings& w) { return loadModelFile(path, w, nullptr); });
+  // A scene file is cached as a whole (its key covers the JSON and every file its models were read from), and
+  // on a miss its models load together, sharing libraries and textures: cached one by one, every model's cache
+  // file would hold its own copy of each texture it uses, and a first load would decode a texture once per
+  // model that uses it.
   if (ext == ".json")
-    return loadSceneFile(
-        path,
-        [&](const std::string& model, LoadWarnings& w, SharedModelAssets& shared) {
-          return loadModel(model, cache, w, &shared);
-        },
-        warnings);
+    return loadThroughSceneCache(path, cache, warnings, [&](LoadWarnings& w) {
+      auto loadModel = [](const std::string& model, LoadWarnings& mw, SharedModelAssets& shared) {
+        return loadModelFile(model, mw, &shared);
+      };
+      return loadSceneFile(path, loadModel, w);
+    });
   std::string names;
   for (const std::string& n : builtinSceneNames()) names += (names.empty() ? "" : ", ") + n;
   if (!std::filesystem::exists(path))

@@ -8,7 +8,7 @@ namespace candela {
 
 struct SceneLoadOptions {
   std::string environmentPath;  // an .hdr or .exr map that replaces the scene's environment; empty: keep it
-  SceneCacheSettings cache = {};  // for the models (.obj, .gltf, .glb), also those a scene file names
+  SceneCacheSettings cache = {};  // for models (.obj, .gltf, .glb) and scene files (as a whole)
   std::string camera = {};  // the name or index (in Scene::cameras) of the camera to take; empty: the first
 };
 

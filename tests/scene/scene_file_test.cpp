@@ -1,7 +1,11 @@
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <filesystem>
+
 #include "app/scene_loading.h"
 #include "kernel/camera.h"
+#include "scene/cache/scene_cache.h"
 #include "scene/loaders/file_bytes.h"
 #include "scene/loaders/gltf_loader.h"
 #include "scene/loaders/obj_loader.h"
@@ -182,6 +186,37 @@ TEST(SceneLoading, FramesScenesWithoutCamera) {
   EXPECT_GT(s.camera.eye.z, 1.0f);
   EXPECT_THROW(loadScene(dir.write("t.abc", "")), std::runtime_error);
   EXPECT_THROW(loadScene("no-such-scene"), std::runtime_error);
+}
+
+// With the scene cache, a scene file is cached as a whole: one cache file, holding each shared texture once,
+// that goes stale when the JSON or any file of its models changes.
+TEST(SceneLoading, SceneFilesAreCachedAsAWhole) {
+  TempFolder dir;
+  std::vector<uint8_t> png = readFileBytes(std::string(CANDELA_SOURCE_DIR) + "/tests/scene/data/checker.png");
+  dir.write("tex.png", std::string(png.begin(), png.end()));
+  dir.write("lib.mtl", "newmtl a\nKd 1 1 1\nmap_Kd tex.png\n");
+  const std::string obj = "mtllib lib.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n";
+  dir.write("a.obj", obj);
+  dir.write("b.obj", obj);
+  const std::string json = dir.write("s.json", R"({"models": [{"file": "a.obj"}, {"file": "b.obj"}],
+      "environment": {"radiance": [1, 1, 1]}})");
+  SceneLoadOptions options;
+  options.cache = {true, dir.file("cache")};
+  Scene first = loadScene(json, options);
+  CachedScene cached;
+  const std::string cacheFile = sceneCacheFile(dir.file("cache"), json);
+  ASSERT_EQ(readSceneCache(cacheFile, json, cached), SceneCacheRead::Hit);
+  EXPECT_EQ(cached.scene.textures.size(), 1u);
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.file("cache")), std::filesystem::directory_iterator()), 1);
+  Scene second = loadScene(json, options);
+  EXPECT_EQ(second.meshes.size(), 2u);
+  EXPECT_EQ(second.textures.size(), 1u);
+  for (const std::string& input : {dir.file("b.obj"), dir.file("tex.png"), json}) {
+    std::filesystem::last_write_time(input, std::filesystem::last_write_time(input) + std::chrono::seconds(1));
+    EXPECT_EQ(readSceneCache(cacheFile, json, cached), SceneCacheRead::Stale) << input;
+    loadScene(json, options);
+    EXPECT_EQ(readSceneCache(cacheFile, json, cached), SceneCacheRead::Hit) << input;
+  }
 }
 
 // A glTF with two named cameras and no light: the first camera is taken with a warning naming it and how to

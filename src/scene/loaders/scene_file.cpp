@@ -281,7 +281,11 @@ Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadW
     Node e = root["environment"];
     e.expectObject({"map", "radiance", "intensity", "rotation_degrees", "visible"}, warnings);
     Environment env;
-    if (e.has("map")) env.map = loadEnvironmentImage(resolve(base, e["map"].string()));
+    if (e.has("map")) {
+      std::string map = resolve(base, e["map"].string());
+      env.map = loadEnvironmentImage(map);
+      scene.inputFiles.push_back(map);
+    }
     if (e.has("radiance")) env.radiance = e["radiance"].vec3();
     if (env.radiance.x < 0 || env.radiance.y < 0 || env.radiance.z < 0) e["radiance"].fail("must not be negative");
     if (e.has("intensity")) env.intensity = e["intensity"].number(0.0f, 1e30f);
