@@ -57,6 +57,7 @@ void addRenderOptions(CLI::App& cmd, RenderJob& job) {
   cmd.add_option("scene", job.sceneSpec, "Scene file (.obj, .gltf, .glb, .json) or built-in scene (" + scenes + ")")
       ->capture_default_str();
   cmd.add_option("--env", job.environmentPath, "Environment map (.hdr or .exr) that lights the scene");
+  cmd.add_option("--camera", job.camera, "The scene's camera to take, by name or index (default: the first)");
   addSceneInputOptions(cmd, job.sceneCache, job.outsidePaths);
   cmd.add_option("--spp", job.samplesPerPixel, "Samples per pixel")
       ->check(CLI::Range(1u, 1u << 24))
@@ -223,6 +224,7 @@ void addViewOptions(CLI::App& cmd, ViewerOptions& options, std::string& toneMapp
   cmd.add_option("scene", options.sceneSpec, "Scene file (.obj, .gltf, .glb, .json) or built-in scene (" + scenes + ")")
       ->capture_default_str();
   cmd.add_option("--env", options.environmentPath, "Environment map (.hdr or .exr) that lights the scene");
+  cmd.add_option("--camera", options.camera, "The scene's camera to take, by name or index (default: the first)");
   addSceneInputOptions(cmd, options.sceneCache, options.outsidePaths);
   cmd.add_option("--backend", options.backend, "auto, cpu or optix (in this build: " + availableBackends() + ")")
       ->check(CLI::IsMember({"auto", "cpu", "optix"}))

@@ -14,6 +14,7 @@ namespace candela {
 struct RenderJob {
   std::string sceneSpec = "cornell-box";
   std::string environmentPath;  // replaces the scene's environment when set
+  std::string camera;           // the name or index of the scene's camera to take; empty: the first
   SceneCacheSettings sceneCache;
   OutsidePaths outsidePaths = OutsidePaths::Refused;  // whether models may refer to files outside their folders
   // Which settings the command line gave; the others may come from the scene file's render hints.

@@ -20,13 +20,17 @@ namespace candela {
 
 namespace {
 
-Scene loadModel(const std::string& path, const SceneLoadOptions& options, LoadWarnings& warnings) {
+Scene loadModelFile(const std::string& path, OutsidePaths outside, LoadWarnings& warnings,
+                    SharedModelAssets* shared) {
+  return lowerCaseExtension(path) == ".obj" ? loadObj(path, warnings, outside, shared)
+                                            : loadGltf(path, warnings, outside, shared);
+}
+
+// The scene cache holds only what loads under the default path rule.
+SceneCacheSettings cacheFor(const SceneLoadOptions& options) {
   SceneCacheSettings cache = options.cache;
   cache.enabled &= options.outsidePaths == OutsidePaths::Refused;
-  return loadThroughSceneCache(path, cache, warnings, [&](LoadWarnings& w) {
-    return lowerCaseExtension(path) == ".obj" ? loadObj(path, w, options.outsidePaths)
-                                              : loadGltf(path, w, options.outsidePaths);
-  });
+  return cache;
 }
 
 // A file whose content asks for more memory than there is (a model of more triangles than fit) is refused with
@@ -43,20 +47,64 @@ auto withMemoryReported(const std::string& file, Load load) {
 Scene loadFile(const std::string& path, const SceneLoadOptions& options, LoadWarnings& warnings) {
   std::string ext = lowerCaseExtension(path);
   if (ext == ".obj" || ext == ".gltf" || ext == ".glb")
-    return withMemoryReported(path, [&] { return loadModel(path, options, warnings); });
+    return loadThroughSceneCache(path, cacheFor(options), warnings, [&](LoadWarnings& w) {
+      return loadModelFile(path, options.outsidePaths, w, nullptr);
+    });
+  // A scene file is cached as a whole (its key covers the JSON and every file its models were read from), and
+  // on a miss its models load together, sharing libraries and textures: cached one by one, every model's cache
+  // file would hold its own copy of each texture it uses, and a first load would decode a texture once per
+  // model that uses it.
   if (ext == ".json")
-    return loadSceneFile(
-        path,
-        [&](const std::string& model, LoadWarnings& w) {
-          return withMemoryReported(model, [&] { return loadModel(model, options, w); });
-        },
-        warnings, options.outsidePaths);
+    return loadThroughSceneCache(path, cacheFor(options), warnings, [&](LoadWarnings& w) {
+      auto loadModel = [&](const std::string& model, LoadWarnings& mw, SharedModelAssets& shared) {
+        return withMemoryReported(model, [&] { return loadModelFile(model, options.outsidePaths, mw, &shared); });
+      };
+      return loadSceneFile(path, loadModel, w, options.outsidePaths);
+    });
   std::string names;
   for (const std::string& n : builtinSceneNames()) names += (names.empty() ? "" : ", ") + n;
   if (!std::filesystem::exists(path))
     throw std::runtime_error("unknown scene '" + printableText(path) + "': not a file, nor a built-in scene (" + names + ")");
   throw std::runtime_error(printableText(path) + ": unknown scene format '" + printableText(ext) + "' (use .obj, .gltf, .glb or .json, or a built-in scene: " + names +
                            ")");
+}
+
+bool hasLightSource(const Scene& scene) {
+  const Environment& env = scene.environment;
+  if (env.intensity > 0.0f && (env.hasMap() || !isBlack(env.radiance))) return true;
+  std::vector<bool> emissive(scene.materials.size());
+  for (size_t m = 0; m < scene.materials.size(); ++m) emissive[m] = !isBlack(scene.materials[m].emission);
+  std::vector<bool> instanced(scene.meshes.size());
+  for (const Instance& inst : scene.instances) instanced[inst.meshId] = true;
+  for (size_t i = 0; i < scene.meshes.size(); ++i)
+    if (instanced[i])
+      for (uint32_t m : scene.meshes[i].triangleMaterials)
+        if (m < emissive.size() && emissive[m]) return true;
+  return false;
+}
+
+// Takes the camera `choice` names (a name or an index into scene.cameras), or warns which one was taken when
+// the file has several.
+void chooseCamera(Scene& scene, const std::string& spec, const std::string& choice, LoadWarnings& warnings) {
+  auto list = [&] {
+    std::string names;
+    for (size_t i = 0; i < scene.cameras.size(); ++i)
+      names += (i ? ", " : "") + std::to_string(i) + " '" + scene.cameras[i].name + "'";
+    return names.empty() ? std::string("none") : names;
+  };
+  if (choice.empty()) {
+    if (scene.cameras.size() > 1)
+      warnings.add(spec, std::to_string(scene.cameras.size()) + " cameras; taking 0 '" + scene.cameras[0].name +
+                             "' (choose with --camera NAME|INDEX: " + list() + ")");
+    return;
+  }
+  for (size_t i = 0; i < scene.cameras.size(); ++i)
+    if (scene.cameras[i].name == choice || std::to_string(i) == choice) {
+      scene.camera = scene.cameras[i].description;
+      scene.cameraMissing = false;
+      return;
+    }
+  throw std::runtime_error(spec + ": no camera '" + choice + "' (cameras: " + list() + ")");
 }
 
 }  // namespace
@@ -91,6 +139,10 @@ Scene loadScene(const std::string& spec, const SceneLoadOptions& options) {
     scene.environment = std::move(env);
   }
   repairScene(scene, spec, warnings);
+  chooseCamera(scene, spec, options.camera, warnings);
+  if (!hasLightSource(scene))
+    warnings.add(spec, "the scene has no light source (no emissive surface, no environment): the image will be "
+                       "black; light it with --env");
   for (const std::string& w : warnings.messages)
     std::fprintf(stderr, "candela: warning: %s\n", printableText(w).c_str());
   if (scene.cameraMissing) frameSceneBounds(scene);

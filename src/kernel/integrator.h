@@ -7,6 +7,7 @@
 #include "kernel/lights.h"
 #include "kernel/pass_through.h"
 #include "kernel/render_settings.h"
+#include "kernel/shading_normal.h"
 #include "kernel/textured_material.h"
 
 namespace candela {
@@ -70,8 +71,9 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
     SurfaceInteraction si = makeInteraction(scene, hit);
     const Material& stored = scene.materials[si.materialId];
     Vec3 wo = -ray.direction;
-    Material material = evaluateMaterial(scene, stored, si.uv);
+    Material material = evaluateMaterial(scene, stored, si);
     applyNormalMap(scene, material, si);
+    keepReflectionAboveSurface(si, wo);
     if (kWithAovs && aovsPending && !isSpecularMaterial(material)) {
       result.aovs.albedo = beta * materialAlbedo(material);
       result.aovs.normal = dot(si.shadingNormal, wo) < 0.0f ? -si.shadingNormal : si.shadingNormal;
@@ -121,13 +123,14 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
     float uChoice = sampler.next1D();
     Vec2 uBsdf = sampler.next2D();
     BsdfSample bs = bsdf.sample(wo, uChoice, uBsdf);
-    if (!bs.valid || isBlack(bs.f) || !sidesAgree(bs.wi)) break;
+    Vec3 next;
+    if (!bs.valid || isBlack(bs.f) || !continuePathTowards(bs.wi, wo, si.geometricNormal, bsdf.normal(), next)) break;
     beta *= bs.f * (fabsf(dot(bs.wi, bsdf.normal())) / bs.pdf);
     etaScale *= bs.eta * bs.eta;
     specularBounce = bs.isDelta;
     bsdfPdf = bs.pdf;
     lastScatter = si.position;
-    ray = {offsetRayOrigin(si.position, si.geometricNormal, bs.wi), bs.wi, 0.0f, kInf};
+    ray = {offsetRayOrigin(si.position, si.geometricNormal, next), next, 0.0f, kInf};
     ++depth;
 
     float uRoulette = sampler.next1D();

@@ -14,6 +14,7 @@ struct SurfaceInteraction {
   Vec3 tangent;          // world space, not normalised; zero when the mesh has no tangents
   float bitangentSign = 1.0f;
   Vec2 uv;
+  Vec3 color{1, 1, 1};  // the vertex colour, white where the mesh has none
   uint32_t materialId = 0;
 };
 
@@ -46,6 +47,10 @@ CANDELA_FN SurfaceInteraction makeInteraction(const SceneView& scene, const Hit&
                          Vec3{t[i2].x, t[i2].y, t[i2].z} * hit.b2;
     si.tangent = inst.objectToWorld.vector(objectTangent);
     si.bitangentSign = t[i0].w < 0.0f ? -1.0f : 1.0f;
+  }
+  if (mesh.hasColors) {
+    const Vec3* c = scene.colors + mesh.firstVertex;
+    si.color = c[i0] * b0 + c[i1] * hit.b1 + c[i2] * hit.b2;
   }
   si.materialId = scene.triangleMaterials[tri];
   return si;

@@ -17,6 +17,7 @@ struct MeshRecord {
   uint32_t hasNormals = 0;
   uint32_t hasUvs = 0;
   uint32_t hasTangents = 0;
+  uint32_t hasColors = 0;
 };
 
 struct InstanceRecord {
@@ -41,6 +42,7 @@ struct SceneView {
   const Vec3* normals = nullptr;
   const Vec2* uvs = nullptr;       // per vertex, alongside positions (zeros where a mesh has none)
   const Vec4* tangents = nullptr;  // per vertex: unit tangent and bitangent sign (MikkTSpace convention)
+  const Vec3* colors = nullptr;    // per vertex, linear RGB; null when no mesh has colours
   const uint32_t* indices = nullptr;  // mesh-local vertex indices, 3 per triangle
   const uint32_t* triangleMaterials = nullptr;
   const MeshRecord* meshes = nullptr;

@@ -10,7 +10,7 @@ enum class TexelFormat : uint32_t { Unorm8 = 0, Float32 };
 
 // One texture as kernel code sees it. On the host its texels sit in the SceneView's shared texel arrays from
 // `offset` on (row 0 first, `channels` values per texel). A GPU backend may instead create a CUDA texture object
-// (normalised coordinates, linear filtering, the same address mode, sRGB reads for `srgb`, four channels) and
+// (normalised coordinates, linear filtering, the same address modes, sRGB reads for `srgb`, four channels) and
 // store its handle in `deviceTexture`; device code then samples through the texture unit, which uses the same
 // texel centres and row order but holds the bilinear weights in 8 fractional bits: its results differ from
 // the lookup below by up to 2^-7 of the four texels' spread, plus, for 8-bit formats, one step of the 8-bit
@@ -23,7 +23,8 @@ struct TextureView {
   uint32_t channels = 4;
   TexelFormat format = TexelFormat::Unorm8;
   uint32_t srgb = 0;  // 8-bit colour channels encode sRGB; alpha is always linear
-  TextureWrap wrap = TextureWrap::Repeat;
+  TextureWrap wrapU = TextureWrap::Repeat;  // across the columns (glTF wrapS)
+  TextureWrap wrapV = TextureWrap::Repeat;  // down the rows (glTF wrapT)
 };
 
 struct TexelArrays {
@@ -93,8 +94,8 @@ CANDELA_FN Vec4 sampleTexture(const TexelArrays& arrays, int32_t index, Vec2 uv)
   constexpr float kLimit = 1 << 24;
   int x0 = int(clampf(fx0, -kLimit, kLimit)), y0 = int(clampf(fy0, -kLimit, kLimit));
   int w = int(t.width), h = int(t.height);
-  int xa = wrapTexel(x0, w, t.wrap), xb = wrapTexel(x0 + 1, w, t.wrap);
-  int ya = wrapTexel(y0, h, t.wrap), yb = wrapTexel(y0 + 1, h, t.wrap);
+  int xa = wrapTexel(x0, w, t.wrapU), xb = wrapTexel(x0 + 1, w, t.wrapU);
+  int ya = wrapTexel(y0, h, t.wrapV), yb = wrapTexel(y0 + 1, h, t.wrapV);
   Vec4 c00 = fetchTexel(arrays, t, xa, ya), c10 = fetchTexel(arrays, t, xb, ya);
   Vec4 c01 = fetchTexel(arrays, t, xa, yb), c11 = fetchTexel(arrays, t, xb, yb);
   auto mix = [&](float a, float b, float c, float d) { return (a * (1 - fx) + b * fx) * (1 - fy) + (c * (1 - fx) + d * fx) * fy; };

@@ -18,9 +18,12 @@ CANDELA_FN float materialAlpha(const SceneView& scene, const Material& m, Vec2 u
   return alpha;
 }
 
-// The material's parameters at uv with its textures applied; factors multiply texels as in glTF.
-CANDELA_FN Material evaluateMaterial(const SceneView& scene, const Material& stored, Vec2 uv) {
+// The material's parameters at the surface point with its textures applied; factors multiply texels, and the
+// vertex colour multiplies the base colour, as in glTF.
+CANDELA_FN Material evaluateMaterial(const SceneView& scene, const Material& stored, const SurfaceInteraction& si) {
+  const Vec2 uv = si.uv;
   Material m = stored;
+  m.baseColor *= si.color;
   if (m.baseColorTexture != kNoTexture) {
     Vec4 c = lookup(scene, m.baseColorTexture, uv);
     m.baseColor *= Vec3{c.x, c.y, c.z};

@@ -1,5 +1,6 @@
 #include "scene/flat_scene.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "kernel/pass_through.h"
@@ -80,7 +81,8 @@ void packTextures(const Scene& scene, FlatScene& flat) {
     view.height = t.height;
     view.channels = t.channels;
     view.srgb = t.srgb ? 1u : 0u;
-    view.wrap = t.wrap;
+    view.wrapU = t.wrapU;
+    view.wrapV = t.wrapV;
     if (!t.bytes.empty()) {
       view.format = TexelFormat::Unorm8;
       view.offset = flat.texelBytes.size();
@@ -119,6 +121,7 @@ FlatScene FlatScene::build(const Scene& scene) {
   FlatScene flat;
   flat.materials = scene.materials;
   buildEnvironment(scene.environment, flat);
+  const bool anyColors = std::any_of(scene.meshes.begin(), scene.meshes.end(), [](const Mesh& m) { return !m.colors.empty(); });
   for (const Mesh& mesh : scene.meshes) {
     MeshRecord record;
     record.firstVertex = uint32_t(flat.positions.size());
@@ -144,6 +147,13 @@ FlatScene FlatScene::build(const Scene& scene) {
       flat.tangents.resize(flat.positions.size());
     else
       flat.tangents.insert(flat.tangents.end(), meshTangents->begin(), meshTangents->end());
+    record.hasColors = mesh.colors.empty() ? 0u : 1u;
+    if (anyColors) {
+      if (mesh.colors.empty())
+        flat.colors.resize(flat.positions.size(), Vec3{1, 1, 1});
+      else
+        flat.colors.insert(flat.colors.end(), mesh.colors.begin(), mesh.colors.end());
+    }
     flat.meshes.push_back(record);
     flat.indices.insert(flat.indices.end(), mesh.indices.begin(), mesh.indices.end());
     flat.triangleMaterials.insert(flat.triangleMaterials.end(), mesh.triangleMaterials.begin(),
@@ -184,6 +194,7 @@ SceneView FlatScene::hostView() const {
   v.normals = normals.data();
   v.uvs = uvs.data();
   v.tangents = tangents.data();
+  v.colors = colors.empty() ? nullptr : colors.data();
   v.indices = indices.data();
   v.triangleMaterials = triangleMaterials.data();
   v.meshes = meshes.data();

@@ -14,6 +14,7 @@ struct FlatScene {
   std::vector<Vec3> normals;
   std::vector<Vec2> uvs;
   std::vector<Vec4> tangents;
+  std::vector<Vec3> colors;  // empty when no mesh has vertex colours (white for those without, otherwise)
   std::vector<uint32_t> indices;
   std::vector<uint32_t> triangleMaterials;
   std::vector<MeshRecord> meshes;

@@ -14,7 +14,7 @@ size_t sceneMemoryBytes(const Scene& scene) {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
   size_t n = bytes(scene.instances) + bytes(scene.materials);
   for (const Mesh& m : scene.meshes)
-    n += bytes(m.positions) + bytes(m.normals) + bytes(m.uvs) + bytes(m.tangents) + bytes(m.indices) +
+    n += bytes(m.positions) + bytes(m.normals) + bytes(m.uvs) + bytes(m.tangents) + bytes(m.colors) + bytes(m.indices) +
          bytes(m.triangleMaterials);
   for (const Texture& t : scene.textures) n += bytes(t.bytes) + bytes(t.floats);
   return n + bytes(scene.environment.map.floats);
@@ -38,6 +38,9 @@ void validateScene(const Scene& scene) {
            std::to_string(mesh.positions.size()) + " positions");
     if (!mesh.tangents.empty() && mesh.tangents.size() != mesh.positions.size())
       fail("mesh '" + mesh.name + "' has " + std::to_string(mesh.tangents.size()) + " tangents for " +
+           std::to_string(mesh.positions.size()) + " positions");
+    if (!mesh.colors.empty() && mesh.colors.size() != mesh.positions.size())
+      fail("mesh '" + mesh.name + "' has " + std::to_string(mesh.colors.size()) + " vertex colours for " +
            std::to_string(mesh.positions.size()) + " positions");
     for (uint32_t index : mesh.indices)
       if (index >= mesh.positions.size()) fail("mesh '" + mesh.name + "' indexes past its vertices");

@@ -18,6 +18,7 @@ struct Mesh {
   std::vector<Vec3> normals;  // empty, or one per position
   std::vector<Vec2> uvs;      // empty, or one per position; v runs down the image rows (glTF's convention)
   std::vector<Vec4> tangents;  // empty, or one per position: unit tangent along +u and the bitangent sign
+  std::vector<Vec3> colors;    // empty, or one per position: linear RGB that multiplies the base colour
   std::vector<uint32_t> indices;  // 3 per triangle
   std::vector<uint32_t> triangleMaterials;  // one per triangle
 
@@ -31,7 +32,8 @@ struct Texture {
   uint32_t height = 0;
   uint32_t channels = 4;
   bool srgb = false;
-  TextureWrap wrap = TextureWrap::Repeat;
+  TextureWrap wrapU = TextureWrap::Repeat;  // across the columns
+  TextureWrap wrapV = TextureWrap::Repeat;  // down the rows
   std::vector<uint8_t> bytes;   // 8-bit images: width * height * channels
   std::vector<float> floats;    // float images: width * height * channels
 };
@@ -55,6 +57,12 @@ struct CameraDescription {
     c.focusDistance = focusDistance > 0.0f ? focusDistance : length(target - eye);
     return c;
   }
+};
+
+// A camera an input file defines, under the name it gives (or a description of where it is).
+struct NamedCamera {
+  std::string name;
+  CameraDescription description;
 };
 
 // Light from infinitely far away: a constant `radiance`, or an equirectangular `map` (float RGB, top row the
@@ -86,6 +94,7 @@ struct Scene {
   CameraDescription camera;
   RenderHints renderHints;
   bool cameraMissing = false;  // the input had no camera: `camera` is to be framed around the scene's bounds
+  std::vector<NamedCamera> cameras;  // every camera the input defines, in order; `camera` is the first
   // The files the scene was read from: the model, its material libraries, buffers and images (what the scene
   // cache checks for changes).
   std::vector<std::string> inputFiles;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -51,6 +52,7 @@ Scene splitIntoMeshes(const Scene& scene, size_t triangles) {
             if (!mesh.normals.empty()) piece.normals.push_back(mesh.normals[v]);
             if (!mesh.uvs.empty()) piece.uvs.push_back(mesh.uvs[v]);
             if (!mesh.tangents.empty()) piece.tangents.push_back(mesh.tangents[v]);
+            if (!mesh.colors.empty()) piece.colors.push_back(mesh.colors[v]);
           }
           piece.indices.push_back(remap[v]);
         }
@@ -102,6 +104,36 @@ TEST(GpuDamagedHelmet, AgreesWithTheCpuBackendUnderAnEnvironmentMap) {
   if (!std::filesystem::exists(model) || !std::filesystem::exists(environment))
     GTEST_SKIP() << "shared scenes not found at " << shared;
   expectBackendsAgree(loadScene(model.string(), {environment.string()}), 61);
+}
+
+// Vertex colours (glTF COLOR_0) multiply the base colour: the material gallery with a colour per vertex made
+// from its position, on every mesh but the first (which keeps none).
+TEST(GpuVertexColours, AgreeWithTheCpuBackend) {
+  Scene scene = makeMaterialGallery();
+  for (size_t m = 1; m < scene.meshes.size(); ++m) {
+    Mesh& mesh = scene.meshes[m];
+    mesh.colors.clear();
+    for (Vec3 p : mesh.positions)
+      mesh.colors.push_back({0.5f + 0.5f * std::sin(3.0f * p.x), 0.5f + 0.5f * std::sin(3.0f * p.y), 0.75f});
+  }
+  expectBackendsAgree(scene, 101);
+}
+
+// Khronos sample models for what the kernel does beyond the core model: normal maps steep enough that
+// reflections are kept above the surface (NormalTangentMirrorTest), transmission of every roughness including
+// the index-matched ior 1 row (TransmissionRoughnessTest), and sampler wrap modes per axis
+// (TextureSettingsTest).
+TEST(GpuGltfMaterialTests, AgreeWithTheCpuBackend) {
+  std::filesystem::path shared = CANDELA_SHARED_SCENES;
+  std::filesystem::path environment = shared / "envmaps/royal_esplanade_1k.hdr";
+  uint32_t seed = 111;
+  for (const char* name : {"NormalTangentMirrorTest", "TransmissionRoughnessTest", "TextureSettingsTest"}) {
+    std::filesystem::path model = shared / "gltf_material_tests" / name / "glTF" / (std::string(name) + ".gltf");
+    if (!std::filesystem::exists(model) || !std::filesystem::exists(environment))
+      GTEST_SKIP() << "shared scenes not found at " << shared;
+    SCOPED_TRACE(name);
+    expectBackendsAgree(loadScene(model.string(), {environment.string()}), seed += 10);
+  }
 }
 
 }  // namespace

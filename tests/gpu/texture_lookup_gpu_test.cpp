@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <random>
 #include <sstream>
 
@@ -38,7 +39,7 @@ TestTexture randomTexture(TexelFormat format, TextureWrap wrap, uint32_t channel
   view.channels = channels;
   view.format = format;
   view.srgb = srgb ? 1u : 0u;
-  view.wrap = wrap;
+  view.wrapU = view.wrapV = wrap;
   const size_t count = size_t(kWidth) * kHeight * channels;
   for (size_t i = 0; i < count; ++i) {
     if (format == TexelFormat::Unorm8)
@@ -86,7 +87,7 @@ float lookupBound(const TexelArrays& arrays, Vec2 uv, int channel) {
   float lo = INFINITY, hi = -INFINITY;
   for (int dy = 0; dy < 2; ++dy)
     for (int dx = 0; dx < 2; ++dx) {
-      const int xi = wrapTexel(x0 + dx, int(t.width), t.wrap), yi = wrapTexel(y0 + dy, int(t.height), t.wrap);
+      const int xi = wrapTexel(x0 + dx, int(t.width), t.wrapU), yi = wrapTexel(y0 + dy, int(t.height), t.wrapV);
       Vec4 c = fetchTexel(arrays, t, xi, yi);
       lo = std::min(lo, channelOf(c, channel));
       hi = std::max(hi, channelOf(c, channel));
@@ -121,8 +122,10 @@ Outliers outsideBound(const TexelArrays& reference, const std::vector<Vec2>& uvs
   return o;
 }
 
-void expectDeviceAgrees(TexelFormat format, TextureWrap wrap, uint32_t channels, bool srgb, uint32_t seed) {
+void expectDeviceAgrees(TexelFormat format, TextureWrap wrap, uint32_t channels, bool srgb, uint32_t seed,
+                        std::optional<TextureWrap> wrapV = std::nullopt) {
   TestTexture texture = randomTexture(format, wrap, channels, srgb, seed);
+  if (wrapV) texture.views[0].wrapV = *wrapV;
   optix::DeviceTextures device(texture.views, texture.bytes, texture.floats);
   ASSERT_NE(device.views()[0].deviceTexture, 0u);
   optix::DeviceBuffer views = optix::DeviceBuffer::fromVector(device.views(), "texture views");
@@ -151,6 +154,13 @@ TEST(GpuTextureLookup, FloatAgreesWithTheHostForEveryWrapMode) {
   expectDeviceAgrees(TexelFormat::Float32, TextureWrap::Mirror, 4, false, 9);
 }
 
+// glTF samplers give each axis its own mode (wrapS across, wrapT down).
+TEST(GpuTextureLookup, WrapModesPerAxisAgreeWithTheHost) {
+  expectDeviceAgrees(TexelFormat::Unorm8, TextureWrap::Repeat, 4, false, 40, TextureWrap::Clamp);
+  expectDeviceAgrees(TexelFormat::Unorm8, TextureWrap::Clamp, 4, true, 41, TextureWrap::Mirror);
+  expectDeviceAgrees(TexelFormat::Float32, TextureWrap::Mirror, 4, false, 42, TextureWrap::Repeat);
+}
+
 // Grey, grey + alpha and RGB images are widened to four channels the way the host reads them.
 TEST(GpuTextureLookup, FewerChannelsAgreeWithTheHost) {
   for (uint32_t channels = 1; channels <= 3; ++channels) {
@@ -174,7 +184,7 @@ TEST(TextureLookupBound, RejectsCommonMistakes) {
   EXPECT_TRUE(mostlyRejected(lookups(srgb, [](Vec2 uv) { return Vec2{uv.x + 0.5f / kWidth, uv.y}; })));
   EXPECT_TRUE(mostlyRejected(lookups(srgb, [](Vec2 uv) { return Vec2{uv.x, 1.0f - uv.y}; })));
   TestTexture repeat = srgb;
-  repeat.views[0].wrap = TextureWrap::Repeat;
+  repeat.views[0].wrapU = repeat.views[0].wrapV = TextureWrap::Repeat;
   EXPECT_TRUE(mostlyRejected(lookups(repeat, [](Vec2 uv) { return uv; })));
   TestTexture linear = srgb;
   linear.views[0].srgb = 0;

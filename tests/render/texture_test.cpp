@@ -21,7 +21,7 @@ struct SmallTexture {
   explicit SmallTexture(TextureWrap wrap, bool srgb = false) {
     view.width = view.height = 2;
     view.channels = 1;
-    view.wrap = wrap;
+    view.wrapU = view.wrapV = wrap;
     view.srgb = srgb ? 1u : 0u;
     arrays = {&view, 1, bytes.data(), nullptr};
   }
@@ -54,6 +54,20 @@ TEST(Texture, WrapModes) {
   EXPECT_NEAR(mirror.at(-0.25f, 0.25f), mirror.at(0.25f, 0.25f), 1e-6f);
   EXPECT_NEAR(clamp.at(7.0f, 0.75f), 1.0f, 1e-6f);
   EXPECT_NEAR(repeat.at(-1e30f, 0.25f), repeat.at(-1e30f, 0.25f), 0.0f);  // no overflow, no NaN
+}
+
+TEST(Texture, WrapModesArePerAxis) {
+  // Repeat across, clamp down: half a texel past the left edge blends with the right column, half a texel above
+  // the top edge stays on the top row.
+  SmallTexture t(TextureWrap::Repeat);
+  t.view.wrapV = TextureWrap::Clamp;
+  EXPECT_NEAR(t.at(0.0f, 0.25f), 0.1f, 1e-6f);
+  EXPECT_NEAR(t.at(0.25f, 0.0f), 0.0f, 1e-6f);
+  EXPECT_NEAR(t.at(0.25f, 1.25f), 0.4f, 1e-6f);  // clamped to the bottom row, not repeated to the top
+  t.view.wrapU = TextureWrap::Clamp;
+  t.view.wrapV = TextureWrap::Repeat;
+  EXPECT_NEAR(t.at(0.25f, 0.0f), 0.2f, 1e-6f);
+  EXPECT_NEAR(t.at(1.25f, 0.25f), 0.2f, 1e-6f);
 }
 
 TEST(Texture, SrgbDecodesColourButNotAlpha) {
@@ -94,9 +108,42 @@ TEST(Texture, MaterialFactorsMultiplyTexels) {
   Scene withMesh = scene;
   withMesh.materials = {m};
   FlatScene built = FlatScene::build(withMesh);
-  Material e = evaluateMaterial(built.hostView(), m, {0.5f, 0.5f});
+  SurfaceInteraction at;
+  at.uv = {0.5f, 0.5f};
+  Material e = evaluateMaterial(built.hostView(), m, at);
   EXPECT_NEAR(e.roughness, 0.5f * 128.0f / 255.0f, 1e-6f);
   EXPECT_NEAR(e.metallic, 0.8f, 1e-6f);
+}
+
+// glTF COLOR_0: the interpolated vertex colour multiplies the base colour; meshes without colours stay white.
+TEST(Texture, VertexColoursMultiplyTheBaseColour) {
+  Scene scene;
+  Mesh coloured;
+  coloured.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  coloured.indices = {0, 1, 2};
+  coloured.triangleMaterials = {0};
+  coloured.colors = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  Mesh plain = coloured;
+  plain.colors.clear();
+  scene.meshes = {plain, coloured};
+  scene.instances = {{0, Affine3x4{}}, {1, Affine3x4{}}};
+  Material m;
+  m.baseColor = {0.5f, 0.5f, 0.5f};
+  scene.materials = {m};
+  FlatScene built = FlatScene::build(scene);
+  SceneView view = built.hostView();
+  Hit hit;
+  hit.b1 = 0.25f;
+  hit.b2 = 0.5f;
+  hit.instanceId = 1;
+  Material e = evaluateMaterial(view, m, makeInteraction(view, hit));
+  EXPECT_NEAR(e.baseColor.x, 0.5f * 0.25f, 1e-6f);
+  EXPECT_NEAR(e.baseColor.y, 0.5f * 0.25f, 1e-6f);
+  EXPECT_NEAR(e.baseColor.z, 0.5f * 0.5f, 1e-6f);
+  hit.instanceId = 0;
+  e = evaluateMaterial(view, m, makeInteraction(view, hit));
+  EXPECT_FLOAT_EQ(e.baseColor.x, 0.5f);
+  EXPECT_FLOAT_EQ(e.baseColor.z, 0.5f);
 }
 
 Mesh quadWithUvs(bool mirrored) {

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstring>
+#include <limits>
 #include <set>
 
 #include "scene/loaders/file_bytes.h"
@@ -182,6 +183,208 @@ TEST(GltfLoader, UniformTextureTransformIsBakedIntoUvs) {
   // uv (1, 0) -> scale (2, 0) -> offset (2.5, 0).
   EXPECT_FLOAT_EQ(s.meshes[0].uvs[1].x, 2.5f);
   EXPECT_FLOAT_EQ(s.meshes[0].uvs[2].y, 2.0f);
+}
+
+TEST(GltfLoader, SamplerWrapModesArePerAxis) {
+  json g = triangleGltf();
+  std::vector<uint8_t> png = readFileBytes(std::string(CANDELA_SOURCE_DIR) + "/tests/scene/data/checker.png");
+  g["images"] = {{{"uri", "data:image/png;base64," + base64(png)}}};
+  g["samplers"] = {{{"wrapS", 33071}, {"wrapT", 33648}}};  // clamp to edge across, mirrored repeat down
+  g["textures"] = {{{"source", 0}, {"sampler", 0}}};
+  g["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+  g["meshes"][0]["primitives"][0]["material"] = 0;
+  Scene s = load(g);
+  ASSERT_EQ(s.textures.size(), 1u);
+  EXPECT_EQ(s.textures[0].wrapU, TextureWrap::Clamp);
+  EXPECT_EQ(s.textures[0].wrapV, TextureWrap::Mirror);
+}
+
+TEST(GltfLoader, RequiredExtensionsCandelaLacksStopTheLoadNamingThem) {
+  // As a Draco-compressed file looks: the accessors have no bufferView, the data are in the extension.
+  json g = triangleGltf();
+  for (json& a : g["accessors"]) a.erase("bufferView");
+  g["meshes"][0]["primitives"][0]["extensions"] = {{"KHR_draco_mesh_compression", {{"bufferView", 0}}}};
+  g["extensionsUsed"] = {"KHR_draco_mesh_compression", "KHR_texture_transform"};
+  g["extensionsRequired"] = {"KHR_draco_mesh_compression", "KHR_texture_transform"};
+  std::string e = errorOf(g);
+  EXPECT_NE(e.find("requires the glTF extension KHR_draco_mesh_compression, which candela does not support"),
+            std::string::npos) << e;
+  EXPECT_EQ(e.find("accessor"), std::string::npos) << e;
+  EXPECT_EQ(e.find("KHR_texture_transform"), std::string::npos) << e;
+
+  g = triangleGltf();
+  g["extensionsUsed"] = {"EXT_texture_webp", "KHR_mesh_quantization"};
+  LoadWarnings warnings;
+  load(g, warnings);
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_NE(warnings.messages[0].find("uses the glTF extension EXT_texture_webp"), std::string::npos)
+      << warnings.messages[0];
+}
+
+// KHR_mesh_quantization: integer positions (not normalised, scaled by the node), normalised byte normals and
+// normalised unsigned-short texture coordinates.
+TEST(GltfLoader, QuantizedAttributes) {
+  std::vector<uint8_t> buffer;
+  append(buffer, std::vector<uint16_t>{0, 0, 0, 0, 100, 0, 0, 0, 0, 100, 0, 0});  // 3 x (x, y, z, pad): 24 bytes
+  append(buffer, std::vector<int8_t>{0, 0, 127, 0, 0, 0, 127, 0, 0, 0, 127, 0});  // 12 bytes
+  append(buffer, std::vector<uint16_t>{0, 0, 65535, 0, 0, 65535});                 // 12 bytes
+  json g = triangleGltf();
+  g["buffers"][0] = {{"byteLength", buffer.size()}, {"uri", "data:application/octet-stream;base64," + base64(buffer)}};
+  g["bufferViews"] = {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 24}, {"byteStride", 8}},
+                      {{"buffer", 0}, {"byteOffset", 24}, {"byteLength", 12}, {"byteStride", 4}},
+                      {{"buffer", 0}, {"byteOffset", 36}, {"byteLength", 12}}};
+  g["accessors"] = {{{"bufferView", 0}, {"componentType", 5123}, {"count", 3}, {"type", "VEC3"}},
+                    {{"bufferView", 1}, {"componentType", 5120}, {"normalized", true}, {"count", 3}, {"type", "VEC3"}},
+                    {{"bufferView", 2}, {"componentType", 5123}, {"normalized", true}, {"count", 3}, {"type", "VEC2"}}};
+  g["meshes"][0]["primitives"][0].erase("indices");
+  g["nodes"][0]["scale"] = {0.01, 0.01, 0.01};
+  g["extensionsUsed"] = g["extensionsRequired"] = {"KHR_mesh_quantization"};
+  Scene s = load(g);
+  validateScene(s);
+  const Mesh& m = s.meshes[0];
+  EXPECT_FLOAT_EQ(m.positions[1].x, 100.0f);
+  EXPECT_FLOAT_EQ(m.normals[2].z, 1.0f);
+  EXPECT_FLOAT_EQ(m.uvs[1].x, 1.0f);
+  EXPECT_FLOAT_EQ(s.instances[0].objectToWorld.point(m.positions[2]).y, 1.0f);
+}
+
+TEST(GltfLoader, SparseAccessorsReplaceTheListedElements) {
+  json g = triangleGltf();
+  std::vector<uint8_t> buffer = [] {
+    std::vector<uint8_t> b;
+    append(b, std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0});  // the base positions
+    append(b, std::vector<float>{0, 0, 1, 0, 0, 1, 0, 0, 1});  // normals
+    append(b, std::vector<float>{0, 0, 1, 0, 0, 1});
+    append(b, std::vector<uint16_t>{0, 1, 2, 2});            // indices, padded to 8 bytes
+    append(b, std::vector<uint8_t>{2, 0, 0, 0});              // sparse indices: element 2
+    append(b, std::vector<float>{0, 5, 0});                   // its new value
+    return b;
+  }();
+  g["buffers"][0] = {{"byteLength", buffer.size()}, {"uri", "data:application/octet-stream;base64," + base64(buffer)}};
+  g["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 104}, {"byteLength", 4}});
+  g["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 108}, {"byteLength", 12}});
+  json sparse = {{"count", 1}, {"indices", {{"bufferView", 3}, {"componentType", 5121}}}, {"values", {{"bufferView", 4}}}};
+  g["accessors"][0]["sparse"] = sparse;
+  Scene s = load(g);
+  EXPECT_FLOAT_EQ(s.meshes[0].positions[2].y, 5.0f);
+  EXPECT_FLOAT_EQ(s.meshes[0].positions[1].x, 1.0f);
+
+  // Without a bufferView the base is zeros.
+  g["accessors"][0].erase("bufferView");
+  s = load(g);
+  EXPECT_FLOAT_EQ(s.meshes[0].positions[1].x, 0.0f);
+  EXPECT_FLOAT_EQ(s.meshes[0].positions[2].y, 5.0f);
+
+  g["accessors"][0]["sparse"]["count"] = 4;
+  EXPECT_NE(errorOf(g).find("sparse: count 4 is not within the accessor's 3"), std::string::npos);
+  g["accessors"][0]["sparse"]["count"] = 1;
+  g["accessors"][0]["count"] = 1u << 30;
+  EXPECT_NE(errorOf(g).find("without a bufferView are more than candela reads"), std::string::npos);
+}
+
+TEST(GltfLoader, TexturesReadingTexcoord1GetThatSet) {
+  json g = triangleGltf();
+  std::vector<uint8_t> png = readFileBytes(std::string(CANDELA_SOURCE_DIR) + "/tests/scene/data/checker.png");
+  g["images"] = {{{"uri", "data:image/png;base64," + base64(png)}}};
+  g["textures"] = {{{"source", 0}}};
+  g["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}, {"texCoord", 1}}}}}}};
+  g["meshes"][0]["primitives"][0]["material"] = 0;
+  g["accessors"].push_back({{"bufferView", 0}, {"byteOffset", 12}, {"componentType", 5126}, {"count", 3}, {"type", "VEC2"}});
+  g["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_1"] = 4;
+  Scene s = load(g);
+  // TEXCOORD_1 reads the positions from the second one on as pairs: (1, 0), (0, 0), (1, 0).
+  EXPECT_FLOAT_EQ(s.meshes[0].uvs[0].x, 1.0f);
+  EXPECT_FLOAT_EQ(s.meshes[0].uvs[2].x, 1.0f);
+  EXPECT_FLOAT_EQ(s.meshes[0].uvs[2].y, 0.0f);
+
+  // A transform naming a set the primitive lacks (here an absurd one) leaves the primitive untextured-by-uv,
+  // with a warning, and nothing overflows.
+  g["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"] = {
+      {"KHR_texture_transform", {{"texCoord", 1e300}}}};
+  LoadWarnings warnings;
+  s = load(g, warnings);
+  EXPECT_TRUE(s.meshes[0].uvs.empty());
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_NE(warnings.messages[0].find("TEXCOORD_255, which the primitive lacks"), std::string::npos)
+      << warnings.messages[0];
+}
+
+TEST(GltfLoader, VertexColoursAreLoaded) {
+  json g = triangleGltf();
+  std::vector<uint8_t> buffer;
+  append(buffer, std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1});
+  append(buffer, std::vector<uint16_t>{0, 1, 2, 0});
+  append(buffer, std::vector<uint8_t>{255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 128});  // normalised RGBA
+  g["buffers"][0] = {{"byteLength", buffer.size()}, {"uri", "data:application/octet-stream;base64," + base64(buffer)}};
+  g["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 104}, {"byteLength", 12}});
+  g["accessors"].push_back(
+      {{"bufferView", 3}, {"componentType", 5121}, {"normalized", true}, {"count", 3}, {"type", "VEC4"}});
+  json coloured = g["meshes"][0]["primitives"][0];
+  coloured["attributes"]["COLOR_0"] = 4;
+  g["meshes"][0]["primitives"] = {coloured, g["meshes"][0]["primitives"][0]};  // the second has no colours
+  LoadWarnings warnings;
+  Scene s = load(g, warnings);
+  validateScene(s);
+  const Mesh& m = s.meshes[0];
+  ASSERT_EQ(m.colors.size(), 6u);
+  EXPECT_FLOAT_EQ(m.colors[0].x, 1.0f);
+  EXPECT_FLOAT_EQ(m.colors[1].y, 1.0f);
+  EXPECT_FLOAT_EQ(m.colors[2].x, 0.0f);
+  EXPECT_FLOAT_EQ(m.colors[4].x, 1.0f);  // white where the primitive has none
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_NE(warnings.messages[0].find("COLOR_0: the alpha of vertex colours is ignored"), std::string::npos);
+}
+
+TEST(GltfLoader, GpuInstancingMakesAnInstancePerElement) {
+  json g = triangleGltf();
+  std::vector<uint8_t> buffer;
+  append(buffer, std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1});
+  append(buffer, std::vector<uint16_t>{0, 1, 2, 0});
+  append(buffer, std::vector<float>{0, 0, 0, 5, 0, 0, 0, 7, 0});  // translations
+  append(buffer, std::vector<float>{1, 1, 1, 2, 2, 2, 1, 1, 1});  // scales
+  g["buffers"][0] = {{"byteLength", buffer.size()}, {"uri", "data:application/octet-stream;base64," + base64(buffer)}};
+  g["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 104}, {"byteLength", 72}});
+  g["accessors"].push_back({{"bufferView", 3}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}});
+  g["accessors"].push_back({{"bufferView", 3}, {"byteOffset", 36}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}});
+  g["nodes"][0]["translation"] = {0, 0, 10};
+  g["nodes"][0]["extensions"] = {{"EXT_mesh_gpu_instancing", {{"attributes", {{"TRANSLATION", 4}, {"SCALE", 5}}}}}};
+  g["extensionsUsed"] = g["extensionsRequired"] = {"EXT_mesh_gpu_instancing"};
+  Scene s = load(g);
+  ASSERT_EQ(s.meshes.size(), 1u);
+  ASSERT_EQ(s.instances.size(), 3u);
+  // Each instance's transform comes before the node's: vertex (1, 0, 0) of instance 1 is scaled by 2, moved by
+  // (5, 0, 0), then by the node's (0, 0, 10).
+  Vec3 p = s.instances[1].objectToWorld.point({1, 0, 0});
+  EXPECT_FLOAT_EQ(p.x, 7.0f);
+  EXPECT_FLOAT_EQ(p.z, 10.0f);
+  EXPECT_FLOAT_EQ(s.instances[2].objectToWorld.point({0, 0, 0}).y, 7.0f);
+
+  g["accessors"][5]["count"] = 2;
+  EXPECT_NE(errorOf(g).find("the attributes have different counts"), std::string::npos);
+}
+
+TEST(GltfLoader, UnlitMaterialsEmitTheirBaseColour) {
+  json g = triangleGltf();
+  g["materials"] = {{{"pbrMetallicRoughness", {{"baseColorFactor", {0.2, 0.4, 0.6, 1}}}},
+                     {"extensions", {{"KHR_materials_unlit", json::object()}}}}};
+  g["meshes"][0]["primitives"][0]["material"] = 0;
+  g["extensionsUsed"] = {"KHR_materials_unlit"};
+  LoadWarnings warnings;
+  Scene s = load(g, warnings);
+  EXPECT_TRUE(warnings.messages.empty());
+  EXPECT_FLOAT_EQ(s.materials[0].emission.z, 0.6f);
+  EXPECT_TRUE(isBlack(s.materials[0].baseColor));
+}
+
+TEST(GltfLoader, NonFiniteNormalsDoNotRejectTheFile) {
+  json g = triangleGltf();
+  std::vector<uint8_t> buffer;
+  float nan = std::numeric_limits<float>::quiet_NaN();
+  append(buffer, std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, nan, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1});
+  append(buffer, std::vector<uint16_t>{0, 1, 2});
+  g["buffers"][0] = {{"byteLength", buffer.size()}, {"uri", "data:application/octet-stream;base64," + base64(buffer)}};
+  Scene s = load(g);
+  EXPECT_EQ(s.meshes[0].triangleCount(), 1u);
 }
 
 TEST(GltfLoader, BadInputNamesFileAndJsonPath) {

@@ -50,7 +50,7 @@ std::string errorOf(const std::string& file, Load load) {
   return {};
 }
 
-Scene loadModel(const std::string& path, LoadWarnings& warnings) {
+Scene loadModel(const std::string& path, LoadWarnings& warnings, SharedModelAssets&) {
   return path.ends_with(".obj") ? loadObj(path, warnings) : loadGltf(path, warnings);
 }
 

@@ -221,7 +221,7 @@ TEST(PathConfinement, GltfImagesOutsideTheFolderAreAWarning) {
   EXPECT_EQ(loadGltf(gltf, allowedWarnings, OutsidePaths::Allowed).textures.size(), 2u) << allOf(allowedWarnings);
 }
 
-Scene loadModel(const std::string& path, LoadWarnings& warnings) { return loadObj(path, warnings); }
+Scene loadModel(const std::string& path, LoadWarnings& warnings, SharedModelAssets&) { return loadObj(path, warnings); }
 
 TEST(PathConfinement, SceneFilesNameModelsInTheirFolder) {
   TempFolder dir;

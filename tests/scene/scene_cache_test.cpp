@@ -35,7 +35,8 @@ void expectSameTexture(const Texture& a, const Texture& b) {
   EXPECT_EQ(a.height, b.height);
   EXPECT_EQ(a.channels, b.channels);
   EXPECT_EQ(a.srgb, b.srgb);
-  EXPECT_EQ(a.wrap, b.wrap);
+  EXPECT_EQ(a.wrapU, b.wrapU);
+  EXPECT_EQ(a.wrapV, b.wrapV);
   expectSameBytes(a.bytes, b.bytes, "texture bytes");
   expectSameBytes(a.floats, b.floats, "texture floats");
 }
@@ -69,6 +70,11 @@ void expectSameScene(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.renderHints.samplesPerPixel, b.renderHints.samplesPerPixel);
   EXPECT_EQ(a.renderHints.maxDepth, b.renderHints.maxDepth);
   EXPECT_EQ(a.cameraMissing, b.cameraMissing);
+  ASSERT_EQ(a.cameras.size(), b.cameras.size());
+  for (size_t i = 0; i < a.cameras.size(); ++i) {
+    EXPECT_EQ(a.cameras[i].name, b.cameras[i].name);
+    EXPECT_EQ(std::memcmp(&a.cameras[i].description, &b.cameras[i].description, sizeof(CameraDescription)), 0);
+  }
   EXPECT_EQ(a.inputFiles, b.inputFiles);
 }
 
@@ -99,11 +105,11 @@ Scene richScene() {
   emitter.normalTexture = 1;
   s.materials = {glass, emitter};
   s.materialNames = {"glass", "lamp"};
-  Texture bytes{"albedo.png", 2, 1, 4, true, TextureWrap::Clamp, {1, 2, 3, 4, 5, 6, 7, 8}, {}};
-  Texture floats{"normal.exr", 1, 1, 3, false, TextureWrap::Mirror, {}, {0.5f, 0.25f, 1.0f}};
+  Texture bytes{"albedo.png", 2, 1, 4, true, TextureWrap::Clamp, TextureWrap::Mirror, {1, 2, 3, 4, 5, 6, 7, 8}, {}};
+  Texture floats{"normal.exr", 1, 1, 3, false, TextureWrap::Mirror, TextureWrap::Repeat, {}, {0.5f, 0.25f, 1.0f}};
   s.textures = {bytes, floats};
   s.environment.radiance = {0.1f, 0.2f, 0.3f};
-  s.environment.map = {"sky.hdr", 2, 1, 3, false, TextureWrap::Repeat, {}, {1, 2, 3, 4, 5, 6}};
+  s.environment.map = {"sky.hdr", 2, 1, 3, false, TextureWrap::Repeat, TextureWrap::Repeat, {}, {1, 2, 3, 4, 5, 6}};
   s.environment.intensity = 2.5f;
   s.environment.rotationDegrees = 90;
   s.environment.visibleToCamera = false;
@@ -112,6 +118,7 @@ Scene richScene() {
   s.renderHints.width = 320;
   s.renderHints.maxDepth = 4;
   s.cameraMissing = true;
+  s.cameras = {{"front", s.camera}, {"side", CameraDescription{}}};
   s.inputFiles = {"model.obj", "model.mtl"};
   return s;
 }

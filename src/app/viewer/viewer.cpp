@@ -96,7 +96,9 @@ Viewer::Viewer(const ViewerOptions& options)
   controls_.samplesPerFrame = options.samplesPerFrame;
   controls_.post = options.post;
   std::fprintf(stderr, "window: %s\n", window_.glRenderer().c_str());
-  showScene(loadScene(options.sceneSpec, {options.environmentPath, options.sceneCache, options.outsidePaths}), options.sceneSpec);
+  showScene(loadScene(options.sceneSpec,
+                      {options.environmentPath, options.sceneCache, options.outsidePaths, options.camera}),
+            options.sceneSpec);
   status_.backend = session_.backend().name();
   status_.device = session_.backend().deviceName();
   status_.imageTransfer = transfer_.description();

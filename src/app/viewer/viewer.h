@@ -14,6 +14,7 @@ struct ViewerOptions {
   std::string environmentPath;  // an .hdr or .exr map that lights the first scene instead of its own
   SceneCacheSettings sceneCache;
   OutsidePaths outsidePaths = OutsidePaths::Refused;  // whether models may refer to files outside their folders
+  std::string camera;  // the name or index of the first scene's camera to take; empty: the first
   std::string backend = "auto";
   bool interop = true;  // false: the image reaches the screen through the host copy even where interop works
   uint32_t width = 960;  // of the image; the panel sits beside it

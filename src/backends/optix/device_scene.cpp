@@ -12,6 +12,7 @@ void DeviceScene::upload(const FlatScene& flat) {
   view_.normals = copy(buffers_, flat.normals, "vertex normals");
   view_.uvs = copy(buffers_, flat.uvs, "texture coordinates");
   view_.tangents = copy(buffers_, flat.tangents, "vertex tangents");
+  view_.colors = flat.colors.empty() ? nullptr : copy(buffers_, flat.colors, "vertex colours");
   view_.indices = copy(buffers_, flat.indices, "triangle indices");
   view_.triangleMaterials = copy(buffers_, flat.triangleMaterials, "triangle materials");
   view_.meshes = copy(buffers_, flat.meshes, "mesh records");

@@ -85,7 +85,8 @@ DeviceTextures::DeviceTextures(const std::vector<TextureView>& views, const std:
       resource.resType = cudaResourceTypeArray;
       resource.res.array.array = array;
       cudaTextureDesc sampling{};
-      sampling.addressMode[0] = sampling.addressMode[1] = addressMode(view.wrap);
+      sampling.addressMode[0] = addressMode(view.wrapU);
+      sampling.addressMode[1] = addressMode(view.wrapV);
       sampling.filterMode = cudaFilterModeLinear;
       sampling.readMode = bytes ? cudaReadModeNormalizedFloat : cudaReadModeElementType;
       sampling.sRGB = bytes && view.srgb ? 1 : 0;

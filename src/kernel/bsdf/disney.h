@@ -88,6 +88,12 @@ struct DisneyBsdf {
       default: proposal = clearcoat.sample(wo, uLobe, u); break;
     }
     if (!proposal.valid) return proposal;
+    if (proposal.isDelta) {
+      // The index-matched glass lobe: no other lobe has a value in exactly that direction.
+      proposal.f *= glassWeight;
+      proposal.pdf *= c.p[lobe];
+      return proposal;
+    }
     return mixtureSample(*this, wo, proposal.wi, glass.eta);
   }
 };

@@ -9,14 +9,19 @@ namespace candela {
 // DielectricBxDF. `eta` is the index of the far side (wi.z < 0) over that of wo's side; refracted radiance is
 // divided by eta^2 and tinted by `transmissionTint`. Reflection and refraction are chosen by the Fresnel
 // reflectance of the sampled microfacet, so the lobe's density integrates to 1 over the sphere.
+// An index-matched interface (eta 1: a transmissive material of ior 1 in air) neither reflects nor bends light,
+// however rough its microfacets: the lobe is then a delta lobe that continues wo straight on (its half vector
+// would be zero, and eval() and pdf() of every pair are 0).
 struct RoughDielectric {
   GgxDistribution distribution;
   float eta = 1.5f;
   Vec3 transmissionTint{1, 1, 1};
 
+  CANDELA_FN bool indexMatched() const { return fabsf(eta - 1.0f) < 1e-4f; }
+
   // The generalised half vector of (wo, wi), facing +z, or false when the pair cannot be connected.
   CANDELA_FN bool halfVector(Vec3 wo, Vec3 wi, Vec3& h) const {
-    if (wo.z <= 0.0f || wi.z == 0.0f) return false;
+    if (wo.z <= 0.0f || wi.z == 0.0f || indexMatched()) return false;
     bool reflection = wi.z > 0.0f;
     h = reflection ? wo + wi : wi * eta + wo;
     if (dot(h, h) == 0.0f) return false;
@@ -53,6 +58,15 @@ struct RoughDielectric {
   CANDELA_FN BsdfSample sample(Vec3 wo, float uChoice, Vec2 u) const {
     BsdfSample s;
     if (wo.z <= 0.0f) return s;
+    if (indexMatched()) {
+      s.wi = -wo;
+      s.f = transmissionTint / wo.z;
+      s.pdf = 1.0f;
+      s.eta = eta;
+      s.isDelta = true;
+      s.valid = true;
+      return s;
+    }
     Vec3 h = distribution.sampleVisibleNormal(wo, u);
     float f = fresnelDielectric(dot(wo, h), eta);
     if (uChoice < f) {

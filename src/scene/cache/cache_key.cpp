@@ -10,7 +10,7 @@ namespace candela {
 namespace {
 
 // Bumped whenever the layout of a cache file changes.
-constexpr uint32_t kCacheFormatVersion = 1;
+constexpr uint32_t kCacheFormatVersion = 2;  // 2: textures wrap per axis; cameras; vertex colours
 
 std::string absolutePath(const std::string& path) {
   std::error_code ec;

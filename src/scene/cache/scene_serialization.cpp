@@ -13,7 +13,8 @@ void writeTexture(BinaryWriter& out, const Texture& t) {
   out.value(t.height);
   out.value(t.channels);
   out.value(uint8_t(t.srgb));
-  out.value(t.wrap);
+  out.value(t.wrapU);
+  out.value(t.wrapV);
   out.array(t.bytes);
   out.array(t.floats);
 }
@@ -25,7 +26,8 @@ void readTexture(BinaryReader& in, Texture& t) {
   in.value(t.height);
   in.value(t.channels);
   in.value(srgb);
-  in.value(t.wrap);
+  in.value(t.wrapU);
+  in.value(t.wrapV);
   in.array(t.bytes);
   in.array(t.floats);
   t.srgb = srgb != 0;
@@ -50,7 +52,7 @@ void readOptional(BinaryReader& in, std::optional<T>& v) {
 }
 
 // The least a mesh, a texture or a string takes in the file, for checking counts before allocating.
-constexpr uint64_t kMeshBytes = 7 * sizeof(uint64_t);
+constexpr uint64_t kMeshBytes = 8 * sizeof(uint64_t);
 constexpr uint64_t kTextureBytes = 3 * sizeof(uint64_t);
 constexpr uint64_t kStringBytes = sizeof(uint64_t);
 
@@ -65,6 +67,7 @@ void writeScene(BinaryWriter& out, const Scene& s) {
     out.array(m.normals);
     out.array(m.uvs);
     out.array(m.tangents);
+    out.array(m.colors);
     out.array(m.indices);
     out.array(m.triangleMaterials);
   }
@@ -85,6 +88,11 @@ void writeScene(BinaryWriter& out, const Scene& s) {
   writeOptional(out, s.renderHints.samplesPerPixel);
   writeOptional(out, s.renderHints.maxDepth);
   out.value(uint8_t(s.cameraMissing));
+  out.value(uint64_t(s.cameras.size()));
+  for (const NamedCamera& c : s.cameras) {
+    out.string(c.name);
+    out.value(c.description);
+  }
   out.value(uint64_t(s.inputFiles.size()));
   for (const std::string& f : s.inputFiles) out.string(f);
 }
@@ -98,6 +106,7 @@ bool readScene(BinaryReader& in, Scene& s) {
     in.array(m.normals);
     in.array(m.uvs);
     in.array(m.tangents);
+    in.array(m.colors);
     in.array(m.indices);
     in.array(m.triangleMaterials);
   }
@@ -121,6 +130,11 @@ bool readScene(BinaryReader& in, Scene& s) {
   readOptional(in, s.renderHints.maxDepth);
   in.value(flag);
   s.cameraMissing = flag != 0;
+  s.cameras.resize(size_t(in.count(kStringBytes + sizeof(CameraDescription))));
+  for (NamedCamera& c : s.cameras) {
+    in.string(c.name);
+    in.value(c.description);
+  }
   s.inputFiles.resize(size_t(in.count(kStringBytes)));
   for (std::string& f : s.inputFiles) in.string(f);
   return in.ok();

@@ -15,6 +15,7 @@
 #include "scene/loaders/file_bytes.h"
 #include "scene/loaders/gltf_accessors.h"
 #include "scene/loaders/gltf_buffer_uris.h"
+#include "scene/loaders/gltf_extensions.h"
 #include "scene/loaders/gltf_materials.h"
 #include "scene/loaders/path_confinement.h"
 #include "scene/loaders/texture_table.h"
@@ -145,11 +146,15 @@ glm::mat4 localTransform(const tinygltf::Node& node) {
 
 class GltfSceneBuilder {
  public:
-  GltfSceneBuilder(const tinygltf::Model& model, std::string file, const PathRule& files, LoadWarnings& warnings)
-      : model_(model), file_(std::move(file)), baseDir_(files.folder), warnings_(warnings), accessors_(model, file_),
-        textures_(files) {}
+  // Textures go to `sharedTextures` when given (and are left for its owner to finish), else to the builder's own.
+  GltfSceneBuilder(const tinygltf::Model& model, std::string file, const PathRule& files, LoadWarnings& warnings,
+                   TextureTable* sharedTextures)
+      : model_(model), file_(std::move(file)), files_(files), baseDir_(files.folder), warnings_(warnings),
+        accessors_(model, file_), textures_(sharedTextures ? *sharedTextures : ownTextures_),
+        sharesTextures_(sharedTextures != nullptr) {}
 
   Scene build() {
+    checkGltfExtensions(model_, file_, warnings_);
     scene_.name = fs::path(file_).stem().string();
     for (size_t i = 0; i < model_.materials.size(); ++i) {
       GltfMaterial m = materialFromGltf(model_, int(i), file_, [this](int t, bool srgb) { return texture(t, srgb); },
@@ -157,6 +162,7 @@ class GltfSceneBuilder {
       scene_.materials.push_back(m.material);
       scene_.materialNames.push_back(model_.materials[i].name);
       uvTransforms_.push_back(m.uvTransform);
+      texCoords_.push_back(m.texCoord);
     }
     std::vector<int> roots;
     int sceneIndex = model_.defaultScene >= 0 ? model_.defaultScene : (model_.scenes.empty() ? -1 : 0);
@@ -178,7 +184,7 @@ class GltfSceneBuilder {
                                " KHR_lights_punctual lights are ignored: only emissive surfaces and the environment "
                                "emit light in candela");
     if (skinned_) warnings_.add(file_, "skins are ignored; meshes are loaded in their bind pose");
-    textures_.finish(scene_, 0, warnings_);
+    if (!sharesTextures_) textures_.finish(scene_, 0, warnings_);
     scene_.cameraMissing = !cameraFound_;
     return std::move(scene_);
   }
@@ -205,18 +211,61 @@ class GltfSceneBuilder {
     if (node.mesh >= 0) {
       if (size_t(node.mesh) >= model_.meshes.size())
         failLoad(file_, where + ".mesh: mesh " + std::to_string(node.mesh) + " does not exist");
-      if (std::optional<uint32_t> mesh = meshFor(node.mesh)) {
-        if (scene_.instances.size() == kMaxInstances)
-          failLoad(file_, where + ": more than " + std::to_string(kMaxInstances) + " mesh instances");
-        scene_.instances.push_back({*mesh, toAffine(world)});
-      }
+      if (std::optional<uint32_t> mesh = meshFor(node.mesh)) addInstances(*mesh, node, world, where);
     }
-    if (node.camera >= 0 && !cameraFound_) takeCamera(node.camera, world, where);
+    if (node.camera >= 0) takeCamera(node.camera, world, where);
     if (node.extensions.count("KHR_lights_punctual")) ++punctualLights_;
     if (node.skin >= 0) skinned_ = true;
     for (size_t c = 0; c < node.children.size(); ++c)
       visit(node.children[c], world, depth + 1, where + ".children");
     nodeStates_[size_t(index)] = NodeState::Done;
+  }
+
+  void addInstance(uint32_t mesh, const glm::mat4& world, const std::string& where) {
+    if (scene_.instances.size() == kMaxInstances)
+      failLoad(file_, where + ": more than " + std::to_string(kMaxInstances) + " mesh instances");
+    scene_.instances.push_back({mesh, toAffine(world)});
+  }
+
+  // One instance of `mesh` at the node's transform, or, with EXT_mesh_gpu_instancing, one per element of its
+  // TRANSLATION, ROTATION and SCALE accessors, each applied before the node's transform.
+  void addInstances(uint32_t mesh, const tinygltf::Node& node, const glm::mat4& world, const std::string& where) {
+    auto ext = node.extensions.find("EXT_mesh_gpu_instancing");
+    if (ext == node.extensions.end() || !ext->second.Has("attributes")) {
+      addInstance(mesh, world, where);
+      return;
+    }
+    const tinygltf::Value& attributes = ext->second.Get("attributes");
+    std::string at = where + ".extensions.EXT_mesh_gpu_instancing.attributes.";
+    auto accessorOf = [&](const char* name) {
+      return attributes.Has(name) && attributes.Get(name).IsInt() ? attributes.Get(name).GetNumberAsInt() : -1;
+    };
+    std::vector<Vec3> translations, scales;
+    std::vector<Vec4> rotations;
+    if (int a = accessorOf("TRANSLATION"); a >= 0) translations = accessors_.readVec3(a, at + "TRANSLATION");
+    if (int a = accessorOf("ROTATION"); a >= 0) rotations = accessors_.readVec4(a, at + "ROTATION");
+    if (int a = accessorOf("SCALE"); a >= 0) scales = accessors_.readVec3(a, at + "SCALE");
+    size_t count = std::max({translations.size(), rotations.size(), scales.size()});
+    for (size_t n : {translations.size(), rotations.size(), scales.size()})
+      if (n != 0 && n != count)
+        failLoad(file_, at + "*: the attributes have different counts (" + std::to_string(n) + " and " +
+                            std::to_string(count) + ")");
+    for (size_t i = 0; i < count; ++i) {
+      glm::mat4 local(1.0f);
+      if (!translations.empty())
+        local = glm::translate(local, glm::vec3(translations[i].x, translations[i].y, translations[i].z));
+      if (!rotations.empty())
+        local *= glm::mat4_cast(glm::normalize(glm::quat(rotations[i].w, rotations[i].x, rotations[i].y, rotations[i].z)));
+      if (!scales.empty()) local = glm::scale(local, glm::vec3(scales[i].x, scales[i].y, scales[i].z));
+      glm::mat4 instance = world * local;
+      bool finite = true;
+      for (int k = 0; k < 16; ++k) finite &= std::isfinite(glm::value_ptr(instance)[k]);
+      if (!finite) {
+        warnings_.add(file_, at + "*: instance " + std::to_string(i) + " has a non-finite transform and is left out");
+        continue;
+      }
+      addInstance(mesh, instance, where);
+    }
   }
 
   void takeCamera(int index, const glm::mat4& world, const std::string& where) {
@@ -231,13 +280,15 @@ class GltfSceneBuilder {
     glm::vec3 forward = glm::normalize(glm::vec3(world * glm::vec4(0, 0, -1, 0)));
     glm::vec3 up = glm::normalize(glm::vec3(world * glm::vec4(0, 1, 0, 0)));
     float yfov = float(c.perspective.yfov) * 180.0f / kPi;
-    CameraDescription& d = scene_.camera;
+    CameraDescription d;
     d.eye = {eye.x, eye.y, eye.z};
     d.target = {eye.x + forward.x, eye.y + forward.y, eye.z + forward.z};
     d.up = {up.x, up.y, up.z};
     d.verticalFovDegrees = std::isfinite(yfov) && yfov > 0.0f && yfov < 180.0f ? yfov : 40.0f;
     if (!isFinite(d.eye) || !isFinite(d.target) || !isFinite(d.up)) return;
+    if (!cameraFound_) scene_.camera = d;
     cameraFound_ = true;
+    scene_.cameras.push_back({c.name.empty() ? "cameras[" + std::to_string(index) + "] at " + where : c.name, d});
   }
 
   std::optional<uint32_t> meshFor(int gltfMesh) {
@@ -274,6 +325,7 @@ class GltfSceneBuilder {
       std::vector<Vec3> positions, normals;
       std::vector<Vec2> uvs;
       std::vector<Vec4> tangents;
+      std::vector<Vec3> colors;
       std::vector<uint32_t> indices;
       uint32_t material;
     };
@@ -305,9 +357,25 @@ class GltfSceneBuilder {
         part.normals = accessors_.readVec3(a, where + ".attributes.NORMAL");
         sameCount(part.normals.size(), "NORMAL");
       }
-      if (int a = attribute("TEXCOORD_0"); a >= 0) {
-        part.uvs = accessors_.readTexcoords(a, where + ".attributes.TEXCOORD_0");
-        sameCount(part.uvs.size(), "TEXCOORD_0");
+      if (prim.material >= 0 && size_t(prim.material) >= model_.materials.size())
+        failLoad(file_, where + ".material: material " + std::to_string(prim.material) + " does not exist");
+      std::string texCoord = "TEXCOORD_" + std::to_string(prim.material >= 0 ? texCoords_[size_t(prim.material)] : 0);
+      if (int a = attribute(texCoord.c_str()); a >= 0) {
+        part.uvs = accessors_.readVec2(a, where + ".attributes." + texCoord);
+        sameCount(part.uvs.size(), texCoord.c_str());
+      } else if (texCoord != "TEXCOORD_0") {
+        warnings_.add(file_, where + ": the material's textures read " + texCoord + ", which the primitive lacks");
+      }
+      if (int a = attribute("COLOR_0"); a >= 0) {
+        std::vector<Vec4> rgba = accessors_.readColours(a, where + ".attributes.COLOR_0");
+        sameCount(rgba.size(), "COLOR_0");
+        part.colors.resize(rgba.size());
+        bool translucent = false;
+        for (size_t i = 0; i < rgba.size(); ++i) {
+          part.colors[i] = {rgba[i].x, rgba[i].y, rgba[i].z};
+          translucent |= rgba[i].w < 1.0f;
+        }
+        if (translucent) warnings_.add(file_, where + ".attributes.COLOR_0: the alpha of vertex colours is ignored");
       }
       if (int a = attribute("TANGENT"); a >= 0) {
         part.tangents = accessors_.readVec4(a, where + ".attributes.TANGENT");
@@ -325,8 +393,6 @@ class GltfSceneBuilder {
         for (size_t i = 0; i < n; ++i) indices[i] = uint32_t(i);
       }
       part.indices = toTriangleList(indices, prim.mode);
-      if (prim.material >= 0 && size_t(prim.material) >= model_.materials.size())
-        failLoad(file_, where + ".material: material " + std::to_string(prim.material) + " does not exist");
       part.material = prim.material >= 0 ? uint32_t(prim.material) : defaultMaterial();
       if (prim.material >= 0 && uvTransforms_[size_t(prim.material)])
         for (Vec2& uv : part.uvs) uv = uvTransforms_[size_t(prim.material)]->apply(uv);
@@ -335,17 +401,18 @@ class GltfSceneBuilder {
 
     Mesh mesh;
     mesh.name = gm.name.empty() ? "meshes[" + std::to_string(meshIndex) + "]" : gm.name;
-    bool anyNormals = false, allNormals = true, anyUvs = false, allTangents = !parts.empty();
+    bool anyNormals = false, allNormals = true, anyUvs = false, anyColors = false, allTangents = !parts.empty();
     for (const Part& p : parts) {
       anyNormals |= !p.normals.empty();
       allNormals &= !p.normals.empty();
       anyUvs |= !p.uvs.empty();
+      anyColors |= !p.colors.empty();
       allTangents &= !p.tangents.empty();
     }
     for (Part& p : parts) {
       // glTF asks for flat shading where normals are missing; when other primitives of the mesh have normals,
       // this primitive's triangles get their own vertices with the face normal.
-      if (anyNormals && !allNormals && p.normals.empty()) unweldWithFaceNormals(p.positions, p.uvs, p.tangents, p.indices, p.normals);
+      if (anyNormals && !allNormals && p.normals.empty()) unweldWithFaceNormals(p);
       if (mesh.positions.size() + p.positions.size() > uint64_t(UINT32_MAX))
         failLoad(file_, "meshes[" + std::to_string(meshIndex) + "]: too many vertices");
       uint32_t base = uint32_t(mesh.positions.size());
@@ -354,6 +421,10 @@ class GltfSceneBuilder {
       if (anyUvs) {
         if (p.uvs.empty()) p.uvs.resize(p.positions.size());
         mesh.uvs.insert(mesh.uvs.end(), p.uvs.begin(), p.uvs.end());
+      }
+      if (anyColors) {
+        if (p.colors.empty()) p.colors.resize(p.positions.size(), Vec3{1, 1, 1});
+        mesh.colors.insert(mesh.colors.end(), p.colors.begin(), p.colors.end());
       }
       if (allTangents) mesh.tangents.insert(mesh.tangents.end(), p.tangents.begin(), p.tangents.end());
       for (uint32_t i : p.indices) mesh.indices.push_back(base + i);
@@ -377,9 +448,10 @@ class GltfSceneBuilder {
     return out;
   }
 
-  static void unweldWithFaceNormals(std::vector<Vec3>& positions, std::vector<Vec2>& uvs, std::vector<Vec4>& tangents,
-                                    std::vector<uint32_t>& indices, std::vector<Vec3>& normals) {
-    std::vector<Vec3> p;
+  template <class Part>
+  static void unweldWithFaceNormals(Part& part) {
+    auto& [positions, normals, uvs, tangents, colors, indices, material] = part;
+    std::vector<Vec3> p, col;
     std::vector<Vec2> uv;
     std::vector<Vec4> tg;
     for (size_t t = 0; t < indices.size() / 3; ++t) {
@@ -390,6 +462,7 @@ class GltfSceneBuilder {
         p.push_back(positions[c[k]]);
         if (!uvs.empty()) uv.push_back(uvs[c[k]]);
         if (!tangents.empty()) tg.push_back(tangents[c[k]]);
+        if (!colors.empty()) col.push_back(colors[c[k]]);
         normals.push_back(len > 0.0f ? n / len : Vec3{});
       }
     }
@@ -397,6 +470,7 @@ class GltfSceneBuilder {
     positions = std::move(p);
     uvs = std::move(uv);
     tangents = std::move(tg);
+    colors = std::move(col);
   }
 
   int32_t texture(int index, bool srgb) {
@@ -406,12 +480,15 @@ class GltfSceneBuilder {
       return kNoTexture;
     }
     const tinygltf::Texture& t = model_.textures[size_t(index)];
-    TextureWrap wrap = TextureWrap::Repeat;
-    if (t.sampler >= 0 && size_t(t.sampler) < model_.samplers.size()) {
-      int w = model_.samplers[size_t(t.sampler)].wrapS;
-      wrap = w == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE ? TextureWrap::Clamp
+    auto wrapMode = [](int w) {
+      return w == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE     ? TextureWrap::Clamp
              : w == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT ? TextureWrap::Mirror
                                                           : TextureWrap::Repeat;
+    };
+    TextureWrap wrapU = TextureWrap::Repeat, wrapV = TextureWrap::Repeat;
+    if (t.sampler >= 0 && size_t(t.sampler) < model_.samplers.size()) {
+      wrapU = wrapMode(model_.samplers[size_t(t.sampler)].wrapS);
+      wrapV = wrapMode(model_.samplers[size_t(t.sampler)].wrapT);
     }
     if (t.source < 0 || size_t(t.source) >= model_.images.size()) {
       std::string ext = t.extensions.empty() ? "" : " (it uses " + t.extensions.begin()->first + ", which is not supported)";
@@ -421,10 +498,11 @@ class GltfSceneBuilder {
     const tinygltf::Image& image = model_.images[size_t(t.source)];
     std::string imageWhere = "images[" + std::to_string(t.source) + "]";
     if (!image.image.empty())
-      return textures_.fromMemory(imageWhere, file_ + ": " + imageWhere, image.image, srgb, wrap);
+      return textures_.fromMemory(file_ + ": " + imageWhere, file_ + ": " + imageWhere, image.image, srgb, wrapU, wrapV);
     if (!image.uri.empty() && !baseDir_.empty()) {
       std::optional<std::string> path = uriToPath(image.uri);
-      if (path && !path->empty()) return textures_.fromFile(joinModelPath(baseDir_, *path), srgb, wrap);
+      if (path && !path->empty())
+        return textures_.fromFile(confineModelPath(joinModelPath(baseDir_, *path), files_), srgb, wrapU, wrapV);
       warnings_.add(file_, imageWhere + ".uri '" + image.uri + "' names no file in the glTF file's folder (a "
                            "relative path with valid %-escapes); the material is left untextured");
       return kNoTexture;
@@ -435,12 +513,16 @@ class GltfSceneBuilder {
 
   const tinygltf::Model& model_;
   std::string file_;
+  PathRule files_;
   std::string baseDir_;
   LoadWarnings& warnings_;
   GltfAccessorReader accessors_;
   Scene scene_;
-  TextureTable textures_;
+  TextureTable ownTextures_;
+  TextureTable& textures_;
+  bool sharesTextures_;
   std::vector<std::optional<UvTransform>> uvTransforms_;
+  std::vector<int> texCoords_;  // the TEXCOORD set each material's textures read
   std::map<int, std::optional<uint32_t>> meshes_;
   std::optional<uint32_t> defaultMaterial_;
   bool cameraFound_ = false;
@@ -451,7 +533,7 @@ class GltfSceneBuilder {
 };
 
 Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, const PathRule& files,
-                    LoadWarnings& warnings) {
+                    LoadWarnings& warnings, TextureTable* sharedTextures) {
   const std::string& baseDir = files.folder;
   if (size == 0) failLoad(name, "file is empty");
   bool binary = isGlb(data, size);
@@ -469,27 +551,31 @@ Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, c
                    : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(data),
                                                 unsigned(std::min<size_t>(size, UINT32_MAX)), baseDir);
   if (!ok && !access.refusal.empty()) failLoad(name, access.refusal);
-  if (!ok) failLoad(name, err.empty() ? "not a valid glTF file" : firstLine(err));
+  if (!ok) {
+    if (json) refuseUnsupportedRequiredExtensions(json, jsonSize, name);
+    failLoad(name, err.empty() ? "not a valid glTF file" : firstLine(err));
+  }
   std::istringstream lines(warn);
   std::string line;
   while (std::getline(lines, line))
     if (!firstLine(line).empty()) warnings.add(name, firstLine(line));
-  Scene scene = GltfSceneBuilder(model, name, files, warnings).build();
+  Scene scene = GltfSceneBuilder(model, name, files, warnings, sharedTextures).build();
   scene.inputFiles.insert(scene.inputFiles.begin(), access.filesRead.begin(), access.filesRead.end());
   return scene;
 }
 
 }  // namespace
 
-Scene loadGltf(const std::string& path, LoadWarnings& warnings, OutsidePaths outside) {
+Scene loadGltf(const std::string& path, LoadWarnings& warnings, OutsidePaths outside, SharedModelAssets* shared) {
   std::vector<uint8_t> bytes = readFileBytes(path);
-  Scene scene = loadFromBytes(path, bytes.data(), bytes.size(), PathRule::forFile(path, outside), warnings);
+  Scene scene = loadFromBytes(path, bytes.data(), bytes.size(), PathRule::forFile(path, outside), warnings,
+                              shared ? &shared->textures : nullptr);
   scene.inputFiles.insert(scene.inputFiles.begin(), path);
   return scene;
 }
 
 Scene loadGltfBytes(const std::string& name, const uint8_t* data, size_t size, LoadWarnings& warnings) {
-  return loadFromBytes(name, data, size, PathRule{}, warnings);
+  return loadFromBytes(name, data, size, PathRule{}, warnings, nullptr);
 }
 
 }  // namespace candela

@@ -4,6 +4,7 @@
 
 #include "scene/loaders/load_diagnostics.h"
 #include "scene/loaders/path_confinement.h"
+#include "scene/loaders/shared_model_assets.h"
 #include "scene/scene.h"
 
 namespace candela {
@@ -17,8 +18,9 @@ namespace candela {
 // skins and morph targets (the static pose is loaded). Materials: see gltf_materials.h. Invalid input throws
 // LoadError naming the file and the JSON path of the problem. External buffers and images must lie in the glTF
 // file's folder unless `outside` allows others (path_confinement.h): a buffer elsewhere is an error, an image a
-// warning.
-Scene loadGltf(const std::string& path, LoadWarnings& warnings, OutsidePaths outside = OutsidePaths::Refused);
+// warning. With `shared`, textures are left for shared->textures.finish() (shared_model_assets.h).
+Scene loadGltf(const std::string& path, LoadWarnings& warnings, OutsidePaths outside = OutsidePaths::Refused,
+               SharedModelAssets* shared = nullptr);
 
 // The same for a .gltf or .glb held in memory; external buffers and images are not read. `name` stands for the
 // file in messages.

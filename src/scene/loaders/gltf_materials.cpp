@@ -58,12 +58,14 @@ class TextureRefs {
               LoadWarnings& warnings)
       : file_(file), where_(where), resolve_(resolve), warnings_(warnings) {}
 
-  int32_t use(int index, int texCoord, const tinygltf::ExtensionMap& extensions, bool srgb, const char* slot) {
+  int32_t use(int index, int texCoord, const tinygltf::ExtensionMap& extensions, bool srgb) {
     if (index < 0) return kNoTexture;
-    if (texCoord != 0) warn(std::string(slot) + " reads TEXCOORD_" + std::to_string(texCoord) + "; TEXCOORD_0 is used");
     const tinygltf::Value* t = extension(extensions, "KHR_texture_transform");
     transforms_.push_back(t ? transformOf(*t) : UvTransform{});
-    if (t && number(*t, "texCoord", 0) != 0) warn(std::string(slot) + "'s texture transform names another TEXCOORD");
+    // The transform's texCoord, when it has one, replaces the texture's (KHR_texture_transform).
+    // (Clamped before the conversion: a hostile number must not overflow int.)
+    double set = t ? number(*t, "texCoord", texCoord) : texCoord;
+    texCoords_.push_back(int(std::clamp(set, 0.0, 255.0)));
     return resolve_(index, srgb);
   }
 
@@ -78,6 +80,16 @@ class TextureRefs {
     return transforms_[0];
   }
 
+  int commonTexCoord() {
+    if (texCoords_.empty()) return 0;
+    for (int t : texCoords_)
+      if (t != texCoords_[0]) {
+        warn("textures read different TEXCOORD sets; all of them read TEXCOORD_0");
+        return 0;
+      }
+    return texCoords_[0];
+  }
+
   void warn(const std::string& what) { warnings_.add(file_, where_ + ": " + what); }
 
  private:
@@ -86,6 +98,7 @@ class TextureRefs {
   const GltfTextureResolver& resolve_;
   LoadWarnings& warnings_;
   std::vector<UvTransform> transforms_;
+  std::vector<int> texCoords_;
 };
 
 }  // namespace
@@ -108,15 +121,14 @@ GltfMaterial materialFromGltf(const tinygltf::Model& model, int index, const std
   m.metallic = std::clamp(finiteOr(pbr.metallicFactor, 1), 0.0f, 1.0f);
   m.roughness = std::clamp(finiteOr(pbr.roughnessFactor, 1), 0.0f, 1.0f);
   m.baseColorTexture = refs.use(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
-                                pbr.baseColorTexture.extensions, true, "baseColorTexture");
+                                pbr.baseColorTexture.extensions, true);
   m.metallicRoughnessTexture = refs.use(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
-                                        pbr.metallicRoughnessTexture.extensions, false, "metallicRoughnessTexture");
-  m.normalTexture = refs.use(g.normalTexture.index, g.normalTexture.texCoord, g.normalTexture.extensions, false,
-                             "normalTexture");
+                                        pbr.metallicRoughnessTexture.extensions, false);
+  m.normalTexture = refs.use(g.normalTexture.index, g.normalTexture.texCoord, g.normalTexture.extensions, false);
   if (g.normalTexture.index >= 0 && g.normalTexture.scale != 1.0)
     refs.warn("normalTexture.scale " + std::to_string(g.normalTexture.scale) + " is ignored");
   m.emissionTexture = refs.use(g.emissiveTexture.index, g.emissiveTexture.texCoord, g.emissiveTexture.extensions,
-                               true, "emissiveTexture");
+                               true);
 
   float strength = 1.0f;
   if (const tinygltf::Value* e = extension(g.extensions, "KHR_materials_emissive_strength"))
@@ -160,7 +172,17 @@ GltfMaterial materialFromGltf(const tinygltf::Model& model, int index, const std
     std::vector<double> c = numbers(*e, "specularColorFactor", {1, 1, 1});
     m.specularTint = (c[0] != c[1] || c[1] != c[2]) ? 1.0f : 0.0f;
   }
+  if (extension(g.extensions, "KHR_materials_unlit")) {
+    // Unlit: the base colour is what the camera sees, whatever the lighting. Rendered as a black surface that
+    // emits its base colour (texture included), so it also lights its surroundings a little.
+    m.type = MaterialType::Diffuse;
+    m.emission = m.baseColor;
+    m.emissionTexture = m.baseColorTexture;
+    m.baseColor = {0, 0, 0};
+    m.metallicRoughnessTexture = m.normalTexture = kNoTexture;
+  }
   out.uvTransform = refs.commonTransform();
+  out.texCoord = refs.commonTexCoord();
   return out;
 }
 

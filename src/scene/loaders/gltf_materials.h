@@ -22,6 +22,9 @@ struct GltfMaterial {
   // The transform of the material's textures, when it has one (all its textures must agree); the loader bakes it
   // into the texture coordinates of the primitives that use the material.
   std::optional<UvTransform> uvTransform;
+  // The TEXCOORD set the material's textures read (all must agree, else 0 with a warning); the loader gives
+  // the primitives that use the material that set as their texture coordinates.
+  int texCoord = 0;
 };
 
 // Returns a texture id for glTF textures[index] (its image, sampler wrap mode and colour encoding), or kNoTexture.
@@ -34,8 +37,8 @@ using GltfTextureResolver = std::function<int32_t(int index, bool srgb)>;
 // doubleSided are kept. The base colour, metallic-roughness, normal and emissive textures are used; occlusion
 // maps are left out on purpose (a path tracer computes occlusion), and extension textures (transmission,
 // clearcoat, sheen, specular) have no slot: each of those gives a warning. A texture transform is returned for
-// baking when all textures of the material share it, and ignored with a warning otherwise; textures that read
-// a TEXCOORD other than 0 warn too.
+// baking when all textures of the material share it, and ignored with a warning otherwise; likewise the
+// TEXCOORD set. KHR_materials_unlit becomes a black surface emitting the base colour.
 GltfMaterial materialFromGltf(const tinygltf::Model& model, int index, const std::string& file,
                               const GltfTextureResolver& texture, LoadWarnings& warnings);
 

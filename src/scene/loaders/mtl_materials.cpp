@@ -23,8 +23,8 @@ bool hasTransform(const tinyobj::texture_option_t& o) {
 class TextureSlots {
  public:
   TextureSlots(const tinyobj::material_t& mtl, const std::string& mtlFile, const std::string& directory,
-               TextureTable& textures, LoadWarnings& warnings)
-      : mtl_(mtl), mtlFile_(mtlFile), directory_(directory), textures_(textures), warnings_(warnings) {}
+               const PathRule& files, TextureTable& textures, LoadWarnings& warnings)
+      : mtl_(mtl), mtlFile_(mtlFile), directory_(directory), files_(files), textures_(textures), warnings_(warnings) {}
 
   int32_t use(const std::string& name, const tinyobj::texture_option_t& options, bool srgb, const char* statement) {
     if (name.empty()) return kNoTexture;
@@ -33,8 +33,8 @@ class TextureSlots {
     std::string file = name;
     std::replace(file.begin(), file.end(), '\\', '/');
     std::filesystem::path path = std::filesystem::path(file).is_absolute() ? std::filesystem::path(file) : directory_ / file;
-    return textures_.fromFile(path.lexically_normal().string(), srgb,
-                              options.clamp ? TextureWrap::Clamp : TextureWrap::Repeat);
+    TextureWrap wrap = options.clamp ? TextureWrap::Clamp : TextureWrap::Repeat;
+    return textures_.fromFile(confineModelPath(path.lexically_normal().string(), files_), srgb, wrap, wrap);
   }
 
   void ignore(const std::string& name, const std::string& why) {
@@ -47,6 +47,7 @@ class TextureSlots {
   const tinyobj::material_t& mtl_;
   const std::string& mtlFile_;
   std::filesystem::path directory_;
+  const PathRule& files_;
   TextureTable& textures_;
   LoadWarnings& warnings_;
 };
@@ -54,9 +55,10 @@ class TextureSlots {
 }  // namespace
 
 Material materialFromMtl(const tinyobj::material_t& mtl, const std::string& mtlFile,
-                         const std::string& textureDirectory, TextureTable& textures, LoadWarnings& warnings) {
+                         const std::string& textureDirectory, const PathRule& files, TextureTable& textures,
+                         LoadWarnings& warnings) {
   Material m;
-  TextureSlots slots(mtl, mtlFile, textureDirectory, textures, warnings);
+  TextureSlots slots(mtl, mtlFile, textureDirectory, files, textures, warnings);
   Vec3 kd = rgb(mtl.diffuse), ks = rgb(mtl.specular), tf = rgb(mtl.transmittance);
   m.baseColor = kd;
   m.emission = rgb(mtl.emission);

@@ -31,10 +31,47 @@ std::vector<std::string> libraryNames(std::string_view text) {
   return names;
 }
 
+// tinyobjloader's messages, one line each, repeated ones counted.
+void forwardMessages(const std::string& file, const std::string& text, LoadWarnings& warnings) {
+  std::map<std::string, size_t> counts;
+  std::vector<std::string> order;
+  std::istringstream lines(text);
+  std::string line;
+  while (std::getline(lines, line)) {
+    while (!line.empty() && (line.back() == '.' || line.back() == ' ' || line.back() == '\r')) line.pop_back();
+    if (line.empty()) continue;
+    if (counts[line]++ == 0) order.push_back(line);
+  }
+  for (const std::string& l : order) warnings.add(file, counts[l] > 1 ? l + " (" + std::to_string(counts[l]) + " times)" : l);
+}
+
 }  // namespace
 
-ObjMaterialLibraries::ObjMaterialLibraries(std::string objFile, std::optional<PathRule> files, LoadWarnings& warnings)
-    : objFile_(std::move(objFile)), rule_(std::move(files)), warnings_(warnings) {}
+const MtlLibraryCache::Library& MtlLibraryCache::get(const std::string& path, LoadWarnings& warnings) {
+  std::unique_ptr<Library>& library = libraries_[path];
+  if (library) return *library;
+  library = std::make_unique<Library>();
+  std::vector<uint8_t> bytes;
+  try {
+    bytes = readFileBytes(path);
+  } catch (const LoadError& e) {
+    std::error_code ec;
+    library->failure = fs::exists(path, ec) ? std::string("cannot be read (") + e.what() + ")" : "not found";
+    return *library;
+  }
+  // A UTF-8 byte order mark would hide the first statement from tinyobjloader.
+  const size_t start = bytes.size() >= 3 && bytes[0] == 0xEF && bytes[1] == 0xBB && bytes[2] == 0xBF ? 3 : 0;
+  std::istringstream in(std::string(bytes.begin() + std::ptrdiff_t(start), bytes.end()));
+  std::map<std::string, int> index;
+  std::string mtlWarnings, mtlErrors;
+  tinyobj::LoadMtl(&index, &library->materials, &in, &mtlWarnings, &mtlErrors);
+  forwardMessages(path, mtlWarnings + mtlErrors, warnings);
+  return *library;
+}
+
+ObjMaterialLibraries::ObjMaterialLibraries(std::string objFile, std::optional<PathRule> files, MtlLibraryCache& cache,
+                                           LoadWarnings& warnings)
+    : objFile_(std::move(objFile)), rule_(std::move(files)), cache_(cache), warnings_(warnings) {}
 
 void ObjMaterialLibraries::loadLibraries(size_t line, std::string_view text) {
   if (!rule_) return;
@@ -52,36 +89,17 @@ void ObjMaterialLibraries::load(size_t line, const std::string& name) {
     return;
   }
   files_.push_back(path.path);
-  std::vector<uint8_t> bytes;
-  try {
-    bytes = readFileBytes(path.path);
-  } catch (const LoadError& e) {
-    std::error_code ec;
-    const std::string why = fs::exists(path.path, ec) ? std::string("cannot be read (") + e.what() + ")" : "not found";
-    warnings_.add(where, "material library '" + name + "' " + why + "; its materials are replaced by grey");
+  const MtlLibraryCache::Library& library = cache_.get(path.path, warnings_);
+  if (!library.failure.empty()) {
+    warnings_.add(where, "material library '" + name + "' " + library.failure + "; its materials are replaced by grey");
     return;
   }
-  // A UTF-8 byte order mark would hide the first statement from tinyobjloader.
-  const size_t start = bytes.size() >= 3 && bytes[0] == 0xEF && bytes[1] == 0xBB && bytes[2] == 0xBF ? 3 : 0;
-  std::istringstream in(std::string(bytes.begin() + std::ptrdiff_t(start), bytes.end()));
-  std::string mtlWarnings, mtlErrors;
-  tinyobj::LoadMtl(&index_, &materials_, &in, &mtlWarnings, &mtlErrors);
-  forwardMessages(path.path, mtlWarnings + mtlErrors);
-  sources_.resize(materials_.size(), path.path);
-}
-
-// tinyobjloader's messages, one line each, repeated ones counted.
-void ObjMaterialLibraries::forwardMessages(const std::string& file, const std::string& text) {
-  std::map<std::string, size_t> counts;
-  std::vector<std::string> order;
-  std::istringstream lines(text);
-  std::string line;
-  while (std::getline(lines, line)) {
-    while (!line.empty() && (line.back() == '.' || line.back() == ' ' || line.back() == '\r')) line.pop_back();
-    if (line.empty()) continue;
-    if (counts[line]++ == 0) order.push_back(line);
+  // As tinyobjloader merges libraries: a name already known keeps its first material.
+  for (const tinyobj::material_t& m : library.materials) {
+    index_.try_emplace(m.name, int(materials_.size()));
+    materials_.push_back(m);
   }
-  for (const std::string& l : order) warnings_.add(file, counts[l] > 1 ? l + " (" + std::to_string(counts[l]) + " times)" : l);
+  sources_.resize(materials_.size(), path.path);
 }
 
 uint32_t ObjMaterialLibraries::find(size_t line, std::string_view name) {

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
+#include <tuple>
 
 #include "scene/loaders/file_bytes.h"
 #include "scene/loaders/image_decoding.h"
@@ -198,21 +200,30 @@ json parseJson(const std::string& path, const std::string& text) {
 
 void appendScene(Scene& scene, Scene&& part, const Affine3x4& transform) {
   uint32_t meshBase = uint32_t(scene.meshes.size()), materialBase = uint32_t(scene.materials.size());
-  int32_t textureBase = int32_t(scene.textures.size());
   for (Mesh& m : part.meshes) {
     for (uint32_t& id : m.triangleMaterials) id += materialBase;
     scene.meshes.push_back(std::move(m));
+  }
+  using TextureKey = std::tuple<std::string, bool, TextureWrap, TextureWrap>;
+  auto keyOf = [](const Texture& t) { return TextureKey{t.name, t.srgb, t.wrapU, t.wrapV}; };
+  std::map<TextureKey, int32_t> known;
+  for (size_t t = 0; t < scene.textures.size(); ++t) known.try_emplace(keyOf(scene.textures[t]), int32_t(t));
+  std::vector<int32_t> textureId(part.textures.size());
+  for (size_t t = 0; t < part.textures.size(); ++t) {
+    auto [it, added] = known.try_emplace(keyOf(part.textures[t]), int32_t(scene.textures.size()));
+    if (added) scene.textures.push_back(std::move(part.textures[t]));
+    textureId[t] = it->second;
   }
   part.materialNames.resize(part.materials.size());
   for (size_t i = 0; i < part.materials.size(); ++i) {
     Material m = part.materials[i];
     for (int32_t* t : {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.roughnessTexture, &m.metallicTexture,
                        &m.emissionTexture, &m.normalTexture, &m.opacityTexture})
-      if (*t != kNoTexture) *t += textureBase;
+      // A part loaded with SharedModelAssets has no textures of its own: its ids point into the shared table.
+      if (*t != kNoTexture && !part.textures.empty()) *t = textureId[size_t(*t)];
     scene.materials.push_back(m);
     scene.materialNames.push_back(part.materialNames[i]);
   }
-  for (Texture& t : part.textures) scene.textures.push_back(std::move(t));
   scene.inputFiles.insert(scene.inputFiles.end(), part.inputFiles.begin(), part.inputFiles.end());
   glm::mat4 outer = toMat4(transform);
   for (const Instance& inst : part.instances)
@@ -230,6 +241,9 @@ Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadW
   Scene scene;
   scene.name = fs::path(path).stem().string();
   std::optional<CameraDescription> modelCamera;
+  SharedModelAssets shared;
+  // A model file loaded before with the same material overrides: its instances, relative to its transform.
+  std::map<std::pair<std::string, std::string>, std::vector<Instance>> loaded;
   Node models = root["models"];
   if (models.size() == 0) models.fail("a scene needs at least one model");
   for (size_t i = 0; i < models.size(); ++i) {
@@ -239,8 +253,19 @@ Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadW
     std::string ext = fs::path(file).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
     if (ext != ".obj" && ext != ".gltf" && ext != ".glb") model["file"].fail("models must be .obj, .gltf or .glb files");
-    Scene part = loadModel(file, warnings);
     glm::mat4 transform = model.has("transform") ? transformOf(model["transform"], warnings) : glm::mat4(1.0f);
+    std::pair<std::string, std::string> key{file, model.has("materials") ? doc["models"][i]["materials"].dump() : ""};
+    if (auto it = loaded.find(key); it != loaded.end()) {
+      for (const Instance& inst : it->second)
+        scene.instances.push_back({inst.meshId, toAffine(transform * toMat4(inst.objectToWorld))});
+      if (scene.instances.size() > kMaxInstances)
+        model.fail("the models hold more than " + std::to_string(kMaxInstances) + " mesh instances in all");
+      continue;
+    }
+    Scene part = loadModel(file, warnings, shared);
+    std::vector<Instance>& instances = loaded[key];
+    for (const Instance& inst : part.instances)
+      instances.push_back({inst.meshId + uint32_t(scene.meshes.size()), inst.objectToWorld});
     if (model.has("materials")) {
       if (!model["materials"].isObject()) model["materials"].fail("expected an object of material names");
       const json& overrides = doc["models"][i]["materials"];
@@ -255,17 +280,20 @@ Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadW
         if (!found) warnings.add(path, "models[" + std::to_string(i) + "].materials." + name + ": no material of that name in " + file);
       }
     }
-    if (!part.cameraMissing && !modelCamera) {
-      CameraDescription c = part.camera;
+    auto placed = [&](CameraDescription c) {
       c.eye = toAffine(transform).point(c.eye);
       c.target = toAffine(transform).point(c.target);
       c.up = normalize(toAffine(transform).vector(c.up));
-      modelCamera = c;
-    }
+      return c;
+    };
+    if (!part.cameraMissing && !modelCamera) modelCamera = placed(part.camera);
+    for (const NamedCamera& c : part.cameras)
+      scene.cameras.push_back({"models[" + std::to_string(i) + "]: " + c.name, placed(c.description)});
     appendScene(scene, std::move(part), toAffine(transform));
     if (scene.instances.size() > kMaxInstances)
       model.fail("the models hold more than " + std::to_string(kMaxInstances) + " mesh instances in all");
   }
+  shared.textures.finish(scene, 0, warnings);
 
   scene.cameraMissing = true;
   if (modelCamera) {
@@ -287,12 +315,17 @@ Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadW
     if (length(forward) == 0.0f) c.fail("position and target coincide");
     if (length(cross(forward, cam.up)) == 0.0f) c["up"].fail("up is parallel to the viewing direction");
     scene.cameraMissing = false;
+    scene.cameras.insert(scene.cameras.begin(), {"camera", cam});
   }
   if (root.has("environment")) {
     Node e = root["environment"];
     e.expectObject({"map", "radiance", "intensity", "rotation_degrees", "visible"}, warnings);
     Environment env;
-    if (e.has("map")) env.map = loadEnvironmentImage(resolve(e["map"], files));
+    if (e.has("map")) {
+      std::string map = resolve(e["map"], files);
+      env.map = loadEnvironmentImage(map);
+      scene.inputFiles.push_back(map);
+    }
     if (e.has("radiance")) env.radiance = e["radiance"].vec3();
     if (env.radiance.x < 0 || env.radiance.y < 0 || env.radiance.z < 0) e["radiance"].fail("must not be negative");
     if (e.has("intensity")) env.intensity = e["intensity"].number(0.0f, 1e30f);

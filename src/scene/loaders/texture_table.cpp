@@ -10,32 +10,36 @@
 namespace candela {
 
 int32_t TextureTable::add(const std::string& key, Request request) {
-  auto [it, inserted] = index_.try_emplace({key, request.srgb, request.wrap}, int32_t(requests_.size()));
+  auto [it, inserted] = index_.try_emplace({key, request.srgb, request.wrapU, request.wrapV}, int32_t(requests_.size()));
   if (inserted) requests_.push_back(std::move(request));
   return it->second;
 }
 
-int32_t TextureTable::fromFile(const std::string& path, bool srgb, TextureWrap wrap) {
+int32_t TextureTable::fromFile(const ResolvedPath& file, bool srgb, TextureWrap wrapU, TextureWrap wrapV) {
   Request r;
-  r.name = path;
-  r.path = path;
-  r.refusal = confineModelPath(path, rule_).refusal;
+  r.name = file.path;
+  r.path = file.path;
+  r.refusal = file.refusal;
   r.srgb = srgb;
-  r.wrap = wrap;
-  return add("file:" + path, std::move(r));
+  r.wrapU = wrapU;
+  r.wrapV = wrapV;
+  // A file one model may read and another may not (they lie in different folders) is two requests.
+  return add((file.allowed() ? "file:" : "refused file:") + file.path, std::move(r));
 }
 
 int32_t TextureTable::fromMemory(const std::string& key, const std::string& name, std::vector<uint8_t> bytes,
-                                 bool srgb, TextureWrap wrap) {
+                                 bool srgb, TextureWrap wrapU, TextureWrap wrapV) {
   Request r;
   r.name = name;
   r.bytes = std::move(bytes);
   r.srgb = srgb;
-  r.wrap = wrap;
+  r.wrapU = wrapU;
+  r.wrapV = wrapV;
   return add("memory:" + key, std::move(r));
 }
 
 void TextureTable::finish(Scene& scene, size_t firstMaterial, LoadWarnings& warnings) {
+  if (requests_.empty()) return;  // no material holds a provisional index
   std::vector<std::optional<Texture>> decoded(requests_.size());
   std::vector<std::string> failures(requests_.size());
   tbb::parallel_for(size_t(0), requests_.size(), [&](size_t i) {
@@ -44,7 +48,8 @@ void TextureTable::finish(Scene& scene, size_t firstMaterial, LoadWarnings& warn
       if (!r.refusal.empty()) failLoad(r.path, r.refusal);
       if (!r.path.empty()) r.bytes = readFileBytes(r.path);
       decoded[i] = decodeImage(r.name, r.bytes.data(), r.bytes.size(), r.srgb);
-      decoded[i]->wrap = r.wrap;
+      decoded[i]->wrapU = r.wrapU;
+      decoded[i]->wrapV = r.wrapV;
     } catch (const LoadError& e) {
       failures[i] = e.what();
     }

@@ -1,0 +1,53 @@
+#include "scene/loaders/gltf_extensions.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <array>
+#include <string_view>
+#include <vector>
+
+namespace candela {
+
+namespace {
+
+// Read fully or in part; where in part, the loader warns about what it leaves out.
+constexpr std::array<std::string_view, 10> kSupported = {
+    "EXT_mesh_gpu_instancing", "KHR_materials_clearcoat",    "KHR_materials_emissive_strength",
+    "KHR_materials_ior",       "KHR_materials_sheen",        "KHR_materials_specular",
+    "KHR_materials_transmission", "KHR_materials_unlit",     "KHR_mesh_quantization",
+    "KHR_texture_transform"};
+
+// Not supported, but ignored with a warning of their own when used (the loader counts the lights).
+constexpr std::array<std::string_view, 1> kWarnedElsewhere = {"KHR_lights_punctual"};
+
+bool contains(auto& list, const std::string& name) { return std::find(list.begin(), list.end(), name) != list.end(); }
+
+void refuseUnsupported(const std::vector<std::string>& required, const std::string& file) {
+  std::string refused;
+  for (const std::string& name : required)
+    if (!contains(kSupported, name)) refused += (refused.empty() ? "" : ", ") + name;
+  if (!refused.empty())
+    failLoad(file, "requires the glTF extension" + std::string(refused.find(',') == std::string::npos ? " " : "s ") +
+                       refused + ", which candela does not support");
+}
+
+}  // namespace
+
+void refuseUnsupportedRequiredExtensions(const char* json, size_t size, const std::string& file) {
+  nlohmann::json doc = nlohmann::json::parse(json, json + size, nullptr, false);
+  if (!doc.is_object() || !doc.contains("extensionsRequired") || !doc["extensionsRequired"].is_array()) return;
+  std::vector<std::string> required;
+  for (const auto& name : doc["extensionsRequired"])
+    if (name.is_string()) required.push_back(name.get<std::string>());
+  refuseUnsupported(required, file);
+}
+
+void checkGltfExtensions(const tinygltf::Model& model, const std::string& file, LoadWarnings& warnings) {
+  refuseUnsupported(model.extensionsRequired, file);
+  for (const std::string& name : model.extensionsUsed)
+    if (!contains(kSupported, name) && !contains(kWarnedElsewhere, name))
+      warnings.add(file, "uses the glTF extension " + name + ", which candela does not support; it is ignored");
+}
+
+}  // namespace candela
