@@ -47,8 +47,9 @@ TEST(LoadMessages, FileContentAndNamesAreEscapedInErrorsAndWarnings) {
 std::string sceneError(const TempFolder& dir, const std::string& json) {
   LoadWarnings warnings;
   try {
-    loadSceneFile(dir.write("s.json", json), [](const std::string& p, LoadWarnings& w) { return loadObj(p, w); },
-                  warnings);
+    loadSceneFile(
+        dir.write("s.json", json),
+        [](const std::string& p, LoadWarnings& w, SharedModelAssets&) { return loadObj(p, w); }, warnings);
   } catch (const LoadError& e) {
     return e.what();
   }

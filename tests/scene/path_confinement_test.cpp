@@ -90,8 +90,10 @@ TEST(PathConfinement, ObjMaterialLibrariesAndTexturesStayInTheModelsFolder) {
   writePng(dir.file("outside.png"));
   writePng(dir.file("model/inside.png"));
   dir.write("model/m.mtl", "newmtl blue\nKd 0 0 1\nmap_Kd ../outside.png\nnewmtl green\nmap_Kd inside.png\n");
+  // Faces use every material: only the materials faces use are made, and only their textures read.
   const std::string obj = dir.write("model/m.obj", "mtllib ../outside.mtl " + dir.file("outside.mtl") +
-                                                       " m.mtl\nusemtl red\n" + kTriangleObj);
+                                                       " m.mtl\nusemtl red\n" + kTriangleObj +
+                                                       "usemtl blue\nf 1 2 3\nusemtl green\nf 1 2 3\n");
 
   LoadWarnings warnings;
   Scene s = loadObj(obj, warnings);
