@@ -72,6 +72,8 @@ Scene loadFile(const std::string& path, const SceneLoadOptions& options, LoadWar
 bool hasLightSource(const Scene& scene) {
   const Environment& env = scene.environment;
   if (env.intensity > 0.0f && (env.hasMap() || !isBlack(env.radiance))) return true;
+  for (const PunctualLight& light : scene.punctualLights)
+    if (!isBlack(light.intensity)) return true;
   std::vector<bool> emissive(scene.materials.size());
   for (size_t m = 0; m < scene.materials.size(); ++m) emissive[m] = !isBlack(scene.materials[m].emission);
   std::vector<bool> instanced(scene.meshes.size());
@@ -141,8 +143,8 @@ Scene loadScene(const std::string& spec, const SceneLoadOptions& options) {
   repairScene(scene, spec, warnings);
   chooseCamera(scene, spec, options.camera, warnings);
   if (!hasLightSource(scene))
-    warnings.add(spec, "the scene has no light source (no emissive surface, no environment): the image will be "
-                       "black; light it with --env");
+    warnings.add(spec, "the scene has no light source (no emissive surface, punctual light or environment): the "
+                       "image will be black; light it with --env");
   for (const std::string& w : warnings.messages)
     std::fprintf(stderr, "candela: warning: %s\n", printableText(w).c_str());
   if (scene.cameraMissing) frameSceneBounds(scene);

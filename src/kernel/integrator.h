@@ -119,6 +119,26 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
       }
     }
 
+    // Next-event estimation of one punctual light, an estimator of its own beside the one above: no BSDF sample
+    // can hit a delta light, so there is nothing to weigh it against.
+    if (scene.punctualLightCount > 0) {
+      float uPunctual = sampler.next1D();
+      if (!bsdf.isDelta()) {
+        LightSample ls = samplePunctualLight(scene, si.position, uPunctual);
+        bool reachable = dot(ls.wi, si.geometricNormal) * woSide > 0.0f || bsdf.hasTransmission();
+        if (ls.valid && reachable && sidesAgree(ls.wi)) {
+          Vec3 f = bsdf.eval(wo, ls.wi);
+          if (!isBlack(f)) {
+            Ray shadow{offsetRayOrigin(si.position, si.geometricNormal, ls.wi), ls.wi, 0.0f,
+                       ls.distance >= kInf ? kInf : ls.distance * (1.0f - 1e-4f)};
+            ++result.rays;
+            if (!tracer.occluded(shadow, queryBits()))
+              result.radiance += beta * f * ls.radiance * (fabsf(dot(ls.wi, bsdf.normal())) / ls.pdf);
+          }
+        }
+      }
+    }
+
     // Continue the path by sampling the BSDF.
     float uChoice = sampler.next1D();
     Vec2 uBsdf = sampler.next2D();

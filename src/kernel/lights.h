@@ -66,4 +66,40 @@ CANDELA_FN LightSample sampleLight(const SceneView& scene, Vec3 from, float uSel
   return ls;
 }
 
+// A spot light's falloff between its cones: 1 inside cosInner, 0 outside cosOuter, smoothstep between (as
+// pbrt-v4's SpotLight).
+CANDELA_FN float spotFalloff(const PunctualLight& light, float cosAngle) {
+  if (cosAngle >= light.cosInner) return 1.0f;
+  if (cosAngle <= light.cosOuter) return 0.0f;
+  float t = (cosAngle - light.cosOuter) / (light.cosInner - light.cosOuter);
+  return t * t * (3.0f - 2.0f * t);
+}
+
+// Picks one punctual light uniformly and returns the light it sends to `from`: `radiance` is the irradiance it
+// gives a surface facing it, `pdf` the probability of the pick (no density: the direction is fixed).
+CANDELA_FN LightSample samplePunctualLight(const SceneView& scene, Vec3 from, float uSelect) {
+  LightSample ls;
+  if (scene.punctualLightCount == 0) return ls;
+  uint32_t index = uint32_t(uSelect * float(scene.punctualLightCount));
+  if (index >= scene.punctualLightCount) index = scene.punctualLightCount - 1;
+  const PunctualLight& light = scene.punctualLights[index];
+  ls.lightIndex = index;
+  ls.pdf = 1.0f / float(scene.punctualLightCount);
+  if (light.type == PunctualLightType::Directional) {
+    ls.wi = -light.direction;
+    ls.radiance = light.intensity;
+    ls.valid = !isBlack(ls.radiance);
+    return ls;
+  }
+  Vec3 toLight = light.position - from;
+  float dist2 = dot(toLight, toLight);
+  if (!(dist2 > 0.0f)) return ls;
+  ls.distance = sqrtf(dist2);
+  ls.wi = toLight / ls.distance;
+  float falloff = light.type == PunctualLightType::Spot ? spotFalloff(light, -dot(ls.wi, light.direction)) : 1.0f;
+  ls.radiance = light.intensity * (falloff / dist2);
+  ls.valid = !isBlack(ls.radiance);
+  return ls;
+}
+
 }  // namespace candela

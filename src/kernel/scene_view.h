@@ -36,6 +36,21 @@ struct LightTriangle {
   float frontSign = 1.0f;  // -1 under a mirroring instance: the front is then opposite cross(edge1, edge2)
 };
 
+// A light at a point or infinitely far away in one direction, sampled by next-event estimation only: no ray
+// can hit it. Point and spot lights emit `intensity` (radiant intensity, per steradian) from `position`, a spot
+// only within its cone about `direction` with a smooth falloff between cosInner and cosOuter; a directional
+// light gives irradiance `intensity` to a surface facing it, arriving along `direction`.
+enum class PunctualLightType : uint32_t { Point, Spot, Directional };
+
+struct PunctualLight {
+  PunctualLightType type = PunctualLightType::Point;
+  Vec3 position;
+  Vec3 direction{0, -1, 0};  // unit: where the light goes (spot axis, directional travel)
+  Vec3 intensity;
+  float cosInner = -1.0f;  // spot only: full intensity within this cone,
+  float cosOuter = -1.0f;  // none outside this one
+};
+
 // Everything kernel code reads about a scene: plain pointers into host or device memory.
 struct SceneView {
   const Vec3* positions = nullptr;  // object space, all meshes back to back
@@ -57,6 +72,8 @@ struct SceneView {
   float lightAreaPdfScale = 0.0f;  // pi / total emitted power: triangle area pdf = scale * luminance(Le)
   float environmentSelectProbability = 0.0f;
   EnvironmentView environment;
+  const PunctualLight* punctualLights = nullptr;
+  uint32_t punctualLightCount = 0;
 };
 
 }  // namespace candela

@@ -162,6 +162,7 @@ FlatScene FlatScene::build(const Scene& scene) {
   for (const Instance& inst : scene.instances)
     flat.instances.push_back({inst.meshId, inst.objectToWorld, normalTransform(inst.objectToWorld)});
   buildLightTable(scene, flat);
+  flat.punctualLights = scene.punctualLights;
   packTextures(scene, flat);
   flat.hasCutouts = anyCutouts(flat.materials);
   return flat;
@@ -207,6 +208,8 @@ SceneView FlatScene::hostView() const {
   v.lightCount = uint32_t(lights.size());
   v.lightAreaPdfScale = lightAreaPdfScale;
   v.environmentSelectProbability = environmentSelectProbability;
+  v.punctualLights = punctualLights.data();
+  v.punctualLightCount = uint32_t(punctualLights.size());
   v.environment = environment;
   if (!environmentTexels.empty()) {
     v.environment.texels = environmentTexels.data();

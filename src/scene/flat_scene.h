@@ -28,6 +28,7 @@ struct FlatScene {
   std::vector<float> lightCdf;
   float lightAreaPdfScale = 0.0f;
   float environmentSelectProbability = 0.0f;
+  std::vector<PunctualLight> punctualLights;
   // The environment's parameters; its pointers are set by hostView() (or by a backend, to device copies of
   // the arrays below).
   EnvironmentView environment;

@@ -57,6 +57,9 @@ void validateScene(const Scene& scene) {
                       m.emissionTexture, m.normalTexture, m.opacityTexture})
       if (t != kNoTexture && (t < 0 || size_t(t) >= scene.textures.size())) fail("a material uses a missing texture");
   }
+  for (const PunctualLight& light : scene.punctualLights)
+    if (!finite(light.position) || !finite(light.direction) || !finite(light.intensity))
+      fail("a punctual light has non-finite parameters");
   for (const Texture& t : scene.textures) {
     size_t texels = size_t(t.width) * t.height * t.channels;
     if (t.width == 0 || t.height == 0 || t.channels < 1 || t.channels > 4)

@@ -91,6 +91,7 @@ struct Scene {
   std::vector<std::string> materialNames;  // as the input file names them, one per material (may be empty)
   std::vector<Texture> textures;
   Environment environment;
+  std::vector<PunctualLight> punctualLights;  // in world space
   CameraDescription camera;
   RenderHints renderHints;
   bool cameraMissing = false;  // the input had no camera: `camera` is to be framed around the scene's bounds

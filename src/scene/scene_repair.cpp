@@ -370,6 +370,34 @@ void clampEmittedRadiance(Scene& scene, const std::string& file, LoadWarnings& w
     warnings.add(file, "environment radiance clamped to " + limit + " per channel (times the intensity)");
 }
 
+// Punctual lights outside the coordinate range, without a direction or with non-finite numbers are dropped;
+// intensities are clamped like emitted radiance.
+void repairPunctualLights(Scene& scene, const std::string& file, LoadWarnings& warnings) {
+  size_t dropped = 0, clamped = 0;
+  std::vector<PunctualLight> kept;
+  for (PunctualLight light : scene.punctualLights) {
+    const bool usable = withinRange(light.position, kMaxSceneCoordinate) && withinRange(light.direction, 2.0f) &&
+                        length(light.direction) > 0.5f && std::isfinite(light.cosInner) &&
+                        std::isfinite(light.cosOuter);
+    if (!usable) {
+      ++dropped;
+      continue;
+    }
+    light.direction = normalize(light.direction);
+    light.cosOuter = std::clamp(light.cosOuter, -1.0f, 1.0f);
+    light.cosInner = std::clamp(light.cosInner, light.cosOuter, 1.0f);
+    if (clampValues(light.intensity, kMaxRadiance) > 0) ++clamped;
+    kept.push_back(light);
+  }
+  scene.punctualLights = std::move(kept);
+  if (dropped > 0)
+    warnings.add(file, std::to_string(dropped) + " punctual lights dropped: a position not finite or beyond +-" +
+                           compact(kMaxSceneCoordinate) + ", or no direction");
+  if (clamped > 0)
+    warnings.add(file, "the intensity of " + std::to_string(clamped) + " punctual lights is clamped to " +
+                           compact(kMaxRadiance) + " per channel");
+}
+
 void checkCamera(const CameraDescription& c, const std::string& file) {
   auto fail = [&](const char* field, const std::string& why) {
     failLoad(file, std::string("camera.") + field + ": " + why);
@@ -400,6 +428,7 @@ void repairScene(Scene& scene, const std::string& file, LoadWarnings& warnings) 
   const std::vector<MeshRepair> repairs = repairMeshes(scene, file, warnings);
   repairInstances(scene, repairs, file, warnings);
   clampEmittedRadiance(scene, file, warnings);
+  repairPunctualLights(scene, file, warnings);
   if (!scene.cameraMissing) checkCamera(scene.camera, file);
   validateScene(scene);
 }

@@ -33,6 +33,8 @@ constexpr size_t kMaxInstances = 10'000'000;
 //   are rescaled to unit length (a zero normal makes the renderer use the geometric one);
 // - emitted radiance (material emission, float texels of emission textures, the environment) is clamped to
 //   kMaxRadiance per channel (one warning each); float texels that are not finite or negative become 0.
+// - punctual lights with a position not finite or beyond kMaxSceneCoordinate, or without a direction, are dropped,
+//   and their intensities clamped to kMaxRadiance per channel (one warning each);
 // Warnings name `file`. Throws LoadError naming `file` for what cannot be repaired: an impossible camera (the
 // field and why), more than kMaxInstances instances, or a scene with triangles none of which survive.
 // Afterwards validateScene holds.

@@ -10,6 +10,7 @@
 
 #include "scene/builtin_scenes.h"
 #include "support/cutout_screen.h"
+#include "support/punctual_light_scenes.h"
 #include "support/render_statistics.h"
 
 namespace candela::test {
@@ -107,6 +108,41 @@ TYPED_TEST_P(AnalyticScenes, ClosedSphereDetectsWrongAnswers) {
   EXPECT_GT(countRejectedPixels(stats, {0.7f, 0.7f, 0.7f}, TestFixture::kBatches, TestFixture::kAlpha, worst), 0u);
 }
 
+// Punctual lights, sampled only by next-event estimation: a point light inside a closed sphere lights every
+// pixel equally (support/punctual_light_scenes.h), and a render that drops the interreflections (a / pi I) or
+// the light's solid-angle conversion is rejected.
+TYPED_TEST_P(AnalyticScenes, PointLightInClosedSphereEveryPixelIsTheAnswer) {
+  const float albedo = 0.5f, intensity = 2.0f;
+  PixelStatistics stats = TestFixture::render(makePointLitSphere(albedo, intensity), 24, 1000, 1);
+  const float expected = pointLitSphereRadiance(albedo, intensity);
+  std::string worst;
+  EXPECT_EQ(countRejectedPixels(stats, {expected, expected, expected}, TestFixture::kBatches, TestFixture::kAlpha,
+                                worst),
+            0u)
+      << worst;
+  EXPECT_EQ(stats.invalidSamples, 0u);
+  ImageMean m = imageMean(stats.mean);
+  EXPECT_LT(std::fabs(m.mean - expected), twoSidedNormalQuantile(sidak(TestFixture::kAlpha, 2.0)) * m.standardError)
+      << m.mean << " +- " << m.standardError;
+  const float directOnly = albedo * intensity / kPi;
+  EXPECT_GT(countRejectedPixels(stats, {directOnly, directOnly, directOnly}, TestFixture::kBatches,
+                                TestFixture::kAlpha, worst),
+            0u);
+}
+
+// A directional light on a lone floor: no interreflection, so every sample of every pixel is the answer.
+TYPED_TEST_P(AnalyticScenes, DirectionalLightOnFloorEveryPixelIsTheAnswer) {
+  const float albedo = 0.5f, irradiance = 3.0f, cosAngle = 0.6f;
+  PixelStatistics stats = TestFixture::render(makeDirectionallyLitFloor(albedo, irradiance, cosAngle), 16, 4,
+                                              RenderSettings{}.rouletteDepth);
+  const float expected = directionallyLitFloorRadiance(albedo, irradiance, cosAngle);
+  std::string worst;
+  EXPECT_EQ(countRejectedPixels(stats, {expected, expected, expected}, TestFixture::kBatches, TestFixture::kAlpha,
+                                worst),
+            0u)
+      << worst;
+}
+
 // A white, non-absorbing object under a uniform environment of radiance 1 is invisible: every pixel is 1.
 TYPED_TEST_P(AnalyticScenes, WhiteFurnaceEveryPixelIsOne) {
   PixelStatistics stats = TestFixture::render(makeWhiteFurnace(), 32, 64, RenderSettings{}.rouletteDepth);
@@ -145,7 +181,8 @@ TYPED_TEST_P(AnalyticScenes, CutoutScreenDetectsWrongAnswers) {
 
 REGISTER_TYPED_TEST_SUITE_P(AnalyticScenes, ClosedSphereEveryPixelIsEmissionOverOneMinusAlbedo,
                             ClosedSphereImageMeanIsEmissionOverOneMinusAlbedoWithDefaultRoulette,
-                            ClosedSphereDetectsWrongAnswers, WhiteFurnaceEveryPixelIsOne, CutoutScreenPassesHalfTheSky,
+                            ClosedSphereDetectsWrongAnswers, PointLightInClosedSphereEveryPixelIsTheAnswer,
+                            DirectionalLightOnFloorEveryPixelIsTheAnswer, WhiteFurnaceEveryPixelIsOne, CutoutScreenPassesHalfTheSky,
                             CutoutScreenDetectsWrongAnswers);
 
 }  // namespace candela::test

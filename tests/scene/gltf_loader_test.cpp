@@ -163,9 +163,45 @@ TEST(GltfLoader, CameraLightsAndMaterials) {
   EXPECT_FLOAT_EQ(m.ior, 1.4f);
   EXPECT_FLOAT_EQ(m.clearcoat, 0.7f);
   EXPECT_FLOAT_EQ(m.clearcoatGloss, 0.75f);
-  bool lightWarning = false;
-  for (const auto& w : warnings.messages) lightWarning |= w.find("KHR_lights_punctual") != std::string::npos;
-  EXPECT_TRUE(lightWarning);
+  ASSERT_EQ(s.punctualLights.size(), 1u);
+  EXPECT_EQ(s.punctualLights[0].type, PunctualLightType::Point);
+  EXPECT_FLOAT_EQ(s.punctualLights[0].intensity.y, 1.0f);  // glTF's default colour and intensity
+}
+
+// KHR_lights_punctual: each kind, placed by its node (at the origin, shining along -Z), with its colour,
+// intensity and cone; a range is ignored with a warning.
+TEST(GltfLoader, PunctualLightsArePlacedByTheirNodes) {
+  json g = triangleGltf();
+  const float s2 = std::sqrt(0.5f);
+  g["nodes"] = {{{"mesh", 0}},
+                {{"translation", {1, 2, 3}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}},
+                {{"rotation", {-s2, 0, 0, s2}}, {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}},
+                {{"translation", {0, 5, 0}}, {"rotation", {-s2, 0, 0, s2}},
+                 {"extensions", {{"KHR_lights_punctual", {{"light", 2}}}}}}};
+  g["scenes"] = {{{"nodes", {0, 1, 2, 3}}}};
+  g["extensions"] = {{"KHR_lights_punctual",
+                      {{"lights",
+                        {{{"type", "point"}, {"color", {1, 0.5, 0}}, {"intensity", 10}, {"range", 4}},
+                         {{"type", "directional"}, {"intensity", 3}},
+                         {{"type", "spot"}, {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.5}}}}}}}}};
+  LoadWarnings warnings;
+  Scene s = load(g, warnings);
+  ASSERT_EQ(s.punctualLights.size(), 3u);
+  const PunctualLight &point = s.punctualLights[0], &sun = s.punctualLights[1], &spot = s.punctualLights[2];
+  EXPECT_EQ(point.type, PunctualLightType::Point);
+  EXPECT_FLOAT_EQ(point.position.z, 3.0f);
+  EXPECT_FLOAT_EQ(point.intensity.x, 10.0f);
+  EXPECT_FLOAT_EQ(point.intensity.y, 5.0f);
+  EXPECT_EQ(sun.type, PunctualLightType::Directional);
+  EXPECT_NEAR(sun.direction.y, -1.0f, 1e-6f);  // -Z turned by -90 degrees about X points down
+  EXPECT_EQ(spot.type, PunctualLightType::Spot);
+  EXPECT_FLOAT_EQ(spot.position.y, 5.0f);
+  EXPECT_NEAR(spot.direction.y, -1.0f, 1e-6f);
+  EXPECT_NEAR(spot.cosInner, std::cos(0.2f), 1e-6f);
+  EXPECT_NEAR(spot.cosOuter, std::cos(0.5f), 1e-6f);
+  bool rangeWarning = false;
+  for (const auto& w : warnings.messages) rangeWarning |= w.find("have a range, which is ignored") != std::string::npos;
+  EXPECT_TRUE(rangeWarning);
 }
 
 TEST(GltfLoader, UniformTextureTransformIsBakedIntoUvs) {

@@ -26,6 +26,7 @@ void DeviceScene::upload(const FlatScene& flat) {
   view_.texels.texelFloats = nullptr;
   view_.lights = copy(buffers_, flat.lights, "the light table");
   view_.lightCdf = copy(buffers_, flat.lightCdf, "the light distribution");
+  view_.punctualLights = copy(buffers_, flat.punctualLights, "the punctual lights");
   updateEnvironment(flat);
 }
 

@@ -82,6 +82,7 @@ void writeScene(BinaryWriter& out, const Scene& s) {
   out.value(s.environment.intensity);
   out.value(s.environment.rotationDegrees);
   out.value(uint8_t(s.environment.visibleToCamera));
+  out.array(s.punctualLights);
   out.value(s.camera);
   writeOptional(out, s.renderHints.width);
   writeOptional(out, s.renderHints.height);
@@ -123,6 +124,7 @@ bool readScene(BinaryReader& in, Scene& s) {
   in.value(s.environment.rotationDegrees);
   in.value(flag);
   s.environment.visibleToCamera = flag != 0;
+  in.array(s.punctualLights);
   in.value(s.camera);
   readOptional(in, s.renderHints.width);
   readOptional(in, s.renderHints.height);

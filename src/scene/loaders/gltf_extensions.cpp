@@ -12,14 +12,11 @@ namespace candela {
 namespace {
 
 // Read fully or in part; where in part, the loader warns about what it leaves out.
-constexpr std::array<std::string_view, 10> kSupported = {
-    "EXT_mesh_gpu_instancing", "KHR_materials_clearcoat",    "KHR_materials_emissive_strength",
-    "KHR_materials_ior",       "KHR_materials_sheen",        "KHR_materials_specular",
-    "KHR_materials_transmission", "KHR_materials_unlit",     "KHR_mesh_quantization",
-    "KHR_texture_transform"};
-
-// Not supported, but ignored with a warning of their own when used (the loader counts the lights).
-constexpr std::array<std::string_view, 1> kWarnedElsewhere = {"KHR_lights_punctual"};
+constexpr std::array<std::string_view, 11> kSupported = {
+    "EXT_mesh_gpu_instancing", "KHR_lights_punctual",        "KHR_materials_clearcoat",
+    "KHR_materials_emissive_strength", "KHR_materials_ior",  "KHR_materials_sheen",
+    "KHR_materials_specular",  "KHR_materials_transmission", "KHR_materials_unlit",
+    "KHR_mesh_quantization",   "KHR_texture_transform"};
 
 bool contains(auto& list, const std::string& name) { return std::find(list.begin(), list.end(), name) != list.end(); }
 
@@ -46,7 +43,7 @@ void refuseUnsupportedRequiredExtensions(const char* json, size_t size, const st
 void checkGltfExtensions(const tinygltf::Model& model, const std::string& file, LoadWarnings& warnings) {
   refuseUnsupported(model.extensionsRequired, file);
   for (const std::string& name : model.extensionsUsed)
-    if (!contains(kSupported, name) && !contains(kWarnedElsewhere, name))
+    if (!contains(kSupported, name))
       warnings.add(file, "uses the glTF extension " + name + ", which candela does not support; it is ignored");
 }
 

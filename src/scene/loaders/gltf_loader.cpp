@@ -179,10 +179,10 @@ class GltfSceneBuilder {
     }
     for (int r : roots) visit(r, glm::mat4(1.0f), 0, "scenes[" + std::to_string(std::max(sceneIndex, 0)) + "].nodes");
     if (scene_.instances.empty()) failLoad(file_, "has no meshes to render");
-    if (punctualLights_ > 0)
-      warnings_.add(file_, std::to_string(punctualLights_) +
-                               " KHR_lights_punctual lights are ignored: only emissive surfaces and the environment "
-                               "emit light in candela");
+    if (lightRangesIgnored_ > 0)
+      warnings_.add(file_, std::to_string(lightRangesIgnored_) +
+                               " KHR_lights_punctual lights have a range, which is ignored: their light falls off "
+                               "with the square of the distance everywhere");
     if (skinned_) warnings_.add(file_, "skins are ignored; meshes are loaded in their bind pose");
     if (!sharesTextures_) textures_.finish(scene_, 0, warnings_);
     scene_.cameraMissing = !cameraFound_;
@@ -214,7 +214,8 @@ class GltfSceneBuilder {
       if (std::optional<uint32_t> mesh = meshFor(node.mesh)) addInstances(*mesh, node, world, where);
     }
     if (node.camera >= 0) takeCamera(node.camera, world, where);
-    if (node.extensions.count("KHR_lights_punctual")) ++punctualLights_;
+    if (auto light = node.extensions.find("KHR_lights_punctual"); light != node.extensions.end())
+      addLight(light->second, world, where);
     if (node.skin >= 0) skinned_ = true;
     for (size_t c = 0; c < node.children.size(); ++c)
       visit(node.children[c], world, depth + 1, where + ".children");
@@ -266,6 +267,44 @@ class GltfSceneBuilder {
       }
       addInstance(mesh, instance, where);
     }
+  }
+
+  // A node's KHR_lights_punctual light, at the node's origin and shining along its -Z. The intensity is taken as
+  // radiant (candela for point and spot lights as W/sr, lux for directional ones as W/m^2), as glTF viewers use
+  // it.
+  void addLight(const tinygltf::Value& extension, const glm::mat4& world, const std::string& where) {
+    const std::string at = where + ".extensions.KHR_lights_punctual.light";
+    if (!extension.Has("light") || !extension.Get("light").IsInt()) failLoad(file_, at + ": expected a light index");
+    const int index = extension.Get("light").GetNumberAsInt();
+    if (index < 0 || size_t(index) >= model_.lights.size())
+      failLoad(file_, at + ": light " + std::to_string(index) + " does not exist");
+    const tinygltf::Light& source = model_.lights[size_t(index)];
+    const std::string lightWhere = "extensions.KHR_lights_punctual.lights[" + std::to_string(index) + "]";
+    PunctualLight light;
+    if (source.type == "point") {
+      light.type = PunctualLightType::Point;
+    } else if (source.type == "spot") {
+      light.type = PunctualLightType::Spot;
+      light.cosOuter = std::cos(float(source.spot.outerConeAngle));
+      light.cosInner = std::cos(float(source.spot.innerConeAngle));
+    } else if (source.type == "directional") {
+      light.type = PunctualLightType::Directional;
+    } else {
+      warnings_.add(file_, lightWhere + ".type '" + source.type + "' is not a light type glTF defines; it is left out");
+      return;
+    }
+    Vec3 color{1, 1, 1};
+    if (source.color.size() == 3) color = {float(source.color[0]), float(source.color[1]), float(source.color[2])};
+    if (!(color.x >= 0 && color.y >= 0 && color.z >= 0 && source.intensity >= 0)) {
+      warnings_.add(file_, lightWhere + " has a negative or non-finite colour or intensity; it is left out");
+      return;
+    }
+    light.intensity = color * float(source.intensity);
+    const glm::vec4 position = world * glm::vec4(0, 0, 0, 1), direction = world * glm::vec4(0, 0, -1, 0);
+    light.position = {position.x, position.y, position.z};
+    light.direction = {direction.x, direction.y, direction.z};  // normalised (or the light dropped) by the repair
+    if (source.range > 0.0) ++lightRangesIgnored_;
+    scene_.punctualLights.push_back(light);
   }
 
   void takeCamera(int index, const glm::mat4& world, const std::string& where) {
@@ -526,7 +565,7 @@ class GltfSceneBuilder {
   std::map<int, std::optional<uint32_t>> meshes_;
   std::optional<uint32_t> defaultMaterial_;
   bool cameraFound_ = false;
-  size_t punctualLights_ = 0;
+  size_t lightRangesIgnored_ = 0;
   bool skinned_ = false;
   enum class NodeState : uint8_t { Unvisited, OnPath, Done };
   std::vector<NodeState> nodeStates_;  // by node index, for the traversal

@@ -228,7 +228,52 @@ void appendScene(Scene& scene, Scene&& part, const Affine3x4& transform) {
   glm::mat4 outer = toMat4(transform);
   for (const Instance& inst : part.instances)
     scene.instances.push_back({inst.meshId + meshBase, toAffine(outer * toMat4(inst.objectToWorld))});
+  for (PunctualLight light : part.punctualLights) {
+    light.position = transform.point(light.position);
+    light.direction = normalize(transform.vector(light.direction));
+    scene.punctualLights.push_back(light);
+  }
 }
+
+namespace {
+
+// One entry of the scene file's `lights`: a point, spot or directional light (kernel/scene_view.h).
+PunctualLight punctualLightOf(const Node& l, LoadWarnings& warnings) {
+  l.expectObject({"type", "position", "direction", "target", "color", "intensity", "inner_angle_degrees",
+                  "outer_angle_degrees"},
+                 warnings);
+  PunctualLight light;
+  const std::string type = l["type"].string();
+  if (type == "point")
+    light.type = PunctualLightType::Point;
+  else if (type == "spot")
+    light.type = PunctualLightType::Spot;
+  else if (type == "directional")
+    light.type = PunctualLightType::Directional;
+  else
+    l["type"].fail("unknown light type '" + type + "' (use point, spot or directional)");
+  Vec3 color{1, 1, 1};
+  if (l.has("color")) color = l["color"].vec3();
+  if (color.x < 0 || color.y < 0 || color.z < 0) l["color"].fail("must not be negative");
+  float intensity = l.has("intensity") ? l["intensity"].number(0.0f, 1e30f) : 1.0f;
+  light.intensity = color * intensity;
+  if (light.type != PunctualLightType::Directional) light.position = l["position"].vec3();
+  if (light.type != PunctualLightType::Point) {
+    if (l.has("direction") == l.has("target")) l.fail("give either 'direction' or 'target'");
+    Vec3 direction = l.has("direction") ? l["direction"].vec3() : l["target"].vec3() - light.position;
+    if (!(length(direction) > 0.0f)) l.fail("the light's direction has no length");
+    light.direction = normalize(direction);
+  }
+  if (light.type == PunctualLightType::Spot) {
+    float outer = l.has("outer_angle_degrees") ? l["outer_angle_degrees"].number(0.0f, 180.0f) : 45.0f;
+    float inner = l.has("inner_angle_degrees") ? l["inner_angle_degrees"].number(0.0f, outer) : 0.0f;
+    light.cosOuter = std::cos(outer * kPi / 180.0f);
+    light.cosInner = std::cos(inner * kPi / 180.0f);
+  }
+  return light;
+}
+
+}  // namespace
 
 Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadWarnings& warnings,
                     OutsidePaths outside) {
@@ -236,7 +281,7 @@ Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadW
   const json doc = parseJson(path, std::string(bytes.begin(), bytes.end()));
   const PathRule files = PathRule::forFile(path, outside);
   Node root(doc, "", path);
-  root.expectObject({"models", "camera", "environment", "render"}, warnings);
+  root.expectObject({"models", "camera", "environment", "lights", "render"}, warnings);
 
   Scene scene;
   scene.name = fs::path(path).stem().string();
@@ -332,6 +377,10 @@ Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadW
     if (e.has("rotation_degrees")) env.rotationDegrees = e["rotation_degrees"].number();
     if (e.has("visible")) env.visibleToCamera = e["visible"].boolean();
     scene.environment = std::move(env);
+  }
+  if (root.has("lights")) {
+    Node lights = root["lights"];
+    for (size_t i = 0; i < lights.size(); ++i) scene.punctualLights.push_back(punctualLightOf(lights.at(i), warnings));
   }
   if (root.has("render")) {
     Node r = root["render"];
