@@ -12,6 +12,7 @@
 #include "scene/loaders/image_decoding.h"
 #include "scene/loaders/load_diagnostics.h"
 #include "scene/loaders/obj_loader.h"
+#include "scene/loaders/pbrt_loader.h"
 #include "scene/loaders/scene_file.h"
 #include "scene/scene_repair.h"
 #include "core/file_extension.h"
@@ -24,8 +25,10 @@ Scene loadModel(const std::string& path, const SceneLoadOptions& options, LoadWa
   SceneCacheSettings cache = options.cache;
   cache.enabled &= options.outsidePaths == OutsidePaths::Refused;
   return loadThroughSceneCache(path, cache, warnings, [&](LoadWarnings& w) {
-    return lowerCaseExtension(path) == ".obj" ? loadObj(path, w, options.outsidePaths)
-                                              : loadGltf(path, w, options.outsidePaths);
+    std::string ext = lowerCaseExtension(path);
+    if (ext == ".obj") return loadObj(path, w, options.outsidePaths);
+    if (ext == ".pbrt") return loadPbrt(path, w, options.outsidePaths);
+    return loadGltf(path, w, options.outsidePaths);
   });
 }
 
@@ -42,7 +45,7 @@ auto withMemoryReported(const std::string& file, Load load) {
 
 Scene loadFile(const std::string& path, const SceneLoadOptions& options, LoadWarnings& warnings) {
   std::string ext = lowerCaseExtension(path);
-  if (ext == ".obj" || ext == ".gltf" || ext == ".glb")
+  if (ext == ".obj" || ext == ".gltf" || ext == ".glb" || ext == ".pbrt")
     return withMemoryReported(path, [&] { return loadModel(path, options, warnings); });
   if (ext == ".json")
     return loadSceneFile(
@@ -55,7 +58,7 @@ Scene loadFile(const std::string& path, const SceneLoadOptions& options, LoadWar
   for (const std::string& n : builtinSceneNames()) names += (names.empty() ? "" : ", ") + n;
   if (!std::filesystem::exists(path))
     throw std::runtime_error("unknown scene '" + printableText(path) + "': not a file, nor a built-in scene (" + names + ")");
-  throw std::runtime_error(printableText(path) + ": unknown scene format '" + printableText(ext) + "' (use .obj, .gltf, .glb or .json, or a built-in scene: " + names +
+  throw std::runtime_error(printableText(path) + ": unknown scene format '" + printableText(ext) + "' (use .obj, .gltf, .glb, .pbrt or .json, or a built-in scene: " + names +
                            ")");
 }
 

@@ -1,0 +1,31 @@
+#pragma once
+#include <cstddef>
+#include <set>
+#include <string>
+
+#include "scene/loaders/load_diagnostics.h"
+#include "scene/loaders/path_confinement.h"
+#include "scene/scene.h"
+
+namespace candela {
+
+// What every part of the pbrt loader shares: the scene being built, where referenced files may be, and the
+// warnings (one per feature, however often a scene uses it).
+struct PbrtContext {
+  std::string mainFile;
+  std::string baseFolder;  // pbrt resolves every relative path against the folder of the file it was started on
+  PathRule rule;
+  Scene scene;
+  LoadWarnings& warnings;
+  std::set<std::string> warnedFeatures;
+  bool filesAllowed = true;  // false for a scene read from memory: it may name no files
+
+  PbrtContext(const std::string& file, LoadWarnings& w, OutsidePaths outside);
+
+  void warn(const std::string& feature, const std::string& what);
+  // The file a scene refers to, confined to baseFolder's tree unless allowed otherwise, and recorded among the
+  // scene's inputs. Throws LoadError naming `file:line` when the reference is refused.
+  std::string resolve(const std::string& reference, const std::string& file, size_t line);
+};
+
+}  // namespace candela

@@ -1,0 +1,99 @@
+#include "scene/loaders/pbrt_textures.h"
+
+#include "core/file_extension.h"
+#include "scene/loaders/file_bytes.h"
+#include "scene/loaders/image_decoding.h"
+#include "scene/loaders/pbrt_pfm.h"
+
+namespace candela {
+
+namespace {
+
+Vec3 meanOf(const PbrtTexture& t) { return t.factor * (t.image == kNoTexture ? 1.0f : 0.5f); }
+
+}  // namespace
+
+int32_t PbrtTextures::loadImage(const std::string& path, bool srgb, const std::string& file, size_t line) {
+  auto key = std::make_pair(path, srgb);
+  if (auto found = images_.find(key); found != images_.end()) return found->second;
+  int32_t index = kNoTexture;
+  std::string resolved = context_.resolve(path, file, line);
+  try {
+    std::string ext = lowerCaseExtension(resolved);
+    Texture image;
+    if (ext == ".exr") {
+      image = loadEnvironmentImage(resolved);
+    } else if (ext == ".pfm") {
+      image = readPfm(resolved);
+    } else {
+      std::vector<uint8_t> bytes = readFileBytes(resolved);
+      image = decodeImage(resolved, bytes.data(), bytes.size(), srgb);
+    }
+    image.name = resolved;
+    index = int32_t(context_.scene.textures.size());
+    context_.scene.textures.push_back(std::move(image));
+  } catch (const LoadError& e) {
+    context_.warnings.add(context_.mainFile, std::string("image left out: ") + e.what());
+  }
+  images_[key] = index;
+  return index;
+}
+
+PbrtTexture PbrtTextures::value(const PbrtParameters& params, const std::string& name, Vec3 fallback) {
+  if (std::optional<std::string> texture = params.getTexture(name)) {
+    auto found = named_.find(*texture);
+    if (found != named_.end()) return found->second;
+    context_.warn("unknown texture " + *texture, params.file + ":" + std::to_string(params.line) + ": texture '" +
+                                                      *texture + "' is not defined: '" + name + "' takes its default");
+    return PbrtTexture{fallback};
+  }
+  if (std::optional<PbrtColor> c = params.getColor(name)) return PbrtTexture{c->rgb};
+  return PbrtTexture{fallback};
+}
+
+void PbrtTextures::define(const std::string& name, const std::string& valueType, const std::string& className,
+                          const PbrtParameters& params) {
+  if (valueType != "float" && valueType != "spectrum" && valueType != "color" && valueType != "rgb")
+    params.fail("texture '" + name + "' has an unknown value type '" + valueType + "'");
+  PbrtTexture t;
+  if (className == "imagemap") {
+    std::string file = params.getString("filename", "");
+    if (file.empty()) params.fail("imagemap texture '" + name + "' without 'filename'");
+    std::string encoding = params.getString("encoding", "sRGB");
+    if (encoding != "sRGB" && encoding != "linear")
+      context_.warn("texture encoding " + encoding, "texture encoding '" + encoding + "' read as sRGB");
+    t.image = loadImage(file, encoding != "linear", params.file, params.line);
+    float scale = params.getFloat("scale", 1.0f);
+    t.factor = {scale, scale, scale};
+    if (params.getBool("invert", false)) context_.warn("texture invert", "imagemap 'invert' is not applied");
+    std::string wrap = params.getString("wrap", "repeat");
+    if (t.image != kNoTexture) {
+      Texture& image = context_.scene.textures[size_t(t.image)];
+      image.wrap = wrap == "clamp" || wrap == "black" ? TextureWrap::Clamp : TextureWrap::Repeat;
+      if (wrap == "black") context_.warn("texture wrap black", "imagemap wrap 'black' is read as 'clamp'");
+    }
+  } else if (className == "constant") {
+    t = value(params, "value", {1, 1, 1});
+  } else if (className == "scale") {
+    PbrtTexture tex = value(params, "tex", {1, 1, 1}), scale = value(params, "scale", {1, 1, 1});
+    if (tex.image != kNoTexture && scale.image != kNoTexture)
+      context_.warn("scale of two images", "a 'scale' texture of two images keeps only the first");
+    t = tex.image != kNoTexture ? tex : scale;
+    t.factor = tex.factor * scale.factor;
+  } else if (className == "mix" || className == "checkerboard") {
+    PbrtTexture a = value(params, "tex1", {1, 1, 1}), b = value(params, "tex2", {0, 0, 0});
+    float amount = className == "mix" ? params.getFloat("amount", 0.5f) : 0.5f;
+    t.factor = lerp(amount, meanOf(a), meanOf(b));
+    context_.warn("texture " + className, "'" + className + "' textures are replaced by the mean of their inputs");
+  } else {
+    t.factor = {0.5f, 0.5f, 0.5f};
+    context_.warn("texture " + className, "'" + className + "' textures are not supported: grey 0.5 used instead");
+  }
+  t.uvScale = {params.getFloat("uscale", 1.0f), params.getFloat("vscale", 1.0f)};
+  t.uvOffset = {params.getFloat("udelta", 0.0f), params.getFloat("vdelta", 0.0f)};
+  std::string mapping = params.getString("mapping", "uv");
+  if (mapping != "uv") context_.warn("texture mapping " + mapping, "texture mapping '" + mapping + "' read as 'uv'");
+  named_[name] = t;
+}
+
+}  // namespace candela

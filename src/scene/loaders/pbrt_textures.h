@@ -1,0 +1,39 @@
+#pragma once
+#include <map>
+#include <string>
+
+#include "scene/loaders/pbrt_context.h"
+#include "scene/loaders/pbrt_parameters.h"
+
+namespace candela {
+
+// A pbrt texture as candela can use it: a constant factor times, optionally, one of the scene's images, looked
+// up through pbrt's uv mapping (u' = uscale u + udelta, v' = vscale v + vdelta).
+struct PbrtTexture {
+  Vec3 factor{1, 1, 1};
+  int32_t image = kNoTexture;
+  Vec2 uvScale{1, 1};
+  Vec2 uvOffset{0, 0};
+};
+
+// The named textures of a scene (`Texture "name" "spectrum"|"float" "class" ...`): imagemap (PNG, JPEG, TGA, BMP,
+// HDR, EXR, PFM), constant and scale are honoured; mix and checkerboard become the mean of their two inputs,
+// other classes a constant grey, each with a warning.
+class PbrtTextures {
+ public:
+  explicit PbrtTextures(PbrtContext& context) : context_(context) {}
+
+  void define(const std::string& name, const std::string& valueType, const std::string& className,
+              const PbrtParameters& params);
+  // A material or texture parameter: a texture it names, a colour or number it gives, or `fallback`.
+  PbrtTexture value(const PbrtParameters& params, const std::string& name, Vec3 fallback);
+  // An image file as a scene texture (cached by file and encoding); kNoTexture after a warning when unreadable.
+  int32_t loadImage(const std::string& path, bool srgb, const std::string& file, size_t line);
+
+ private:
+  PbrtContext& context_;
+  std::map<std::string, PbrtTexture> named_;
+  std::map<std::pair<std::string, bool>, int32_t> images_;
+};
+
+}  // namespace candela

@@ -1,0 +1,518 @@
+#include <gtest/gtest.h>
+
+#include <zlib.h>
+
+#include <cmath>
+#include <cstring>
+#include <sstream>
+
+#include "app/render_job.h"
+#include "app/scene_loading.h"
+#include "scene/builtin_scenes.h"
+#include "scene/loaders/load_diagnostics.h"
+#include "scene/loaders/pbrt_lights.h"
+#include "scene/loaders/pbrt_loader.h"
+#include "scene/loaders/pbrt_spectra.h"
+#include "scene/loaders/pbrt_tokenizer.h"
+#include "scene/scene_test_files.h"
+
+namespace candela {
+namespace {
+
+using test::TempFolder;
+
+Scene loadText(const std::string& text, LoadWarnings* warningsOut = nullptr) {
+  LoadWarnings warnings;
+  Scene scene = loadPbrtText("test.pbrt", text, warnings);
+  if (warningsOut) *warningsOut = warnings;
+  return scene;
+}
+
+std::string loadError(const std::string& text) {
+  try {
+    loadText(text);
+  } catch (const LoadError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+void expectNear(Vec3 a, Vec3 b, float tolerance = 1e-4f) {
+  EXPECT_NEAR(a.x, b.x, tolerance);
+  EXPECT_NEAR(a.y, b.y, tolerance);
+  EXPECT_NEAR(a.z, b.z, tolerance);
+}
+
+Vec3 windingNormal(const Scene& scene, size_t instance, size_t triangle) {
+  const Mesh& m = scene.meshes[scene.instances[instance].meshId];
+  const Affine3x4& t = scene.instances[instance].objectToWorld;
+  Vec3 a = m.positions[m.indices[3 * triangle]], b = m.positions[m.indices[3 * triangle + 1]];
+  Vec3 c = m.positions[m.indices[3 * triangle + 2]];
+  // The front as candela's lights take it (kernel/lights.h): the world-space winding, turned under mirroring
+  // instances.
+  Vec3 n = cross(t.point(b) - t.point(a), t.point(c) - t.point(a));
+  return t.determinant() < 0 ? -n : n;
+}
+
+constexpr const char* kTriangle = R"(Shape "trianglemesh" "point3 P" [0 0 0  1 0 0  0 1 0] "integer indices" [0 1 2]
+)";
+
+// The camera of these scenes mirrors (as pbrt scenes customarily do), so candela's world is pbrt's.
+constexpr const char* kMirroredCamera = "Scale -1 1 1\nCamera \"perspective\"\nWorldBegin\n";
+
+TEST(PbrtTokenizer, SplitsWordsStringsBracketsAndSkipsComments) {
+  PbrtTokenizer tokens("t.pbrt", "Shape # a comment\n\"tri\\\"angle\" [1 -2.5e1]\n");
+  EXPECT_EQ(tokens.next().text, "Shape");
+  PbrtToken s = tokens.next();
+  EXPECT_EQ(s.kind, PbrtToken::Kind::String);
+  EXPECT_EQ(s.text, "tri\"angle");
+  EXPECT_EQ(s.line, 2u);
+  EXPECT_EQ(tokens.next().kind, PbrtToken::Kind::OpenBracket);
+  EXPECT_EQ(tokens.next().text, "1");
+  EXPECT_EQ(tokens.next().text, "-2.5e1");
+  EXPECT_EQ(tokens.next().kind, PbrtToken::Kind::CloseBracket);
+  EXPECT_EQ(tokens.next().kind, PbrtToken::Kind::End);
+}
+
+TEST(PbrtLoader, ErrorsNameFileAndLine) {
+  EXPECT_EQ(loadError("WorldBegin\n\nShpe \"sphere\"\n"), "test.pbrt:3: unknown directive 'Shpe'");
+  EXPECT_EQ(loadError("WorldBegin\nShape \"sphere\" \"float radius\" [1\n"), "test.pbrt:2: unclosed '[' of 'radius'");
+  EXPECT_EQ(loadError("WorldBegin\nShape \"sphere\" \"float radius\" [x]\n"),
+            "test.pbrt:2: 'x' is not a number (value of 'radius')");
+  EXPECT_EQ(loadError("WorldBegin\nMaterial \"diffuse\n\""), "test.pbrt:2: line break inside a string");
+  EXPECT_EQ(loadError("AttributeEnd\n"), "test.pbrt:1: AttributeEnd without a matching begin");
+  EXPECT_EQ(loadError("WorldBegin\nShape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" [0 1 3]"),
+            "test.pbrt:2: 'indices' refers to vertex 3 of 3");
+}
+
+TEST(PbrtLoader, TransformsApplyInPbrtsOrder) {
+  // Translate then Scale: a point is scaled first, then translated (each directive post-multiplies).
+  Scene scene = loadText(std::string(kMirroredCamera) + "Translate 1 0 0\nScale 2 2 2\n" + kTriangle);
+  ASSERT_EQ(scene.instances.size(), 1u);
+  expectNear(scene.instances[0].objectToWorld.point({1, 0, 0}), {3, 0, 0});
+  Scene rotated = loadText(std::string(kMirroredCamera) + "Rotate 90 0 0 1\nTranslate 1 0 0\n" + kTriangle);
+  expectNear(rotated.instances[0].objectToWorld.point({0, 0, 0}), {0, 1, 0});
+  Scene matrix = loadText(std::string(kMirroredCamera) + "Transform [1 0 0 0  0 1 0 0  0 0 1 0  5 6 7 1]\n" + kTriangle);
+  expectNear(matrix.instances[0].objectToWorld.point({0, 0, 0}), {5, 6, 7});
+  Scene attributes = loadText(std::string(kMirroredCamera) + "AttributeBegin\nTranslate 9 0 0\nAttributeEnd\n" +
+                              "TransformBegin\nTranslate 9 0 0\nTransformEnd\n" + kTriangle);
+  expectNear(attributes.instances[0].objectToWorld.point({0, 0, 0}), {0, 0, 0});
+  Scene named = loadText(std::string(kMirroredCamera) + "Translate 4 0 0\nCoordinateSystem \"here\"\nIdentity\n" +
+                         "CoordSysTransform \"here\"\n" + kTriangle);
+  expectNear(named.instances[0].objectToWorld.point({0, 0, 0}), {4, 0, 0});
+}
+
+TEST(PbrtLoader, LeftHandedCameraMirrorsTheWorldSoTheImageIsNotMirrored) {
+  // pbrt's LookAt puts world +x on the right of the image for a camera looking down +z with +y up.
+  Scene scene = loadText("LookAt 0 0 0  0 0 1  0 1 0\nCamera \"perspective\" \"float fov\" 60\nWorldBegin\n"
+                         "Translate 1 0 5\n" + std::string(kTriangle));
+  Vec3 p = scene.instances[0].objectToWorld.point({0, 0, 0});
+  Vec3 forward = normalize(scene.camera.target - scene.camera.eye);
+  Vec3 right = cross(forward, scene.camera.up);  // candela's image right (Camera::lookAt)
+  EXPECT_GT(dot(p - scene.camera.eye, right), 0.5f);
+  EXPECT_FLOAT_EQ(scene.camera.verticalFovDegrees, 60.0f);
+  // The same scene after pbrt's customary `Scale -1 1 1`: +x is now on the left.
+  Scene flipped = loadText("Scale -1 1 1\nLookAt 0 0 0  0 0 1  0 1 0\nCamera \"perspective\"\nWorldBegin\n"
+                           "Translate 1 0 5\n" + std::string(kTriangle));
+  Vec3 q = flipped.instances[0].objectToWorld.point({0, 0, 0});
+  Vec3 f2 = normalize(flipped.camera.target - flipped.camera.eye);
+  EXPECT_LT(dot(q - flipped.camera.eye, cross(f2, flipped.camera.up)), -0.5f);
+}
+
+TEST(PbrtLoader, FieldOfViewSpansTheShorterImageAxis) {
+  Scene portrait = loadText("Film \"rgb\" \"integer xresolution\" 100 \"integer yresolution\" 200\n"
+                            "Camera \"perspective\" \"float fov\" 90\nWorldBegin\n");
+  EXPECT_NEAR(portrait.camera.verticalFovDegrees, 2.0f * std::atan(2.0f) * 180.0f / kPi, 1e-3f);
+  EXPECT_EQ(*portrait.renderHints.width, 100u);
+  EXPECT_EQ(*portrait.renderHints.height, 200u);
+}
+
+TEST(PbrtLoader, SamplerAndIntegratorBecomeRenderHints) {
+  Scene scene = loadText("Sampler \"zsobol\" \"integer pixelsamples\" 256\nIntegrator \"volpath\" "
+                         "\"integer maxdepth\" 12\nCamera \"perspective\" \"float lensradius\" 0.1 "
+                         "\"float focaldistance\" 3\nWorldBegin\n");
+  EXPECT_EQ(*scene.renderHints.samplesPerPixel, 256u);
+  EXPECT_EQ(*scene.renderHints.maxDepth, 12u);
+  EXPECT_FLOAT_EQ(scene.camera.apertureRadius, 0.1f);
+  EXPECT_FLOAT_EQ(scene.camera.focusDistance, 3.0f);
+}
+
+TEST(PbrtLoader, ReverseOrientationTurnsTheFront) {
+  Scene scene = loadText(std::string(kMirroredCamera) + kTriangle + "ReverseOrientation\n" + kTriangle);
+  ASSERT_EQ(scene.instances.size(), 2u);
+  EXPECT_GT(windingNormal(scene, 0, 0).z, 0.0f);
+  EXPECT_LT(windingNormal(scene, 1, 0).z, 0.0f);
+  // Under the default (unmirrored) camera the world is mirrored; the front must still be pbrt's front.
+  Scene mirrored = loadText(std::string("WorldBegin\n") + kTriangle);
+  EXPECT_GT(windingNormal(mirrored, 0, 0).z, 0.0f);
+  // With normals the front follows the normals.
+  Scene withNormals = loadText(std::string(kMirroredCamera) +
+                               "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"normal N\" [0 0 -1 0 0 -1 0 0 -1]");
+  EXPECT_LT(windingNormal(withNormals, 0, 0).z, 0.0f);
+}
+
+TEST(PbrtLoader, ObjectInstancesShareTheirMeshes) {
+  Scene scene = loadText(std::string(kMirroredCamera) + "ObjectBegin \"thing\"\nTranslate 0 0 1\n" + kTriangle +
+                         "ObjectEnd\nObjectInstance \"thing\"\nTranslate 5 0 0\nObjectInstance \"thing\"\n");
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  ASSERT_EQ(scene.instances.size(), 2u);
+  expectNear(scene.instances[0].objectToWorld.point({0, 0, 0}), {0, 0, 1});
+  expectNear(scene.instances[1].objectToWorld.point({0, 0, 0}), {5, 0, 1});
+}
+
+TEST(PbrtLoader, MaterialsMapOntoCandelasModels) {
+  Scene scene = loadText(std::string(kMirroredCamera) +
+                         "Material \"diffuse\" \"rgb reflectance\" [0.1 0.2 0.3]\n" + kTriangle +
+                         "Material \"conductor\" \"spectrum eta\" \"metal-Au-eta\" \"spectrum k\" \"metal-Au-k\"\n" +
+                         kTriangle + "Material \"conductor\" \"float roughness\" 0.01\n" + kTriangle +
+                         "Material \"dielectric\" \"spectrum eta\" \"glass-BK7\"\n" + kTriangle +
+                         "Material \"coateddiffuse\" \"rgb reflectance\" [0.5 0.5 0.5] \"float roughness\" 0\n" +
+                         kTriangle + "Material \"interface\"\n" + kTriangle);
+  auto materialOf = [&](size_t i) { return scene.materials[scene.meshes[i].triangleMaterials[0]]; };
+  EXPECT_EQ(materialOf(0).type, MaterialType::Diffuse);
+  expectNear(materialOf(0).baseColor, {0.1f, 0.2f, 0.3f});
+  EXPECT_EQ(materialOf(1).type, MaterialType::Mirror);
+  Vec3 gold = materialOf(1).specularColor;
+  EXPECT_GT(gold.x, gold.z + 0.4f);  // gold reflects red far more than blue
+  EXPECT_EQ(materialOf(2).type, MaterialType::Pbr);
+  EXPECT_FLOAT_EQ(materialOf(2).metallic, 1.0f);
+  EXPECT_NEAR(materialOf(2).roughness, std::pow(0.01f, 0.25f), 1e-5f);  // remapped: alpha = sqrt(0.01)
+  EXPECT_EQ(materialOf(3).type, MaterialType::Glass);
+  EXPECT_NEAR(materialOf(3).ior, 1.5168f, 1e-4f);
+  EXPECT_EQ(materialOf(4).type, MaterialType::Pbr);
+  EXPECT_NEAR(materialOf(4).specular, 0.5f, 1e-4f);  // eta 1.5: F0 = 0.04
+  EXPECT_EQ(materialOf(5).alphaMode, AlphaMode::Mask);
+  EXPECT_EQ(materialOf(5).opacity, 0.0f);
+}
+
+TEST(PbrtLoader, NamedAndMixedMaterials) {
+  std::string text = std::string(kMirroredCamera) +
+                     "MakeNamedMaterial \"red\" \"string type\" \"diffuse\" \"rgb reflectance\" [1 0 0]\n"
+                     "MakeNamedMaterial \"blue\" \"string type\" \"diffuse\" \"rgb reflectance\" [0 0 1]\n"
+                     "MakeNamedMaterial \"mixed\" \"string type\" \"mix\" \"string materials\" [\"red\" \"blue\"] "
+                     "\"float amount\" 0.25\n"
+                     "NamedMaterial \"mixed\"\nShape \"sphere\"\n";
+  Scene scene = loadText(text);
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  size_t blue = 0, total = scene.meshes[0].triangleMaterials.size();
+  for (uint32_t id : scene.meshes[0].triangleMaterials) blue += scene.materials[id].baseColor.z > 0.5f;
+  EXPECT_NEAR(double(blue) / double(total), 0.25, 0.05);  // amount is the second material's share
+  EXPECT_EQ(scene.materialNames[scene.meshes[0].triangleMaterials[0]] == "red" ||
+                scene.materialNames[scene.meshes[0].triangleMaterials[0]] == "blue",
+            true);
+}
+
+TEST(PbrtLoader, AreaLightsEmitFromTheirShapes) {
+  Scene scene = loadText(std::string(kMirroredCamera) +
+                         "AttributeBegin\nAreaLightSource \"diffuse\" \"rgb L\" [1 2 3] \"float scale\" 2\n" +
+                         kTriangle + "AttributeEnd\n" + kTriangle);
+  expectNear(scene.materials[scene.meshes[0].triangleMaterials[0]].emission, {2, 4, 6});
+  EXPECT_TRUE(isBlack(scene.materials[scene.meshes[1].triangleMaterials[0]].emission));
+  // Two-sided lights emit from both faces: each triangle is there twice, once per winding.
+  Scene twoSided = loadText(std::string(kMirroredCamera) + "AreaLightSource \"diffuse\" \"bool twosided\" true\n" +
+                            kTriangle);
+  EXPECT_EQ(twoSided.meshes[0].triangleCount(), 2u);
+  // `power` sets the radiance: phi = pi * area * L for a one-sided emitter of luminance L.
+  Scene power = loadText(std::string(kMirroredCamera) + "AreaLightSource \"diffuse\" \"float power\" 10\n" + kTriangle);
+  float L = luminance(power.materials[power.meshes[0].triangleMaterials[0]].emission);
+  EXPECT_NEAR(kPi * 0.5f * L, 10.0f, 1e-3f);
+  // Blackbody emitters are normalised to luminance 1 (times scale), as pbrt-v4 normalises them.
+  Scene blackbody = loadText(std::string(kMirroredCamera) +
+                             "AreaLightSource \"diffuse\" \"blackbody L\" [3000] \"float scale\" 5\n" + kTriangle);
+  Vec3 e = blackbody.materials[blackbody.meshes[0].triangleMaterials[0]].emission;
+  EXPECT_NEAR(luminance(e), 5.0f, 0.05f);
+  EXPECT_GT(e.x, e.z);  // 3000 K is warm
+}
+
+TEST(PbrtLoader, InfiniteLightsBecomeTheEnvironment) {
+  Scene scene = loadText("WorldBegin\nLightSource \"infinite\" \"rgb L\" [0.5 0.25 1] \"float scale\" 2\n");
+  expectNear(scene.environment.radiance, {1, 0.5f, 2});
+  EXPECT_FALSE(scene.environment.hasMap());
+}
+
+TEST(PbrtLoader, UnsupportedFeaturesWarnOncePerFeature) {
+  LoadWarnings warnings;
+  Scene scene = loadText(std::string(kMirroredCamera) +
+                             "Shape \"curve\" \"point3 P\" [0 0 0 1 1 1 2 2 2 3 3 3]\nShape \"curve\" \"point3 P\" "
+                             "[0 0 0 1 1 1 2 2 2 3 3 3]\nLightSource \"point\" \"rgb I\" [1 1 1]\n"
+                             "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n" + kTriangle,
+                         &warnings);
+  EXPECT_EQ(scene.meshes.size(), 1u);
+  int curveWarnings = 0, pointWarnings = 0, mediaWarnings = 0;
+  for (const std::string& w : warnings.messages) {
+    curveWarnings += w.find("'curve'") != std::string::npos;
+    pointWarnings += w.find("'point'") != std::string::npos;
+    mediaWarnings += w.find("media") != std::string::npos;
+  }
+  EXPECT_EQ(curveWarnings, 1);
+  EXPECT_EQ(pointWarnings, 1);
+  EXPECT_EQ(mediaWarnings, 1);
+}
+
+TEST(PbrtLoader, QuadricsAreTessellatedOnTheirSurface) {
+  Scene scene = loadText(std::string(kMirroredCamera) + "Shape \"sphere\" \"float radius\" 2\n"
+                                                        "Shape \"disk\" \"float radius\" 1 \"float height\" 0.5\n"
+                                                        "Shape \"cylinder\" \"float radius\" 1 \"float zmin\" 0 "
+                                                        "\"float zmax\" 3\n");
+  ASSERT_EQ(scene.meshes.size(), 3u);
+  for (size_t i = 0; i < scene.meshes[0].positions.size(); ++i) {
+    EXPECT_NEAR(length(scene.meshes[0].positions[i]), 2.0f, 1e-4f);
+    EXPECT_GT(dot(scene.meshes[0].normals[i], scene.meshes[0].positions[i]), 0.0f);  // outwards
+  }
+  for (Vec3 p : scene.meshes[1].positions) EXPECT_FLOAT_EQ(p.z, 0.5f);
+  for (Vec3 p : scene.meshes[2].positions) EXPECT_NEAR(std::hypot(p.x, p.y), 1.0f, 1e-5f);
+  // The sphere's front faces outwards.
+  const Mesh& sphere = scene.meshes[0];
+  for (size_t t = 0; t < sphere.triangleCount(); ++t) {
+    Vec3 a = sphere.positions[sphere.indices[3 * t]], b = sphere.positions[sphere.indices[3 * t + 1]];
+    Vec3 c = sphere.positions[sphere.indices[3 * t + 2]];
+    Vec3 n = cross(b - a, c - a);
+    if (length(n) > 1e-6f) {
+      EXPECT_GT(dot(n, a + b + c), 0.0f);
+    }
+  }
+}
+
+TEST(PbrtLoader, BilinearMeshesAndLoopSubdivision) {
+  Scene scene = loadText(std::string(kMirroredCamera) +
+                         "Shape \"bilinearmesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0 1 1 0]\n"
+                         "Shape \"loopsubdiv\" \"integer levels\" 2 \"point3 P\" [0 0 0 1 0 0 0 1 0 0 0 1] "
+                         "\"integer indices\" [0 2 1 0 1 3 0 3 2 1 2 3]\n");
+  ASSERT_EQ(scene.meshes.size(), 2u);
+  EXPECT_EQ(scene.meshes[0].triangleCount(), 2u);
+  EXPECT_GT(windingNormal(scene, 0, 0).z, 0.0f);  // cross(dp/du, dp/dv) = +z
+  EXPECT_EQ(scene.meshes[1].triangleCount(), 4u * 16u);
+  // Loop subdivision of a closed mesh shrinks it towards its centroid: every vertex inside the hull.
+  for (Vec3 p : scene.meshes[1].positions) EXPECT_LT(p.x + p.y + p.z, 1.0f);
+}
+
+std::string plyHeader(const std::string& format, int vertices, int faces) {
+  return "ply\nformat " + format + " 1.0\ncomment test\nelement vertex " + std::to_string(vertices) +
+         "\nproperty float x\nproperty float y\nproperty float z\nproperty float u\nproperty float v\n"
+         "element face " + std::to_string(faces) + "\nproperty list uchar int vertex_indices\nend_header\n";
+}
+
+// A unit quad: 4 vertices with texture coordinates and one face of 4 indices.
+std::string binaryQuadPly(bool bigEndian) {
+  std::string out = plyHeader(bigEndian ? "binary_big_endian" : "binary_little_endian", 4, 1);
+  auto put = [&](const void* p, size_t n) {
+    std::string bytes(static_cast<const char*>(p), n);
+    if (bigEndian) std::reverse(bytes.begin(), bytes.end());
+    out += bytes;
+  };
+  const float v[4][5] = {{0, 0, 0, 0, 0}, {1, 0, 0, 1, 0}, {1, 1, 0, 1, 1}, {0, 1, 0, 0, 1}};
+  for (const auto& vertex : v)
+    for (float f : vertex) put(&f, 4);
+  out += char(4);
+  for (int32_t i : {0, 1, 2, 3}) put(&i, 4);
+  return out;
+}
+
+std::string gzip(const std::string& data) {
+  z_stream s{};
+  deflateInit2(&s, Z_DEFAULT_COMPRESSION, Z_DEFLATED, 16 + MAX_WBITS, 8, Z_DEFAULT_STRATEGY);
+  std::string out(deflateBound(&s, uLong(data.size())) + 32, '\0');
+  s.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(data.data()));
+  s.avail_in = uInt(data.size());
+  s.next_out = reinterpret_cast<Bytef*>(out.data());
+  s.avail_out = uInt(out.size());
+  deflate(&s, Z_FINISH);
+  out.resize(s.total_out);
+  deflateEnd(&s);
+  return out;
+}
+
+TEST(PbrtLoader, PlyMeshesInEveryEncoding) {
+  TempFolder folder;
+  std::string ascii = plyHeader("ascii", 4, 1) + "0 0 0 0 0\n1 0 0 1 0\n1 1 0 1 1\n0 1 0 0 1\n4 0 1 2 3\n";
+  folder.write("ascii.ply", ascii);
+  folder.write("le.ply", binaryQuadPly(false));
+  folder.write("be.ply", binaryQuadPly(true));
+  folder.write("packed.ply.gz", gzip(binaryQuadPly(false)));
+  for (const char* name : {"ascii.ply", "le.ply", "be.ply", "packed.ply.gz"}) {
+    std::string scenePath = folder.write("scene.pbrt", std::string(kMirroredCamera) + "Shape \"plymesh\" \"string filename\" \"" +
+                                                           name + "\"\n");
+    LoadWarnings warnings;
+    Scene scene = loadPbrt(scenePath, warnings);
+    ASSERT_EQ(scene.meshes.size(), 1u) << name;
+    const Mesh& m = scene.meshes[0];
+    EXPECT_EQ(m.triangleCount(), 2u) << name;
+    ASSERT_EQ(m.positions.size(), 4u) << name;
+    expectNear(m.positions[2], {1, 1, 0});
+    ASSERT_EQ(m.uvs.size(), 4u) << name;
+    EXPECT_FLOAT_EQ(m.uvs[2].y, 0.0f) << name;  // pbrt's v = 1 is the top row: candela's v = 0
+    EXPECT_GT(windingNormal(scene, 0, 0).z, 0.0f) << name;
+    EXPECT_NE(std::find(scene.inputFiles.begin(), scene.inputFiles.end(), folder.file(name)), scene.inputFiles.end());
+  }
+}
+
+TEST(PbrtLoader, HostilePlyFilesAreRefused) {
+  TempFolder folder;
+  folder.write("huge.ply", plyHeader("binary_little_endian", 1000000000, 1) + std::string(64, '\0'));
+  folder.write("badindex.ply", plyHeader("ascii", 3, 1) + "0 0 0 0 0\n1 0 0 0 0\n0 1 0 0 0\n3 0 1 7\n");
+  folder.write("bomb.ply.gz", "not gzip at all");
+  for (const char* name : {"huge.ply", "badindex.ply", "bomb.ply.gz"}) {
+    std::string scenePath = folder.write("scene.pbrt", std::string("WorldBegin\nShape \"plymesh\" \"string filename\" \"") +
+                                                           name + "\"\n");
+    LoadWarnings warnings;
+    try {
+      loadPbrt(scenePath, warnings);
+      ADD_FAILURE() << name << " loaded";
+    } catch (const LoadError& e) {
+      EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(PbrtLoader, IncludesAreConfinedAndBounded) {
+  TempFolder folder;
+  folder.write("parts/geometry.pbrt", kTriangle);
+  std::string main = folder.write("main.pbrt", std::string(kMirroredCamera) + "Include \"parts/geometry.pbrt\"\n"
+                                                                              "Import \"parts/geometry.pbrt\"\n");
+  LoadWarnings warnings;
+  Scene scene = loadPbrt(main, warnings);
+  EXPECT_EQ(scene.instances.size(), 2u);
+  EXPECT_EQ(scene.inputFiles.size(), 2u);  // the scene and the included file, once
+  std::string self = folder.write("self.pbrt", "Include \"self.pbrt\"\n");
+  try {
+    loadPbrt(self, warnings);
+    ADD_FAILURE() << "a file including itself loaded";
+  } catch (const LoadError& e) {
+    EXPECT_NE(std::string(e.what()).find("deep"), std::string::npos) << e.what();
+  }
+  std::string outside = folder.write("out.pbrt", "Include \"../../etc/passwd\"\n");
+  try {
+    loadPbrt(outside, warnings);
+    ADD_FAILURE() << "an include outside the scene's folder was read";
+  } catch (const LoadError& e) {
+    EXPECT_NE(std::string(e.what()).find("out.pbrt:1:"), std::string::npos) << e.what();
+  }
+}
+
+TEST(PbrtSpectra, ConversionsToRgb) {
+  Vec3 d65ish = blackbodyRgb(6504.0f);
+  EXPECT_NEAR(luminance(d65ish), 1.0f, 0.01f);
+  EXPECT_NEAR(d65ish.x / d65ish.z, 1.0f, 0.15f);  // a blackbody near 6500 K is close to sRGB's white
+  expectNear(sampledSpectrumRgb({400, 0.5, 700, 0.5}), {0.5f, 0.5f, 0.5f}, 1e-3f);
+  Vec3 red = sampledSpectrumRgb({400, 0, 590, 0, 610, 1, 700, 1});
+  EXPECT_GT(red.x, 5.0f * red.z);
+  expectNear(*namedSpectrumRgb("stdillum-D65"), {1, 1, 1});
+  EXPECT_FALSE(namedSpectrumRgb("no-such-spectrum"));
+  expectNear(conductorReflectance({1.5f, 1.5f, 1.5f}, {0, 0, 0}), {0.04f, 0.04f, 0.04f});
+}
+
+TEST(PbrtLights, EqualAreaOctahedralMapping) {
+  Vec2 up = equalAreaSphereToSquare({0, 0, 1});
+  EXPECT_FLOAT_EQ(up.x, 0.5f);
+  EXPECT_FLOAT_EQ(up.y, 0.5f);
+  Vec2 x = equalAreaSphereToSquare({1, 0, 0});
+  EXPECT_FLOAT_EQ(x.x, 1.0f);
+  EXPECT_FLOAT_EQ(x.y, 0.5f);
+  Vec2 down = equalAreaSphereToSquare({0, 0, -1});
+  EXPECT_FLOAT_EQ(down.x, 1.0f);
+  EXPECT_FLOAT_EQ(down.y, 1.0f);
+}
+
+// A square PFM whose centre (pbrt's +z in the octahedral layout) is red and whose corners (-z) are blue.
+std::string octahedralPfm(int size) {
+  std::string out = "PF\n" + std::to_string(size) + " " + std::to_string(size) + "\n-1.0\n";
+  for (int row = 0; row < size; ++row)
+    for (int column = 0; column < size; ++column) {
+      float u = (float(column) + 0.5f) / float(size) * 2 - 1, v = (float(row) + 0.5f) / float(size) * 2 - 1;
+      bool upper = std::fabs(u) + std::fabs(v) < 1.0f;
+      float rgb[3] = {upper ? 1.0f : 0.0f, 0.0f, upper ? 0.0f : 1.0f};
+      out.append(reinterpret_cast<const char*>(rgb), sizeof(rgb));
+    }
+  return out;
+}
+
+TEST(PbrtLights, OctahedralMapsBecomeEquirectangularThroughTheLightTransform) {
+  TempFolder folder;
+  folder.write("sky.pfm", octahedralPfm(64));
+  // Rotate -90 about x takes the light's +z to world +y: the red hemisphere must end up above.
+  std::string path = folder.write("scene.pbrt", std::string(kMirroredCamera) +
+                                                    "AttributeBegin\nRotate -90 1 0 0\nLightSource \"infinite\" "
+                                                    "\"string filename\" \"sky.pfm\"\nAttributeEnd\n");
+  LoadWarnings warnings;
+  Scene scene = loadPbrt(path, warnings);
+  ASSERT_TRUE(scene.environment.hasMap());
+  const Texture& map = scene.environment.map;
+  auto texel = [&](uint32_t row, uint32_t column) {
+    const float* p = map.floats.data() + (size_t(row) * map.width + column) * map.channels;
+    return Vec3{p[0], p[1], p[2]};
+  };
+  EXPECT_GT(texel(2, map.width / 2).x, 0.9f);               // near the zenith
+  EXPECT_GT(texel(map.height - 3, map.width / 2).z, 0.9f);  // near the nadir
+}
+
+// The built-in Cornell box written out as a pbrt scene (in pbrt's customary mirrored camera frame) renders as
+// the built-in one does.
+std::string cornellBoxAsPbrt() {
+  Scene box = makeCornellBox();
+  std::ostringstream out;
+  out.precision(9);
+  Vec3 e = box.camera.eye, t = box.camera.target, u = box.camera.up;
+  out << "Film \"rgb\" \"integer xresolution\" 48 \"integer yresolution\" 48\n";
+  out << "Scale -1 1 1\nLookAt " << e.x << ' ' << e.y << ' ' << e.z << ' ' << t.x << ' ' << t.y << ' ' << t.z << ' '
+      << u.x << ' ' << u.y << ' ' << u.z << "\n";
+  out << "Camera \"perspective\" \"float fov\" " << box.camera.verticalFovDegrees << "\nWorldBegin\n";
+  const Mesh& room = box.meshes[0];
+  for (uint32_t id = 0; id < box.materials.size(); ++id) {
+    const Material& m = box.materials[id];
+    out << "AttributeBegin\nMaterial \"diffuse\" \"rgb reflectance\" [" << m.baseColor.x << ' ' << m.baseColor.y
+        << ' ' << m.baseColor.z << "]\n";
+    if (!isBlack(m.emission))
+      out << "AreaLightSource \"diffuse\" \"rgb L\" [" << m.emission.x << ' ' << m.emission.y << ' ' << m.emission.z
+          << "]\n";
+    out << "Shape \"trianglemesh\" \"point3 P\" [";
+    uint32_t count = 0;
+    for (size_t tri = 0; tri < room.triangleCount(); ++tri) {
+      if (room.triangleMaterials[tri] != id) continue;
+      for (int k = 0; k < 3; ++k) {
+        Vec3 p = room.positions[room.indices[3 * tri + k]];
+        out << p.x << ' ' << p.y << ' ' << p.z << ' ';
+      }
+      ++count;
+    }
+    out << "] \"integer indices\" [";
+    for (uint32_t i = 0; i < 3 * count; ++i) out << i << ' ';
+    out << "]\nAttributeEnd\n";
+  }
+  return out.str();
+}
+
+TEST(PbrtLoader, CornellBoxRendersLikeTheBuiltInOne) {
+  TempFolder folder;
+  std::string path = folder.write("cornell.pbrt", cornellBoxAsPbrt());
+  RenderJob job;
+  job.settings.width = 48;
+  job.settings.height = 48;
+  job.given.width = job.given.height = job.given.samplesPerPixel = job.given.maxDepth = true;
+  job.samplesPerPixel = 64;
+  job.backend = "cpu";
+  Scene fromPbrt = loadScene(path, {});
+  EXPECT_EQ(*fromPbrt.renderHints.width, 48u);
+  RenderOutcome pbrt = renderLoadedScene(job, fromPbrt, false);
+  RenderOutcome builtin = renderLoadedScene(job, loadScene("cornell-box", {}), false);
+  // Compare the means of the four quadrants: the red wall is on the left, the green one on the right.
+  auto quadrant = [](const Image& image, int qx, int qy) {
+    Vec3 sum{0, 0, 0};
+    int n = 0;
+    for (uint32_t y = 0; y < image.height; ++y)
+      for (uint32_t x = 0; x < image.width; ++x)
+        if (int(2 * x / image.width) == qx && int(2 * y / image.height) == qy) {
+          sum += image.pixels[size_t(y) * image.width + x];
+          ++n;
+        }
+    return sum / float(n);
+  };
+  for (int qy = 0; qy < 2; ++qy)
+    for (int qx = 0; qx < 2; ++qx) {
+      Vec3 a = quadrant(pbrt.image, qx, qy), b = quadrant(builtin.image, qx, qy);
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[c], b[c], 0.05f * b[c] + 0.002f) << "quadrant " << qx << ',' << qy;
+    }
+  EXPECT_GT(quadrant(pbrt.image, 0, 1).x, quadrant(pbrt.image, 1, 1).x);  // red wall on the left
+}
+
+}  // namespace
+}  // namespace candela
