@@ -185,6 +185,27 @@ TEST(PbrtLoader, MaterialsMapOntoCandelasModels) {
   EXPECT_EQ(materialOf(5).opacity, 0.0f);
 }
 
+TEST(PbrtLoader, PbrtV3MaterialsByTheirColours) {
+  Scene scene = loadText(std::string(kMirroredCamera) + "Material \"matte\" \"color Kd\" [0.2 0.3 0.4]\n" + kTriangle +
+                         "Material \"glass\" \"float index\" 1.33\n" + kTriangle +
+                         "Material \"mirror\" \"rgb Kr\" [0.5 0.5 0.5]\n" + kTriangle);
+  auto materialOf = [&](size_t i) { return scene.materials[scene.meshes[i].triangleMaterials[0]]; };
+  EXPECT_EQ(materialOf(0).type, MaterialType::Diffuse);
+  expectNear(materialOf(0).baseColor, {0.2f, 0.3f, 0.4f});
+  EXPECT_EQ(materialOf(1).type, MaterialType::Glass);
+  EXPECT_NEAR(materialOf(1).ior, 1.33f, 1e-5f);
+  EXPECT_EQ(materialOf(2).type, MaterialType::Mirror);
+  expectNear(materialOf(2).specularColor, {0.5f, 0.5f, 0.5f});
+}
+
+TEST(PbrtLoader, RenderSettingsAreBounded) {
+  Scene scene = loadText("Film \"rgb\" \"integer xresolution\" 100000 \"integer yresolution\" 0\n"
+                         "Integrator \"path\" \"integer maxdepth\" 100000\nWorldBegin\n");
+  EXPECT_EQ(*scene.renderHints.width, 16384u);
+  EXPECT_EQ(*scene.renderHints.height, 1u);
+  EXPECT_EQ(*scene.renderHints.maxDepth, 1024u);
+}
+
 TEST(PbrtLoader, NamedAndMixedMaterials) {
   std::string text = std::string(kMirroredCamera) +
                      "MakeNamedMaterial \"red\" \"string type\" \"diffuse\" \"rgb reflectance\" [1 0 0]\n"

@@ -18,6 +18,7 @@
 #include "scene/loaders/pbrt_textures.h"
 #include "scene/loaders/pbrt_tokenizer.h"
 #include "scene/loaders/pbrt_transforms.h"
+#include "scene/scene_repair.h"
 #include "scene/transform.h"
 
 namespace candela {
@@ -27,8 +28,10 @@ namespace {
 // Bounds on what a scene may ask for, so that a hostile file cannot recurse or multiply without end.
 constexpr int kMaxIncludeDepth = 32;
 constexpr size_t kMaxIncludedFiles = 4096;
-constexpr size_t kMaxInstances = size_t(1) << 24;
 constexpr size_t kMaxAttributeDepth = 4096;
+// Triangles the loader makes beyond those the files hold (tessellated quadrics, subdivision): a line of text
+// that asks for a sphere yields thousands, so they are bounded apart from the file sizes.
+constexpr size_t kMaxGeneratedTriangles = size_t(1) << 25;
 
 struct GraphicsState {
   glm::mat4 ctm{1.0f};
@@ -74,8 +77,9 @@ class PbrtReader {
   Scene finish() {
     if (!worldBegun_) chooseWorldMirror();
     Scene& scene = context_.scene;
-    uint32_t width = uint32_t(std::clamp(film_ ? film_->getInt("xresolution", 1280) : 1280, 1, 1 << 15));
-    uint32_t height = uint32_t(std::clamp(film_ ? film_->getInt("yresolution", 720) : 720, 1, 1 << 15));
+    // The same ranges as a JSON scene file's render settings (scene_file.cpp).
+    uint32_t width = uint32_t(std::clamp(film_ ? film_->getInt("xresolution", 1280) : 1280, 1, 16384));
+    uint32_t height = uint32_t(std::clamp(film_ ? film_->getInt("yresolution", 720) : 720, 1, 16384));
     scene.renderHints.width = width;
     scene.renderHints.height = height;
     if (camera_) {
@@ -213,11 +217,11 @@ class PbrtReader {
         readString(tokens, d);
         PbrtParameters p = parsePbrtParameters(tokens);
         int samples = p.getInt("pixelsamples", 16);
-        if (samples > 0) samplerSamples_ = uint32_t(samples);
+        if (samples > 0) samplerSamples_ = uint32_t(std::min(samples, 1 << 24));
       } else if (d == "Integrator") {
         std::string type = readString(tokens, d);
         PbrtParameters p = parsePbrtParameters(tokens);
-        maxDepth_ = uint32_t(std::clamp(p.getInt("maxdepth", 5), 0, 1 << 16));
+        maxDepth_ = uint32_t(std::clamp(p.getInt("maxdepth", 5), 1, 1024));
         if (type != "path" && type != "volpath")
           context_.warn("integrator", "integrator '" + type + "' is rendered with candela's path tracer");
       } else if (d == "PixelFilter") {
@@ -340,6 +344,12 @@ class PbrtReader {
     std::optional<Mesh> shape = makePbrtShape(type, params, inputs);
     if (!shape) return;
     Mesh& mesh = *shape;
+    if (type == "sphere" || type == "disk" || type == "cylinder" || type == "loopsubdiv") {
+      generatedTriangles_ += mesh.triangleCount();
+      if (generatedTriangles_ > kMaxGeneratedTriangles)
+        failLoad(params.file, params.line, "the scene's quadrics and subdivision surfaces make more than " +
+                                               std::to_string(kMaxGeneratedTriangles) + " triangles");
+    }
     mesh.name = "pbrt " + type;
     // Orientation: the front of a shape follows its normals when it has them, else its winding; each
     // negated by ReverseOrientation (pbrt-v4's rule; candela's instances keep the object-space front).
@@ -440,6 +450,7 @@ class PbrtReader {
   bool worldBegun_ = false, mirrorX_ = true, activeEndOnly_ = false, environmentSet_ = false, textOnly_ = false;
   glm::mat4 worldFromPbrt_{1.0f};
   size_t includedFiles_ = 0;
+  size_t generatedTriangles_ = 0;
 };
 
 }  // namespace

@@ -131,6 +131,27 @@ Material PbrtMaterials::translate(const std::string& type, const PbrtParameters&
   } else if (type == "interface" || type.empty() || type == "none") {
     m.alphaMode = AlphaMode::Mask;
     m.opacity = 0.0f;  // an invisible boundary of participating media, which candela does not render
+  } else if (type == "matte" || type == "plastic" || type == "uber" || type == "substrate" || type == "translucent") {
+    // pbrt-v3's materials, by their diffuse colour; plastic with its specular layer as coateddiffuse does.
+    colour("Kd", {0.5f, 0.5f, 0.5f});
+    if (type == "plastic") {
+      m.type = MaterialType::Pbr;
+      m.roughness = candelaRoughness(params, "", 0.1f);
+    } else if (type != "matte") {
+      context_.warn("material " + type, "pbrt-v3's '" + type + "' material is rendered as diffuse 'Kd'");
+    }
+  } else if (type == "mirror") {
+    m.type = MaterialType::Mirror;
+    m.specularColor = params.getColor("Kr").value_or(PbrtColor{{0.9f, 0.9f, 0.9f}}).rgb;
+  } else if (type == "glass") {
+    m.type = MaterialType::Glass;
+    m.baseColor = {1, 1, 1};
+    m.ior = scalarIor(params, "index", scalarIor(params, "eta", 1.5f));
+  } else if (type == "metal") {
+    m.type = MaterialType::Pbr;
+    m.metallic = 1.0f;
+    m.baseColor = conductorF0("");
+    m.roughness = candelaRoughness(params, "", 0.01f);
   } else {
     colour("reflectance", {0.5f, 0.5f, 0.5f});
     context_.warn("material " + type, "'" + type + "' materials are not supported: rendered as diffuse");
