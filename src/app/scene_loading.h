@@ -9,15 +9,15 @@ namespace candela {
 
 struct SceneLoadOptions {
   std::string environmentPath;  // an .hdr or .exr map that replaces the scene's environment; empty: keep it
-  SceneCacheSettings cache = {};  // for the models (.obj, .gltf, .glb), also those a scene file names
+  SceneCacheSettings cache = {};  // for the models (.obj, .gltf, .glb, .pbrt), also those a scene file names
   // Whether models and scene files may refer to files outside their folders (path_confinement.h). Models are
   // then loaded afresh: the scene cache holds only what loads under the default rule.
   OutsidePaths outsidePaths = OutsidePaths::Refused;
 };
 
-// A built-in scene name or a scene file (.obj, .gltf, .glb, .json), chosen by extension, repaired (repairScene:
-// unusable triangles and instances dropped, radiance clamped, the camera checked). Warnings go to stderr,
-// one line each. A scene without a camera gets one that frames its bounds. Throws std::runtime_error with one
+// A built-in scene name or a scene file (.obj, .gltf, .glb, .pbrt, .json), chosen by extension, repaired
+// (repairScene: unusable triangles and instances dropped, radiance clamped, the camera checked). Warnings go to
+// stderr, one line each. A scene without a camera gets one that frames its bounds. Throws std::runtime_error with one
 // line naming the file on failure, running out of memory included.
 Scene loadScene(const std::string& spec, const SceneLoadOptions& options = {});
 

@@ -1,5 +1,6 @@
-#include <gtest/gtest.h>
+#include "scene/loaders/pbrt_loader.h"
 
+#include <gtest/gtest.h>
 #include <zlib.h>
 
 #include <cmath>
@@ -11,7 +12,6 @@
 #include "scene/builtin_scenes.h"
 #include "scene/loaders/load_diagnostics.h"
 #include "scene/loaders/pbrt_lights.h"
-#include "scene/loaders/pbrt_loader.h"
 #include "scene/loaders/pbrt_spectra.h"
 #include "scene/loaders/pbrt_tokenizer.h"
 #include "scene/scene_test_files.h"
@@ -81,8 +81,9 @@ TEST(PbrtLoader, ErrorsNameFileAndLine) {
             "test.pbrt:2: 'x' is not a number (value of 'radius')");
   EXPECT_EQ(loadError("WorldBegin\nMaterial \"diffuse\n\""), "test.pbrt:2: line break inside a string");
   EXPECT_EQ(loadError("AttributeEnd\n"), "test.pbrt:1: AttributeEnd without a matching begin");
-  EXPECT_EQ(loadError("WorldBegin\nShape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" [0 1 3]"),
-            "test.pbrt:2: 'indices' refers to vertex 3 of 3");
+  EXPECT_EQ(
+      loadError("WorldBegin\nShape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" [0 1 3]"),
+      "test.pbrt:2: 'indices' refers to vertex 3 of 3");
 }
 
 TEST(PbrtLoader, TransformsApplyInPbrtsOrder) {
@@ -92,7 +93,8 @@ TEST(PbrtLoader, TransformsApplyInPbrtsOrder) {
   expectNear(scene.instances[0].objectToWorld.point({1, 0, 0}), {3, 0, 0});
   Scene rotated = loadText(std::string(kMirroredCamera) + "Rotate 90 0 0 1\nTranslate 1 0 0\n" + kTriangle);
   expectNear(rotated.instances[0].objectToWorld.point({0, 0, 0}), {0, 1, 0});
-  Scene matrix = loadText(std::string(kMirroredCamera) + "Transform [1 0 0 0  0 1 0 0  0 0 1 0  5 6 7 1]\n" + kTriangle);
+  Scene matrix =
+      loadText(std::string(kMirroredCamera) + "Transform [1 0 0 0  0 1 0 0  0 0 1 0  5 6 7 1]\n" + kTriangle);
   expectNear(matrix.instances[0].objectToWorld.point({0, 0, 0}), {5, 6, 7});
   Scene attributes = loadText(std::string(kMirroredCamera) + "AttributeBegin\nTranslate 9 0 0\nAttributeEnd\n" +
                               "TransformBegin\nTranslate 9 0 0\nTransformEnd\n" + kTriangle);
@@ -104,33 +106,39 @@ TEST(PbrtLoader, TransformsApplyInPbrtsOrder) {
 
 TEST(PbrtLoader, LeftHandedCameraMirrorsTheWorldSoTheImageIsNotMirrored) {
   // pbrt's LookAt puts world +x on the right of the image for a camera looking down +z with +y up.
-  Scene scene = loadText("LookAt 0 0 0  0 0 1  0 1 0\nCamera \"perspective\" \"float fov\" 60\nWorldBegin\n"
-                         "Translate 1 0 5\n" + std::string(kTriangle));
+  Scene scene = loadText(
+      "LookAt 0 0 0  0 0 1  0 1 0\nCamera \"perspective\" \"float fov\" 60\nWorldBegin\n"
+      "Translate 1 0 5\n" +
+      std::string(kTriangle));
   Vec3 p = scene.instances[0].objectToWorld.point({0, 0, 0});
   Vec3 forward = normalize(scene.camera.target - scene.camera.eye);
   Vec3 right = cross(forward, scene.camera.up);  // candela's image right (Camera::lookAt)
   EXPECT_GT(dot(p - scene.camera.eye, right), 0.5f);
   EXPECT_FLOAT_EQ(scene.camera.verticalFovDegrees, 60.0f);
   // The same scene after pbrt's customary `Scale -1 1 1`: +x is now on the left.
-  Scene flipped = loadText("Scale -1 1 1\nLookAt 0 0 0  0 0 1  0 1 0\nCamera \"perspective\"\nWorldBegin\n"
-                           "Translate 1 0 5\n" + std::string(kTriangle));
+  Scene flipped = loadText(
+      "Scale -1 1 1\nLookAt 0 0 0  0 0 1  0 1 0\nCamera \"perspective\"\nWorldBegin\n"
+      "Translate 1 0 5\n" +
+      std::string(kTriangle));
   Vec3 q = flipped.instances[0].objectToWorld.point({0, 0, 0});
   Vec3 f2 = normalize(flipped.camera.target - flipped.camera.eye);
   EXPECT_LT(dot(q - flipped.camera.eye, cross(f2, flipped.camera.up)), -0.5f);
 }
 
 TEST(PbrtLoader, FieldOfViewSpansTheShorterImageAxis) {
-  Scene portrait = loadText("Film \"rgb\" \"integer xresolution\" 100 \"integer yresolution\" 200\n"
-                            "Camera \"perspective\" \"float fov\" 90\nWorldBegin\n");
+  Scene portrait = loadText(
+      "Film \"rgb\" \"integer xresolution\" 100 \"integer yresolution\" 200\n"
+      "Camera \"perspective\" \"float fov\" 90\nWorldBegin\n");
   EXPECT_NEAR(portrait.camera.verticalFovDegrees, 2.0f * std::atan(2.0f) * 180.0f / kPi, 1e-3f);
   EXPECT_EQ(*portrait.renderHints.width, 100u);
   EXPECT_EQ(*portrait.renderHints.height, 200u);
 }
 
 TEST(PbrtLoader, SamplerAndIntegratorBecomeRenderHints) {
-  Scene scene = loadText("Sampler \"zsobol\" \"integer pixelsamples\" 256\nIntegrator \"volpath\" "
-                         "\"integer maxdepth\" 12\nCamera \"perspective\" \"float lensradius\" 0.1 "
-                         "\"float focaldistance\" 3\nWorldBegin\n");
+  Scene scene = loadText(
+      "Sampler \"zsobol\" \"integer pixelsamples\" 256\nIntegrator \"volpath\" "
+      "\"integer maxdepth\" 12\nCamera \"perspective\" \"float lensradius\" 0.1 "
+      "\"float focaldistance\" 3\nWorldBegin\n");
   EXPECT_EQ(*scene.renderHints.samplesPerPixel, 256u);
   EXPECT_EQ(*scene.renderHints.maxDepth, 12u);
   EXPECT_FLOAT_EQ(scene.camera.apertureRadius, 0.1f);
@@ -146,8 +154,9 @@ TEST(PbrtLoader, ReverseOrientationTurnsTheFront) {
   Scene mirrored = loadText(std::string("WorldBegin\n") + kTriangle);
   EXPECT_GT(windingNormal(mirrored, 0, 0).z, 0.0f);
   // With normals the front follows the normals.
-  Scene withNormals = loadText(std::string(kMirroredCamera) +
-                               "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"normal N\" [0 0 -1 0 0 -1 0 0 -1]");
+  Scene withNormals =
+      loadText(std::string(kMirroredCamera) +
+               "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"normal N\" [0 0 -1 0 0 -1 0 0 -1]");
   EXPECT_LT(windingNormal(withNormals, 0, 0).z, 0.0f);
 }
 
@@ -161,13 +170,13 @@ TEST(PbrtLoader, ObjectInstancesShareTheirMeshes) {
 }
 
 TEST(PbrtLoader, MaterialsMapOntoCandelasModels) {
-  Scene scene = loadText(std::string(kMirroredCamera) +
-                         "Material \"diffuse\" \"rgb reflectance\" [0.1 0.2 0.3]\n" + kTriangle +
-                         "Material \"conductor\" \"spectrum eta\" \"metal-Au-eta\" \"spectrum k\" \"metal-Au-k\"\n" +
-                         kTriangle + "Material \"conductor\" \"float roughness\" 0.01\n" + kTriangle +
-                         "Material \"dielectric\" \"spectrum eta\" \"glass-BK7\"\n" + kTriangle +
-                         "Material \"coateddiffuse\" \"rgb reflectance\" [0.5 0.5 0.5] \"float roughness\" 0\n" +
-                         kTriangle + "Material \"interface\"\n" + kTriangle);
+  Scene scene =
+      loadText(std::string(kMirroredCamera) + "Material \"diffuse\" \"rgb reflectance\" [0.1 0.2 0.3]\n" + kTriangle +
+               "Material \"conductor\" \"spectrum eta\" \"metal-Au-eta\" \"spectrum k\" \"metal-Au-k\"\n" + kTriangle +
+               "Material \"conductor\" \"float roughness\" 0.01\n" + kTriangle +
+               "Material \"dielectric\" \"spectrum eta\" \"glass-BK7\"\n" + kTriangle +
+               "Material \"coateddiffuse\" \"rgb reflectance\" [0.5 0.5 0.5] \"float roughness\" 0\n" + kTriangle +
+               "Material \"interface\"\n" + kTriangle);
   auto materialOf = [&](size_t i) { return scene.materials[scene.meshes[i].triangleMaterials[0]]; };
   EXPECT_EQ(materialOf(0).type, MaterialType::Diffuse);
   expectNear(materialOf(0).baseColor, {0.1f, 0.2f, 0.3f});
@@ -199,8 +208,9 @@ TEST(PbrtLoader, PbrtV3MaterialsByTheirColours) {
 }
 
 TEST(PbrtLoader, RenderSettingsAreBounded) {
-  Scene scene = loadText("Film \"rgb\" \"integer xresolution\" 100000 \"integer yresolution\" 0\n"
-                         "Integrator \"path\" \"integer maxdepth\" 100000\nWorldBegin\n");
+  Scene scene = loadText(
+      "Film \"rgb\" \"integer xresolution\" 100000 \"integer yresolution\" 0\n"
+      "Integrator \"path\" \"integer maxdepth\" 100000\nWorldBegin\n");
   EXPECT_EQ(*scene.renderHints.width, 16384u);
   EXPECT_EQ(*scene.renderHints.height, 1u);
   EXPECT_EQ(*scene.renderHints.maxDepth, 1024u);
@@ -230,8 +240,8 @@ TEST(PbrtLoader, AreaLightsEmitFromTheirShapes) {
   expectNear(scene.materials[scene.meshes[0].triangleMaterials[0]].emission, {2, 4, 6});
   EXPECT_TRUE(isBlack(scene.materials[scene.meshes[1].triangleMaterials[0]].emission));
   // Two-sided lights emit from both faces: each triangle is there twice, once per winding.
-  Scene twoSided = loadText(std::string(kMirroredCamera) + "AreaLightSource \"diffuse\" \"bool twosided\" true\n" +
-                            kTriangle);
+  Scene twoSided =
+      loadText(std::string(kMirroredCamera) + "AreaLightSource \"diffuse\" \"bool twosided\" true\n" + kTriangle);
   EXPECT_EQ(twoSided.meshes[0].triangleCount(), 2u);
   // `power` sets the radiance: phi = pi * area * L for a one-sided emitter of luminance L.
   Scene power = loadText(std::string(kMirroredCamera) + "AreaLightSource \"diffuse\" \"float power\" 10\n" + kTriangle);
@@ -256,7 +266,8 @@ TEST(PbrtLoader, UnsupportedFeaturesWarnOncePerFeature) {
   Scene scene = loadText(std::string(kMirroredCamera) +
                              "Shape \"curve\" \"point3 P\" [0 0 0 1 1 1 2 2 2 3 3 3]\nShape \"curve\" \"point3 P\" "
                              "[0 0 0 1 1 1 2 2 2 3 3 3]\nLightSource \"point\" \"rgb I\" [1 1 1]\n"
-                             "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n" + kTriangle,
+                             "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n" +
+                             kTriangle,
                          &warnings);
   EXPECT_EQ(scene.meshes.size(), 1u);
   int curveWarnings = 0, pointWarnings = 0, mediaWarnings = 0;
@@ -270,11 +281,63 @@ TEST(PbrtLoader, UnsupportedFeaturesWarnOncePerFeature) {
   EXPECT_EQ(mediaWarnings, 1);
 }
 
+TEST(PbrtLoader, ParametersNotAppliedAreNamed) {
+  LoadWarnings warnings;
+  loadText(std::string(kMirroredCamera) + "Material \"coateddiffuse\" \"float thickness\" 0.1\n" + kTriangle +
+               "Material \"coateddiffuse\" \"float thickness\" 0.2\n" + kTriangle,
+           &warnings);
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_EQ(warnings.messages[0], "test.pbrt: material 'coateddiffuse': parameter 'thickness' is not applied");
+}
+
+TEST(PbrtLoader, ImageTexturesWithTheirUvMapping) {
+  TempFolder folder;
+  folder.write("grey.pfm", std::string("Pf\n2 1\n-1.0\n") + std::string("\0\0\0\x3f\0\0\x80\x3f", 8));
+  std::string path = folder.write(
+      "scene.pbrt", std::string(kMirroredCamera) +
+                        "Texture \"t\" \"spectrum\" \"imagemap\" \"string filename\" \"grey.pfm\" "
+                        "\"float uscale\" 2 \"float vscale\" 4 \"float scale\" 0.5\n"
+                        "Texture \"a\" \"float\" \"imagemap\" \"string filename\" \"grey.pfm\"\n"
+                        "Material \"diffuse\" \"texture reflectance\" \"t\"\n"
+                        "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"point2 uv\" [0 0 1 0 0 1] "
+                        "\"texture alpha\" \"a\"\n");
+  LoadWarnings warnings;
+  Scene scene = loadPbrt(path, warnings);
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages.front();
+  ASSERT_EQ(scene.textures.size(), 1u);  // one image, read once
+  EXPECT_EQ(scene.textures[0].width, 2u);
+  EXPECT_FLOAT_EQ(scene.textures[0].floats[1], 1.0f);
+  const Material& m = scene.materials[scene.meshes[0].triangleMaterials[0]];
+  EXPECT_EQ(m.baseColorTexture, 0);
+  expectNear(m.baseColor, {0.5f, 0.5f, 0.5f});
+  EXPECT_EQ(m.opacityTexture, 0);
+  EXPECT_EQ(m.alphaMode, AlphaMode::Blend);
+  // pbrt's (u, v) = (1, 0) through uscale 2: u' = 2; v' = 0 is the bottom of the image, candela's v = 1.
+  const Mesh& mesh = scene.meshes[0];
+  ASSERT_EQ(mesh.uvs.size(), 3u);
+  EXPECT_FLOAT_EQ(mesh.uvs[1].x, 2.0f);
+  EXPECT_FLOAT_EQ(mesh.uvs[1].y, 1.0f);
+  EXPECT_FLOAT_EQ(mesh.uvs[2].y, 1.0f - 4.0f);
+}
+
+TEST(PbrtLoader, SceneCacheNoticesChangedIncludes) {
+  TempFolder folder;
+  folder.write("part.pbrt", kTriangle);
+  std::string main = folder.write("main.pbrt", std::string(kMirroredCamera) + "Include \"part.pbrt\"\n");
+  SceneLoadOptions options;
+  options.cache = {true, folder.file("cache")};
+  EXPECT_EQ(loadScene(main, options).triangleCount(), 1u);
+  EXPECT_EQ(loadScene(main, options).triangleCount(), 1u);  // from the cache
+  folder.write("part.pbrt", std::string(kTriangle) + kTriangle);
+  EXPECT_EQ(loadScene(main, options).triangleCount(), 2u);
+}
+
 TEST(PbrtLoader, QuadricsAreTessellatedOnTheirSurface) {
-  Scene scene = loadText(std::string(kMirroredCamera) + "Shape \"sphere\" \"float radius\" 2\n"
-                                                        "Shape \"disk\" \"float radius\" 1 \"float height\" 0.5\n"
-                                                        "Shape \"cylinder\" \"float radius\" 1 \"float zmin\" 0 "
-                                                        "\"float zmax\" 3\n");
+  Scene scene = loadText(std::string(kMirroredCamera) +
+                         "Shape \"sphere\" \"float radius\" 2\n"
+                         "Shape \"disk\" \"float radius\" 1 \"float height\" 0.5\n"
+                         "Shape \"cylinder\" \"float radius\" 1 \"float zmin\" 0 "
+                         "\"float zmax\" 3\n");
   ASSERT_EQ(scene.meshes.size(), 3u);
   for (size_t i = 0; i < scene.meshes[0].positions.size(); ++i) {
     EXPECT_NEAR(length(scene.meshes[0].positions[i]), 2.0f, 1e-4f);
@@ -310,7 +373,8 @@ TEST(PbrtLoader, BilinearMeshesAndLoopSubdivision) {
 std::string plyHeader(const std::string& format, int vertices, int faces) {
   return "ply\nformat " + format + " 1.0\ncomment test\nelement vertex " + std::to_string(vertices) +
          "\nproperty float x\nproperty float y\nproperty float z\nproperty float u\nproperty float v\n"
-         "element face " + std::to_string(faces) + "\nproperty list uchar int vertex_indices\nend_header\n";
+         "element face " +
+         std::to_string(faces) + "\nproperty list uchar int vertex_indices\nend_header\n";
 }
 
 // A unit quad: 4 vertices with texture coordinates and one face of 4 indices.
@@ -351,8 +415,8 @@ TEST(PbrtLoader, PlyMeshesInEveryEncoding) {
   folder.write("be.ply", binaryQuadPly(true));
   folder.write("packed.ply.gz", gzip(binaryQuadPly(false)));
   for (const char* name : {"ascii.ply", "le.ply", "be.ply", "packed.ply.gz"}) {
-    std::string scenePath = folder.write("scene.pbrt", std::string(kMirroredCamera) + "Shape \"plymesh\" \"string filename\" \"" +
-                                                           name + "\"\n");
+    std::string scenePath = folder.write(
+        "scene.pbrt", std::string(kMirroredCamera) + "Shape \"plymesh\" \"string filename\" \"" + name + "\"\n");
     LoadWarnings warnings;
     Scene scene = loadPbrt(scenePath, warnings);
     ASSERT_EQ(scene.meshes.size(), 1u) << name;
@@ -373,8 +437,8 @@ TEST(PbrtLoader, HostilePlyFilesAreRefused) {
   folder.write("badindex.ply", plyHeader("ascii", 3, 1) + "0 0 0 0 0\n1 0 0 0 0\n0 1 0 0 0\n3 0 1 7\n");
   folder.write("bomb.ply.gz", "not gzip at all");
   for (const char* name : {"huge.ply", "badindex.ply", "bomb.ply.gz"}) {
-    std::string scenePath = folder.write("scene.pbrt", std::string("WorldBegin\nShape \"plymesh\" \"string filename\" \"") +
-                                                           name + "\"\n");
+    std::string scenePath =
+        folder.write("scene.pbrt", std::string("WorldBegin\nShape \"plymesh\" \"string filename\" \"") + name + "\"\n");
     LoadWarnings warnings;
     try {
       loadPbrt(scenePath, warnings);
@@ -388,8 +452,9 @@ TEST(PbrtLoader, HostilePlyFilesAreRefused) {
 TEST(PbrtLoader, IncludesAreConfinedAndBounded) {
   TempFolder folder;
   folder.write("parts/geometry.pbrt", kTriangle);
-  std::string main = folder.write("main.pbrt", std::string(kMirroredCamera) + "Include \"parts/geometry.pbrt\"\n"
-                                                                              "Import \"parts/geometry.pbrt\"\n");
+  std::string main = folder.write("main.pbrt", std::string(kMirroredCamera) +
+                                                   "Include \"parts/geometry.pbrt\"\n"
+                                                   "Import \"parts/geometry.pbrt\"\n");
   LoadWarnings warnings;
   Scene scene = loadPbrt(main, warnings);
   EXPECT_EQ(scene.instances.size(), 2u);
@@ -447,6 +512,28 @@ std::string octahedralPfm(int size) {
   return out;
 }
 
+TEST(PbrtLights, OctahedralMapsFollowTheMirroredWorld) {
+  // A map whose pbrt +x half (u > 0.5 in the octahedral square) is red, under pbrt's default camera: the world
+  // is mirrored, so pbrt's +x is candela's -x, where candela's map has u = 0.25.
+  TempFolder folder;
+  std::string pfm = "PF\n16 16\n-1.0\n";
+  for (int row = 0; row < 16; ++row)
+    for (int column = 0; column < 16; ++column) {
+      float rgb[3] = {column >= 8 ? 1.0f : 0.0f, 0.0f, column >= 8 ? 0.0f : 1.0f};
+      pfm.append(reinterpret_cast<const char*>(rgb), sizeof(rgb));
+    }
+  folder.write("sky.pfm", pfm);
+  std::string path =
+      folder.write("scene.pbrt", "WorldBegin\nLightSource \"infinite\" \"string filename\" \"sky.pfm\"\n");
+  LoadWarnings warnings;
+  const Texture& map = loadPbrt(path, warnings).environment.map;
+  ASSERT_EQ(map.width, 32u);
+  const float* minusX = map.floats.data() + (size_t(map.height / 2) * map.width + map.width / 4) * 3;
+  const float* plusX = map.floats.data() + (size_t(map.height / 2) * map.width + 3 * map.width / 4) * 3;
+  EXPECT_GT(minusX[0], 0.9f);
+  EXPECT_GT(plusX[2], 0.9f);
+}
+
 TEST(PbrtLights, OctahedralMapsBecomeEquirectangularThroughTheLightTransform) {
   TempFolder folder;
   folder.write("sky.pfm", octahedralPfm(64));
@@ -480,8 +567,8 @@ std::string cornellBoxAsPbrt() {
   const Mesh& room = box.meshes[0];
   for (uint32_t id = 0; id < box.materials.size(); ++id) {
     const Material& m = box.materials[id];
-    out << "AttributeBegin\nMaterial \"diffuse\" \"rgb reflectance\" [" << m.baseColor.x << ' ' << m.baseColor.y
-        << ' ' << m.baseColor.z << "]\n";
+    out << "AttributeBegin\nMaterial \"diffuse\" \"rgb reflectance\" [" << m.baseColor.x << ' ' << m.baseColor.y << ' '
+        << m.baseColor.z << "]\n";
     if (!isBlack(m.emission))
       out << "AreaLightSource \"diffuse\" \"rgb L\" [" << m.emission.x << ' ' << m.emission.y << ' ' << m.emission.z
           << "]\n";

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/mat3x3.hpp>
 
 namespace candela {
@@ -11,8 +10,9 @@ bool pbrtWorldNeedsMirror(const glm::mat4& cameraFromWorld) {
   return glm::determinant(glm::mat3(cameraFromWorld)) >= 0.0f;
 }
 
-CameraDescription makePbrtCamera(const std::string& type, const PbrtParameters& params, const glm::mat4& cameraFromWorld,
-                                 uint32_t width, uint32_t height, bool mirrorX, PbrtContext& context) {
+CameraDescription makePbrtCamera(const std::string& type, const PbrtParameters& params,
+                                 const glm::mat4& cameraFromWorld, uint32_t width, uint32_t height, bool mirrorX,
+                                 PbrtContext& context) {
   if (type != "perspective")
     context.warn("camera " + type, "'" + type + "' cameras are drawn as perspective cameras of the same field of view");
   glm::mat4 worldFromCamera = glm::inverse(cameraFromWorld);

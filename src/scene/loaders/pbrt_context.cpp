@@ -17,6 +17,11 @@ void PbrtContext::warn(const std::string& feature, const std::string& what) {
   if (warnedFeatures.insert(feature).second) warnings.add(mainFile, what);
 }
 
+void PbrtContext::warnUnused(const std::string& directive, const PbrtParameters& params) {
+  for (const std::string& name : params.unused())
+    warn(directive + " " + name, directive + ": parameter '" + name + "' is not applied");
+}
+
 std::string PbrtContext::resolve(const std::string& reference, const std::string& file, size_t line) {
   if (!filesAllowed) failLoad(file, line, "'" + reference + "': a scene read from memory cannot refer to files");
   ResolvedPath resolved = resolveModelPath(baseFolder, reference, rule);

@@ -5,6 +5,7 @@
 
 #include "scene/loaders/load_diagnostics.h"
 #include "scene/loaders/path_confinement.h"
+#include "scene/loaders/pbrt_parameters.h"
 #include "scene/scene.h"
 
 namespace candela {
@@ -23,6 +24,8 @@ struct PbrtContext {
   PbrtContext(const std::string& file, LoadWarnings& w, OutsidePaths outside);
 
   void warn(const std::string& feature, const std::string& what);
+  // One warning for each parameter of `directive` (a shape, material, light... type) that was not applied.
+  void warnUnused(const std::string& directive, const PbrtParameters& params);
   // The file a scene refers to, confined to baseFolder's tree unless allowed otherwise, and recorded among the
   // scene's inputs. Throws LoadError naming `file:line` when the reference is refused.
   std::string resolve(const std::string& reference, const std::string& file, size_t line);

@@ -79,8 +79,9 @@ Environment makePbrtInfiniteLight(const PbrtParameters& params, const glm::mat4&
   Texture source = lowerCaseExtension(path) == ".pfm" ? readPfm(path) : loadEnvironmentImage(path);
   bool octahedral = source.width == source.height;
   if (!octahedral && source.width != 2 * source.height)
-    context.warn("infinite map layout", "environment map '" + file + "' is neither square (pbrt-v4's octahedral "
-                                        "layout) nor 2:1: read as equirectangular");
+    context.warn("infinite map layout", "environment map '" + file +
+                                            "' is neither square (pbrt-v4's octahedral "
+                                            "layout) nor 2:1: read as equirectangular");
   glm::mat4 lightFromWorld = glm::inverse(worldFromLight);
   Texture& map = env.map;
   map.name = path;

@@ -2,11 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/mat3x3.hpp>
 #include <map>
 #include <optional>
 #include <vector>
-
-#include <glm/mat3x3.hpp>
 
 #include "scene/loaders/file_bytes.h"
 #include "scene/loaders/pbrt_camera.h"
@@ -84,6 +83,7 @@ class PbrtReader {
     scene.renderHints.height = height;
     if (camera_) {
       scene.camera = makePbrtCamera(cameraType_, *camera_, cameraFromWorld_, width, height, mirrorX_, context_);
+      context_.warnUnused("camera '" + cameraType_ + "'", *camera_);
     } else {
       PbrtParameters none;
       none.file = context_.mainFile;
@@ -249,25 +249,37 @@ class PbrtReader {
         readFile(context_.resolve(file, tokens.file(), t.line), depth + 1);
       } else if (d == "Texture") {
         std::string name = readString(tokens, d), valueType = readString(tokens, d), className = readString(tokens, d);
-        textures_.define(name, valueType, className, parsePbrtParameters(tokens));
+        PbrtParameters params = parsePbrtParameters(tokens);
+        textures_.define(name, valueType, className, params);
+        context_.warnUnused("texture '" + className + "'", params);
       } else if (d == "Material") {
         std::string type = readString(tokens, d);
-        state_.material = materials_.make(type, parsePbrtParameters(tokens));
+        PbrtParameters params = parsePbrtParameters(tokens);
+        state_.material = materials_.make(type, params);
+        context_.warnUnused("material '" + type + "'", params);
       } else if (d == "MakeNamedMaterial") {
         std::string name = readString(tokens, d);
-        materials_.defineNamed(name, parsePbrtParameters(tokens));
+        PbrtParameters params = parsePbrtParameters(tokens);
+        materials_.defineNamed(name, params);
+        context_.warnUnused("material '" + params.getString("type", "") + "'", params);
       } else if (d == "NamedMaterial") {
         std::string name = readString(tokens, d);
         state_.material = materials_.named(name, tokens.file(), t.line);
       } else if (d == "LightSource") {
         std::string type = readString(tokens, d);
-        readLight(type, parsePbrtParameters(tokens));
+        PbrtParameters params = parsePbrtParameters(tokens);
+        readLight(type, params);
+        context_.warnUnused("light '" + type + "'", params);
       } else if (d == "AreaLightSource") {
         std::string type = readString(tokens, d);
-        state_.areaLight = makePbrtAreaLight(type, parsePbrtParameters(tokens), context_);
+        PbrtParameters params = parsePbrtParameters(tokens);
+        state_.areaLight = makePbrtAreaLight(type, params, context_);
+        context_.warnUnused("area light '" + type + "'", params);
       } else if (d == "Shape") {
         std::string type = readString(tokens, d);
-        readShape(type, parsePbrtParameters(tokens));
+        PbrtParameters params = parsePbrtParameters(tokens);
+        readShape(type, params);
+        context_.warnUnused("shape '" + type + "'", params);
       } else if (d == "ObjectBegin") {
         if (currentObject_) fail(tokens, t.line, "ObjectBegin inside the definition of '" + *currentObject_ + "'");
         if (stack_.size() >= kMaxAttributeDepth) fail(tokens, t.line, d + " nested too deep");
@@ -292,8 +304,10 @@ class PbrtReader {
 
   void readLight(const std::string& type, const PbrtParameters& params) {
     if (type != "infinite") {
-      context_.warn("light " + type, "'" + type + "' lights need delta lights, which candela does not have yet: left "
-                                                 "out");
+      params.markAllUsed();
+      context_.warn("light " + type, "'" + type +
+                                         "' lights need delta lights, which candela does not have yet: left "
+                                         "out");
       return;
     }
     if (!worldBegun_) chooseWorldMirror();
@@ -342,13 +356,17 @@ class PbrtReader {
     PbrtShapeInputs inputs{[&](const std::string& ref) { return context_.resolve(ref, params.file, params.line); },
                            [&](const std::string& feature, const std::string& what) { context_.warn(feature, what); }};
     std::optional<Mesh> shape = makePbrtShape(type, params, inputs);
-    if (!shape) return;
+    if (!shape) {
+      params.markAllUsed();
+      return;
+    }
     Mesh& mesh = *shape;
     if (type == "sphere" || type == "disk" || type == "cylinder" || type == "loopsubdiv") {
       generatedTriangles_ += mesh.triangleCount();
       if (generatedTriangles_ > kMaxGeneratedTriangles)
-        failLoad(params.file, params.line, "the scene's quadrics and subdivision surfaces make more than " +
-                                               std::to_string(kMaxGeneratedTriangles) + " triangles");
+        failLoad(params.file, params.line,
+                 "the scene's quadrics and subdivision surfaces make more than " +
+                     std::to_string(kMaxGeneratedTriangles) + " triangles");
     }
     mesh.name = "pbrt " + type;
     // Orientation: the front of a shape follows its normals when it has them, else its winding; each

@@ -45,7 +45,8 @@ PbrtMaterial PbrtMaterials::fallback() {
   return PbrtMaterial{{{*fallback_, 1.0f}}};
 }
 
-Material PbrtMaterials::translate(const std::string& type, const PbrtParameters& params, const PbrtTexture*& baseTexture) {
+Material PbrtMaterials::translate(const std::string& type, const PbrtParameters& params,
+                                  const PbrtTexture*& baseTexture) {
   Material m;
   auto colour = [&](const std::string& name, Vec3 fallbackValue) {
     baseTexture_ = textures_.value(params, name, fallbackValue);
@@ -123,8 +124,9 @@ Material PbrtMaterials::translate(const std::string& type, const PbrtParameters&
     m.specularColor = {1, 1, 1};
     m.alphaMode = AlphaMode::Blend;
     m.opacity = 2.0f * r / (1.0f + r);
-    context_.warn("material thindielectric", "'thindielectric' is rendered with its reflectance at normal incidence "
-                                             "at every angle");
+    context_.warn("material thindielectric",
+                  "'thindielectric' is rendered with its reflectance at normal incidence "
+                  "at every angle");
   } else if (type == "diffusetransmission") {
     colour("reflectance", {0.25f, 0.25f, 0.25f});
     context_.warn("material diffusetransmission", "'diffusetransmission' is rendered as diffuse reflection only");
@@ -154,6 +156,7 @@ Material PbrtMaterials::translate(const std::string& type, const PbrtParameters&
     m.roughness = candelaRoughness(params, "", 0.01f);
   } else {
     colour("reflectance", {0.5f, 0.5f, 0.5f});
+    params.markAllUsed();
     context_.warn("material " + type, "'" + type + "' materials are not supported: rendered as diffuse");
   }
   if (params.find("displacement")) context_.warn("displacement", "'displacement' is not applied");

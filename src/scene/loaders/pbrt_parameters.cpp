@@ -19,8 +19,8 @@ std::string canonicalType(const std::string& type) {
 }
 
 bool isKnownType(const std::string& type) {
-  for (const char* known : {"integer", "float", "point2", "vector2", "point3", "vector3", "normal3", "rgb",
-                            "spectrum", "blackbody", "string", "texture", "bool"})
+  for (const char* known : {"integer", "float", "point2", "vector2", "point3", "vector3", "normal3", "rgb", "spectrum",
+                            "blackbody", "string", "texture", "bool"})
     if (type == known) return true;
   return false;
 }
@@ -87,7 +87,7 @@ void PbrtParameters::fail(const std::string& what) const { failLoad(file, line, 
 const PbrtParameter* PbrtParameters::find(const std::string& name) const {
   for (const PbrtParameter& p : list)
     if (p.name == name) {
-      const_cast<PbrtParameter&>(p).used = true;  // lookups are logically const; `used` only feeds a warning
+      p.used = true;
       return &p;
     }
   return nullptr;
@@ -197,6 +197,10 @@ std::optional<std::string> PbrtParameters::getTexture(const std::string& name) c
   if (!p || p->type != "texture") return std::nullopt;
   if (p->strings.size() != 1) fail("'" + name + "' needs one texture name");
   return p->strings[0];
+}
+
+void PbrtParameters::markAllUsed() const {
+  for (const PbrtParameter& p : list) p.used = true;
 }
 
 std::vector<std::string> PbrtParameters::unused() const {

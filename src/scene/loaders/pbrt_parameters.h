@@ -17,7 +17,7 @@ struct PbrtParameter {
   std::string name;
   std::vector<double> numbers;
   std::vector<std::string> strings;
-  bool used = false;
+  mutable bool used = false;  // a lookup asked for it (lookups are const; this only feeds a warning)
 };
 
 // A colour a parameter gave: `rgb`, a named or sampled `spectrum`, or a `blackbody` temperature, turned into
@@ -49,8 +49,10 @@ class PbrtParameters {
   std::optional<PbrtColor> getColor(const std::string& name) const;
   // The texture a parameter names, when it is of type "texture".
   std::optional<std::string> getTexture(const std::string& name) const;
-  // Names of parameters no lookup asked for, for a warning.
+  // Names of parameters no lookup asked for: what the loader did not apply.
   std::vector<std::string> unused() const;
+  // For a directive left out as a whole (one warning says so): none of its parameters is reported on its own.
+  void markAllUsed() const;
 
   [[noreturn]] void fail(const std::string& what) const;
 };

@@ -57,15 +57,24 @@ T readAs(const uint8_t* at, tinyply::Type type) {
     return T(value);
   };
   switch (type) {
-    case tinyply::Type::INT8: return load(int8_t());
-    case tinyply::Type::UINT8: return load(uint8_t());
-    case tinyply::Type::INT16: return load(int16_t());
-    case tinyply::Type::UINT16: return load(uint16_t());
-    case tinyply::Type::INT32: return load(int32_t());
-    case tinyply::Type::UINT32: return load(uint32_t());
-    case tinyply::Type::FLOAT32: return load(float());
-    case tinyply::Type::FLOAT64: return load(double());
-    case tinyply::Type::INVALID: break;
+    case tinyply::Type::INT8:
+      return load(int8_t());
+    case tinyply::Type::UINT8:
+      return load(uint8_t());
+    case tinyply::Type::INT16:
+      return load(int16_t());
+    case tinyply::Type::UINT16:
+      return load(uint16_t());
+    case tinyply::Type::INT32:
+      return load(int32_t());
+    case tinyply::Type::UINT32:
+      return load(uint32_t());
+    case tinyply::Type::FLOAT32:
+      return load(float());
+    case tinyply::Type::FLOAT64:
+      return load(double());
+    case tinyply::Type::INVALID:
+      break;
   }
   return T();
 }
@@ -104,7 +113,8 @@ Mesh readPlyMesh(const std::string& path) {
     uint64_t needed = 0;
     for (const tinyply::PlyElement& e : ply.get_elements()) {
       uint64_t each = smallestElementBytes(e, ply.is_binary_file());
-      if (each > 0 && e.size > remaining / each) failLoad(path, "element '" + e.name + "' claims more data than the file has");
+      if (each > 0 && e.size > remaining / each)
+        failLoad(path, "element '" + e.name + "' claims more data than the file has");
       needed += e.size * each;
     }
     if (needed > remaining) failLoad(path, "its elements claim more data than the file has");
@@ -133,7 +143,8 @@ Mesh readPlyMesh(const std::string& path) {
     if (!uv.first) uv = requestPair("texture_u", "texture_v");
     if (!uv.first) uv = requestPair("texture_s", "texture_t");
     std::shared_ptr<tinyply::PlyData> faces;
-    if (face) faces = findProperty(*face, "vertex_indices") ? request(*face, "vertex_indices") : request(*face, "vertex_index");
+    if (face)
+      faces = findProperty(*face, "vertex_indices") ? request(*face, "vertex_indices") : request(*face, "vertex_index");
     if (!faces) failLoad(path, "no faces (element 'face' with vertex_indices)");
     ply.read(stream);
 
@@ -162,7 +173,8 @@ Mesh readPlyMesh(const std::string& path) {
     size_t at = 0;
     for (size_t f = 0; f < sizes.size(); ++f) {
       size_t n = sizes[f];
-      if (n != 3 && n != 4) failLoad(path, "face " + std::to_string(f) + " has " + std::to_string(n) + " vertices (3 or 4 are read)");
+      if (n != 3 && n != 4)
+        failLoad(path, "face " + std::to_string(f) + " has " + std::to_string(n) + " vertices (3 or 4 are read)");
       if (at + n > indices.size()) failLoad(path, "face indices are incomplete");
       for (size_t k = 0; k < n; ++k)
         if (indices[at + k] < 0 || uint64_t(indices[at + k]) >= mesh.positions.size())

@@ -102,7 +102,8 @@ std::vector<uint32_t> checkedIndices(const PbrtParameters& params, const char* n
 }
 
 // Per-vertex normals and texture coordinates of a mesh shape, dropped with a warning when their count is wrong.
-void addVertexAttributes(Mesh& mesh, const PbrtParameters& params, const PbrtShapeInputs& inputs, const std::string& shape) {
+void addVertexAttributes(Mesh& mesh, const PbrtParameters& params, const PbrtShapeInputs& inputs,
+                         const std::string& shape) {
   std::vector<Vec3> normals = params.getVec3s("N");
   if (!normals.empty() && normals.size() != mesh.positions.size())
     inputs.warn(shape + " normals", "'N' has another count than 'P': normals dropped");
@@ -160,7 +161,8 @@ void windTrianglesAlongNormals(Mesh& mesh) {
   }
 }
 
-std::optional<Mesh> makePbrtShape(const std::string& type, const PbrtParameters& params, const PbrtShapeInputs& inputs) {
+std::optional<Mesh> makePbrtShape(const std::string& type, const PbrtParameters& params,
+                                  const PbrtShapeInputs& inputs) {
   std::optional<Mesh> mesh;
   if (type == "trianglemesh") {
     mesh = makeTriangleMesh(params, inputs);

@@ -55,9 +55,9 @@ constexpr std::pair<const char*, float> kGlasses[] = {
 
 // Correlated colour temperatures of the CIE standard illuminants, which stand in for their spectra.
 constexpr std::pair<const char*, float> kIlluminantTemperatures[] = {
-    {"stdillum-A", 2856.0f},   {"stdillum-D50", 5003.0f}, {"stdillum-F1", 6430.0f},  {"stdillum-F2", 4230.0f},
-    {"stdillum-F3", 3450.0f},  {"stdillum-F4", 2940.0f},  {"stdillum-F5", 6350.0f},  {"stdillum-F6", 4150.0f},
-    {"stdillum-F7", 6500.0f},  {"stdillum-F8", 5000.0f},  {"stdillum-F9", 4150.0f},  {"stdillum-F10", 5000.0f},
+    {"stdillum-A", 2856.0f},   {"stdillum-D50", 5003.0f}, {"stdillum-F1", 6430.0f}, {"stdillum-F2", 4230.0f},
+    {"stdillum-F3", 3450.0f},  {"stdillum-F4", 2940.0f},  {"stdillum-F5", 6350.0f}, {"stdillum-F6", 4150.0f},
+    {"stdillum-F7", 6500.0f},  {"stdillum-F8", 5000.0f},  {"stdillum-F9", 4150.0f}, {"stdillum-F10", 5000.0f},
     {"stdillum-F11", 4000.0f}, {"stdillum-F12", 3000.0f},
 };
 

@@ -44,7 +44,7 @@ PbrtTexture PbrtTextures::value(const PbrtParameters& params, const std::string&
     auto found = named_.find(*texture);
     if (found != named_.end()) return found->second;
     context_.warn("unknown texture " + *texture, params.file + ":" + std::to_string(params.line) + ": texture '" +
-                                                      *texture + "' is not defined: '" + name + "' takes its default");
+                                                     *texture + "' is not defined: '" + name + "' takes its default");
     return PbrtTexture{fallback};
   }
   if (std::optional<PbrtColor> c = params.getColor(name)) return PbrtTexture{c->rgb};
@@ -86,6 +86,7 @@ void PbrtTextures::define(const std::string& name, const std::string& valueType,
     t.factor = lerp(amount, meanOf(a), meanOf(b));
     context_.warn("texture " + className, "'" + className + "' textures are replaced by the mean of their inputs");
   } else {
+    params.markAllUsed();
     t.factor = {0.5f, 0.5f, 0.5f};
     context_.warn("texture " + className, "'" + className + "' textures are not supported: grey 0.5 used instead");
   }

@@ -60,15 +60,11 @@ void PbrtTokenizer::scan() {
       if (s == '\\') {
         if (pos_ >= text_.size()) failLoad(file_, lookahead_.line, "unterminated string");
         char e = text_[pos_++];
-        switch (e) {
-          case 'n': s = '\n'; break;
-          case 't': s = '\t'; break;
-          case 'r': s = '\r'; break;
-          case 'b': s = '\b'; break;
-          case 'f': s = '\f'; break;
-          case '\n': ++line_; s = '\n'; break;
-          default: s = e; break;  // \\, \", \' and anything else stand for themselves
-        }
+        if (e == '\n') ++line_;
+        // \n \t \r \b \f as in C; \\, \", \' and anything else stand for themselves.
+        constexpr std::string_view kEscapes = "ntrbf", kMeanings = "\n\t\r\b\f";
+        size_t k = kEscapes.find(e);
+        s = k == std::string_view::npos ? e : kMeanings[k];
       }
       lookahead_.text.push_back(s);
     }

@@ -1,7 +1,6 @@
 #include "scene/loaders/pbrt_transforms.h"
 
 #include <cmath>
-
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace candela {
