@@ -320,6 +320,24 @@ TEST(PbrtLoader, ImageTexturesWithTheirUvMapping) {
   EXPECT_FLOAT_EQ(mesh.uvs[2].y, 1.0f - 4.0f);
 }
 
+TEST(PbrtLoader, InvertedImageTextures) {
+  TempFolder folder;
+  folder.write("grey.pfm", std::string("Pf\n2 1\n-1.0\n") + std::string("\0\0\0\x3f\0\0\x80\x3f", 8));
+  std::string path = folder.write("scene.pbrt", std::string(kMirroredCamera) +
+                                                    "Texture \"t\" \"spectrum\" \"imagemap\" \"string filename\" "
+                                                    "\"grey.pfm\" \"bool invert\" true\n"
+                                                    "Material \"diffuse\" \"texture reflectance\" \"t\"\n" +
+                                                    kTriangle);
+  LoadWarnings warnings;
+  Scene scene = loadPbrt(path, warnings);
+  const Material& m = scene.materials[scene.meshes[0].triangleMaterials[0]];
+  ASSERT_NE(m.baseColorTexture, kNoTexture);
+  const Texture& inverted = scene.textures[size_t(m.baseColorTexture)];
+  ASSERT_EQ(inverted.floats.size(), 2u);
+  EXPECT_FLOAT_EQ(inverted.floats[0], 0.5f);
+  EXPECT_FLOAT_EQ(inverted.floats[1], 0.0f);
+}
+
 TEST(PbrtLoader, SceneCacheNoticesChangedIncludes) {
   TempFolder folder;
   folder.write("part.pbrt", kTriangle);

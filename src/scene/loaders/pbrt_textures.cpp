@@ -39,6 +39,33 @@ int32_t PbrtTextures::loadImage(const std::string& path, bool srgb, const std::s
   return index;
 }
 
+int32_t PbrtTextures::invertedImage(int32_t image) {
+  if (auto found = inverted_.find(image); found != inverted_.end()) return found->second;
+  const Texture& source = context_.scene.textures[size_t(image)];
+  Texture out;
+  out.name = source.name + " (inverted)";
+  out.width = source.width;
+  out.height = source.height;
+  out.channels = source.channels;
+  out.wrap = source.wrap;
+  size_t values = size_t(source.width) * source.height * source.channels;
+  out.floats.resize(values);
+  for (size_t i = 0; i < values; ++i) {
+    uint32_t channel = uint32_t(i % source.channels);
+    bool alpha = (source.channels == 4 && channel == 3) || (source.channels == 2 && channel == 1);
+    float v = source.floats.empty() ? float(source.bytes[i]) / 255.0f : source.floats[i];
+    if (!source.floats.empty() || alpha || !source.srgb) {
+      out.floats[i] = alpha ? v : 1.0f - v;
+    } else {
+      out.floats[i] = 1.0f - srgbToLinear(v);
+    }
+  }
+  int32_t index = int32_t(context_.scene.textures.size());
+  context_.scene.textures.push_back(std::move(out));
+  inverted_[image] = index;
+  return index;
+}
+
 PbrtTexture PbrtTextures::value(const PbrtParameters& params, const std::string& name, Vec3 fallback) {
   if (std::optional<std::string> texture = params.getTexture(name)) {
     auto found = named_.find(*texture);
@@ -65,7 +92,7 @@ void PbrtTextures::define(const std::string& name, const std::string& valueType,
     t.image = loadImage(file, encoding != "linear", params.file, params.line);
     float scale = params.getFloat("scale", 1.0f);
     t.factor = {scale, scale, scale};
-    if (params.getBool("invert", false)) context_.warn("texture invert", "imagemap 'invert' is not applied");
+    if (params.getBool("invert", false) && t.image != kNoTexture) t.image = invertedImage(t.image);
     std::string wrap = params.getString("wrap", "repeat");
     if (t.image != kNoTexture) {
       Texture& image = context_.scene.textures[size_t(t.image)];

@@ -17,7 +17,7 @@ struct PbrtTexture {
 };
 
 // The named textures of a scene (`Texture "name" "spectrum"|"float" "class" ...`): imagemap (PNG, JPEG, TGA, BMP,
-// HDR, EXR, PFM), constant and scale are honoured; mix and checkerboard become the mean of their two inputs,
+// HDR, EXR, PFM; invert), constant and scale are honoured; mix and checkerboard become the mean of their two inputs,
 // other classes a constant grey, each with a warning.
 class PbrtTextures {
  public:
@@ -31,9 +31,13 @@ class PbrtTextures {
   int32_t loadImage(const std::string& path, bool srgb, const std::string& file, size_t line);
 
  private:
+  // A float copy of an image with its colour channels (as linear values) turned into 1 - value, for `invert`.
+  int32_t invertedImage(int32_t image);
+
   PbrtContext& context_;
   std::map<std::string, PbrtTexture> named_;
   std::map<std::pair<std::string, bool>, int32_t> images_;
+  std::map<int32_t, int32_t> inverted_;
 };
 
 }  // namespace candela
