@@ -290,6 +290,16 @@ TEST(PbrtLoader, ParametersNotAppliedAreNamed) {
   EXPECT_EQ(warnings.messages[0], "test.pbrt: material 'coateddiffuse': parameter 'thickness' is not applied");
 }
 
+TEST(PbrtLoader, UnknownSpectraWarnAndTakeTheDefault) {
+  LoadWarnings warnings;
+  Scene scene = loadText(std::string(kMirroredCamera) +
+                             "Material \"diffuse\" \"spectrum reflectance\" \"measured.spd\"\n" + kTriangle,
+                         &warnings);
+  expectNear(scene.materials[scene.meshes[0].triangleMaterials[0]].baseColor, {0.5f, 0.5f, 0.5f});
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_NE(warnings.messages[0].find("'measured.spd'"), std::string::npos) << warnings.messages[0];
+}
+
 TEST(PbrtLoader, ImageTexturesWithTheirUvMapping) {
   TempFolder folder;
   folder.write("grey.pfm", std::string("Pf\n2 1\n-1.0\n") + std::string("\0\0\0\x3f\0\0\x80\x3f", 8));

@@ -24,7 +24,8 @@ struct PbrtContext {
   PbrtContext(const std::string& file, LoadWarnings& w, OutsidePaths outside);
 
   void warn(const std::string& feature, const std::string& what);
-  // One warning for each parameter of `directive` (a shape, material, light... type) that was not applied.
+  // One warning for each parameter of `directive` (a shape, material, light... type) that was not applied, and
+  // for each spectrum its colours could not be read from.
   void warnUnused(const std::string& directive, const PbrtParameters& params);
   // The file a scene refers to, confined to baseFolder's tree unless allowed otherwise, and recorded among the
   // scene's inputs. Throws LoadError naming `file:line` when the reference is refused.

@@ -173,7 +173,11 @@ std::optional<PbrtColor> PbrtParameters::getColor(const std::string& name) const
   } else if (p->type == "spectrum") {
     if (p->strings.size() == 1) {
       std::optional<Vec3> named = namedSpectrumRgb(p->strings[0]);
-      if (!named) fail("unknown named spectrum '" + p->strings[0] + "' for '" + name + "'");
+      if (!named) {
+        // A spectrum file or a name candela does not know: the parameter's default stands in.
+        unknownSpectra.push_back(p->strings[0]);
+        return std::nullopt;
+      }
       c.rgb = *named;
       c.normalisedLight = isNamedIlluminant(p->strings[0]);
     } else if (p->numbers.size() >= 2 && p->numbers.size() % 2 == 0) {

@@ -35,6 +35,8 @@ class PbrtParameters {
   std::string file;
   size_t line = 0;
   std::vector<PbrtParameter> list;
+  // Spectra that colour lookups met but could not turn into RGB (spectrum files, unknown names).
+  mutable std::vector<std::string> unknownSpectra;
 
   const PbrtParameter* find(const std::string& name) const;
   float getFloat(const std::string& name, float fallback) const;
@@ -45,7 +47,8 @@ class PbrtParameters {
   std::vector<Vec3> getVec3s(const std::string& name) const;      // point3, normal3, vector3
   std::vector<Vec2> getVec2s(const std::string& name) const;      // point2 (or float pairs)
   std::vector<int64_t> getInts(const std::string& name) const;
-  // A colour (rgb, spectrum, blackbody, or a float for grey); nothing when absent or a texture.
+  // A colour (rgb, spectrum, blackbody, or a float for grey); nothing when absent, a texture, or a spectrum file
+  // or name that is not known (recorded in unknownSpectra).
   std::optional<PbrtColor> getColor(const std::string& name) const;
   // The texture a parameter names, when it is of type "texture".
   std::optional<std::string> getTexture(const std::string& name) const;
