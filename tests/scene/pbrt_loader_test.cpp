@@ -247,6 +247,14 @@ TEST(PbrtLoader, AreaLightsEmitFromTheirShapes) {
   Scene power = loadText(std::string(kMirroredCamera) + "AreaLightSource \"diffuse\" \"float power\" 10\n" + kTriangle);
   float L = luminance(power.materials[power.meshes[0].triangleMaterials[0]].emission);
   EXPECT_NEAR(kPi * 0.5f * L, 10.0f, 1e-3f);
+  // As in pbrt-v4, each triangle of a mesh is a light of that power, and an RGB L keeps its magnitude.
+  Scene perTriangle = loadText(std::string(kMirroredCamera) +
+                               "AreaLightSource \"diffuse\" \"rgb L\" [2 2 2] \"float power\" 10\n"
+                               "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0 0 0 1 2 0 1 0 1 1] "
+                               "\"integer indices\" [0 1 2 3 4 5]\n");
+  const Mesh& pair = perTriangle.meshes[0];
+  EXPECT_NEAR(perTriangle.materials[pair.triangleMaterials[0]].emission.x, 2.0f * 10.0f / (kPi * 0.5f), 1e-3f);
+  EXPECT_NEAR(perTriangle.materials[pair.triangleMaterials[1]].emission.x, 2.0f * 10.0f / (kPi * 1.0f), 1e-3f);
   // Blackbody emitters are normalised to luminance 1 (times scale), as pbrt-v4 normalises them.
   Scene blackbody = loadText(std::string(kMirroredCamera) +
                              "AreaLightSource \"diffuse\" \"blackbody L\" [3000] \"float scale\" 5\n" + kTriangle);

@@ -59,8 +59,9 @@ PbrtAreaLight makePbrtAreaLight(const std::string& type, const PbrtParameters& p
 
 Vec3 pbrtAreaLightRadiance(const PbrtAreaLight& light, float worldArea) {
   if (!(light.power > 0.0f)) return light.radiance;
-  float y = luminance(light.radiance);
-  float emitting = kPi * worldArea * (light.twoSided ? 2.0f : 1.0f) * y;
+  // pbrt-v4 divides out the luminance of the illuminant behind an RGB L (so (1, 1, 1) emits 1 nit), not that
+  // of the RGB value: L = (2, 2, 2) with `power` emits twice the power asked for, as in pbrt.
+  float emitting = kPi * worldArea * (light.twoSided ? 2.0f : 1.0f);
   return emitting > 0.0f ? light.radiance * (light.power / emitting) : Vec3{0, 0, 0};
 }
 

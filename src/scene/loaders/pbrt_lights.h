@@ -7,7 +7,8 @@
 namespace candela {
 
 // pbrt's `AreaLightSource "diffuse"`: radiance L (times scale) from the front of the shapes that follow, or from
-// both sides; `power` (watts) sets the radiance from the area of each shape instead.
+// both sides; `power` (watts) sets the radiance from the area of each shape instead. pbrt-v4 makes a light of
+// every triangle of a mesh (and every patch of a bilinear mesh), so `power` applies to each of them.
 struct PbrtAreaLight {
   Vec3 radiance{1, 1, 1};
   bool twoSided = false;
@@ -15,7 +16,7 @@ struct PbrtAreaLight {
 };
 PbrtAreaLight makePbrtAreaLight(const std::string& type, const PbrtParameters& params, PbrtContext& context);
 
-// The radiance an area light gives a mesh of `worldArea` (after `power`).
+// The radiance an area light gives a shape (a triangle, a patch, a quadric) of `worldArea` (after `power`).
 Vec3 pbrtAreaLightRadiance(const PbrtAreaLight& light, float worldArea);
 
 // pbrt's `LightSource "infinite"` as candela's environment: a constant L, or an image (`filename`) in pbrt-v4's

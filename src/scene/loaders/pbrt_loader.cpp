@@ -351,6 +351,31 @@ class PbrtReader {
     return id;
   }
 
+  // The radiance each triangle of a shape emits. With `power`, pbrt-v4 normalises each of its lights: one per
+  // triangle of a mesh, per patch of a bilinear mesh (two triangles here), one for a whole quadric.
+  static std::vector<Vec3> areaLightEmission(const PbrtAreaLight& light, const std::string& type, const Mesh& mesh,
+                                             const Affine3x4& toWorld) {
+    size_t triangles = mesh.triangleCount();
+    if (!(light.power > 0.0f)) return std::vector<Vec3>(triangles, light.radiance);
+    std::vector<float> area(triangles);
+    for (size_t t = 0; t < triangles; ++t) {
+      Vec3 a = toWorld.point(mesh.positions[mesh.indices[3 * t]]);
+      Vec3 b = toWorld.point(mesh.positions[mesh.indices[3 * t + 1]]);
+      Vec3 c = toWorld.point(mesh.positions[mesh.indices[3 * t + 2]]);
+      area[t] = 0.5f * length(cross(b - a, c - a));
+    }
+    std::vector<Vec3> emission(triangles);
+    size_t group = type == "bilinearmesh" ? 2 : 1;
+    if (type == "sphere" || type == "disk" || type == "cylinder") group = std::max<size_t>(triangles, 1);
+    for (size_t first = 0; first < triangles; first += group) {
+      size_t last = std::min(first + group, triangles);
+      float shapeArea = 0.0f;
+      for (size_t t = first; t < last; ++t) shapeArea += area[t];
+      for (size_t t = first; t < last; ++t) emission[t] = pbrtAreaLightRadiance(light, shapeArea);
+    }
+    return emission;
+  }
+
   void readShape(const std::string& type, const PbrtParameters& params) {
     if (!worldBegun_) chooseWorldMirror();
     PbrtShapeInputs inputs{[&](const std::string& ref) { return context_.resolve(ref, params.file, params.line); },
@@ -381,37 +406,28 @@ class PbrtReader {
     PbrtMaterial material = state_.material ? *state_.material : materials_.fallback();
     AlphaSpec alpha = shapeAlpha(params);
     Affine3x4 toWorld = toAffine(worldFromPbrt_ * state_.ctm);
-    Vec3 emission{0, 0, 0};
+    std::vector<Vec3> emission;  // per triangle; empty when the shape does not emit
     if (state_.areaLight && !currentObject_) {
-      float area = 0.0f;
-      for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
-        Vec3 a = toWorld.point(mesh.positions[mesh.indices[i]]), b = toWorld.point(mesh.positions[mesh.indices[i + 1]]);
-        Vec3 c = toWorld.point(mesh.positions[mesh.indices[i + 2]]);
-        area += 0.5f * length(cross(b - a, c - a));
-      }
-      emission = pbrtAreaLightRadiance(*state_.areaLight, area);
+      emission = areaLightEmission(*state_.areaLight, type, mesh, toWorld);
     } else if (state_.areaLight) {
       context_.warn("area light instance", "area lights inside object definitions do not emit (as in pbrt-v4)");
     }
-    std::vector<uint32_t> ids;
     std::vector<float> cumulative;
     float total = 0.0f;
-    for (auto [id, p] : material.choices) {
-      ids.push_back(variant(id, emission, alpha));
-      cumulative.push_back(total += p);
-    }
+    for (auto choice : material.choices) cumulative.push_back(total += choice.second);
     for (size_t t = 0; t < mesh.triangleMaterials.size(); ++t) {
       size_t pick = 0;
-      if (ids.size() > 1) {
+      if (cumulative.size() > 1) {
         // A fixed hash of the triangle index: pbrt's mix chooses per shading point, candela per triangle.
         uint32_t h = uint32_t(t) * 0x9E3779B1u;
         h ^= h >> 16;
         h *= 0x85EBCA6Bu;
         h ^= h >> 13;
         float u = float(h >> 8) * (1.0f / 16777216.0f) * total;
-        while (pick + 1 < ids.size() && u >= cumulative[pick]) ++pick;
+        while (pick + 1 < cumulative.size() && u >= cumulative[pick]) ++pick;
       }
-      mesh.triangleMaterials[t] = ids[pick];
+      Vec3 emitted = emission.empty() ? Vec3{0, 0, 0} : emission[t];
+      mesh.triangleMaterials[t] = variant(material.choices[pick].first, emitted, alpha);
     }
     // pbrt's (u, v) through the base colour texture's mapping, then v flipped: candela's v runs down the image.
     auto [scale, offset] = materials_.uvMapping(material.choices.front().first);
