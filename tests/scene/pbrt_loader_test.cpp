@@ -406,6 +406,17 @@ TEST(PbrtLoader, BilinearMeshesAndLoopSubdivision) {
   for (Vec3 p : scene.meshes[1].positions) EXPECT_LT(p.x + p.y + p.z, 1.0f);
 }
 
+TEST(PbrtLoader, LoopSubdivisionEndsOnTheLimitSurface) {
+  // With no levels, pbrt still moves the control points to the limit surface: a vertex of valence 3 keeps 2/5 of
+  // itself and takes 1/5 of each neighbour.
+  Scene scene = loadText(std::string(kMirroredCamera) +
+                         "Shape \"loopsubdiv\" \"integer levels\" 0 \"point3 P\" [0 0 0 1 0 0 0 1 0 0 0 1] "
+                         "\"integer indices\" [0 2 1 0 1 3 0 3 2 1 2 3]\n");
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  expectNear(scene.meshes[0].positions[0], {0.2f, 0.2f, 0.2f});
+  expectNear(scene.meshes[0].positions[1], {0.4f, 0.2f, 0.2f});
+}
+
 std::string plyHeader(const std::string& format, int vertices, int faces) {
   return "ply\nformat " + format + " 1.0\ncomment test\nelement vertex " + std::to_string(vertices) +
          "\nproperty float x\nproperty float y\nproperty float z\nproperty float u\nproperty float v\n"

@@ -85,7 +85,9 @@ Environment makePbrtInfiniteLight(const PbrtParameters& params, const glm::mat4&
                                             "layout) nor 2:1: read as equirectangular");
   glm::mat4 lightFromWorld = glm::inverse(worldFromLight);
   Texture& map = env.map;
-  map.name = path;
+  // Not the file's name: the map is no longer the file's layout (a viewer's saved view must not name the file as
+  // an equirectangular map).
+  map.name = path + " (resampled to equirectangular)";
   map.height = std::clamp(octahedral ? source.height : source.height, 1u, 8192u);
   map.width = 2 * map.height;
   map.channels = 3;

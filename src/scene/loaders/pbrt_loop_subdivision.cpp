@@ -15,45 +15,64 @@ struct Edge {
   uint32_t midpoint = 0;
 };
 
-Mesh subdivideOnce(const Mesh& in) {
-  std::unordered_map<uint64_t, Edge> edges;
-  edges.reserve(in.indices.size());
-  for (size_t t = 0; t < in.indices.size(); t += 3)
+using EdgeMap = std::unordered_map<uint64_t, Edge>;
+
+EdgeMap edgesOf(const Mesh& mesh) {
+  EdgeMap edges;
+  edges.reserve(mesh.indices.size());
+  for (size_t t = 0; t < mesh.indices.size(); t += 3)
     for (int k = 0; k < 3; ++k) {
-      uint32_t a = in.indices[t + k], b = in.indices[t + (k + 1) % 3], c = in.indices[t + (k + 2) % 3];
+      uint32_t a = mesh.indices[t + k], b = mesh.indices[t + (k + 1) % 3], c = mesh.indices[t + (k + 2) % 3];
       Edge& e = edges.try_emplace(edgeKey(a, b), Edge{a, b, {c, c}, 0, 0}).first->second;
       if (e.faces < 2) e.opposite[e.faces] = c;
       ++e.faces;
     }
-  size_t n = in.positions.size();
+  return edges;
+}
+
+// Every vertex moved to a weighted mean of itself and its neighbours, as Loop's rules do: an interior vertex of
+// valence k keeps 1 - k w(k) of itself and takes w(k) of each neighbour; a boundary vertex keeps 1 - 2b and takes
+// b of each of its two boundary neighbours; corners and non-manifold vertices stay.
+std::vector<Vec3> smoothVertices(const Mesh& mesh, const EdgeMap& edges, float (*interiorWeight)(int), float b) {
+  size_t n = mesh.positions.size();
   std::vector<Vec3> neighbourSum(n, Vec3{0, 0, 0}), boundarySum(n, Vec3{0, 0, 0});
   std::vector<int> valence(n, 0), boundaryEdges(n, 0);
   for (const auto& [key, e] : edges) {
-    neighbourSum[e.a] += in.positions[e.b];
-    neighbourSum[e.b] += in.positions[e.a];
+    neighbourSum[e.a] += mesh.positions[e.b];
+    neighbourSum[e.b] += mesh.positions[e.a];
     ++valence[e.a];
     ++valence[e.b];
     if (e.faces != 2) {
-      boundarySum[e.a] += in.positions[e.b];
-      boundarySum[e.b] += in.positions[e.a];
+      boundarySum[e.a] += mesh.positions[e.b];
+      boundarySum[e.b] += mesh.positions[e.a];
       ++boundaryEdges[e.a];
       ++boundaryEdges[e.b];
     }
   }
-  Mesh out;
-  out.positions.resize(n);
+  std::vector<Vec3> out(n);
   for (size_t v = 0; v < n; ++v) {
-    Vec3 p = in.positions[v];
+    Vec3 p = mesh.positions[v];
     if (boundaryEdges[v] == 2) {
-      out.positions[v] = p * 0.75f + boundarySum[v] * 0.125f;
+      out[v] = p * (1.0f - 2.0f * b) + boundarySum[v] * b;
     } else if (boundaryEdges[v] == 0 && valence[v] > 0) {
-      float k = float(valence[v]);
-      float beta = valence[v] == 3 ? 3.0f / 16.0f : 3.0f / (8.0f * k);
-      out.positions[v] = p * (1.0f - k * beta) + neighbourSum[v] * beta;
+      float w = interiorWeight(valence[v]);
+      out[v] = p * (1.0f - float(valence[v]) * w) + neighbourSum[v] * w;
     } else {
-      out.positions[v] = p;  // a corner or a non-manifold vertex stays where it is
+      out[v] = p;
     }
   }
+  return out;
+}
+
+float loopBeta(int valence) { return valence == 3 ? 3.0f / 16.0f : 3.0f / (8.0f * float(valence)); }
+
+// The weight that puts a vertex on the limit surface (pbrt's loopGamma).
+float loopGamma(int valence) { return 1.0f / (float(valence) + 3.0f / (8.0f * loopBeta(valence))); }
+
+Mesh subdivideOnce(const Mesh& in) {
+  EdgeMap edges = edgesOf(in);
+  Mesh out;
+  out.positions = smoothVertices(in, edges, loopBeta, 1.0f / 8.0f);
   for (auto& [key, e] : edges) {
     e.midpoint = uint32_t(out.positions.size());
     Vec3 a = in.positions[e.a], b = in.positions[e.b];
@@ -76,6 +95,7 @@ Mesh subdivideOnce(const Mesh& in) {
 Mesh loopSubdivide(Mesh mesh, int levels) {
   for (int level = 0; level < levels && mesh.triangleCount() * 4 <= kMaxSubdividedTriangles; ++level)
     mesh = subdivideOnce(mesh);
+  mesh.positions = smoothVertices(mesh, edgesOf(mesh), loopGamma, 1.0f / 5.0f);
   mesh.normals.assign(mesh.positions.size(), Vec3{0, 0, 0});
   for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
     uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
