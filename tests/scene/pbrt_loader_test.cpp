@@ -478,6 +478,27 @@ TEST(PbrtLoader, PlyMeshesInEveryEncoding) {
   }
 }
 
+TEST(PbrtLoader, PlyFacesOfMixedSizes) {
+  // Lists of different lengths make tinyply read the faces twice, seeking back in between.
+  TempFolder folder;
+  std::string ply = "ply\nformat binary_little_endian 1.0\nelement vertex 5\nproperty float x\nproperty float y\n"
+                    "property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n";
+  const float vertices[5][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 0, 0}};
+  ply.append(reinterpret_cast<const char*>(vertices), sizeof(vertices));
+  const int32_t quad[4] = {0, 1, 2, 3}, triangle[3] = {1, 4, 2};
+  ply += char(4);
+  ply.append(reinterpret_cast<const char*>(quad), sizeof(quad));
+  ply += char(3);
+  ply.append(reinterpret_cast<const char*>(triangle), sizeof(triangle));
+  folder.write("mixed.ply", ply);
+  std::string path = folder.write("scene.pbrt", std::string(kMirroredCamera) +
+                                                    "Shape \"plymesh\" \"string filename\" \"mixed.ply\"\n");
+  LoadWarnings warnings;
+  Scene scene = loadPbrt(path, warnings);
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  EXPECT_EQ(scene.meshes[0].indices, (std::vector<uint32_t>{0, 1, 2, 0, 2, 3, 1, 4, 2}));
+}
+
 TEST(PbrtLoader, HostilePlyFilesAreRefused) {
   TempFolder folder;
   folder.write("huge.ply", plyHeader("binary_little_endian", 1000000000, 1) + std::string(64, '\0'));

@@ -60,9 +60,7 @@ class PbrtReader {
     if (depth > kMaxIncludeDepth) failLoad(path, "included more than " + std::to_string(kMaxIncludeDepth) + " deep");
     if (++includedFiles_ > kMaxIncludedFiles)
       failLoad(path, "the scene includes more than " + std::to_string(kMaxIncludedFiles) + " files");
-    std::vector<uint8_t> bytes = readFileBytes(path);
-    PbrtTokenizer tokens(path, std::string(bytes.begin(), bytes.end()));
-    bytes = {};
+    PbrtTokenizer tokens(path, readFileBytes(path));
     readDirectives(tokens, depth);
   }
 

@@ -4,7 +4,8 @@
 
 #include <cstring>
 #include <memory>
-#include <sstream>
+#include <istream>
+#include <streambuf>
 
 #include "scene/loaders/file_bytes.h"
 #include "scene/loaders/load_diagnostics.h"
@@ -20,20 +21,20 @@ bool endsWith(const std::string& s, const std::string& suffix) {
 
 // The content of a gzip file, refused beyond the size any input may have (maxInputFileBytes) so that a small
 // "zip bomb" cannot fill the memory.
-std::string gunzip(const std::string& path, const std::vector<uint8_t>& compressed) {
+std::vector<uint8_t> gunzip(const std::string& path, const std::vector<uint8_t>& compressed) {
   z_stream stream{};
   if (inflateInit2(&stream, 16 + MAX_WBITS) != Z_OK) failLoad(path, "cannot start decompressing it");
   std::unique_ptr<z_stream, int (*)(z_stream*)> cleanup(&stream, inflateEnd);
   stream.next_in = const_cast<Bytef*>(compressed.data());
   stream.avail_in = uInt(std::min<size_t>(compressed.size(), UINT32_MAX));
-  std::string out;
+  std::vector<uint8_t> out;
   const uint64_t limit = maxInputFileBytes();
   int status = Z_OK;
   while (status != Z_STREAM_END) {
     size_t used = out.size();
     if (used >= limit) failLoad(path, "decompresses to more than the largest input accepted (--max-file-gib)");
     out.resize(used + std::min<uint64_t>(std::max<size_t>(size_t(1) << 20, used), limit - used));  // doubling
-    stream.next_out = reinterpret_cast<Bytef*>(out.data() + used);
+    stream.next_out = out.data() + used;
     stream.avail_out = uInt(out.size() - used);
     status = inflate(&stream, Z_NO_FLUSH);
     out.resize(out.size() - stream.avail_out);
@@ -43,6 +44,28 @@ std::string gunzip(const std::string& path, const std::vector<uint8_t>& compress
   }
   return out;
 }
+
+// An input stream over bytes in memory that can seek, as tinyply's reading of variable-length lists needs,
+// without the copy a std::istringstream would make.
+class MemoryBuffer : public std::streambuf {
+ public:
+  explicit MemoryBuffer(std::vector<uint8_t>& bytes) {
+    char* begin = reinterpret_cast<char*>(bytes.data());
+    setg(begin, begin, begin + bytes.size());
+  }
+
+ protected:
+  pos_type seekoff(off_type offset, std::ios_base::seekdir dir, std::ios_base::openmode) override {
+    off_type base = dir == std::ios_base::beg ? 0 : dir == std::ios_base::cur ? gptr() - eback() : egptr() - eback();
+    return seekpos(pos_type(base + offset), std::ios_base::in);
+  }
+  pos_type seekpos(pos_type position, std::ios_base::openmode) override {
+    off_type p = off_type(position);
+    if (p < 0 || p > egptr() - eback()) return pos_type(off_type(-1));
+    setg(eback(), eback() + p, egptr());
+    return position;
+  }
+};
 
 const tinyply::PlyProperty* findProperty(const tinyply::PlyElement& element, const std::string& name) {
   for (const tinyply::PlyProperty& p : element.properties)
@@ -100,11 +123,11 @@ uint64_t smallestElementBytes(const tinyply::PlyElement& element, bool binary) {
 }  // namespace
 
 Mesh readPlyMesh(const std::string& path) {
-  std::vector<uint8_t> raw = readFileBytes(path);
-  std::string text = endsWith(path, ".gz") ? gunzip(path, raw) : std::string(raw.begin(), raw.end());
-  raw = {};
-  const uint64_t totalBytes = text.size();
-  std::istringstream stream(std::move(text));
+  std::vector<uint8_t> bytes = readFileBytes(path);
+  if (endsWith(path, ".gz")) bytes = gunzip(path, bytes);
+  const uint64_t totalBytes = bytes.size();
+  MemoryBuffer buffer(bytes);
+  std::istream stream(&buffer);
   tinyply::PlyFile ply;
   Mesh mesh;
   try {

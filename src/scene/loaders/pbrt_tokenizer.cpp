@@ -11,7 +11,13 @@ bool endsWord(char c) { return isSpace(c) || c == '"' || c == '[' || c == ']' ||
 
 }  // namespace
 
-PbrtTokenizer::PbrtTokenizer(std::string file, std::string text) : file_(std::move(file)), text_(std::move(text)) {}
+PbrtTokenizer::PbrtTokenizer(std::string file, std::string text)
+    : file_(std::move(file)), ownedText_(std::move(text)), text_(ownedText_) {}
+
+PbrtTokenizer::PbrtTokenizer(std::string file, std::vector<uint8_t>&& bytes)
+    : file_(std::move(file)),
+      storage_(std::move(bytes)),
+      text_(reinterpret_cast<const char*>(storage_.data()), storage_.size()) {}
 
 const PbrtToken& PbrtTokenizer::peek() {
   if (!haveLookahead_) {
@@ -72,7 +78,7 @@ void PbrtTokenizer::scan() {
   lookahead_.kind = PbrtToken::Kind::Word;
   size_t start = pos_;
   while (pos_ < text_.size() && !endsWord(text_[pos_])) ++pos_;
-  lookahead_.text.assign(text_, start, pos_ - start);
+  lookahead_.text.assign(text_.substr(start, pos_ - start));
 }
 
 }  // namespace candela

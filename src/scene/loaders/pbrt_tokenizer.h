@@ -1,7 +1,9 @@
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace candela {
 
@@ -20,6 +22,10 @@ struct PbrtToken {
 class PbrtTokenizer {
  public:
   PbrtTokenizer(std::string file, std::string text);
+  // The content of a file as readFileBytes gives it, taken over without a copy.
+  PbrtTokenizer(std::string file, std::vector<uint8_t>&& bytes);
+  PbrtTokenizer(const PbrtTokenizer&) = delete;  // text_ points into the object itself
+  PbrtTokenizer& operator=(const PbrtTokenizer&) = delete;
 
   const PbrtToken& peek();
   PbrtToken next();
@@ -30,7 +36,9 @@ class PbrtTokenizer {
   void scan();
 
   std::string file_;
-  std::string text_;
+  std::vector<uint8_t> storage_;  // holds the text unless it came as a string
+  std::string ownedText_;
+  std::string_view text_;
   size_t pos_ = 0;
   size_t line_ = 1;
   PbrtToken lookahead_;
