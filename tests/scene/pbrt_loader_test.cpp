@@ -104,6 +104,17 @@ TEST(PbrtLoader, TransformsApplyInPbrtsOrder) {
   expectNear(named.instances[0].objectToWorld.point({0, 0, 0}), {4, 0, 0});
 }
 
+TEST(PbrtLoader, MotionKeepsTheStartTransform) {
+  LoadWarnings warnings;
+  Scene scene = loadText(std::string(kMirroredCamera) +
+                             "TransformTimes 0 1\nActiveTransform EndTime\nTranslate 5 0 0\nActiveTransform All\n"
+                             "Translate 0 1 0\n" + kTriangle,
+                         &warnings);
+  expectNear(scene.instances[0].objectToWorld.point({0, 0, 0}), {0, 1, 0});
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_NE(warnings.messages[0].find("motion blur"), std::string::npos);
+}
+
 TEST(PbrtLoader, LeftHandedCameraMirrorsTheWorldSoTheImageIsNotMirrored) {
   // pbrt's LookAt puts world +x on the right of the image for a camera looking down +z with +y up.
   Scene scene = loadText(
@@ -336,6 +347,28 @@ TEST(PbrtLoader, ImageTexturesWithTheirUvMapping) {
   EXPECT_FLOAT_EQ(mesh.uvs[1].x, 2.0f);
   EXPECT_FLOAT_EQ(mesh.uvs[1].y, 1.0f);
   EXPECT_FLOAT_EQ(mesh.uvs[2].y, 1.0f - 4.0f);
+}
+
+TEST(PbrtLoader, RoughnessTexturesBecomeCandelasRoughness) {
+  TempFolder folder;
+  folder.write("grey.pfm", std::string("Pf\n2 1\n-1.0\n") + std::string("\0\0\0\x3f\0\0\x80\x3f", 8));
+  std::string path = folder.write("scene.pbrt", std::string(kMirroredCamera) +
+                                                    "Texture \"r\" \"float\" \"imagemap\" \"string filename\" "
+                                                    "\"grey.pfm\" \"float scale\" 0.5\n"
+                                                    "Material \"conductor\" \"texture roughness\" \"r\"\n" +
+                                                    kTriangle);
+  LoadWarnings warnings;
+  Scene scene = loadPbrt(path, warnings);
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages.front();
+  const Material& m = scene.materials[scene.meshes[0].triangleMaterials[0]];
+  EXPECT_EQ(m.type, MaterialType::Pbr);
+  EXPECT_FLOAT_EQ(m.roughness, 1.0f);
+  ASSERT_NE(m.roughnessTexture, kNoTexture);
+  const Texture& r = scene.textures[size_t(m.roughnessTexture)];
+  ASSERT_EQ(r.floats.size(), 2u);
+  // pbrt's value 0.5 * texel, remapped: alpha = sqrt(value); candela's roughness = sqrt(alpha).
+  EXPECT_NEAR(r.floats[0], std::pow(0.25f, 0.25f), 1e-5f);
+  EXPECT_NEAR(r.floats[1], std::pow(0.5f, 0.25f), 1e-5f);
 }
 
 TEST(PbrtLoader, InvertedImageTextures) {

@@ -11,13 +11,16 @@ namespace {
 
 // pbrt's roughness parameters: an alpha of the microfacet distribution, or with remaproughness (the default) a
 // value whose square root is alpha. candela's roughness is sqrt(alpha).
+float candelaRoughness(float pbrtRoughness, bool remap) {
+  float roughness = std::max(0.0f, pbrtRoughness);
+  float alpha = remap ? std::sqrt(roughness) : roughness;
+  return std::clamp(std::sqrt(alpha), 0.0f, 1.0f);
+}
+
 float candelaRoughness(const PbrtParameters& params, const std::string& prefix, float fallback) {
   float u = params.getFloat(prefix + "uroughness", params.getFloat(prefix + "roughness", fallback));
   float v = params.getFloat(prefix + "vroughness", params.getFloat(prefix + "roughness", fallback));
-  float roughness = std::max(0.0f, 0.5f * (u + v));
-  bool remap = params.getBool("remaproughness", true);
-  float alpha = remap ? std::sqrt(roughness) : roughness;
-  return std::clamp(std::sqrt(alpha), 0.0f, 1.0f);
+  return candelaRoughness(0.5f * (u + v), params.getBool("remaproughness", true));
 }
 
 float scalarIor(const PbrtParameters& params, const std::string& name, float fallback) {
@@ -71,8 +74,24 @@ Material PbrtMaterials::translate(const std::string& type, const PbrtParameters&
     }
     return conductorReflectance(eta, k);
   };
-  if (params.getTexture("roughness") || params.getTexture("uroughness") || params.getTexture("vroughness"))
-    context_.warn("textured roughness", "textured roughness is not supported: the default roughness is used");
+  // The roughness of the main lobe: numbers, or a texture turned into an image of candela's roughness per texel
+  // (the material's roughness is then 1, which the texture multiplies).
+  auto roughness = [&](const std::string& prefix, float fallbackValue) {
+    std::string name = prefix + "roughness";
+    if (!params.getTexture(name)) name = prefix + "uroughness";
+    if (!params.getTexture(name)) return candelaRoughness(params, prefix, fallbackValue);
+    if (params.find(prefix + "vroughness"))
+      context_.warn("anisotropic roughness texture", "a textured 'uroughness' stands for 'vroughness' too");
+    bool remap = params.getBool("remaproughness", true);
+    PbrtTexture t = textures_.value(params, name, {fallbackValue, fallbackValue, fallbackValue});
+    if (t.image == kNoTexture) return candelaRoughness(t.factor.x, remap);
+    float scale = t.factor.x;
+    m.roughnessTexture = textures_.mappedImage(t.image, "roughness " + std::to_string(scale) + (remap ? " remapped" : ""),
+                                               [=](float v) { return candelaRoughness(scale * v, remap); });
+    return 1.0f;
+  };
+  if (params.getTexture("interface.roughness"))
+    context_.warn("textured coat roughness", "a textured 'interface.roughness' is not supported: 0 is used");
 
   if (type == "diffuse") {
     colour("reflectance", {0.5f, 0.5f, 0.5f});
@@ -80,40 +99,40 @@ Material PbrtMaterials::translate(const std::string& type, const PbrtParameters&
     colour("reflectance", {0.5f, 0.5f, 0.5f});
     m.type = MaterialType::Pbr;
     m.metallic = 0.0f;
-    m.roughness = candelaRoughness(params, "", 0.0f);
+    m.roughness = roughness("", 0.0f);
     float eta = scalarIor(params, "eta", 1.5f);
     m.specular = std::clamp(sqr((eta - 1.0f) / (eta + 1.0f)) / 0.08f, 0.0f, 1.0f);
   } else if (type == "conductor") {
     Vec3 f0 = conductorF0("");
-    float roughness = candelaRoughness(params, "", 0.0f);
-    if (roughness == 0.0f && m.baseColorTexture == kNoTexture) {
+    float r = roughness("", 0.0f);
+    if (r == 0.0f && m.baseColorTexture == kNoTexture) {
       m.type = MaterialType::Mirror;
       m.specularColor = f0;
     } else {
       m.type = MaterialType::Pbr;
       m.metallic = 1.0f;
       m.baseColor = f0;
-      m.roughness = roughness;
+      m.roughness = r;
     }
   } else if (type == "coatedconductor") {
     m.type = MaterialType::Disney;
     m.baseColor = conductorF0("conductor.");
     m.metallic = 1.0f;
-    m.roughness = candelaRoughness(params, "conductor.", 0.0f);
+    m.roughness = roughness("conductor.", 0.0f);
     m.clearcoat = 1.0f;
     m.clearcoatGloss = 1.0f - candelaRoughness(params, "interface.", 0.0f);
   } else if (type == "dielectric") {
     float eta = scalarIor(params, "eta", 1.5f);
-    float roughness = candelaRoughness(params, "", 0.0f);
+    float r = roughness("", 0.0f);
     m.baseColor = {1, 1, 1};
     m.ior = eta > 0.0f ? eta : 1.5f;
-    if (roughness == 0.0f) {
+    if (r == 0.0f) {
       m.type = MaterialType::Glass;
     } else {
       m.type = MaterialType::Disney;
       m.specTrans = 1.0f;
       m.metallic = 0.0f;
-      m.roughness = roughness;
+      m.roughness = r;
     }
   } else if (type == "thindielectric") {
     // A thin sheet reflects 2R/(1+R) of the light at normal incidence and lets the rest through undeviated:

@@ -66,6 +66,30 @@ int32_t PbrtTextures::invertedImage(int32_t image) {
   return index;
 }
 
+int32_t PbrtTextures::mappedImage(int32_t image, const std::string& key, const std::function<float(float)>& map) {
+  auto cacheKey = std::make_pair(image, key);
+  if (auto found = mapped_.find(cacheKey); found != mapped_.end()) return found->second;
+  const Texture& source = context_.scene.textures[size_t(image)];
+  Texture out;
+  out.name = source.name + " (" + key + ")";
+  out.width = source.width;
+  out.height = source.height;
+  out.channels = 1;
+  out.wrap = source.wrap;
+  size_t pixels = size_t(source.width) * source.height;
+  out.floats.resize(pixels);
+  for (size_t i = 0; i < pixels; ++i) {
+    size_t at = i * source.channels;
+    float v = source.floats.empty() ? float(source.bytes[at]) / 255.0f : source.floats[at];
+    if (source.floats.empty() && source.srgb) v = srgbToLinear(v);
+    out.floats[i] = map(v);
+  }
+  int32_t index = int32_t(context_.scene.textures.size());
+  context_.scene.textures.push_back(std::move(out));
+  mapped_[cacheKey] = index;
+  return index;
+}
+
 PbrtTexture PbrtTextures::value(const PbrtParameters& params, const std::string& name, Vec3 fallback) {
   if (std::optional<std::string> texture = params.getTexture(name)) {
     auto found = named_.find(*texture);

@@ -1,4 +1,5 @@
 #pragma once
+#include <functional>
 #include <map>
 #include <string>
 
@@ -29,6 +30,9 @@ class PbrtTextures {
   PbrtTexture value(const PbrtParameters& params, const std::string& name, Vec3 fallback);
   // An image file as a scene texture (cached by file and encoding); kNoTexture after a warning when unreadable.
   int32_t loadImage(const std::string& path, bool srgb, const std::string& file, size_t line);
+  // A one-channel float image of `map` applied to the first channel (as a linear value) of `image`: the form a
+  // material needs where its parameter is not linear in pbrt's texture value (roughness). Cached by `key`.
+  int32_t mappedImage(int32_t image, const std::string& key, const std::function<float(float)>& map);
 
  private:
   // A float copy of an image with its colour channels (as linear values) turned into 1 - value, for `invert`.
@@ -38,6 +42,7 @@ class PbrtTextures {
   std::map<std::string, PbrtTexture> named_;
   std::map<std::pair<std::string, bool>, int32_t> images_;
   std::map<int32_t, int32_t> inverted_;
+  std::map<std::pair<int32_t, std::string>, int32_t> mapped_;
 };
 
 }  // namespace candela
