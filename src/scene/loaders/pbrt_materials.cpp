@@ -86,8 +86,9 @@ Material PbrtMaterials::translate(const std::string& type, const PbrtParameters&
     PbrtTexture t = textures_.value(params, name, {fallbackValue, fallbackValue, fallbackValue});
     if (t.image == kNoTexture) return candelaRoughness(t.factor.x, remap);
     float scale = t.factor.x;
-    m.roughnessTexture = textures_.mappedImage(t.image, "roughness " + std::to_string(scale) + (remap ? " remapped" : ""),
-                                               [=](float v) { return candelaRoughness(scale * v, remap); });
+    m.roughnessTexture =
+        textures_.mappedImage(t.image, "roughness " + std::to_string(scale) + (remap ? " remapped" : ""),
+                              [=](float v) { return candelaRoughness(scale * v, remap); });
     return 1.0f;
   };
   if (params.getTexture("interface.roughness"))
