@@ -274,6 +274,14 @@ TEST(PbrtLoader, AreaLightsEmitFromTheirShapes) {
   EXPECT_GT(e.x, e.z);  // 3000 K is warm
 }
 
+TEST(PbrtLoader, AreaLightsOfInfiniteSizeEmitNoNaN) {
+  // An infinite triangle area gives power / area = 0 and an infinite L times 0: not a number.
+  Scene scene = loadText(std::string(kMirroredCamera) +
+                         "Scale 1e30 1e30 1e30\nAreaLightSource \"diffuse\" \"rgb L\" [1e38 1 1] \"float scale\" 1e10 "
+                         "\"float power\" 1\n" + kTriangle + kTriangle);
+  for (const Material& m : scene.materials) EXPECT_FALSE(std::isnan(m.emission.x));
+}
+
 TEST(PbrtLoader, InfiniteLightsBecomeTheEnvironment) {
   Scene scene = loadText("WorldBegin\nLightSource \"infinite\" \"rgb L\" [0.5 0.25 1] \"float scale\" 2\n");
   expectNear(scene.environment.radiance, {1, 0.5f, 2});

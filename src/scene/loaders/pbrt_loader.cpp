@@ -331,6 +331,10 @@ class PbrtReader {
   // The material a shape's triangles use: `base` with the shape's emission and alpha (cached: many shapes share
   // one light or cut-out).
   uint32_t variant(uint32_t base, Vec3 emission, AlphaSpec alpha) {
+    // Not-a-number (from infinite areas or radiance in a hostile file) would break the ordering of the cache's
+    // keys; it emits nothing, and scene repair clamps what is too bright.
+    for (float* c : {&emission.x, &emission.y, &emission.z})
+      if (std::isnan(*c)) *c = 0.0f;
     if (isBlack(emission) && alpha.value >= 1.0f && alpha.texture == kNoTexture) return base;
     auto key = std::make_tuple(base, emission.x, emission.y, emission.z, alpha.value, alpha.texture);
     auto found = variants_.find(key);
