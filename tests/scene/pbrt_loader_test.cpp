@@ -1,6 +1,7 @@
 #include "scene/loaders/pbrt_loader.h"
 
 #include <gtest/gtest.h>
+#include <stb/stb_image_write.h>
 #include <zlib.h>
 
 #include <cmath>
@@ -108,7 +109,8 @@ TEST(PbrtLoader, MotionKeepsTheStartTransform) {
   LoadWarnings warnings;
   Scene scene = loadText(std::string(kMirroredCamera) +
                              "TransformTimes 0 1\nActiveTransform EndTime\nTranslate 5 0 0\nActiveTransform All\n"
-                             "Translate 0 1 0\n" + kTriangle,
+                             "Translate 0 1 0\n" +
+                             kTriangle,
                          &warnings);
   expectNear(scene.instances[0].objectToWorld.point({0, 0, 0}), {0, 1, 0});
   ASSERT_EQ(warnings.messages.size(), 1u);
@@ -227,6 +229,102 @@ TEST(PbrtLoader, RenderSettingsAreBounded) {
   EXPECT_EQ(*scene.renderHints.maxDepth, 1024u);
 }
 
+TEST(PbrtLoader, MoreMaterialConversions) {
+  LoadWarnings warnings;
+  Scene scene = loadText(
+      std::string(kMirroredCamera) +
+          "Material \"coatedconductor\" \"float conductor.roughness\" 0.01 \"float interface.roughness\" 0\n" +
+          kTriangle + "Material \"thindielectric\" \"float eta\" 1.5\n" + kTriangle +
+          "Material \"diffusetransmission\" \"rgb reflectance\" [0.3 0.3 0.3]\n" + kTriangle +
+          "Material \"conductor\" \"float uroughness\" 0.04 \"float vroughness\" 0.0 \"bool remaproughness\" false\n" +
+          kTriangle + "Material \"dielectric\" \"float roughness\" 0.3\n" + kTriangle,
+      &warnings);
+  auto materialOf = [&](size_t i) { return scene.materials[scene.meshes[i].triangleMaterials[0]]; };
+  EXPECT_EQ(materialOf(0).type, MaterialType::Disney);
+  EXPECT_FLOAT_EQ(materialOf(0).metallic, 1.0f);
+  EXPECT_FLOAT_EQ(materialOf(0).clearcoat, 1.0f);
+  EXPECT_FLOAT_EQ(materialOf(0).clearcoatGloss, 1.0f);
+  EXPECT_NEAR(materialOf(0).roughness, std::pow(0.01f, 0.25f), 1e-5f);
+  // A thin sheet: a mirror of reflectance 2R/(1+R) that rays pass otherwise.
+  EXPECT_EQ(materialOf(1).type, MaterialType::Mirror);
+  EXPECT_EQ(materialOf(1).alphaMode, AlphaMode::Blend);
+  EXPECT_NEAR(materialOf(1).opacity, 2.0f * 0.04f / 1.04f, 1e-5f);
+  EXPECT_EQ(materialOf(2).type, MaterialType::Diffuse);
+  expectNear(materialOf(2).baseColor, {0.3f, 0.3f, 0.3f});
+  // Without remapping, the mean of u and v roughness is alpha itself: candela's roughness is its square root.
+  EXPECT_EQ(materialOf(3).type, MaterialType::Pbr);
+  EXPECT_NEAR(materialOf(3).roughness, std::sqrt(0.02f), 1e-5f);
+  EXPECT_EQ(materialOf(4).type, MaterialType::Disney);
+  EXPECT_FLOAT_EQ(materialOf(4).specTrans, 1.0f);
+  std::string all;
+  for (const std::string& w : warnings.messages) all += w + "\n";
+  EXPECT_NE(all.find("thindielectric"), std::string::npos) << all;
+  EXPECT_NE(all.find("diffusetransmission"), std::string::npos) << all;
+}
+
+TEST(PbrtLoader, ConstantScaleMixAndCheckerboardTextures) {
+  LoadWarnings warnings;
+  Scene scene = loadText(std::string(kMirroredCamera) +
+                             "Texture \"c\" \"spectrum\" \"constant\" \"rgb value\" [0.2 0.4 0.6]\n"
+                             "Texture \"s\" \"spectrum\" \"scale\" \"texture tex\" \"c\" \"float scale\" 0.5\n"
+                             "Texture \"m\" \"spectrum\" \"mix\" \"rgb tex1\" [1 1 1] \"rgb tex2\" [0 0 0] "
+                             "\"float amount\" 0.25\n"
+                             "Texture \"k\" \"spectrum\" \"checkerboard\" \"rgb tex1\" [1 0 0] \"rgb tex2\" [0 0 1]\n"
+                             "Material \"diffuse\" \"texture reflectance\" \"s\"\n" +
+                             kTriangle + "Material \"diffuse\" \"texture reflectance\" \"m\"\n" + kTriangle +
+                             "Material \"diffuse\" \"texture reflectance\" \"k\"\n" + kTriangle,
+                         &warnings);
+  auto colourOf = [&](size_t i) { return scene.materials[scene.meshes[i].triangleMaterials[0]].baseColor; };
+  expectNear(colourOf(0), {0.1f, 0.2f, 0.3f});
+  expectNear(colourOf(1), {0.75f, 0.75f, 0.75f});  // the mean: tex1 weighted 1 - amount
+  expectNear(colourOf(2), {0.5f, 0.0f, 0.5f});
+  EXPECT_EQ(warnings.messages.size(), 2u);  // mix and checkerboard replaced by their means
+}
+
+TEST(PbrtLoader, PngTexturesNormalMapsAndTheirEncoding) {
+  TempFolder folder;
+  const uint8_t pixels[4 * 3] = {255, 0, 0, 0, 255, 0, 0, 0, 255, 128, 128, 255};
+  ASSERT_TRUE(stbi_write_png(folder.file("albedo.png").c_str(), 2, 2, 3, pixels, 6));
+  ASSERT_TRUE(stbi_write_png(folder.file("normals.png").c_str(), 2, 2, 3, pixels, 6));
+  std::string path = folder.write(
+      "scene.pbrt", std::string(kMirroredCamera) +
+                        "Texture \"srgb\" \"spectrum\" \"imagemap\" \"string filename\" \"albedo.png\"\n"
+                        "Texture \"linear\" \"spectrum\" \"imagemap\" \"string filename\" \"albedo.png\" "
+                        "\"string encoding\" \"linear\"\n"
+                        "Material \"diffuse\" \"texture reflectance\" \"srgb\" \"string normalmap\" \"normals.png\"\n" +
+                        kTriangle + "Material \"diffuse\" \"texture reflectance\" \"linear\"\n" + kTriangle);
+  LoadWarnings warnings;
+  Scene scene = loadPbrt(path, warnings);
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages.front();
+  const Material& a = scene.materials[scene.meshes[0].triangleMaterials[0]];
+  const Material& b = scene.materials[scene.meshes[1].triangleMaterials[0]];
+  ASSERT_NE(a.baseColorTexture, kNoTexture);
+  ASSERT_NE(b.baseColorTexture, kNoTexture);
+  EXPECT_TRUE(scene.textures[size_t(a.baseColorTexture)].srgb);
+  EXPECT_FALSE(scene.textures[size_t(b.baseColorTexture)].srgb);
+  ASSERT_NE(a.normalTexture, kNoTexture);
+  EXPECT_FALSE(scene.textures[size_t(a.normalTexture)].srgb);  // normal maps hold vectors, not colours
+}
+
+TEST(PbrtLoader, CameraFeaturesNotRenderedAreNamed) {
+  LoadWarnings warnings;
+  loadText(
+      "ConcatTransform [1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1]\nCamera \"orthographic\" \"float screenwindow\" "
+      "[-1 1 -1 1]\nPixelFilter \"gaussian\"\nWorldBegin\n",
+      &warnings);
+  std::string all;
+  for (const std::string& w : warnings.messages) all += w + "\n";
+  EXPECT_NE(all.find("'orthographic'"), std::string::npos) << all;
+  EXPECT_NE(all.find("screenwindow"), std::string::npos) << all;
+  EXPECT_NE(all.find("pixel filter"), std::string::npos) << all;
+}
+
+TEST(PbrtLoader, ConcatTransformMultipliesTheCurrentTransform) {
+  Scene scene = loadText(std::string(kMirroredCamera) +
+                         "Translate 1 0 0\nConcatTransform [2 0 0 0 0 2 0 0 0 0 2 0 0 0 3 1]\n" + kTriangle);
+  expectNear(scene.instances[0].objectToWorld.point({1, 0, 0}), {3, 0, 3});
+}
+
 TEST(PbrtLoader, NamedAndMixedMaterials) {
   std::string text = std::string(kMirroredCamera) +
                      "MakeNamedMaterial \"red\" \"string type\" \"diffuse\" \"rgb reflectance\" [1 0 0]\n"
@@ -278,7 +376,8 @@ TEST(PbrtLoader, AreaLightsOfInfiniteSizeEmitNoNaN) {
   // An infinite triangle area gives power / area = 0 and an infinite L times 0: not a number.
   Scene scene = loadText(std::string(kMirroredCamera) +
                          "Scale 1e30 1e30 1e30\nAreaLightSource \"diffuse\" \"rgb L\" [1e38 1 1] \"float scale\" 1e10 "
-                         "\"float power\" 1\n" + kTriangle + kTriangle);
+                         "\"float power\" 1\n" +
+                         kTriangle + kTriangle);
   for (const Material& m : scene.materials) EXPECT_FALSE(std::isnan(m.emission.x));
 }
 
@@ -319,9 +418,9 @@ TEST(PbrtLoader, ParametersNotAppliedAreNamed) {
 
 TEST(PbrtLoader, UnknownSpectraWarnAndTakeTheDefault) {
   LoadWarnings warnings;
-  Scene scene = loadText(std::string(kMirroredCamera) +
-                             "Material \"diffuse\" \"spectrum reflectance\" \"measured.spd\"\n" + kTriangle,
-                         &warnings);
+  Scene scene = loadText(
+      std::string(kMirroredCamera) + "Material \"diffuse\" \"spectrum reflectance\" \"measured.spd\"\n" + kTriangle,
+      &warnings);
   expectNear(scene.materials[scene.meshes[0].triangleMaterials[0]].baseColor, {0.5f, 0.5f, 0.5f});
   ASSERT_EQ(warnings.messages.size(), 1u);
   EXPECT_NE(warnings.messages[0].find("'measured.spd'"), std::string::npos) << warnings.messages[0];
@@ -522,8 +621,9 @@ TEST(PbrtLoader, PlyMeshesInEveryEncoding) {
 TEST(PbrtLoader, PlyFacesOfMixedSizes) {
   // Lists of different lengths make tinyply read the faces twice, seeking back in between.
   TempFolder folder;
-  std::string ply = "ply\nformat binary_little_endian 1.0\nelement vertex 5\nproperty float x\nproperty float y\n"
-                    "property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n";
+  std::string ply =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 5\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n";
   const float vertices[5][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 0, 0}};
   ply.append(reinterpret_cast<const char*>(vertices), sizeof(vertices));
   const int32_t quad[4] = {0, 1, 2, 3}, triangle[3] = {1, 4, 2};
@@ -532,8 +632,8 @@ TEST(PbrtLoader, PlyFacesOfMixedSizes) {
   ply += char(3);
   ply.append(reinterpret_cast<const char*>(triangle), sizeof(triangle));
   folder.write("mixed.ply", ply);
-  std::string path = folder.write("scene.pbrt", std::string(kMirroredCamera) +
-                                                    "Shape \"plymesh\" \"string filename\" \"mixed.ply\"\n");
+  std::string path = folder.write(
+      "scene.pbrt", std::string(kMirroredCamera) + "Shape \"plymesh\" \"string filename\" \"mixed.ply\"\n");
   LoadWarnings warnings;
   Scene scene = loadPbrt(path, warnings);
   ASSERT_EQ(scene.meshes.size(), 1u);
@@ -641,6 +741,28 @@ TEST(PbrtLights, OctahedralMapsFollowTheMirroredWorld) {
   const float* plusX = map.floats.data() + (size_t(map.height / 2) * map.width + 3 * map.width / 4) * 3;
   EXPECT_GT(minusX[0], 0.9f);
   EXPECT_GT(plusX[2], 0.9f);
+}
+
+TEST(PbrtLights, PbrtV3EquirectangularMaps) {
+  // pbrt-v3's layout: u = phi / 2pi about the light's +z, v = theta / pi from +z. A map whose top half is red
+  // (the light's +z hemisphere), turned so that +z is world +y: red above, blue below.
+  TempFolder folder;
+  std::string pfm = "PF\n32 16\n-1.0\n";
+  for (int row = 0; row < 16; ++row)  // PFM rows run from the bottom
+    for (int column = 0; column < 32; ++column) {
+      bool upper = row >= 8;
+      float rgb[3] = {upper ? 1.0f : 0.0f, 0.0f, upper ? 0.0f : 1.0f};
+      pfm.append(reinterpret_cast<const char*>(rgb), sizeof(rgb));
+    }
+  folder.write("sky.pfm", pfm);
+  std::string path = folder.write("scene.pbrt", std::string(kMirroredCamera) +
+                                                    "Rotate -90 1 0 0\nLightSource \"infinite\" \"string filename\" "
+                                                    "\"sky.pfm\"\n");
+  LoadWarnings warnings;
+  const Texture& map = loadPbrt(path, warnings).environment.map;
+  ASSERT_EQ(map.height, 16u);
+  EXPECT_GT(map.floats[(size_t(1) * map.width + 5) * 3], 0.9f);
+  EXPECT_GT(map.floats[(size_t(map.height - 2) * map.width + 5) * 3 + 2], 0.9f);
 }
 
 TEST(PbrtLights, OctahedralMapsBecomeEquirectangularThroughTheLightTransform) {
