@@ -269,16 +269,31 @@ TEST(PbrtLoader, ConstantScaleMixAndCheckerboardTextures) {
                              "Texture \"s\" \"spectrum\" \"scale\" \"texture tex\" \"c\" \"float scale\" 0.5\n"
                              "Texture \"m\" \"spectrum\" \"mix\" \"rgb tex1\" [1 1 1] \"rgb tex2\" [0 0 0] "
                              "\"float amount\" 0.25\n"
-                             "Texture \"k\" \"spectrum\" \"checkerboard\" \"rgb tex1\" [1 0 0] \"rgb tex2\" [0 0 1]\n"
+                             "Texture \"k\" \"spectrum\" \"checkerboard\" \"rgb tex1\" [1 0 0] \"rgb tex2\" [0 0 1] "
+                             "\"float uscale\" 4 \"float vscale\" 4\n"
                              "Material \"diffuse\" \"texture reflectance\" \"s\"\n" +
                              kTriangle + "Material \"diffuse\" \"texture reflectance\" \"m\"\n" + kTriangle +
-                             "Material \"diffuse\" \"texture reflectance\" \"k\"\n" + kTriangle,
+                             "Material \"diffuse\" \"texture reflectance\" \"k\"\n"
+                             "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"point2 uv\" [0 0 1 0 0 1]\n",
                          &warnings);
   auto colourOf = [&](size_t i) { return scene.materials[scene.meshes[i].triangleMaterials[0]].baseColor; };
   expectNear(colourOf(0), {0.1f, 0.2f, 0.3f});
   expectNear(colourOf(1), {0.75f, 0.75f, 0.75f});  // the mean: tex1 weighted 1 - amount
-  expectNear(colourOf(2), {0.5f, 0.0f, 0.5f});
-  EXPECT_EQ(warnings.messages.size(), 2u);  // mix and checkerboard replaced by their means
+  EXPECT_EQ(warnings.messages.size(), 1u);         // mix replaced by its mean
+  // The checkerboard is an image of one period: 2 x 2 checks; tex1 where floor(s) + floor(t) is even.
+  const Material& checks = scene.materials[scene.meshes[2].triangleMaterials[0]];
+  ASSERT_NE(checks.baseColorTexture, kNoTexture);
+  const Texture& image = scene.textures[size_t(checks.baseColorTexture)];
+  auto texel = [&](uint32_t x, uint32_t y) {
+    const float* p = image.floats.data() + (size_t(y) * image.width + x) * 3;
+    return Vec3{p[0], p[1], p[2]};
+  };
+  expectNear(texel(0, image.height - 1), {1, 0, 0});  // s, t in [0, 1): bottom left
+  expectNear(texel(image.width - 1, image.height - 1), {0, 0, 1});
+  expectNear(texel(0, 0), {0, 0, 1});
+  // pbrt's (u, v) = (1, 0) is s = 4 (uscale 4), half periods: candela's u = 2.
+  ASSERT_EQ(scene.meshes[2].uvs.size(), 3u);
+  EXPECT_FLOAT_EQ(scene.meshes[2].uvs[1].x, 2.0f);
 }
 
 TEST(PbrtLoader, PngTexturesNormalMapsAndTheirEncoding) {

@@ -66,6 +66,38 @@ int32_t PbrtTextures::invertedImage(int32_t image) {
   return index;
 }
 
+int32_t PbrtTextures::checkerboardImage(Vec3 first, Vec3 second) {
+  auto key = std::make_tuple(first.x, first.y, first.z, second.x, second.y, second.z);
+  bool finite = isFinite(first) && isFinite(second);  // not-a-number would break the ordering of the keys
+  if (auto found = checkerboards_.find(key); finite && found != checkerboards_.end()) return found->second;
+  if (checkerboards_.size() >= kMaxCheckerboardImages || !finite) {
+    context_.warn("many checkerboards", "checkerboards beyond the first " + std::to_string(kMaxCheckerboardImages) +
+                                            " distinct ones (or of colours that are not finite) become their mean");
+    return kNoTexture;
+  }
+  // pbrt's check at (s, t) is tex1 where floor(s) + floor(t) is even. The image spans s and t in [0, 2), and
+  // its rows run down while t runs up: the top half is t in [1, 2).
+  constexpr uint32_t kSize = 64;
+  Texture image;
+  image.name = "checkerboard";
+  image.width = image.height = kSize;
+  image.channels = 3;
+  image.floats.resize(size_t(kSize) * kSize * 3);
+  for (uint32_t y = 0; y < kSize; ++y)
+    for (uint32_t x = 0; x < kSize; ++x) {
+      int s = x >= kSize / 2 ? 1 : 0, t = y < kSize / 2 ? 1 : 0;
+      Vec3 c = (s + t) % 2 == 0 ? first : second;
+      float* out = image.floats.data() + (size_t(y) * kSize + x) * 3;
+      out[0] = c.x;
+      out[1] = c.y;
+      out[2] = c.z;
+    }
+  int32_t index = int32_t(context_.scene.textures.size());
+  context_.scene.textures.push_back(std::move(image));
+  checkerboards_[key] = index;
+  return index;
+}
+
 int32_t PbrtTextures::mappedImage(int32_t image, const std::string& key, const std::function<float(float)>& map) {
   auto cacheKey = std::make_pair(image, key);
   if (auto found = mapped_.find(cacheKey); found != mapped_.end()) return found->second;
@@ -131,6 +163,12 @@ void PbrtTextures::define(const std::string& name, const std::string& valueType,
       context_.warn("scale of two images", "a 'scale' texture of two images keeps only the first");
     t = tex.image != kNoTexture ? tex : scale;
     t.factor = tex.factor * scale.factor;
+  } else if (className == "checkerboard" && params.getInt("dimension", 2) == 2) {
+    PbrtTexture a = value(params, "tex1", {1, 1, 1}), b = value(params, "tex2", {0, 0, 0});
+    if (a.image != kNoTexture || b.image != kNoTexture)
+      context_.warn("checkerboard of images", "checkerboards of image textures use the images' mean colours");
+    t.image = checkerboardImage(meanOf(a), meanOf(b));
+    if (t.image == kNoTexture) t.factor = 0.5f * (meanOf(a) + meanOf(b));
   } else if (className == "mix" || className == "checkerboard") {
     PbrtTexture a = value(params, "tex1", {1, 1, 1}), b = value(params, "tex2", {0, 0, 0});
     float amount = className == "mix" ? params.getFloat("amount", 0.5f) : 0.5f;
@@ -143,6 +181,11 @@ void PbrtTextures::define(const std::string& name, const std::string& valueType,
   }
   t.uvScale = {params.getFloat("uscale", 1.0f), params.getFloat("vscale", 1.0f)};
   t.uvOffset = {params.getFloat("udelta", 0.0f), params.getFloat("vdelta", 0.0f)};
+  if (className == "checkerboard" && t.image != kNoTexture) {
+    // The image holds one period of the pattern, two checks of pbrt's unit size along each axis.
+    t.uvScale = {0.5f * t.uvScale.x, 0.5f * t.uvScale.y};
+    t.uvOffset = {0.5f * t.uvOffset.x, 0.5f * t.uvOffset.y};
+  }
   std::string mapping = params.getString("mapping", "uv");
   if (mapping != "uv") context_.warn("texture mapping " + mapping, "texture mapping '" + mapping + "' read as 'uv'");
   named_[name] = t;

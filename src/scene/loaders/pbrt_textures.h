@@ -2,6 +2,7 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <tuple>
 
 #include "scene/loaders/pbrt_context.h"
 #include "scene/loaders/pbrt_parameters.h"
@@ -18,8 +19,8 @@ struct PbrtTexture {
 };
 
 // The named textures of a scene (`Texture "name" "spectrum"|"float" "class" ...`): imagemap (PNG, JPEG, TGA, BMP,
-// HDR, EXR, PFM; invert), constant and scale are honoured; mix and checkerboard become the mean of their two inputs,
-// other classes a constant grey, each with a warning.
+// HDR, EXR, PFM; invert), constant, scale and 2D checkerboards (as an image of one period) are honoured; mix and 3D
+// checkerboards become the mean of their two inputs, other classes a constant grey, each with a warning.
 class PbrtTextures {
  public:
   explicit PbrtTextures(PbrtContext& context) : context_(context) {}
@@ -33,6 +34,9 @@ class PbrtTextures {
   // A one-channel float image of `map` applied to the first channel (as a linear value) of `image`: the form a
   // material needs where its parameter is not linear in pbrt's texture value (roughness). Cached by `key`.
   int32_t mappedImage(int32_t image, const std::string& key, const std::function<float(float)>& map);
+  // A 64 x 64 image of one period of a 2D checkerboard of two colours (the first where pbrt's tex1 goes), shared
+  // by every checkerboard of the same colours; kNoTexture (after a warning) beyond kMaxCheckerboardImages.
+  int32_t checkerboardImage(Vec3 first, Vec3 second);
 
  private:
   // A float copy of an image with its colour channels (as linear values) turned into 1 - value, for `invert`.
@@ -42,6 +46,8 @@ class PbrtTextures {
   std::map<std::string, PbrtTexture> named_;
   std::map<std::pair<std::string, bool>, int32_t> images_;
   std::map<int32_t, int32_t> inverted_;
+  static constexpr size_t kMaxCheckerboardImages = 1024;
+  std::map<std::tuple<float, float, float, float, float, float>, int32_t> checkerboards_;
   std::map<std::pair<int32_t, std::string>, int32_t> mapped_;
 };
 
