@@ -340,6 +340,18 @@ TEST(PbrtLoader, ConcatTransformMultipliesTheCurrentTransform) {
   expectNear(scene.instances[0].objectToWorld.point({1, 0, 0}), {3, 0, 3});
 }
 
+TEST(PbrtLoader, NamedMaterialsMayBeMadeAfterTheirUse) {
+  LoadWarnings warnings;
+  Scene scene =
+      loadText(std::string(kMirroredCamera) + "NamedMaterial \"later\"\n" + kTriangle + "NamedMaterial \"never\"\n" +
+                   kTriangle + "MakeNamedMaterial \"later\" \"string type\" \"diffuse\" \"rgb reflectance\" [1 0 0]\n",
+               &warnings);
+  expectNear(scene.materials[scene.meshes[0].triangleMaterials[0]].baseColor, {1, 0, 0});
+  expectNear(scene.materials[scene.meshes[1].triangleMaterials[0]].baseColor, {0.5f, 0.5f, 0.5f});
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_NE(warnings.messages[0].find("'never' is not defined"), std::string::npos) << warnings.messages[0];
+}
+
 TEST(PbrtLoader, NamedAndMixedMaterials) {
   std::string text = std::string(kMirroredCamera) +
                      "MakeNamedMaterial \"red\" \"string type\" \"diffuse\" \"rgb reflectance\" [1 0 0]\n"

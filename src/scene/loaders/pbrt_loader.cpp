@@ -35,7 +35,8 @@ constexpr size_t kMaxGeneratedTriangles = size_t(1) << 25;
 struct GraphicsState {
   glm::mat4 ctm{1.0f};
   bool reverseOrientation = false;
-  std::optional<PbrtMaterial> material;  // none: pbrt's default diffuse
+  std::optional<PbrtMaterial> material;  // none: pbrt's default diffuse, or the material named below
+  std::string materialName;              // a NamedMaterial not made yet: pbrt-v4 resolves names once the scene is read
   std::optional<PbrtAreaLight> areaLight;
 };
 
@@ -49,6 +50,16 @@ struct ObjectShape {
 struct AlphaSpec {
   float value = 1.0f;
   int32_t texture = kNoTexture;
+};
+
+struct PendingShape {
+  uint32_t meshId;
+  std::string materialName;
+  std::vector<Vec3> emission;
+  AlphaSpec alpha;
+  size_t triangles;
+  std::string file;
+  size_t line;
 };
 
 class PbrtReader {
@@ -73,6 +84,7 @@ class PbrtReader {
 
   Scene finish() {
     if (!worldBegun_) chooseWorldMirror();
+    assignPendingMaterials();
     Scene& scene = context_.scene;
     // The same ranges as a JSON scene file's render settings (scene_file.cpp).
     uint32_t width = uint32_t(std::clamp(film_ ? film_->getInt("xresolution", 1280) : 1280, 1, 16384));
@@ -254,6 +266,7 @@ class PbrtReader {
         std::string type = readString(tokens, d);
         PbrtParameters params = parsePbrtParameters(tokens);
         state_.material = materials_.make(type, params);
+        state_.materialName.clear();
         context_.warnUnused("material '" + type + "'", params);
       } else if (d == "MakeNamedMaterial") {
         std::string name = readString(tokens, d);
@@ -262,7 +275,9 @@ class PbrtReader {
         context_.warnUnused("material '" + params.getString("type", "") + "'", params);
       } else if (d == "NamedMaterial") {
         std::string name = readString(tokens, d);
-        state_.material = materials_.named(name, tokens.file(), t.line);
+        state_.material.reset();
+        state_.materialName = name;
+        if (materials_.isNamed(name)) state_.material = materials_.named(name, tokens.file(), t.line);
       } else if (d == "LightSource") {
         std::string type = readString(tokens, d);
         PbrtParameters params = parsePbrtParameters(tokens);
@@ -405,7 +420,6 @@ class PbrtReader {
     }
     windTrianglesAlongNormals(mesh);
 
-    PbrtMaterial material = state_.material ? *state_.material : materials_.fallback();
     AlphaSpec alpha = shapeAlpha(params);
     Affine3x4 toWorld = toAffine(worldFromPbrt_ * state_.ctm);
     std::vector<Vec3> emission;  // per triangle; empty when the shape does not emit
@@ -414,10 +428,38 @@ class PbrtReader {
     } else if (state_.areaLight) {
       context_.warn("area light instance", "area lights inside object definitions do not emit (as in pbrt-v4)");
     }
+    size_t triangles = mesh.triangleCount();
+    if (state_.areaLight && state_.areaLight->twoSided && !currentObject_) {
+      for (size_t i = 0; i < 3 * triangles; i += 3)
+        mesh.indices.insert(mesh.indices.end(), {mesh.indices[i], mesh.indices[i + 2], mesh.indices[i + 1]});
+      mesh.triangleMaterials.resize(2 * triangles);
+    }
+    if (!state_.material && !state_.materialName.empty() && materials_.isNamed(state_.materialName))
+      state_.material = materials_.named(state_.materialName, params.file, params.line);
+    uint32_t pendingMesh = uint32_t(context_.scene.meshes.size());
+    if (state_.material || state_.materialName.empty()) {
+      assignMaterials(mesh, state_.material ? *state_.material : materials_.fallback(), emission, alpha, triangles);
+    } else {
+      pendingShapes_.push_back(
+          {pendingMesh, state_.materialName, std::move(emission), alpha, triangles, params.file, params.line});
+    }
+    uint32_t meshId = uint32_t(context_.scene.meshes.size());
+    context_.scene.meshes.push_back(std::move(mesh));
+    if (currentObject_) {
+      objects_[*currentObject_].push_back({meshId, state_.ctm});
+    } else {
+      addInstance(meshId, toWorld, params.file, params.line);
+    }
+  }
+
+  // The materials of a shape's `triangles` (and of their reversed copies after them, for two-sided lights), with
+  // its emission and alpha, and its texture coordinates through the material's uv mapping.
+  void assignMaterials(Mesh& mesh, const PbrtMaterial& material, const std::vector<Vec3>& emission, AlphaSpec alpha,
+                       size_t triangles) {
     std::vector<float> cumulative;
     float total = 0.0f;
     for (auto choice : material.choices) cumulative.push_back(total += choice.second);
-    for (size_t t = 0; t < mesh.triangleMaterials.size(); ++t) {
+    for (size_t t = 0; t < triangles; ++t) {
       size_t pick = 0;
       if (cumulative.size() > 1) {
         // A fixed hash of the triangle index: pbrt's mix chooses per shading point, candela per triangle.
@@ -431,23 +473,19 @@ class PbrtReader {
       Vec3 emitted = emission.empty() ? Vec3{0, 0, 0} : emission[t];
       mesh.triangleMaterials[t] = variant(material.choices[pick].first, emitted, alpha);
     }
+    for (size_t t = triangles; t < mesh.triangleMaterials.size(); ++t)
+      mesh.triangleMaterials[t] = mesh.triangleMaterials[t - triangles];
     // pbrt's (u, v) through the base colour texture's mapping, then v flipped: candela's v runs down the image.
     auto [scale, offset] = materials_.uvMapping(material.choices.front().first);
     for (Vec2& uv : mesh.uvs) uv = {scale.x * uv.x + offset.x, 1.0f - (scale.y * uv.y + offset.y)};
-    if (state_.areaLight && state_.areaLight->twoSided && !currentObject_) {
-      size_t n = mesh.indices.size();
-      for (size_t i = 0; i + 2 < n; i += 3)
-        mesh.indices.insert(mesh.indices.end(), {mesh.indices[i], mesh.indices[i + 2], mesh.indices[i + 1]});
-      size_t triangles = mesh.triangleMaterials.size();
-      for (size_t t = 0; t < triangles; ++t) mesh.triangleMaterials.push_back(mesh.triangleMaterials[t]);
-    }
-    uint32_t meshId = uint32_t(context_.scene.meshes.size());
-    context_.scene.meshes.push_back(std::move(mesh));
-    if (currentObject_) {
-      objects_[*currentObject_].push_back({meshId, state_.ctm});
-    } else {
-      addInstance(meshId, toWorld, params.file, params.line);
-    }
+  }
+
+  // Shapes whose NamedMaterial was made only after them (pbrt-v4 allows that): materials assigned at the end.
+  void assignPendingMaterials() {
+    for (PendingShape& p : pendingShapes_)
+      assignMaterials(context_.scene.meshes[p.meshId], materials_.named(p.materialName, p.file, p.line), p.emission,
+                      p.alpha, p.triangles);
+    pendingShapes_.clear();
   }
 
   void addInstance(uint32_t meshId, const Affine3x4& toWorld, const std::string& file, size_t line) {
@@ -477,6 +515,7 @@ class PbrtReader {
   std::map<std::string, glm::mat4> namedFrames_;
   std::map<std::string, std::vector<ObjectShape>> objects_;
   std::optional<std::string> currentObject_;
+  std::vector<PendingShape> pendingShapes_;
   std::map<std::tuple<uint32_t, float, float, float, float, int32_t>, uint32_t> variants_;
   std::optional<PbrtParameters> camera_, film_;
   std::string cameraType_;

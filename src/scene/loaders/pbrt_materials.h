@@ -23,7 +23,9 @@ class PbrtMaterials {
 
   PbrtMaterial make(const std::string& type, const PbrtParameters& params);
   void defineNamed(const std::string& name, const PbrtParameters& params);  // MakeNamedMaterial ("string type")
+  // A named material, or (after a warning naming file:line) the default when no such material was made.
   PbrtMaterial named(const std::string& name, const std::string& file, size_t line);
+  bool isNamed(const std::string& name) const { return named_.count(name) > 0; }
   PbrtMaterial fallback();  // pbrt's default: diffuse 0.5
 
   // The uv mapping of a material's base colour texture, to be applied to the coordinates of its meshes.
