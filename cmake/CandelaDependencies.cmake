@@ -13,6 +13,7 @@ find_package(glm REQUIRED CONFIG)
 find_package(CLI11 REQUIRED CONFIG)
 find_package(nlohmann_json REQUIRED CONFIG)
 find_package(OpenEXR REQUIRED CONFIG)
+find_package(ZLIB REQUIRED)
 pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
 pkg_check_modules(XXHASH REQUIRED IMPORTED_TARGET libxxhash)
 # Single-header libraries: candela compiles their implementations itself (src/scene/loaders/*_impl.cpp).

@@ -54,7 +54,8 @@ void addSamplerOption(CLI::App& cmd, SamplerKind& sampler) {
 void addRenderOptions(CLI::App& cmd, RenderJob& job) {
   std::string scenes;
   for (const std::string& n : builtinSceneNames()) scenes += (scenes.empty() ? "" : ", ") + n;
-  cmd.add_option("scene", job.sceneSpec, "Scene file (.obj, .gltf, .glb, .json) or built-in scene (" + scenes + ")")
+  cmd.add_option("scene", job.sceneSpec,
+                 "Scene file (.obj, .gltf, .glb, .pbrt, .json) or built-in scene (" + scenes + ")")
       ->capture_default_str();
   cmd.add_option("--env", job.environmentPath, "Environment map (.hdr or .exr) that lights the scene");
   cmd.add_option("--camera", job.camera, "The scene's camera to take, by name or index (default: the first)");
@@ -221,7 +222,8 @@ int runLoad(const std::string& spec, const SceneLoadOptions& options) {
 void addViewOptions(CLI::App& cmd, ViewerOptions& options, std::string& toneMapper) {
   std::string scenes;
   for (const std::string& n : builtinSceneNames()) scenes += (scenes.empty() ? "" : ", ") + n;
-  cmd.add_option("scene", options.sceneSpec, "Scene file (.obj, .gltf, .glb, .json) or built-in scene (" + scenes + ")")
+  cmd.add_option("scene", options.sceneSpec,
+                 "Scene file (.obj, .gltf, .glb, .pbrt, .json) or built-in scene (" + scenes + ")")
       ->capture_default_str();
   cmd.add_option("--env", options.environmentPath, "Environment map (.hdr or .exr) that lights the scene");
   cmd.add_option("--camera", options.camera, "The scene's camera to take, by name or index (default: the first)");

@@ -12,6 +12,7 @@
 #include "scene/loaders/image_decoding.h"
 #include "scene/loaders/load_diagnostics.h"
 #include "scene/loaders/obj_loader.h"
+#include "scene/loaders/pbrt_loader.h"
 #include "scene/loaders/scene_file.h"
 #include "scene/scene_repair.h"
 #include "core/file_extension.h"
@@ -20,10 +21,13 @@ namespace candela {
 
 namespace {
 
+// A .pbrt scene shares nothing with other models: no scene file names one.
 Scene loadModelFile(const std::string& path, OutsidePaths outside, LoadWarnings& warnings,
                     SharedModelAssets* shared) {
-  return lowerCaseExtension(path) == ".obj" ? loadObj(path, warnings, outside, shared)
-                                            : loadGltf(path, warnings, outside, shared);
+  const std::string ext = lowerCaseExtension(path);
+  if (ext == ".obj") return loadObj(path, warnings, outside, shared);
+  if (ext == ".pbrt") return loadPbrt(path, warnings, outside);
+  return loadGltf(path, warnings, outside, shared);
 }
 
 // The scene cache holds only what loads under the default path rule.
@@ -46,7 +50,7 @@ auto withMemoryReported(const std::string& file, Load load) {
 
 Scene loadFile(const std::string& path, const SceneLoadOptions& options, LoadWarnings& warnings) {
   std::string ext = lowerCaseExtension(path);
-  if (ext == ".obj" || ext == ".gltf" || ext == ".glb")
+  if (ext == ".obj" || ext == ".gltf" || ext == ".glb" || ext == ".pbrt")
     return loadThroughSceneCache(path, cacheFor(options), warnings, [&](LoadWarnings& w) {
       return loadModelFile(path, options.outsidePaths, w, nullptr);
     });
@@ -65,7 +69,7 @@ Scene loadFile(const std::string& path, const SceneLoadOptions& options, LoadWar
   for (const std::string& n : builtinSceneNames()) names += (names.empty() ? "" : ", ") + n;
   if (!std::filesystem::exists(path))
     throw std::runtime_error("unknown scene '" + printableText(path) + "': not a file, nor a built-in scene (" + names + ")");
-  throw std::runtime_error(printableText(path) + ": unknown scene format '" + printableText(ext) + "' (use .obj, .gltf, .glb or .json, or a built-in scene: " + names +
+  throw std::runtime_error(printableText(path) + ": unknown scene format '" + printableText(ext) + "' (use .obj, .gltf, .glb, .pbrt or .json, or a built-in scene: " + names +
                            ")");
 }
 

@@ -9,19 +9,19 @@ namespace candela {
 
 struct SceneLoadOptions {
   std::string environmentPath;  // an .hdr or .exr map that replaces the scene's environment; empty: keep it
-  SceneCacheSettings cache = {};  // for models (.obj, .gltf, .glb) and scene files (as a whole)
+  SceneCacheSettings cache = {};  // for models (.obj, .gltf, .glb, .pbrt) and scene files (as a whole)
   // Whether models and scene files may refer to files outside their folders (path_confinement.h). Models are
   // then loaded afresh: the scene cache holds only what loads under the default rule.
   OutsidePaths outsidePaths = OutsidePaths::Refused;
   std::string camera = {};  // the name or index (in Scene::cameras) of the camera to take; empty: the first
 };
 
-// A built-in scene name or a scene file (.obj, .gltf, .glb, .json), chosen by extension, repaired (repairScene:
-// unusable triangles and instances dropped, radiance clamped, the camera checked). Warnings go to stderr, one
-// line each. A scene without a camera gets one that frames its bounds; of a file's several cameras the first is
-// taken, with a warning that names it, unless options.camera names another. A scene with nothing that emits
-// light (no emissive surface, no environment) is a warning. Throws std::runtime_error with one line naming the
-// file on failure, running out of memory included.
+// A built-in scene name or a scene file (.obj, .gltf, .glb, .pbrt, .json), chosen by extension, repaired
+// (repairScene: unusable triangles and instances dropped, radiance clamped, the camera checked). Warnings go to
+// stderr, one line each. A scene without a camera gets one that frames its bounds; of a file's several cameras
+// the first is taken, with a warning that names it, unless options.camera names another. A scene with nothing
+// that emits light is a warning. Throws std::runtime_error with one line naming the file on failure, running out
+// of memory included.
 Scene loadScene(const std::string& spec, const SceneLoadOptions& options = {});
 
 // Places the camera outside the scene's bounds, looking at their centre slightly from above, far enough back

@@ -1,0 +1,196 @@
+#include "scene/loaders/pbrt_textures.h"
+
+#include "core/file_extension.h"
+#include "scene/loaders/file_bytes.h"
+#include "scene/loaders/image_decoding.h"
+#include "scene/loaders/pbrt_pfm.h"
+
+namespace candela {
+
+namespace {
+
+Vec3 meanOf(const PbrtTexture& t) { return t.factor * (t.image == kNoTexture ? 1.0f : 0.5f); }
+
+}  // namespace
+
+int32_t PbrtTextures::loadImage(const std::string& path, bool srgb, const std::string& file, size_t line) {
+  auto key = std::make_pair(path, srgb);
+  if (auto found = images_.find(key); found != images_.end()) return found->second;
+  int32_t index = kNoTexture;
+  std::string resolved = context_.resolve(path, file, line);
+  try {
+    std::string ext = lowerCaseExtension(resolved);
+    Texture image;
+    if (ext == ".exr") {
+      image = loadEnvironmentImage(resolved);
+    } else if (ext == ".pfm") {
+      image = readPfm(resolved);
+    } else {
+      std::vector<uint8_t> bytes = readFileBytes(resolved);
+      image = decodeImage(resolved, bytes.data(), bytes.size(), srgb);
+    }
+    image.name = resolved;
+    index = int32_t(context_.scene.textures.size());
+    context_.scene.textures.push_back(std::move(image));
+  } catch (const LoadError& e) {
+    context_.warnings.add(context_.mainFile, std::string("image left out: ") + e.what());
+  }
+  images_[key] = index;
+  return index;
+}
+
+int32_t PbrtTextures::invertedImage(int32_t image) {
+  if (auto found = inverted_.find(image); found != inverted_.end()) return found->second;
+  const Texture& source = context_.scene.textures[size_t(image)];
+  Texture out;
+  out.name = source.name + " (inverted)";
+  out.width = source.width;
+  out.height = source.height;
+  out.channels = source.channels;
+  out.wrapU = source.wrapU;
+  out.wrapV = source.wrapV;
+  size_t values = size_t(source.width) * source.height * source.channels;
+  out.floats.resize(values);
+  for (size_t i = 0; i < values; ++i) {
+    uint32_t channel = uint32_t(i % source.channels);
+    bool alpha = (source.channels == 4 && channel == 3) || (source.channels == 2 && channel == 1);
+    float v = source.floats.empty() ? float(source.bytes[i]) / 255.0f : source.floats[i];
+    if (!source.floats.empty() || alpha || !source.srgb) {
+      out.floats[i] = alpha ? v : 1.0f - v;
+    } else {
+      out.floats[i] = 1.0f - srgbToLinear(v);
+    }
+  }
+  int32_t index = int32_t(context_.scene.textures.size());
+  context_.scene.textures.push_back(std::move(out));
+  inverted_[image] = index;
+  return index;
+}
+
+int32_t PbrtTextures::checkerboardImage(Vec3 first, Vec3 second) {
+  auto key = std::make_tuple(first.x, first.y, first.z, second.x, second.y, second.z);
+  bool finite = isFinite(first) && isFinite(second);  // not-a-number would break the ordering of the keys
+  if (auto found = checkerboards_.find(key); finite && found != checkerboards_.end()) return found->second;
+  if (checkerboards_.size() >= kMaxCheckerboardImages || !finite) {
+    context_.warn("many checkerboards", "checkerboards beyond the first " + std::to_string(kMaxCheckerboardImages) +
+                                            " distinct ones (or of colours that are not finite) become their mean");
+    return kNoTexture;
+  }
+  // pbrt's check at (s, t) is tex1 where floor(s) + floor(t) is even. The image spans s and t in [0, 2), and
+  // its rows run down while t runs up: the top half is t in [1, 2).
+  constexpr uint32_t kSize = 64;
+  Texture image;
+  image.name = "checkerboard";
+  image.width = image.height = kSize;
+  image.channels = 3;
+  image.floats.resize(size_t(kSize) * kSize * 3);
+  for (uint32_t y = 0; y < kSize; ++y)
+    for (uint32_t x = 0; x < kSize; ++x) {
+      int s = x >= kSize / 2 ? 1 : 0, t = y < kSize / 2 ? 1 : 0;
+      Vec3 c = (s + t) % 2 == 0 ? first : second;
+      float* out = image.floats.data() + (size_t(y) * kSize + x) * 3;
+      out[0] = c.x;
+      out[1] = c.y;
+      out[2] = c.z;
+    }
+  int32_t index = int32_t(context_.scene.textures.size());
+  context_.scene.textures.push_back(std::move(image));
+  checkerboards_[key] = index;
+  return index;
+}
+
+int32_t PbrtTextures::mappedImage(int32_t image, const std::string& key, const std::function<float(float)>& map) {
+  auto cacheKey = std::make_pair(image, key);
+  if (auto found = mapped_.find(cacheKey); found != mapped_.end()) return found->second;
+  const Texture& source = context_.scene.textures[size_t(image)];
+  Texture out;
+  out.name = source.name + " (" + key + ")";
+  out.width = source.width;
+  out.height = source.height;
+  out.channels = 1;
+  out.wrapU = source.wrapU;
+  out.wrapV = source.wrapV;
+  size_t pixels = size_t(source.width) * source.height;
+  out.floats.resize(pixels);
+  for (size_t i = 0; i < pixels; ++i) {
+    size_t at = i * source.channels;
+    float v = source.floats.empty() ? float(source.bytes[at]) / 255.0f : source.floats[at];
+    if (source.floats.empty() && source.srgb) v = srgbToLinear(v);
+    out.floats[i] = map(v);
+  }
+  int32_t index = int32_t(context_.scene.textures.size());
+  context_.scene.textures.push_back(std::move(out));
+  mapped_[cacheKey] = index;
+  return index;
+}
+
+PbrtTexture PbrtTextures::value(const PbrtParameters& params, const std::string& name, Vec3 fallback) {
+  if (std::optional<std::string> texture = params.getTexture(name)) {
+    auto found = named_.find(*texture);
+    if (found != named_.end()) return found->second;
+    context_.warn("unknown texture " + *texture, params.file + ":" + std::to_string(params.line) + ": texture '" +
+                                                     *texture + "' is not defined: '" + name + "' takes its default");
+    return PbrtTexture{fallback};
+  }
+  if (std::optional<PbrtColor> c = params.getColor(name)) return PbrtTexture{c->rgb};
+  return PbrtTexture{fallback};
+}
+
+void PbrtTextures::define(const std::string& name, const std::string& valueType, const std::string& className,
+                          const PbrtParameters& params) {
+  if (valueType != "float" && valueType != "spectrum" && valueType != "color" && valueType != "rgb")
+    params.fail("texture '" + name + "' has an unknown value type '" + valueType + "'");
+  PbrtTexture t;
+  if (className == "imagemap") {
+    std::string file = params.getString("filename", "");
+    if (file.empty()) params.fail("imagemap texture '" + name + "' without 'filename'");
+    std::string encoding = params.getString("encoding", "sRGB");
+    if (encoding != "sRGB" && encoding != "linear")
+      context_.warn("texture encoding " + encoding, "texture encoding '" + encoding + "' read as sRGB");
+    t.image = loadImage(file, encoding != "linear", params.file, params.line);
+    float scale = params.getFloat("scale", 1.0f);
+    t.factor = {scale, scale, scale};
+    if (params.getBool("invert", false) && t.image != kNoTexture) t.image = invertedImage(t.image);
+    std::string wrap = params.getString("wrap", "repeat");
+    if (t.image != kNoTexture) {
+      Texture& image = context_.scene.textures[size_t(t.image)];
+      image.wrapU = image.wrapV = wrap == "clamp" || wrap == "black" ? TextureWrap::Clamp : TextureWrap::Repeat;
+      if (wrap == "black") context_.warn("texture wrap black", "imagemap wrap 'black' is read as 'clamp'");
+    }
+  } else if (className == "constant") {
+    t = value(params, "value", {1, 1, 1});
+  } else if (className == "scale") {
+    PbrtTexture tex = value(params, "tex", {1, 1, 1}), scale = value(params, "scale", {1, 1, 1});
+    if (tex.image != kNoTexture && scale.image != kNoTexture)
+      context_.warn("scale of two images", "a 'scale' texture of two images keeps only the first");
+    t = tex.image != kNoTexture ? tex : scale;
+    t.factor = tex.factor * scale.factor;
+  } else if (className == "checkerboard" && params.getInt("dimension", 2) == 2) {
+    PbrtTexture a = value(params, "tex1", {1, 1, 1}), b = value(params, "tex2", {0, 0, 0});
+    if (a.image != kNoTexture || b.image != kNoTexture)
+      context_.warn("checkerboard of images", "checkerboards of image textures use the images' mean colours");
+    t.image = checkerboardImage(meanOf(a), meanOf(b));
+    if (t.image == kNoTexture) t.factor = 0.5f * (meanOf(a) + meanOf(b));
+  } else if (className == "mix" || className == "checkerboard") {
+    PbrtTexture a = value(params, "tex1", {1, 1, 1}), b = value(params, "tex2", {0, 0, 0});
+    float amount = className == "mix" ? params.getFloat("amount", 0.5f) : 0.5f;
+    t.factor = lerp(amount, meanOf(a), meanOf(b));
+    context_.warn("texture " + className, "'" + className + "' textures are replaced by the mean of their inputs");
+  } else {
+    params.markAllUsed();
+    t.factor = {0.5f, 0.5f, 0.5f};
+    context_.warn("texture " + className, "'" + className + "' textures are not supported: grey 0.5 used instead");
+  }
+  t.uvScale = {params.getFloat("uscale", 1.0f), params.getFloat("vscale", 1.0f)};
+  t.uvOffset = {params.getFloat("udelta", 0.0f), params.getFloat("vdelta", 0.0f)};
+  if (className == "checkerboard" && t.image != kNoTexture) {
+    // The image holds one period of the pattern, two checks of pbrt's unit size along each axis.
+    t.uvScale = {0.5f * t.uvScale.x, 0.5f * t.uvScale.y};
+    t.uvOffset = {0.5f * t.uvOffset.x, 0.5f * t.uvOffset.y};
+  }
+  std::string mapping = params.getString("mapping", "uv");
+  if (mapping != "uv") context_.warn("texture mapping " + mapping, "texture mapping '" + mapping + "' read as 'uv'");
+  named_[name] = t;
+}
+
+}  // namespace candela

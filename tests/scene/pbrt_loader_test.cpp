@@ -1,0 +1,907 @@
+#include "scene/loaders/pbrt_loader.h"
+
+#include <gtest/gtest.h>
+#include <stb/stb_image_write.h>
+#include <zlib.h>
+
+#include <cmath>
+#include <cstring>
+#include <sstream>
+
+#include "app/render_job.h"
+#include "app/scene_loading.h"
+#include "scene/builtin_scenes.h"
+#include "scene/loaders/load_diagnostics.h"
+#include "scene/loaders/pbrt_lights.h"
+#include "scene/loaders/pbrt_spectra.h"
+#include "scene/loaders/pbrt_tokenizer.h"
+#include "scene/scene_test_files.h"
+
+namespace candela {
+namespace {
+
+using test::TempFolder;
+
+Scene loadText(const std::string& text, LoadWarnings* warningsOut = nullptr) {
+  LoadWarnings warnings;
+  Scene scene = loadPbrtText("test.pbrt", text, warnings);
+  if (warningsOut) *warningsOut = warnings;
+  return scene;
+}
+
+std::string loadError(const std::string& text) {
+  try {
+    loadText(text);
+  } catch (const LoadError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+void expectNear(Vec3 a, Vec3 b, float tolerance = 1e-4f) {
+  EXPECT_NEAR(a.x, b.x, tolerance);
+  EXPECT_NEAR(a.y, b.y, tolerance);
+  EXPECT_NEAR(a.z, b.z, tolerance);
+}
+
+Vec3 windingNormal(const Scene& scene, size_t instance, size_t triangle) {
+  const Mesh& m = scene.meshes[scene.instances[instance].meshId];
+  const Affine3x4& t = scene.instances[instance].objectToWorld;
+  Vec3 a = m.positions[m.indices[3 * triangle]], b = m.positions[m.indices[3 * triangle + 1]];
+  Vec3 c = m.positions[m.indices[3 * triangle + 2]];
+  // The front as candela's lights take it (kernel/lights.h): the world-space winding, turned under mirroring
+  // instances.
+  Vec3 n = cross(t.point(b) - t.point(a), t.point(c) - t.point(a));
+  return t.determinant() < 0 ? -n : n;
+}
+
+constexpr const char* kTriangle = R"(Shape "trianglemesh" "point3 P" [0 0 0  1 0 0  0 1 0] "integer indices" [0 1 2]
+)";
+
+// The camera of these scenes mirrors (as pbrt scenes customarily do), so candela's world is pbrt's.
+constexpr const char* kMirroredCamera = "Scale -1 1 1\nCamera \"perspective\"\nWorldBegin\n";
+
+TEST(PbrtTokenizer, SplitsWordsStringsBracketsAndSkipsComments) {
+  PbrtTokenizer tokens("t.pbrt", "Shape # a comment\n\"tri\\\"angle\" [1 -2.5e1]\n");
+  EXPECT_EQ(tokens.next().text, "Shape");
+  PbrtToken s = tokens.next();
+  EXPECT_EQ(s.kind, PbrtToken::Kind::String);
+  EXPECT_EQ(s.text, "tri\"angle");
+  EXPECT_EQ(s.line, 2u);
+  EXPECT_EQ(tokens.next().kind, PbrtToken::Kind::OpenBracket);
+  EXPECT_EQ(tokens.next().text, "1");
+  EXPECT_EQ(tokens.next().text, "-2.5e1");
+  EXPECT_EQ(tokens.next().kind, PbrtToken::Kind::CloseBracket);
+  EXPECT_EQ(tokens.next().kind, PbrtToken::Kind::End);
+}
+
+TEST(PbrtLoader, ErrorsNameFileAndLine) {
+  EXPECT_EQ(loadError("WorldBegin\n\nShpe \"sphere\"\n"), "test.pbrt:3: unknown directive 'Shpe'");
+  EXPECT_EQ(loadError("WorldBegin\nShape \"sphere\" \"float radius\" [1\n"), "test.pbrt:2: unclosed '[' of 'radius'");
+  EXPECT_EQ(loadError("WorldBegin\nShape \"sphere\" \"float radius\" [x]\n"),
+            "test.pbrt:2: 'x' is not a number (value of 'radius')");
+  EXPECT_EQ(loadError("WorldBegin\nMaterial \"diffuse\n\""), "test.pbrt:2: line break inside a string");
+  EXPECT_EQ(loadError("AttributeEnd\n"), "test.pbrt:1: AttributeEnd without a matching begin");
+  EXPECT_EQ(
+      loadError("WorldBegin\nShape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" [0 1 3]"),
+      "test.pbrt:2: 'indices' refers to vertex 3 of 3");
+}
+
+TEST(PbrtLoader, TransformsApplyInPbrtsOrder) {
+  // Translate then Scale: a point is scaled first, then translated (each directive post-multiplies).
+  Scene scene = loadText(std::string(kMirroredCamera) + "Translate 1 0 0\nScale 2 2 2\n" + kTriangle);
+  ASSERT_EQ(scene.instances.size(), 1u);
+  expectNear(scene.instances[0].objectToWorld.point({1, 0, 0}), {3, 0, 0});
+  Scene rotated = loadText(std::string(kMirroredCamera) + "Rotate 90 0 0 1\nTranslate 1 0 0\n" + kTriangle);
+  expectNear(rotated.instances[0].objectToWorld.point({0, 0, 0}), {0, 1, 0});
+  Scene matrix =
+      loadText(std::string(kMirroredCamera) + "Transform [1 0 0 0  0 1 0 0  0 0 1 0  5 6 7 1]\n" + kTriangle);
+  expectNear(matrix.instances[0].objectToWorld.point({0, 0, 0}), {5, 6, 7});
+  Scene attributes = loadText(std::string(kMirroredCamera) + "AttributeBegin\nTranslate 9 0 0\nAttributeEnd\n" +
+                              "TransformBegin\nTranslate 9 0 0\nTransformEnd\n" + kTriangle);
+  expectNear(attributes.instances[0].objectToWorld.point({0, 0, 0}), {0, 0, 0});
+  Scene named = loadText(std::string(kMirroredCamera) + "Translate 4 0 0\nCoordinateSystem \"here\"\nIdentity\n" +
+                         "CoordSysTransform \"here\"\n" + kTriangle);
+  expectNear(named.instances[0].objectToWorld.point({0, 0, 0}), {4, 0, 0});
+}
+
+TEST(PbrtLoader, MotionKeepsTheStartTransform) {
+  LoadWarnings warnings;
+  Scene scene = loadText(std::string(kMirroredCamera) +
+                             "TransformTimes 0 1\nActiveTransform EndTime\nTranslate 5 0 0\nActiveTransform All\n"
+                             "Translate 0 1 0\n" +
+                             kTriangle,
+                         &warnings);
+  expectNear(scene.instances[0].objectToWorld.point({0, 0, 0}), {0, 1, 0});
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_NE(warnings.messages[0].find("motion blur"), std::string::npos);
+}
+
+TEST(PbrtLoader, LeftHandedCameraMirrorsTheWorldSoTheImageIsNotMirrored) {
+  // pbrt's LookAt puts world +x on the right of the image for a camera looking down +z with +y up.
+  Scene scene = loadText(
+      "LookAt 0 0 0  0 0 1  0 1 0\nCamera \"perspective\" \"float fov\" 60\nWorldBegin\n"
+      "Translate 1 0 5\n" +
+      std::string(kTriangle));
+  Vec3 p = scene.instances[0].objectToWorld.point({0, 0, 0});
+  Vec3 forward = normalize(scene.camera.target - scene.camera.eye);
+  Vec3 right = cross(forward, scene.camera.up);  // candela's image right (Camera::lookAt)
+  EXPECT_GT(dot(p - scene.camera.eye, right), 0.5f);
+  EXPECT_FLOAT_EQ(scene.camera.verticalFovDegrees, 60.0f);
+  // The same scene after pbrt's customary `Scale -1 1 1`: +x is now on the left.
+  Scene flipped = loadText(
+      "Scale -1 1 1\nLookAt 0 0 0  0 0 1  0 1 0\nCamera \"perspective\"\nWorldBegin\n"
+      "Translate 1 0 5\n" +
+      std::string(kTriangle));
+  Vec3 q = flipped.instances[0].objectToWorld.point({0, 0, 0});
+  Vec3 f2 = normalize(flipped.camera.target - flipped.camera.eye);
+  EXPECT_LT(dot(q - flipped.camera.eye, cross(f2, flipped.camera.up)), -0.5f);
+}
+
+TEST(PbrtLoader, FieldOfViewSpansTheShorterImageAxis) {
+  Scene portrait = loadText(
+      "Film \"rgb\" \"integer xresolution\" 100 \"integer yresolution\" 200\n"
+      "Camera \"perspective\" \"float fov\" 90\nWorldBegin\n");
+  EXPECT_NEAR(portrait.camera.verticalFovDegrees, 2.0f * std::atan(2.0f) * 180.0f / kPi, 1e-3f);
+  EXPECT_EQ(*portrait.renderHints.width, 100u);
+  EXPECT_EQ(*portrait.renderHints.height, 200u);
+}
+
+TEST(PbrtLoader, SamplerAndIntegratorBecomeRenderHints) {
+  Scene scene = loadText(
+      "Sampler \"zsobol\" \"integer pixelsamples\" 256\nIntegrator \"volpath\" "
+      "\"integer maxdepth\" 12\nCamera \"perspective\" \"float lensradius\" 0.1 "
+      "\"float focaldistance\" 3\nWorldBegin\n");
+  EXPECT_EQ(*scene.renderHints.samplesPerPixel, 256u);
+  EXPECT_EQ(*scene.renderHints.maxDepth, 12u);
+  EXPECT_FLOAT_EQ(scene.camera.apertureRadius, 0.1f);
+  EXPECT_FLOAT_EQ(scene.camera.focusDistance, 3.0f);
+}
+
+TEST(PbrtLoader, ReverseOrientationTurnsTheFront) {
+  Scene scene = loadText(std::string(kMirroredCamera) + kTriangle + "ReverseOrientation\n" + kTriangle);
+  ASSERT_EQ(scene.instances.size(), 2u);
+  EXPECT_GT(windingNormal(scene, 0, 0).z, 0.0f);
+  EXPECT_LT(windingNormal(scene, 1, 0).z, 0.0f);
+  // Under the default (unmirrored) camera the world is mirrored; the front must still be pbrt's front.
+  Scene mirrored = loadText(std::string("WorldBegin\n") + kTriangle);
+  EXPECT_GT(windingNormal(mirrored, 0, 0).z, 0.0f);
+  // With normals the front follows the normals.
+  Scene withNormals =
+      loadText(std::string(kMirroredCamera) +
+               "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"normal N\" [0 0 -1 0 0 -1 0 0 -1]");
+  EXPECT_LT(windingNormal(withNormals, 0, 0).z, 0.0f);
+}
+
+TEST(PbrtLoader, ObjectInstancesShareTheirMeshes) {
+  Scene scene = loadText(std::string(kMirroredCamera) + "ObjectBegin \"thing\"\nTranslate 0 0 1\n" + kTriangle +
+                         "ObjectEnd\nObjectInstance \"thing\"\nTranslate 5 0 0\nObjectInstance \"thing\"\n");
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  ASSERT_EQ(scene.instances.size(), 2u);
+  expectNear(scene.instances[0].objectToWorld.point({0, 0, 0}), {0, 0, 1});
+  expectNear(scene.instances[1].objectToWorld.point({0, 0, 0}), {5, 0, 1});
+}
+
+TEST(PbrtLoader, MaterialsMapOntoCandelasModels) {
+  Scene scene =
+      loadText(std::string(kMirroredCamera) + "Material \"diffuse\" \"rgb reflectance\" [0.1 0.2 0.3]\n" + kTriangle +
+               "Material \"conductor\" \"spectrum eta\" \"metal-Au-eta\" \"spectrum k\" \"metal-Au-k\"\n" + kTriangle +
+               "Material \"conductor\" \"float roughness\" 0.01\n" + kTriangle +
+               "Material \"dielectric\" \"spectrum eta\" \"glass-BK7\"\n" + kTriangle +
+               "Material \"coateddiffuse\" \"rgb reflectance\" [0.5 0.5 0.5] \"float roughness\" 0\n" + kTriangle +
+               "Material \"interface\"\n" + kTriangle);
+  auto materialOf = [&](size_t i) { return scene.materials[scene.meshes[i].triangleMaterials[0]]; };
+  EXPECT_EQ(materialOf(0).type, MaterialType::Diffuse);
+  expectNear(materialOf(0).baseColor, {0.1f, 0.2f, 0.3f});
+  EXPECT_EQ(materialOf(1).type, MaterialType::Mirror);
+  Vec3 gold = materialOf(1).specularColor;
+  EXPECT_GT(gold.x, gold.z + 0.4f);  // gold reflects red far more than blue
+  EXPECT_EQ(materialOf(2).type, MaterialType::Pbr);
+  EXPECT_FLOAT_EQ(materialOf(2).metallic, 1.0f);
+  EXPECT_NEAR(materialOf(2).roughness, std::pow(0.01f, 0.25f), 1e-5f);  // remapped: alpha = sqrt(0.01)
+  EXPECT_EQ(materialOf(3).type, MaterialType::Glass);
+  EXPECT_NEAR(materialOf(3).ior, 1.5168f, 1e-4f);
+  EXPECT_EQ(materialOf(4).type, MaterialType::Pbr);
+  EXPECT_NEAR(materialOf(4).specular, 0.5f, 1e-4f);  // eta 1.5: F0 = 0.04
+  EXPECT_EQ(materialOf(5).alphaMode, AlphaMode::Mask);
+  EXPECT_EQ(materialOf(5).opacity, 0.0f);
+}
+
+TEST(PbrtLoader, PbrtV3MaterialsByTheirColours) {
+  Scene scene = loadText(std::string(kMirroredCamera) + "Material \"matte\" \"color Kd\" [0.2 0.3 0.4]\n" + kTriangle +
+                         "Material \"glass\" \"float index\" 1.33\n" + kTriangle +
+                         "Material \"mirror\" \"rgb Kr\" [0.5 0.5 0.5]\n" + kTriangle);
+  auto materialOf = [&](size_t i) { return scene.materials[scene.meshes[i].triangleMaterials[0]]; };
+  EXPECT_EQ(materialOf(0).type, MaterialType::Diffuse);
+  expectNear(materialOf(0).baseColor, {0.2f, 0.3f, 0.4f});
+  EXPECT_EQ(materialOf(1).type, MaterialType::Glass);
+  EXPECT_NEAR(materialOf(1).ior, 1.33f, 1e-5f);
+  EXPECT_EQ(materialOf(2).type, MaterialType::Mirror);
+  expectNear(materialOf(2).specularColor, {0.5f, 0.5f, 0.5f});
+}
+
+TEST(PbrtLoader, RenderSettingsAreBounded) {
+  Scene scene = loadText(
+      "Film \"rgb\" \"integer xresolution\" 100000 \"integer yresolution\" 0\n"
+      "Integrator \"path\" \"integer maxdepth\" 100000\nWorldBegin\n");
+  EXPECT_EQ(*scene.renderHints.width, 16384u);
+  EXPECT_EQ(*scene.renderHints.height, 1u);
+  EXPECT_EQ(*scene.renderHints.maxDepth, 1024u);
+}
+
+TEST(PbrtLoader, MoreMaterialConversions) {
+  LoadWarnings warnings;
+  Scene scene = loadText(
+      std::string(kMirroredCamera) +
+          "Material \"coatedconductor\" \"float conductor.roughness\" 0.01 \"float interface.roughness\" 0\n" +
+          kTriangle + "Material \"thindielectric\" \"float eta\" 1.5\n" + kTriangle +
+          "Material \"diffusetransmission\" \"rgb reflectance\" [0.3 0.3 0.3]\n" + kTriangle +
+          "Material \"conductor\" \"float uroughness\" 0.04 \"float vroughness\" 0.0 \"bool remaproughness\" false\n" +
+          kTriangle + "Material \"dielectric\" \"float roughness\" 0.3\n" + kTriangle,
+      &warnings);
+  auto materialOf = [&](size_t i) { return scene.materials[scene.meshes[i].triangleMaterials[0]]; };
+  EXPECT_EQ(materialOf(0).type, MaterialType::Disney);
+  EXPECT_FLOAT_EQ(materialOf(0).metallic, 1.0f);
+  EXPECT_FLOAT_EQ(materialOf(0).clearcoat, 1.0f);
+  EXPECT_FLOAT_EQ(materialOf(0).clearcoatGloss, 1.0f);
+  EXPECT_NEAR(materialOf(0).roughness, std::pow(0.01f, 0.25f), 1e-5f);
+  // A thin sheet: a mirror of reflectance 2R/(1+R) that rays pass otherwise.
+  EXPECT_EQ(materialOf(1).type, MaterialType::Mirror);
+  EXPECT_EQ(materialOf(1).alphaMode, AlphaMode::Blend);
+  EXPECT_NEAR(materialOf(1).opacity, 2.0f * 0.04f / 1.04f, 1e-5f);
+  EXPECT_EQ(materialOf(2).type, MaterialType::Diffuse);
+  expectNear(materialOf(2).baseColor, {0.3f, 0.3f, 0.3f});
+  // Without remapping, the mean of u and v roughness is alpha itself: candela's roughness is its square root.
+  EXPECT_EQ(materialOf(3).type, MaterialType::Pbr);
+  EXPECT_NEAR(materialOf(3).roughness, std::sqrt(0.02f), 1e-5f);
+  EXPECT_EQ(materialOf(4).type, MaterialType::Disney);
+  EXPECT_FLOAT_EQ(materialOf(4).specTrans, 1.0f);
+  std::string all;
+  for (const std::string& w : warnings.messages) all += w + "\n";
+  EXPECT_NE(all.find("thindielectric"), std::string::npos) << all;
+  EXPECT_NE(all.find("diffusetransmission"), std::string::npos) << all;
+}
+
+TEST(PbrtLoader, ConstantScaleMixAndCheckerboardTextures) {
+  LoadWarnings warnings;
+  Scene scene = loadText(std::string(kMirroredCamera) +
+                             "Texture \"c\" \"spectrum\" \"constant\" \"rgb value\" [0.2 0.4 0.6]\n"
+                             "Texture \"s\" \"spectrum\" \"scale\" \"texture tex\" \"c\" \"float scale\" 0.5\n"
+                             "Texture \"m\" \"spectrum\" \"mix\" \"rgb tex1\" [1 1 1] \"rgb tex2\" [0 0 0] "
+                             "\"float amount\" 0.25\n"
+                             "Texture \"k\" \"spectrum\" \"checkerboard\" \"rgb tex1\" [1 0 0] \"rgb tex2\" [0 0 1] "
+                             "\"float uscale\" 4 \"float vscale\" 4\n"
+                             "Material \"diffuse\" \"texture reflectance\" \"s\"\n" +
+                             kTriangle + "Material \"diffuse\" \"texture reflectance\" \"m\"\n" + kTriangle +
+                             "Material \"diffuse\" \"texture reflectance\" \"k\"\n"
+                             "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"point2 uv\" [0 0 1 0 0 1]\n",
+                         &warnings);
+  auto colourOf = [&](size_t i) { return scene.materials[scene.meshes[i].triangleMaterials[0]].baseColor; };
+  expectNear(colourOf(0), {0.1f, 0.2f, 0.3f});
+  expectNear(colourOf(1), {0.75f, 0.75f, 0.75f});  // the mean: tex1 weighted 1 - amount
+  EXPECT_EQ(warnings.messages.size(), 1u);         // mix replaced by its mean
+  // The checkerboard is an image of one period: 2 x 2 checks; tex1 where floor(s) + floor(t) is even.
+  const Material& checks = scene.materials[scene.meshes[2].triangleMaterials[0]];
+  ASSERT_NE(checks.baseColorTexture, kNoTexture);
+  const Texture& image = scene.textures[size_t(checks.baseColorTexture)];
+  auto texel = [&](uint32_t x, uint32_t y) {
+    const float* p = image.floats.data() + (size_t(y) * image.width + x) * 3;
+    return Vec3{p[0], p[1], p[2]};
+  };
+  expectNear(texel(0, image.height - 1), {1, 0, 0});  // s, t in [0, 1): bottom left
+  expectNear(texel(image.width - 1, image.height - 1), {0, 0, 1});
+  expectNear(texel(0, 0), {0, 0, 1});
+  // pbrt's (u, v) = (1, 0) is s = 4 (uscale 4), half periods: candela's u = 2.
+  ASSERT_EQ(scene.meshes[2].uvs.size(), 3u);
+  EXPECT_FLOAT_EQ(scene.meshes[2].uvs[1].x, 2.0f);
+}
+
+TEST(PbrtLoader, PngTexturesNormalMapsAndTheirEncoding) {
+  TempFolder folder;
+  const uint8_t pixels[4 * 3] = {255, 0, 0, 0, 255, 0, 0, 0, 255, 128, 128, 255};
+  ASSERT_TRUE(stbi_write_png(folder.file("albedo.png").c_str(), 2, 2, 3, pixels, 6));
+  ASSERT_TRUE(stbi_write_png(folder.file("normals.png").c_str(), 2, 2, 3, pixels, 6));
+  std::string path = folder.write(
+      "scene.pbrt", std::string(kMirroredCamera) +
+                        "Texture \"srgb\" \"spectrum\" \"imagemap\" \"string filename\" \"albedo.png\"\n"
+                        "Texture \"linear\" \"spectrum\" \"imagemap\" \"string filename\" \"albedo.png\" "
+                        "\"string encoding\" \"linear\"\n"
+                        "Material \"diffuse\" \"texture reflectance\" \"srgb\" \"string normalmap\" \"normals.png\"\n" +
+                        kTriangle + "Material \"diffuse\" \"texture reflectance\" \"linear\"\n" + kTriangle);
+  LoadWarnings warnings;
+  Scene scene = loadPbrt(path, warnings);
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages.front();
+  const Material& a = scene.materials[scene.meshes[0].triangleMaterials[0]];
+  const Material& b = scene.materials[scene.meshes[1].triangleMaterials[0]];
+  ASSERT_NE(a.baseColorTexture, kNoTexture);
+  ASSERT_NE(b.baseColorTexture, kNoTexture);
+  EXPECT_TRUE(scene.textures[size_t(a.baseColorTexture)].srgb);
+  EXPECT_FALSE(scene.textures[size_t(b.baseColorTexture)].srgb);
+  ASSERT_NE(a.normalTexture, kNoTexture);
+  EXPECT_FALSE(scene.textures[size_t(a.normalTexture)].srgb);  // normal maps hold vectors, not colours
+}
+
+TEST(PbrtLoader, CameraFeaturesNotRenderedAreNamed) {
+  LoadWarnings warnings;
+  loadText(
+      "ConcatTransform [1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1]\nCamera \"orthographic\" \"float screenwindow\" "
+      "[-1 1 -1 1]\nPixelFilter \"gaussian\"\nWorldBegin\n",
+      &warnings);
+  std::string all;
+  for (const std::string& w : warnings.messages) all += w + "\n";
+  EXPECT_NE(all.find("'orthographic'"), std::string::npos) << all;
+  EXPECT_NE(all.find("screenwindow"), std::string::npos) << all;
+  EXPECT_NE(all.find("pixel filter"), std::string::npos) << all;
+}
+
+TEST(PbrtLoader, ConcatTransformMultipliesTheCurrentTransform) {
+  Scene scene = loadText(std::string(kMirroredCamera) +
+                         "Translate 1 0 0\nConcatTransform [2 0 0 0 0 2 0 0 0 0 2 0 0 0 3 1]\n" + kTriangle);
+  expectNear(scene.instances[0].objectToWorld.point({1, 0, 0}), {3, 0, 3});
+}
+
+TEST(PbrtLoader, NamedMaterialsMayBeMadeAfterTheirUse) {
+  LoadWarnings warnings;
+  Scene scene =
+      loadText(std::string(kMirroredCamera) + "NamedMaterial \"later\"\n" + kTriangle + "NamedMaterial \"never\"\n" +
+                   kTriangle + "MakeNamedMaterial \"later\" \"string type\" \"diffuse\" \"rgb reflectance\" [1 0 0]\n",
+               &warnings);
+  expectNear(scene.materials[scene.meshes[0].triangleMaterials[0]].baseColor, {1, 0, 0});
+  expectNear(scene.materials[scene.meshes[1].triangleMaterials[0]].baseColor, {0.5f, 0.5f, 0.5f});
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_NE(warnings.messages[0].find("'never' is not defined"), std::string::npos) << warnings.messages[0];
+}
+
+TEST(PbrtLoader, NamedAndMixedMaterials) {
+  std::string text = std::string(kMirroredCamera) +
+                     "MakeNamedMaterial \"red\" \"string type\" \"diffuse\" \"rgb reflectance\" [1 0 0]\n"
+                     "MakeNamedMaterial \"blue\" \"string type\" \"diffuse\" \"rgb reflectance\" [0 0 1]\n"
+                     "MakeNamedMaterial \"mixed\" \"string type\" \"mix\" \"string materials\" [\"red\" \"blue\"] "
+                     "\"float amount\" 0.25\n"
+                     "NamedMaterial \"mixed\"\nShape \"sphere\"\n";
+  Scene scene = loadText(text);
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  size_t blue = 0, total = scene.meshes[0].triangleMaterials.size();
+  for (uint32_t id : scene.meshes[0].triangleMaterials) blue += scene.materials[id].baseColor.z > 0.5f;
+  EXPECT_NEAR(double(blue) / double(total), 0.25, 0.05);  // amount is the second material's share
+  EXPECT_EQ(scene.materialNames[scene.meshes[0].triangleMaterials[0]] == "red" ||
+                scene.materialNames[scene.meshes[0].triangleMaterials[0]] == "blue",
+            true);
+}
+
+TEST(PbrtLoader, AreaLightsEmitFromTheirShapes) {
+  Scene scene = loadText(std::string(kMirroredCamera) +
+                         "AttributeBegin\nAreaLightSource \"diffuse\" \"rgb L\" [1 2 3] \"float scale\" 2\n" +
+                         kTriangle + "AttributeEnd\n" + kTriangle);
+  expectNear(scene.materials[scene.meshes[0].triangleMaterials[0]].emission, {2, 4, 6});
+  EXPECT_TRUE(isBlack(scene.materials[scene.meshes[1].triangleMaterials[0]].emission));
+  // Two-sided lights emit from both faces: each triangle is there twice, once per winding.
+  Scene twoSided =
+      loadText(std::string(kMirroredCamera) + "AreaLightSource \"diffuse\" \"bool twosided\" true\n" + kTriangle);
+  EXPECT_EQ(twoSided.meshes[0].triangleCount(), 2u);
+  // `power` sets the radiance: phi = pi * area * L for a one-sided emitter of luminance L.
+  Scene power = loadText(std::string(kMirroredCamera) + "AreaLightSource \"diffuse\" \"float power\" 10\n" + kTriangle);
+  float L = luminance(power.materials[power.meshes[0].triangleMaterials[0]].emission);
+  EXPECT_NEAR(kPi * 0.5f * L, 10.0f, 1e-3f);
+  // As in pbrt-v4, each triangle of a mesh is a light of that power, and an RGB L keeps its magnitude.
+  Scene perTriangle = loadText(std::string(kMirroredCamera) +
+                               "AreaLightSource \"diffuse\" \"rgb L\" [2 2 2] \"float power\" 10\n"
+                               "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0 0 0 1 2 0 1 0 1 1] "
+                               "\"integer indices\" [0 1 2 3 4 5]\n");
+  const Mesh& pair = perTriangle.meshes[0];
+  EXPECT_NEAR(perTriangle.materials[pair.triangleMaterials[0]].emission.x, 2.0f * 10.0f / (kPi * 0.5f), 1e-3f);
+  EXPECT_NEAR(perTriangle.materials[pair.triangleMaterials[1]].emission.x, 2.0f * 10.0f / (kPi * 1.0f), 1e-3f);
+  // Blackbody emitters are normalised to luminance 1 (times scale), as pbrt-v4 normalises them.
+  Scene blackbody = loadText(std::string(kMirroredCamera) +
+                             "AreaLightSource \"diffuse\" \"blackbody L\" [3000] \"float scale\" 5\n" + kTriangle);
+  Vec3 e = blackbody.materials[blackbody.meshes[0].triangleMaterials[0]].emission;
+  EXPECT_NEAR(luminance(e), 5.0f, 0.05f);
+  EXPECT_GT(e.x, e.z);  // 3000 K is warm
+}
+
+TEST(PbrtLoader, AreaLightsOfInfiniteSizeEmitNoNaN) {
+  // An infinite triangle area gives power / area = 0 and an infinite L times 0: not a number.
+  Scene scene = loadText(std::string(kMirroredCamera) +
+                         "Scale 1e30 1e30 1e30\nAreaLightSource \"diffuse\" \"rgb L\" [1e38 1 1] \"float scale\" 1e10 "
+                         "\"float power\" 1\n" +
+                         kTriangle + kTriangle);
+  for (const Material& m : scene.materials) EXPECT_FALSE(std::isnan(m.emission.x));
+}
+
+TEST(PbrtLoader, InfiniteLightsBecomeTheEnvironment) {
+  Scene scene = loadText("WorldBegin\nLightSource \"infinite\" \"rgb L\" [0.5 0.25 1] \"float scale\" 2\n");
+  expectNear(scene.environment.radiance, {1, 0.5f, 2});
+  EXPECT_FALSE(scene.environment.hasMap());
+}
+
+// Point, spot and distant lights become punctual lights, placed by the transform in force (x = 0 throughout, so
+// the world mirror leaves them as written).
+TEST(PbrtLoader, PointSpotAndDistantLightsBecomePunctualLights) {
+  Scene scene = loadText(
+      "WorldBegin\nAttributeBegin\nTranslate 0 1 0\nLightSource \"point\" \"rgb I\" [1 2 3] \"float scale\" 2\n"
+      "AttributeEnd\nLightSource \"spot\" \"point3 from\" [0 4 0] \"point3 to\" [0 0 0] \"float coneangle\" 40 "
+      "\"float conedelta\" 10\nLightSource \"distant\" \"point3 from\" [0 1 0] \"point3 to\" [0 0 0] "
+      "\"rgb L\" [3 3 3]\n");
+  ASSERT_EQ(scene.punctualLights.size(), 3u);
+  const PunctualLight &point = scene.punctualLights[0], &spot = scene.punctualLights[1], &sun = scene.punctualLights[2];
+  EXPECT_EQ(point.type, PunctualLightType::Point);
+  expectNear(point.position, {0, 1, 0});
+  expectNear(point.intensity, {2, 4, 6});
+  EXPECT_EQ(spot.type, PunctualLightType::Spot);
+  expectNear(spot.position, {0, 4, 0});
+  expectNear(spot.direction, {0, -1, 0});
+  EXPECT_NEAR(spot.cosOuter, std::cos(40.0f * kPi / 180.0f), 1e-6f);
+  EXPECT_NEAR(spot.cosInner, std::cos(30.0f * kPi / 180.0f), 1e-6f);
+  EXPECT_EQ(sun.type, PunctualLightType::Directional);
+  expectNear(sun.direction, {0, -1, 0});
+  expectNear(sun.intensity, {3, 3, 3});
+}
+
+TEST(PbrtLoader, UnsupportedFeaturesWarnOncePerFeature) {
+  LoadWarnings warnings;
+  Scene scene = loadText(std::string(kMirroredCamera) +
+                             "Shape \"curve\" \"point3 P\" [0 0 0 1 1 1 2 2 2 3 3 3]\nShape \"curve\" \"point3 P\" "
+                             "[0 0 0 1 1 1 2 2 2 3 3 3]\nLightSource \"goniometric\" \"rgb I\" [1 1 1]\n"
+                             "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n" +
+                             kTriangle,
+                         &warnings);
+  EXPECT_EQ(scene.meshes.size(), 1u);
+  int curveWarnings = 0, lightWarnings = 0, mediaWarnings = 0;
+  for (const std::string& w : warnings.messages) {
+    curveWarnings += w.find("'curve'") != std::string::npos;
+    lightWarnings += w.find("'goniometric'") != std::string::npos;
+    mediaWarnings += w.find("media") != std::string::npos;
+  }
+  EXPECT_EQ(curveWarnings, 1);
+  EXPECT_EQ(lightWarnings, 1);
+  EXPECT_EQ(mediaWarnings, 1);
+}
+
+TEST(PbrtLoader, ParametersNotAppliedAreNamed) {
+  LoadWarnings warnings;
+  loadText(std::string(kMirroredCamera) + "Material \"coateddiffuse\" \"float thickness\" 0.1\n" + kTriangle +
+               "Material \"coateddiffuse\" \"float thickness\" 0.2\n" + kTriangle,
+           &warnings);
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_EQ(warnings.messages[0], "test.pbrt: material 'coateddiffuse': parameter 'thickness' is not applied");
+}
+
+TEST(PbrtLoader, UnknownSpectraWarnAndTakeTheDefault) {
+  LoadWarnings warnings;
+  Scene scene = loadText(
+      std::string(kMirroredCamera) + "Material \"diffuse\" \"spectrum reflectance\" \"measured.spd\"\n" + kTriangle,
+      &warnings);
+  expectNear(scene.materials[scene.meshes[0].triangleMaterials[0]].baseColor, {0.5f, 0.5f, 0.5f});
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_NE(warnings.messages[0].find("'measured.spd'"), std::string::npos) << warnings.messages[0];
+}
+
+TEST(PbrtLoader, ImageTexturesWithTheirUvMapping) {
+  TempFolder folder;
+  folder.write("grey.pfm", std::string("Pf\n2 1\n-1.0\n") + std::string("\0\0\0\x3f\0\0\x80\x3f", 8));
+  std::string path = folder.write(
+      "scene.pbrt", std::string(kMirroredCamera) +
+                        "Texture \"t\" \"spectrum\" \"imagemap\" \"string filename\" \"grey.pfm\" "
+                        "\"float uscale\" 2 \"float vscale\" 4 \"float scale\" 0.5\n"
+                        "Texture \"a\" \"float\" \"imagemap\" \"string filename\" \"grey.pfm\"\n"
+                        "Material \"diffuse\" \"texture reflectance\" \"t\"\n"
+                        "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"point2 uv\" [0 0 1 0 0 1] "
+                        "\"texture alpha\" \"a\"\n");
+  LoadWarnings warnings;
+  Scene scene = loadPbrt(path, warnings);
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages.front();
+  ASSERT_EQ(scene.textures.size(), 1u);  // one image, read once
+  EXPECT_EQ(scene.textures[0].width, 2u);
+  EXPECT_FLOAT_EQ(scene.textures[0].floats[1], 1.0f);
+  const Material& m = scene.materials[scene.meshes[0].triangleMaterials[0]];
+  EXPECT_EQ(m.baseColorTexture, 0);
+  expectNear(m.baseColor, {0.5f, 0.5f, 0.5f});
+  EXPECT_EQ(m.opacityTexture, 0);
+  EXPECT_EQ(m.alphaMode, AlphaMode::Blend);
+  // pbrt's (u, v) = (1, 0) through uscale 2: u' = 2; v' = 0 is the bottom of the image, candela's v = 1.
+  const Mesh& mesh = scene.meshes[0];
+  ASSERT_EQ(mesh.uvs.size(), 3u);
+  EXPECT_FLOAT_EQ(mesh.uvs[1].x, 2.0f);
+  EXPECT_FLOAT_EQ(mesh.uvs[1].y, 1.0f);
+  EXPECT_FLOAT_EQ(mesh.uvs[2].y, 1.0f - 4.0f);
+}
+
+TEST(PbrtLoader, RoughnessTexturesBecomeCandelasRoughness) {
+  TempFolder folder;
+  folder.write("grey.pfm", std::string("Pf\n2 1\n-1.0\n") + std::string("\0\0\0\x3f\0\0\x80\x3f", 8));
+  std::string path = folder.write("scene.pbrt", std::string(kMirroredCamera) +
+                                                    "Texture \"r\" \"float\" \"imagemap\" \"string filename\" "
+                                                    "\"grey.pfm\" \"float scale\" 0.5\n"
+                                                    "Material \"conductor\" \"texture roughness\" \"r\"\n" +
+                                                    kTriangle);
+  LoadWarnings warnings;
+  Scene scene = loadPbrt(path, warnings);
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages.front();
+  const Material& m = scene.materials[scene.meshes[0].triangleMaterials[0]];
+  EXPECT_EQ(m.type, MaterialType::Pbr);
+  EXPECT_FLOAT_EQ(m.roughness, 1.0f);
+  ASSERT_NE(m.roughnessTexture, kNoTexture);
+  const Texture& r = scene.textures[size_t(m.roughnessTexture)];
+  ASSERT_EQ(r.floats.size(), 2u);
+  // pbrt's value 0.5 * texel, remapped: alpha = sqrt(value); candela's roughness = sqrt(alpha).
+  EXPECT_NEAR(r.floats[0], std::pow(0.25f, 0.25f), 1e-5f);
+  EXPECT_NEAR(r.floats[1], std::pow(0.5f, 0.25f), 1e-5f);
+}
+
+TEST(PbrtLoader, InvertedImageTextures) {
+  TempFolder folder;
+  folder.write("grey.pfm", std::string("Pf\n2 1\n-1.0\n") + std::string("\0\0\0\x3f\0\0\x80\x3f", 8));
+  std::string path = folder.write("scene.pbrt", std::string(kMirroredCamera) +
+                                                    "Texture \"t\" \"spectrum\" \"imagemap\" \"string filename\" "
+                                                    "\"grey.pfm\" \"bool invert\" true\n"
+                                                    "Material \"diffuse\" \"texture reflectance\" \"t\"\n" +
+                                                    kTriangle);
+  LoadWarnings warnings;
+  Scene scene = loadPbrt(path, warnings);
+  const Material& m = scene.materials[scene.meshes[0].triangleMaterials[0]];
+  ASSERT_NE(m.baseColorTexture, kNoTexture);
+  const Texture& inverted = scene.textures[size_t(m.baseColorTexture)];
+  ASSERT_EQ(inverted.floats.size(), 2u);
+  EXPECT_FLOAT_EQ(inverted.floats[0], 0.5f);
+  EXPECT_FLOAT_EQ(inverted.floats[1], 0.0f);
+}
+
+TEST(PbrtLoader, SceneCacheNoticesChangedIncludes) {
+  TempFolder folder;
+  folder.write("part.pbrt", kTriangle);
+  std::string main = folder.write("main.pbrt", std::string(kMirroredCamera) + "Include \"part.pbrt\"\n");
+  SceneLoadOptions options;
+  options.cache = {true, folder.file("cache")};
+  EXPECT_EQ(loadScene(main, options).triangleCount(), 1u);
+  EXPECT_EQ(loadScene(main, options).triangleCount(), 1u);  // from the cache
+  folder.write("part.pbrt", std::string(kTriangle) + kTriangle);
+  EXPECT_EQ(loadScene(main, options).triangleCount(), 2u);
+}
+
+TEST(PbrtLoader, QuadricsAreTessellatedOnTheirSurface) {
+  Scene scene = loadText(std::string(kMirroredCamera) +
+                         "Shape \"sphere\" \"float radius\" 2\n"
+                         "Shape \"disk\" \"float radius\" 1 \"float height\" 0.5\n"
+                         "Shape \"cylinder\" \"float radius\" 1 \"float zmin\" 0 "
+                         "\"float zmax\" 3\n");
+  ASSERT_EQ(scene.meshes.size(), 3u);
+  for (size_t i = 0; i < scene.meshes[0].positions.size(); ++i) {
+    EXPECT_NEAR(length(scene.meshes[0].positions[i]), 2.0f, 1e-4f);
+    EXPECT_GT(dot(scene.meshes[0].normals[i], scene.meshes[0].positions[i]), 0.0f);  // outwards
+  }
+  for (Vec3 p : scene.meshes[1].positions) EXPECT_FLOAT_EQ(p.z, 0.5f);
+  for (Vec3 p : scene.meshes[2].positions) EXPECT_NEAR(std::hypot(p.x, p.y), 1.0f, 1e-5f);
+  // The sphere's front faces outwards.
+  const Mesh& sphere = scene.meshes[0];
+  for (size_t t = 0; t < sphere.triangleCount(); ++t) {
+    Vec3 a = sphere.positions[sphere.indices[3 * t]], b = sphere.positions[sphere.indices[3 * t + 1]];
+    Vec3 c = sphere.positions[sphere.indices[3 * t + 2]];
+    Vec3 n = cross(b - a, c - a);
+    if (length(n) > 1e-6f) {
+      EXPECT_GT(dot(n, a + b + c), 0.0f);
+    }
+  }
+}
+
+TEST(PbrtLoader, BilinearMeshesAndLoopSubdivision) {
+  Scene scene = loadText(std::string(kMirroredCamera) +
+                         "Shape \"bilinearmesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0 1 1 0]\n"
+                         "Shape \"loopsubdiv\" \"integer levels\" 2 \"point3 P\" [0 0 0 1 0 0 0 1 0 0 0 1] "
+                         "\"integer indices\" [0 2 1 0 1 3 0 3 2 1 2 3]\n");
+  ASSERT_EQ(scene.meshes.size(), 2u);
+  EXPECT_EQ(scene.meshes[0].triangleCount(), 2u);
+  EXPECT_GT(windingNormal(scene, 0, 0).z, 0.0f);  // cross(dp/du, dp/dv) = +z
+  EXPECT_EQ(scene.meshes[1].triangleCount(), 4u * 16u);
+  // Loop subdivision of a closed mesh shrinks it towards its centroid: every vertex inside the hull.
+  for (Vec3 p : scene.meshes[1].positions) EXPECT_LT(p.x + p.y + p.z, 1.0f);
+}
+
+TEST(PbrtLoader, LoopSubdivisionEndsOnTheLimitSurface) {
+  // With no levels, pbrt still moves the control points to the limit surface: a vertex of valence 3 keeps 2/5 of
+  // itself and takes 1/5 of each neighbour.
+  Scene scene = loadText(std::string(kMirroredCamera) +
+                         "Shape \"loopsubdiv\" \"integer levels\" 0 \"point3 P\" [0 0 0 1 0 0 0 1 0 0 0 1] "
+                         "\"integer indices\" [0 2 1 0 1 3 0 3 2 1 2 3]\n");
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  expectNear(scene.meshes[0].positions[0], {0.2f, 0.2f, 0.2f});
+  expectNear(scene.meshes[0].positions[1], {0.4f, 0.2f, 0.2f});
+}
+
+std::string plyHeader(const std::string& format, int vertices, int faces) {
+  return "ply\nformat " + format + " 1.0\ncomment test\nelement vertex " + std::to_string(vertices) +
+         "\nproperty float x\nproperty float y\nproperty float z\nproperty float u\nproperty float v\n"
+         "element face " +
+         std::to_string(faces) + "\nproperty list uchar int vertex_indices\nend_header\n";
+}
+
+// A unit quad: 4 vertices with texture coordinates and one face of 4 indices.
+std::string binaryQuadPly(bool bigEndian) {
+  std::string out = plyHeader(bigEndian ? "binary_big_endian" : "binary_little_endian", 4, 1);
+  auto put = [&](const void* p, size_t n) {
+    std::string bytes(static_cast<const char*>(p), n);
+    if (bigEndian) std::reverse(bytes.begin(), bytes.end());
+    out += bytes;
+  };
+  const float v[4][5] = {{0, 0, 0, 0, 0}, {1, 0, 0, 1, 0}, {1, 1, 0, 1, 1}, {0, 1, 0, 0, 1}};
+  for (const auto& vertex : v)
+    for (float f : vertex) put(&f, 4);
+  out += char(4);
+  for (int32_t i : {0, 1, 2, 3}) put(&i, 4);
+  return out;
+}
+
+std::string gzip(const std::string& data) {
+  z_stream s{};
+  deflateInit2(&s, Z_DEFAULT_COMPRESSION, Z_DEFLATED, 16 + MAX_WBITS, 8, Z_DEFAULT_STRATEGY);
+  std::string out(deflateBound(&s, uLong(data.size())) + 32, '\0');
+  s.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(data.data()));
+  s.avail_in = uInt(data.size());
+  s.next_out = reinterpret_cast<Bytef*>(out.data());
+  s.avail_out = uInt(out.size());
+  deflate(&s, Z_FINISH);
+  out.resize(s.total_out);
+  deflateEnd(&s);
+  return out;
+}
+
+TEST(PbrtLoader, PlyMeshesInEveryEncoding) {
+  TempFolder folder;
+  std::string ascii = plyHeader("ascii", 4, 1) + "0 0 0 0 0\n1 0 0 1 0\n1 1 0 1 1\n0 1 0 0 1\n4 0 1 2 3\n";
+  folder.write("ascii.ply", ascii);
+  folder.write("le.ply", binaryQuadPly(false));
+  folder.write("be.ply", binaryQuadPly(true));
+  folder.write("packed.ply.gz", gzip(binaryQuadPly(false)));
+  for (const char* name : {"ascii.ply", "le.ply", "be.ply", "packed.ply.gz"}) {
+    std::string scenePath = folder.write(
+        "scene.pbrt", std::string(kMirroredCamera) + "Shape \"plymesh\" \"string filename\" \"" + name + "\"\n");
+    LoadWarnings warnings;
+    Scene scene = loadPbrt(scenePath, warnings);
+    ASSERT_EQ(scene.meshes.size(), 1u) << name;
+    const Mesh& m = scene.meshes[0];
+    EXPECT_EQ(m.triangleCount(), 2u) << name;
+    ASSERT_EQ(m.positions.size(), 4u) << name;
+    expectNear(m.positions[2], {1, 1, 0});
+    ASSERT_EQ(m.uvs.size(), 4u) << name;
+    EXPECT_FLOAT_EQ(m.uvs[2].y, 0.0f) << name;  // pbrt's v = 1 is the top row: candela's v = 0
+    EXPECT_GT(windingNormal(scene, 0, 0).z, 0.0f) << name;
+    EXPECT_NE(std::find(scene.inputFiles.begin(), scene.inputFiles.end(), folder.file(name)), scene.inputFiles.end());
+  }
+}
+
+TEST(PbrtLoader, PlyFacesOfMixedSizes) {
+  // Lists of different lengths make tinyply read the faces twice, seeking back in between.
+  TempFolder folder;
+  std::string ply =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 5\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n";
+  const float vertices[5][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 0, 0}};
+  ply.append(reinterpret_cast<const char*>(vertices), sizeof(vertices));
+  const int32_t quad[4] = {0, 1, 2, 3}, triangle[3] = {1, 4, 2};
+  ply += char(4);
+  ply.append(reinterpret_cast<const char*>(quad), sizeof(quad));
+  ply += char(3);
+  ply.append(reinterpret_cast<const char*>(triangle), sizeof(triangle));
+  folder.write("mixed.ply", ply);
+  std::string path = folder.write(
+      "scene.pbrt", std::string(kMirroredCamera) + "Shape \"plymesh\" \"string filename\" \"mixed.ply\"\n");
+  LoadWarnings warnings;
+  Scene scene = loadPbrt(path, warnings);
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  EXPECT_EQ(scene.meshes[0].indices, (std::vector<uint32_t>{0, 1, 2, 0, 2, 3, 1, 4, 2}));
+}
+
+TEST(PbrtLoader, HostilePlyFilesAreRefused) {
+  TempFolder folder;
+  folder.write("huge.ply", plyHeader("binary_little_endian", 1000000000, 1) + std::string(64, '\0'));
+  folder.write("badindex.ply", plyHeader("ascii", 3, 1) + "0 0 0 0 0\n1 0 0 0 0\n0 1 0 0 0\n3 0 1 7\n");
+  folder.write("bomb.ply.gz", "not gzip at all");
+  for (const char* name : {"huge.ply", "badindex.ply", "bomb.ply.gz"}) {
+    std::string scenePath =
+        folder.write("scene.pbrt", std::string("WorldBegin\nShape \"plymesh\" \"string filename\" \"") + name + "\"\n");
+    LoadWarnings warnings;
+    try {
+      loadPbrt(scenePath, warnings);
+      ADD_FAILURE() << name << " loaded";
+    } catch (const LoadError& e) {
+      EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(PbrtLoader, IncludesAreConfinedAndBounded) {
+  TempFolder folder;
+  folder.write("parts/geometry.pbrt", kTriangle);
+  std::string main = folder.write("main.pbrt", std::string(kMirroredCamera) +
+                                                   "Include \"parts/geometry.pbrt\"\n"
+                                                   "Import \"parts/geometry.pbrt\"\n");
+  LoadWarnings warnings;
+  Scene scene = loadPbrt(main, warnings);
+  EXPECT_EQ(scene.instances.size(), 2u);
+  EXPECT_EQ(scene.inputFiles.size(), 2u);  // the scene and the included file, once
+  std::string self = folder.write("self.pbrt", "Include \"self.pbrt\"\n");
+  try {
+    loadPbrt(self, warnings);
+    ADD_FAILURE() << "a file including itself loaded";
+  } catch (const LoadError& e) {
+    EXPECT_NE(std::string(e.what()).find("deep"), std::string::npos) << e.what();
+  }
+  std::string outside = folder.write("out.pbrt", "Include \"../../etc/passwd\"\n");
+  try {
+    loadPbrt(outside, warnings);
+    ADD_FAILURE() << "an include outside the scene's folder was read";
+  } catch (const LoadError& e) {
+    EXPECT_NE(std::string(e.what()).find("out.pbrt:1:"), std::string::npos) << e.what();
+  }
+}
+
+TEST(PbrtSpectra, ConversionsToRgb) {
+  Vec3 d65ish = blackbodyRgb(6504.0f);
+  EXPECT_NEAR(luminance(d65ish), 1.0f, 0.01f);
+  EXPECT_NEAR(d65ish.x / d65ish.z, 1.0f, 0.15f);  // a blackbody near 6500 K is close to sRGB's white
+  expectNear(sampledSpectrumRgb({400, 0.5, 700, 0.5}), {0.5f, 0.5f, 0.5f}, 1e-3f);
+  Vec3 red = sampledSpectrumRgb({400, 0, 590, 0, 610, 1, 700, 1});
+  EXPECT_GT(red.x, 5.0f * red.z);
+  expectNear(*namedSpectrumRgb("stdillum-D65"), {1, 1, 1});
+  EXPECT_FALSE(namedSpectrumRgb("no-such-spectrum"));
+  expectNear(conductorReflectance({1.5f, 1.5f, 1.5f}, {0, 0, 0}), {0.04f, 0.04f, 0.04f});
+}
+
+TEST(PbrtLights, EqualAreaOctahedralMapping) {
+  Vec2 up = equalAreaSphereToSquare({0, 0, 1});
+  EXPECT_FLOAT_EQ(up.x, 0.5f);
+  EXPECT_FLOAT_EQ(up.y, 0.5f);
+  Vec2 x = equalAreaSphereToSquare({1, 0, 0});
+  EXPECT_FLOAT_EQ(x.x, 1.0f);
+  EXPECT_FLOAT_EQ(x.y, 0.5f);
+  Vec2 down = equalAreaSphereToSquare({0, 0, -1});
+  EXPECT_FLOAT_EQ(down.x, 1.0f);
+  EXPECT_FLOAT_EQ(down.y, 1.0f);
+}
+
+// A square PFM whose centre (pbrt's +z in the octahedral layout) is red and whose corners (-z) are blue.
+std::string octahedralPfm(int size) {
+  std::string out = "PF\n" + std::to_string(size) + " " + std::to_string(size) + "\n-1.0\n";
+  for (int row = 0; row < size; ++row)
+    for (int column = 0; column < size; ++column) {
+      float u = (float(column) + 0.5f) / float(size) * 2 - 1, v = (float(row) + 0.5f) / float(size) * 2 - 1;
+      bool upper = std::fabs(u) + std::fabs(v) < 1.0f;
+      float rgb[3] = {upper ? 1.0f : 0.0f, 0.0f, upper ? 0.0f : 1.0f};
+      out.append(reinterpret_cast<const char*>(rgb), sizeof(rgb));
+    }
+  return out;
+}
+
+TEST(PbrtLights, OctahedralMapsFollowTheMirroredWorld) {
+  // A map whose pbrt +x half (u > 0.5 in the octahedral square) is red, under pbrt's default camera: the world
+  // is mirrored, so pbrt's +x is candela's -x, where candela's map has u = 0.25.
+  TempFolder folder;
+  std::string pfm = "PF\n16 16\n-1.0\n";
+  for (int row = 0; row < 16; ++row)
+    for (int column = 0; column < 16; ++column) {
+      float rgb[3] = {column >= 8 ? 1.0f : 0.0f, 0.0f, column >= 8 ? 0.0f : 1.0f};
+      pfm.append(reinterpret_cast<const char*>(rgb), sizeof(rgb));
+    }
+  folder.write("sky.pfm", pfm);
+  std::string path =
+      folder.write("scene.pbrt", "WorldBegin\nLightSource \"infinite\" \"string filename\" \"sky.pfm\"\n");
+  LoadWarnings warnings;
+  const Texture& map = loadPbrt(path, warnings).environment.map;
+  ASSERT_EQ(map.width, 32u);
+  const float* minusX = map.floats.data() + (size_t(map.height / 2) * map.width + map.width / 4) * 3;
+  const float* plusX = map.floats.data() + (size_t(map.height / 2) * map.width + 3 * map.width / 4) * 3;
+  EXPECT_GT(minusX[0], 0.9f);
+  EXPECT_GT(plusX[2], 0.9f);
+}
+
+TEST(PbrtLights, PbrtV3EquirectangularMaps) {
+  // pbrt-v3's layout: u = phi / 2pi about the light's +z, v = theta / pi from +z. A map whose top half is red
+  // (the light's +z hemisphere), turned so that +z is world +y: red above, blue below.
+  TempFolder folder;
+  std::string pfm = "PF\n32 16\n-1.0\n";
+  for (int row = 0; row < 16; ++row)  // PFM rows run from the bottom
+    for (int column = 0; column < 32; ++column) {
+      bool upper = row >= 8;
+      float rgb[3] = {upper ? 1.0f : 0.0f, 0.0f, upper ? 0.0f : 1.0f};
+      pfm.append(reinterpret_cast<const char*>(rgb), sizeof(rgb));
+    }
+  folder.write("sky.pfm", pfm);
+  std::string path = folder.write("scene.pbrt", std::string(kMirroredCamera) +
+                                                    "Rotate -90 1 0 0\nLightSource \"infinite\" \"string filename\" "
+                                                    "\"sky.pfm\"\n");
+  LoadWarnings warnings;
+  const Texture& map = loadPbrt(path, warnings).environment.map;
+  ASSERT_EQ(map.height, 16u);
+  EXPECT_GT(map.floats[(size_t(1) * map.width + 5) * 3], 0.9f);
+  EXPECT_GT(map.floats[(size_t(map.height - 2) * map.width + 5) * 3 + 2], 0.9f);
+}
+
+TEST(PbrtLights, OctahedralMapsBecomeEquirectangularThroughTheLightTransform) {
+  TempFolder folder;
+  folder.write("sky.pfm", octahedralPfm(64));
+  // Rotate -90 about x takes the light's +z to world +y: the red hemisphere must end up above.
+  std::string path = folder.write("scene.pbrt", std::string(kMirroredCamera) +
+                                                    "AttributeBegin\nRotate -90 1 0 0\nLightSource \"infinite\" "
+                                                    "\"string filename\" \"sky.pfm\"\nAttributeEnd\n");
+  LoadWarnings warnings;
+  Scene scene = loadPbrt(path, warnings);
+  ASSERT_TRUE(scene.environment.hasMap());
+  const Texture& map = scene.environment.map;
+  auto texel = [&](uint32_t row, uint32_t column) {
+    const float* p = map.floats.data() + (size_t(row) * map.width + column) * map.channels;
+    return Vec3{p[0], p[1], p[2]};
+  };
+  EXPECT_GT(texel(2, map.width / 2).x, 0.9f);               // near the zenith
+  EXPECT_GT(texel(map.height - 3, map.width / 2).z, 0.9f);  // near the nadir
+}
+
+// The built-in Cornell box written out as a pbrt scene (in pbrt's customary mirrored camera frame) renders as
+// the built-in one does.
+std::string cornellBoxAsPbrt() {
+  Scene box = makeCornellBox();
+  std::ostringstream out;
+  out.precision(9);
+  Vec3 e = box.camera.eye, t = box.camera.target, u = box.camera.up;
+  out << "Film \"rgb\" \"integer xresolution\" 48 \"integer yresolution\" 48\n";
+  out << "Scale -1 1 1\nLookAt " << e.x << ' ' << e.y << ' ' << e.z << ' ' << t.x << ' ' << t.y << ' ' << t.z << ' '
+      << u.x << ' ' << u.y << ' ' << u.z << "\n";
+  out << "Camera \"perspective\" \"float fov\" " << box.camera.verticalFovDegrees << "\nWorldBegin\n";
+  const Mesh& room = box.meshes[0];
+  for (uint32_t id = 0; id < box.materials.size(); ++id) {
+    const Material& m = box.materials[id];
+    out << "AttributeBegin\nMaterial \"diffuse\" \"rgb reflectance\" [" << m.baseColor.x << ' ' << m.baseColor.y << ' '
+        << m.baseColor.z << "]\n";
+    if (!isBlack(m.emission))
+      out << "AreaLightSource \"diffuse\" \"rgb L\" [" << m.emission.x << ' ' << m.emission.y << ' ' << m.emission.z
+          << "]\n";
+    out << "Shape \"trianglemesh\" \"point3 P\" [";
+    uint32_t count = 0;
+    for (size_t tri = 0; tri < room.triangleCount(); ++tri) {
+      if (room.triangleMaterials[tri] != id) continue;
+      for (int k = 0; k < 3; ++k) {
+        Vec3 p = room.positions[room.indices[3 * tri + k]];
+        out << p.x << ' ' << p.y << ' ' << p.z << ' ';
+      }
+      ++count;
+    }
+    out << "] \"integer indices\" [";
+    for (uint32_t i = 0; i < 3 * count; ++i) out << i << ' ';
+    out << "]\nAttributeEnd\n";
+  }
+  return out.str();
+}
+
+TEST(PbrtLoader, CornellBoxRendersLikeTheBuiltInOne) {
+  TempFolder folder;
+  std::string path = folder.write("cornell.pbrt", cornellBoxAsPbrt());
+  RenderJob job;
+  job.settings.width = 48;
+  job.settings.height = 48;
+  job.given.width = job.given.height = job.given.samplesPerPixel = job.given.maxDepth = true;
+  job.samplesPerPixel = 64;
+  job.backend = "cpu";
+  Scene fromPbrt = loadScene(path, {});
+  EXPECT_EQ(*fromPbrt.renderHints.width, 48u);
+  RenderOutcome pbrt = renderLoadedScene(job, fromPbrt, false);
+  RenderOutcome builtin = renderLoadedScene(job, loadScene("cornell-box", {}), false);
+  // Compare the means of the four quadrants: the red wall is on the left, the green one on the right.
+  auto quadrant = [](const Image& image, int qx, int qy) {
+    Vec3 sum{0, 0, 0};
+    int n = 0;
+    for (uint32_t y = 0; y < image.height; ++y)
+      for (uint32_t x = 0; x < image.width; ++x)
+        if (int(2 * x / image.width) == qx && int(2 * y / image.height) == qy) {
+          sum += image.pixels[size_t(y) * image.width + x];
+          ++n;
+        }
+    return sum / float(n);
+  };
+  for (int qy = 0; qy < 2; ++qy)
+    for (int qx = 0; qx < 2; ++qx) {
+      Vec3 a = quadrant(pbrt.image, qx, qy), b = quadrant(builtin.image, qx, qy);
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[c], b[c], 0.05f * b[c] + 0.002f) << "quadrant " << qx << ',' << qy;
+    }
+  EXPECT_GT(quadrant(pbrt.image, 0, 1).x, quadrant(pbrt.image, 1, 1).x);  // red wall on the left
+}
+
+}  // namespace
+}  // namespace candela
