@@ -1,6 +1,8 @@
 // Browser tests of candela serve: node browser_test.mjs <candela executable> <test name>. Each test starts its own
 // server on a free port (CPU backend, a small image) and a headless Chromium, and exits non-zero on failure.
 import assert from 'node:assert/strict';
+import { execFile } from 'node:child_process';
+import { fileURLToPath } from 'node:url';
 import { launchBrowser, rawGet, startServer, stopServer } from './serve_harness.mjs';
 
 const [candela, testName] = process.argv.slice(2);
@@ -221,6 +223,24 @@ const tests = {
         assert.equal(r.status, 200, path);
         assert.equal(r.headers['x-content-type-options'], 'nosniff');
       }
+    } finally {
+      await stopServer(server);
+    }
+  },
+
+  // The measuring client (measure_client.py) connects, steers and prints its JSON.
+  async measure() {
+    const server = await startServer(candela, [...serverArgs, '--token', 'measure']);
+    try {
+      const script = fileURLToPath(new URL('./measure_client.py', import.meta.url));
+      const stdout = await new Promise((resolve, reject) => {
+        execFile('python3', [script, server.url, '--seconds', '3', '--width', '160', '--height', '120', '--inputs', '4'],
+                 { timeout: 60000 }, (error, out, err) => (error ? reject(new Error(`${error}\n${err}`)) : resolve(out)));
+      });
+      const result = JSON.parse(stdout);
+      assert.equal(result.backend, 'cpu');
+      assert.ok(result.frames > 3 && result.fps_delivered > 1, stdout);
+      assert.ok(result.inputs_timed >= 1 && result.input_to_frame_ms.median > 0, stdout);
     } finally {
       await stopServer(server);
     }

@@ -8,5 +8,6 @@ command -v node >/dev/null || skip "node is not installed (scripts/install-depen
 chromium="${CHROMIUM:-/usr/bin/chromium}"
 [ -x "$chromium" ] || skip "no Chromium at $chromium (scripts/install-dependencies.sh installs chromium; CHROMIUM names another)"
 [ -d "$here/node_modules/playwright-core" ] || skip "playwright-core is not installed (tests/serve/install-browser-test-deps.sh)"
+[ "$2" != measure ] || command -v python3 >/dev/null || skip "python3 is not installed"
 export CHROMIUM="$chromium"
 exec node "$here/browser_test.mjs" "$1" "$2"

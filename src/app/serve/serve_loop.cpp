@@ -78,6 +78,7 @@ void ServeLoop::greet(uint64_t client) {
         {"textures", s.textures}}},
       {"override_parameters", overrides},
       {"denoisers", denoisers},
+      {"max_atrous_passes", kMaxAtrousPasses},
       {"controls", controlsJson()},
   };
   hub_.send(client, std::make_shared<const std::string>(hello.dump()), false);

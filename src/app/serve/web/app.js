@@ -62,6 +62,7 @@ function onText(message) {
     $('stats').textContent = `${s.triangles} triangles, ${s.vertices} vertices, ${s.meshes} meshes ` +
       `(${s.instances} instances), ${s.materials} materials, ${s.textures} textures`;
     buildDenoisers(message.denoisers);
+    $('atrous_passes').max = message.max_atrous_passes;
     buildOverrides(message.override_parameters);
     showControls(message.controls);
   } else if (message.type === 'role') {
