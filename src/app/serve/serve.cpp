@@ -31,8 +31,8 @@ int runServe(ServeOptions options) {
   AccessToken token(options.token);
   if (!token.required() && !isLoopbackAddress(options.bind)) token = AccessToken::random();
   ClientHub hub;
+  HttpServer server(options.bind, options.port, token, hub);  // binds first: a busy port is told at once
   ServeLoop loop(options, hub);
-  HttpServer server(options.bind, options.port, token, hub);
   server.start();
   std::signal(SIGINT, requestStop);
   std::signal(SIGTERM, requestStop);
