@@ -207,6 +207,25 @@ const tests = {
     assert.ok(dropped.length < 40, `each kind of problem is logged once, not per message (${dropped.length})`);
   },
 
+  // A browser that does not acknowledge its frames gets no more of them (none queue up for it) and holds up no
+  // one: the page beside it keeps getting frames.
+  async slow() {
+    await withPage([], async (page, s) => {
+      await page.goto(s.url);
+      await until('frames', async () => (await frames(page)) >= 2);
+      const before = await frames(page);
+      const received = await page.evaluate(() => new Promise((resolve) => {
+        const ws = new WebSocket(`ws://${location.host}/ws`);
+        ws.binaryType = 'arraybuffer';
+        let count = 0;
+        ws.onmessage = (e) => { if (typeof e.data !== 'string') count += 1; };
+        setTimeout(() => { ws.close(); resolve(count); }, 3000);
+      }));
+      assert.equal(received, 1, 'one frame, then none until it is acknowledged');
+      assert.ok((await frames(page)) >= before + 3, 'the page kept drawing frames meanwhile');
+    });
+  },
+
   // Only the page's own files can be requested: nothing of the file system, however the path is spelt.
   async traversal() {
     const server = await startServer(candela, serverArgs);
