@@ -207,6 +207,43 @@ const tests = {
     assert.ok(dropped.length < 40, `each kind of problem is logged once, not per message (${dropped.length})`);
   },
 
+  // Two browsers watch the same render; the first steers, the second's drags are ignored until it takes control.
+  async control() {
+    await withPage([], async (first, s) => {
+      await first.goto(s.url);
+      await until('frames', async () => (await frames(first)) >= 2);
+      const second = await first.context().browser().newPage({ viewport });
+      try {
+        await second.goto(s.url);
+        await until('frames in the second page', async () => (await frames(second)) >= 2);
+        assert.match(await second.textContent('#role'), /watching \(2 watching\)/);
+        assert.match(await first.textContent('#role'), /in control \(2 watching\)/);
+        const drag = async (page) => {
+          const box = await page.locator('#image').boundingBox();
+          await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+          await page.mouse.down();
+          for (let i = 1; i <= 8; ++i) await page.mouse.move(box.x + box.width / 2 + 20 * i, box.y + box.height / 2);
+          await page.mouse.up();
+        };
+        const before = (await nextFrame(second)).camera.position;
+        await drag(second);
+        await nextFrame(second);
+        await nextFrame(second);
+        assert.deepEqual((await header(second)).camera.position, before, "a watcher's drag leaves the camera");
+        await second.click('#take-control');
+        await until('the second page to take control', async () => /in control/.test(await second.textContent('#role')));
+        assert.match(await first.textContent('#role'), /watching/);
+        await drag(second);
+        await until('the camera to move', async () => {
+          const h = await header(first);
+          return h.camera.position[0] !== before[0];
+        });
+      } finally {
+        await second.close();
+      }
+    });
+  },
+
   // A browser that does not acknowledge its frames gets no more of them (none queue up for it) and holds up no
   // one: the page beside it keeps getting frames.
   async slow() {

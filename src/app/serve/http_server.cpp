@@ -129,11 +129,13 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
 }  // namespace
 
 struct HttpServer::Impl {
-  asio::io_context io{1};
-  tcp::acceptor acceptor{io};
+  // Declared before the io_context: the connections its pending handlers hold refer to them when it destroys
+  // them.
   AccessToken token;
   ClientHub& hub;
   std::atomic<int> connections{0};
+  asio::io_context io{1};
+  tcp::acceptor acceptor{io};
 
   Impl(AccessToken t, ClientHub& h) : token(std::move(t)), hub(h) {}
 

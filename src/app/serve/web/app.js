@@ -210,7 +210,8 @@ canvas.addEventListener('pointerdown', (e) => {
   pointer('down', e);
   e.preventDefault();
 });
-canvas.addEventListener('pointermove', (e) => pointer('move', e));
+// Moves matter only while a button is held (a drag); hovering sends nothing.
+canvas.addEventListener('pointermove', (e) => { if (e.buttons) pointer('move', e); });
 canvas.addEventListener('pointerup', (e) => { if (e.button <= 2) pointer('up', e); });
 canvas.addEventListener('contextmenu', (e) => e.preventDefault());
 canvas.addEventListener('wheel', (e) => {
