@@ -39,6 +39,10 @@ TEST(AccessToken, LoopbackAddresses) {
   EXPECT_FALSE(isLoopbackAddress("0.0.0.0"));
   EXPECT_FALSE(isLoopbackAddress("::"));
   EXPECT_FALSE(isLoopbackAddress("192.168.1.2"));
+  EXPECT_FALSE(isLoopbackAddress("127.0.0.1.example.com"));
+  EXPECT_FALSE(isLoopbackAddress("127.0.0"));
+  EXPECT_FALSE(isLoopbackAddress("127.0.0.1234"));
+  EXPECT_FALSE(isLoopbackAddress("127..0.1"));
 }
 
 TEST(AccessToken, SameOriginComparesTheOriginsHostWithTheRequestsHost) {
@@ -48,6 +52,14 @@ TEST(AccessToken, SameOriginComparesTheOriginsHostWithTheRequestsHost) {
   EXPECT_FALSE(sameOrigin("http://evil.example", "127.0.0.1:8080"));
   EXPECT_FALSE(sameOrigin("http://127.0.0.1:8081", "127.0.0.1:8080"));
   EXPECT_FALSE(sameOrigin("null", "127.0.0.1:8080"));
+}
+
+TEST(AccessToken, LoopbackHosts) {
+  for (const char* host : {"127.0.0.1:8080", "127.0.0.1", "localhost:80", "[::1]:8080", "[::1]"})
+    EXPECT_TRUE(isLoopbackHost(host)) << host;
+  for (const char* host : {"", "evil.example:8080", "localhost.evil.example", "127.0.0.1.evil.example:80", "[::1",
+                           "[::2]:80", "10.0.0.1:8080"})
+    EXPECT_FALSE(isLoopbackHost(host)) << host;
 }
 
 }  // namespace

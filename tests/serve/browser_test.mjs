@@ -274,6 +274,8 @@ const tests = {
         assert.equal(r.status, 404, `${path} gives ${r.status}`);
         assert.ok(!r.body.includes('root:'), path);
       }
+      // Without a token, only requests addressed to a loopback name are answered (no DNS rebinding).
+      assert.equal((await rawGet(server.url, '/', { Host: 'evil.example:8080' })).status, 403);
       for (const path of ['/', '/index.html', '/app.js', '/style.css', '/app.js?x=1']) {
         const r = await rawGet(server.url, path);
         assert.equal(r.status, 200, path);

@@ -63,7 +63,22 @@ std::string_view cookieValue(std::string_view cookieHeader, std::string_view nam
 }
 
 bool isLoopbackAddress(const std::string& address) {
-  return address == "localhost" || address == "::1" || address.rfind("127.", 0) == 0;
+  if (address == "localhost" || address == "::1") return true;
+  // 127.a.b.c, four numbers, nothing after them: "127.0.0.1.example.com" is a name anyone may point anywhere.
+  if (address.rfind("127.", 0) != 0) return false;
+  int parts = 1, digits = 0;
+  for (char c : address) {
+    if (c == '.') {
+      if (digits == 0) return false;
+      ++parts;
+      digits = 0;
+    } else if (c >= '0' && c <= '9' && digits < 3) {
+      ++digits;
+    } else {
+      return false;
+    }
+  }
+  return parts == 4 && digits > 0;
 }
 
 }  // namespace candela
@@ -75,6 +90,22 @@ bool sameOrigin(std::string_view origin, std::string_view host) {
   for (std::string_view scheme : {"http://", "https://"})
     if (origin.substr(0, scheme.size()) == scheme) return origin.substr(scheme.size()) == host;
   return false;
+}
+
+}  // namespace candela
+
+namespace candela {
+
+bool isLoopbackHost(std::string_view host) {
+  std::string_view name = host;
+  if (!name.empty() && name.front() == '[') {
+    const size_t close = name.find(']');
+    if (close == std::string_view::npos) return false;
+    name = name.substr(1, close - 1);
+  } else {
+    name = name.substr(0, name.find(':'));
+  }
+  return isLoopbackAddress(std::string(name));
 }
 
 }  // namespace candela

@@ -40,4 +40,9 @@ namespace candela {
 // no Origin (not from a browser) passes: it carries no visitor's cookie.
 bool sameOrigin(std::string_view origin, std::string_view host);
 
+// Whether a Host header ("127.0.0.1:8080", "localhost:8080", "[::1]:8080") names this machine by a loopback name.
+// A server without a token answers only such requests: a site whose name an attacker points at 127.0.0.1 (DNS
+// rebinding) sends its own name, and is refused.
+bool isLoopbackHost(std::string_view host);
+
 }  // namespace candela

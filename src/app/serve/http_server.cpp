@@ -57,6 +57,12 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
     }
     http::request<http::empty_body> request = parser_->release();
     const std::string target(request.target());
+    if (!token_.required() && !isLoopbackHost(text(request[http::field::host]))) {
+      respond(http::status::forbidden, "text/plain",
+              "forbidden: without a token this server answers only requests addressed to localhost or 127.0.0.1\n",
+              false);
+      return;
+    }
     if (!token_.admits(target, text(request[http::field::cookie]))) {
       respond(http::status::forbidden, "text/plain",
               "forbidden: this server needs its token; open the address candela serve printed (it ends in "
