@@ -8,6 +8,7 @@ export function startServer(candela, args) {
     const child = spawn(candela, ['serve', ...args], { stdio: ['ignore', 'pipe', 'pipe'] });
     let stdout = '';
     const server = { child, stderr: '', url: null, exited: null };
+    child.on('error', (e) => reject(new Error(`cannot run ${candela}: ${e.message}`)));
     child.stderr.on('data', (d) => { server.stderr += d; });
     child.on('exit', (code, signal) => {
       server.exited = { code, signal };
