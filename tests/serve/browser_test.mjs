@@ -109,6 +109,20 @@ const tests = {
       assert.equal((await nextFrame(page)).applied.max_depth, 3);
       await page.locator('#max_depth').fill('2');
       await until('max depth 2 to be rendered', async () => (await header(page)).applied.max_depth === 2);
+      // Material edits reach the backend: the Disney model with metallic 1 makes the painted walls metal, which look
+      // nothing like them.
+      await nextFrame(page);
+      const painted = await pixels(page);
+      await page.click('summary:text-is("Materials")');
+      await page.locator('#shading').selectOption('disney');
+      const metallic = page.locator('.override[data-name="metallic"]');
+      await metallic.locator('input[type=range]').fill('1');
+      await metallic.locator('input[type=checkbox]').check();
+      await until('the metallic override', async () => (await header(page)).controls.overrides.metallic === 1);
+      await nextFrame(page);
+      const metal = await pixels(page);
+      assert.ok(blockDifference(painted, metal) > 2, `metal walls change the picture: ${painted.mean} then ${metal.mean}`);
+      assert.equal((await header(page)).controls.shading, 'disney');
       const bright = await pixels(page);
       await page.locator('#exposure').fill('-4');
       await until('exposure -4 to be applied', async () => (await header(page)).controls.exposure === -4);

@@ -139,13 +139,12 @@ void ServeLoop::applySettings(const SettingsMessage& m) {
   if (m.accumulate) controls_.accumulate = *m.accumulate;
   if (m.environmentScale) controls_.environmentScale = *m.environmentScale;
   if (m.environmentRotation) controls_.environmentRotation = *m.environmentRotation;
-  if (m.environmentScale || m.environmentRotation)
-    session_.setEnvironment(controls_.environmentScale, controls_.environmentRotation);
+  environmentEdited_ = environmentEdited_ || m.environmentScale || m.environmentRotation;
   if (m.shading) controls_.materials.shading = *m.shading;
   for (const auto& [name, value] : m.overrides)
     for (const OverrideParameter& p : overrideParameters())
       if (name == p.name) controls_.materials.*(p.field) = value;
-  if (m.shading || !m.overrides.empty()) session_.setMaterialOverrides(controls_.materials);
+  materialsEdited_ = materialsEdited_ || m.shading || !m.overrides.empty();
   if (m.exposure) controls_.post.display.exposure = *m.exposure;
   if (m.toneMapper) controls_.post.display.toneMapper = *m.toneMapper;
   if (m.denoiser) controls_.post.denoiser = *m.denoiser;
@@ -258,6 +257,11 @@ void ServeLoop::run(const std::atomic<bool>& stop) {
     }
     for (uint64_t client : hub_.takeJoined()) greet(client);
     for (const IncomingMessage& m : hub_.takeMessages()) handle(m);
+    // Once for all the messages that came since the last frame: a slider dragged quickly (or a flood of
+    // edits) costs one update of the backend's materials or environment, not one for each message.
+    if (environmentEdited_) session_.setEnvironment(controls_.environmentScale, controls_.environmentRotation);
+    if (materialsEdited_) session_.setMaterialOverrides(controls_.materials);
+    environmentEdited_ = materialsEdited_ = false;
     for (const FrameDelivery& d : hub_.takeDeliveries()) quality_.recordDelivery(d.bytes, d.seconds, d.moving);
     if (!hub_.anyReady()) continue;
     renderFrame(std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count());
