@@ -20,6 +20,19 @@ pkg_check_modules(XXHASH REQUIRED IMPORTED_TARGET libxxhash)
 find_path(TINYOBJLOADER_INCLUDE_DIR tiny_obj_loader.h REQUIRED)
 find_path(TINYGLTF_INCLUDE_DIR tiny_gltf.h REQUIRED)
 
+# candela serve, the viewer in a web browser: Boost.Beast (headers only) for HTTP and WebSocket, libjpeg-turbo for
+# the frames. It is built when both are found; CANDELA_SERVE_ENABLED says whether.
+set(CANDELA_SERVE_ENABLED OFF)
+find_package(Boost 1.74 QUIET)
+pkg_check_modules(TURBOJPEG QUIET IMPORTED_TARGET libturbojpeg)
+find_package(Threads)
+if(Boost_FOUND AND TURBOJPEG_FOUND AND Threads_FOUND)
+  set(CANDELA_SERVE_ENABLED ON)
+  message(STATUS "serve: on (Boost ${Boost_VERSION}, libjpeg-turbo ${TURBOJPEG_VERSION})")
+else()
+  message(STATUS "serve: off (needs Boost.Beast and libjpeg-turbo: libboost-dev libturbojpeg0-dev)")
+endif()
+
 if(CANDELA_BUILD_TESTS)
   find_package(GTest REQUIRED CONFIG)
 endif()

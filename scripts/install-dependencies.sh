@@ -10,7 +10,12 @@ packages=(
   libbenchmark-dev
   # the viewer, and its tests on a virtual display with Mesa's software OpenGL
   libglfw3-dev libimgui-dev libgl-dev libgl1-mesa-dri libglx-mesa0 xvfb xdotool
+  # candela serve (the viewer in a web browser), and its browser tests: Node drives Chromium through playwright-core
+  # (tests/serve/install-browser-test-deps.sh fetches it with npm into tests/serve/node_modules)
+  libboost-dev libturbojpeg0-dev chromium nodejs
 )
+# npm comes with NodeSource's nodejs; Debian ships it as a package of its own.
+command -v npm >/dev/null || packages+=(npm)
 
 missing=()
 for p in "${packages[@]}"; do

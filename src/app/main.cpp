@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -13,6 +14,7 @@
 #include "app/backend_factory.h"
 #include "app/render_job.h"
 #include "app/scene_loading.h"
+#include "app/serve/serve.h"
 #include "app/viewer/viewer.h"
 #include "image/aov_io.h"
 #include "image/image_io.h"
@@ -285,6 +287,55 @@ int runView(ViewerOptions options, const std::string& toneMapper) {
 #endif
 }
 
+void addServeOptions(CLI::App& cmd, ServeOptions& options, std::string& toneMapper) {
+  cmd.add_option("scene", options.sceneSpec, "Scene file (.obj, .gltf, .glb, .json) or built-in scene")
+      ->capture_default_str();
+  cmd.add_option("--env", options.environmentPath, "Environment map (.hdr or .exr) that lights the scene");
+  addSceneInputOptions(cmd, options.sceneCache, options.outsidePaths);
+  cmd.add_option("--backend", options.backend, "auto, cpu or optix (in this build: " + availableBackends() + ")")
+      ->check(CLI::IsMember({"auto", "cpu", "optix"}))
+      ->capture_default_str();
+  cmd.add_option("--port", options.port, "TCP port to listen on (0: any free port)")->capture_default_str();
+  cmd.add_option("--bind", options.bind, "Address to listen on; any but loopback requires a token")
+      ->capture_default_str();
+  cmd.add_option("--token", options.token,
+                 "Secret every request must show (default: none on loopback, else a random one, printed)");
+  cmd.add_option("--width", options.width, "Image width until a browser reports its view's size")
+      ->check(CLI::Range(16u, 4096u))
+      ->capture_default_str();
+  cmd.add_option("--height", options.height, "Image height until a browser reports its view's size")
+      ->check(CLI::Range(16u, 4096u))
+      ->capture_default_str();
+  cmd.add_option("--max-depth", options.maxDepth, "Longest path in bounces after the camera ray")
+      ->check(CLI::Range(1u, 64u))
+      ->capture_default_str();
+  cmd.add_option("--seed", options.seed, "Seed of the random sequence")->capture_default_str();
+  addSamplerOption(cmd, options.sampler);
+  cmd.add_option("--spp-per-frame", options.samplesPerFrame, "Samples per pixel added each frame at rest")
+      ->check(CLI::Range(1u, 64u))
+      ->capture_default_str();
+  cmd.add_option("--exposure", options.post.display.exposure, "Exposure in stops")->capture_default_str();
+  cmd.add_option("--tonemap", toneMapper, "Tone mapper: aces, reinhard or clamp (linear)")
+      ->check(CLI::IsMember({"aces", "reinhard", "clamp"}))
+      ->capture_default_str();
+  cmd.add_option("--frames", options.frames, "Send this many frames, then exit (0: until interrupted)")
+      ->capture_default_str();
+}
+
+int runServeCommand(ServeOptions options, const std::string& toneMapper) {
+  options.post.display.toneMapper = parseToneMapper(toneMapper);
+  // It travels in addresses and cookies unescaped.
+  const auto plain = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_'; };
+  if (!std::all_of(options.token.begin(), options.token.end(), plain))
+    throw std::runtime_error("--token: use letters, digits, '-' and '_' only");
+#ifdef CANDELA_HAS_SERVE
+  return runServe(options);
+#else
+  throw std::runtime_error("this build has no web viewer: install libboost-dev and libturbojpeg0-dev "
+                           "(scripts/install-dependencies.sh) and configure again");
+#endif
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -293,6 +344,7 @@ int main(int argc, char** argv) {
                "  candela render -o box.exr --spp 256\n"
                "  candela bench --spp 16         print one JSON line of timings\n"
                "  candela view                   open the interactive viewer\n"
+               "  candela serve --port 8080      the interactive viewer in a web browser\n"
 
                "  candela bench --backend optix --width 1920 --height 1080 --spp 100 --warmup 20 --raw-trace"};
   app.require_subcommand(1);
@@ -346,6 +398,11 @@ int main(int argc, char** argv) {
   CLI::App* view = app.add_subcommand("view", "Open a window that refines the image while you move the camera");
   addViewOptions(*view, viewOptions, viewToneMapper);
 
+  ServeOptions serveOptions;
+  std::string serveToneMapper = "aces";
+  CLI::App* serve = app.add_subcommand("serve", "Serve the interactive viewer to web browsers (prints the address)");
+  addServeOptions(*serve, serveOptions, serveToneMapper);
+
   std::string inspectSpec;
   CLI::App* inspect = app.add_subcommand("load", "Load a scene and print its size and loading time as one JSON object");
   inspect->add_option("scene", inspectSpec, "Scene file or built-in scene")->required();
@@ -377,6 +434,7 @@ int main(int argc, char** argv) {
       return runRender(renderJob, output, display);
     }
     if (*view) return runView(viewOptions, viewToneMapper);
+    if (*serve) return runServeCommand(serveOptions, serveToneMapper);
     return runBench(benchJob);
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "candela: not enough memory for the %s command\n", app.get_subcommands().front()->get_name().c_str());

@@ -49,9 +49,8 @@ nlohmann::ordered_json modelsOfSceneFile(const std::string& path) {
 
 }  // namespace
 
-std::string writeViewFile(const std::string& path, const std::string& sceneSpec, const Scene& scene,
-                          const CameraDescription& camera, const RenderSettings& settings,
-                          const ViewerControls& controls) {
+ViewFile makeViewFile(const std::string& sceneSpec, const Scene& scene, const CameraDescription& camera,
+                      const RenderSettings& settings, const ViewerControls& controls) {
   nlohmann::ordered_json json;
   const std::string ext = lowerCaseExtension(sceneSpec);
   const bool isFile = std::filesystem::is_regular_file(sceneSpec);
@@ -77,8 +76,18 @@ std::string writeViewFile(const std::string& path, const std::string& sceneSpec,
   environment["visible"] = env.visibleToCamera;
   json["environment"] = environment;
   json["render"] = {{"width", settings.width}, {"height", settings.height}, {"max_depth", controls.maxDepth}};
-  writeJson(path, json);
-  return json.contains("models") ? "" : "a built-in scene has no file to name, so the view file lists no models";
+  return {json.dump(2) + "\n",
+          json.contains("models") ? "" : "a built-in scene has no file to name, so the view file lists no models"};
+}
+
+std::string writeViewFile(const std::string& path, const std::string& sceneSpec, const Scene& scene,
+                          const CameraDescription& camera, const RenderSettings& settings,
+                          const ViewerControls& controls) {
+  ViewFile file = makeViewFile(sceneSpec, scene, camera, settings, controls);
+  std::ofstream out(path);
+  out << file.text;
+  if (!out) throw std::runtime_error("cannot write '" + path + "': the file could not be created or written");
+  return file.note;
 }
 
 void writeStateFile(const std::string& path, const ViewerState& s) {

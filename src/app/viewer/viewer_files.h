@@ -23,6 +23,15 @@ std::string writeViewFile(const std::string& path, const std::string& sceneSpec,
                           const CameraDescription& camera, const RenderSettings& settings,
                           const ViewerControls& controls);
 
+// The same view file's text and note, for a viewer that hands the file to someone else (candela serve sends
+// it to the browser).
+struct ViewFile {
+  std::string text;
+  std::string note;  // empty, or why the file lists no models
+};
+ViewFile makeViewFile(const std::string& sceneSpec, const Scene& scene, const CameraDescription& camera,
+                      const RenderSettings& settings, const ViewerControls& controls);
+
 // A snapshot of what the viewer is doing, for scripts and tests; written to a temporary name and renamed, so a
 // reader never sees half a file.
 struct ViewerState {

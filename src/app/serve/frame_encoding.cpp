@@ -1,0 +1,51 @@
+#include "app/serve/frame_encoding.h"
+
+#include <stb/stb_image_write.h>
+#include <turbojpeg.h>
+
+#include <memory>
+#include <stdexcept>
+
+#include "image/filters/bilateral.h"
+#include "image/tonemap.h"
+
+namespace candela {
+
+DisplayImage displayImage(const Image& accumulated, const PostSettings& post) {
+  const Image filtered = post.bilateral ? bilateralFilter(accumulated, post.bilateralParams) : Image();
+  const Image& image = post.bilateral ? filtered : accumulated;
+  DisplayImage out{image.width, image.height, std::vector<uint8_t>(image.pixels.size() * 3)};
+  for (size_t i = 0; i < image.pixels.size(); ++i) {
+    const Vec3 c = toneMap(image.pixels[i], post.display.exposure, post.display.toneMapper);
+    out.rgb[3 * i + 0] = uint8_t(c.x * 255.0f + 0.5f);
+    out.rgb[3 * i + 1] = uint8_t(c.y * 255.0f + 0.5f);
+    out.rgb[3 * i + 2] = uint8_t(c.z * 255.0f + 0.5f);
+  }
+  return out;
+}
+
+std::string encodeJpeg(const DisplayImage& image, int quality) {
+  std::unique_ptr<void, int (*)(tjhandle)> compressor(tjInitCompress(), tjDestroy);
+  if (!compressor) throw std::runtime_error(std::string("libjpeg-turbo: ") + tjGetErrorStr());
+  unsigned char* jpeg = nullptr;
+  unsigned long size = 0;
+  // 4:2:0 chroma halves the bytes of a frame; the eye misses the colour detail in a moving picture.
+  const int status = tjCompress2(compressor.get(), image.rgb.data(), int(image.width), 0, int(image.height),
+                                 TJPF_RGB, &jpeg, &size, TJSAMP_420, quality, TJFLAG_FASTDCT);
+  std::unique_ptr<unsigned char, void (*)(unsigned char*)> owned(jpeg, tjFree);
+  if (status != 0) throw std::runtime_error(std::string("libjpeg-turbo: ") + tjGetErrorStr2(compressor.get()));
+  return std::string(reinterpret_cast<const char*>(jpeg), size);
+}
+
+std::string encodePng(const DisplayImage& image) {
+  std::string png;
+  auto append = [](void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data), size_t(size));
+  };
+  if (!stbi_write_png_to_func(append, &png, int(image.width), int(image.height), 3, image.rgb.data(),
+                              int(image.width) * 3))
+    throw std::runtime_error("the PNG could not be encoded");
+  return png;
+}
+
+}  // namespace candela

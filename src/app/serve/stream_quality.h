@@ -1,0 +1,33 @@
+#pragma once
+#include <cstddef>
+#include <cstdint>
+
+namespace candela {
+
+// How the frames sent while the camera moves adapt to the connection: each frame's delivery time (from sending
+// to the browser's acknowledgement that it drew it) is compared with the frame budget. Slow deliveries lower the
+// JPEG quality step by step, and once it is at its floor, halve the preview's resolution; quick ones raise them
+// back. Frames at rest always go at full quality and resolution: there the picture matters more than the rate.
+class StreamQuality {
+ public:
+  explicit StreamQuality(double frameBudgetSeconds = 1.0 / 30.0) : budget_(frameBudgetSeconds) {}
+
+  void recordDelivery(size_t bytes, double seconds, bool moving);
+  int jpegQuality(bool moving) const { return moving ? movingQuality_ : kRestQuality; }
+  uint32_t resolutionDivisor(bool moving) const { return moving ? movingDivisor_ : 1; }
+  double bytesPerSecond() const { return bytesPerSecond_; }  // smoothed; 0 until measured
+
+  static constexpr int kRestQuality = 92;
+  static constexpr int kMaxMovingQuality = 80;
+  static constexpr int kMinMovingQuality = 35;
+  static constexpr int kQualityStep = 10;
+  static constexpr uint32_t kMaxExtraDivisor = 4;
+
+ private:
+  double budget_;
+  int movingQuality_ = 70;
+  uint32_t movingDivisor_ = 1;
+  double bytesPerSecond_ = 0.0;
+};
+
+}  // namespace candela

@@ -1,0 +1,242 @@
+// candela serve's page: shows the frames the server streams over a WebSocket and sends it the camera input and
+// the panel's edits. Plain JavaScript, no build step; the server embeds this file.
+'use strict';
+
+const $ = (id) => document.getElementById(id);
+const canvas = $('image');
+const context = canvas.getContext('2d');
+const view = $('view');
+
+// What tests and scripts read (window.candela): frames drawn, the last frame's header, the role, messages.
+const state = { frames: 0, header: null, control: false, hello: null, message: null, closed: false };
+window.candela = state;
+
+let socket = null;
+const fps = { count: 0, since: performance.now(), value: 0 };
+
+function send(message) {
+  if (socket && socket.readyState === WebSocket.OPEN) socket.send(JSON.stringify(message));
+}
+
+function connect() {
+  const scheme = location.protocol === 'https:' ? 'wss' : 'ws';
+  socket = new WebSocket(`${scheme}://${location.host}/ws${location.search}`);
+  socket.binaryType = 'arraybuffer';
+  socket.onopen = () => { $('connection').textContent = ''; sendSize(); };
+  socket.onclose = () => {
+    state.closed = true;
+    $('connection').textContent = 'disconnected: reload the page to connect again';
+  };
+  socket.onmessage = (event) => {
+    if (typeof event.data === 'string') onText(JSON.parse(event.data));
+    else onBinary(event.data);
+  };
+}
+
+// A binary message: the JSON header's length (4 bytes, little-endian), the header, then an image.
+function onBinary(buffer) {
+  const length = new DataView(buffer).getUint32(0, true);
+  const header = JSON.parse(new TextDecoder().decode(new Uint8Array(buffer, 4, length)));
+  const payload = new Uint8Array(buffer, 4 + length);
+  if (header.kind === 'screenshot') { download(new Blob([payload], { type: 'image/png' }), header.name); return; }
+  if (header.kind !== 'frame') return;
+  // The server sends no other frame until this one is acknowledged, once drawn.
+  createImageBitmap(new Blob([payload], { type: 'image/jpeg' })).then((bitmap) => {
+    context.imageSmoothingEnabled = true;
+    context.drawImage(bitmap, 0, 0, canvas.width, canvas.height);
+    bitmap.close();
+    state.frames += 1;
+    state.header = header;
+    send({ type: 'frame_ack', frame: header.frame });
+    showStatus(header);
+  }, () => { send({ type: 'frame_ack', frame: header.frame }); });
+}
+
+function onText(message) {
+  if (message.type === 'hello') {
+    state.hello = message;
+    $('backend').textContent = message.backend;
+    $('device').textContent = message.device;
+    $('scene').textContent = message.scene;
+    const s = message.stats;
+    $('stats').textContent = `${s.triangles} triangles, ${s.vertices} vertices, ${s.meshes} meshes ` +
+      `(${s.instances} instances), ${s.materials} materials, ${s.textures} textures`;
+    buildDenoisers(message.denoisers);
+    $('atrous_passes').max = message.max_atrous_passes;
+    buildOverrides(message.override_parameters);
+    showControls(message.controls);
+  } else if (message.type === 'role') {
+    state.control = message.control;
+    $('role').textContent = message.control ? `in control (${message.clients} watching)`
+                                            : `watching (${message.clients} watching)`;
+    $('take-control').hidden = message.control;
+  } else if (message.type === 'message') {
+    showMessage(message.text, message.error);
+  } else if (message.type === 'view_file') {
+    download(new Blob([message.text], { type: 'application/json' }), message.name);
+    showMessage(message.note ? `saved ${message.name} (${message.note})` : `saved ${message.name}`, false);
+  }
+}
+
+function showMessage(text, isError) {
+  state.message = text;
+  $('message').textContent = text;
+  $('message').className = isError ? 'error' : 'ok';
+}
+
+function download(blob, name) {
+  const link = document.createElement('a');
+  link.href = URL.createObjectURL(blob);
+  link.download = name;
+  link.click();
+  setTimeout(() => URL.revokeObjectURL(link.href), 10000);
+}
+
+const vector = (v) => v.map((x) => x.toFixed(3)).join(' ');
+
+function showStatus(h) {
+  fps.count += 1;
+  const now = performance.now();
+  if (now - fps.since > 500) {
+    fps.value = (1000 * fps.count) / (now - fps.since);
+    fps.count = 0;
+    fps.since = now;
+  }
+  $('rate').textContent = `${fps.value.toFixed(1)} fps here, ${h.fps.toFixed(1)} sent, render ${h.render_ms.toFixed(1)} ms`;
+  $('samples').textContent = `${h.samples} per pixel`;
+  $('image-size').textContent = `${h.width} x ${h.height}${h.preview ? ' (moving: preview)' : ''}`;
+  $('stream').textContent = `JPEG q${h.quality}, ${(h.bytes_per_second / 1e6).toFixed(1)} MB/s`;
+  $('camera').textContent = `${vector(h.camera.position)} looking ${vector(h.camera.forward)}`;
+  showControls(h.controls);
+}
+
+// ---- the panel -------------------------------------------------------------------------------------------------
+
+const sliders = ['max_depth', 'samples_per_frame', 'env_intensity', 'env_rotation', 'exposure', 'atrous_passes'];
+const integerSliders = new Set(['max_depth', 'samples_per_frame', 'atrous_passes']);
+const checkboxes = ['accumulate', 'bilateral'];
+const selects = ['shading', 'tonemap', 'denoiser'];
+
+function showOutput(input) {
+  const output = input.parentElement.querySelector('output');
+  if (output) output.textContent = input.value;
+}
+
+// Shows the server's controls, except in the field being edited.
+function showControls(controls) {
+  if (!controls) return;
+  for (const id of [...sliders, ...selects]) {
+    const input = $(id);
+    if (document.activeElement === input || controls[id] === undefined) continue;
+    input.value = controls[id];
+    showOutput(input);
+  }
+  for (const id of checkboxes) if (document.activeElement !== $(id)) $(id).checked = controls[id];
+  for (const row of document.querySelectorAll('.override')) {
+    const [box, , slider] = row.querySelectorAll('input, span');
+    const value = controls.overrides[row.dataset.name];
+    if (document.activeElement === box || document.activeElement === slider) continue;
+    box.checked = value !== undefined;
+    if (value !== undefined) { slider.value = value; showOutput(slider); }
+  }
+}
+
+function buildDenoisers(names) {
+  const labels = { none: 'None', atrous: 'A-trous', optix: 'OptiX AI' };
+  $('denoiser').replaceChildren(...names.map((n) => new Option(labels[n] || n, n)));
+}
+
+function buildOverrides(parameters) {
+  const rows = parameters.map((p) => {
+    const row = document.createElement('label');
+    row.className = 'override';
+    row.dataset.name = p.name;
+    const box = Object.assign(document.createElement('input'), { type: 'checkbox' });
+    const name = Object.assign(document.createElement('span'), { textContent: p.name });
+    const slider = Object.assign(document.createElement('input'), {
+      type: 'range', min: p.min, max: p.max, step: (p.max - p.min) / 200, value: (p.min + p.max) / 2,
+    });
+    const output = document.createElement('output');
+    output.textContent = slider.value;
+    const apply = () => send({ type: 'settings', overrides: { [p.name]: box.checked ? Number(slider.value) : null } });
+    box.addEventListener('change', apply);
+    slider.addEventListener('input', () => { showOutput(slider); if (box.checked) apply(); });
+    row.append(box, name, slider, output);
+    return row;
+  });
+  $('overrides').replaceChildren(...rows);
+}
+
+for (const id of sliders) {
+  $(id).addEventListener('input', (e) => {
+    showOutput(e.target);
+    const value = Number(e.target.value);
+    send({ type: 'settings', [id]: integerSliders.has(id) ? Math.round(value) : value });
+  });
+}
+for (const id of checkboxes) $(id).addEventListener('change', (e) => send({ type: 'settings', [id]: e.target.checked }));
+for (const id of selects) $(id).addEventListener('change', (e) => send({ type: 'settings', [id]: e.target.value }));
+
+const action = (name) => () => send({ type: 'action', name });
+$('screenshot').addEventListener('click', action('screenshot'));
+$('save-view').addEventListener('click', action('save_view'));
+$('frame-scene').addEventListener('click', action('frame'));
+$('reset-camera').addEventListener('click', action('reset'));
+$('take-control').addEventListener('click', action('take_control'));
+
+// ---- camera input ----------------------------------------------------------------------------------------------
+
+// The canvas has the view's size in device pixels; the server renders for that size and takes pointer positions
+// in the same pixels.
+function sendSize() {
+  const ratio = window.devicePixelRatio || 1;
+  const clamp = (v) => Math.max(16, Math.min(4096, Math.round(v * ratio)));
+  canvas.width = clamp(view.clientWidth);
+  canvas.height = clamp(view.clientHeight);
+  send({ type: 'resize', width: canvas.width, height: canvas.height });
+}
+new ResizeObserver(sendSize).observe(view);
+
+const buttonNames = ['left', 'middle', 'right'];
+function pointer(action, event) {
+  const ratio = window.devicePixelRatio || 1;
+  send({ type: 'pointer', action, button: buttonNames[event.button] || 'left',
+         x: event.offsetX * ratio, y: event.offsetY * ratio });
+}
+canvas.addEventListener('pointerdown', (e) => {
+  if (e.button > 2) return;
+  view.focus();
+  canvas.setPointerCapture(e.pointerId);
+  pointer('down', e);
+  e.preventDefault();
+});
+// Moves matter only while a button is held (a drag); hovering sends nothing.
+canvas.addEventListener('pointermove', (e) => { if (e.buttons) pointer('move', e); });
+canvas.addEventListener('pointerup', (e) => { if (e.button <= 2) pointer('up', e); });
+canvas.addEventListener('contextmenu', (e) => e.preventDefault());
+canvas.addEventListener('wheel', (e) => {
+  e.preventDefault();
+  const pixels = e.deltaMode === 1 ? e.deltaY * 33 : e.deltaMode === 2 ? e.deltaY * 400 : e.deltaY;
+  send({ type: 'wheel', steps: Math.max(-100, Math.min(100, -pixels / 100)) });
+}, { passive: false });
+
+const flyKeys = { KeyW: 'forward', KeyS: 'back', KeyA: 'left', KeyD: 'right', KeyQ: 'down', KeyE: 'up' };
+const held = {};
+const typing = (e) => ['INPUT', 'SELECT', 'TEXTAREA'].includes(e.target.tagName) && e.target.type !== 'range' &&
+  e.target.type !== 'checkbox';
+function sendKeys() { send({ type: 'keys', ...held }); }
+document.addEventListener('keydown', (e) => {
+  if (typing(e) || e.repeat || e.ctrlKey || e.metaKey || e.altKey) return;
+  if (flyKeys[e.code]) { held[flyKeys[e.code]] = true; sendKeys(); }
+  if (e.code === 'KeyF') send({ type: 'action', name: 'frame' });
+  if (e.code === 'KeyR') send({ type: 'action', name: 'reset' });
+});
+document.addEventListener('keyup', (e) => {
+  if (flyKeys[e.code] && held[flyKeys[e.code]]) { held[flyKeys[e.code]] = false; sendKeys(); }
+});
+window.addEventListener('blur', () => {
+  for (const k of Object.keys(held)) held[k] = false;
+  sendKeys();
+});
+
+connect();

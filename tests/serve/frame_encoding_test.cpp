@@ -1,0 +1,49 @@
+#include <gtest/gtest.h>
+
+#include <stb/stb_image.h>
+
+#include <cstdlib>
+#include <utility>
+
+#include "app/serve/frame_encoding.h"
+
+namespace candela {
+namespace {
+
+Image gradient() {
+  Image image(64, 32);
+  for (uint32_t y = 0; y < image.height; ++y)
+    for (uint32_t x = 0; x < image.width; ++x) image.at(x, y) = Vec3(float(x) / 64.0f, float(y) / 32.0f, 0.25f);
+  return image;
+}
+
+TEST(FrameEncoding, TheDisplayImageIsToneMappedLikeThePng) {
+  PostSettings post;
+  post.display.toneMapper = ToneMapper::Clamp;
+  const DisplayImage d = displayImage(gradient(), post);
+  ASSERT_EQ(d.rgb.size(), 64u * 32u * 3u);
+  EXPECT_EQ(d.rgb[2], uint8_t(linearToSrgb(0.25f) * 255.0f + 0.5f));
+  post.display.exposure = -3.0f;
+  EXPECT_LT(displayImage(gradient(), post).rgb[2], d.rgb[2]);
+}
+
+TEST(FrameEncoding, JpegAndPngDecodeToTheImage) {
+  const DisplayImage d = displayImage(gradient(), PostSettings());
+  // The PNG is exact; the JPEG (4:2:0 chroma) close on average.
+  for (const auto& [encoded, meanError] : {std::pair{encodeJpeg(d, 95), 2.0}, std::pair{encodePng(d), 0.0}}) {
+    int w = 0, h = 0, n = 0;
+    unsigned char* pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(encoded.data()),
+                                                  int(encoded.size()), &w, &h, &n, 3);
+    ASSERT_NE(pixels, nullptr);
+    EXPECT_EQ(w, 64);
+    EXPECT_EQ(h, 32);
+    double error = 0.0;
+    for (size_t i = 0; i < d.rgb.size(); ++i) error += std::abs(int(pixels[i]) - int(d.rgb[i]));
+    EXPECT_LE(error / double(d.rgb.size()), meanError);
+    stbi_image_free(pixels);
+  }
+  EXPECT_LT(encodeJpeg(d, 30).size(), encodeJpeg(d, 95).size());
+}
+
+}  // namespace
+}  // namespace candela

@@ -1,0 +1,30 @@
+#include <gtest/gtest.h>
+
+#include "app/serve/stream_quality.h"
+
+namespace candela {
+namespace {
+
+TEST(StreamQuality, SlowDeliveriesLowerQualityThenResolutionAndQuickOnesRaiseThem) {
+  StreamQuality q(0.05);
+  const int start = q.jpegQuality(true);
+  for (int i = 0; i < 20; ++i) q.recordDelivery(100000, 0.2, true);
+  EXPECT_EQ(q.jpegQuality(true), StreamQuality::kMinMovingQuality);
+  EXPECT_EQ(q.resolutionDivisor(true), StreamQuality::kMaxExtraDivisor);
+  EXPECT_EQ(q.jpegQuality(false), StreamQuality::kRestQuality);  // at rest: full quality, whatever the link
+  EXPECT_EQ(q.resolutionDivisor(false), 1u);
+  for (int i = 0; i < 40; ++i) q.recordDelivery(10000, 0.005, true);
+  EXPECT_EQ(q.resolutionDivisor(true), 1u);
+  EXPECT_GE(q.jpegQuality(true), start);
+  EXPECT_GT(q.bytesPerSecond(), 0.0);
+}
+
+TEST(StreamQuality, DeliveriesAtRestLeaveTheMovingSettingsAlone) {
+  StreamQuality q(0.05);
+  const int start = q.jpegQuality(true);
+  for (int i = 0; i < 10; ++i) q.recordDelivery(1000000, 1.0, false);
+  EXPECT_EQ(q.jpegQuality(true), start);
+}
+
+}  // namespace
+}  // namespace candela
