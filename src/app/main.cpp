@@ -32,6 +32,17 @@ void addSceneCacheOptions(CLI::App& cmd, SceneCacheSettings& cache) {
                  "~/.cache/candela)");
 }
 
+void addTextureLimitOptions(CLI::App& cmd, TextureLimits& limits) {
+  cmd.add_option("--max-texture-size", limits.maxSize,
+                 "Largest width or height of a texture in pixels; a larger one is decoded smaller, with a warning")
+      ->check(CLI::Range(1u, 1u << 20))
+      ->capture_default_str();
+  cmd.add_option_function<uint64_t>("--max-texture-memory", [&limits](uint64_t mib) { limits.maxBytes = mib << 20; },
+                                    "MiB of decoded texture a scene may hold; over it, every texture is decoded "
+                                    "smaller, with a warning (default: " + std::to_string(limits.maxBytes >> 20) + ")")
+      ->check(CLI::Range(uint64_t(1), uint64_t(1) << 30));
+}
+
 void addRenderOptions(CLI::App& cmd, RenderJob& job) {
   std::string scenes;
   for (const std::string& n : builtinSceneNames()) scenes += (scenes.empty() ? "" : ", ") + n;
@@ -39,6 +50,7 @@ void addRenderOptions(CLI::App& cmd, RenderJob& job) {
       ->capture_default_str();
   cmd.add_option("--env", job.environmentPath, "Environment map (.hdr or .exr) that lights the scene");
   addSceneCacheOptions(cmd, job.sceneCache);
+  addTextureLimitOptions(cmd, job.textureLimits);
   cmd.add_option("--spp", job.samplesPerPixel, "Samples per pixel")
       ->check(CLI::Range(1u, 1u << 24))
       ->capture_default_str();
@@ -173,9 +185,9 @@ int runBench(const RenderJob& job) {
   return 0;
 }
 
-int runLoad(const std::string& spec, const SceneCacheSettings& cache) {
+int runLoad(const std::string& spec, const SceneCacheSettings& cache, const TextureLimits& textureLimits) {
   auto start = std::chrono::steady_clock::now();
-  Scene scene = loadScene(spec, {{}, cache});
+  Scene scene = loadScene(spec, {{}, cache, textureLimits});
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   size_t vertices = 0;
   for (const Mesh& m : scene.meshes) vertices += m.positions.size();
@@ -323,6 +335,8 @@ int main(int argc, char** argv) {
   inspect->add_option("scene", inspectSpec, "Scene file or built-in scene")->required();
   SceneCacheSettings inspectCache;
   addSceneCacheOptions(*inspect, inspectCache);
+  TextureLimits inspectTextureLimits;
+  addTextureLimitOptions(*inspect, inspectTextureLimits);
 
   try {
     app.parse(argc, argv);
@@ -343,7 +357,7 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (*inspect) return runLoad(inspectSpec, inspectCache);
+    if (*inspect) return runLoad(inspectSpec, inspectCache, inspectTextureLimits);
     if (*render) {
       display.toneMapper = parseToneMapper(toneMapper);
       return runRender(renderJob, output, display);

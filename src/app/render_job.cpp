@@ -67,7 +67,7 @@ RenderOutcome runRenderJob(const RenderJob& job, bool showProgress) {
                              "'GPU backend')");
 #endif
   const auto loadStart = std::chrono::steady_clock::now();
-  Scene scene = loadScene(job.sceneSpec, {job.environmentPath, job.sceneCache});
+  Scene scene = loadScene(job.sceneSpec, {job.environmentPath, job.sceneCache, job.textureLimits});
   const double loadSeconds = secondsSince(loadStart);
   applyOverrides(scene.materials, job.materialOverrides);
   RenderJob hinted = job;

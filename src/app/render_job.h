@@ -5,6 +5,7 @@
 #include "backends/backend.h"
 #include "image/aov_io.h"
 #include "scene/cache/scene_cache.h"
+#include "scene/loaders/texture_limits.h"
 #include "scene/material_overrides.h"
 #include "scene/scene.h"
 
@@ -14,6 +15,7 @@ struct RenderJob {
   std::string sceneSpec = "cornell-box";
   std::string environmentPath;  // replaces the scene's environment when set
   SceneCacheSettings sceneCache;
+  TextureLimits textureLimits;
   // Which settings the command line gave; the others may come from the scene file's render hints.
   struct {
     bool width = false, height = false, samplesPerPixel = false, maxDepth = false;

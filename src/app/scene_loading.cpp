@@ -61,7 +61,9 @@ void frameSceneBounds(Scene& scene) {
 Scene loadScene(const std::string& spec, const SceneLoadOptions& options) {
   Scene scene;
   LoadWarnings warnings;
+  setTextureLimits(options.textureLimits);
   if (!makeBuiltinScene(spec, scene)) scene = loadFile(spec, options.cache, warnings);
+  fitSceneTextures(scene, options.textureLimits, warnings);
   if (!options.environmentPath.empty()) {
     Environment env;
     env.map = loadEnvironmentImage(options.environmentPath);

@@ -2,6 +2,7 @@
 #include <string>
 
 #include "scene/cache/scene_cache.h"
+#include "scene/loaders/texture_limits.h"
 #include "scene/scene.h"
 
 namespace candela {
@@ -9,6 +10,7 @@ namespace candela {
 struct SceneLoadOptions {
   std::string environmentPath;  // an .hdr or .exr map that replaces the scene's environment; empty: keep it
   SceneCacheSettings cache = {};  // for the models (.obj, .gltf, .glb), also those a scene file names
+  TextureLimits textureLimits = {};  // textures over them are decoded smaller, with a warning
 };
 
 // A built-in scene name or a scene file (.obj, .gltf, .glb, .json), chosen by extension. Warnings go to stderr,
