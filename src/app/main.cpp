@@ -1,8 +1,6 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -14,6 +12,7 @@
 #include "app/render_job.h"
 #include "app/scene_loading.h"
 #include "app/viewer/viewer.h"
+#include "core/atomic_file.h"
 #include "image/aov_io.h"
 #include "image/image_io.h"
 #include "scene/builtin_scenes.h"
@@ -109,12 +108,7 @@ std::string formatRate(double perSecond) {
 void checkOutputPath(const std::string& path) {
   if (!isSupportedImageExtension(path))
     throw std::runtime_error("cannot write '" + path + "': use a .png, .exr or .pfm file name");
-  std::filesystem::path dir = std::filesystem::path(path).parent_path();
-  if (dir.empty()) dir = ".";
-  if (!std::filesystem::is_directory(dir))
-    throw std::runtime_error("cannot write '" + path + "': directory '" + dir.string() + "' does not exist");
-  if (access(dir.c_str(), W_OK) != 0)
-    throw std::runtime_error("cannot write '" + path + "': directory '" + dir.string() + "' is not writable");
+  checkAtomicTarget(path);
 }
 
 int runRender(const RenderJob& job, const std::string& output, const DisplaySettings& display) {
