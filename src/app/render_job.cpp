@@ -6,6 +6,7 @@
 
 #include "app/backend_factory.h"
 #include "app/progress.h"
+#include "app/render_memory.h"
 #include "app/scene_loading.h"
 #if CANDELA_HAS_OPTIX
 #include "backends/optix/optix_backend.h"
@@ -83,6 +84,7 @@ RenderOutcome runRenderJob(const RenderJob& job, bool showProgress) {
 
 RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool showProgress) {
   using Clock = std::chrono::steady_clock;
+  checkRenderMemory(job);
   RenderOutcome outcome;
   const auto backendStart = Clock::now();
   std::string why;
