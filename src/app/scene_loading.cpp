@@ -62,7 +62,13 @@ Scene loadScene(const std::string& spec, const SceneLoadOptions& options) {
   Scene scene;
   LoadWarnings warnings;
   setTextureLimits(options.textureLimits);
-  if (!makeBuiltinScene(spec, scene)) scene = loadFile(spec, options.cache, warnings);
+  // Cached models hold their textures as decoded under the default limits; other limits load afresh and leave
+  // the cache alone, so that neither reads textures decoded for the other.
+  SceneCacheSettings cache = options.cache;
+  const TextureLimits defaults;
+  if (options.textureLimits.maxSize != defaults.maxSize || options.textureLimits.maxBytes != defaults.maxBytes)
+    cache.enabled = false;
+  if (!makeBuiltinScene(spec, scene)) scene = loadFile(spec, cache, warnings);
   fitSceneTextures(scene, options.textureLimits, warnings);
   if (!options.environmentPath.empty()) {
     Environment env;

@@ -13,6 +13,7 @@
 #include <functional>
 #include <iterator>
 
+#include "app/scene_loading.h"
 #include "scene/loaders/area_downscaler.h"
 #include "scene/loaders/image_decoding.h"
 #include "scene/loaders/load_diagnostics.h"
@@ -296,6 +297,19 @@ TEST(TextureLimits, LimitsFromTheLoadOptionsApply) {
   EXPECT_LE(total, 200000u);
   ASSERT_EQ(fewer.messages.size(), 2u);
   EXPECT_NE(fewer.messages[0].find("--max-texture-memory"), std::string::npos) << fewer.messages[0];
+}
+
+TEST(TextureLimits, SceneCacheHoldsOnlyTexturesDecodedUnderTheDefaults) {
+  TempFolder dir;
+  std::vector<uint8_t> pixels(size_t(300) * 200 * 3, 90);
+  ASSERT_TRUE(stbi_write_png(dir.file("a.png").c_str(), 300, 200, 3, pixels.data(), 300 * 3));
+  dir.write("m.mtl", "newmtl a\nmap_Kd a.png\n");
+  const std::string obj = dir.write("m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n");
+  const SceneCacheSettings cache{true, dir.file("cache")};
+  EXPECT_EQ(loadScene(obj, {{}, cache, {100, 1u << 20}}).textures.at(0).width, 100u);
+  EXPECT_EQ(loadScene(obj, {{}, cache, {}}).textures.at(0).width, 300u);
+  EXPECT_EQ(loadScene(obj, {{}, cache, {}}).textures.at(0).width, 300u);  // now from the cache
+  EXPECT_EQ(loadScene(obj, {{}, cache, {100, 1u << 20}}).textures.at(0).width, 100u);
 }
 
 TEST(TextureLimits, SceneOfSeveralModelsIsFittedAsAWhole) {
