@@ -103,7 +103,8 @@ std::string checkAtomicTarget(const std::string& target) {
   if (folder.empty()) folder = ".";
   if (!fs::is_directory(folder, ec))
     cannotWrite(target, "directory '" + folder.string() + "'" +
-                            (ec && ec != std::errc::no_such_file_or_directory ? ": " + ec.message() : " does not exist"));
+                            (ec && ec != std::errc::no_such_file_or_directory ? ": " + ec.message()
+                                                                              : " does not exist"));
   if (::access(folder.c_str(), W_OK) != 0) cannotWrite(target, "directory '" + folder.string() + "' is not writable");
   return resolved.string();
 }

@@ -57,8 +57,8 @@ class AtomicFile {
 };
 
 // Where writing `target` would go (symbolic links followed); throws the same error as AtomicFile when the target
-// exists and is not a regular file or not writable, or its folder does not exist or is not writable. For checks before a long
-// render.
+// exists and is not a regular file or not writable, or its folder does not exist or is not writable. For checks
+// before a long render.
 std::string checkAtomicTarget(const std::string& target);
 
 // Writes `size` bytes to `path` through an AtomicFile.

@@ -277,7 +277,8 @@ TEST(TextureLimits, LimitsFromTheLoadOptionsApply) {
   ASSERT_TRUE(stbi_write_png(dir.file("a.png").c_str(), 300, 200, 3, pixels.data(), 300 * 3));
   ASSERT_TRUE(stbi_write_png(dir.file("b.png").c_str(), 300, 200, 3, pixels.data(), 300 * 3));
   dir.write("m.mtl", "newmtl a\nmap_Kd a.png\nnewmtl b\nmap_Kd b.png\n");
-  const std::string obj = dir.write("m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\nusemtl b\nf 1 2 3\n");
+  const std::string obj =
+      dir.write("m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\nusemtl b\nf 1 2 3\n");
   setTextureLimits({100, 1u << 20});
   LoadWarnings warnings;
   Scene s = loadObj(obj, warnings);
@@ -329,7 +330,8 @@ TEST(TextureLimits, SceneOfSeveralModelsIsFittedAsAWhole) {
   LoadWarnings warnings;
   fitSceneTextures(scene, {20, 1u << 20}, warnings);
   ASSERT_EQ(warnings.messages.size(), 2u);
-  EXPECT_EQ(warnings.messages[1].rfind("b.hdr: texture of 40x20 pixels downscaled to 20x10", 0), 0u) << warnings.messages[1];
+  EXPECT_EQ(warnings.messages[1].rfind("b.hdr: texture of 40x20 pixels downscaled to 20x10", 0), 0u)
+      << warnings.messages[1];
   EXPECT_EQ(scene.textures[0].bytes, std::vector<uint8_t>(200, 60));
   EXPECT_EQ(scene.textures[1].floats, std::vector<float>(200, 2.5f));
   EXPECT_EQ(scene.textures[1].width, 20u);

@@ -135,7 +135,9 @@ TEST_F(AtomicFileTest, SymbolicLinkIsFollowedAndKept) {
 
 TEST_F(AtomicFileTest, ReadOnlyFolderIsAnErrorAndTheFileSurvives) {
   put("out.png", "old");
-  fs::permissions(path("out.png"), fs::perms::all & ~(fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec));
+  const fs::perms readWrite = fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read |
+                              fs::perms::group_write | fs::perms::others_read | fs::perms::others_write;
+  fs::permissions(path("out.png"), readWrite);
   fs::permissions(dir_, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::others_read |
                             fs::perms::others_exec);
   // Permissions do not bind the superuser: then the write is tried as nobody, in a child process.

@@ -39,7 +39,8 @@ class AreaDownscaler {
     if (target != targetRow_) emitRow();
     targetRow_ = target;
     for (uint32_t x = 0; x < sourceWidth_; ++x)
-      for (uint32_t c = 0; c < channels_; ++c) sums_[size_t(columnOf_[x]) * channels_ + c] += double(row[size_t(x) * channels_ + c]);
+      for (uint32_t c = 0; c < channels_; ++c)
+        sums_[size_t(columnOf_[x]) * channels_ + c] += double(row[size_t(x) * channels_ + c]);
     ++rowsInSums_;
     ++sourceRow_;
   }

@@ -56,7 +56,8 @@ void onProgress(j_common_ptr cinfo) {
 }
 
 [[noreturn]] void failJpeg(const std::string& name, const JpegReader& reader) {
-  failLoad(name, std::string("not a readable JPEG image (") + (reader.error[0] ? reader.error : "libjpeg failed") + ")");
+  failLoad(name,
+           std::string("not a readable JPEG image (") + (reader.error[0] ? reader.error : "libjpeg failed") + ")");
 }
 
 bool readHeader(JpegReader& r, const uint8_t* data, size_t size) {
@@ -81,11 +82,13 @@ uint32_t channelsOf(const JpegReader& r) { return r.cinfo.jpeg_color_space == JC
 bool startDecompress(JpegReader& r, uint32_t targetWidth, uint32_t targetHeight) {
   if (setjmp(r.jump)) return false;
   const J_COLOR_SPACE in = r.cinfo.jpeg_color_space;
-  r.cinfo.out_color_space = in == JCS_GRAYSCALE ? JCS_GRAYSCALE : (in == JCS_CMYK || in == JCS_YCCK) ? JCS_CMYK : JCS_EXT_RGBA;
+  r.cinfo.out_color_space = in == JCS_GRAYSCALE                  ? JCS_GRAYSCALE
+                            : (in == JCS_CMYK || in == JCS_YCCK) ? JCS_CMYK
+                                                                 : JCS_EXT_RGBA;
   // The DCT scales by 1/2, 1/4 or 1/8 nearly for free; the area average does the rest.
   r.cinfo.scale_num = 1;
   for (unsigned denom = 8; denom > 1; denom /= 2)
-    if (uint64_t(r.cinfo.image_width) / denom >= targetWidth && uint64_t(r.cinfo.image_height) / denom >= targetHeight) {
+    if (r.cinfo.image_width / denom >= targetWidth && r.cinfo.image_height / denom >= targetHeight) {
       r.cinfo.scale_denom = denom;
       break;
     }
@@ -117,7 +120,9 @@ void cmykToRgba(uint8_t* row, uint32_t width, bool inverted) {
 
 }  // namespace
 
-bool isJpeg(const uint8_t* data, size_t size) { return size >= 3 && data[0] == 0xff && data[1] == 0xd8 && data[2] == 0xff; }
+bool isJpeg(const uint8_t* data, size_t size) {
+  return size >= 3 && data[0] == 0xff && data[1] == 0xd8 && data[2] == 0xff;
+}
 
 ImageInfo jpegInfo(const std::string& name, const uint8_t* data, size_t size) {
   JpegReader reader;

@@ -3,8 +3,8 @@
 #include <png.h>
 
 #include <csetjmp>
+#include <cstdio>
 #include <cstring>
-#include <optional>
 #include <vector>
 
 #include "scene/loaders/area_downscaler.h"

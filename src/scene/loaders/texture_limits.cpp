@@ -55,7 +55,8 @@ std::vector<TextureExtent> fitTextureLimits(const std::vector<TextureExtent>& im
   return fitted;
 }
 
-std::string downscaleWarning(const std::string& name, TextureExtent from, TextureExtent to, const TextureLimits& limits) {
+std::string downscaleWarning(const std::string& name, TextureExtent from, TextureExtent to,
+                             const TextureLimits& limits) {
   auto size = [](TextureExtent e) { return std::to_string(e.width) + "x" + std::to_string(e.height); };
   const bool bySize = std::max(from.width, from.height) > limits.maxSize &&
                       std::max(to.width, to.height) == limits.maxSize;

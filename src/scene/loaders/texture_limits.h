@@ -32,7 +32,8 @@ struct TextureExtent {
 std::vector<TextureExtent> fitTextureLimits(const std::vector<TextureExtent>& images, const TextureLimits& limits);
 
 // "<name>: texture of WxH pixels downscaled to wxh (...)": the warning for an image decoded smaller.
-std::string downscaleWarning(const std::string& name, TextureExtent from, TextureExtent to, const TextureLimits& limits);
+std::string downscaleWarning(const std::string& name, TextureExtent from, TextureExtent to,
+                             const TextureLimits& limits);
 
 // Downscales the scene's decoded textures to keep within `limits`, with a warning for each: the loaders keep each
 // model within them, this keeps a scene of several models (or of models from the scene cache) within them too.
