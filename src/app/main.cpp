@@ -207,6 +207,7 @@ void addViewOptions(CLI::App& cmd, ViewerOptions& options, std::string& toneMapp
       ->capture_default_str();
   cmd.add_option("--env", options.environmentPath, "Environment map (.hdr or .exr) that lights the scene");
   addSceneCacheOptions(cmd, options.sceneCache);
+  addTextureLimitOptions(cmd, options.textureLimits);
   cmd.add_option("--backend", options.backend, "auto, cpu or optix (in this build: " + availableBackends() + ")")
       ->check(CLI::IsMember({"auto", "cpu", "optix"}))
       ->capture_default_str();

@@ -96,7 +96,8 @@ Viewer::Viewer(const ViewerOptions& options)
   controls_.samplesPerFrame = options.samplesPerFrame;
   controls_.post = options.post;
   std::fprintf(stderr, "window: %s\n", window_.glRenderer().c_str());
-  showScene(loadScene(options.sceneSpec, {options.environmentPath, options.sceneCache}), options.sceneSpec);
+  showScene(loadScene(options.sceneSpec, {options.environmentPath, options.sceneCache, options.textureLimits}),
+            options.sceneSpec);
   status_.backend = session_.backend().name();
   status_.device = session_.backend().deviceName();
   status_.imageTransfer = transfer_.description();
@@ -237,7 +238,7 @@ void Viewer::handle(const PanelRequests& requests) {
   }
   if (requests.openScene) {
     try {
-      showScene(loadScene(controls_.openSpec, {{}, options_.sceneCache}), controls_.openSpec);
+      showScene(loadScene(controls_.openSpec, {{}, options_.sceneCache, options_.textureLimits}), controls_.openSpec);
       report("opened " + controls_.openSpec, false);
     } catch (const std::exception& e) {
       report("could not open '" + controls_.openSpec + "': " + e.what(), true);

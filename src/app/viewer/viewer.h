@@ -4,6 +4,7 @@
 
 #include "app/viewer/post_settings.h"
 #include "scene/cache/scene_cache.h"
+#include "scene/loaders/texture_limits.h"
 
 namespace candela {
 
@@ -11,6 +12,7 @@ struct ViewerOptions {
   std::string sceneSpec = "cornell-box";
   std::string environmentPath;  // an .hdr or .exr map that lights the first scene instead of its own
   SceneCacheSettings sceneCache;
+  TextureLimits textureLimits;
   std::string backend = "auto";
   bool interop = true;  // false: the image reaches the screen through the host copy even where interop works
   uint32_t width = 960;  // of the image; the panel sits beside it
