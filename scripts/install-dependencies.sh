@@ -6,6 +6,8 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libembree-dev libtbb-dev libglm-dev libstb-dev libtinyobjloader-dev libtinygltf-dev
   nlohmann-json3-dev libcli11-dev libopenexr-dev libgtest-dev libxxhash-dev zlib1g-dev
+  # texture decoding; libjpeg-dev is libjpeg62-turbo-dev on Debian, libjpeg-turbo8-dev on Ubuntu
+  libpng-dev libjpeg-dev
   # CPU benchmarks of the filters (bench/)
   libbenchmark-dev
   # the viewer, and its tests on a virtual display with Mesa's software OpenGL

@@ -1,8 +1,6 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cctype>
 #include <chrono>
@@ -16,6 +14,7 @@
 #include "app/scene_loading.h"
 #include "app/serve/serve.h"
 #include "app/viewer/viewer.h"
+#include "core/atomic_file.h"
 #include "image/aov_io.h"
 #include "image/image_io.h"
 #include "scene/builtin_scenes.h"
@@ -53,6 +52,17 @@ void addSamplerOption(CLI::App& cmd, SamplerKind& sampler) {
       ->default_str("sobol");
 }
 
+void addTextureLimitOptions(CLI::App& cmd, TextureLimits& limits) {
+  cmd.add_option("--max-texture-size", limits.maxSize,
+                 "Largest width or height of a texture in pixels; a larger one is decoded smaller, with a warning")
+      ->check(CLI::Range(1u, 1u << 20))
+      ->capture_default_str();
+  cmd.add_option_function<uint64_t>("--max-texture-memory", [&limits](uint64_t mib) { limits.maxBytes = mib << 20; },
+                                    "MiB of decoded texture a scene may hold; over it, every texture is decoded "
+                                    "smaller, with a warning (default: " + std::to_string(limits.maxBytes >> 20) + ")")
+      ->check(CLI::Range(uint64_t(1), uint64_t(1) << 30));
+}
+
 void addRenderOptions(CLI::App& cmd, RenderJob& job) {
   std::string scenes;
   for (const std::string& n : builtinSceneNames()) scenes += (scenes.empty() ? "" : ", ") + n;
@@ -62,6 +72,7 @@ void addRenderOptions(CLI::App& cmd, RenderJob& job) {
   cmd.add_option("--env", job.environmentPath, "Environment map (.hdr or .exr) that lights the scene");
   cmd.add_option("--camera", job.camera, "The scene's camera to take, by name or index (default: the first)");
   addSceneInputOptions(cmd, job.sceneCache, job.outsidePaths);
+  addTextureLimitOptions(cmd, job.textureLimits);
   cmd.add_option("--spp", job.samplesPerPixel, "Samples per pixel")
       ->check(CLI::Range(1u, 1u << 24))
       ->capture_default_str();
@@ -121,12 +132,7 @@ std::string formatRate(double perSecond) {
 void checkOutputPath(const std::string& path) {
   if (!isSupportedImageExtension(path))
     throw std::runtime_error("cannot write '" + path + "': use a .png, .exr or .pfm file name");
-  std::filesystem::path dir = std::filesystem::path(path).parent_path();
-  if (dir.empty()) dir = ".";
-  if (!std::filesystem::is_directory(dir))
-    throw std::runtime_error("cannot write '" + path + "': directory '" + dir.string() + "' does not exist");
-  if (access(dir.c_str(), W_OK) != 0)
-    throw std::runtime_error("cannot write '" + path + "': directory '" + dir.string() + "' is not writable");
+  checkAtomicTarget(path);
 }
 
 int runRender(const RenderJob& job, const std::string& output, const DisplaySettings& display) {
@@ -230,6 +236,7 @@ void addViewOptions(CLI::App& cmd, ViewerOptions& options, std::string& toneMapp
   cmd.add_option("--env", options.environmentPath, "Environment map (.hdr or .exr) that lights the scene");
   cmd.add_option("--camera", options.camera, "The scene's camera to take, by name or index (default: the first)");
   addSceneInputOptions(cmd, options.sceneCache, options.outsidePaths);
+  addTextureLimitOptions(cmd, options.textureLimits);
   cmd.add_option("--backend", options.backend, "auto, cpu or optix (in this build: " + availableBackends() + ")")
       ->check(CLI::IsMember({"auto", "cpu", "optix"}))
       ->capture_default_str();
@@ -408,6 +415,7 @@ int main(int argc, char** argv) {
   inspect->add_option("scene", inspectSpec, "Scene file or built-in scene")->required();
   SceneLoadOptions inspectOptions;
   addSceneInputOptions(*inspect, inspectOptions.cache, inspectOptions.outsidePaths);
+  addTextureLimitOptions(*inspect, inspectOptions.textureLimits);
 
   try {
     app.parse(argc, argv);

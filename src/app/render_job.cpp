@@ -6,6 +6,7 @@
 
 #include "app/backend_factory.h"
 #include "app/progress.h"
+#include "app/render_memory.h"
 #include "app/scene_loading.h"
 #if CANDELA_HAS_OPTIX
 #include "backends/optix/optix_backend.h"
@@ -67,7 +68,8 @@ RenderOutcome runRenderJob(const RenderJob& job, bool showProgress) {
                              "'GPU backend')");
 #endif
   const auto loadStart = std::chrono::steady_clock::now();
-  Scene scene = loadScene(job.sceneSpec, {job.environmentPath, job.sceneCache, job.outsidePaths, job.camera});
+  Scene scene = loadScene(job.sceneSpec,
+                          {job.environmentPath, job.sceneCache, job.outsidePaths, job.camera, job.textureLimits});
   const double loadSeconds = secondsSince(loadStart);
   applyOverrides(scene.materials, job.materialOverrides);
   RenderJob hinted = job;
@@ -83,6 +85,7 @@ RenderOutcome runRenderJob(const RenderJob& job, bool showProgress) {
 
 RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool showProgress) {
   using Clock = std::chrono::steady_clock;
+  checkRenderMemory(job);
   RenderOutcome outcome;
   outcome.settings = job.settings;
   outcome.samplesPerPixel = job.samplesPerPixel;

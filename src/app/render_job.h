@@ -6,6 +6,7 @@
 #include "image/aov_io.h"
 #include "scene/cache/scene_cache.h"
 #include "scene/loaders/path_confinement.h"
+#include "scene/loaders/texture_limits.h"
 #include "scene/material_overrides.h"
 #include "scene/scene.h"
 
@@ -17,6 +18,7 @@ struct RenderJob {
   std::string camera;           // the name or index of the scene's camera to take; empty: the first
   SceneCacheSettings sceneCache;
   OutsidePaths outsidePaths = OutsidePaths::Refused;  // whether models may refer to files outside their folders
+  TextureLimits textureLimits;
   // Which settings the command line gave; the others may come from the scene file's render hints.
   struct {
     bool width = false, height = false, samplesPerPixel = false, maxDepth = false;

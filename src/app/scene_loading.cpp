@@ -30,10 +30,14 @@ Scene loadModelFile(const std::string& path, OutsidePaths outside, LoadWarnings&
   return loadGltf(path, warnings, outside, shared);
 }
 
-// The scene cache holds only what loads under the default path rule.
+// The scene cache holds only what loads under the default path rule and texture limits: other loads neither
+// read it nor write it, so that neither gets what was loaded for the other.
 SceneCacheSettings cacheFor(const SceneLoadOptions& options) {
   SceneCacheSettings cache = options.cache;
-  cache.enabled &= options.outsidePaths == OutsidePaths::Refused;
+  const TextureLimits defaults;
+  cache.enabled &= options.outsidePaths == OutsidePaths::Refused &&
+                   options.textureLimits.maxSize == defaults.maxSize &&
+                   options.textureLimits.maxBytes == defaults.maxBytes;
   return cache;
 }
 
@@ -136,8 +140,10 @@ void frameSceneBounds(Scene& scene) {
 Scene loadScene(const std::string& spec, const SceneLoadOptions& options) {
   Scene scene;
   LoadWarnings warnings;
+  setTextureLimits(options.textureLimits);
   if (!makeBuiltinScene(spec, scene))
     scene = withMemoryReported(spec, [&] { return loadFile(spec, options, warnings); });
+  fitSceneTextures(scene, options.textureLimits, warnings);
   if (!options.environmentPath.empty()) {
     Environment env;
     const std::string& map = options.environmentPath;

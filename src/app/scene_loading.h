@@ -3,6 +3,7 @@
 
 #include "scene/cache/scene_cache.h"
 #include "scene/loaders/path_confinement.h"
+#include "scene/loaders/texture_limits.h"
 #include "scene/scene.h"
 
 namespace candela {
@@ -14,6 +15,7 @@ struct SceneLoadOptions {
   // then loaded afresh: the scene cache holds only what loads under the default rule.
   OutsidePaths outsidePaths = OutsidePaths::Refused;
   std::string camera = {};  // the name or index (in Scene::cameras) of the camera to take; empty: the first
+  TextureLimits textureLimits = {};  // textures over them are decoded smaller, with a warning
 };
 
 // A built-in scene name or a scene file (.obj, .gltf, .glb, .pbrt, .json), chosen by extension, repaired

@@ -1,10 +1,9 @@
 #include "image/aov_io.h"
 #include "core/file_extension.h"
 
-#include <stb/stb_image_write.h>
-
 #include <algorithm>
 #include <filesystem>
+#include <memory>
 #include <stdexcept>
 
 namespace candela {
@@ -22,14 +21,13 @@ Image depthAsImage(const AovImages& aovs, float scale) {
   return image;
 }
 
-void writeRawPng(const std::string& path, const Image& image, Vec3 (*encode)(Vec3)) {
+void writeRawPng(AtomicFile& file, const Image& image, Vec3 (*encode)(Vec3)) {
   std::vector<uint8_t> bytes(image.pixels.size() * 3);
   for (size_t i = 0; i < image.pixels.size(); ++i) {
     const Vec3 c = encode(image.pixels[i]);
     for (int k = 0; k < 3; ++k) bytes[3 * i + k] = uint8_t(clampf(c[k], 0.0f, 1.0f) * 255.0f + 0.5f);
   }
-  if (!stbi_write_png(path.c_str(), int(image.width), int(image.height), 3, bytes.data(), int(image.width) * 3))
-    throw std::runtime_error("cannot write '" + path + "': the file could not be created or written");
+  writePngTo(file, int(image.width), int(image.height), 3, bytes.data(), int(image.width) * 3);
 }
 
 void writeExrWithAovs(const std::string& path, const Image& image, const AovImages& aovs,
@@ -93,7 +91,11 @@ std::vector<std::string> writeImageWithAovs(const std::string& path, const Image
     writeExrWithAovs(path, image, aovs, which);
     return written;
   }
-  writeImage(path, image, display);
+  // Every file is written to its temporary first and renamed only once all are complete, the image last: a
+  // failure leaves every previous file as it was.
+  std::vector<std::unique_ptr<AtomicFile>> files;
+  files.push_back(std::make_unique<AtomicFile>(path));
+  writeImageTo(*files.back(), image, display);
   float largestDepth = 0.0f;
   for (float d : aovs.depth) largestDepth = std::max(largestDepth, d);
   for (Aov aov : which) {
@@ -101,16 +103,20 @@ std::vector<std::string> writeImageWithAovs(const std::string& path, const Image
     const Image depth = aov == Aov::Depth ? depthAsImage(aovs, ext == ".png" && largestDepth > 0.0f ? 1.0f / largestDepth : 1.0f)
                                           : Image();
     const Image& source = aov == Aov::Albedo ? aovs.albedo : aov == Aov::Normal ? aovs.normal : depth;
+    files.push_back(std::make_unique<AtomicFile>(aovPath));
+    AtomicFile& file = *files.back();
     if (ext != ".png")
-      writeImage(aovPath, source, display);
+      writeImageTo(file, source, display);
     else if (aov == Aov::Albedo)
-      writeImage(aovPath, source, {0.0f, ToneMapper::Clamp});
+      writeImageTo(file, source, {0.0f, ToneMapper::Clamp});
     else if (aov == Aov::Normal)
-      writeRawPng(aovPath, source, [](Vec3 n) { return n * 0.5f + Vec3{0.5f, 0.5f, 0.5f}; });
+      writeRawPng(file, source, [](Vec3 n) { return n * 0.5f + Vec3{0.5f, 0.5f, 0.5f}; });
     else
-      writeRawPng(aovPath, source, [](Vec3 d) { return d; });
+      writeRawPng(file, source, [](Vec3 d) { return d; });
     written.push_back(aovPath);
   }
+  for (std::unique_ptr<AtomicFile>& file : files) file->finish();
+  for (size_t i = files.size(); i-- > 0;) files[i]->commit();
   return written;
 }
 

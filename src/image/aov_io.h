@@ -18,7 +18,9 @@ std::vector<Aov> parseAovList(const std::string& list);
 // - .pfm: beside it, <stem>.<aov>.pfm in linear floats (depth repeated in all three channels);
 // - .png: beside it, <stem>.<aov>.png for viewing: albedo sRGB-encoded, normal as (n + 1) / 2, depth as
 //   depth / (largest depth), both stored as is.
-// Returns the paths written, the image's first. Throws std::runtime_error naming the file that failed.
+// All files are complete before any is renamed over its predecessor (the image last), so a failure leaves every
+// previous file as it was. Returns the paths written, the image's first. Throws std::runtime_error naming the
+// file that failed.
 std::vector<std::string> writeImageWithAovs(const std::string& path, const Image& image,
                                             const DisplaySettings& display, const AovImages& aovs,
                                             const std::vector<Aov>& which);

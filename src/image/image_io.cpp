@@ -6,12 +6,14 @@
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfIO.h>
 #include <OpenEXR/ImfOutputFile.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
+#include <cstring>
+#include <exception>
 #include <stdexcept>
 
 namespace candela {
@@ -19,10 +21,27 @@ namespace candela {
 namespace {
 
 [[noreturn]] void cannotWrite(const std::string& path, const std::string& why) {
-  throw std::runtime_error("cannot write '" + path + "': " + why);
+  throw WriteError("cannot write '" + path + "': " + why);
 }
 
-void writePng(const std::string& path, const Image& image, const DisplaySettings& display) {
+// OpenEXR's output stream into an AtomicFile. OpenEXR seeks back to write the table of line offsets last.
+class AtomicFileStream : public Imf::OStream {
+ public:
+  explicit AtomicFileStream(AtomicFile& file) : Imf::OStream(file.target().c_str()), file_(file) {}
+  void write(const char c[], int n) override { file_.write(c, size_t(n)); }
+  // OpenEXR's output file asks for the position as it goes, outside its own error handling: after a failure,
+  // which the file keeps and reports, these do nothing.
+  uint64_t tellp() override { return file_.stream() ? uint64_t(ftello(file_.stream())) : 0; }
+  void seekp(uint64_t position) override {
+    if (file_.stream() && fseeko(file_.stream(), off_t(position), SEEK_SET) != 0)
+      throw std::runtime_error(std::strerror(errno));
+  }
+
+ private:
+  AtomicFile& file_;
+};
+
+void writeToneMappedPng(AtomicFile& file, const Image& image, const DisplaySettings& display) {
   std::vector<uint8_t> bytes(size_t(image.width) * image.height * 3);
   for (size_t i = 0; i < image.pixels.size(); ++i) {
     Vec3 c = toneMap(image.pixels[i], display.exposure, display.toneMapper);
@@ -30,43 +49,90 @@ void writePng(const std::string& path, const Image& image, const DisplaySettings
     bytes[3 * i + 1] = uint8_t(c.y * 255.0f + 0.5f);
     bytes[3 * i + 2] = uint8_t(c.z * 255.0f + 0.5f);
   }
-  if (!stbi_write_png(path.c_str(), int(image.width), int(image.height), 3, bytes.data(), int(image.width) * 3))
-    cannotWrite(path, "the file could not be created or written");
+  writePngTo(file, int(image.width), int(image.height), 3, bytes.data(), int(image.width) * 3);
 }
 
-void writeExr(const std::string& path, const Image& image) {
+void writeExrImage(AtomicFile& file, const Image& image) {
   const char* base = reinterpret_cast<const char*>(image.pixels.data());
-  writeExrChannels(path, image.width, image.height,
-                   {{"R", base, sizeof(Vec3)}, {"G", base + sizeof(float), sizeof(Vec3)},
-                    {"B", base + 2 * sizeof(float), sizeof(Vec3)}});
+  writeExrChannelsTo(file, image.width, image.height,
+                     {{"R", base, sizeof(Vec3)}, {"G", base + sizeof(float), sizeof(Vec3)},
+                      {"B", base + 2 * sizeof(float), sizeof(Vec3)}});
 }
 
 // Portable float map: little-endian (negative scale), rows bottom to top.
-void writePfm(const std::string& path, const Image& image) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out) cannotWrite(path, "the file could not be created");
-  out << "PF\n" << image.width << " " << image.height << "\n-1.0\n";
-  for (uint32_t y = image.height; y-- > 0;)
-    out.write(reinterpret_cast<const char*>(&image.at(0, y)), std::streamsize(sizeof(Vec3) * image.width));
-  if (!out) cannotWrite(path, "writing failed");
+void writePfm(AtomicFile& file, const Image& image) {
+  const std::string header = "PF\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n-1.0\n";
+  file.write(header.data(), header.size());
+  for (uint32_t y = image.height; y-- > 0;) file.write(&image.at(0, y), sizeof(Vec3) * image.width);
 }
 
 }  // namespace
 
-void writeExrChannels(const std::string& path, uint32_t width, uint32_t height,
-                      const std::vector<ExrChannel>& channels) {
+void writePngTo(AtomicFile& file, int width, int height, int channels, const uint8_t* pixels, int strideBytes) {
+  // stb calls back with the encoded bytes; an exception must not cross its C frames, so the first one is kept.
+  struct Sink {
+    AtomicFile& file;
+    std::exception_ptr error;
+  } sink{file, nullptr};
+  auto write = [](void* context, void* data, int size) {
+    auto* s = static_cast<Sink*>(context);
+    if (s->error) return;
+    try {
+      s->file.write(data, size_t(size));
+    } catch (...) {
+      s->error = std::current_exception();
+    }
+  };
+  const int ok = stbi_write_png_to_func(write, &sink, width, height, channels, pixels, strideBytes);
+  if (sink.error) std::rethrow_exception(sink.error);
+  if (!ok) cannotWrite(file.target(), "PNG encoding failed");
+}
+
+void writePngFile(const std::string& path, int width, int height, int channels, const uint8_t* pixels,
+                  int strideBytes) {
+  AtomicFile file(path);
+  writePngTo(file, width, height, channels, pixels, strideBytes);
+  file.commit();
+}
+
+void writeExrChannelsTo(AtomicFile& file, uint32_t width, uint32_t height, const std::vector<ExrChannel>& channels) {
   try {
     Imf::Header header{int(width), int(height)};
     for (const ExrChannel& c : channels) header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
-    Imf::OutputFile file(path.c_str(), header);
+    AtomicFileStream stream(file);
+    // The output file writes its table of line offsets when it goes, so it goes before the file is finished.
+    Imf::OutputFile exr(stream, header);
     Imf::FrameBuffer fb;
     for (const ExrChannel& c : channels)
       fb.insert(c.name, Imf::Slice(Imf::FLOAT, const_cast<char*>(c.base), c.xStride, c.xStride * width));
-    file.setFrameBuffer(fb);
-    file.writePixels(int(height));
+    exr.setFrameBuffer(fb);
+    exr.writePixels(int(height));
+  } catch (const WriteError&) {
+    throw;
   } catch (const std::exception& e) {
-    cannotWrite(path, e.what());
+    cannotWrite(file.target(), e.what());
   }
+  // OpenEXR ignores failures while writing the line offsets as the file closes; the stream remembers them.
+  file.finish();
+}
+
+void writeExrChannels(const std::string& path, uint32_t width, uint32_t height,
+                      const std::vector<ExrChannel>& channels) {
+  AtomicFile file(path);
+  writeExrChannelsTo(file, width, height, channels);
+  file.commit();
+}
+
+void writeImageTo(AtomicFile& file, const Image& image, const DisplaySettings& display) {
+  const std::string ext = lowerCaseExtension(file.target());
+  if (ext == ".png")
+    writeToneMappedPng(file, image, display);
+  else if (ext == ".exr")
+    writeExrImage(file, image);
+  else if (ext == ".pfm")
+    writePfm(file, image);
+  else
+    cannotWrite(file.target(), "unknown image format '" + ext + "' (use .png, .exr or .pfm)");
 }
 
 const char* toneMapperName(ToneMapper mapper) {
@@ -90,15 +156,11 @@ bool isSupportedImageExtension(const std::string& path) {
 }
 
 void writeImage(const std::string& path, const Image& image, const DisplaySettings& display) {
-  std::string ext = lowerCaseExtension(path);
-  if (ext == ".png")
-    writePng(path, image, display);
-  else if (ext == ".exr")
-    writeExr(path, image);
-  else if (ext == ".pfm")
-    writePfm(path, image);
-  else
-    cannotWrite(path, "unknown image format '" + ext + "' (use .png, .exr or .pfm)");
+  if (!isSupportedImageExtension(path))
+    cannotWrite(path, "unknown image format '" + lowerCaseExtension(path) + "' (use .png, .exr or .pfm)");
+  AtomicFile file(path);
+  writeImageTo(file, image, display);
+  file.commit();
 }
 
 }  // namespace candela

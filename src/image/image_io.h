@@ -2,6 +2,7 @@
 #include <string>
 #include <vector>
 
+#include "core/atomic_file.h"
 #include "image/image.h"
 #include "image/tonemap.h"
 
@@ -17,8 +18,17 @@ const char* toneMapperName(ToneMapper mapper);
 ToneMapper parseToneMapper(const std::string& name);
 
 // Writes by extension: .png (tone mapped, sRGB, 8 bit), .exr (linear float RGB), .pfm (linear float).
-// Throws std::runtime_error with a sentence naming the file when it cannot.
+// Every writer here replaces its file atomically (core/atomic_file.h): after a failure the previous file is
+// intact. Throws WriteError with a sentence naming the file when it cannot.
 void writeImage(const std::string& path, const Image& image, const DisplaySettings& display);
+// The same into an open AtomicFile, by the extension of its target, for callers that commit several files
+// together; the caller commits.
+void writeImageTo(AtomicFile& file, const Image& image, const DisplaySettings& display);
+
+// An 8-bit PNG of 1 to 4 channels; rows `strideBytes` apart (negative: bottom row first in memory).
+void writePngFile(const std::string& path, int width, int height, int channels, const uint8_t* pixels,
+                  int strideBytes);
+void writePngTo(AtomicFile& file, int width, int height, int channels, const uint8_t* pixels, int strideBytes);
 
 // One float channel of an EXR file: `base` points at the top-left pixel's value, rows are packed.
 struct ExrChannel {
@@ -28,6 +38,8 @@ struct ExrChannel {
 };
 void writeExrChannels(const std::string& path, uint32_t width, uint32_t height,
                       const std::vector<ExrChannel>& channels);
+// Into an open AtomicFile, finished (on disk and closed) but not committed.
+void writeExrChannelsTo(AtomicFile& file, uint32_t width, uint32_t height, const std::vector<ExrChannel>& channels);
 
 // True when writeImage knows the extension of `path`.
 bool isSupportedImageExtension(const std::string& path);

@@ -96,8 +96,8 @@ Viewer::Viewer(const ViewerOptions& options)
   controls_.samplesPerFrame = options.samplesPerFrame;
   controls_.post = options.post;
   std::fprintf(stderr, "window: %s\n", window_.glRenderer().c_str());
-  showScene(loadScene(options.sceneSpec,
-                      {options.environmentPath, options.sceneCache, options.outsidePaths, options.camera}),
+  showScene(loadScene(options.sceneSpec, {options.environmentPath, options.sceneCache, options.outsidePaths,
+                                          options.camera, options.textureLimits}),
             options.sceneSpec);
   status_.backend = session_.backend().name();
   status_.device = session_.backend().deviceName();
@@ -239,7 +239,8 @@ void Viewer::handle(const PanelRequests& requests) {
   }
   if (requests.openScene) {
     try {
-      showScene(loadScene(controls_.openSpec, {{}, options_.sceneCache, options_.outsidePaths}), controls_.openSpec);
+      showScene(loadScene(controls_.openSpec, {{}, options_.sceneCache, options_.outsidePaths, {}, options_.textureLimits}),
+                controls_.openSpec);
       report("opened " + controls_.openSpec, false);
     } catch (const std::exception& e) {
       report("could not open '" + controls_.openSpec + "': " + e.what(), true);

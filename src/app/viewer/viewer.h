@@ -6,6 +6,7 @@
 #include "core/path_sampler.h"
 #include "scene/cache/scene_cache.h"
 #include "scene/loaders/path_confinement.h"
+#include "scene/loaders/texture_limits.h"
 
 namespace candela {
 
@@ -15,6 +16,7 @@ struct ViewerOptions {
   SceneCacheSettings sceneCache;
   OutsidePaths outsidePaths = OutsidePaths::Refused;  // whether models may refer to files outside their folders
   std::string camera;  // the name or index of the first scene's camera to take; empty: the first
+  TextureLimits textureLimits;
   std::string backend = "auto";
   bool interop = true;  // false: the image reaches the screen through the host copy even where interop works
   uint32_t width = 960;  // of the image; the panel sits beside it

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "core/atomic_file.h"
 #include "image/filters/bilateral.h"
 #include "image/image_io.h"
 #include "core/file_extension.h"
@@ -18,9 +19,8 @@ namespace {
 nlohmann::ordered_json vec(Vec3 v) { return nlohmann::ordered_json::array({v.x, v.y, v.z}); }
 
 void writeJson(const std::string& path, const nlohmann::ordered_json& json) {
-  std::ofstream out(path);
-  out << json.dump(2) << "\n";
-  if (!out) throw std::runtime_error("cannot write '" + path + "': the file could not be created or written");
+  const std::string text = json.dump(2) + "\n";
+  writeFileAtomically(path, text.data(), text.size());
 }
 
 }  // namespace
@@ -112,11 +112,7 @@ void writeStateFile(const std::string& path, const ViewerState& s) {
       {"open_scene_text", s.openSceneText},
       {"open_scene_field_active", s.openSceneFieldActive},
   };
-  const std::string temporary = path + ".partial";
-  writeJson(temporary, json);
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) throw std::runtime_error("cannot write '" + path + "': " + error.message());
+  writeJson(path, json);
 }
 
 }  // namespace candela

@@ -1,11 +1,10 @@
 #include "app/viewer/window_capture.h"
 
-#include <stb/stb_image_write.h>
-
 #include <stdexcept>
 #include <vector>
 
 #include "app/viewer/gl.h"
+#include "image/image_io.h"
 
 namespace candela {
 
@@ -16,10 +15,9 @@ void captureWindow(const std::string& path, int framebufferWidth, int framebuffe
   glReadBuffer(GL_BACK);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, framebufferWidth, framebufferHeight, GL_RGB, GL_UNSIGNED_BYTE, pixels.data());
-  // OpenGL's rows run bottom to top; stb writes them top to bottom when given a negative stride from the end.
+  // OpenGL's rows run bottom to top; they are written top to bottom with a negative stride from the end.
   const unsigned char* lastRow = pixels.data() + rowBytes * size_t(framebufferHeight - 1);
-  if (!stbi_write_png(path.c_str(), framebufferWidth, framebufferHeight, 3, lastRow, -int(rowBytes)))
-    throw std::runtime_error("cannot write '" + path + "': the file could not be created or written");
+  writePngFile(path, framebufferWidth, framebufferHeight, 3, lastRow, -int(rowBytes));
 }
 
 }  // namespace candela

@@ -15,6 +15,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "core/atomic_file.h"
 #include "scene/cache/cache_key.h"
 #include "scene/cache/scene_serialization.h"
 
@@ -60,26 +61,19 @@ std::string sceneCacheFile(const std::string& directory, const std::string& mode
 
 void writeSceneCache(const std::string& cacheFile, const std::string& modelPath, const Scene& scene,
                      const std::vector<std::string>& warnings) {
-  static std::atomic<unsigned> counter{0};
   std::error_code ec;
   fs::create_directories(fs::path(cacheFile).parent_path(), ec);
-  const std::string temporary =
-      cacheFile + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter.fetch_add(1));
-  File file(std::fopen(temporary.c_str(), "wb"), &std::fclose);
-  if (!file) throw std::runtime_error("cannot write " + cacheFile + ": " + std::strerror(errno));
-  BinaryWriter out(file.get());
-  out.bytes(kMagic, sizeof kMagic);
-  writeCacheKey(out, currentCacheKey(modelPath, scene.inputFiles));
-  out.value(uint64_t(warnings.size()));
-  for (const std::string& w : warnings) out.string(w);
-  writeScene(out, scene);
-  out.finish();
-  const bool written = out.ok();
-  const bool closed = std::fclose(file.release()) == 0;
-  if (written && closed && std::rename(temporary.c_str(), cacheFile.c_str()) == 0) return;
-  const std::string why = std::strerror(errno);
-  std::remove(temporary.c_str());
-  throw std::runtime_error("cannot write " + cacheFile + ": " + why);
+  AtomicFile file(cacheFile);
+  {
+    BinaryWriter out(file.stream());
+    out.bytes(kMagic, sizeof kMagic);
+    writeCacheKey(out, currentCacheKey(modelPath, scene.inputFiles));
+    out.value(uint64_t(warnings.size()));
+    for (const std::string& w : warnings) out.string(w);
+    writeScene(out, scene);
+    out.finish();
+  }
+  file.commit();
 }
 
 SceneCacheRead readSceneCache(const std::string& cacheFile, const std::string& modelPath, CachedScene& out) {

@@ -2,44 +2,26 @@
 
 #include <stb/stb_image.h>
 
-#include <OpenEXR/ImfArray.h>
-#include <OpenEXR/ImfRgbaFile.h>
-
 #include <algorithm>
 #include <cmath>
 #include <climits>
-#include <filesystem>
+#include <memory>
 
-#include "scene/loaders/file_bytes.h"
-#include "scene/loaders/load_diagnostics.h"
 #include "core/file_extension.h"
+#include "scene/loaders/area_downscaler.h"
+#include "scene/loaders/exr_decoding.h"
+#include "scene/loaders/file_bytes.h"
+#include "scene/loaders/jpeg_decoding.h"
+#include "scene/loaders/load_diagnostics.h"
+#include "scene/loaders/png_decoding.h"
 
 namespace candela {
 
 namespace {
 
-void checkSize(const std::string& name, int width, int height, size_t bytesPerPixel) {
-  if (width <= 0 || height <= 0) failLoad(name, "image has no pixels");
-  if (double(width) * double(height) * double(bytesPerPixel) > double(kMaxDecodedImageBytes))
-    failLoad(name, "image of " + std::to_string(width) + "x" + std::to_string(height) +
-                       " pixels is larger than the loader accepts");
-}
-
 struct StbFree {
   void operator()(void* p) const { stbi_image_free(p); }
 };
-
-// Radiance HDR and the float images of OpenEXR may hold NaN, infinite or negative values that would poison
-// every estimate that sees them; they become 0.
-size_t zeroInvalid(std::vector<float>& floats) {
-  size_t replaced = 0;
-  for (float& f : floats)
-    if (!std::isfinite(f) || f < 0.0f) {
-      f = 0.0f;
-      ++replaced;
-    }
-  return replaced;
-}
 
 // stb_image reads a truncated Radiance file as if the missing scanlines were black. Walking the scanline
 // encoding (Greg Ward's run-length scheme, or flat RGBE) says whether the data is all there.
@@ -78,85 +60,110 @@ bool radianceDataComplete(const uint8_t* data, size_t size, int width, int heigh
   return true;
 }
 
-}  // namespace
-
-Texture decodeImage(const std::string& name, const uint8_t* data, size_t size, bool srgb) {
-  if (size == 0) failLoad(name, "image file is empty");
+// TGA, BMP and Radiance HDR, which have no better decoder among the system's libraries.
+ImageInfo stbInfo(const std::string& name, const uint8_t* data, size_t size) {
   if (size > size_t(INT_MAX)) failLoad(name, "image file is too large");
-  int len = int(size), width = 0, height = 0, components = 0;
-  if (!stbi_info_from_memory(data, len, &width, &height, &components))
+  int width = 0, height = 0, components = 0;
+  if (!stbi_info_from_memory(data, int(size), &width, &height, &components))
     failLoad(name, std::string("not a readable image (") + stbi_failure_reason() + ")");
-  bool hdr = stbi_is_hdr_from_memory(data, len) != 0;
-  if (double(width) * double(height) > kMaxPixelsPerByte * double(size))
-    failLoad(name, "image header claims " + std::to_string(width) + "x" + std::to_string(height) +
-                       " pixels, more than the file can hold");
-  int channels = (components == 1 && !hdr) ? 1 : 4;
-  checkSize(name, width, height, size_t(channels) * (hdr ? sizeof(float) : 1));
+  if (width <= 0 || height <= 0) failLoad(name, "image has no pixels");
+  const bool hdr = stbi_is_hdr_from_memory(data, int(size)) != 0;
+  return {uint32_t(width), uint32_t(height), (components == 1 && !hdr) ? 1u : 4u, hdr};
+}
 
+template <typename Sample>
+std::vector<Sample> downscaled(const Sample* pixels, const ImageInfo& info, uint32_t targetWidth,
+                               uint32_t targetHeight) {
+  AreaDownscaler<Sample> target(info.width, info.height, targetWidth, targetHeight, info.channels);
+  for (uint32_t y = 0; y < info.height; ++y) target.addRow(pixels + size_t(y) * info.width * info.channels);
+  return target.finish();
+}
+
+Texture decodeWithStb(const std::string& name, const uint8_t* data, size_t size, const ImageInfo& info,
+                      uint32_t targetWidth, uint32_t targetHeight) {
+  checkDecodedSize(name, info.width, info.height, info.channels * (info.hdr ? sizeof(float) : 1));
+  const int len = int(size), channels = int(info.channels);
+  int width = 0, height = 0, components = 0;
   Texture t;
-  t.name = name;
-  t.channels = uint32_t(channels);
-  if (hdr) {
-    if (!radianceDataComplete(data, size, width, height)) failLoad(name, "Radiance image is truncated");
+  if (info.hdr) {
+    if (!radianceDataComplete(data, size, int(info.width), int(info.height)))
+      failLoad(name, "Radiance image is truncated");
     std::unique_ptr<float, StbFree> pixels(stbi_loadf_from_memory(data, len, &width, &height, &components, channels));
     if (!pixels) failLoad(name, std::string("cannot decode image (") + stbi_failure_reason() + ")");
-    t.floats.assign(pixels.get(), pixels.get() + size_t(width) * height * channels);
-    zeroInvalid(t.floats);
-    t.srgb = false;
+    if (uint32_t(width) != info.width || uint32_t(height) != info.height) failLoad(name, "image size changed");
+    t.floats = downscaled(pixels.get(), info, targetWidth, targetHeight);
+    zeroInvalidFloats(t.floats);
   } else {
     std::unique_ptr<uint8_t, StbFree> pixels(stbi_load_from_memory(data, len, &width, &height, &components, channels));
     if (!pixels) failLoad(name, std::string("cannot decode image (") + stbi_failure_reason() + ")");
-    t.bytes.assign(pixels.get(), pixels.get() + size_t(width) * height * channels);
-    t.srgb = srgb;
+    if (uint32_t(width) != info.width || uint32_t(height) != info.height) failLoad(name, "image size changed");
+    t.bytes = downscaled(pixels.get(), info, targetWidth, targetHeight);
   }
-  t.width = uint32_t(width);
-  t.height = uint32_t(height);
+  t.name = name;
+  t.width = targetWidth;
+  t.height = targetHeight;
+  t.channels = info.channels;
   return t;
 }
 
-namespace {
-
-Texture loadExr(const std::string& path) {
-  Texture t;
-  t.name = path;
-  t.channels = 3;
-  try {
-    Imf::RgbaInputFile file(path.c_str());
-    Imath::Box2i window = file.dataWindow();
-    int width = window.max.x - window.min.x + 1, height = window.max.y - window.min.y + 1;
-    checkSize(path, width, height, sizeof(Imf::Rgba) + 3 * sizeof(float));
-    Imf::Array2D<Imf::Rgba> pixels(height, width);
-    file.setFrameBuffer(&pixels[0][0] - window.min.x - window.min.y * width, 1, size_t(width));
-    file.readPixels(window.min.y, window.max.y);
-    t.width = uint32_t(width);
-    t.height = uint32_t(height);
-    t.floats.resize(size_t(width) * height * 3);
-    for (int y = 0; y < height; ++y)
-      for (int x = 0; x < width; ++x) {
-        const Imf::Rgba& p = pixels[y][x];
-        float* out = &t.floats[(size_t(y) * width + x) * 3];
-        out[0] = p.r;
-        out[1] = p.g;
-        out[2] = p.b;
-      }
-  } catch (const LoadError&) {
-    throw;
-  } catch (const std::exception& e) {
-    failLoad(path, std::string("cannot read OpenEXR image (") + e.what() + ")");
-  }
-  zeroInvalid(t.floats);
+Texture decodeAt(const std::string& name, const uint8_t* data, size_t size, bool srgb, const ImageInfo& info,
+                 uint32_t targetWidth, uint32_t targetHeight) {
+  targetWidth = std::clamp(targetWidth, 1u, info.width);
+  targetHeight = std::clamp(targetHeight, 1u, info.height);
+  Texture t = isPng(data, size)    ? decodePng(name, data, size, targetWidth, targetHeight)
+              : isJpeg(data, size) ? decodeJpeg(name, data, size, targetWidth, targetHeight)
+                                   : decodeWithStb(name, data, size, info, targetWidth, targetHeight);
+  t.srgb = info.hdr ? false : srgb;
   return t;
 }
 
 }  // namespace
 
+void checkImageHeader(const std::string& name, uint64_t width, uint64_t height, size_t fileSize) {
+  if (width == 0 || height == 0) failLoad(name, "image has no pixels");
+  if (double(width) * double(height) > kMaxPixelsPerByte * double(fileSize))
+    failLoad(name, "image header claims " + std::to_string(width) + "x" + std::to_string(height) +
+                       " pixels, more than the file can hold");
+}
+
+void checkDecodedSize(const std::string& name, uint64_t width, uint64_t height, uint64_t bytesPerPixel) {
+  if (double(width) * double(height) * double(bytesPerPixel) > double(kMaxDecodedImageBytes))
+    failLoad(name, "image of " + std::to_string(width) + "x" + std::to_string(height) +
+                       " pixels is larger than the loader accepts");
+}
+
+size_t zeroInvalidFloats(std::vector<float>& floats) {
+  size_t replaced = 0;
+  for (float& f : floats)
+    if (!std::isfinite(f) || f < 0.0f) {
+      f = 0.0f;
+      ++replaced;
+    }
+  return replaced;
+}
+
+ImageInfo inspectImage(const std::string& name, const uint8_t* data, size_t size) {
+  if (size == 0) failLoad(name, "image file is empty");
+  const ImageInfo info = isPng(data, size)    ? pngInfo(name, data, size)
+                         : isJpeg(data, size) ? jpegInfo(name, data, size)
+                                              : stbInfo(name, data, size);
+  checkImageHeader(name, info.width, info.height, size);
+  return info;
+}
+
+Texture decodeImage(const std::string& name, const uint8_t* data, size_t size, bool srgb) {
+  const ImageInfo info = inspectImage(name, data, size);
+  return decodeAt(name, data, size, srgb, info, info.width, info.height);
+}
+
+Texture decodeImage(const std::string& name, const uint8_t* data, size_t size, bool srgb, uint32_t targetWidth,
+                    uint32_t targetHeight) {
+  return decodeAt(name, data, size, srgb, inspectImage(name, data, size), targetWidth, targetHeight);
+}
+
 Texture loadEnvironmentImage(const std::string& path) {
-  std::string ext = lowerCaseExtension(path);
-  if (ext == ".exr") {
-    const InputFile checked(path);  // OpenEXR opens it by name: a FIFO would block it, a device feed it forever
-    return loadExr(path);
-  }
   std::vector<uint8_t> bytes = readFileBytes(path);
+  if (lowerCaseExtension(path) == ".exr") return decodeExr(path, bytes.data(), bytes.size());
   if (!stbi_is_hdr_from_memory(bytes.data(), int(std::min(bytes.size(), size_t(INT_MAX)))))
     failLoad(path, "an environment map must be a Radiance .hdr or an OpenEXR .exr image");
   Texture rgba = decodeImage(path, bytes.data(), bytes.size(), false);

@@ -6,6 +6,7 @@
 
 #include "scene/loaders/file_bytes.h"
 #include "scene/loaders/image_decoding.h"
+#include "scene/loaders/texture_limits.h"
 
 namespace candela {
 
@@ -40,14 +41,41 @@ int32_t TextureTable::fromMemory(const std::string& key, const std::string& name
 
 void TextureTable::finish(Scene& scene, size_t firstMaterial, LoadWarnings& warnings) {
   if (requests_.empty()) return;  // no material holds a provisional index
-  std::vector<std::optional<Texture>> decoded(requests_.size());
+  // Headers first, so that the sizes to decode at are known before any pixel is: a texture over the limits
+  // (texture_limits.h) is decoded smaller, never whole.
+  std::vector<std::optional<ImageInfo>> infos(requests_.size());
   std::vector<std::string> failures(requests_.size());
   tbb::parallel_for(size_t(0), requests_.size(), [&](size_t i) {
     Request& r = requests_[i];
     try {
       if (!r.refusal.empty()) failLoad(r.path, r.refusal);
       if (!r.path.empty()) r.bytes = readFileBytes(r.path);
-      decoded[i] = decodeImage(r.name, r.bytes.data(), r.bytes.size(), r.srgb);
+      infos[i] = inspectImage(r.name, r.bytes.data(), r.bytes.size());
+    } catch (const LoadError& e) {
+      failures[i] = e.what();
+      r.bytes = {};
+    }
+  });
+  std::vector<TextureExtent> extents;
+  for (const std::optional<ImageInfo>& info : infos)
+    if (info) extents.push_back({info->width, info->height, info->channels * (info->hdr ? 4u : 1u)});
+  const TextureLimits limits = textureLimits();
+  const std::vector<TextureExtent> fitted = fitTextureLimits(extents, limits);
+  std::vector<TextureExtent> targets(requests_.size());
+  for (size_t i = 0, k = 0; i < requests_.size(); ++i)
+    if (infos[i]) {
+      targets[i] = fitted[k];
+      if (fitted[k].width != extents[k].width || fitted[k].height != extents[k].height)
+        warnings.messages.push_back(downscaleWarning(requests_[i].name, extents[k], fitted[k], limits));
+      ++k;
+    }
+
+  std::vector<std::optional<Texture>> decoded(requests_.size());
+  tbb::parallel_for(size_t(0), requests_.size(), [&](size_t i) {
+    Request& r = requests_[i];
+    if (!infos[i]) return;
+    try {
+      decoded[i] = decodeImage(r.name, r.bytes.data(), r.bytes.size(), r.srgb, targets[i].width, targets[i].height);
       decoded[i]->wrapU = r.wrapU;
       decoded[i]->wrapV = r.wrapV;
     } catch (const LoadError& e) {

@@ -1,0 +1,15 @@
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "scene/scene.h"
+
+namespace candela {
+
+// Decodes an OpenEXR image held in memory to float RGB (luminance-chroma and grey images converted by OpenEXR),
+// with NaN, infinite and negative values made 0. Any data window is accepted whose size fits the loader's
+// limits, wherever it lies. Throws LoadError naming `name`.
+Texture decodeExr(const std::string& name, const uint8_t* data, size_t size);
+
+}  // namespace candela

@@ -1,0 +1,341 @@
+// Image decoding: PNG through libpng, JPEG through libjpeg-turbo, OpenEXR data windows, and the texture limits
+// that decode oversized textures smaller.
+#include <gtest/gtest.h>
+
+#include <OpenEXR/ImfRgbaFile.h>
+#include <png.h>
+#include <stb/stb_image_write.h>
+
+#include <cstdio>
+#include <jpeglib.h>
+
+#include <fstream>
+#include <functional>
+#include <iterator>
+
+#include "app/scene_loading.h"
+#include "scene/loaders/area_downscaler.h"
+#include "scene/loaders/image_decoding.h"
+#include "scene/loaders/load_diagnostics.h"
+#include "scene/loaders/obj_loader.h"
+#include "scene/loaders/texture_limits.h"
+#include "scene_test_files.h"
+
+namespace candela {
+namespace {
+
+using test::TempFolder;
+
+std::vector<uint8_t> readAll(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+Texture decodeFile(const std::string& path, bool srgb = false) {
+  std::vector<uint8_t> bytes = readAll(path);
+  return decodeImage(path, bytes.data(), bytes.size(), srgb);
+}
+
+// Writes a PNG through libpng, which can write what stb_image_write cannot: 16-bit, palette, interlaced and
+// 1-bit images. `row(y, out)` fills one row of samples as libpng takes them.
+void writePngWithLibpng(const std::string& path, uint32_t width, uint32_t height, int bitDepth, int colorType,
+                        bool interlaced, const std::function<void(uint32_t, std::vector<uint8_t>&)>& row,
+                        const std::function<void(png_structp, png_infop)>& extra = {}) {
+  FILE* file = std::fopen(path.c_str(), "wb");
+  ASSERT_NE(file, nullptr);
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png_create_info_struct(png);
+  png_init_io(png, file);
+  png_set_compression_level(png, 9);
+  png_set_IHDR(png, info, width, height, bitDepth, colorType,
+               interlaced ? PNG_INTERLACE_ADAM7 : PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
+               PNG_FILTER_TYPE_DEFAULT);
+  if (extra) extra(png, info);
+  png_write_info(png, info);
+  std::vector<uint8_t> samples;
+  const int passes = png_set_interlace_handling(png);
+  for (int pass = 0; pass < passes; ++pass)
+    for (uint32_t y = 0; y < height; ++y) {
+      row(y, samples);
+      png_write_row(png, samples.data());
+    }
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  std::fclose(file);
+}
+
+TEST(PngDecoding, ChannelsAsBefore) {
+  TempFolder dir;
+  const uint8_t grey[] = {10, 20, 30, 40}, greyAlpha[] = {10, 1, 20, 2, 30, 3, 40, 4};
+  const uint8_t rgb[] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12};
+  ASSERT_TRUE(stbi_write_png(dir.file("g.png").c_str(), 2, 2, 1, grey, 2));
+  ASSERT_TRUE(stbi_write_png(dir.file("ga.png").c_str(), 2, 2, 2, greyAlpha, 4));
+  ASSERT_TRUE(stbi_write_png(dir.file("rgb.png").c_str(), 2, 2, 3, rgb, 6));
+  Texture g = decodeFile(dir.file("g.png"), true);
+  EXPECT_EQ(g.channels, 1u);
+  EXPECT_EQ(g.bytes, std::vector<uint8_t>(grey, grey + 4));
+  EXPECT_TRUE(g.srgb);
+  Texture ga = decodeFile(dir.file("ga.png"));
+  ASSERT_EQ(ga.channels, 4u);
+  EXPECT_EQ(ga.bytes, (std::vector<uint8_t>{10, 10, 10, 1, 20, 20, 20, 2, 30, 30, 30, 3, 40, 40, 40, 4}));
+  Texture c = decodeFile(dir.file("rgb.png"));
+  ASSERT_EQ(c.channels, 4u);
+  EXPECT_EQ(c.bytes, (std::vector<uint8_t>{1, 2, 3, 255, 4, 5, 6, 255, 7, 8, 9, 255, 10, 11, 12, 255}));
+}
+
+TEST(PngDecoding, SixteenBitPaletteAndInterlacedImages) {
+  TempFolder dir;
+  // 16-bit grey keeps the high byte of each sample.
+  writePngWithLibpng(dir.file("g16.png"), 3, 1, 16, PNG_COLOR_TYPE_GRAY, false,
+                     [](uint32_t, std::vector<uint8_t>& s) { s = {0x12, 0x34, 0xab, 0xcd, 0xff, 0xff}; });
+  Texture g16 = decodeFile(dir.file("g16.png"));
+  EXPECT_EQ(g16.channels, 1u);
+  EXPECT_EQ(g16.bytes, (std::vector<uint8_t>{0x12, 0xab, 0xff}));
+  // A palette with transparency becomes RGBA.
+  writePngWithLibpng(dir.file("p.png"), 2, 1, 8, PNG_COLOR_TYPE_PALETTE, false,
+                     [](uint32_t, std::vector<uint8_t>& s) { s = {1, 0}; },
+                     [](png_structp png, png_infop info) {
+                       png_color palette[2] = {{10, 20, 30}, {40, 50, 60}};
+                       png_set_PLTE(png, info, palette, 2);
+                       png_byte alpha[1] = {128};
+                       png_set_tRNS(png, info, alpha, 1, nullptr);
+                     });
+  Texture p = decodeFile(dir.file("p.png"));
+  ASSERT_EQ(p.channels, 4u);
+  EXPECT_EQ(p.bytes, (std::vector<uint8_t>{40, 50, 60, 255, 10, 20, 30, 128}));
+  // Interlaced RGB: every pass lands where it belongs.
+  writePngWithLibpng(dir.file("i.png"), 9, 9, 8, PNG_COLOR_TYPE_RGB, true, [](uint32_t y, std::vector<uint8_t>& s) {
+    s.resize(27);
+    for (uint32_t x = 0; x < 9; ++x) s[3 * x] = s[3 * x + 1] = s[3 * x + 2] = uint8_t(10 * y + x);
+  });
+  Texture i = decodeFile(dir.file("i.png"));
+  ASSERT_EQ(i.channels, 4u);
+  for (uint32_t y = 0; y < 9; ++y)
+    for (uint32_t x = 0; x < 9; ++x) EXPECT_EQ(i.bytes[(y * 9 + x) * 4], 10 * y + x);
+}
+
+TEST(PngDecoding, DamagedFilesAreLoadErrorsNamingTheFile) {
+  TempFolder dir;
+  const uint8_t rgb[3 * 64 * 64] = {};
+  ASSERT_TRUE(stbi_write_png(dir.file("ok.png").c_str(), 64, 64, 3, rgb, 64 * 3));
+  std::vector<uint8_t> bytes = readAll(dir.file("ok.png"));
+  for (size_t cut : {size_t(8), size_t(20), bytes.size() / 2, bytes.size() - 13}) {
+    try {
+      decodeImage("cut.png", bytes.data(), cut, false);
+      ADD_FAILURE() << "a PNG cut at " << cut << " decoded";
+    } catch (const LoadError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("cut.png: not a readable PNG image (", 0), 0u) << e.what();
+    }
+  }
+}
+
+// Writes a JPEG through libjpeg: grey when `components` is 1, else RGB.
+void writeJpeg(const std::string& path, uint32_t width, uint32_t height, int components, uint8_t value) {
+  FILE* file = std::fopen(path.c_str(), "wb");
+  ASSERT_NE(file, nullptr);
+  jpeg_compress_struct c{};
+  jpeg_error_mgr errors{};
+  c.err = jpeg_std_error(&errors);
+  jpeg_create_compress(&c);
+  jpeg_stdio_dest(&c, file);
+  c.image_width = width;
+  c.image_height = height;
+  c.input_components = components;
+  c.in_color_space = components == 1 ? JCS_GRAYSCALE : JCS_RGB;
+  jpeg_set_defaults(&c);
+  jpeg_set_quality(&c, 95, TRUE);
+  jpeg_start_compress(&c, TRUE);
+  std::vector<uint8_t> row(size_t(width) * components, value);
+  while (c.next_scanline < c.image_height) {
+    JSAMPROW rows[1] = {row.data()};
+    jpeg_write_scanlines(&c, rows, 1);
+  }
+  jpeg_finish_compress(&c);
+  jpeg_destroy_compress(&c);
+  std::fclose(file);
+}
+
+TEST(JpegDecoding, GreyAndColourAsBefore) {
+  TempFolder dir;
+  writeJpeg(dir.file("g.jpg"), 16, 8, 1, 100);
+  writeJpeg(dir.file("c.jpg"), 16, 8, 3, 200);
+  Texture g = decodeFile(dir.file("g.jpg"), true);
+  EXPECT_EQ(g.width, 16u);
+  EXPECT_EQ(g.height, 8u);
+  ASSERT_EQ(g.channels, 1u);
+  for (uint8_t v : g.bytes) EXPECT_NEAR(v, 100, 1);
+  Texture c = decodeFile(dir.file("c.jpg"));
+  ASSERT_EQ(c.channels, 4u);
+  for (size_t i = 0; i < c.bytes.size(); ++i) EXPECT_NEAR(c.bytes[i], i % 4 == 3 ? 255 : 200, 1);
+}
+
+TEST(JpegDecoding, DamagedFilesAreLibjpegErrors) {
+  TempFolder dir;
+  writeJpeg(dir.file("c.jpg"), 16, 8, 3, 200);
+  std::vector<uint8_t> bytes = readAll(dir.file("c.jpg"));
+  // Destroy the Huffman tables (DHT segments): the message is libjpeg's, never stb_image's.
+  for (size_t i = 0; i + 1 < bytes.size(); ++i)
+    if (bytes[i] == 0xff && bytes[i + 1] == 0xc4)
+      for (size_t k = i + 4; k < std::min(bytes.size(), i + 40); ++k) bytes[k] = 0xff;
+  try {
+    decodeImage("bad.jpg", bytes.data(), bytes.size(), false);
+    ADD_FAILURE() << "a JPEG with broken Huffman tables decoded";
+  } catch (const LoadError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("bad.jpg: not a readable JPEG image (", 0), 0u) << e.what();
+  }
+  // The 20 bytes that made stb_image write out of bounds in stbi__build_huffman.
+  const uint8_t huff[] = {0xff, 0xff, 0xff, 0xff, 0xff, 0xd8, 0xff, 0xff, 0xff, 0xc4,
+                          0xda, 0xff, 0x00, 0x18, 0x2c, 0xdf, 0xff, 0x21, 0x66, 0x81};
+  EXPECT_THROW(decodeImage("huff.jpg", huff, sizeof huff, false), LoadError);
+}
+
+// An OpenEXR image of 100x10 pixels whose data window lies far from the origin; pixel (x, y) of the window
+// holds red x, green y.
+void writeOffsetExr(const std::string& path, int minX, int minY) {
+  const int width = 100, height = 10;
+  Imath::Box2i window({minX, minY}, {minX + width - 1, minY + height - 1});
+  Imath::Box2i display({0, 0}, {width - 1, height - 1});
+  Imf::RgbaOutputFile file(path.c_str(), Imf::Header(display, window), Imf::WRITE_RGBA);
+  std::vector<Imf::Rgba> pixels(size_t(width) * height);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) pixels[size_t(y) * width + x] = Imf::Rgba(float(x), float(y), 1.0f, 1.0f);
+  const int64_t origin = int64_t(minX) + int64_t(minY) * width;
+  file.setFrameBuffer(reinterpret_cast<Imf::Rgba*>(reinterpret_cast<uintptr_t>(pixels.data()) -
+                                                   uintptr_t(origin) * sizeof(Imf::Rgba)),
+                      1, width);
+  file.writePixels(height);
+}
+
+TEST(ExrDecoding, DataWindowFarFromTheOrigin) {
+  TempFolder dir;
+  for (auto [minX, minY] : {std::pair{0, 100000000}, std::pair{-1000000000, 5}, std::pair{1000000000, -1000000000}}) {
+    const std::string path = dir.file("off.exr");
+    writeOffsetExr(path, minX, minY);
+    Texture t = loadEnvironmentImage(path);
+    ASSERT_EQ(t.width, 100u);
+    ASSERT_EQ(t.height, 10u);
+    EXPECT_EQ(t.floats[(5 * 100 + 7) * 3 + 0], 7.0f);
+    EXPECT_EQ(t.floats[(5 * 100 + 7) * 3 + 1], 5.0f);
+    EXPECT_EQ(t.floats[(9 * 100 + 99) * 3 + 2], 1.0f);
+  }
+}
+
+TEST(AreaDownscaler, MeansOfTheCoveredPixels) {
+  // 4x2 to 2x1: each target pixel is the mean of a 2x2 block; 3x1 to 2x1 splits the columns 2 + 1.
+  AreaDownscaler<uint8_t> half(4, 2, 2, 1, 1);
+  const uint8_t rows[2][4] = {{0, 10, 100, 200}, {20, 30, 50, 50}};
+  half.addRow(rows[0]);
+  half.addRow(rows[1]);
+  EXPECT_EQ(half.finish(), (std::vector<uint8_t>{15, 100}));
+  AreaDownscaler<float> uneven(3, 1, 2, 1, 2);
+  const float row[6] = {1, 2, 3, 4, 10, 20};
+  uneven.addRow(row);
+  EXPECT_EQ(uneven.finish(), (std::vector<float>{2, 3, 10, 20}));
+}
+
+TEST(TextureLimits, FitSizeThenMemory) {
+  TextureLimits limits{100, 1u << 20};
+  std::vector<TextureExtent> fitted = fitTextureLimits({{400, 200, 4}, {50, 60, 1}}, limits);
+  EXPECT_EQ(fitted[0].width, 100u);
+  EXPECT_EQ(fitted[0].height, 50u);
+  EXPECT_EQ(fitted[1].width, 50u);
+  EXPECT_EQ(fitted[1].height, 60u);
+  // 2 x 1000x1000 RGBA is 8 MB: both shrink by sqrt(2 MiB / 8 MB) = 0.512 to fit 2 MiB.
+  limits = {4096, 2u << 20};
+  fitted = fitTextureLimits({{1000, 1000, 4}, {1000, 1000, 4}}, limits);
+  uint64_t total = 0;
+  for (const TextureExtent& e : fitted) total += uint64_t(e.width) * e.height * 4;
+  EXPECT_LE(total, limits.maxBytes);
+  EXPECT_EQ(fitted[0].width, 512u);
+  EXPECT_EQ(fitted[1].height, 512u);
+}
+
+// The PNG bomb: 16000x16000 grey pixels, 1 bit each, in a few kilobytes.
+TEST(TextureLimits, HugePngTextureIsDecodedSmallerWithOneWarning) {
+  TempFolder dir;
+  writePngWithLibpng(dir.file("bomb.png"), 16000, 16000, 1, PNG_COLOR_TYPE_GRAY, false,
+                     [](uint32_t y, std::vector<uint8_t>& s) { s.assign(2000, y < 8000 ? 0xff : 0x00); });
+  dir.write("m.mtl", "newmtl m\nmap_Kd bomb.png\n");
+  LoadWarnings warnings;
+  Scene s = loadObj(dir.write("m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n"), warnings);
+  ASSERT_EQ(s.textures.size(), 1u);
+  const Texture& t = s.textures[0];
+  EXPECT_EQ(t.width, 8192u);
+  EXPECT_EQ(t.height, 8192u);
+  EXPECT_EQ(t.channels, 1u);
+  EXPECT_EQ(t.bytes[0], 255);                      // top half white,
+  EXPECT_EQ(t.bytes[size_t(8191) * 8192], 0);      // bottom half black
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_NE(warnings.messages[0].find("bomb.png: texture of 16000x16000 pixels downscaled to 8192x8192"),
+            std::string::npos)
+      << warnings.messages[0];
+}
+
+TEST(TextureLimits, LimitsFromTheLoadOptionsApply) {
+  TempFolder dir;
+  std::vector<uint8_t> pixels(size_t(300) * 200 * 3, 90);
+  ASSERT_TRUE(stbi_write_png(dir.file("a.png").c_str(), 300, 200, 3, pixels.data(), 300 * 3));
+  ASSERT_TRUE(stbi_write_png(dir.file("b.png").c_str(), 300, 200, 3, pixels.data(), 300 * 3));
+  dir.write("m.mtl", "newmtl a\nmap_Kd a.png\nnewmtl b\nmap_Kd b.png\n");
+  const std::string obj =
+      dir.write("m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\nusemtl b\nf 1 2 3\n");
+  setTextureLimits({100, 1u << 20});
+  LoadWarnings warnings;
+  Scene s = loadObj(obj, warnings);
+  setTextureLimits({});
+  ASSERT_EQ(s.textures.size(), 2u);
+  EXPECT_EQ(s.textures[0].width, 100u);
+  EXPECT_EQ(s.textures[0].height, 66u);
+  EXPECT_EQ(s.textures[0].bytes[0], 90);
+  EXPECT_EQ(warnings.messages.size(), 2u);
+  // A memory limit below the two textures' 480 000 bytes shrinks both.
+  setTextureLimits({8192, 200000});
+  LoadWarnings fewer;
+  s = loadObj(obj, fewer);
+  setTextureLimits({});
+  uint64_t total = 0;
+  for (const Texture& t : s.textures) total += t.bytes.size();
+  EXPECT_LE(total, 200000u);
+  ASSERT_EQ(fewer.messages.size(), 2u);
+  EXPECT_NE(fewer.messages[0].find("--max-texture-memory"), std::string::npos) << fewer.messages[0];
+}
+
+TEST(TextureLimits, SceneCacheHoldsOnlyTexturesDecodedUnderTheDefaults) {
+  TempFolder dir;
+  std::vector<uint8_t> pixels(size_t(300) * 200 * 3, 90);
+  ASSERT_TRUE(stbi_write_png(dir.file("a.png").c_str(), 300, 200, 3, pixels.data(), 300 * 3));
+  dir.write("m.mtl", "newmtl a\nmap_Kd a.png\n");
+  const std::string obj = dir.write("m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n");
+  const SceneCacheSettings cache{true, dir.file("cache")};
+  EXPECT_EQ(loadScene(obj, {{}, cache, {100, 1u << 20}}).textures.at(0).width, 100u);
+  EXPECT_EQ(loadScene(obj, {{}, cache, {}}).textures.at(0).width, 300u);
+  EXPECT_EQ(loadScene(obj, {{}, cache, {}}).textures.at(0).width, 300u);  // now from the cache
+  EXPECT_EQ(loadScene(obj, {{}, cache, {100, 1u << 20}}).textures.at(0).width, 100u);
+}
+
+TEST(TextureLimits, SceneOfSeveralModelsIsFittedAsAWhole) {
+  Scene scene;
+  for (const char* name : {"a.png", "b.hdr"}) {
+    Texture t;
+    t.name = name;
+    t.width = 40;
+    t.height = 20;
+    t.channels = 1;
+    if (name[0] == 'a')
+      t.bytes.assign(800, 60);
+    else
+      t.floats.assign(800, 2.5f);
+    scene.textures.push_back(t);
+  }
+  LoadWarnings warnings;
+  fitSceneTextures(scene, {20, 1u << 20}, warnings);
+  ASSERT_EQ(warnings.messages.size(), 2u);
+  EXPECT_EQ(warnings.messages[1].rfind("b.hdr: texture of 40x20 pixels downscaled to 20x10", 0), 0u)
+      << warnings.messages[1];
+  EXPECT_EQ(scene.textures[0].bytes, std::vector<uint8_t>(200, 60));
+  EXPECT_EQ(scene.textures[1].floats, std::vector<float>(200, 2.5f));
+  EXPECT_EQ(scene.textures[1].width, 20u);
+}
+
+}  // namespace
+}  // namespace candela
