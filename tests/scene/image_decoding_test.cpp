@@ -307,10 +307,13 @@ TEST(TextureLimits, SceneCacheHoldsOnlyTexturesDecodedUnderTheDefaults) {
   dir.write("m.mtl", "newmtl a\nmap_Kd a.png\n");
   const std::string obj = dir.write("m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n");
   const SceneCacheSettings cache{true, dir.file("cache")};
-  EXPECT_EQ(loadScene(obj, {{}, cache, {100, 1u << 20}}).textures.at(0).width, 100u);
-  EXPECT_EQ(loadScene(obj, {{}, cache, {}}).textures.at(0).width, 300u);
-  EXPECT_EQ(loadScene(obj, {{}, cache, {}}).textures.at(0).width, 300u);  // now from the cache
-  EXPECT_EQ(loadScene(obj, {{}, cache, {100, 1u << 20}}).textures.at(0).width, 100u);
+  SceneLoadOptions small, defaults;
+  small.cache = defaults.cache = cache;
+  small.textureLimits = {100, 1u << 20};
+  EXPECT_EQ(loadScene(obj, small).textures.at(0).width, 100u);
+  EXPECT_EQ(loadScene(obj, defaults).textures.at(0).width, 300u);
+  EXPECT_EQ(loadScene(obj, defaults).textures.at(0).width, 300u);  // now from the cache
+  EXPECT_EQ(loadScene(obj, small).textures.at(0).width, 100u);
 }
 
 TEST(TextureLimits, SceneOfSeveralModelsIsFittedAsAWhole) {

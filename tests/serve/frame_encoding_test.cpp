@@ -1,11 +1,10 @@
 #include <gtest/gtest.h>
 
-#include <stb/stb_image.h>
-
 #include <cstdlib>
 #include <utility>
 
 #include "app/serve/frame_encoding.h"
+#include "scene/loaders/image_decoding.h"
 
 namespace candela {
 namespace {
@@ -31,16 +30,14 @@ TEST(FrameEncoding, JpegAndPngDecodeToTheImage) {
   const DisplayImage d = displayImage(gradient(), PostSettings());
   // The PNG is exact; the JPEG (4:2:0 chroma) close on average.
   for (const auto& [encoded, meanError] : {std::pair{encodeJpeg(d, 95), 2.0}, std::pair{encodePng(d), 0.0}}) {
-    int w = 0, h = 0, n = 0;
-    unsigned char* pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(encoded.data()),
-                                                  int(encoded.size()), &w, &h, &n, 3);
-    ASSERT_NE(pixels, nullptr);
-    EXPECT_EQ(w, 64);
-    EXPECT_EQ(h, 32);
+    const Texture decoded =
+        decodeImage("frame", reinterpret_cast<const uint8_t*>(encoded.data()), encoded.size(), /*srgb=*/true);
+    ASSERT_EQ(decoded.channels, 4u);
+    EXPECT_EQ(decoded.width, 64u);
+    EXPECT_EQ(decoded.height, 32u);
     double error = 0.0;
-    for (size_t i = 0; i < d.rgb.size(); ++i) error += std::abs(int(pixels[i]) - int(d.rgb[i]));
+    for (size_t i = 0; i < d.rgb.size(); ++i) error += std::abs(int(decoded.bytes[i / 3 * 4 + i % 3]) - int(d.rgb[i]));
     EXPECT_LE(error / double(d.rgb.size()), meanError);
-    stbi_image_free(pixels);
   }
   EXPECT_LT(encodeJpeg(d, 30).size(), encodeJpeg(d, 95).size());
 }
