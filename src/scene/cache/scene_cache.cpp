@@ -15,6 +15,7 @@
 #include <stdexcept>
 
 #include "scene/cache/cache_key.h"
+#include "scene/cache/cached_scene_validation.h"
 #include "scene/cache/scene_serialization.h"
 
 namespace candela {
@@ -81,7 +82,8 @@ void writeSceneCache(const std::string& cacheFile, const std::string& modelPath,
   throw std::runtime_error("cannot write " + cacheFile + ": " + why);
 }
 
-SceneCacheRead readSceneCache(const std::string& cacheFile, const std::string& modelPath, CachedScene& out) {
+SceneCacheRead readSceneCache(const std::string& cacheFile, const std::string& modelPath, CachedScene& out,
+                              std::string* problem) {
   File file(std::fopen(cacheFile.c_str(), "rb"), &std::fclose);
   if (!file) return SceneCacheRead::Missing;
   struct stat st;
@@ -99,9 +101,10 @@ SceneCacheRead readSceneCache(const std::string& cacheFile, const std::string& m
   for (std::string& w : cached.warnings) in.string(w);
   if (!readScene(in, cached.scene) || !in.checksumMatches()) return SceneCacheRead::Damaged;
   try {
-    validateScene(cached.scene);
-  } catch (const std::exception&) {
-    return SceneCacheRead::Damaged;
+    validateCachedScene(cached.scene);
+  } catch (const std::exception& e) {
+    if (problem) *problem = e.what();
+    return SceneCacheRead::Invalid;
   }
   out = std::move(cached);
   return SceneCacheRead::Hit;
@@ -113,12 +116,17 @@ Scene loadThroughSceneCache(const std::string& path, const SceneCacheSettings& s
   if (!settings.enabled || directory.empty()) return load(warnings);
   const std::string cacheFile = sceneCacheFile(directory, path);
   CachedScene cached;
-  switch (readSceneCache(cacheFile, path, cached)) {
+  std::string problem;
+  switch (readSceneCache(cacheFile, path, cached, &problem)) {
     case SceneCacheRead::Hit:
       warnings.messages.insert(warnings.messages.end(), cached.warnings.begin(), cached.warnings.end());
       return std::move(cached.scene);
     case SceneCacheRead::Damaged:
       warnings.add(cacheFile, "damaged scene cache ignored; the model is loaded afresh and cached again");
+      break;
+    case SceneCacheRead::Invalid:
+      warnings.add(cacheFile, "invalid scene cache ignored (" + problem +
+                                  "); the model is loaded afresh and cached again");
       break;
     case SceneCacheRead::Missing:
     case SceneCacheRead::Stale:
@@ -129,7 +137,10 @@ Scene loadThroughSceneCache(const std::string& path, const SceneCacheSettings& s
   LoadWarnings fresh;
   Scene scene = load(fresh);
   try {
-    if (fileState(path) == before) writeSceneCache(cacheFile, path, scene, fresh.messages);
+    if (fileState(path) == before) {
+      validateCachedScene(scene);  // what the cache would refuse to read back is not written
+      writeSceneCache(cacheFile, path, scene, fresh.messages);
+    }
   } catch (const std::exception& e) {
     warnings.messages.push_back(std::string("scene cache not written: ") + e.what());
   }
