@@ -10,6 +10,8 @@ packages=(
   libbenchmark-dev
   # the viewer, and its tests on a virtual display with Mesa's software OpenGL
   libglfw3-dev libimgui-dev libgl-dev libgl1-mesa-dri libglx-mesa0 xvfb xdotool
+  # scripts/check-format.sh (one version: others break lines differently)
+  clang-format-14
 )
 
 missing=()
