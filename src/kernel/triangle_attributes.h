@@ -11,7 +11,7 @@ namespace candela {
 struct HitTriangle {
   const InstanceRecord* instance = nullptr;
   const MeshRecord* mesh = nullptr;
-  uint32_t triangle = 0;           // the scene's triangle: indices[3 * triangle ...], triangleMaterials[triangle]
+  uint32_t triangle = 0;            // the scene's triangle: indices[3 * triangle ...], triangleMaterials[triangle]
   uint32_t v0 = 0, v1 = 0, v2 = 0;  // its vertices, as indices into the scene's vertex arrays
   float b0 = 1.0f, b1 = 0.0f, b2 = 0.0f;  // the hit point's barycentric weights
 };

@@ -12,8 +12,8 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <optional>
 #include <limits>
+#include <optional>
 #include <random>
 #include <thread>
 

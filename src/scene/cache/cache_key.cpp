@@ -75,8 +75,13 @@ FileState fileState(const std::string& path) {
     ::close(fd);
     return {};
   }
-  FileState s{true, uint64_t(st.st_size), nanoseconds(st.st_mtim), nanoseconds(st.st_ctim), uint64_t(st.st_ino),
-              uint64_t(st.st_dev), 0};
+  FileState s;
+  s.exists = true;
+  s.size = uint64_t(st.st_size);
+  s.modifiedNs = nanoseconds(st.st_mtim);
+  s.changedNs = nanoseconds(st.st_ctim);
+  s.inode = uint64_t(st.st_ino);
+  s.device = uint64_t(st.st_dev);
   if (fd >= 0) {
     if (S_ISREG(st.st_mode) && s.size < kHashedFileBytes) s.contentHash = contentHash(fd, s.size);
     ::close(fd);

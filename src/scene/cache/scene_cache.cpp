@@ -125,8 +125,8 @@ Scene loadThroughSceneCache(const std::string& path, const SceneCacheSettings& s
       warnings.add(cacheFile, "damaged scene cache ignored; the model is loaded afresh and cached again");
       break;
     case SceneCacheRead::Invalid:
-      warnings.add(cacheFile, "invalid scene cache ignored (" + problem +
-                                  "); the model is loaded afresh and cached again");
+      warnings.add(cacheFile,
+                   "invalid scene cache ignored (" + problem + "); the model is loaded afresh and cached again");
       break;
     case SceneCacheRead::Missing:
     case SceneCacheRead::Stale:
