@@ -15,6 +15,8 @@ packages=(
   # candela serve (the viewer in a web browser), and its browser tests: Node drives Chromium through playwright-core
   # (tests/serve/install-browser-test-deps.sh fetches it with npm into tests/serve/node_modules)
   libboost-dev libturbojpeg0-dev chromium nodejs
+  # scripts/check-format.sh (one version: others break lines differently)
+  clang-format-14
 )
 # npm comes with NodeSource's nodejs; Debian ships it as a package of its own.
 command -v npm >/dev/null || packages+=(npm)

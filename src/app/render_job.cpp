@@ -9,7 +9,6 @@
 #include "app/render_memory.h"
 #include "app/scene_loading.h"
 #if CANDELA_HAS_OPTIX
-#include "backends/optix/optix_backend.h"
 #include "backends/optix/optix_denoiser.h"
 #endif
 
@@ -19,16 +18,6 @@ namespace {
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-// Only the optix backend has a raw-trace mode; runRenderJob checks that before rendering.
-void timeRawTrace([[maybe_unused]] Backend& backend, [[maybe_unused]] const RenderJob& job,
-                  [[maybe_unused]] RenderOutcome& outcome) {
-#if CANDELA_HAS_OPTIX
-  RawTraceTiming timing = dynamic_cast<OptixBackend&>(backend).timeRawTrace(job.warmupFrames, job.samplesPerPixel);
-  outcome.rawTraceRaysPerFrame = timing.raysPerFrame;
-  outcome.rawTraceMilliseconds = timing.deviceMilliseconds;
-#endif
 }
 
 bool needsAovs(const RenderJob& job) {
@@ -94,7 +83,7 @@ RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool s
   std::unique_ptr<Backend> backend = createBackend(job.backend, why);
   outcome.backendStartSeconds = secondsSince(backendStart);
   std::fprintf(stderr, "%s\n", why.c_str());
-  if (job.rawTrace && backend->name() != "optix")
+  if (job.rawTrace && !backend->supportsRawTrace())
     throw std::runtime_error("the raw-trace mode needs the optix backend, not " + backend->name());
   const auto setupStart = Clock::now();
   backend->setScene(scene);
@@ -122,7 +111,11 @@ RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool s
   }
   outcome.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   if (showProgress) progress.finish();
-  if (job.rawTrace) timeRawTrace(*backend, job, outcome);
+  if (job.rawTrace) {
+    RawTraceTiming timing = backend->timeRawTrace(job.warmupFrames, job.samplesPerPixel);
+    outcome.rawTraceRaysPerFrame = timing.raysPerFrame;
+    outcome.rawTraceMilliseconds = std::move(timing.deviceMilliseconds);
+  }
   readResult(*backend, job, outcome);
   outcome.backendName = backend->name();
   outcome.deviceName = backend->deviceName();

@@ -1,9 +1,11 @@
 #pragma once
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "backends/device_image.h"
 #include "image/aov_images.h"
 #include "image/filters/atrous.h"
 #include "image/filters/bilateral.h"
@@ -18,6 +20,12 @@ struct FrameStats {
   uint64_t rays = 0;            // camera, bounce and shadow rays traced
   uint64_t invalidSamples = 0;  // NaN/Inf/negative path estimates dropped before the film
   double deviceMilliseconds = 0.0;  // GPU time of the launches (CUDA events); 0 where the backend has none
+};
+
+// What Backend::timeRawTrace measured.
+struct RawTraceTiming {
+  uint64_t raysPerFrame = 0;               // rays of the recorded sample, traced again by every timed launch
+  std::vector<double> deviceMilliseconds;  // one per timed launch, from CUDA events
 };
 
 // A renderer of one scene: owns traversal structures, memory and launches; shading is the shared kernel code.
@@ -60,6 +68,18 @@ class Backend {
   virtual Image readBilateralFiltered(const BilateralParams& params) const {
     return bilateralFilter(readImage(), params);
   }
+
+  // Capabilities some backends have; callers ask for them here rather than for a backend's type.
+  //
+  // The traversal ceiling for this scene and ray mix (`bench --raw-trace`): records every ray of one sample per
+  // pixel (the next sample index; the image is left alone), then times `frames` launches, after `warmup`
+  // untimed ones, that trace exactly those rays again with no shading. Only where supportsRawTrace().
+  virtual bool supportsRawTrace() const { return false; }
+  virtual RawTraceTiming timeRawTrace(uint32_t /*warmup*/, uint32_t /*frames*/) {
+    throw std::logic_error("the " + name() + " backend has no raw-trace mode");
+  }
+  // The image in GPU memory, for consumers on the same GPU; null where the image lives on the host.
+  virtual const DeviceImage* deviceImage() const { return nullptr; }
 };
 
 }  // namespace candela

@@ -4,6 +4,7 @@
 #include "core/math.h"
 #include "kernel/hit.h"
 #include "kernel/scene_view.h"
+#include "kernel/triangle_attributes.h"
 
 namespace candela {
 
@@ -19,40 +20,26 @@ struct SurfaceInteraction {
 };
 
 CANDELA_FN SurfaceInteraction makeInteraction(const SceneView& scene, const Hit& hit) {
-  const InstanceRecord& inst = scene.instances[hit.instanceId];
-  const MeshRecord& mesh = scene.meshes[inst.meshId];
-  uint32_t tri = mesh.firstTriangle + hit.primitiveId;
-  uint32_t i0 = scene.indices[3 * tri + 0], i1 = scene.indices[3 * tri + 1], i2 = scene.indices[3 * tri + 2];
-  const Vec3* p = scene.positions + mesh.firstVertex;
-  float b0 = 1.0f - hit.b1 - hit.b2;
+  const HitTriangle tri = hitTriangle(scene, hit);
+  const InstanceRecord& inst = *tri.instance;
+  const MeshRecord& mesh = *tri.mesh;
 
   SurfaceInteraction si;
-  Vec3 objectPosition = p[i0] * b0 + p[i1] * hit.b1 + p[i2] * hit.b2;
-  si.position = inst.objectToWorld.point(objectPosition);
-  si.geometricNormal = normalize(inst.normalToWorld.vector(cross(p[i1] - p[i0], p[i2] - p[i0])));
+  si.position = inst.objectToWorld.point(interpolate(scene.positions, tri));
+  si.geometricNormal = normalize(windingNormal(scene, tri));
   si.shadingNormal = si.geometricNormal;
   if (mesh.hasNormals) {
-    const Vec3* n = scene.normals + mesh.firstVertex;
-    Vec3 ns = inst.normalToWorld.vector(n[i0] * b0 + n[i1] * hit.b1 + n[i2] * hit.b2);
+    Vec3 ns = inst.normalToWorld.vector(interpolate(scene.normals, tri));
     float len = length(ns);
     if (len > 0.0f) si.shadingNormal = faceForward(ns / len, si.geometricNormal);
   }
-  if (mesh.hasUvs) {
-    const Vec2* uv = scene.uvs + mesh.firstVertex;
-    si.uv = {uv[i0].x * b0 + uv[i1].x * hit.b1 + uv[i2].x * hit.b2, uv[i0].y * b0 + uv[i1].y * hit.b1 + uv[i2].y * hit.b2};
-  }
+  if (mesh.hasUvs) si.uv = interpolate(scene.uvs, tri);
   if (mesh.hasTangents) {
-    const Vec4* t = scene.tangents + mesh.firstVertex;
-    Vec3 objectTangent = Vec3{t[i0].x, t[i0].y, t[i0].z} * b0 + Vec3{t[i1].x, t[i1].y, t[i1].z} * hit.b1 +
-                         Vec3{t[i2].x, t[i2].y, t[i2].z} * hit.b2;
-    si.tangent = inst.objectToWorld.vector(objectTangent);
-    si.bitangentSign = t[i0].w < 0.0f ? -1.0f : 1.0f;
+    si.tangent = inst.objectToWorld.vector(interpolateDirection(scene.tangents, tri));
+    si.bitangentSign = scene.tangents[tri.v0].w < 0.0f ? -1.0f : 1.0f;
   }
-  if (mesh.hasColors) {
-    const Vec3* c = scene.colors + mesh.firstVertex;
-    si.color = c[i0] * b0 + c[i1] * hit.b1 + c[i2] * hit.b2;
-  }
-  si.materialId = scene.triangleMaterials[tri];
+  if (mesh.hasColors) si.color = interpolate(scene.colors, tri);
+  si.materialId = scene.triangleMaterials[tri.triangle];
   return si;
 }
 

@@ -1,16 +1,24 @@
-// The scene cache: a round trip gives the same scene, a changed input makes the cache stale, and no truncated
-// or corrupted cache file is read as a scene or crashes the reader.
+// The scene cache: a round trip gives the same scene, a changed input makes the cache stale (also a same-size
+// replacement that keeps the modification time), and no truncated, corrupted or hand-built cache file is read as
+// a scene or crashes the reader.
 #include <gtest/gtest.h>
 
 #include <stb/stb_image_write.h>
 
+#include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <limits>
 #include <optional>
 #include <random>
+#include <thread>
 
+#include "scene/cache/binary_stream.h"
+#include "scene/cache/cache_key.h"
 #include "scene/cache/scene_cache.h"
 #include "scene/loaders/obj_loader.h"
 #include "scene/scene_test_files.h"
@@ -212,6 +220,78 @@ TEST(SceneCache, ChangedInputsMakeTheCacheStale) {
   EXPECT_EQ(obj.status(), SceneCacheRead::Stale);
 }
 
+// One triangle whose first vertex's x is `x`, padded with a comment to `bytes` bytes, so that two versions of
+// the model have the same size.
+std::string triangleObj(char x, size_t bytes) {
+  std::string obj = std::string("v ") + x + " 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n# ";
+  obj.resize(bytes - 1, 'p');
+  return obj + "\n";
+}
+
+// Loads `model` through the cache in `cacheDirectory`; `fresh` counts the loads that read the model itself.
+Scene loadCachedObj(const std::string& model, const std::string& cacheDirectory, int& fresh,
+                    LoadWarnings* warnings = nullptr) {
+  LoadWarnings ignored;
+  return loadThroughSceneCache(model, {true, cacheDirectory}, warnings ? *warnings : ignored, [&](LoadWarnings& w) {
+    ++fresh;
+    return loadObj(model, w);
+  });
+}
+
+// `cp -p new model`: the model's file is rewritten in place with contents of the same size, and its
+// modification time is put back. Size and modification time alone would serve the old model.
+void copyPreservingTime(const std::string& from, const std::string& to) {
+  const auto time = fs::last_write_time(to);
+  std::ofstream(to, std::ios::binary | std::ios::trunc) << readFile(from);
+  fs::last_write_time(to, time);
+}
+
+// `rsync -t new model`: a new file with the old modification time is renamed over the model.
+void renamePreservingTime(const std::string& from, const std::string& to) {
+  const auto time = fs::last_write_time(to);
+  const std::string temporary = to + ".partial";
+  fs::copy_file(from, temporary, fs::copy_options::overwrite_existing);
+  fs::last_write_time(temporary, time);
+  fs::rename(temporary, to);
+}
+
+TEST(SceneCache, SameSizeReplacementKeepingTheTimeIsLoadedAfresh) {
+  for (size_t bytes : {size_t(200), size_t(kHashedFileBytes + 1000)}) {  // hashed, and too large to hash
+    for (auto replace : {copyPreservingTime, renamePreservingTime}) {
+      TempFolder dir;
+      const std::string model = dir.write("m.obj", triangleObj('0', bytes));
+      const std::string cacheDirectory = dir.file("cache");
+      int fresh = 0;
+      EXPECT_EQ(loadCachedObj(model, cacheDirectory, fresh).meshes[0].positions[0].x, 0.0f);
+      EXPECT_EQ(loadCachedObj(model, cacheDirectory, fresh).meshes[0].positions[0].x, 0.0f);
+      ASSERT_EQ(fresh, 1);
+      // Beyond the file system's clock tick, which large files (not hashed) rely on to change the inode's
+      // change time.
+      if (bytes > kHashedFileBytes) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      const std::string update = dir.write("update.obj", triangleObj('5', bytes));
+      replace(update, model);
+      ASSERT_EQ(fs::file_size(model), bytes);
+      EXPECT_EQ(loadCachedObj(model, cacheDirectory, fresh).meshes[0].positions[0].x, 5.0f) << bytes << " bytes";
+      EXPECT_EQ(fresh, 2);
+    }
+  }
+}
+
+TEST(SceneCache, SmallFilesAreKeyedByTheirContents) {
+  TempFolder dir;
+  const std::string a = dir.write("a.mtl", "newmtl red\nKd 1 0 0\n");
+  const FileState before = fileState(a);
+  EXPECT_NE(before.contentHash, 0u);
+  EXPECT_NE(before.inode, 0u);
+  // A same-size edit within one tick of the file system's clock leaves size and times alike: the hash differs.
+  std::ofstream(a, std::ios::binary | std::ios::trunc) << "newmtl red\nKd 0 1 0\n";
+  EXPECT_NE(fileState(a).contentHash, before.contentHash);
+  // Large files are not read for the key.
+  const std::string big = dir.write("big.obj", std::string(kHashedFileBytes, '#'));
+  EXPECT_EQ(fileState(big).contentHash, 0u);
+  EXPECT_TRUE(fileState(big).exists);
+}
+
 TEST(SceneCache, AddingAMissingLibraryMakesTheCacheStale) {
   TempFolder dir;
   const std::string model = dir.write("m.obj", "mtllib later.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
@@ -294,6 +374,134 @@ TEST(SceneCache, DamagedCacheIsAWarningAndIsReplaced) {
   ASSERT_FALSE(second.messages.empty());
   EXPECT_EQ(second.messages[0], cache + ": damaged scene cache ignored; the model is loaded afresh and cached again");
   EXPECT_EQ(obj.status(), SceneCacheRead::Hit);
+}
+
+// Cache files written with a correct checksum around a scene no loader gives: each must be refused as Invalid.
+TEST(SceneCache, HandBuiltCachesWithInvalidScenesAreRefused) {
+  TempFolder dir;
+  const std::string model = dir.write("model.obj", "x");
+  const std::string cache = dir.file("model.scene");
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const std::vector<std::pair<const char*, std::function<void(Scene&)>>> edits = {
+      {"unknown material type", [](Scene& s) { s.materials[0].type = MaterialType(77); }},
+      {"unknown alpha mode", [](Scene& s) { s.materials[1].alphaMode = AlphaMode(3); }},
+      {"NaN material parameter", [&](Scene& s) { s.materials[0].ior = nan; }},
+      {"NaN camera", [&](Scene& s) { s.camera.eye.y = nan; }},
+      {"camera on its target", [](Scene& s) { s.camera.target = s.camera.eye; }},
+      {"field of view of 0", [](Scene& s) { s.camera.verticalFovDegrees = 0.0f; }},
+      {"negative aperture", [](Scene& s) { s.camera.apertureRadius = -1.0f; }},
+      {"render width of 0", [](Scene& s) { s.renderHints.width = 0u; }},
+      {"huge render height", [](Scene& s) { s.renderHints.height = 1u << 30; }},
+      {"spp of 0", [](Scene& s) { s.renderHints.samplesPerPixel = 0u; }},
+      {"unknown texture wrap", [](Scene& s) { s.textures[0].wrapV = TextureWrap(9); }},
+      {"unknown punctual light type", [](Scene& s) {
+         PunctualLight light;
+         light.type = PunctualLightType(7);
+         s.punctualLights.push_back(light);
+       }},
+      {"non-finite second camera", [&](Scene& s) {
+         NamedCamera second{"b", s.camera};
+         second.description.eye.x = nan;
+         s.cameras.push_back(second);
+       }},
+      {"texture size overflowing 64 bits", [](Scene& s) {
+         s.textures[0].width = s.textures[0].height = 1u << 31;
+         s.textures[0].bytes.clear();
+       }},
+      {"texture with bytes and floats", [](Scene& s) { s.textures[1].bytes = {1, 2, 3}; }},
+      {"NaN texel", [&](Scene& s) { s.textures[1].floats[0] = nan; }},
+      {"environment map larger than its floats", [](Scene& s) { s.environment.map.height = 1000; }},
+      {"environment map without channels", [](Scene& s) { s.environment.map.channels = 0; }},
+      {"environment map of bytes", [](Scene& s) {
+         s.environment.map.bytes = {1, 2, 3, 4, 5, 6};
+         s.environment.map.floats.clear();
+       }},
+      {"negative environment radiance", [](Scene& s) { s.environment.radiance.x = -1.0f; }},
+      {"NaN environment intensity", [&](Scene& s) { s.environment.intensity = nan; }},
+      {"infinite environment rotation", [](Scene& s) { s.environment.rotationDegrees = INFINITY; }},
+      {"NaN normal", [&](Scene& s) { s.meshes[1].normals[2].z = nan; }},
+      {"NaN texture coordinate", [&](Scene& s) { s.meshes[0].uvs[3].x = nan; }},
+      {"NaN instance transform", [&](Scene& s) { s.instances[1].objectToWorld.m[7] = nan; }},
+      {"material id past the materials", [](Scene& s) { s.meshes[0].triangleMaterials[1] = 2; }},
+      {"index past the vertices", [](Scene& s) { s.meshes[1].indices[4] = 4; }},
+      {"one material name for two materials", [](Scene& s) { s.materialNames.pop_back(); }},
+  };
+  for (const auto& [what, edit] : edits) {
+    Scene scene = richScene();
+    edit(scene);
+    writeSceneCache(cache, model, scene, {});
+    CachedScene read;
+    std::string problem;
+    EXPECT_EQ(readSceneCache(cache, model, read, &problem), SceneCacheRead::Invalid) << what;
+    EXPECT_FALSE(problem.empty()) << what;
+  }
+  writeSceneCache(cache, model, richScene(), {});
+  CachedScene read;
+  EXPECT_EQ(readSceneCache(cache, model, read), SceneCacheRead::Hit);
+}
+
+// A file with a correct checksum whose counts claim more than the file holds: refused before allocating.
+TEST(SceneCache, HandBuiltCacheWithAHugeCountIsDamaged) {
+  TempFolder dir;
+  const std::string model = dir.write("model.obj", "x");
+  const std::string cache = dir.file("model.scene");
+  for (int field = 0; field < 3; ++field) {
+    std::FILE* file = std::fopen(cache.c_str(), "wb");
+    ASSERT_TRUE(file);
+    {
+      BinaryWriter out(file);
+      out.bytes("candelaS", 8);
+      writeCacheKey(out, currentCacheKey(model, {}));
+      const uint64_t huge = uint64_t(1) << 60;
+      out.value(uint64_t(field == 0 ? huge : 0));  // warnings
+      out.string("scene");
+      out.value(uint64_t(field == 1 ? huge : 1));  // meshes
+      if (field == 2) {
+        out.string("mesh");
+        out.value(huge);  // positions
+      }
+      out.finish();
+      ASSERT_TRUE(out.ok());
+    }
+    std::fclose(file);
+    CachedScene read;
+    EXPECT_EQ(readSceneCache(cache, model, read), SceneCacheRead::Damaged) << "field " << field;
+  }
+}
+
+TEST(SceneCache, InvalidCacheIsAWarningAndIsReplaced) {
+  CachedObj obj;
+  LoadWarnings first;
+  Scene fresh = obj.load(first);
+  const std::string cache = sceneCacheFile(obj.cacheDirectory, obj.model);
+  Scene bad = fresh;
+  bad.camera.eye.x = std::numeric_limits<float>::quiet_NaN();
+  writeSceneCache(cache, obj.model, bad, {});
+  ASSERT_EQ(obj.status(), SceneCacheRead::Invalid);
+  int loads = 0;
+  LoadWarnings second;
+  Scene again = obj.load(second, &loads);
+  EXPECT_EQ(loads, 1);
+  expectSameScene(fresh, again);
+  ASSERT_FALSE(second.messages.empty());
+  EXPECT_EQ(second.messages[0].rfind(cache + ": invalid scene cache ignored (", 0), 0u) << second.messages[0];
+  EXPECT_NE(second.messages[0].find("the model is loaded afresh and cached again"), std::string::npos);
+  EXPECT_EQ(obj.status(), SceneCacheRead::Hit);
+}
+
+// A loaded scene that the cache would refuse to read back is not written (else every load would warn again).
+TEST(SceneCache, SceneTheCacheWouldRefuseIsNotWritten) {
+  CachedObj obj;
+  LoadWarnings warnings;
+  loadThroughSceneCache(obj.model, {true, obj.cacheDirectory}, warnings, [&](LoadWarnings& w) {
+    Scene s = loadObj(obj.model, w);
+    s.camera.verticalFovDegrees = 0.0f;
+    return s;
+  });
+  EXPECT_EQ(obj.status(), SceneCacheRead::Missing);
+  bool warned = false;
+  for (const std::string& m : warnings.messages) warned |= m.find("scene cache not written") != std::string::npos;
+  EXPECT_TRUE(warned);
 }
 
 TEST(SceneCache, UnwritableCacheIsAWarning) {

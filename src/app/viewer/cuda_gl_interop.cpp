@@ -66,12 +66,11 @@ std::string glString(GLenum name) {
 
 }  // namespace
 
-CudaGlInterop::CudaGlInterop(const OptixBackend& backend) : backend_(backend) {
-  const Uuid wanted = backend.deviceUuid();
+CudaGlInterop::CudaGlInterop(const DeviceImage& image, const std::string& deviceName) : image_(image) {
+  const Uuid wanted = image.deviceUuid();
   const std::vector<Uuid> uuids = openGlDeviceUuids();
   if (std::find(uuids.begin(), uuids.end(), wanted) == uuids.end())
-    throw std::runtime_error("OpenGL runs on " + glString(GL_RENDERER) + ", not on the backend's " +
-                             backend.deviceName());
+    throw std::runtime_error("OpenGL runs on " + glString(GL_RENDERER) + ", not on the backend's " + deviceName);
   glGenBuffers(1, &buffer_);
   resize(sizeof(Vec3));  // registers once now, so that a refusal shows before the first frame
 }
@@ -105,7 +104,7 @@ void CudaGlInterop::transfer(ImageDisplay& display, uint32_t width, uint32_t hei
     size_t mappedBytes = 0;
     check(cudaGraphicsResourceGetMappedPointer(&pixels, &mappedBytes, resource_), "finding the pixel buffer");
     if (mappedBytes < bytes_) throw std::runtime_error("CUDA mapped less of the pixel buffer than was allocated");
-    backend_.writeImageToDevice(static_cast<Vec3*>(pixels));
+    image_.writeImageToDevice(static_cast<Vec3*>(pixels));
   } catch (...) {
     cudaGraphicsUnmapResources(1, &resource_, nullptr);
     throw;

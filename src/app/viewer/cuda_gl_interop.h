@@ -1,12 +1,13 @@
 #pragma once
-// The OptiX backend's image to the display texture without leaving the GPU: the backend writes it into an
+// A backend's image in GPU memory to the display texture without leaving the GPU: the backend writes it into an
 // OpenGL pixel buffer registered with CUDA, and the texture is filled from that buffer.
 #include <cstddef>
 #include <cstdint>
+#include <string>
 
 #include "app/viewer/gl.h"
 #include "app/viewer/image_display.h"
-#include "backends/optix/optix_backend.h"
+#include "backends/device_image.h"
 
 struct cudaGraphicsResource;
 
@@ -15,8 +16,9 @@ namespace candela {
 class CudaGlInterop {
  public:
   // Needs a current OpenGL context. Throws std::runtime_error saying why when interop cannot work here: the
-  // context runs on another device than the backend's GPU (their UUIDs differ), or CUDA refuses the buffer.
-  explicit CudaGlInterop(const OptixBackend& backend);
+  // context runs on another device than the image's GPU (their UUIDs differ; `deviceName` names the GPU in the
+  // message), or CUDA refuses the buffer.
+  CudaGlInterop(const DeviceImage& image, const std::string& deviceName);
   ~CudaGlInterop();
   CudaGlInterop(const CudaGlInterop&) = delete;
   CudaGlInterop& operator=(const CudaGlInterop&) = delete;
@@ -28,7 +30,7 @@ class CudaGlInterop {
   void resize(size_t bytes);
   void release() noexcept;
 
-  const OptixBackend& backend_;
+  const DeviceImage& image_;
   GLuint buffer_ = 0;
   size_t bytes_ = 0;
   cudaGraphicsResource* resource_ = nullptr;

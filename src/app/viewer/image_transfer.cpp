@@ -16,28 +16,29 @@ const char* const kCopyPath = "host copy (readImage + glTexSubImage2D)";
 }  // namespace
 
 ImageTransfer::ImageTransfer(const RenderSession& session, bool allowInterop) {
-#if CANDELA_HAS_OPTIX
-  const auto* optix = dynamic_cast<const OptixBackend*>(&session.backend());
-  if (optix && !allowInterop) {
+  const Backend& backend = session.backend();
+  const DeviceImage* deviceImage = backend.deviceImage();
+  if (!deviceImage) {
+    description_ = std::string(kCopyPath) + ": the " + backend.name() + " backend renders on the host";
+    return;
+  }
+  if (!allowInterop) {
     description_ = std::string(kCopyPath) + ": interop switched off (--no-interop)";
     return;
   }
-  if (optix) {
-    try {
-      auto interop = std::make_shared<CudaGlInterop>(*optix);
-      interop_ = [interop](ImageDisplay& display, uint32_t width, uint32_t height) {
-        interop->transfer(display, width, height);
-      };
-      description_ = "CUDA-OpenGL interop (pixel buffer on the GPU)";
-      return;
-    } catch (const std::exception& e) {
-      description_ = std::string(kCopyPath) + ": no interop, " + e.what();
-      return;
-    }
+#if CANDELA_HAS_OPTIX
+  try {
+    auto interop = std::make_shared<CudaGlInterop>(*deviceImage, backend.deviceName());
+    interop_ = [interop](ImageDisplay& display, uint32_t width, uint32_t height) {
+      interop->transfer(display, width, height);
+    };
+    description_ = "CUDA-OpenGL interop (pixel buffer on the GPU)";
+  } catch (const std::exception& e) {
+    description_ = std::string(kCopyPath) + ": no interop, " + e.what();
   }
+#else
+  description_ = std::string(kCopyPath) + ": this build has no CUDA-OpenGL interop";
 #endif
-  (void)allowInterop;  // only the OptiX backend has an interop path
-  description_ = std::string(kCopyPath) + ": the " + session.backend().name() + " backend renders on the host";
 }
 
 ImageTransfer::~ImageTransfer() = default;

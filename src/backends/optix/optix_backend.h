@@ -8,15 +8,10 @@
 
 namespace candela {
 
-struct RawTraceTiming {
-  uint64_t raysPerFrame = 0;               // rays of the recorded sample, traced again by every timed launch
-  std::vector<double> deviceMilliseconds;  // one per timed launch, from CUDA events
-};
-
 // The GPU backend: OptiX traversal (one GAS per mesh under one IAS), the shared kernel's path loop in the raygen
 // program, progressive accumulation in device memory. Per launch only the launch parameters go up; the image
 // comes down in readImage().
-class OptixBackend final : public Backend {
+class OptixBackend final : public Backend, public DeviceImage {
  public:
   // Prints the GPU, driver, OptiX ABI and RT-core version on stderr. Throws std::runtime_error with one
   // sentence when there is no usable GPU (no CUDA device, no or too old a driver, no libnvoptix).
@@ -45,15 +40,14 @@ class OptixBackend final : public Backend {
   Image readAtrousDenoised(const AtrousParams& params) const override;
   Image readBilateralFiltered(const BilateralParams& params) const override;
 
-  // For consumers on the same GPU (CUDA-OpenGL interop): the CUDA device's UUID (cudaDeviceProp::uuid), and
-  // readImage's pixels written to `destination`, device memory of width * height Vec3, without leaving the GPU.
-  std::array<unsigned char, 16> deviceUuid() const;
-  void writeImageToDevice(Vec3* destination) const;
+  // The image stays on the GPU for consumers there (CUDA-OpenGL interop).
+  const DeviceImage* deviceImage() const override { return this; }
+  std::array<unsigned char, 16> deviceUuid() const override;
+  void writeImageToDevice(Vec3* destination) const override;
 
-  // The traversal ceiling for this scene and ray mix: records every ray of one sample per pixel (the next
-  // sample index; the image is left alone), then times `frames` launches, after `warmup` untimed ones, that
-  // trace exactly those rays again, in the same order per pixel, with no shading.
-  RawTraceTiming timeRawTrace(uint32_t warmup, uint32_t frames);
+  // Traces the recorded rays again in the same order per pixel.
+  bool supportsRawTrace() const override { return true; }
+  RawTraceTiming timeRawTrace(uint32_t warmup, uint32_t frames) override;
 
   // setScene keeps the GAS of every mesh whose triangles did not change (meshes with equal triangles share
   // one) and rebuilds the IAS only when an instance or a GAS changed; setMaterials rebuilds the GASes of meshes

@@ -1,8 +1,12 @@
 #include "scene/cache/cache_key.h"
 
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
+#include <xxhash.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <filesystem>
 
 namespace candela {
@@ -10,7 +14,7 @@ namespace candela {
 namespace {
 
 // Bumped whenever the layout of a cache file changes.
-constexpr uint32_t kCacheFormatVersion = 2;  // 2: textures wrap per axis; cameras; vertex colours
+constexpr uint32_t kCacheFormatVersion = 3;  // 2: textures wrap per axis, cameras, vertex colours; 3: file states
 
 std::string absolutePath(const std::string& path) {
   std::error_code ec;
@@ -22,6 +26,10 @@ void writeState(BinaryWriter& out, const FileState& s) {
   out.value(uint8_t(s.exists));
   out.value(s.size);
   out.value(s.modifiedNs);
+  out.value(s.changedNs);
+  out.value(s.inode);
+  out.value(s.device);
+  out.value(s.contentHash);
 }
 
 void readState(BinaryReader& in, FileState& s) {
@@ -29,17 +37,56 @@ void readState(BinaryReader& in, FileState& s) {
   in.value(exists);
   in.value(s.size);
   in.value(s.modifiedNs);
+  in.value(s.changedNs);
+  in.value(s.inode);
+  in.value(s.device);
+  in.value(s.contentHash);
   s.exists = exists != 0;
 }
 
-constexpr uint64_t kStateBytes = 1 + sizeof(uint64_t) + sizeof(int64_t);
+constexpr uint64_t kStateBytes = 1 + 6 * sizeof(uint64_t);
+
+int64_t nanoseconds(const timespec& t) { return int64_t(t.tv_sec) * 1000000000 + t.tv_nsec; }
+
+// XXH3 of a small file's contents; 0 when it cannot be read whole (the other fields then decide).
+uint64_t contentHash(int fd, uint64_t size) {
+  std::vector<char> bytes(size_t(size) + 1);  // a byte more than fstat said, to notice a file that grew since
+  size_t got = 0;
+  while (got < bytes.size()) {
+    const ssize_t n = ::read(fd, bytes.data() + got, bytes.size() - got);
+    if (n == 0) break;
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return 0;
+    got += size_t(n);
+  }
+  return got == size ? XXH3_64bits(bytes.data(), got) : 0;
+}
 
 }  // namespace
 
 FileState fileState(const std::string& path) {
+  // The numbers and the contents come from one open file, so that they describe the same file even when it is
+  // replaced meanwhile. A folder or a device reads no contents.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
   struct stat st;
-  if (::stat(path.c_str(), &st) != 0) return {};
-  return {true, uint64_t(st.st_size), int64_t(st.st_mtim.tv_sec) * 1000000000 + st.st_mtim.tv_nsec};
+  if (fd < 0) {
+    if (::stat(path.c_str(), &st) != 0) return {};  // missing; a file that exists but cannot be opened still counts
+  } else if (::fstat(fd, &st) != 0) {
+    ::close(fd);
+    return {};
+  }
+  FileState s;
+  s.exists = true;
+  s.size = uint64_t(st.st_size);
+  s.modifiedNs = nanoseconds(st.st_mtim);
+  s.changedNs = nanoseconds(st.st_ctim);
+  s.inode = uint64_t(st.st_ino);
+  s.device = uint64_t(st.st_dev);
+  if (fd >= 0) {
+    if (S_ISREG(st.st_mode) && s.size < kHashedFileBytes) s.contentHash = contentHash(fd, s.size);
+    ::close(fd);
+  }
+  return s;
 }
 
 CacheKey currentCacheKey(const std::string& modelPath, const std::vector<std::string>& inputFiles) {

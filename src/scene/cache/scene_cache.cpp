@@ -17,6 +17,7 @@
 
 #include "core/atomic_file.h"
 #include "scene/cache/cache_key.h"
+#include "scene/cache/cached_scene_validation.h"
 #include "scene/cache/scene_serialization.h"
 
 namespace candela {
@@ -76,7 +77,8 @@ void writeSceneCache(const std::string& cacheFile, const std::string& modelPath,
   file.commit();
 }
 
-SceneCacheRead readSceneCache(const std::string& cacheFile, const std::string& modelPath, CachedScene& out) {
+SceneCacheRead readSceneCache(const std::string& cacheFile, const std::string& modelPath, CachedScene& out,
+                              std::string* problem) {
   // Opened without blocking, so that a FIFO in its place is found not to be a regular file below.
   const int fd = ::open(cacheFile.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
   if (fd < 0) return SceneCacheRead::Missing;
@@ -100,9 +102,10 @@ SceneCacheRead readSceneCache(const std::string& cacheFile, const std::string& m
   for (std::string& w : cached.warnings) in.string(w);
   if (!readScene(in, cached.scene) || !in.checksumMatches()) return SceneCacheRead::Damaged;
   try {
-    validateScene(cached.scene);
-  } catch (const std::exception&) {
-    return SceneCacheRead::Damaged;
+    validateCachedScene(cached.scene);
+  } catch (const std::exception& e) {
+    if (problem) *problem = e.what();
+    return SceneCacheRead::Invalid;
   }
   out = std::move(cached);
   return SceneCacheRead::Hit;
@@ -114,12 +117,17 @@ Scene loadThroughSceneCache(const std::string& path, const SceneCacheSettings& s
   if (!settings.enabled || directory.empty()) return load(warnings);
   const std::string cacheFile = sceneCacheFile(directory, path);
   CachedScene cached;
-  switch (readSceneCache(cacheFile, path, cached)) {
+  std::string problem;
+  switch (readSceneCache(cacheFile, path, cached, &problem)) {
     case SceneCacheRead::Hit:
       warnings.messages.insert(warnings.messages.end(), cached.warnings.begin(), cached.warnings.end());
       return std::move(cached.scene);
     case SceneCacheRead::Damaged:
       warnings.add(cacheFile, "damaged scene cache ignored; the model is loaded afresh and cached again");
+      break;
+    case SceneCacheRead::Invalid:
+      warnings.add(cacheFile,
+                   "invalid scene cache ignored (" + problem + "); the model is loaded afresh and cached again");
       break;
     case SceneCacheRead::Missing:
     case SceneCacheRead::Stale:
@@ -130,7 +138,10 @@ Scene loadThroughSceneCache(const std::string& path, const SceneCacheSettings& s
   LoadWarnings fresh;
   Scene scene = load(fresh);
   try {
-    if (fileState(path) == before) writeSceneCache(cacheFile, path, scene, fresh.messages);
+    if (fileState(path) == before) {
+      validateCachedScene(scene);  // what the cache would refuse to read back is not written
+      writeSceneCache(cacheFile, path, scene, fresh.messages);
+    }
   } catch (const std::exception& e) {
     warnings.messages.push_back(std::string("scene cache not written: ") + e.what());
   }

@@ -37,15 +37,18 @@ enum class SceneCacheRead {
   Hit,      // `out` holds the model
   Missing,  // no cache file
   Stale,    // written by another build or format, or for files that have changed since
-  Damaged,  // truncated or corrupted: the checksum, a count or the scene's own invariants do not hold
+  Damaged,  // truncated or corrupted: the checksum or a count does not hold
+  Invalid,  // whole, but the scene it holds is not one a loader gives (validateCachedScene): a hand-built file
 };
 // Reads a cache file, checking every count against the file's size before allocating, so that no file can
-// crash the reader or make it allocate more than the file holds.
-SceneCacheRead readSceneCache(const std::string& cacheFile, const std::string& modelPath, CachedScene& out);
+// crash the reader or make it allocate more than the file holds. For Invalid, `problem` (when given) receives
+// what is wrong with the scene.
+SceneCacheRead readSceneCache(const std::string& cacheFile, const std::string& modelPath, CachedScene& out,
+                              std::string* problem = nullptr);
 
 // Loads the model at `path` from the cache when it is there and up to date (its warnings are given again),
-// else through `load`, writing the result to the cache. A damaged cache file is a warning and is replaced;
-// failing to write one is a warning too.
+// else through `load`, writing the result to the cache. A damaged or invalid cache file is a warning and is
+// replaced; failing to write one is a warning too, and so is a loaded scene that the cache would not read back.
 Scene loadThroughSceneCache(const std::string& path, const SceneCacheSettings& settings, LoadWarnings& warnings,
                             const std::function<Scene(LoadWarnings&)>& load);
 
