@@ -98,6 +98,44 @@ TEST(Atrous, RejectsBadInput) {
   EXPECT_THROW(atrousDenoise(in.color, other.aovs, AtrousParams{}), std::invalid_argument);
 }
 
+// A flat lit plane (albedo 0.7, radiance 0.7) with an 8x8 emitter of albedo zero and radiance (17, 12, 4) in it, all
+// seen directly, with no variance known (as after one sample): the emitter's light is no reflected light. Divided
+// by its zero albedo and multiplied back by the plane's, it made the plane next to it far brighter than the light.
+// Kept apart and filtered on its own, the emission is smoothed only across the emitter's edge, as the filter smooths
+// the noise of pixels that straddle an edge: the pixels on either side of the edge mix, the rest keep their values.
+TEST(AtrousEmission, ABlackEmitterDoesNotSpreadIntoItsNeighbours) {
+  const uint32_t w = 24, h = 24;
+  NoisyInput in{Image(w, h), AovImages(w, h)};
+  const Vec3 light{17, 12, 4};
+  auto inside = [](uint32_t x, uint32_t y, uint32_t margin) {
+    return x >= 8 + margin && x < 16 - margin && y >= 8 + margin && y < 16 - margin;
+  };
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x) {
+      const size_t i = size_t(y) * w + x;
+      const bool emitter = inside(x, y, 0);
+      in.color.pixels[i] = emitter ? light : Vec3{0.7f, 0.7f, 0.7f};
+      in.aovs.emission.pixels[i] = emitter ? light : Vec3{};
+      in.aovs.albedo.pixels[i] = emitter ? Vec3{} : Vec3{0.7f, 0.7f, 0.7f};
+      in.aovs.normal.pixels[i] = {0, 0, -1};
+      in.aovs.depth[i] = 1.0f;
+    }
+  const Image out = atrousDenoise(in.color, in.aovs, AtrousParams{});
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x) {
+      const float r = out.at(x, y).x;
+      const bool pastTheEdge = x + 1 >= 8 && x < 17 && y + 1 >= 8 && y < 17 && !inside(x, y, 0);
+      if (inside(x, y, 1))
+        EXPECT_NEAR(r, light.x, 0.05f * light.x) << x << ", " << y;
+      else if (inside(x, y, 0))
+        EXPECT_GT(r, 0.25f * light.x) << x << ", " << y;  // on the emitter's edge
+      else if (pastTheEdge)
+        EXPECT_LT(r, 0.7f + 1.0f) << x << ", " << y;
+      else
+        EXPECT_NEAR(r, 0.7f, 0.05f * 0.7f) << x << ", " << y;
+    }
+}
+
 TEST(Atrous, InteriorVarianceIsTheGeneralOne) {
   constexpr int w = 7, h = 5;
   std::mt19937 rng(3);
