@@ -63,9 +63,9 @@ __global__ void prepareKernel(FilmView film, Planes p, int w, int h, Signal sign
   if (x < w && y < h) {
     const size_t i = size_t(y) * w + x;
     const Vec3 emission = meanAt(film.emission, film.samples, i);
-    const Vec3 c = signal == Signal::Emission
-                       ? filterableEmission(emission)
-                       : demodulate(meanAt(film.radiance, film.samples, i), emission, meanAt(film.albedo, film.samples, i));
+    const Vec3 c = signal == Signal::Emission ? filterableEmission(emission)
+                                              : demodulate(meanAt(film.radiance, film.samples, i), emission,
+                                                           meanAt(film.albedo, film.samples, i));
     p.r[0][i] = c.x;
     p.g[0][i] = c.y;
     p.b[0][i] = c.z;
@@ -223,7 +223,8 @@ Image atrousDenoiseCuda(const Image& color, const AovImages& aovs, const AtrousP
   DeviceBuffer out(c.size(), "the filtered image");
   CudaAtrous filter(color.width, color.height);
   // Images of means: no sample counts.
-  const FilmView film{c.as<Vec3>(), emission.as<Vec3>(), nullptr, albedo.as<Vec3>(), normal.as<Vec3>(), depth.as<float>()};
+  const FilmView film{c.as<Vec3>(),      emission.as<Vec3>(), nullptr,
+                      albedo.as<Vec3>(), normal.as<Vec3>(),   depth.as<float>()};
   filter.run(film, variance.as<float>(), out.as<Vec3>(), params, nullptr);
   checkCuda(cudaStreamSynchronize(nullptr), "running the a-trous filter");
   Image result(color.width, color.height);
