@@ -168,9 +168,13 @@ TEST(AtrousHdr, AGlintDoesNotSmearIntoAHalo) {
       for (uint32_t x = 0; x < w; ++x) {
         const bool ring = x >= 15 && x <= 18 && y >= 15 && y <= 18;
         if (ring && x >= 16 && x <= 17 && y >= 16 && y <= 17) glintSum += out.at(x, y).x;
-        if (!ring) EXPECT_NEAR(out.at(x, y).x, 0.5f, 0.16f) << x << ", " << y;
+        if (!ring) {
+          EXPECT_NEAR(out.at(x, y).x, 0.5f, 0.16f) << x << ", " << y;
+        }
       }
-    if (known) EXPECT_GT(glintSum, 0.5f * 1400.0f);
+    if (known) {
+      EXPECT_GT(glintSum, 0.5f * 1400.0f);
+    }
   }
 }
 

@@ -231,8 +231,13 @@ Image atrousDenoise(const Image& color, const AovImages& aovs, const AtrousParam
   });
   tbb::parallel_for(size_t(0), pixels, [&](size_t i) { input.set(i, filterableEmission(aovs.emission.pixels[i])); });
   const RgbPlanes emission = filter(params.passes);
-  tbb::parallel_for(size_t(0), pixels, [&](size_t i) {
-    result.pixels[i] = blendWithRaw(color.pixels[i], result.pixels[i] + emission.get(i), aovs.variance[i]);
+  auto varianceAt = [&](int x, int y) { return aovs.variance[size_t(y) * w + x]; };
+  tbb::parallel_for(0, h, [&](int y) {
+    for (int x = 0; x < w; ++x) {
+      const size_t i = size_t(y) * w + x;
+      result.pixels[i] =
+          blendWithRaw(color.pixels[i], result.pixels[i] + emission.get(i), blendVariance(varianceAt, w, h, x, y));
+    }
   });
   return result;
 }

@@ -55,6 +55,30 @@ CANDELA_FN Vec3 blendWithRaw(Vec3 raw, Vec3 filtered, float variance) {
   return filtered + (raw - filtered) * rawWeight;
 }
 
+// The variance blendWithRaw takes for pixel (x, y): its own (varianceAt(x, y)), or the median of its 3x3
+// neighbourhood's inside the image where that is larger. A pixel whose few samples happened to agree (all black,
+// say) has a variance near zero and would keep its raw value, a speck in the filtered image; its neighbours'
+// median says how noisy such pixels are. A median rather than a mean, so that the large variance of the pixels
+// along an edge (an emitter's, a shadow's) does not spread to the pixels beside it.
+template <class VarianceAt>
+CANDELA_HD float blendVariance(const VarianceAt& varianceAt, int w, int h, int x, int y) {
+  const float own = varianceAt(x, y);
+  if (own < 0.0f) return own;
+  float v[9];
+  int n = 0;
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx)
+      if (x + dx >= 0 && x + dx < w && y + dy >= 0 && y + dy < h) v[n++] = varianceAt(x + dx, y + dy);
+  for (int i = 1; i < n; ++i) {  // insertion sort of at most nine
+    const float t = v[i];
+    int j = i - 1;
+    for (; j >= 0 && v[j] > t; --j) v[j + 1] = v[j];
+    v[j + 1] = t;
+  }
+  const float median = v[n / 2];
+  return median > own ? median : own;
+}
+
 // The inverse of demodulate for the filtered reflected light.
 CANDELA_FN Vec3 remodulate(Vec3 filtered, Vec3 albedo) {
   return {filtered.x * demodulationFactor(albedo.x), filtered.y * demodulationFactor(albedo.y),

@@ -138,11 +138,14 @@ __global__ void finishKernel(FilmView film, const float* imageVariance, Planes p
   const int x = int(blockIdx.x * blockDim.x + threadIdx.x), y = int(blockIdx.y * blockDim.y + threadIdx.y);
   if (x >= w || y >= h) return;
   const size_t i = size_t(y) * w + x;
-  const float variance = film.samples
-                             ? meanLuminanceVariance(film.radiance[i], film.luminanceSquares[i], film.samples[i])
-                             : imageVariance[i];
+  auto varianceAt = [&](int qx, int qy) {
+    const size_t q = size_t(qy) * w + qx;
+    return film.samples ? meanLuminanceVariance(film.radiance[q], film.luminanceSquares[q], film.samples[q])
+                        : imageVariance[q];
+  };
   const Vec3 emission{p.r[from][i], p.g[from][i], p.b[from][i]};
-  output[i] = blendWithRaw(meanAt(film.radiance, film.samples, i), output[i] + emission, variance);
+  output[i] = blendWithRaw(meanAt(film.radiance, film.samples, i), output[i] + emission,
+                           blendVariance(varianceAt, w, h, x, y));
 }
 
 // What the bilateral filter smooths at pixel i: the mean radiance without the emission, where the film has one.
