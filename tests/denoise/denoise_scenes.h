@@ -45,7 +45,7 @@ inline void addMesh(Scene& scene, Mesh mesh) {
 // The Cornell box with an 8 mm square emitter of radiance 2000 (grey albedo) hanging in the middle, facing the
 // camera: about one pixel of a 64x64 image, a hundred times brighter than the ceiling light, which it outshines as
 // a light source only a little (0.4 W against 0.55 W). (At 15 mm, 1.4 W, the room lit mostly by the one tiny light,
-// the a-trous filter's 4-sample relMSE is 3.8x below raw, short of the tests' 4x: docs/denoising.md.)
+// the a-trous filter's 4-sample relMSE was 3.8x below raw, short of the tests' 4x: docs/denoising.md.)
 inline Scene tinyBrightEmitterCornellBox() {
   Scene scene = makeCornellBox();
   scene.name = "tiny-bright-emitter";

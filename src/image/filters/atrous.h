@@ -12,9 +12,10 @@ namespace candela {
 // - apart from it, the radiance the camera sees emitted (aovs.emission: lights, emissive textures, the sky), which
 //   is no lighting of a surface: divided by an emitter's albedo (often zero) and multiplied back by its neighbours'
 //   it would spread the emitter over them. Filtered on its own it loses the noise of emitters' edges.
-// Their sum is then mixed with the raw pixel by the pixel's variance (aovs.variance, blendWithRaw in
-// atrous_kernel.h): where the filter moved a pixel by more than its noise explains, the raw value is kept, so the
-// filter's bias (smoothed shadows, highlights, edges) fades as the image converges.
+// Their sum is then mixed with the raw pixel by the pixel's variance (aovs.variance, at least its neighbourhood's
+// median: blendVariance and blendWithRaw in atrous_kernel.h): where the filter moved a pixel by more than its noise
+// explains, the raw value is kept, so the filter's bias (smoothed shadows, highlights, edges) fades as the image
+// converges.
 struct AtrousParams {
   int passes = 5;
   // Colour edge-stopping width in standard deviations of the local luminance noise, estimated in every pass
