@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <ostream>
 #include <string>
 
 #include "denoise_scenes.h"
@@ -36,6 +37,8 @@ const QualityScene kQualityScenes[] = {
     {"sun_and_sky", test::sunAndSky},
     {"glossy_floor", test::glossyFloorCornellBox},
 };
+
+void PrintTo(const QualityScene& scene, std::ostream* out) { *out << scene.name; }
 
 class DenoiseQuality : public ::testing::TestWithParam<QualityScene> {};
 
