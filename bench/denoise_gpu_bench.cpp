@@ -49,16 +49,20 @@ int main() {
     DeviceBuffer albedo = DeviceBuffer::fromVector(in.aovs.albedo.pixels, "the albedo");
     DeviceBuffer normal = DeviceBuffer::fromVector(in.aovs.normal.pixels, "the normals");
     DeviceBuffer depth = DeviceBuffer::fromVector(in.aovs.depth, "the depth");
+    DeviceBuffer emission = DeviceBuffer::fromVector(in.aovs.emission.pixels, "the emission");
+    DeviceBuffer variance = DeviceBuffer::fromVector(in.aovs.variance, "the variance");
     DeviceBuffer out(color.size(), "the output");
     cudaStream_t stream;
     checkCuda(cudaStreamCreate(&stream), "creating a CUDA stream");
     CudaAtrous atrous(w, h);
-    const DeviceFilmView film{color.as<Vec3>(), albedo.as<Vec3>(), normal.as<Vec3>(), depth.as<float>(), 1.0f};
+    // Images of means: no sample counts.
+    const FilmView film{color.as<Vec3>(),  emission.as<Vec3>(), nullptr,
+                        albedo.as<Vec3>(), normal.as<Vec3>(),   depth.as<float>()};
     AtrousParams params;
     params.passes = 5;
-    const double atrousMs = medianMilliseconds(stream, [&] { atrous.run(film, out.as<Vec3>(), params, stream); });
+    const double atrousMs = medianMilliseconds(stream, [&] { atrous.run(film, variance.as<float>(), out.as<Vec3>(), params, stream); });
     const double bilateralMs = medianMilliseconds(
-        stream, [&] { cudaBilateral(color.as<Vec3>(), 1.0f, out.as<Vec3>(), w, h, BilateralParams{}, stream); });
+        stream, [&] { cudaBilateral(film, out.as<Vec3>(), w, h, BilateralParams{}, stream); });
     std::printf("{\"filter\":\"atrous\",\"passes\":5,\"width\":%u,\"height\":%u,\"device\":\"%s\",\"median_ms\":%.4f}\n",
                 w, h, properties.name, atrousMs);
     std::printf("{\"filter\":\"bilateral\",\"radius\":3,\"width\":%u,\"height\":%u,\"device\":\"%s\",\"median_ms\":%.4f}\n",

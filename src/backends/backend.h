@@ -18,7 +18,7 @@ namespace candela {
 
 struct FrameStats {
   uint64_t rays = 0;            // camera, bounce and shadow rays traced
-  uint64_t invalidSamples = 0;  // NaN/Inf/negative path estimates dropped before the film
+  uint64_t invalidSamples = 0;  // NaN/Inf/negative path estimates, or ones that would overflow a pixel's sums
   double deviceMilliseconds = 0.0;  // GPU time of the launches (CUDA events); 0 where the backend has none
 };
 
@@ -51,6 +51,9 @@ class Backend {
   virtual uint32_t accumulatedSamples() const = 0;
   // The mean of the accumulated samples.
   virtual Image readImage() const = 0;
+  // The part of readImage() the camera sees emitted (PathResult::emitted): lights, emissive textures and the
+  // environment seen directly or through mirrors and smooth glass.
+  virtual Image readEmission() const = 0;
 
   // Whether render() also accumulates the AOVs (albedo, normal, depth at the first non-specular vertex) for
   // readAovs(). Off by default: paths then skip the code that records them. Changing it restarts the film.
@@ -66,7 +69,7 @@ class Backend {
     return atrousDenoise(readImage(), readAovs(), params);
   }
   virtual Image readBilateralFiltered(const BilateralParams& params) const {
-    return bilateralFilter(readImage(), params);
+    return bilateralFilter(readImage(), readEmission(), params);
   }
 
   // Capabilities some backends have; callers ask for them here rather than for a backend's type.

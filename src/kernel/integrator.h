@@ -14,6 +14,10 @@ namespace candela {
 
 struct PathResult {
   Vec3 radiance;
+  // The part of `radiance` that the camera sees emitted: by the first surface the path hits, by the environment it
+  // escapes to at once, or by either at the end of a chain of mirrors and smooth glass from the camera. It is no
+  // reflected light, so the denoisers keep it out of what they demodulate by the albedo and smooth.
+  Vec3 emitted;
   uint32_t rays = 0;  // camera, bounce and shadow rays traced for this path
   PathAovs aovs;      // filled only by the kWithAovs instantiations
 };
@@ -49,6 +53,7 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
   Vec3 beta{1, 1, 1};
   float etaScale = 1.0f;  // product of eta^2 over refractions: undoes their radiance scaling for roulette
   bool specularBounce = false;
+  bool cameraChain = true;  // every bounce so far was off a delta lobe: emission found now is seen directly
   float bsdfPdf = 0.0f;        // solid-angle pdf of the BSDF sample that produced `ray`
   Vec3 lastScatter = ray.origin;  // where that sample was taken
   bool aovsPending = kWithAovs;
@@ -64,6 +69,7 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
       if (!isBlack(le) && (depth > 0 || scene.environment.visibleToCamera)) {
         float w = (depth == 0 || specularBounce) ? 1.0f : powerHeuristic(bsdfPdf, environmentPdf(scene, ray.direction));
         result.radiance += beta * le * w;
+        if (cameraChain) result.emitted += beta * le;
       }
       break;
     }
@@ -90,6 +96,7 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
         w = powerHeuristic(bsdfPdf, lightPdf);
       }
       result.radiance += beta * material.emission * w;
+      if (cameraChain) result.emitted += beta * material.emission;
     }
     if (depth >= settings.maxDepth) break;
 
@@ -148,6 +155,7 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
     beta *= bs.f * (fabsf(dot(bs.wi, bsdf.normal())) / bs.pdf);
     etaScale *= bs.eta * bs.eta;
     specularBounce = bs.isDelta;
+    cameraChain = cameraChain && bs.isDelta;
     bsdfPdf = bs.pdf;
     lastScatter = si.position;
     ray = {offsetRayOrigin(si.position, si.geometricNormal, next), next, 0.0f, kInf};

@@ -67,6 +67,44 @@ TEST(Aovs, EscapedPathsSeeAWhiteEnvironmentWithNoNormalAndNoDepth) {
   }
 }
 
+// Inside a closed sphere of albedo 0.5 emitting 1, radiance is 2 everywhere, of which the camera sees 1 emitted by
+// the wall it looks at: the rest is reflected. Through a mirror (tint 0.5) the emitter seen is emitted light too
+// (0.5 x 2), while the sky that the lit card reflects is not; the sky seen directly is.
+TEST(Emission, IsWhatTheCameraSeesEmittedDirectlyOrThroughMirrors) {
+  const test::RenderWithAovs sphere = renderWithAovs(makeClosedEmissiveSphere(0.5f, 1.0f), 4, 4, 64, 1);
+  for (size_t i = 0; i < 16; ++i) {
+    EXPECT_EQ(sphere.aovs.emission.pixels[i].x, 1.0f);
+    EXPECT_NEAR(sphere.image.pixels[i].x, 2.0f, 0.3f);
+  }
+
+  Scene scene;
+  Material mirror;
+  mirror.type = MaterialType::Mirror;
+  mirror.specularColor = {0.5f, 0.5f, 0.5f};
+  Material emitter = test::diffuseMaterial({0.6f, 0.6f, 0.6f});
+  emitter.emission = {2, 2, 2};
+  scene.materials = {mirror, emitter};
+  Mesh mesh;
+  appendQuad(mesh, {-10, -10, 2}, {10, -10, 2}, {10, 10, 2}, {-10, 10, 2}, {0, 0, -1}, 0);
+  appendQuad(mesh, {-10, -10, -3}, {10, -10, -3}, {10, 10, -3}, {-10, 10, -3}, {0, 0, 1}, 1);
+  scene.meshes.push_back(std::move(mesh));
+  scene.instances.push_back({0, Affine3x4{}});
+  scene.camera.eye = {0, 0, 0};
+  scene.camera.target = {0, 0, 1};
+  scene.camera.verticalFovDegrees = 1.0f;
+  const test::RenderWithAovs mirrored = renderWithAovs(scene, 4, 4, 2, 1);
+  for (size_t i = 0; i < 16; ++i) EXPECT_EQ(mirrored.aovs.emission.pixels[i].x, 1.0f);
+
+  const test::RenderWithAovs card = renderWithAovs(test::albedoEdgeCard(0.5f, 0.5f), 8, 8, 2, 1);
+  Scene away = test::albedoEdgeCard(0.5f, 0.5f);
+  away.camera.target = {0, 0, -8};  // looking away from the card, at the sky
+  const test::RenderWithAovs sky = renderWithAovs(away, 8, 8, 2, 1);
+  for (size_t i = 0; i < 64; ++i) {
+    EXPECT_EQ(card.aovs.emission.pixels[i].x, 0.0f);
+    EXPECT_EQ(sky.aovs.emission.pixels[i].x, 1.0f);
+  }
+}
+
 TEST(Aovs, RecordingThemLeavesTheImageUnchanged) {
   const Scene scene = makeCornellBox();
   RenderSettings settings;

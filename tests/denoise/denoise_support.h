@@ -12,19 +12,32 @@ struct RenderWithAovs {
   AovImages aovs;
 };
 
+// A CPU render with AOVs, read as it accumulates.
+class ProgressiveRender {
+ public:
+  ProgressiveRender(const Scene& scene, uint32_t width, uint32_t height, uint32_t seed) {
+    RenderSettings settings;
+    settings.width = width;
+    settings.height = height;
+    settings.seed = seed;
+    backend_.setScene(scene);
+    backend_.setSettings(settings);
+    backend_.setAovsEnabled(true);
+    backend_.setCamera(scene.camera.toCamera(float(width) / float(height)));
+  }
+  // Renders until every pixel has `spp` samples (no fewer than it has already) and reads the image.
+  RenderWithAovs renderUpTo(uint32_t spp) {
+    if (spp > backend_.accumulatedSamples()) backend_.render(spp - backend_.accumulatedSamples());
+    return {backend_.readImage(), backend_.readAovs()};
+  }
+
+ private:
+  CpuBackend backend_;
+};
+
 inline RenderWithAovs renderWithAovs(const Scene& scene, uint32_t width, uint32_t height, uint32_t spp,
                                      uint32_t seed) {
-  RenderSettings settings;
-  settings.width = width;
-  settings.height = height;
-  settings.seed = seed;
-  CpuBackend backend;
-  backend.setScene(scene);
-  backend.setSettings(settings);
-  backend.setAovsEnabled(true);
-  backend.setCamera(scene.camera.toCamera(float(width) / float(height)));
-  backend.render(spp);
-  return {backend.readImage(), backend.readAovs()};
+  return ProgressiveRender(scene, width, height, seed).renderUpTo(spp);
 }
 
 // Mean over pixels and channels of (x - ref)^2 / (ref^2 + 1e-2).

@@ -103,8 +103,21 @@ TEST(OptixFiltering, FiltersTheFilmOnTheDevice) {
   const AovImages aovs = gpu->readAovs();
   EXPECT_LE(worstRelativeError(gpu->readAtrousDenoised(AtrousParams{}), atrousDenoise(image, aovs, AtrousParams{})),
             kTolerance);
-  EXPECT_LE(worstRelativeError(gpu->readBilateralFiltered(BilateralParams{}), bilateralFilter(image, BilateralParams{})),
+  EXPECT_LE(worstRelativeError(gpu->readBilateralFiltered(BilateralParams{}),
+                               bilateralFilter(image, gpu->readEmission(), BilateralParams{})),
             kTolerance);
+}
+
+// A closed sphere of albedo 0 emitting 2e38 inside: every sample is finite, any two sum to infinity. The OptiX
+// film keeps one sample per pixel and drops and counts the other three, as the CPU film does; the image stays
+// finite, and so does the a-trous filter's output on the device.
+TEST(OptixFilm, DropsAndCountsSamplesThatWouldOverflow) {
+  auto gpu = test::makeBackend<OptixBackend>(makeClosedEmissiveSphere(0.0f, 2e38f), test::squareImage(8, 1));
+  gpu->setAovsEnabled(true);
+  EXPECT_EQ(gpu->render(4).invalidSamples, 3u * 64u);
+  for (const Vec3& p : gpu->readImage().pixels) EXPECT_FLOAT_EQ(p.x, 2e38f);
+  // The filter clamps values above 1e18 (kMaxFilteredValue) but keeps them finite.
+  for (const Vec3& p : gpu->readAtrousDenoised(AtrousParams{}).pixels) EXPECT_TRUE(isFinite(p));
 }
 
 }  // namespace

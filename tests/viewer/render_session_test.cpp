@@ -59,6 +59,7 @@ class RecordingBackend final : public Backend {
   }
   uint32_t accumulatedSamples() const override { return log_.accumulated; }
   Image readImage() const override { return {}; }
+  Image readEmission() const override { return {}; }
   void setAovsEnabled(bool enabled) override {
     aovs_ = enabled;
     restart();

@@ -9,7 +9,7 @@
 #include <stdexcept>
 
 #include "backends/cpu/embree_tracer.h"
-#include "kernel/integrator.h"
+#include "kernel/film_accumulation.h"
 
 namespace candela {
 
@@ -70,11 +70,7 @@ void CpuBackend::setAovsEnabled(bool enabled) {
 }
 
 void CpuBackend::restart() {
-  const size_t pixels = size_t(settings_.width) * settings_.height;
-  sum_.assign(pixels, Vec3{});
-  albedoSum_.assign(aovsEnabled_ ? pixels : 0, Vec3{});
-  normalSum_.assign(aovsEnabled_ ? pixels : 0, Vec3{});
-  depthSum_.assign(aovsEnabled_ ? pixels : 0, 0.0f);
+  film_.reset(settings_.width, settings_.height, aovsEnabled_);
   accumulated_ = 0;
 }
 
@@ -87,6 +83,7 @@ FrameStats CpuBackend::renderSamples(uint32_t samplesPerPixel) {
   const SceneView scene = flat_.hostView();
   const EmbreeTracer tracer(embree_.topLevel(), scene);
   const uint32_t firstSample = accumulated_;
+  const FilmView film = film_.view();
   tbb::combinable<FrameStats> stats;
   tbb::parallel_for(
       tbb::blocked_range2d<uint32_t>(0, settings_.height, kTileSize, 0, settings_.width, kTileSize),
@@ -94,29 +91,12 @@ FrameStats CpuBackend::renderSamples(uint32_t samplesPerPixel) {
         FrameStats& local = stats.local();
         for (uint32_t y = tile.rows().begin(); y < tile.rows().end(); ++y)
           for (uint32_t x = tile.cols().begin(); x < tile.cols().end(); ++x) {
-            Vec3 pixelSum{};
-            PathAovs aovSum;
-            for (uint32_t s = 0; s < samplesPerPixel; ++s) {
-              PathResult path =
-                  renderPixelSample<kWithAovs>(scene, tracer, camera_, settings_, x, y, firstSample + s);
-              local.rays += path.rays;
-              if (isValidSample(path.radiance))
-                pixelSum += path.radiance;
-              else
-                ++local.invalidSamples;
-              if constexpr (kWithAovs) {
-                aovSum.albedo += path.aovs.albedo;
-                aovSum.normal += path.aovs.normal;
-                aovSum.depth += path.aovs.depth;
-              }
-            }
-            const size_t pixel = size_t(y) * settings_.width + x;
-            sum_[pixel] += pixelSum;
-            if constexpr (kWithAovs) {
-              albedoSum_[pixel] += aovSum.albedo;
-              normalSum_[pixel] += aovSum.normal;
-              depthSum_[pixel] += aovSum.depth;
-            }
+            const PixelTally tally = accumulatePixel<kWithAovs>(
+                film, size_t(y) * settings_.width + x, samplesPerPixel, [&](uint32_t s) {
+                  return renderPixelSample<kWithAovs>(scene, tracer, camera_, settings_, x, y, firstSample + s);
+                });
+            local.rays += tally.rays;
+            local.invalidSamples += tally.invalidSamples;
           }
       });
   accumulated_ += samplesPerPixel;
@@ -128,23 +108,9 @@ FrameStats CpuBackend::renderSamples(uint32_t samplesPerPixel) {
   return total;
 }
 
-Image CpuBackend::readImage() const {
-  Image image(settings_.width, settings_.height);
-  float scale = accumulated_ > 0 ? 1.0f / float(accumulated_) : 0.0f;
-  for (size_t i = 0; i < sum_.size(); ++i) image.pixels[i] = sum_[i] * scale;
-  return image;
-}
-
 AovImages CpuBackend::readAovs() const {
   if (!aovsEnabled_) throw std::logic_error("CpuBackend::readAovs without setAovsEnabled(true)");
-  AovImages aovs(settings_.width, settings_.height);
-  float scale = accumulated_ > 0 ? 1.0f / float(accumulated_) : 0.0f;
-  for (size_t i = 0; i < sum_.size(); ++i) {
-    aovs.albedo.pixels[i] = albedoSum_[i] * scale;
-    aovs.normal.pixels[i] = normalSum_[i] * scale;
-    aovs.depth[i] = depthSum_[i] * scale;
-  }
-  return aovs;
+  return film_.readAovs();
 }
 
 }  // namespace candela

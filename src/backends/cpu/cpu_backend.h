@@ -3,6 +3,7 @@
 
 #include "backends/backend.h"
 #include "backends/cpu/embree_scene.h"
+#include "backends/cpu/host_film.h"
 #include "scene/flat_scene.h"
 
 namespace candela {
@@ -23,7 +24,8 @@ class CpuBackend final : public Backend {
 
   FrameStats render(uint32_t samplesPerPixel) override;
   uint32_t accumulatedSamples() const override { return accumulated_; }
-  Image readImage() const override;
+  Image readImage() const override { return film_.readImage(); }
+  Image readEmission() const override { return film_.readEmission(); }
   void setAovsEnabled(bool enabled) override;
   bool aovsEnabled() const override { return aovsEnabled_; }
   AovImages readAovs() const override;
@@ -37,10 +39,8 @@ class CpuBackend final : public Backend {
   EmbreeScene embree_;
   Camera camera_;
   RenderSettings settings_;
-  std::vector<Vec3> sum_;
   bool aovsEnabled_ = false;
-  std::vector<Vec3> albedoSum_, normalSum_;  // empty while the AOVs are off
-  std::vector<float> depthSum_;
+  HostFilm film_;
   uint32_t accumulated_ = 0;
 };
 

@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "kernel/camera.h"
+#include "kernel/film.h"
 #include "kernel/render_settings.h"
 #include "kernel/scene_view.h"
 
@@ -50,13 +51,6 @@ struct RayRecording {
   uint32_t slotsPerPixel = 0;
 };
 
-// Per-pixel sums of the AOVs (kernel/aovs.h), filled by the AOV raygen program.
-struct AovAccumulation {
-  Vec3* albedo = nullptr;
-  Vec3* normal = nullptr;
-  float* depth = nullptr;
-};
-
 struct LaunchParameters {
   SceneView scene;
   Camera camera;
@@ -64,8 +58,7 @@ struct LaunchParameters {
   OptixTraversableHandle traversable = 0;
   uint32_t firstSample = 0;      // sample index of this launch's first sample in every pixel
   uint32_t samplesPerPixel = 0;  // samples each pixel takes in this launch
-  Vec3* accumulation = nullptr;  // per pixel: sum of the valid samples so far
-  AovAccumulation aovs;          // null pointers unless the AOVs are enabled
+  FilmView film;                 // its AOV pointers are null unless the AOVs are enabled
   PixelCounters* counters = nullptr;
   RayRecording recording;
   const uint32_t* batchInstances = nullptr;  // kMaxBatchInputs per batch: the instance id of each build input

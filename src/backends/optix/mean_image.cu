@@ -4,17 +4,17 @@ namespace candela::optix {
 
 namespace {
 
-__global__ void scalePixels(const Vec3* sum, uint32_t count, float scale, Vec3* mean) {
+__global__ void meanPixels(FilmView film, uint32_t count, Vec3* mean) {
   const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
-  if (i < count) mean[i] = sum[i] * scale;
+  if (i < count) mean[i] = filmMean(film.radiance[i], film.samples[i]);
 }
 
 }  // namespace
 
-void writeMeanImage(const Vec3* sum, uint32_t count, float scale, Vec3* mean, cudaStream_t stream) {
+void writeMeanImage(const FilmView& film, uint32_t count, Vec3* mean, cudaStream_t stream) {
   constexpr uint32_t kBlock = 256;
   if (count == 0) return;
-  scalePixels<<<(count + kBlock - 1) / kBlock, kBlock, 0, stream>>>(sum, count, scale, mean);
+  meanPixels<<<(count + kBlock - 1) / kBlock, kBlock, 0, stream>>>(film, count, mean);
 }
 
 }  // namespace candela::optix

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "backends/optix/acceleration.h"
+#include "backends/optix/device_film.h"
 #include "backends/optix/device_scene.h"
 #include "backends/optix/filters/cuda_filters.h"
 #include "backends/optix/launch_params.h"
@@ -74,9 +75,8 @@ struct OptixBackend::State {
   Camera camera;
   RenderSettings settings;
 
-  DeviceBuffer accumulation;
   bool aovsEnabled = false;
-  DeviceBuffer albedoSum, normalSum, depthSum;  // empty while the AOVs are off
+  DeviceFilm film;
   std::unique_ptr<CudaAtrous> atrous;           // made at the first a-trous read, for the image's size
   DeviceBuffer filtered;                        // the filters' output
   DeviceBuffer counters;
@@ -95,8 +95,7 @@ struct OptixBackend::State {
     p.traversable = acceleration.topLevel();
     p.batchInstances = acceleration.batchInstances();
     p.firstBatchId = acceleration.firstBatchId();
-    p.accumulation = accumulation.as<Vec3>();
-    p.aovs = {albedoSum.as<Vec3>(), normalSum.as<Vec3>(), depthSum.as<float>()};
+    p.film = film.view();
     p.counters = counters.as<PixelCounters>();
     return p;
   }
@@ -128,41 +127,26 @@ struct OptixBackend::State {
     return result;
   }
 
-  // Film buffers of the current size: the colour sums always, the AOV sums while they are enabled.
+  // The film and the per-pixel counters for the current size; the film with AOV sums while they are enabled.
   void allocateFilm() {
-    const size_t pixels = pixelCount();
-    if (accumulation.size() != pixels * sizeof(Vec3)) {
-      accumulation = DeviceBuffer();
+    film.resize(settings.width, settings.height, aovsEnabled);
+    const size_t counterBytes = size_t(pixelCount()) * sizeof(PixelCounters);
+    if (counters.size() != counterBytes) {
       counters = DeviceBuffer();
-      accumulation = DeviceBuffer(pixels * sizeof(Vec3), "the accumulation buffer");
-      counters = DeviceBuffer(pixels * sizeof(PixelCounters), "the per-pixel counters");
-    }
-    const size_t aovPixels = aovsEnabled ? pixels : 0;
-    if (albedoSum.size() != aovPixels * sizeof(Vec3)) {
-      albedoSum = DeviceBuffer();
-      normalSum = DeviceBuffer();
-      depthSum = DeviceBuffer();
-      if (aovPixels > 0) {
-        albedoSum = DeviceBuffer(aovPixels * sizeof(Vec3), "the albedo AOV");
-        normalSum = DeviceBuffer(aovPixels * sizeof(Vec3), "the normal AOV");
-        depthSum = DeviceBuffer(aovPixels * sizeof(float), "the depth AOV");
-      }
+      counters = DeviceBuffer(counterBytes, "the per-pixel counters");
     }
   }
 
   void restart() {
     accumulated = 0;
-    for (DeviceBuffer* b : {&accumulation, &albedoSum, &normalSum, &depthSum})
-      if (b->size() > 0)
-        checkCuda(cudaMemsetAsync(b->as<void>(), 0, b->size(), context.stream()), "clearing the film");
+    film.clear(context.stream());
   }
 
-  float meanScale() const { return accumulated > 0 ? 1.0f / float(accumulated) : 0.0f; }
-
   Vec3* filterOutput() {
-    if (filtered.size() != accumulation.size()) {
+    const size_t bytes = size_t(pixelCount()) * sizeof(Vec3);
+    if (filtered.size() != bytes) {
       filtered = DeviceBuffer();
-      filtered = DeviceBuffer(accumulation.size(), "the filtered image");
+      filtered = DeviceBuffer(bytes, "the filtered image");
     }
     return filtered.as<Vec3>();
   }
@@ -253,14 +237,9 @@ FrameStats OptixBackend::render(uint32_t samplesPerPixel) {
 
 uint32_t OptixBackend::accumulatedSamples() const { return state_->accumulated; }
 
-Image OptixBackend::readImage() const {
-  const State& s = *state_;
-  Image image(s.settings.width, s.settings.height);
-  s.accumulation.download(image.pixels.data(), image.pixels.size() * sizeof(Vec3));
-  float scale = s.accumulated > 0 ? 1.0f / float(s.accumulated) : 0.0f;
-  for (Vec3& p : image.pixels) p = p * scale;
-  return image;
-}
+Image OptixBackend::readImage() const { return state_->film.readImage(); }
+
+Image OptixBackend::readEmission() const { return state_->film.readEmission(); }
 
 void OptixBackend::setAovsEnabled(bool enabled) {
   state_->aovsEnabled = enabled;
@@ -273,17 +252,7 @@ bool OptixBackend::aovsEnabled() const { return state_->aovsEnabled; }
 AovImages OptixBackend::readAovs() const {
   const State& s = *state_;
   if (!s.aovsEnabled) throw std::logic_error("OptixBackend::readAovs without setAovsEnabled(true)");
-  AovImages aovs(s.settings.width, s.settings.height);
-  s.albedoSum.download(aovs.albedo.pixels.data(), s.albedoSum.size());
-  s.normalSum.download(aovs.normal.pixels.data(), s.normalSum.size());
-  s.depthSum.download(aovs.depth.data(), s.depthSum.size());
-  const float scale = s.meanScale();
-  for (size_t i = 0; i < aovs.depth.size(); ++i) {
-    aovs.albedo.pixels[i] = aovs.albedo.pixels[i] * scale;
-    aovs.normal.pixels[i] = aovs.normal.pixels[i] * scale;
-    aovs.depth[i] = aovs.depth[i] * scale;
-  }
-  return aovs;
+  return s.film.readAovs();
 }
 
 Image OptixBackend::readAtrousDenoised(const AtrousParams& params) const {
@@ -294,17 +263,14 @@ Image OptixBackend::readAtrousDenoised(const AtrousParams& params) const {
     s.atrous.reset();
     s.atrous = std::make_unique<CudaAtrous>(s.settings.width, s.settings.height);
   }
-  const DeviceFilmView film{s.accumulation.as<Vec3>(), s.albedoSum.as<Vec3>(), s.normalSum.as<Vec3>(),
-                            s.depthSum.as<float>(), s.meanScale()};
-  s.atrous->run(film, s.filterOutput(), params, s.context.stream());
+  s.atrous->run(s.film.view(), nullptr, s.filterOutput(), params, s.context.stream());
   return s.downloadFiltered();
 }
 
 Image OptixBackend::readBilateralFiltered(const BilateralParams& params) const {
   State& s = *state_;
   validateBilateralParams(params);
-  cudaBilateral(s.accumulation.as<Vec3>(), s.meanScale(), s.filterOutput(), s.settings.width, s.settings.height,
-                params, s.context.stream());
+  cudaBilateral(s.film.view(), s.filterOutput(), s.settings.width, s.settings.height, params, s.context.stream());
   return s.downloadFiltered();
 }
 
@@ -318,8 +284,7 @@ std::array<unsigned char, 16> OptixBackend::deviceUuid() const {
 
 void OptixBackend::writeImageToDevice(Vec3* destination) const {
   const State& s = *state_;
-  float scale = s.accumulated > 0 ? 1.0f / float(s.accumulated) : 0.0f;
-  writeMeanImage(s.accumulation.as<const Vec3>(), s.pixelCount(), scale, destination, s.context.stream());
+  writeMeanImage(s.film.view(), s.pixelCount(), destination, s.context.stream());
   checkCuda(cudaGetLastError(), "launching the image copy");
   checkCuda(cudaStreamSynchronize(s.context.stream()), "copying the image on the device");
 }

@@ -33,6 +33,7 @@ class OptixBackend final : public Backend, public DeviceImage {
   FrameStats render(uint32_t samplesPerPixel) override;
   uint32_t accumulatedSamples() const override;
   Image readImage() const override;
+  Image readEmission() const override;
   void setAovsEnabled(bool enabled) override;
   bool aovsEnabled() const override;
   AovImages readAovs() const override;

@@ -202,7 +202,8 @@ void validateAtrousInput(const Image& color, const AovImages& aovs, const Atrous
   validateAtrousParams(params);
   const uint32_t w = color.width, h = color.height;
   if (aovs.albedo.width != w || aovs.albedo.height != h || aovs.normal.width != w || aovs.normal.height != h ||
-      aovs.depth.size() != size_t(w) * h)
+      aovs.emission.width != w || aovs.emission.height != h || aovs.depth.size() != size_t(w) * h ||
+      aovs.variance.size() != size_t(w) * h)
     throw std::invalid_argument("the a-trous filter's AOVs differ in size from the image");
 }
 
@@ -212,21 +213,31 @@ Image atrousDenoise(const Image& color, const AovImages& aovs, const AtrousParam
   const size_t pixels = color.pixels.size();
   Planes planes(pixels);
   fillGuides(aovs, planes);
-  const RgbPlanes demodulated = planes.colour(0);
+  // Runs `passes` passes on planes.colour(0) and returns the planes that hold the result.
+  auto filter = [&](int passes) {
+    const float mean = meanLuminance(planes.colour(0), pixels);
+    for (int pass = 0; pass < passes; ++pass)
+      atrousPass(planes, pass % 2, w, h, atrousPassConstants(params, pass), params.colorSigma, mean);
+    return planes.colour(passes % 2);
+  };
+  const RgbPlanes input = planes.colour(0);
   tbb::parallel_for(size_t(0), pixels, [&](size_t i) {
-    const Vec3 c = color.pixels[i], albedo = aovs.albedo.pixels[i];
-    demodulated.set(i, {c.x / demodulationFactor(albedo.x), c.y / demodulationFactor(albedo.y),
-                        c.z / demodulationFactor(albedo.z)});
+    input.set(i, demodulate(color.pixels[i], aovs.emission.pixels[i], aovs.albedo.pixels[i]));
   });
-  const float mean = meanLuminance(demodulated, pixels);
-  for (int pass = 0; pass < params.passes; ++pass)
-    atrousPass(planes, pass % 2, w, h, atrousPassConstants(params, pass), params.colorSigma, mean);
-  const RgbPlanes filtered = planes.colour(params.passes % 2);
+  const RgbPlanes reflected = filter(params.passes);
   Image result(color.width, color.height);
   tbb::parallel_for(size_t(0), pixels, [&](size_t i) {
-    const Vec3 albedo = aovs.albedo.pixels[i], c = filtered.get(i);
-    result.pixels[i] = {c.x * demodulationFactor(albedo.x), c.y * demodulationFactor(albedo.y),
-                        c.z * demodulationFactor(albedo.z)};
+    result.pixels[i] = remodulate(reflected.get(i), aovs.albedo.pixels[i]);
+  });
+  tbb::parallel_for(size_t(0), pixels, [&](size_t i) { input.set(i, filterableEmission(aovs.emission.pixels[i])); });
+  const RgbPlanes emission = filter(params.passes);
+  auto varianceAt = [&](int x, int y) { return aovs.variance[size_t(y) * w + x]; };
+  tbb::parallel_for(0, h, [&](int y) {
+    for (int x = 0; x < w; ++x) {
+      const size_t i = size_t(y) * w + x;
+      result.pixels[i] =
+          blendWithRaw(color.pixels[i], result.pixels[i] + emission.get(i), blendVariance(varianceAt, w, h, x, y));
+    }
   });
   return result;
 }

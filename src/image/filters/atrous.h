@@ -6,8 +6,16 @@ namespace candela {
 
 // Edge-avoiding a-trous wavelet filter (Dammertz et al. 2010), the spatial part of SVGF: `passes` passes of the
 // 5x5 B3-spline kernel with holes of 2^i pixels, each tap weighted down by its difference from the centre in
-// colour, normal and depth. The colour is filtered demodulated by the albedo (texture detail is not noise) and
-// remodulated after, so only the lighting is smoothed. The colour weight compares luminance.
+// colour, normal and depth. The colour weight compares luminance. What is filtered:
+// - the reflected light, demodulated by the albedo (texture detail is not noise) and remodulated after, so only the
+//   lighting is smoothed;
+// - apart from it, the radiance the camera sees emitted (aovs.emission: lights, emissive textures, the sky), which
+//   is no lighting of a surface: divided by an emitter's albedo (often zero) and multiplied back by its neighbours'
+//   it would spread the emitter over them. Filtered on its own it loses the noise of emitters' edges.
+// Their sum is then mixed with the raw pixel by the pixel's variance (aovs.variance, at least its neighbourhood's
+// median: blendVariance and blendWithRaw in atrous_kernel.h): where the filter moved a pixel by more than its noise
+// explains, the raw value is kept, so the filter's bias (smoothed shadows, highlights, edges) fades as the image
+// converges.
 struct AtrousParams {
   int passes = 5;
   // Colour edge-stopping width in standard deviations of the local luminance noise, estimated in every pass
@@ -23,7 +31,7 @@ constexpr int kMaxAtrousPasses = 10;
 // Throws std::invalid_argument for a pass count outside [0, kMaxAtrousPasses] or a sigma that is not positive.
 void validateAtrousParams(const AtrousParams& params);
 
-// Throws std::invalid_argument for bad params or AOVs of another size than the image.
+// Throws std::invalid_argument for bad params or AOVs (emission included) of another size than the image.
 void validateAtrousInput(const Image& color, const AovImages& aovs, const AtrousParams& params);
 Image atrousDenoise(const Image& color, const AovImages& aovs, const AtrousParams& params);
 

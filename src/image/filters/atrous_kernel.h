@@ -16,6 +16,75 @@ CANDELA_FN float demodulationFactor(float albedo) {
   return albedo > kMinDemodulationAlbedo ? albedo : kMinDemodulationAlbedo;
 }
 
+// The largest value the filters work with: larger ones (finite, but absurd for radiance) are clamped to it, so that
+// the squares of luminances and the sums of weighted taps stay finite and finite input never turns into NaN.
+constexpr float kMaxFilteredValue = 1e18f;
+
+// What the a-trous filter smooths at a pixel of mean radiance `color`, of which `emission` is seen emitted: the
+// reflected rest, divided by the albedo. Emitted light is no lighting of the surface; divided by an emitter's
+// albedo (often zero) and multiplied back by its neighbours' it would spread the emitter over them.
+CANDELA_FN Vec3 demodulate(Vec3 color, Vec3 emission, Vec3 albedo) {
+  auto channel = [](float c, float e, float a) {
+    const float reflected = c - e > 0.0f ? c - e : 0.0f;  // rounding can leave it slightly negative
+    return fminf(reflected / demodulationFactor(a), kMaxFilteredValue);
+  };
+  return {channel(color.x, emission.x, albedo.x), channel(color.y, emission.y, albedo.y),
+          channel(color.z, emission.z, albedo.z)};
+}
+
+// The emission as the filter smooths it, in passes of its own: not demodulated (an emitter's albedo says nothing
+// about its light), clamped like the rest. Its noise is at edges: pixels that straddle an emitter's edge see it with
+// some samples and miss it with others.
+CANDELA_FN Vec3 filterableEmission(Vec3 e) {
+  return {fminf(e.x, kMaxFilteredValue), fminf(e.y, kMaxFilteredValue), fminf(e.z, kMaxFilteredValue)};
+}
+
+// The filtered pixel (reflected and emitted light), mixed with the raw one by the estimate of the mix's squared
+// error: the filtered value is taken as noise-free but biased (a shadow or highlight smoothed, an emitter's edge
+// spread), the raw one as unbiased with the variance of its mean luminance. The bias^2 is estimated as
+// (difference of their luminances)^2 - variance; the mix that minimises bias^2 (1 - t)^2 + variance t^2 takes the
+// raw value with weight t = bias^2 / (bias^2 + variance). So where a pixel has converged, or the filter moved it by
+// more than its noise explains, the raw value stays; where it is noisy, the filtered one. Where the variance is not
+// known (one sample), the filtered value is taken.
+CANDELA_FN Vec3 blendWithRaw(Vec3 raw, Vec3 filtered, float variance) {
+  if (variance < 0.0f) return filtered;
+  const float d = fminf(fabsf(luminance(filtered) - luminance(raw)), kMaxFilteredValue);
+  const float bias2 = d * d > variance ? d * d - variance : 0.0f;
+  const float total = bias2 + variance;
+  const float rawWeight = total > 0.0f ? bias2 / total : 0.0f;
+  return filtered + (raw - filtered) * rawWeight;
+}
+
+// The variance blendWithRaw takes for pixel (x, y): its own (varianceAt(x, y)), or the median of its 3x3
+// neighbourhood's inside the image where that is larger. A pixel whose few samples happened to agree (all black,
+// say) has a variance near zero and would keep its raw value, a speck in the filtered image; its neighbours'
+// median says how noisy such pixels are. A median rather than a mean, so that the large variance of the pixels
+// along an edge (an emitter's, a shadow's) does not spread to the pixels beside it.
+template <class VarianceAt>
+CANDELA_HD float blendVariance(const VarianceAt& varianceAt, int w, int h, int x, int y) {
+  const float own = varianceAt(x, y);
+  if (own < 0.0f) return own;
+  float v[9];
+  int n = 0;
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx)
+      if (x + dx >= 0 && x + dx < w && y + dy >= 0 && y + dy < h) v[n++] = varianceAt(x + dx, y + dy);
+  for (int i = 1; i < n; ++i) {  // insertion sort of at most nine
+    const float t = v[i];
+    int j = i - 1;
+    for (; j >= 0 && v[j] > t; --j) v[j + 1] = v[j];
+    v[j + 1] = t;
+  }
+  const float median = v[n / 2];
+  return median > own ? median : own;
+}
+
+// The inverse of demodulate for the filtered reflected light.
+CANDELA_FN Vec3 remodulate(Vec3 filtered, Vec3 albedo) {
+  return {filtered.x * demodulationFactor(albedo.x), filtered.y * demodulationFactor(albedo.y),
+          filtered.z * demodulationFactor(albedo.z)};
+}
+
 CANDELA_FN Vec3 unitOrZero(Vec3 n) {
   const float len = sqrtf(dot(n, n));
   return len > 0.0f ? n / len : Vec3{0, 0, 0};

@@ -54,7 +54,7 @@ Image bilateralFilter(const Image& input, const BilateralParams& params) {
   const size_t pixels = input.pixels.size();
   PlaneStack planes(3, pixels);
   const RgbPlanes in{planes[0], planes[1], planes[2]};
-  for (size_t i = 0; i < pixels; ++i) in.set(i, input.pixels[i]);
+  for (size_t i = 0; i < pixels; ++i) in.set(i, bilateralInput(input.pixels[i]));
   Image output(input.width, input.height);
   tbb::parallel_for(tbb::blocked_range<int>(0, h), [&](const tbb::blocked_range<int>& rows) {
     RowSums sums(input.width);
@@ -72,6 +72,17 @@ Image bilateralFilter(const Image& input, const BilateralParams& params) {
       for (int x = 0; x < w; ++x) output.pixels[row + x] = Vec3{sums.r[x], sums.g[x], sums.b[x]} / sums.weight[x];
     }
   });
+  return output;
+}
+
+Image bilateralFilter(const Image& input, const Image& emission, const BilateralParams& params) {
+  if (emission.width != input.width || emission.height != input.height)
+    throw std::invalid_argument("the bilateral filter's emission differs in size from the image");
+  Image reflected(input.width, input.height);
+  for (size_t i = 0; i < input.pixels.size(); ++i)
+    reflected.pixels[i] = bilateralReflected(input.pixels[i], emission.pixels[i]);
+  Image output = bilateralFilter(reflected, params);
+  for (size_t i = 0; i < output.pixels.size(); ++i) output.pixels[i] += emission.pixels[i];
   return output;
 }
 

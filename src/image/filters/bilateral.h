@@ -15,6 +15,11 @@ struct BilateralParams {
 // Throws std::invalid_argument when radius is outside [0, kMaxBilateralRadius] or a sigma is not positive.
 Image bilateralFilter(const Image& input, const BilateralParams& params);
 
+// The filter on the part of `input` that is not `emission` (the radiance the camera sees emitted, an image of the
+// same size), with `emission` added back after: emitters are not smoothed into their surroundings. Throws
+// std::invalid_argument as above, or when the sizes differ.
+Image bilateralFilter(const Image& input, const Image& emission, const BilateralParams& params);
+
 constexpr int kMaxBilateralRadius = 32;
 
 // The range checks of bilateralFilter, for the other implementations of the same filter.

@@ -4,7 +4,7 @@
 
 #include "backends/optix/device/optix_tracer.h"
 #include "backends/optix/launch_params.h"
-#include "kernel/integrator.h"
+#include "kernel/film_accumulation.h"
 
 using namespace candela;
 using namespace candela::optix;
@@ -25,37 +25,19 @@ __device__ OptixTracer sceneTracer() { return OptixTracer(params.traversable, pa
 
 }  // namespace
 
-// Adds `samplesPerPixel` path samples to the pixel's sum; NaN/Inf/negative samples are dropped and counted.
-// With kWithAovs the AOVs of every sample are added to their sums too.
+// Adds `samplesPerPixel` path samples to the pixel's sums in the film (kernel/film_accumulation.h), which drops and
+// counts invalid ones; with kWithAovs the AOVs too.
 template <bool kWithAovs>
 __device__ void renderPixel() {
   const uint3 index = optixGetLaunchIndex();
   const uint32_t pixel = launchPixel();
   const OptixTracer tracer = sceneTracer();
-  Vec3 sum{};
-  PathAovs aovSum;
-  uint32_t rays = 0, invalid = 0;
-  for (uint32_t s = 0; s < params.samplesPerPixel; ++s) {
-    PathResult path = renderPixelSample<kWithAovs>(params.scene, tracer, params.camera, params.settings, index.x,
-                                                   index.y, params.firstSample + s);
-    rays += path.rays;
-    if (isValidSample(path.radiance))
-      sum += path.radiance;
-    else
-      ++invalid;
-    if (kWithAovs) {
-      aovSum.albedo += path.aovs.albedo;
-      aovSum.normal += path.aovs.normal;
-      aovSum.depth += path.aovs.depth;
-    }
-  }
-  params.accumulation[pixel] += sum;
-  if (kWithAovs) {
-    params.aovs.albedo[pixel] += aovSum.albedo;
-    params.aovs.normal[pixel] += aovSum.normal;
-    params.aovs.depth[pixel] += aovSum.depth;
-  }
-  params.counters[pixel] = {rays, invalid};
+  const PixelTally tally =
+      accumulatePixel<kWithAovs>(params.film, pixel, params.samplesPerPixel, [&](uint32_t s) {
+        return renderPixelSample<kWithAovs>(params.scene, tracer, params.camera, params.settings, index.x, index.y,
+                                            params.firstSample + s);
+      });
+  params.counters[pixel] = {tally.rays, tally.invalidSamples};
 }
 
 extern "C" __global__ void __raygen__render() { renderPixel<false>(); }

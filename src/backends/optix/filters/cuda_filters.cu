@@ -48,25 +48,33 @@ Planes planesOf(float* base, size_t pixels) {
   return p;
 }
 
-__device__ float filmDepth(const DeviceFilmView& film, int x, int y, int w, int h) {
-  return x < 0 || y < 0 || x >= w || y >= h ? 0.0f : film.depth[size_t(y) * w + x] * film.scale;
+__device__ float filmDepth(const FilmView& film, int x, int y, int w, int h) {
+  return x < 0 || y < 0 || x >= w || y >= h ? 0.0f : meanAt(film.depth, film.samples, size_t(y) * w + x);
 }
 
-// Demodulates the colour and fills the guide planes, as atrous.cpp does; sums the demodulated luminance.
-__global__ void prepareKernel(DeviceFilmView film, Planes p, int w, int h, double* luminanceSum) {
+// What the filter smooths, as atrous.cpp does: first the demodulated reflected light, then the emission.
+enum class Signal { Reflected, Emission };
+
+// Fills the colour planes with the signal, and with the reflected light also the guide planes; sums the colour's
+// luminance.
+__global__ void prepareKernel(FilmView film, Planes p, int w, int h, Signal signal, double* luminanceSum) {
   const int x = int(blockIdx.x * blockDim.x + threadIdx.x), y = int(blockIdx.y * blockDim.y + threadIdx.y);
   double lum = 0.0;
   if (x < w && y < h) {
     const size_t i = size_t(y) * w + x;
-    const Vec3 c = film.color[i] * film.scale, albedo = film.albedo[i] * film.scale;
-    const float r = c.x / demodulationFactor(albedo.x), g = c.y / demodulationFactor(albedo.y),
-                b = c.z / demodulationFactor(albedo.z);
-    p.r[0][i] = r;
-    p.g[0][i] = g;
-    p.b[0][i] = b;
-    lum = luminance({r, g, b});
+    const Vec3 emission = meanAt(film.emission, film.samples, i);
+    const Vec3 c = signal == Signal::Emission ? filterableEmission(emission)
+                                              : demodulate(meanAt(film.radiance, film.samples, i), emission,
+                                                           meanAt(film.albedo, film.samples, i));
+    p.r[0][i] = c.x;
+    p.g[0][i] = c.y;
+    p.b[0][i] = c.z;
+    lum = luminance(c);
     p.lum[0][i] = float(lum);
-    const Vec3 n = unitOrZero(film.normal[i] * film.scale);
+  }
+  if (signal == Signal::Reflected && x < w && y < h) {
+    const size_t i = size_t(y) * w + x;
+    const Vec3 n = unitOrZero(meanAt(film.normal, film.samples, i));
     p.nx[i] = n.x;
     p.ny[i] = n.y;
     p.nz[i] = n.z;
@@ -116,26 +124,47 @@ __global__ void atrousPassKernel(Planes p, int from, int w, int h, AtrousPassCon
   p.lum[1 - from][i] = luminance(out);
 }
 
-__global__ void remodulateKernel(DeviceFilmView film, Planes p, int from, int w, int h, Vec3* output) {
+__global__ void remodulateKernel(FilmView film, Planes p, int from, int w, int h, Vec3* output) {
   const int x = int(blockIdx.x * blockDim.x + threadIdx.x), y = int(blockIdx.y * blockDim.y + threadIdx.y);
   if (x >= w || y >= h) return;
   const size_t i = size_t(y) * w + x;
-  const Vec3 albedo = film.albedo[i] * film.scale;
-  output[i] = {p.r[from][i] * demodulationFactor(albedo.x), p.g[from][i] * demodulationFactor(albedo.y),
-               p.b[from][i] * demodulationFactor(albedo.z)};
+  output[i] = remodulate({p.r[from][i], p.g[from][i], p.b[from][i]}, meanAt(film.albedo, film.samples, i));
 }
 
-__global__ void bilateralKernel(const Vec3* input, float scale, Vec3* output, int w, int h, int r,
-                                BilateralScales scales) {
+// Adds the filtered emission to the remodulated reflected light in `output` and mixes the sum with the raw pixel
+// (blendWithRaw). The variance comes from the film's sums, or for images of means from `imageVariance`.
+__global__ void finishKernel(FilmView film, const float* imageVariance, Planes p, int from, int w, int h,
+                             Vec3* output) {
   const int x = int(blockIdx.x * blockDim.x + threadIdx.x), y = int(blockIdx.y * blockDim.y + threadIdx.y);
   if (x >= w || y >= h) return;
-  const Vec3 p = input[size_t(y) * w + x] * scale;
+  const size_t i = size_t(y) * w + x;
+  auto varianceAt = [&](int qx, int qy) {
+    const size_t q = size_t(qy) * w + qx;
+    return film.samples ? meanLuminanceVariance(film.radiance[q], film.luminanceSquares[q], film.samples[q])
+                        : imageVariance[q];
+  };
+  const Vec3 emission{p.r[from][i], p.g[from][i], p.b[from][i]};
+  output[i] = blendWithRaw(meanAt(film.radiance, film.samples, i), output[i] + emission,
+                           blendVariance(varianceAt, w, h, x, y));
+}
+
+// What the bilateral filter smooths at pixel i: the mean radiance without the emission, where the film has one.
+__device__ Vec3 bilateralInput(const FilmView& film, size_t i) {
+  const Vec3 c = meanAt(film.radiance, film.samples, i);
+  return film.emission ? bilateralReflected(c, meanAt(film.emission, film.samples, i)) : bilateralInput(c);
+}
+
+__global__ void bilateralKernel(FilmView film, Vec3* output, int w, int h, int r, BilateralScales scales) {
+  const int x = int(blockIdx.x * blockDim.x + threadIdx.x), y = int(blockIdx.y * blockDim.y + threadIdx.y);
+  if (x >= w || y >= h) return;
+  const size_t i = size_t(y) * w + x;
+  const Vec3 p = bilateralInput(film, i);
   float sr = 0.0f, sg = 0.0f, sb = 0.0f, sw = 0.0f;
   for (int dy = -r; dy <= r; ++dy) {
     if (y + dy < 0 || y + dy >= h) continue;
     for (int dx = -r; dx <= r; ++dx) {
       if (x + dx < 0 || x + dx >= w) continue;
-      const Vec3 q = input[size_t(y + dy) * w + x + dx] * scale;
+      const Vec3 q = bilateralInput(film, size_t(y + dy) * w + x + dx);
       const float weight = bilateralWeight(dx, dy, p.x, p.y, p.z, q.x, q.y, q.z, scales);
       sr += q.x * weight;
       sg += q.y * weight;
@@ -143,7 +172,8 @@ __global__ void bilateralKernel(const Vec3* input, float scale, Vec3* output, in
       sw += weight;
     }
   }
-  output[size_t(y) * w + x] = Vec3{sr, sg, sb} / sw;
+  const Vec3 filtered = Vec3{sr, sg, sb} / sw;
+  output[i] = film.emission ? filtered + meanAt(film.emission, film.samples, i) : filtered;
 }
 
 }  // namespace
@@ -154,26 +184,34 @@ CudaAtrous::CudaAtrous(uint32_t width, uint32_t height)
       planes_(size_t(kPlaneCount) * width * height * sizeof(float), "the a-trous filter's planes"),
       luminanceSum_(sizeof(double), "the a-trous filter's luminance sum") {}
 
-void CudaAtrous::run(const DeviceFilmView& film, Vec3* output, const AtrousParams& params, cudaStream_t stream) {
+void CudaAtrous::run(const FilmView& film, const float* imageVariance, Vec3* output, const AtrousParams& params,
+                     cudaStream_t stream) {
   const int w = int(width_), h = int(height_);
   const Planes p = planesOf(planes_.as<float>(), size_t(width_) * height_);
   const dim3 grid = gridFor(width_, height_);
   double* sum = luminanceSum_.as<double>();
-  checkCuda(cudaMemsetAsync(sum, 0, sizeof(double), stream), "clearing the a-trous luminance sum");
-  prepareKernel<<<grid, kBlock, 0, stream>>>(film, p, w, h, sum);
-  int from = 0;
-  for (int pass = 0; pass < params.passes; ++pass, from = 1 - from) {
-    colorWidthKernel<<<grid, kBlock, 0, stream>>>(p, from, w, h, params.colorSigma, sum);
-    atrousPassKernel<<<grid, kBlock, 0, stream>>>(p, from, w, h, atrousPassConstants(params, pass));
-  }
+  // Runs the passes on the signal; returns the colour planes that hold the result.
+  auto filter = [&](Signal signal) {
+    checkCuda(cudaMemsetAsync(sum, 0, sizeof(double), stream), "clearing the a-trous luminance sum");
+    prepareKernel<<<grid, kBlock, 0, stream>>>(film, p, w, h, signal, sum);
+    int from = 0;
+    for (int pass = 0; pass < params.passes; ++pass, from = 1 - from) {
+      colorWidthKernel<<<grid, kBlock, 0, stream>>>(p, from, w, h, params.colorSigma, sum);
+      atrousPassKernel<<<grid, kBlock, 0, stream>>>(p, from, w, h, atrousPassConstants(params, pass));
+    }
+    return from;
+  };
+  int from = filter(Signal::Reflected);
   remodulateKernel<<<grid, kBlock, 0, stream>>>(film, p, from, w, h, output);
+  from = filter(Signal::Emission);
+  finishKernel<<<grid, kBlock, 0, stream>>>(film, imageVariance, p, from, w, h, output);
   checkCuda(cudaGetLastError(), "launching the a-trous filter");
 }
 
-void cudaBilateral(const Vec3* input, float scale, Vec3* output, uint32_t width, uint32_t height,
-                   const BilateralParams& params, cudaStream_t stream) {
-  bilateralKernel<<<gridFor(width, height), kBlock, 0, stream>>>(input, scale, output, int(width), int(height),
-                                                                 params.radius, bilateralScales(params));
+void cudaBilateral(const FilmView& film, Vec3* output, uint32_t width, uint32_t height, const BilateralParams& params,
+                   cudaStream_t stream) {
+  bilateralKernel<<<gridFor(width, height), kBlock, 0, stream>>>(film, output, int(width), int(height), params.radius,
+                                                                 bilateralScales(params));
   checkCuda(cudaGetLastError(), "launching the bilateral filter");
 }
 
@@ -183,10 +221,14 @@ Image atrousDenoiseCuda(const Image& color, const AovImages& aovs, const AtrousP
   DeviceBuffer albedo = DeviceBuffer::fromVector(aovs.albedo.pixels, "the albedo AOV");
   DeviceBuffer normal = DeviceBuffer::fromVector(aovs.normal.pixels, "the normal AOV");
   DeviceBuffer depth = DeviceBuffer::fromVector(aovs.depth, "the depth AOV");
+  DeviceBuffer emission = DeviceBuffer::fromVector(aovs.emission.pixels, "the emission image");
+  DeviceBuffer variance = DeviceBuffer::fromVector(aovs.variance, "the variance AOV");
   DeviceBuffer out(c.size(), "the filtered image");
   CudaAtrous filter(color.width, color.height);
-  filter.run({c.as<Vec3>(), albedo.as<Vec3>(), normal.as<Vec3>(), depth.as<float>(), 1.0f}, out.as<Vec3>(), params,
-             nullptr);
+  // Images of means: no sample counts.
+  const FilmView film{c.as<Vec3>(),      emission.as<Vec3>(), nullptr,
+                      albedo.as<Vec3>(), normal.as<Vec3>(),   depth.as<float>()};
+  filter.run(film, variance.as<float>(), out.as<Vec3>(), params, nullptr);
   checkCuda(cudaStreamSynchronize(nullptr), "running the a-trous filter");
   Image result(color.width, color.height);
   out.download(result.pixels.data(), out.size());
@@ -197,7 +239,9 @@ Image bilateralFilterCuda(const Image& input, const BilateralParams& params) {
   validateBilateralParams(params);
   DeviceBuffer in = DeviceBuffer::fromVector(input.pixels, "the image to filter");
   DeviceBuffer out(in.size(), "the filtered image");
-  cudaBilateral(in.as<Vec3>(), 1.0f, out.as<Vec3>(), input.width, input.height, params, nullptr);
+  FilmView image;  // an image of means, with no emission
+  image.radiance = in.as<Vec3>();
+  cudaBilateral(image, out.as<Vec3>(), input.width, input.height, params, nullptr);
   checkCuda(cudaStreamSynchronize(nullptr), "running the bilateral filter");
   Image result(input.width, input.height);
   out.download(result.pixels.data(), out.size());

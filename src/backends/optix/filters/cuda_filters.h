@@ -7,18 +7,9 @@
 #include "image/aov_images.h"
 #include "image/filters/atrous.h"
 #include "image/filters/bilateral.h"
+#include "kernel/film.h"
 
 namespace candela::optix {
-
-// The a-trous filter's inputs in device memory, each multiplied by `scale` as it is read: 1 for means, 1 / (sample
-// count) for a film that holds sums.
-struct DeviceFilmView {
-  const Vec3* color = nullptr;
-  const Vec3* albedo = nullptr;
-  const Vec3* normal = nullptr;
-  const float* depth = nullptr;
-  float scale = 1.0f;
-};
 
 // The a-trous filter of image/filters/atrous.h, holding its scratch planes for one image size.
 class CudaAtrous {
@@ -26,9 +17,11 @@ class CudaAtrous {
   CudaAtrous(uint32_t width, uint32_t height);
   uint32_t width() const { return width_; }
   uint32_t height() const { return height_; }
-  // Enqueues the filter on `stream`; `output` is device memory for width * height pixels. Validate the params
-  // with validateAtrousParams first.
-  void run(const DeviceFilmView& film, Vec3* output, const AtrousParams& params, cudaStream_t stream);
+  // Enqueues the filter of the film's means on `stream`; the film needs its AOVs, and `output` is device memory for
+  // width * height pixels. For images of means, the film has no sample counts and `imageVariance` holds
+  // AovImages::variance (null for a film). Validate the params with validateAtrousParams first.
+  void run(const FilmView& film, const float* imageVariance, Vec3* output, const AtrousParams& params,
+           cudaStream_t stream);
 
  private:
   uint32_t width_, height_;
@@ -36,10 +29,10 @@ class CudaAtrous {
   DeviceBuffer luminanceSum_;   // one double
 };
 
-// Enqueues the bilateral filter of image/filters/bilateral.h on `stream` for the image input * scale; input and
-// output are device memory.
-void cudaBilateral(const Vec3* input, float scale, Vec3* output, uint32_t width, uint32_t height,
-                   const BilateralParams& params, cudaStream_t stream);
+// Enqueues the bilateral filter of image/filters/bilateral.h on `stream` for the film's mean radiance, without its
+// emission (which is added back after) where the film has an emission image; film and output are device memory.
+void cudaBilateral(const FilmView& film, Vec3* output, uint32_t width, uint32_t height, const BilateralParams& params,
+                   cudaStream_t stream);
 
 // Host images in, host image out (upload, filter, download): for tests and one-off use.
 Image atrousDenoiseCuda(const Image& color, const AovImages& aovs, const AtrousParams& params);

@@ -1,0 +1,78 @@
+#include "backends/optix/device_film.h"
+
+#include <stdexcept>
+
+#include "backends/optix/optix_error.h"
+
+namespace candela::optix {
+
+namespace {
+
+// Makes `buffer` hold `bytes` unless it does already; frees the old allocation first.
+void resizeBuffer(DeviceBuffer& buffer, size_t bytes, const char* purpose) {
+  if (buffer.size() == bytes) return;
+  buffer = DeviceBuffer();
+  if (bytes > 0) buffer = DeviceBuffer(bytes, purpose);
+}
+
+}  // namespace
+
+void DeviceFilm::resize(uint32_t width, uint32_t height, bool withAovs) {
+  width_ = width;
+  height_ = height;
+  const size_t pixels = size_t(width) * height, aovPixels = withAovs ? pixels : 0;
+  resizeBuffer(radiance_, pixels * sizeof(Vec3), "the film's radiance sums");
+  resizeBuffer(emission_, pixels * sizeof(Vec3), "the film's emission sums");
+  resizeBuffer(samples_, pixels * sizeof(uint32_t), "the film's sample counts");
+  resizeBuffer(albedo_, aovPixels * sizeof(Vec3), "the albedo AOV");
+  resizeBuffer(normal_, aovPixels * sizeof(Vec3), "the normal AOV");
+  resizeBuffer(depth_, aovPixels * sizeof(float), "the depth AOV");
+  resizeBuffer(luminanceSquares_, aovPixels * sizeof(float), "the film's squared luminance sums");
+}
+
+void DeviceFilm::clear(cudaStream_t stream) {
+  for (DeviceBuffer* b : {&radiance_, &emission_, &samples_, &albedo_, &normal_, &depth_, &luminanceSquares_})
+    if (b->size() > 0) checkCuda(cudaMemsetAsync(b->as<void>(), 0, b->size(), stream), "clearing the film");
+}
+
+FilmView DeviceFilm::view() const {
+  return {radiance_.as<Vec3>(), emission_.as<Vec3>(), samples_.as<uint32_t>(), albedo_.as<Vec3>(),
+          normal_.as<Vec3>(),   depth_.as<float>(),   luminanceSquares_.as<float>()};
+}
+
+std::vector<uint32_t> DeviceFilm::downloadSamples() const {
+  std::vector<uint32_t> samples(pixelCount());
+  samples_.download(samples.data(), samples_.size());
+  return samples;
+}
+
+Image DeviceFilm::meanImage(const DeviceBuffer& sums) const {
+  Image image(width_, height_);
+  sums.download(image.pixels.data(), sums.size());
+  const std::vector<uint32_t> samples = downloadSamples();
+  for (size_t i = 0; i < samples.size(); ++i) image.pixels[i] = filmMean(image.pixels[i], samples[i]);
+  return image;
+}
+
+AovImages DeviceFilm::readAovs() const {
+  if (!hasAovs()) throw std::logic_error("DeviceFilm::readAovs on a film without AOVs");
+  AovImages aovs(width_, height_);
+  albedo_.download(aovs.albedo.pixels.data(), albedo_.size());
+  normal_.download(aovs.normal.pixels.data(), normal_.size());
+  depth_.download(aovs.depth.data(), depth_.size());
+  std::vector<Vec3> radiance(samples_.size() / sizeof(uint32_t));
+  std::vector<float> squares(radiance.size());
+  radiance_.download(radiance.data(), radiance_.size());
+  luminanceSquares_.download(squares.data(), luminanceSquares_.size());
+  const std::vector<uint32_t> samples = downloadSamples();
+  for (size_t i = 0; i < samples.size(); ++i) {
+    aovs.variance[i] = meanLuminanceVariance(radiance[i], squares[i], samples[i]);
+    aovs.albedo.pixels[i] = filmMean(aovs.albedo.pixels[i], samples[i]);
+    aovs.normal.pixels[i] = filmMean(aovs.normal.pixels[i], samples[i]);
+    aovs.depth[i] = filmMean(aovs.depth[i], samples[i]);
+  }
+  aovs.emission = readEmission();
+  return aovs;
+}
+
+}  // namespace candela::optix

@@ -1,0 +1,41 @@
+#pragma once
+// The OptiX backend's film: the per-pixel sums of kernel/film.h in device memory, and their means as images.
+#include <cuda_runtime.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "backends/optix/device_buffer.h"
+#include "image/aov_images.h"
+#include "image/image.h"
+#include "kernel/film.h"
+
+namespace candela::optix {
+
+class DeviceFilm {
+ public:
+  // Sizes the film for width x height pixels, with AOV sums or without, keeping the buffers that fit already;
+  // its contents are undefined until clear().
+  void resize(uint32_t width, uint32_t height, bool withAovs);
+  // Enqueues clearing every sum on `stream`.
+  void clear(cudaStream_t stream);
+  bool hasAovs() const { return albedo_.size() > 0; }
+  uint32_t pixelCount() const { return width_ * height_; }
+  FilmView view() const;
+
+  // The means, after waiting for the default stream's work on the film (downloads are synchronous).
+  Image readImage() const { return meanImage(radiance_); }
+  Image readEmission() const { return meanImage(emission_); }
+  // Throws std::logic_error when the film has no AOV sums.
+  AovImages readAovs() const;
+
+ private:
+  Image meanImage(const DeviceBuffer& sums) const;
+  std::vector<uint32_t> downloadSamples() const;
+
+  uint32_t width_ = 0, height_ = 0;
+  DeviceBuffer radiance_, emission_, samples_;
+  DeviceBuffer albedo_, normal_, depth_, luminanceSquares_;  // empty without AOVs
+};
+
+}  // namespace candela::optix

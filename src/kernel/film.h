@@ -1,0 +1,59 @@
+#pragma once
+// The progressive film: per-pixel sums of the path samples (kernel/film_accumulation.h adds samples to them).
+#include <cstddef>
+#include <cstdint>
+
+#include "core/math.h"
+
+namespace candela {
+
+// Pointers to a film's per-pixel sums, in host or device memory. A pixel's mean is its sum over its sample count:
+// samples dropped as invalid count nowhere, so they neither darken the pixel nor shift its AOVs.
+struct FilmView {
+  Vec3* radiance = nullptr;
+  Vec3* emission = nullptr;    // the sums of PathResult::emitted
+  uint32_t* samples = nullptr;  // samples accepted per pixel
+  // The AOV sums (kernel/aovs.h) and the sums of the squared luminance of the samples' radiance, the denoisers'
+  // guides; null while the AOVs are off.
+  Vec3* albedo = nullptr;
+  Vec3* normal = nullptr;
+  float* depth = nullptr;
+  float* luminanceSquares = nullptr;
+};
+
+// A pixel's sum over `samples` samples as a mean; zero where no sample was accepted.
+CANDELA_FN Vec3 filmMean(Vec3 sum, uint32_t samples) { return samples > 0 ? sum / float(samples) : Vec3{}; }
+CANDELA_FN float filmMean(float sum, uint32_t samples) { return samples > 0 ? sum / float(samples) : 0.0f; }
+
+// A pixel's mean luminance has this variance where it is not known (fewer than two samples).
+constexpr float kUnknownVariance = -1.0f;
+
+// Standard errors by which meanLuminanceVariance overstates the variance: a few samples can agree by chance, and
+// the a-trous filter must not take such a pixel for a converged one (atrous_kernel.h, blendWithRaw). 5 made the
+// Cornell box's 4-sample relMSE 4.6x lower than raw, against 3.0x for 0 (docs/denoising.md).
+constexpr float kVarianceStandardErrors = 5.0f;
+
+// An upper estimate of the variance of a pixel's mean luminance, from the sum of its samples' radiance, the sum of
+// their squared luminance and their count: the sample variance over the count, times 1 + kVarianceStandardErrors
+// relative standard errors of a sample variance of normal samples (sqrt(2 / (n - 1))). Saturated sums
+// (kernel/film_accumulation.h) give a large finite value.
+CANDELA_FN float meanLuminanceVariance(Vec3 radianceSum, float luminanceSquaresSum, uint32_t samples) {
+  if (samples < 2) return kUnknownVariance;
+  const float n = float(samples), mean = luminance(radianceSum) / n;
+  const float spread = luminanceSquaresSum / n - mean * mean;
+  const float variance = (spread > 0.0f ? spread : 0.0f) / (n - 1.0f);
+  const float bound = variance * (1.0f + kVarianceStandardErrors * sqrtf(2.0f / (n - 1.0f)));
+  return bound < 3.0e38f ? bound : 3.0e38f;
+}
+
+// The mean at pixel i of a film's sums, or of an image of means where there are no sample counts (null): the
+// filters read both.
+CANDELA_FN Vec3 meanAt(const Vec3* values, const uint32_t* samples, size_t i) {
+  return samples ? filmMean(values[i], samples[i]) : values[i];
+}
+CANDELA_FN float meanAt(const float* values, const uint32_t* samples, size_t i) {
+  return samples ? filmMean(values[i], samples[i]) : values[i];
+}
+
+}  // namespace candela
+
