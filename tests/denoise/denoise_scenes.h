@@ -71,7 +71,7 @@ inline Scene emissiveTextureCornellBox() {
   checker.width = checker.height = 4;
   checker.channels = 4;
   checker.srgb = true;
-  checker.wrap = TextureWrap::Clamp;
+  checker.wrapU = checker.wrapV = TextureWrap::Clamp;
   for (uint32_t y = 0; y < 4; ++y)
     for (uint32_t x = 0; x < 4; ++x) {
       const bool white = (x + y) % 2 == 0;
