@@ -15,11 +15,13 @@ struct RenderWithAovs {
 // A CPU render with AOVs, read as it accumulates.
 class ProgressiveRender {
  public:
-  ProgressiveRender(const Scene& scene, uint32_t width, uint32_t height, uint32_t seed) {
+  ProgressiveRender(const Scene& scene, uint32_t width, uint32_t height, uint32_t seed,
+                    SamplerKind sampler = SamplerKind::Sobol) {
     RenderSettings settings;
     settings.width = width;
     settings.height = height;
     settings.seed = seed;
+    settings.sampler = sampler;
     backend_.setScene(scene);
     backend_.setSettings(settings);
     backend_.setAovsEnabled(true);

@@ -56,7 +56,7 @@ time.sleep(300)
 PY
   hog=$!
   for _ in $(seq 120); do [ -e "$work/hog_ready" ] && break; sleep 0.5; done
-  check out_of_memory 1 "^candela: out of device memory: asked for 3.00 GiB for the accumulation buffer" \
+  check out_of_memory 1 "^candela: out of device memory: asked for 3.00 GiB for the film's radiance sums" \
     "$candela" render --backend optix --spp 1 --width 16384 --height 16384 -o "$work/g.exr"
   kill "$hog"
   wait "$hog" 2>/dev/null
