@@ -60,13 +60,16 @@ int main() {
                         albedo.as<Vec3>(), normal.as<Vec3>(),   depth.as<float>()};
     AtrousParams params;
     params.passes = 5;
-    const double atrousMs = medianMilliseconds(stream, [&] { atrous.run(film, variance.as<float>(), out.as<Vec3>(), params, stream); });
-    const double bilateralMs = medianMilliseconds(
-        stream, [&] { cudaBilateral(film, out.as<Vec3>(), w, h, BilateralParams{}, stream); });
-    std::printf("{\"filter\":\"atrous\",\"passes\":5,\"width\":%u,\"height\":%u,\"device\":\"%s\",\"median_ms\":%.4f}\n",
-                w, h, properties.name, atrousMs);
-    std::printf("{\"filter\":\"bilateral\",\"radius\":3,\"width\":%u,\"height\":%u,\"device\":\"%s\",\"median_ms\":%.4f}\n",
-                w, h, properties.name, bilateralMs);
+    const double atrousMs =
+        medianMilliseconds(stream, [&] { atrous.run(film, variance.as<float>(), out.as<Vec3>(), params, stream); });
+    const double bilateralMs =
+        medianMilliseconds(stream, [&] { cudaBilateral(film, out.as<Vec3>(), w, h, BilateralParams{}, stream); });
+    std::printf(
+        "{\"filter\":\"atrous\",\"passes\":5,\"width\":%u,\"height\":%u,\"device\":\"%s\",\"median_ms\":%.4f}\n", w, h,
+        properties.name, atrousMs);
+    std::printf(
+        "{\"filter\":\"bilateral\",\"radius\":3,\"width\":%u,\"height\":%u,\"device\":\"%s\",\"median_ms\":%.4f}\n", w,
+        h, properties.name, bilateralMs);
     cudaStreamDestroy(stream);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "denoise_gpu_bench: %s\n", e.what());

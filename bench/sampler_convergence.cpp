@@ -54,7 +54,7 @@ struct Renderer {
     settings.sampler = kind;
     settings.seed = seed;
     backend->setSettings(settings);
-    backend->render(1);            // the first launch after a change is not timed
+    backend->render(1);              // the first launch after a change is not timed
     backend->setSettings(settings);  // restarts the film
     auto start = std::chrono::steady_clock::now();
     for (uint32_t s = 0; s < spp; ++s) backend->render(1);
@@ -73,7 +73,8 @@ double relMseAtTime(const std::vector<Point>& curve, double milliseconds) {
   for (size_t i = 1; i < curve.size(); ++i)
     if (curve[i].milliseconds >= milliseconds) {
       const Point &a = curve[i - 1], &b = curve[i];
-      double t = (std::log(milliseconds) - std::log(a.milliseconds)) / (std::log(b.milliseconds) - std::log(a.milliseconds));
+      double t =
+          (std::log(milliseconds) - std::log(a.milliseconds)) / (std::log(b.milliseconds) - std::log(a.milliseconds));
       return std::exp(std::log(a.relMse) + t * (std::log(b.relMse) - std::log(a.relMse)));
     }
   return curve.back().relMse;
@@ -127,9 +128,10 @@ int run(const Options& options) {
   if (options.maxSpp >= 32) {
     const Point& at16 = independent[4];
     double sobol = relMseAtTime(curves[SamplerKind::Sobol], at16.milliseconds);
-    std::printf("{\"equal_time_ms\": %.3f, \"independent_relmse\": %.6g, \"sobol_relmse\": %.6g, "
-                "\"independent_over_sobol\": %.3f}\n",
-                at16.milliseconds, at16.relMse, sobol, at16.relMse / sobol);
+    std::printf(
+        "{\"equal_time_ms\": %.3f, \"independent_relmse\": %.6g, \"sobol_relmse\": %.6g, "
+        "\"independent_over_sobol\": %.3f}\n",
+        at16.milliseconds, at16.relMse, sobol, at16.relMse / sobol);
   }
   return 0;
 }

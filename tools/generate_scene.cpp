@@ -4,9 +4,9 @@
 //
 //   candela-generate-scene --triangles 10000000 --out /tmp/town10m [--materials 300] [--textures 48]
 //                          [--format obj|gltf|both]
+#include <stb/stb_image_write.h>
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
-#include <stb/stb_image_write.h>
 
 #include <charconv>
 #include <cmath>
@@ -83,11 +83,11 @@ void blob(Part& m, V3 centre, V3 radius, int segments, float roughness, std::mt1
 void building(Part& m, V3 base, V3 size, float cell) {
   int cw = std::max(1, int(size.x / cell)), ch = std::max(1, int(size.y / cell)), cd = std::max(1, int(size.z / cell));
   V3 X{size.x, 0, 0}, Y{0, size.y, 0}, Z{0, 0, size.z};
-  grid(m, base + Z, X, Y, ch, cw, float(cw));               // +z
-  grid(m, base + X + Z, Z * -1.0f, Y, ch, cd, float(cd));   // +x
-  grid(m, base, Z, Y, ch, cd, float(cd));                   // -x
-  grid(m, base + X, X * -1.0f, Y, ch, cw, float(cw));       // -z
-  grid(m, base + Y + Z, X, Z * -1.0f, cd, cw, 1.0f);        // roof
+  grid(m, base + Z, X, Y, ch, cw, float(cw));              // +z
+  grid(m, base + X + Z, Z * -1.0f, Y, ch, cd, float(cd));  // +x
+  grid(m, base, Z, Y, ch, cd, float(cd));                  // -x
+  grid(m, base + X, X * -1.0f, Y, ch, cw, float(cw));      // -z
+  grid(m, base + Y + Z, X, Z * -1.0f, cd, cw, 1.0f);       // roof
 }
 
 std::string number(float f) {
@@ -118,7 +118,8 @@ int main(int argc, char** argv) {
   std::string out = "generated-scene", format = "both";
   int materials = 300, textures = 48;
   unsigned seed = 1;
-  app.add_option("--triangles", targetTriangles, "About how many triangles")->check(CLI::Range(size_t(1000), size_t(200'000'000)));
+  app.add_option("--triangles", targetTriangles, "About how many triangles")
+      ->check(CLI::Range(size_t(1000), size_t(200'000'000)));
   app.add_option("--out", out, "Output folder")->required();
   app.add_option("--materials", materials, "Number of materials")->check(CLI::Range(1, 100000));
   app.add_option("--textures", textures, "Number of PNG textures")->check(CLI::Range(0, 10000));
@@ -161,7 +162,7 @@ int main(int argc, char** argv) {
       case 2: {
         int segments = std::max(8, int(24.0f * detail));
         blob(part, {x, y + 1.5f, z}, {0.2f, 1.5f, 0.2f}, std::max(6, segments / 3), 0.0f, rng);  // trunk
-        blob(part, {x, y + 4.0f, z}, {2.0f, 2.5f, 2.0f}, segments, 0.15f, rng);               // crown
+        blob(part, {x, y + 4.0f, z}, {2.0f, 2.5f, 2.0f}, segments, 0.15f, rng);                  // crown
         break;
       }
       default: {
@@ -247,16 +248,26 @@ int main(int argc, char** argv) {
         hi = {std::max(hi.x, v.x), std::max(hi.y, v.y), std::max(hi.z, v.z)};
       }
       size_t accessor = gltf["accessors"].size();
-      gltf["accessors"].push_back({{"bufferView", addView(p.p.data(), p.p.size() * 12)}, {"componentType", 5126},
-                                   {"count", p.p.size()}, {"type", "VEC3"}, {"min", {lo.x, lo.y, lo.z}},
+      gltf["accessors"].push_back({{"bufferView", addView(p.p.data(), p.p.size() * 12)},
+                                   {"componentType", 5126},
+                                   {"count", p.p.size()},
+                                   {"type", "VEC3"},
+                                   {"min", {lo.x, lo.y, lo.z}},
                                    {"max", {hi.x, hi.y, hi.z}}});
-      gltf["accessors"].push_back({{"bufferView", addView(p.n.data(), p.n.size() * 12)}, {"componentType", 5126},
-                                   {"count", p.n.size()}, {"type", "VEC3"}});
-      gltf["accessors"].push_back({{"bufferView", addView(p.uv.data(), p.uv.size() * 4)}, {"componentType", 5126},
-                                   {"count", p.uv.size() / 2}, {"type", "VEC2"}});
-      gltf["accessors"].push_back({{"bufferView", addView(p.idx.data(), p.idx.size() * 4)}, {"componentType", 5125},
-                                   {"count", p.idx.size()}, {"type", "SCALAR"}});
-      json primitive = {{"attributes", {{"POSITION", accessor}, {"NORMAL", accessor + 1}, {"TEXCOORD_0", accessor + 2}}},
+      gltf["accessors"].push_back({{"bufferView", addView(p.n.data(), p.n.size() * 12)},
+                                   {"componentType", 5126},
+                                   {"count", p.n.size()},
+                                   {"type", "VEC3"}});
+      gltf["accessors"].push_back({{"bufferView", addView(p.uv.data(), p.uv.size() * 4)},
+                                   {"componentType", 5126},
+                                   {"count", p.uv.size() / 2},
+                                   {"type", "VEC2"}});
+      gltf["accessors"].push_back({{"bufferView", addView(p.idx.data(), p.idx.size() * 4)},
+                                   {"componentType", 5125},
+                                   {"count", p.idx.size()},
+                                   {"type", "SCALAR"}});
+      json primitive = {{"attributes",
+                         {{"POSITION", accessor}, {"NORMAL", accessor + 1}, {"TEXCOORD_0", accessor + 2}}},
                         {"indices", accessor + 3},
                         {"material", p.material}};
       gltf["meshes"].push_back({{"primitives", json::array({primitive})}});

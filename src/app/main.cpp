@@ -28,14 +28,16 @@ namespace {
 // How scene files are read. The scene cache is on for the commands; the library's default is off.
 void addSceneInputOptions(CLI::App& cmd, SceneCacheSettings& cache, OutsidePaths& outsidePaths) {
   cache.enabled = true;
-  cmd.add_flag_callback("--no-cache", [&cache] { cache.enabled = false; },
-                        "Load models afresh, neither reading nor writing the scene cache");
+  cmd.add_flag_callback(
+      "--no-cache", [&cache] { cache.enabled = false; },
+      "Load models afresh, neither reading nor writing the scene cache");
   cmd.add_option("--cache-dir", cache.directory,
                  "Folder of the scene cache (default: $CANDELA_CACHE_DIR, else $XDG_CACHE_HOME/candela, else "
                  "~/.cache/candela)");
-  cmd.add_flag_callback("--allow-outside-paths", [&outsidePaths] { outsidePaths = OutsidePaths::Allowed; },
-                        "Let models and scene files read files outside their own folders (refused by default; "
-                        "such models bypass the scene cache)");
+  cmd.add_flag_callback(
+      "--allow-outside-paths", [&outsidePaths] { outsidePaths = OutsidePaths::Allowed; },
+      "Let models and scene files read files outside their own folders (refused by default; "
+      "such models bypass the scene cache)");
   cmd.add_option_function<double>(
          "--max-file-gib", [](double gib) { setMaxInputFileBytes(uint64_t(gib * double(1 << 30))); },
          "Largest file a scene may read, in GiB (default: " + std::to_string(kDefaultMaxInputFileBytes >> 30) + ")")
@@ -45,7 +47,9 @@ void addSceneInputOptions(CLI::App& cmd, SceneCacheSettings& cache, OutsidePaths
 void addSamplerOption(CLI::App& cmd, SamplerKind& sampler) {
   cmd.add_option_function<std::string>(
          "--sampler",
-         [&sampler](const std::string& name) { sampler = name == "sobol" ? SamplerKind::Sobol : SamplerKind::Independent; },
+         [&sampler](const std::string& name) {
+           sampler = name == "sobol" ? SamplerKind::Sobol : SamplerKind::Independent;
+         },
          "Random numbers of the paths: sobol (Owen-scrambled Sobol points, stratified per pixel) or independent "
          "(white noise)")
       ->check(CLI::IsMember({"sobol", "independent"}))
@@ -57,9 +61,11 @@ void addTextureLimitOptions(CLI::App& cmd, TextureLimits& limits) {
                  "Largest width or height of a texture in pixels; a larger one is decoded smaller, with a warning")
       ->check(CLI::Range(1u, 1u << 20))
       ->capture_default_str();
-  cmd.add_option_function<uint64_t>("--max-texture-memory", [&limits](uint64_t mib) { limits.maxBytes = mib << 20; },
-                                    "MiB of decoded texture a scene may hold; over it, every texture is decoded "
-                                    "smaller, with a warning (default: " + std::to_string(limits.maxBytes >> 20) + ")")
+  cmd.add_option_function<uint64_t>(
+         "--max-texture-memory", [&limits](uint64_t mib) { limits.maxBytes = mib << 20; },
+         "MiB of decoded texture a scene may hold; over it, every texture is decoded "
+         "smaller, with a warning (default: " +
+             std::to_string(limits.maxBytes >> 20) + ")")
       ->check(CLI::Range(uint64_t(1), uint64_t(1) << 30));
 }
 
@@ -102,15 +108,19 @@ void addRenderOptions(CLI::App& cmd, RenderJob& job) {
         },
         "", "");
   };
-  cmd.add_option_function<std::string>("--shading", [&job](const std::string& name) {
-        job.materialOverrides.shading = parseShadingModel(name);
-      }, "Render every material with one shading model: phong, pbr or disney (default: each material's own)")
+  cmd.add_option_function<std::string>(
+         "--shading", [&job](const std::string& name) { job.materialOverrides.shading = parseShadingModel(name); },
+         "Render every material with one shading model: phong, pbr or disney (default: each material's own)")
       ->check(validated([](const std::string& name) { parseShadingModel(name); }));
   std::string overrideNames;
-  for (const OverrideParameter& p : overrideParameters()) overrideNames += (overrideNames.empty() ? "" : ", ") + std::string(p.name);
-  cmd.add_option_function<std::vector<std::string>>("--override", [&job](const std::vector<std::string>& list) {
-        for (const std::string& assignment : list) parseOverride(job.materialOverrides, assignment);
-      }, "Set a material parameter on every material, name=value in [0, 1]; repeatable. Names: " + overrideNames)
+  for (const OverrideParameter& p : overrideParameters())
+    overrideNames += (overrideNames.empty() ? "" : ", ") + std::string(p.name);
+  cmd.add_option_function<std::vector<std::string>>(
+         "--override",
+         [&job](const std::vector<std::string>& list) {
+           for (const std::string& assignment : list) parseOverride(job.materialOverrides, assignment);
+         },
+         "Set a material parameter on every material, name=value in [0, 1]; repeatable. Names: " + overrideNames)
       ->type_size(1)
       ->allow_extra_args(false)
       ->check(validated([](const std::string& assignment) {
@@ -143,7 +153,8 @@ int runRender(const RenderJob& job, const std::string& output, const DisplaySett
   double samples = double(rendered.width) * rendered.height * outcome.samplesPerPixel;
   std::fprintf(stderr, "rendered %ux%u at %u spp in %.2f s: %s Msamples/s, %s Mrays/s, %llu invalid samples dropped\n",
                rendered.width, rendered.height, outcome.samplesPerPixel, outcome.seconds,
-               formatRate(samples / outcome.seconds).c_str(), formatRate(double(outcome.stats.rays) / outcome.seconds).c_str(),
+               formatRate(samples / outcome.seconds).c_str(),
+               formatRate(double(outcome.stats.rays) / outcome.seconds).c_str(),
                (unsigned long long)outcome.stats.invalidSamples);
   for (const std::string& path : written) std::printf("%s\n", std::filesystem::absolute(path).string().c_str());
   return 0;
@@ -199,8 +210,7 @@ int runBench(const RenderJob& job) {
     report["raw_trace_median_device_ms"] = m;
     report["raw_trace_mrays_per_s"] = rawRate;
     if (!outcome.deviceFrameMilliseconds.empty())
-      report["path_ray_rate_fraction_of_raw"] =
-          raysPerFrame / median(outcome.deviceFrameMilliseconds) / 1e3 / rawRate;
+      report["path_ray_rate_fraction_of_raw"] = raysPerFrame / median(outcome.deviceFrameMilliseconds) / 1e3 / rawRate;
   }
   std::cout << report.dump() << std::endl;
   return 0;
@@ -240,8 +250,9 @@ void addViewOptions(CLI::App& cmd, ViewerOptions& options, std::string& toneMapp
   cmd.add_option("--backend", options.backend, "auto, cpu or optix (in this build: " + availableBackends() + ")")
       ->check(CLI::IsMember({"auto", "cpu", "optix"}))
       ->capture_default_str();
-  cmd.add_flag_callback("--no-interop", [&options] { options.interop = false; },
-                        "OptiX backend: show the image through a copy to the host, not CUDA-OpenGL interop");
+  cmd.add_flag_callback(
+      "--no-interop", [&options] { options.interop = false; },
+      "OptiX backend: show the image through a copy to the host, not CUDA-OpenGL interop");
   cmd.add_option("--width", options.width, "Image width in pixels; the panel sits beside the image")
       ->check(CLI::Range(64u, 16384u))
       ->capture_default_str();
@@ -338,22 +349,24 @@ int runServeCommand(ServeOptions options, const std::string& toneMapper) {
 #ifdef CANDELA_HAS_SERVE
   return runServe(options);
 #else
-  throw std::runtime_error("this build has no web viewer: install libboost-dev and libturbojpeg0-dev "
-                           "(scripts/install-dependencies.sh) and configure again");
+  throw std::runtime_error(
+      "this build has no web viewer: install libboost-dev and libturbojpeg0-dev "
+      "(scripts/install-dependencies.sh) and configure again");
 #endif
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"candela: a physically based path tracer.\n"
-               "  candela render                 render the built-in Cornell box to candela.png\n"
-               "  candela render -o box.exr --spp 256\n"
-               "  candela bench --spp 16         print one JSON line of timings\n"
-               "  candela view                   open the interactive viewer\n"
-               "  candela serve --port 8080      the interactive viewer in a web browser\n"
+  CLI::App app{
+      "candela: a physically based path tracer.\n"
+      "  candela render                 render the built-in Cornell box to candela.png\n"
+      "  candela render -o box.exr --spp 256\n"
+      "  candela bench --spp 16         print one JSON line of timings\n"
+      "  candela view                   open the interactive viewer\n"
+      "  candela serve --port 8080      the interactive viewer in a web browser\n"
 
-               "  candela bench --backend optix --width 1920 --height 1080 --spp 100 --warmup 20 --raw-trace"};
+      "  candela bench --backend optix --width 1920 --height 1080 --spp 100 --warmup 20 --raw-trace"};
   app.require_subcommand(1);
 
   RenderJob renderJob;
@@ -368,18 +381,20 @@ int main(int argc, char** argv) {
   render->add_option("--tonemap", toneMapper, "Tone mapper for .png: aces, reinhard or clamp (linear)")
       ->check(CLI::IsMember({"aces", "reinhard", "clamp"}))
       ->capture_default_str();
-  render->add_option("--denoise", renderJob.denoiser,
-                     "Denoiser: none; atrous (edge-avoiding a-trous guided by albedo, normal and depth); bilateral; "
-                     "optix (the OptiX AI denoiser with albedo and normal guides)")
+  render
+      ->add_option("--denoise", renderJob.denoiser,
+                   "Denoiser: none; atrous (edge-avoiding a-trous guided by albedo, normal and depth); bilateral; "
+                   "optix (the OptiX AI denoiser with albedo and normal guides)")
       ->check(CLI::IsMember({"none", "atrous", "bilateral", "optix"}))
       ->capture_default_str();
   render->add_option("--atrous-passes", renderJob.atrous.passes, "Passes of the a-trous denoiser")
       ->check(CLI::Range(1, kMaxAtrousPasses))
       ->capture_default_str();
-  render->add_option_function<std::string>("--aov", [&renderJob](const std::string& list) {
-        renderJob.aovs = parseAovList(list);
-      }, "Also write AOVs, comma-separated: albedo, normal, depth. In an .exr they are layers of the file; with "
-         ".png or .pfm they go beside it as <name>.<aov>.png/.pfm")
+  render
+      ->add_option_function<std::string>(
+          "--aov", [&renderJob](const std::string& list) { renderJob.aovs = parseAovList(list); },
+          "Also write AOVs, comma-separated: albedo, normal, depth. In an .exr they are layers of the file; with "
+          ".png or .pfm they go beside it as <name>.<aov>.png/.pfm")
       ->check(CLI::Validator(
           [](std::string& list) {
             try {
@@ -395,8 +410,7 @@ int main(int argc, char** argv) {
   benchJob.samplesPerPixel = 16;
   CLI::App* bench = app.add_subcommand("bench", "Time a render and print the numbers as one JSON object");
   addRenderOptions(*bench, benchJob);
-  bench->add_option("--warmup", benchJob.warmupFrames, "Untimed launches before the timed ones")
-      ->capture_default_str();
+  bench->add_option("--warmup", benchJob.warmupFrames, "Untimed launches before the timed ones")->capture_default_str();
   bench->add_flag("--raw-trace", benchJob.rawTrace,
                   "Also time tracing the same rays with no shading, the traversal ceiling (optix backend)");
 
@@ -445,7 +459,8 @@ int main(int argc, char** argv) {
     if (*serve) return runServeCommand(serveOptions, serveToneMapper);
     return runBench(benchJob);
   } catch (const std::bad_alloc&) {
-    std::fprintf(stderr, "candela: not enough memory for the %s command\n", app.get_subcommands().front()->get_name().c_str());
+    std::fprintf(stderr, "candela: not enough memory for the %s command\n",
+                 app.get_subcommands().front()->get_name().c_str());
     return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "candela: %s\n", printableText(e.what()).c_str());

@@ -21,7 +21,10 @@ std::string formatSeconds(double seconds) {
 }
 
 ProgressReporter::ProgressReporter(std::string label, uint64_t total)
-    : label_(std::move(label)), total_(total), terminal_(isatty(STDERR_FILENO) != 0), start_(Clock::now()),
+    : label_(std::move(label)),
+      total_(total),
+      terminal_(isatty(STDERR_FILENO) != 0),
+      start_(Clock::now()),
       lastPrint_(start_) {}
 
 void ProgressReporter::update(uint64_t done) {

@@ -53,12 +53,13 @@ void readResult(const Backend& backend, const RenderJob& job, RenderOutcome& out
 RenderOutcome runRenderJob(const RenderJob& job, bool showProgress) {
 #if !CANDELA_HAS_OPTIX
   if (job.denoiser == "optix")
-    throw std::runtime_error("--denoise optix needs the OptiX backend, which is not in this build (see README, "
-                             "'GPU backend')");
+    throw std::runtime_error(
+        "--denoise optix needs the OptiX backend, which is not in this build (see README, "
+        "'GPU backend')");
 #endif
   const auto loadStart = std::chrono::steady_clock::now();
-  Scene scene = loadScene(job.sceneSpec,
-                          {job.environmentPath, job.sceneCache, job.outsidePaths, job.camera, job.textureLimits});
+  Scene scene =
+      loadScene(job.sceneSpec, {job.environmentPath, job.sceneCache, job.outsidePaths, job.camera, job.textureLimits});
   const double loadSeconds = secondsSince(loadStart);
   applyOverrides(scene.materials, job.materialOverrides);
   RenderJob hinted = job;

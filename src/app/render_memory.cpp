@@ -77,8 +77,8 @@ uint64_t estimateRenderBytes(const RenderJob& job) {
   const uint64_t readingAovs = film + kImage + (aovs ? kAovs : 0);
   // Writing, the backend gone: the image, the AOVs, each file encoded (the depth AOV first becomes an image).
   const bool depth = std::find(job.aovs.begin(), job.aovs.end(), Aov::Depth) != job.aovs.end();
-  const uint64_t writing = kImage + (job.aovs.empty() ? 0 : kAovs) + kEncoded * (1 + job.aovs.size()) +
-                           (depth ? kImage : 0);
+  const uint64_t writing =
+      kImage + (job.aovs.empty() ? 0 : kAovs) + kEncoded * (1 + job.aovs.size()) + (depth ? kImage : 0);
   return pixels * std::max({denoising, readingAovs, writing});
 }
 

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/bounds.h"
+#include "core/file_extension.h"
 #include "scene/builtin_scenes.h"
 #include "scene/loaders/gltf_loader.h"
 #include "scene/loaders/image_decoding.h"
@@ -15,15 +16,13 @@
 #include "scene/loaders/pbrt_loader.h"
 #include "scene/loaders/scene_file.h"
 #include "scene/scene_repair.h"
-#include "core/file_extension.h"
 
 namespace candela {
 
 namespace {
 
 // A .pbrt scene shares nothing with other models: no scene file names one.
-Scene loadModelFile(const std::string& path, OutsidePaths outside, LoadWarnings& warnings,
-                    SharedModelAssets* shared) {
+Scene loadModelFile(const std::string& path, OutsidePaths outside, LoadWarnings& warnings, SharedModelAssets* shared) {
   const std::string ext = lowerCaseExtension(path);
   if (ext == ".obj") return loadObj(path, warnings, outside, shared);
   if (ext == ".pbrt") return loadPbrt(path, warnings, outside);
@@ -35,8 +34,7 @@ Scene loadModelFile(const std::string& path, OutsidePaths outside, LoadWarnings&
 SceneCacheSettings cacheFor(const SceneLoadOptions& options) {
   SceneCacheSettings cache = options.cache;
   const TextureLimits defaults;
-  cache.enabled &= options.outsidePaths == OutsidePaths::Refused &&
-                   options.textureLimits.maxSize == defaults.maxSize &&
+  cache.enabled &= options.outsidePaths == OutsidePaths::Refused && options.textureLimits.maxSize == defaults.maxSize &&
                    options.textureLimits.maxBytes == defaults.maxBytes;
   return cache;
 }
@@ -72,9 +70,10 @@ Scene loadFile(const std::string& path, const SceneLoadOptions& options, LoadWar
   std::string names;
   for (const std::string& n : builtinSceneNames()) names += (names.empty() ? "" : ", ") + n;
   if (!std::filesystem::exists(path))
-    throw std::runtime_error("unknown scene '" + printableText(path) + "': not a file, nor a built-in scene (" + names + ")");
-  throw std::runtime_error(printableText(path) + ": unknown scene format '" + printableText(ext) + "' (use .obj, .gltf, .glb, .pbrt or .json, or a built-in scene: " + names +
-                           ")");
+    throw std::runtime_error("unknown scene '" + printableText(path) + "': not a file, nor a built-in scene (" + names +
+                             ")");
+  throw std::runtime_error(printableText(path) + ": unknown scene format '" + printableText(ext) +
+                           "' (use .obj, .gltf, .glb, .pbrt or .json, or a built-in scene: " + names + ")");
 }
 
 bool hasLightSource(const Scene& scene) {
@@ -153,8 +152,9 @@ Scene loadScene(const std::string& spec, const SceneLoadOptions& options) {
   repairScene(scene, spec, warnings);
   chooseCamera(scene, spec, options.camera, warnings);
   if (!hasLightSource(scene))
-    warnings.add(spec, "the scene has no light source (no emissive surface, punctual light or environment): the "
-                       "image will be black; light it with --env");
+    warnings.add(spec,
+                 "the scene has no light source (no emissive surface, punctual light or environment): the "
+                 "image will be black; light it with --env");
   for (const std::string& w : warnings.messages)
     std::fprintf(stderr, "candela: warning: %s\n", printableText(w).c_str());
   if (scene.cameraMissing) frameSceneBounds(scene);

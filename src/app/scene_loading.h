@@ -9,12 +9,12 @@
 namespace candela {
 
 struct SceneLoadOptions {
-  std::string environmentPath;  // an .hdr or .exr map that replaces the scene's environment; empty: keep it
+  std::string environmentPath;    // an .hdr or .exr map that replaces the scene's environment; empty: keep it
   SceneCacheSettings cache = {};  // for models (.obj, .gltf, .glb, .pbrt) and scene files (as a whole)
   // Whether models and scene files may refer to files outside their folders (path_confinement.h). Models are
   // then loaded afresh: the scene cache holds only what loads under the default rule.
   OutsidePaths outsidePaths = OutsidePaths::Refused;
-  std::string camera = {};  // the name or index (in Scene::cameras) of the camera to take; empty: the first
+  std::string camera = {};           // the name or index (in Scene::cameras) of the camera to take; empty: the first
   TextureLimits textureLimits = {};  // textures over them are decoded smaller, with a warning
 };
 

@@ -17,8 +17,8 @@
 namespace candela {
 
 struct FrameStats {
-  uint64_t rays = 0;            // camera, bounce and shadow rays traced
-  uint64_t invalidSamples = 0;  // NaN/Inf/negative path estimates, or ones that would overflow a pixel's sums
+  uint64_t rays = 0;                // camera, bounce and shadow rays traced
+  uint64_t invalidSamples = 0;      // NaN/Inf/negative path estimates, or ones that would overflow a pixel's sums
   double deviceMilliseconds = 0.0;  // GPU time of the launches (CUDA events); 0 where the backend has none
 };
 

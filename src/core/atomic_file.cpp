@@ -7,8 +7,8 @@
 #include <array>
 #include <atomic>
 #include <cerrno>
-#include <csignal>
 #include <climits>
+#include <csignal>
 #include <cstring>
 #include <filesystem>
 #include <mutex>
@@ -102,9 +102,9 @@ std::string checkAtomicTarget(const std::string& target) {
   fs::path folder = resolved.parent_path();
   if (folder.empty()) folder = ".";
   if (!fs::is_directory(folder, ec))
-    cannotWrite(target, "directory '" + folder.string() + "'" +
-                            (ec && ec != std::errc::no_such_file_or_directory ? ": " + ec.message()
-                                                                              : " does not exist"));
+    cannotWrite(target,
+                "directory '" + folder.string() + "'" +
+                    (ec && ec != std::errc::no_such_file_or_directory ? ": " + ec.message() : " does not exist"));
   if (::access(folder.c_str(), W_OK) != 0) cannotWrite(target, "directory '" + folder.string() + "' is not writable");
   return resolved.string();
 }

@@ -46,12 +46,12 @@ class AtomicFile {
   [[noreturn]] void fail(const std::string& why);
   void discard();
 
-  std::string target_;     // as the caller named it, for messages
-  std::string resolved_;   // the file replaced: the target, or where its symbolic links lead
+  std::string target_;    // as the caller named it, for messages
+  std::string resolved_;  // the file replaced: the target, or where its symbolic links lead
   std::string temporary_;
   std::FILE* stream_ = nullptr;
-  std::string error_;      // the first failure; every later operation fails with it
-  int slot_ = -1;          // in the table of temporaries the signal handler removes
+  std::string error_;  // the first failure; every later operation fails with it
+  int slot_ = -1;      // in the table of temporaries the signal handler removes
   bool finished_ = false;
   bool committed_ = false;
 };

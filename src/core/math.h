@@ -36,9 +36,7 @@ CANDELA_FN Vec3& operator*=(Vec3& a, Vec3 b) { return a = a * b; }
 CANDELA_FN Vec3& operator*=(Vec3& a, float s) { return a = a * s; }
 
 CANDELA_FN float dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-CANDELA_FN Vec3 cross(Vec3 a, Vec3 b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
+CANDELA_FN Vec3 cross(Vec3 a, Vec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 CANDELA_FN float length(Vec3 a) { return sqrtf(dot(a, a)); }
 CANDELA_FN Vec3 normalize(Vec3 a) { return a / length(a); }
 CANDELA_FN float maxComponent(Vec3 a) { return fmaxf(a.x, fmaxf(a.y, a.z)); }
@@ -63,8 +61,7 @@ struct Affine3x4 {
   float m[12] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
 
   CANDELA_FN Vec3 point(Vec3 p) const {
-    return {m[0] * p.x + m[1] * p.y + m[2] * p.z + m[3],
-            m[4] * p.x + m[5] * p.y + m[6] * p.z + m[7],
+    return {m[0] * p.x + m[1] * p.y + m[2] * p.z + m[3], m[4] * p.x + m[5] * p.y + m[6] * p.z + m[7],
             m[8] * p.x + m[9] * p.y + m[10] * p.z + m[11]};
   }
   CANDELA_FN Vec3 vector(Vec3 v) const {

@@ -54,9 +54,7 @@ class PathSampler {
 
  private:
   // The Sobol seeds of a dimension; the constant keeps them apart from the white-noise numbers of the same inputs.
-  CANDELA_FN Uint4 dimensionSeeds(uint32_t dimension) const {
-    return pcg4d({pixel_, dimension, seed_, 0x50B01u});
-  }
+  CANDELA_FN Uint4 dimensionSeeds(uint32_t dimension) const { return pcg4d({pixel_, dimension, seed_, 0x50B01u}); }
 
   uint32_t pixel_;
   uint32_t sampleIndex_;

@@ -80,9 +80,8 @@ std::vector<Aov> parseAovList(const std::string& list) {
   return result;
 }
 
-std::vector<std::string> writeImageWithAovs(const std::string& path, const Image& image,
-                                            const DisplaySettings& display, const AovImages& aovs,
-                                            const std::vector<Aov>& which) {
+std::vector<std::string> writeImageWithAovs(const std::string& path, const Image& image, const DisplaySettings& display,
+                                            const AovImages& aovs, const std::vector<Aov>& which) {
   if (!which.empty() && (aovs.width() != image.width || aovs.height() != image.height))
     throw std::invalid_argument("the AOVs differ in size from the image");
   const std::string ext = lowerCaseExtension(path);
@@ -100,8 +99,9 @@ std::vector<std::string> writeImageWithAovs(const std::string& path, const Image
   for (float d : aovs.depth) largestDepth = std::max(largestDepth, d);
   for (Aov aov : which) {
     const std::string aovPath = besidePath(path, aov);
-    const Image depth = aov == Aov::Depth ? depthAsImage(aovs, ext == ".png" && largestDepth > 0.0f ? 1.0f / largestDepth : 1.0f)
-                                          : Image();
+    const Image depth = aov == Aov::Depth
+                            ? depthAsImage(aovs, ext == ".png" && largestDepth > 0.0f ? 1.0f / largestDepth : 1.0f)
+                            : Image();
     const Image& source = aov == Aov::Albedo ? aovs.albedo : aov == Aov::Normal ? aovs.normal : depth;
     files.push_back(std::make_unique<AtomicFile>(aovPath));
     AtomicFile& file = *files.back();

@@ -21,8 +21,7 @@ std::vector<Aov> parseAovList(const std::string& list);
 // All files are complete before any is renamed over its predecessor (the image last), so a failure leaves every
 // previous file as it was. Returns the paths written, the image's first. Throws std::runtime_error naming the
 // file that failed.
-std::vector<std::string> writeImageWithAovs(const std::string& path, const Image& image,
-                                            const DisplaySettings& display, const AovImages& aovs,
-                                            const std::vector<Aov>& which);
+std::vector<std::string> writeImageWithAovs(const std::string& path, const Image& image, const DisplaySettings& display,
+                                            const AovImages& aovs, const std::vector<Aov>& which);
 
 }  // namespace candela

@@ -55,7 +55,8 @@ void writeToneMappedPng(AtomicFile& file, const Image& image, const DisplaySetti
 void writeExrImage(AtomicFile& file, const Image& image) {
   const char* base = reinterpret_cast<const char*>(image.pixels.data());
   writeExrChannelsTo(file, image.width, image.height,
-                     {{"R", base, sizeof(Vec3)}, {"G", base + sizeof(float), sizeof(Vec3)},
+                     {{"R", base, sizeof(Vec3)},
+                      {"G", base + sizeof(float), sizeof(Vec3)},
                       {"B", base + 2 * sizeof(float), sizeof(Vec3)}});
 }
 

@@ -26,8 +26,7 @@ void writeImage(const std::string& path, const Image& image, const DisplaySettin
 void writeImageTo(AtomicFile& file, const Image& image, const DisplaySettings& display);
 
 // An 8-bit PNG of 1 to 4 channels; rows `strideBytes` apart (negative: bottom row first in memory).
-void writePngFile(const std::string& path, int width, int height, int channels, const uint8_t* pixels,
-                  int strideBytes);
+void writePngFile(const std::string& path, int width, int height, int channels, const uint8_t* pixels, int strideBytes);
 void writePngTo(AtomicFile& file, int width, int height, int channels, const uint8_t* pixels, int strideBytes);
 
 // One float channel of an EXR file: `base` points at the top-left pixel's value, rows are packed.

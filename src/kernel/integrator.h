@@ -53,8 +53,8 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
   Vec3 beta{1, 1, 1};
   float etaScale = 1.0f;  // product of eta^2 over refractions: undoes their radiance scaling for roulette
   bool specularBounce = false;
-  bool cameraChain = true;  // every bounce so far was off a delta lobe: emission found now is seen directly
-  float bsdfPdf = 0.0f;        // solid-angle pdf of the BSDF sample that produced `ray`
+  bool cameraChain = true;        // every bounce so far was off a delta lobe: emission found now is seen directly
+  float bsdfPdf = 0.0f;           // solid-angle pdf of the BSDF sample that produced `ray`
   Vec3 lastScatter = ray.origin;  // where that sample was taken
   bool aovsPending = kWithAovs;
   float pathLength = 0.0f;  // camera to the current hit, summed while the AOVs are pending
@@ -103,7 +103,9 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
     Bsdf bsdf(material, si, wo);
     float woSide = dot(wo, si.geometricNormal);
     // A direction counts only when the shading and geometric normals agree on which side of the surface it is.
-    auto sidesAgree = [&](Vec3 wi) { return (dot(wi, si.geometricNormal) * woSide > 0.0f) == (dot(wi, bsdf.normal()) > 0.0f); };
+    auto sidesAgree = [&](Vec3 wi) {
+      return (dot(wi, si.geometricNormal) * woSide > 0.0f) == (dot(wi, bsdf.normal()) > 0.0f);
+    };
 
     // Next-event estimation.
     float uSelect = sampler.next1D();
@@ -178,14 +180,13 @@ CANDELA_FN bool isValidSample(Vec3 l) { return isFinite(l) && l.x >= 0.0f && l.y
 // (isTraceableCameraRay) is not: the sample gets a negative estimate, which isValidSample drops and counts.
 template <bool kWithAovs = false, class Tracer>
 CANDELA_HD PathResult renderPixelSample(const SceneView& scene, const Tracer& tracer, const Camera& camera,
-                                        const RenderSettings& settings, uint32_t x, uint32_t y,
-                                        uint32_t sampleIndex) {
+                                        const RenderSettings& settings, uint32_t x, uint32_t y, uint32_t sampleIndex) {
   PathSampler sampler(y * settings.width + x, sampleIndex, settings.seed, settings.sampler);
   Vec2 jitter = sampler.next2D();
   Vec2 uLens;
   if (camera.lensRadius > 0.0f) uLens = sampler.next2D();
-  Ray ray = camera.generateRay(float(x) + jitter.x, float(y) + jitter.y, int(settings.width), int(settings.height),
-                               uLens);
+  Ray ray =
+      camera.generateRay(float(x) + jitter.x, float(y) + jitter.y, int(settings.width), int(settings.height), uLens);
   if (!isTraceableCameraRay(ray)) {
     PathResult dropped;
     dropped.radiance = {-1.0f, -1.0f, -1.0f};

@@ -55,9 +55,9 @@ struct PunctualLight {
 struct SceneView {
   const Vec3* positions = nullptr;  // object space, all meshes back to back
   const Vec3* normals = nullptr;
-  const Vec2* uvs = nullptr;       // per vertex, alongside positions (zeros where a mesh has none)
-  const Vec4* tangents = nullptr;  // per vertex: unit tangent and bitangent sign (MikkTSpace convention)
-  const Vec3* colors = nullptr;    // per vertex, linear RGB; null when no mesh has colours
+  const Vec2* uvs = nullptr;          // per vertex, alongside positions (zeros where a mesh has none)
+  const Vec4* tangents = nullptr;     // per vertex: unit tangent and bitangent sign (MikkTSpace convention)
+  const Vec3* colors = nullptr;       // per vertex, linear RGB; null when no mesh has colours
   const uint32_t* indices = nullptr;  // mesh-local vertex indices, 3 per triangle
   const uint32_t* triangleMaterials = nullptr;
   const MeshRecord* meshes = nullptr;

@@ -22,7 +22,7 @@ struct TextureView {
   uint32_t height = 0;
   uint32_t channels = 4;
   TexelFormat format = TexelFormat::Unorm8;
-  uint32_t srgb = 0;  // 8-bit colour channels encode sRGB; alpha is always linear
+  uint32_t srgb = 0;                        // 8-bit colour channels encode sRGB; alpha is always linear
   TextureWrap wrapU = TextureWrap::Repeat;  // across the columns (glTF wrapS)
   TextureWrap wrapV = TextureWrap::Repeat;  // down the rows (glTF wrapT)
 };
@@ -98,7 +98,9 @@ CANDELA_FN Vec4 sampleTexture(const TexelArrays& arrays, int32_t index, Vec2 uv)
   int ya = wrapTexel(y0, h, t.wrapV), yb = wrapTexel(y0 + 1, h, t.wrapV);
   Vec4 c00 = fetchTexel(arrays, t, xa, ya), c10 = fetchTexel(arrays, t, xb, ya);
   Vec4 c01 = fetchTexel(arrays, t, xa, yb), c11 = fetchTexel(arrays, t, xb, yb);
-  auto mix = [&](float a, float b, float c, float d) { return (a * (1 - fx) + b * fx) * (1 - fy) + (c * (1 - fx) + d * fx) * fy; };
+  auto mix = [&](float a, float b, float c, float d) {
+    return (a * (1 - fx) + b * fx) * (1 - fy) + (c * (1 - fx) + d * fx) * fy;
+  };
   return {mix(c00.x, c10.x, c01.x, c11.x), mix(c00.y, c10.y, c01.y, c11.y), mix(c00.z, c10.z, c01.z, c11.z),
           mix(c00.w, c10.w, c01.w, c11.w)};
 }

@@ -37,20 +37,20 @@ void appendBlock(Mesh& mesh, const Vec3 (&floor)[4], float height, uint32_t mate
 Scene makeCornellRoom() {
   Scene scene;
   enum : uint32_t { kWhite, kRed, kGreen, kLight };
-  scene.materials = {diffuse({0.725f, 0.71f, 0.68f}), diffuse({0.63f, 0.065f, 0.05f}),
-                     diffuse({0.14f, 0.45f, 0.091f}), diffuse({0.78f, 0.78f, 0.78f}, {17.0f, 12.0f, 4.0f})};
+  scene.materials = {diffuse({0.725f, 0.71f, 0.68f}), diffuse({0.63f, 0.065f, 0.05f}), diffuse({0.14f, 0.45f, 0.091f}),
+                     diffuse({0.78f, 0.78f, 0.78f}, {17.0f, 12.0f, 4.0f})};
 
   Mesh room;
   room.name = "room";
   Vec3 inside = mm(278.0f, 274.4f, 279.6f);
   appendQuad(room, mm(552.8f, 0, 0), mm(0, 0, 0), mm(0, 0, 559.2f), mm(549.6f, 0, 559.2f), inside, kWhite);
-  appendQuad(room, mm(556.0f, 548.8f, 0), mm(556.0f, 548.8f, 559.2f), mm(0, 548.8f, 559.2f), mm(0, 548.8f, 0),
-             inside, kWhite);
-  appendQuad(room, mm(549.6f, 0, 559.2f), mm(0, 0, 559.2f), mm(0, 548.8f, 559.2f), mm(556.0f, 548.8f, 559.2f),
-             inside, kWhite);
+  appendQuad(room, mm(556.0f, 548.8f, 0), mm(556.0f, 548.8f, 559.2f), mm(0, 548.8f, 559.2f), mm(0, 548.8f, 0), inside,
+             kWhite);
+  appendQuad(room, mm(549.6f, 0, 559.2f), mm(0, 0, 559.2f), mm(0, 548.8f, 559.2f), mm(556.0f, 548.8f, 559.2f), inside,
+             kWhite);
   appendQuad(room, mm(0, 0, 559.2f), mm(0, 0, 0), mm(0, 548.8f, 0), mm(0, 548.8f, 559.2f), inside, kGreen);
-  appendQuad(room, mm(552.8f, 0, 0), mm(549.6f, 0, 559.2f), mm(556.0f, 548.8f, 559.2f), mm(556.0f, 548.8f, 0),
-             inside, kRed);
+  appendQuad(room, mm(552.8f, 0, 0), mm(549.6f, 0, 559.2f), mm(556.0f, 548.8f, 559.2f), mm(556.0f, 548.8f, 0), inside,
+             kRed);
   // The light hangs a fraction of a millimetre below the ceiling so that the two never coincide.
   appendQuad(room, mm(343.0f, 548.7f, 227.0f), mm(343.0f, 548.7f, 332.0f), mm(213.0f, 548.7f, 332.0f),
              mm(213.0f, 548.7f, 227.0f), inside, kLight);

@@ -39,7 +39,8 @@ EnvironmentDistribution EnvironmentDistribution::build(const std::vector<Vec3>& 
       float l = luminance(texels[size_t(row) * width + col]);
       d.func[size_t(row) * width + col] = std::isfinite(l) && l > 0.0f ? l * sinTheta : 0.0f;
     }
-    rowAverages[row] = float(buildCdf(&d.func[size_t(row) * width], width, &d.conditionalCdf[size_t(row) * (width + 1)]));
+    rowAverages[row] =
+        float(buildCdf(&d.func[size_t(row) * width], width, &d.conditionalCdf[size_t(row) * (width + 1)]));
   }
   d.funcAverage = float(buildCdf(rowAverages.data(), height, d.marginalCdf.data()));
   return d;

@@ -13,9 +13,9 @@ namespace {
 
 // How often next-event estimation samples the environment rather than an emissive triangle.
 float environmentSamplingProbability(const FlatScene& flat) {
-  bool environmentEmits = flat.environmentTexels.empty() ? !isBlack(flat.environment.scale)
-                                                         : flat.environmentDistribution.funcAverage > 0.0f &&
-                                                               !isBlack(flat.environment.scale);
+  bool environmentEmits = flat.environmentTexels.empty()
+                              ? !isBlack(flat.environment.scale)
+                              : flat.environmentDistribution.funcAverage > 0.0f && !isBlack(flat.environment.scale);
   return environmentEmits ? (flat.lights.empty() ? 1.0f : 0.5f) : 0.0f;
 }
 
@@ -34,8 +34,8 @@ void buildLightTable(const Scene& scene, FlatScene& flat) {
       Vec3 p0 = inst.objectToWorld.point(mesh.positions[mesh.indices[3 * t]]);
       Vec3 p1 = inst.objectToWorld.point(mesh.positions[mesh.indices[3 * t + 1]]);
       Vec3 p2 = inst.objectToWorld.point(mesh.positions[mesh.indices[3 * t + 2]]);
-      LightTriangle light{p0, p1 - p0, p2 - p0, m.emission, 0.5f * length(cross(p1 - p0, p2 - p0)), instanceId,
-                          uint32_t(t), frontSign};
+      LightTriangle light{p0,         p1 - p0,     p2 - p0,  m.emission, 0.5f * length(cross(p1 - p0, p2 - p0)),
+                          instanceId, uint32_t(t), frontSign};
       if (!(light.area > 0.0f)) continue;  // degenerate: can neither be sampled nor hit
       double power = double(light.area) * kPi * luminance(m.emission);
       flat.lights.push_back(light);
@@ -121,7 +121,8 @@ FlatScene FlatScene::build(const Scene& scene) {
   FlatScene flat;
   flat.materials = scene.materials;
   buildEnvironment(scene.environment, flat);
-  const bool anyColors = std::any_of(scene.meshes.begin(), scene.meshes.end(), [](const Mesh& m) { return !m.colors.empty(); });
+  const bool anyColors =
+      std::any_of(scene.meshes.begin(), scene.meshes.end(), [](const Mesh& m) { return !m.colors.empty(); });
   for (const Mesh& mesh : scene.meshes) {
     MeshRecord record;
     record.firstVertex = uint32_t(flat.positions.size());

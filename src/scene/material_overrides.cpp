@@ -53,7 +53,8 @@ void setOverride(MaterialOverrides& overrides, const std::string& name, float va
   for (const OverrideParameter& p : kParameters) {
     if (name != p.name) continue;
     if (!(value >= p.min && value <= p.max))
-      throw std::invalid_argument("override '" + name + "' must lie in [" + compact(p.min) + ", " + compact(p.max) + "]");
+      throw std::invalid_argument("override '" + name + "' must lie in [" + compact(p.min) + ", " + compact(p.max) +
+                                  "]");
     overrides.*p.field = value;
     return;
   }

@@ -15,10 +15,10 @@ namespace candela {
 struct Mesh {
   std::string name;
   std::vector<Vec3> positions;
-  std::vector<Vec3> normals;  // empty, or one per position
-  std::vector<Vec2> uvs;      // empty, or one per position; v runs down the image rows (glTF's convention)
-  std::vector<Vec4> tangents;  // empty, or one per position: unit tangent along +u and the bitangent sign
-  std::vector<Vec3> colors;    // empty, or one per position: linear RGB that multiplies the base colour
+  std::vector<Vec3> normals;      // empty, or one per position
+  std::vector<Vec2> uvs;          // empty, or one per position; v runs down the image rows (glTF's convention)
+  std::vector<Vec4> tangents;     // empty, or one per position: unit tangent along +u and the bitangent sign
+  std::vector<Vec3> colors;       // empty, or one per position: linear RGB that multiplies the base colour
   std::vector<uint32_t> indices;  // 3 per triangle
   std::vector<uint32_t> triangleMaterials;  // one per triangle
 
@@ -34,8 +34,8 @@ struct Texture {
   bool srgb = false;
   TextureWrap wrapU = TextureWrap::Repeat;  // across the columns
   TextureWrap wrapV = TextureWrap::Repeat;  // down the rows
-  std::vector<uint8_t> bytes;   // 8-bit images: width * height * channels
-  std::vector<float> floats;    // float images: width * height * channels
+  std::vector<uint8_t> bytes;               // 8-bit images: width * height * channels
+  std::vector<float> floats;                // float images: width * height * channels
 };
 
 struct Instance {
@@ -94,7 +94,7 @@ struct Scene {
   std::vector<PunctualLight> punctualLights;  // in world space
   CameraDescription camera;
   RenderHints renderHints;
-  bool cameraMissing = false;  // the input had no camera: `camera` is to be framed around the scene's bounds
+  bool cameraMissing = false;        // the input had no camera: `camera` is to be framed around the scene's bounds
   std::vector<NamedCamera> cameras;  // every camera the input defines, in order; `camera` is the first
   // The files the scene was read from: the model, its material libraries, buffers and images (what the scene
   // cache checks for changes).

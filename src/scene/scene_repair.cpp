@@ -308,7 +308,8 @@ void repairInstances(Scene& scene, const std::vector<MeshRepair>& repairs, const
   if (unusable > 0)
     warnings.add(file, std::to_string(unusable) +
                            " instances dropped: their transform is not finite, is singular, or shrinks some "
-                           "direction by more than a factor of " + compact(1.0 / kMinInstanceScale));
+                           "direction by more than a factor of " +
+                           compact(1.0 / kMinInstanceScale));
   if (outOfRange > 0)
     warnings.add(file, std::to_string(outOfRange) + " instances dropped: their transform places them beyond +-" +
                            compact(kMaxSceneCoordinate));
@@ -354,8 +355,8 @@ void clampEmittedRadiance(Scene& scene, const std::string& file, LoadWarnings& w
     texels += clampValues(f.data(), f.size(), kMaxRadiance / largestEmission[t]);
   }
   if (texels > 0)
-    warnings.add(file, std::to_string(texels) + " float texture values clamped to [0, " + limit +
-                           "] (to " + limit + " times the emission they scale)");
+    warnings.add(file, std::to_string(texels) + " float texture values clamped to [0, " + limit + "] (to " + limit +
+                           " times the emission they scale)");
 
   Environment& env = scene.environment;
   size_t environmentValues = clampValues(&env.intensity, 1, std::numeric_limits<float>::max());

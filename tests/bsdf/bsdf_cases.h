@@ -37,8 +37,8 @@ inline Material disneyMaterial(float roughness) {
   return m;
 }
 
-// Directional albedo (luminance) by deterministic midpoint quadrature of eval() |cos| over the hemisphere in (cos theta, phi):
-// independent of every sampling routine. Only for lobes smooth enough for the grid (roughness >= 0.3).
+// Directional albedo (luminance) by deterministic midpoint quadrature of eval() |cos| over the hemisphere in (cos
+// theta, phi): independent of every sampling routine. Only for lobes smooth enough for the grid (roughness >= 0.3).
 inline double albedoByQuadrature(const BsdfCase& c, Vec3 wo) {
   constexpr int kN = 400;
   double sum = 0.0;
@@ -65,8 +65,10 @@ inline std::vector<BsdfCase> casesAtRoughness(float r) {
   cases.push_back(makeCase("BlinnPhong", BlinnPhongBsdf(color, {0.3f, 0.3f, 0.3f}, exponent)));
   cases.push_back(makeCase("GgxReflection", GgxReflection{GgxDistribution::isotropic(r), color}));
   cases.push_back(makeCase("GgxReflectionAnisotropic", GgxReflection{GgxDistribution::anisotropic(r, 0.8f), color}));
-  cases.push_back(makeCase("RoughDielectricEntering", RoughDielectric{GgxDistribution::isotropic(r), 1.5f, color}, false));
-  cases.push_back(makeCase("RoughDielectricLeaving", RoughDielectric{GgxDistribution::isotropic(r), 1.0f / 1.5f, color}, false));
+  cases.push_back(
+      makeCase("RoughDielectricEntering", RoughDielectric{GgxDistribution::isotropic(r), 1.5f, color}, false));
+  cases.push_back(
+      makeCase("RoughDielectricLeaving", RoughDielectric{GgxDistribution::isotropic(r), 1.0f / 1.5f, color}, false));
   cases.push_back(makeCase("DisneyDiffuse", DisneyDiffuse{color, r, 0.5f, {0.3f, 0.3f, 0.3f}}));
   cases.push_back(makeCase("DisneyClearcoat", DisneyClearcoat{0.25f, lerp(1.0f - r, 0.1f, 0.001f)}));
   cases.push_back(makeCase("PbrDielectric", PbrBsdf(color, 0.0f, r, 0.5f)));

@@ -11,7 +11,9 @@ namespace {
 
 constexpr float kRoughnesses[] = {0.05f, 0.3f, 1.0f};
 
-float relativeDifference(float a, float b) { return std::fabs(a - b) / std::fmax(std::fmax(std::fabs(a), std::fabs(b)), 1e-6f); }
+float relativeDifference(float a, float b) {
+  return std::fabs(a - b) / std::fmax(std::fmax(std::fabs(a), std::fabs(b)), 1e-6f);
+}
 
 TEST(BsdfConsistency, SampleReturnsEvalAndPdf) {
   for (float r : kRoughnesses)
@@ -44,7 +46,8 @@ TEST(BsdfConsistency, PdfIntegratesToTheSuccessRate) {
       constexpr int kSamples = 100'000;
       int successes = 0;
       for (uint32_t i = 0; i < kSamples; ++i)
-        successes += c.sample(wo, randomUniform(i, 1, 0, 3), {randomUniform(i, 1, 1, 3), randomUniform(i, 1, 2, 3)}).valid;
+        successes +=
+            c.sample(wo, randomUniform(i, 1, 0, 3), {randomUniform(i, 1, 1, 3), randomUniform(i, 1, 2, 3)}).valid;
       double rate = double(successes) / kSamples;
       double sigma = std::sqrt(std::max(rate * (1 - rate), 1e-12) / kSamples);
       Chi2Options o;
@@ -62,7 +65,8 @@ TEST(BsdfConsistency, NeverFailingLobesIntegrateToOne) {
   o.sampleCount = 1;
   auto integral = [&](const BsdfCase& c) {
     return chi2TestSphere([](double, double, double) { return std::optional<Vec3>(); },
-                          [&](Vec3 wi) { return double(c.pdf(wo, wi)); }, o).integral;
+                          [&](Vec3 wi) { return double(c.pdf(wo, wi)); }, o)
+        .integral;
   };
   EXPECT_NEAR(integral(makeCase("Lambertian", LambertianBsdf{{1, 1, 1}})), 1.0, 2e-3);
   EXPECT_NEAR(integral(makeCase("DisneyDiffuse", DisneyDiffuse{{1, 1, 1}, 0.5f, 0.5f, {1, 1, 1}})), 1.0, 2e-3);
@@ -82,7 +86,8 @@ TEST(BsdfConsistency, ReflectionIsReciprocal) {
 }
 
 // Refraction obeys the generalised reciprocity of radiance transport: f(wo, wi) / eta_o^2 = f(wi, wo) / eta_i^2,
-// eta_x the index on wx's side (here eta_o = 1, eta_i = eta). The reversed pair is evaluated from the other side, in the flipped frame.
+// eta_x the index on wx's side (here eta_o = 1, eta_i = eta). The reversed pair is evaluated from the other side, in
+// the flipped frame.
 TEST(BsdfConsistency, RefractionSatisfiesGeneralisedReciprocity) {
   for (float r : {0.1f, 0.5f})
     for (float eta : {1.5f, 1.0f / 1.5f}) {
@@ -99,7 +104,8 @@ TEST(BsdfConsistency, RefractionSatisfiesGeneralisedReciprocity) {
         // The two evaluations build the half vector from different float expressions: 5e-3 relative, and 1e-6
         // absolute for pairs at the edge of the lobe's support (values ~1e-8), where the half vector is nearly
         // tangent to one of the directions and cancellation dominates.
-        ASSERT_NEAR(f * eta * eta, reversed, 5e-3f * std::fmax(f * eta * eta, reversed) + 1e-6f) << "eta " << eta << " r " << r;
+        ASSERT_NEAR(f * eta * eta, reversed, 5e-3f * std::fmax(f * eta * eta, reversed) + 1e-6f)
+            << "eta " << eta << " r " << r;
         ++checked;
       }
       EXPECT_GT(checked, 100);

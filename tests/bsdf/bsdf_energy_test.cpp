@@ -18,7 +18,8 @@ Estimate albedo(const BsdfCase& c, Vec3 wo, int samples, uint32_t seed = 11) {
   double sum = 0.0, sum2 = 0.0;
   for (int i = 0; i < samples; ++i) {
     uint32_t k = uint32_t(i);
-    BsdfSample s = c.sample(wo, randomUniform(k, 0, 0, seed), {randomUniform(k, 0, 1, seed), randomUniform(k, 0, 2, seed)});
+    BsdfSample s =
+        c.sample(wo, randomUniform(k, 0, 0, seed), {randomUniform(k, 0, 1, seed), randomUniform(k, 0, 2, seed)});
     double w = 0.0;
     if (s.valid) w = double(luminance(s.f)) * std::fabs(s.wi.z) / s.pdf * (s.wi.z < 0 ? s.eta * s.eta : 1.0f);
     sum += w;
@@ -113,7 +114,8 @@ TEST(BsdfEnergy, MixtureSamplingIsUnbiased) {
           double sum = 0;
           for (int i = 0; i < 100'000; ++i) {
             uint32_t k = uint32_t(i);
-            BsdfSample s = c.sample(wo, randomUniform(k, 0, 0, 11), {randomUniform(k, 0, 1, 11), randomUniform(k, 0, 2, 11)});
+            BsdfSample s =
+                c.sample(wo, randomUniform(k, 0, 0, 11), {randomUniform(k, 0, 1, 11), randomUniform(k, 0, 2, 11)});
             if (s.valid && s.wi.z > 0) sum += luminance(s.f) * s.wi.z / s.pdf;
           }
           e.mean = sum / 100'000;

@@ -133,7 +133,7 @@ inline Scene sunAndSky() {
   for (uint32_t y = 0; y < map.height; ++y)
     for (uint32_t x = 0; x < map.width; ++x) {
       const float up = 1.0f - float(y) / float(map.height);  // 1 at the zenith, 0 at the nadir
-      Vec3 c = Vec3{0.25f, 0.35f, 0.6f} * (0.4f + up) ;
+      Vec3 c = Vec3{0.25f, 0.35f, 0.6f} * (0.4f + up);
       const int dx = int(x) - int(sunColumn), dy = int(y) - int(sunRow);
       if (dx * dx + dy * dy <= 1) c = {20000.0f, 19000.0f, 16000.0f};
       float* t = &map.floats[(size_t(y) * map.width + x) * 3];

@@ -37,8 +37,7 @@ class ProgressiveRender {
   CpuBackend backend_;
 };
 
-inline RenderWithAovs renderWithAovs(const Scene& scene, uint32_t width, uint32_t height, uint32_t spp,
-                                     uint32_t seed) {
+inline RenderWithAovs renderWithAovs(const Scene& scene, uint32_t width, uint32_t height, uint32_t spp, uint32_t seed) {
   return ProgressiveRender(scene, width, height, seed).renderUpTo(spp);
 }
 

@@ -41,8 +41,8 @@ double worstRelativeDifference(const Image& a, const Image& b) {
   double worst = 0.0;
   for (size_t i = 0; i < a.pixels.size(); ++i)
     for (int c = 0; c < 3; ++c)
-      worst = std::fmax(
-          worst, std::fabs(double(a.pixels[i][c]) - b.pixels[i][c]) / std::fmax(1e-3, std::fabs(b.pixels[i][c])));
+      worst = std::fmax(worst, std::fabs(double(a.pixels[i][c]) - b.pixels[i][c]) /
+                                   std::fmax(1e-3, std::fabs(b.pixels[i][c])));
   return worst;
 }
 

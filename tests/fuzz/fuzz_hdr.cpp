@@ -12,7 +12,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     candela::Texture t = candela::decodeImage("fuzz.hdr", data, size, false);
     if (!t.floats.empty()) {
       std::vector<candela::Vec3> texels(size_t(t.width) * t.height);
-      for (size_t i = 0; i < texels.size(); ++i) texels[i] = {t.floats[4 * i], t.floats[4 * i + 1], t.floats[4 * i + 2]};
+      for (size_t i = 0; i < texels.size(); ++i)
+        texels[i] = {t.floats[4 * i], t.floats[4 * i + 1], t.floats[4 * i + 2]};
       candela::EnvironmentDistribution::build(texels, t.width, t.height);
     }
   } catch (const candela::LoadError&) {

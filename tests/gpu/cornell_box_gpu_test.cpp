@@ -114,8 +114,7 @@ TEST(GpuCornellBox, AgreementTestDetectsMissingBounces) {
   test::BlockComparison blocks = test::compareBlocks(cpu, gpu, kBlock, kBatches, kAlpha);
   EXPECT_GT(blocks.rejected, 0u);
   Image difference(kSize, kSize);
-  for (size_t i = 0; i < difference.pixels.size(); ++i)
-    difference.pixels[i] = cpu.mean.pixels[i] - gpu.mean.pixels[i];
+  for (size_t i = 0; i < difference.pixels.size(); ++i) difference.pixels[i] = cpu.mean.pixels[i] - gpu.mean.pixels[i];
   test::ImageMean d = test::imageMean(difference);
   EXPECT_GT(std::fabs(d.mean), test::twoSidedNormalQuantile(kAlpha) * d.standardError);
 }

@@ -61,8 +61,8 @@ TEST(CudaFilters, AtrousMatchesTheCpuFilter) {
 
 TEST(CudaFilters, BilateralMatchesTheCpuFilter) {
   const Frame f = renderedFrame();
-  for (BilateralParams params : {BilateralParams{0, 1.0f, 0.1f}, BilateralParams{3, 2.0f, 0.2f},
-                                 BilateralParams{5, 3.0f, 5.0f}}) {
+  for (BilateralParams params :
+       {BilateralParams{0, 1.0f, 0.1f}, BilateralParams{3, 2.0f, 0.2f}, BilateralParams{5, 3.0f, 5.0f}}) {
     const Image gpu = optix::bilateralFilterCuda(f.color, params);
     const double error = worstRelativeError(gpu, bilateralFilter(f.color, params));
     std::printf("bilateral, radius %d: worst relative difference %.3g\n", params.radius, error);
@@ -87,7 +87,8 @@ TEST(OptixAovs, AgreeWithTheCpuBackend) {
   const AovImages a = cpu->readAovs(), b = gpu->readAovs();
   size_t close = 0;
   for (size_t i = 0; i < a.depth.size(); ++i)
-    if (length(a.albedo.pixels[i] - b.albedo.pixels[i]) < 1e-3f && length(a.normal.pixels[i] - b.normal.pixels[i]) < 1e-3f &&
+    if (length(a.albedo.pixels[i] - b.albedo.pixels[i]) < 1e-3f &&
+        length(a.normal.pixels[i] - b.normal.pixels[i]) < 1e-3f &&
         std::fabs(a.depth[i] - b.depth[i]) < 1e-3f * a.depth[i] + 1e-5f)
       ++close;
   EXPECT_GE(double(close), 0.99 * double(a.depth.size()));

@@ -8,8 +8,8 @@
 
 namespace candela::test {
 
-BlockComparison compareBlocks(const PixelStatistics& a, const PixelStatistics& b, uint32_t blockSize,
-                              uint32_t batches, double alpha) {
+BlockComparison compareBlocks(const PixelStatistics& a, const PixelStatistics& b, uint32_t blockSize, uint32_t batches,
+                              double alpha) {
   const uint32_t width = a.mean.width, height = a.mean.height;
   if (b.mean.width != width || b.mean.height != height || width % blockSize != 0 || height % blockSize != 0)
     throw std::invalid_argument("compareBlocks needs two renders of one size, a multiple of the block size");

@@ -21,8 +21,8 @@ struct BlockComparison {
 // draw independent random numbers, so the variance of a block's mean is the sum of its pixels' variances over
 // the square of the pixel count. The t quantile uses batches - 1 degrees of freedom, the fewest that either
 // variance estimate has, which keeps the test conservative.
-BlockComparison compareBlocks(const PixelStatistics& a, const PixelStatistics& b, uint32_t blockSize,
-                              uint32_t batches, double alpha);
+BlockComparison compareBlocks(const PixelStatistics& a, const PixelStatistics& b, uint32_t blockSize, uint32_t batches,
+                              double alpha);
 
 // Expects independent renders (different seeds) of one scene to agree: no block rejected by compareBlocks,
 // and the mean per-pixel difference within a two-sided z-test at `alpha` (pixels are independent).

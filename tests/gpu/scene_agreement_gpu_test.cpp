@@ -65,10 +65,10 @@ Scene splitIntoMeshes(const Scene& scene, size_t triangles) {
 }
 
 void expectBackendsAgree(const Scene& scene, uint32_t seed) {
-  test::PixelStatistics cpu = test::batchStatistics<CpuBackend>(scene, test::squareImage(kSize, seed), kBatches,
-                                                                kSamplesPerBatch);
-  test::PixelStatistics gpu = test::batchStatistics<OptixBackend>(scene, test::squareImage(kSize, seed + 1),
-                                                                  kBatches, kSamplesPerBatch);
+  test::PixelStatistics cpu =
+      test::batchStatistics<CpuBackend>(scene, test::squareImage(kSize, seed), kBatches, kSamplesPerBatch);
+  test::PixelStatistics gpu =
+      test::batchStatistics<OptixBackend>(scene, test::squareImage(kSize, seed + 1), kBatches, kSamplesPerBatch);
   test::expectRendersAgree(cpu, gpu, kBlock, kBatches, kAlpha);
 }
 

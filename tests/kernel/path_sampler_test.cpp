@@ -94,9 +94,8 @@ TEST(SobolSampler, EachPairIsAZeroTwoSequence) {
             std::vector<Vec2> points;
             for (uint32_t i = 0; i < (1u << m); ++i) points.push_back(pairAt(pixel, (block << m) + i, seed, skip));
             std::string why;
-            ASSERT_TRUE(isZeroNet(points, why))
-                << "pixel " << pixel << ", seed " << seed << ", after " << skip << " numbers, block " << block << ": "
-                << why;
+            ASSERT_TRUE(isZeroNet(points, why)) << "pixel " << pixel << ", seed " << seed << ", after " << skip
+                                                << " numbers, block " << block << ": " << why;
           }
 }
 
@@ -144,16 +143,14 @@ TEST_P(SobolPairs, AreUniformOnTheSquare) {
       uint32_t i = counter++;
       uint32_t p = pixel + i / 64, index = i % 64;
       switch (pairing) {
-        case Pairing::Dimensions:
-          return Vec2{singleAt(p, index, 3, 4), singleAt(p, index, 3, 5)};
-        case Pairing::PairHalves:
-          return Vec2{pairAt(p, index, 3, 0).x, pairAt(p, index, 3, 2).y};
-        case Pairing::Pixels:
-          return Vec2{singleAt(pixel + 2 * i, 9, 3, 0), singleAt(pixel + 2 * i + 1, 9, 3, 0)};
+        case Pairing::Dimensions: return Vec2{singleAt(p, index, 3, 4), singleAt(p, index, 3, 5)};
+        case Pairing::PairHalves: return Vec2{pairAt(p, index, 3, 0).x, pairAt(p, index, 3, 2).y};
+        case Pairing::Pixels: return Vec2{singleAt(pixel + 2 * i, 9, 3, 0), singleAt(pixel + 2 * i + 1, 9, 3, 0)};
       }
       return std::nullopt;
     };
-    test::Chi2Result r = test::chi2TestSquare(sample, [](double, double) { return 1.0; }, options);
+    test::Chi2Result r = test::chi2TestSquare(
+        sample, [](double, double) { return 1.0; }, options);
     EXPECT_TRUE(r.passed) << "pixel " << pixel << ": " << r.message;
   }
 }

@@ -41,16 +41,14 @@ TEST_P(RngPairs, AreUniformOnTheSquare) {
   auto sample = [&](double, double, double) -> std::optional<Vec2> {
     uint32_t i = counter++;
     switch (pairing) {
-      case Pairing::Dimensions:
-        return Vec2{randomUniform(17, i, 4, 3), randomUniform(17, i, 5, 3)};
-      case Pairing::Samples:
-        return Vec2{randomUniform(17, 2 * i, 4, 3), randomUniform(17, 2 * i + 1, 4, 3)};
-      case Pairing::Pixels:
-        return Vec2{randomUniform(2 * i, 9, 0, 3), randomUniform(2 * i + 1, 9, 0, 3)};
+      case Pairing::Dimensions: return Vec2{randomUniform(17, i, 4, 3), randomUniform(17, i, 5, 3)};
+      case Pairing::Samples: return Vec2{randomUniform(17, 2 * i, 4, 3), randomUniform(17, 2 * i + 1, 4, 3)};
+      case Pairing::Pixels: return Vec2{randomUniform(2 * i, 9, 0, 3), randomUniform(2 * i + 1, 9, 0, 3)};
     }
     return std::nullopt;
   };
-  test::Chi2Result r = test::chi2TestSquare(sample, [](double, double) { return 1.0; }, options);
+  test::Chi2Result r = test::chi2TestSquare(
+      sample, [](double, double) { return 1.0; }, options);
   EXPECT_TRUE(r.passed) << r.message;
 }
 

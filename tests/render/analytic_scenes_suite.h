@@ -23,8 +23,8 @@ struct WithSampler {
 };
 
 template <class BackendType>
-using EverySampler = ::testing::Types<WithSampler<BackendType, SamplerKind::Sobol>,
-                                      WithSampler<BackendType, SamplerKind::Independent>>;
+using EverySampler =
+    ::testing::Types<WithSampler<BackendType, SamplerKind::Sobol>, WithSampler<BackendType, SamplerKind::Independent>>;
 
 // Batches of the Sobol sampler are parts of one stratified sequence, not independent: their spread overstates
 // the error of the overall mean, so the tests below stay valid for it, only more tolerant.
@@ -116,17 +116,16 @@ TYPED_TEST_P(AnalyticScenes, PointLightInClosedSphereEveryPixelIsTheAnswer) {
   PixelStatistics stats = TestFixture::render(makePointLitSphere(albedo, intensity), 24, 1000, 1);
   const float expected = pointLitSphereRadiance(albedo, intensity);
   std::string worst;
-  EXPECT_EQ(countRejectedPixels(stats, {expected, expected, expected}, TestFixture::kBatches, TestFixture::kAlpha,
-                                worst),
-            0u)
+  EXPECT_EQ(
+      countRejectedPixels(stats, {expected, expected, expected}, TestFixture::kBatches, TestFixture::kAlpha, worst), 0u)
       << worst;
   EXPECT_EQ(stats.invalidSamples, 0u);
   ImageMean m = imageMean(stats.mean);
   EXPECT_LT(std::fabs(m.mean - expected), twoSidedNormalQuantile(sidak(TestFixture::kAlpha, 2.0)) * m.standardError)
       << m.mean << " +- " << m.standardError;
   const float directOnly = albedo * intensity / kPi;
-  EXPECT_GT(countRejectedPixels(stats, {directOnly, directOnly, directOnly}, TestFixture::kBatches,
-                                TestFixture::kAlpha, worst),
+  EXPECT_GT(countRejectedPixels(stats, {directOnly, directOnly, directOnly}, TestFixture::kBatches, TestFixture::kAlpha,
+                                worst),
             0u);
 }
 
@@ -137,9 +136,8 @@ TYPED_TEST_P(AnalyticScenes, DirectionalLightOnFloorEveryPixelIsTheAnswer) {
                                               RenderSettings{}.rouletteDepth);
   const float expected = directionallyLitFloorRadiance(albedo, irradiance, cosAngle);
   std::string worst;
-  EXPECT_EQ(countRejectedPixels(stats, {expected, expected, expected}, TestFixture::kBatches, TestFixture::kAlpha,
-                                worst),
-            0u)
+  EXPECT_EQ(
+      countRejectedPixels(stats, {expected, expected, expected}, TestFixture::kBatches, TestFixture::kAlpha, worst), 0u)
       << worst;
 }
 
@@ -182,7 +180,7 @@ TYPED_TEST_P(AnalyticScenes, CutoutScreenDetectsWrongAnswers) {
 REGISTER_TYPED_TEST_SUITE_P(AnalyticScenes, ClosedSphereEveryPixelIsEmissionOverOneMinusAlbedo,
                             ClosedSphereImageMeanIsEmissionOverOneMinusAlbedoWithDefaultRoulette,
                             ClosedSphereDetectsWrongAnswers, PointLightInClosedSphereEveryPixelIsTheAnswer,
-                            DirectionalLightOnFloorEveryPixelIsTheAnswer, WhiteFurnaceEveryPixelIsOne, CutoutScreenPassesHalfTheSky,
-                            CutoutScreenDetectsWrongAnswers);
+                            DirectionalLightOnFloorEveryPixelIsTheAnswer, WhiteFurnaceEveryPixelIsOne,
+                            CutoutScreenPassesHalfTheSky, CutoutScreenDetectsWrongAnswers);
 
 }  // namespace candela::test

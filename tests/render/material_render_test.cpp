@@ -163,8 +163,10 @@ TEST(MaterialRender, MirrorCorridorSumsAHundredReflections) {
   mirror.emission = {kE, kE, kE};
   scene.materials = {mirror};
   Mesh mesh;
-  appendQuad(mesh, {-kHalf, -kHalf, 0.5f}, {kHalf, -kHalf, 0.5f}, {kHalf, kHalf, 0.5f}, {-kHalf, kHalf, 0.5f}, {0, 0, 0}, 0);
-  appendQuad(mesh, {-kHalf, -kHalf, -0.5f}, {kHalf, -kHalf, -0.5f}, {kHalf, kHalf, -0.5f}, {-kHalf, kHalf, -0.5f}, {0, 0, 0}, 0);
+  appendQuad(mesh, {-kHalf, -kHalf, 0.5f}, {kHalf, -kHalf, 0.5f}, {kHalf, kHalf, 0.5f}, {-kHalf, kHalf, 0.5f},
+             {0, 0, 0}, 0);
+  appendQuad(mesh, {-kHalf, -kHalf, -0.5f}, {kHalf, -kHalf, -0.5f}, {kHalf, kHalf, -0.5f}, {-kHalf, kHalf, -0.5f},
+             {0, 0, 0}, 0);
   scene.meshes.push_back(mesh);
   scene.instances.push_back({0, Affine3x4{}});
   scene.camera.eye = {0.1f, 0.2f, 0.0f};

@@ -80,7 +80,8 @@ TEST(EnvironmentSampling, RotatedMapSamplerMatchesItsPdf) {
 TEST(EnvironmentSampling, Chi2RejectsADistributionWithoutSinTheta) {
   std::vector<Vec3> texels = skyTexels(64, 32);
   for (uint32_t y = 0; y < 32; ++y)
-    for (uint32_t x = 0; x < 64; ++x) texels[y * 64 + x] = texels[y * 64 + x] / std::sin(kPi * (float(y) + 0.5f) / 32.0f);
+    for (uint32_t x = 0; x < 64; ++x)
+      texels[y * 64 + x] = texels[y * 64 + x] / std::sin(kPi * (float(y) + 0.5f) / 32.0f);
   MapFixture broken(0.0f, texels);
   MapFixture right(0.0f);
   auto r = broken.chi2(right.view);

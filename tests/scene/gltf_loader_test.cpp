@@ -127,7 +127,8 @@ TEST(GltfLoader, SharedMeshesBecomeInstancesEvenWhenMirrored) {
 TEST(GltfLoader, CameraLightsAndMaterials) {
   json g = triangleGltf();
   g["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.1}}}}};
-  g["nodes"] = {{{"mesh", 0}}, {{"camera", 0}, {"translation", {0, 0, 3}}},
+  g["nodes"] = {{{"mesh", 0}},
+                {{"camera", 0}, {"translation", {0, 0, 3}}},
                 {{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}}};
   g["scenes"] = {{{"nodes", {0, 1, 2}}}};
   g["extensions"] = {{"KHR_lights_punctual", {{"lights", {{{"type", "point"}}}}}}};
@@ -135,8 +136,8 @@ TEST(GltfLoader, CameraLightsAndMaterials) {
                      {"alphaMode", "MASK"},
                      {"alphaCutoff", 0.3},
                      {"doubleSided", true},
-                     {"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.6, 0.7, 0.8}}, {"metallicFactor", 0.1},
-                                               {"roughnessFactor", 0.2}}},
+                     {"pbrMetallicRoughness",
+                      {{"baseColorFactor", {0.5, 0.6, 0.7, 0.8}}, {"metallicFactor", 0.1}, {"roughnessFactor", 0.2}}},
                      {"extensions",
                       {{"KHR_materials_emissive_strength", {{"emissiveStrength", 4}}},
                        {"KHR_materials_transmission", {{"transmissionFactor", 0.9}}},
@@ -176,7 +177,8 @@ TEST(GltfLoader, PunctualLightsArePlacedByTheirNodes) {
   g["nodes"] = {{{"mesh", 0}},
                 {{"translation", {1, 2, 3}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}},
                 {{"rotation", {-s2, 0, 0, s2}}, {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}},
-                {{"translation", {0, 5, 0}}, {"rotation", {-s2, 0, 0, s2}},
+                {{"translation", {0, 5, 0}},
+                 {"rotation", {-s2, 0, 0, s2}},
                  {"extensions", {{"KHR_lights_punctual", {{"light", 2}}}}}}};
   g["scenes"] = {{{"nodes", {0, 1, 2, 3}}}};
   g["extensions"] = {{"KHR_lights_punctual",
@@ -244,7 +246,8 @@ TEST(GltfLoader, RequiredExtensionsCandelaLacksStopTheLoadNamingThem) {
   g["extensionsRequired"] = {"KHR_draco_mesh_compression", "KHR_texture_transform"};
   std::string e = errorOf(g);
   EXPECT_NE(e.find("requires the glTF extension KHR_draco_mesh_compression, which candela does not support"),
-            std::string::npos) << e;
+            std::string::npos)
+      << e;
   EXPECT_EQ(e.find("accessor"), std::string::npos) << e;
   EXPECT_EQ(e.find("KHR_texture_transform"), std::string::npos) << e;
 
@@ -263,7 +266,7 @@ TEST(GltfLoader, QuantizedAttributes) {
   std::vector<uint8_t> buffer;
   append(buffer, std::vector<uint16_t>{0, 0, 0, 0, 100, 0, 0, 0, 0, 100, 0, 0});  // 3 x (x, y, z, pad): 24 bytes
   append(buffer, std::vector<int8_t>{0, 0, 127, 0, 0, 0, 127, 0, 0, 0, 127, 0});  // 12 bytes
-  append(buffer, std::vector<uint16_t>{0, 0, 65535, 0, 0, 65535});                 // 12 bytes
+  append(buffer, std::vector<uint16_t>{0, 0, 65535, 0, 0, 65535});                // 12 bytes
   json g = triangleGltf();
   g["buffers"][0] = {{"byteLength", buffer.size()}, {"uri", "data:application/octet-stream;base64," + base64(buffer)}};
   g["bufferViews"] = {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 24}, {"byteStride", 8}},
@@ -291,15 +294,17 @@ TEST(GltfLoader, SparseAccessorsReplaceTheListedElements) {
     append(b, std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0});  // the base positions
     append(b, std::vector<float>{0, 0, 1, 0, 0, 1, 0, 0, 1});  // normals
     append(b, std::vector<float>{0, 0, 1, 0, 0, 1});
-    append(b, std::vector<uint16_t>{0, 1, 2, 2});            // indices, padded to 8 bytes
-    append(b, std::vector<uint8_t>{2, 0, 0, 0});              // sparse indices: element 2
-    append(b, std::vector<float>{0, 5, 0});                   // its new value
+    append(b, std::vector<uint16_t>{0, 1, 2, 2});  // indices, padded to 8 bytes
+    append(b, std::vector<uint8_t>{2, 0, 0, 0});   // sparse indices: element 2
+    append(b, std::vector<float>{0, 5, 0});        // its new value
     return b;
   }();
   g["buffers"][0] = {{"byteLength", buffer.size()}, {"uri", "data:application/octet-stream;base64," + base64(buffer)}};
   g["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 104}, {"byteLength", 4}});
   g["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 108}, {"byteLength", 12}});
-  json sparse = {{"count", 1}, {"indices", {{"bufferView", 3}, {"componentType", 5121}}}, {"values", {{"bufferView", 4}}}};
+  json sparse = {{"count", 1},
+                 {"indices", {{"bufferView", 3}, {"componentType", 5121}}},
+                 {"values", {{"bufferView", 4}}}};
   g["accessors"][0]["sparse"] = sparse;
   Scene s = load(g);
   EXPECT_FLOAT_EQ(s.meshes[0].positions[2].y, 5.0f);
@@ -325,7 +330,8 @@ TEST(GltfLoader, TexturesReadingTexcoord1GetThatSet) {
   g["textures"] = {{{"source", 0}}};
   g["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}, {"texCoord", 1}}}}}}};
   g["meshes"][0]["primitives"][0]["material"] = 0;
-  g["accessors"].push_back({{"bufferView", 0}, {"byteOffset", 12}, {"componentType", 5126}, {"count", 3}, {"type", "VEC2"}});
+  g["accessors"].push_back(
+      {{"bufferView", 0}, {"byteOffset", 12}, {"componentType", 5126}, {"count", 3}, {"type", "VEC2"}});
   g["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_1"] = 4;
   Scene s = load(g);
   // TEXCOORD_1 reads the positions from the second one on as pairs: (1, 0), (0, 0), (1, 0).
@@ -381,7 +387,8 @@ TEST(GltfLoader, GpuInstancingMakesAnInstancePerElement) {
   g["buffers"][0] = {{"byteLength", buffer.size()}, {"uri", "data:application/octet-stream;base64," + base64(buffer)}};
   g["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 104}, {"byteLength", 72}});
   g["accessors"].push_back({{"bufferView", 3}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}});
-  g["accessors"].push_back({{"bufferView", 3}, {"byteOffset", 36}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}});
+  g["accessors"].push_back(
+      {{"bufferView", 3}, {"byteOffset", 36}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}});
   g["nodes"][0]["translation"] = {0, 0, 10};
   g["nodes"][0]["extensions"] = {{"EXT_mesh_gpu_instancing", {{"attributes", {{"TRANSLATION", 4}, {"SCALE", 5}}}}}};
   g["extensionsUsed"] = g["extensionsRequired"] = {"EXT_mesh_gpu_instancing"};
@@ -504,11 +511,12 @@ TEST(GltfLoaderSharedScenes, DamagedHelmetGltfAndGlbAgree) {
 TEST(GltfLoaderSharedScenes, MaterialTestModels) {
   CANDELA_REQUIRE_SHARED_SCENES(scenes);
   // Triangles drawn, as counted from the files' index accessors over the node graph (see SOURCES.md there).
-  const std::map<std::string, size_t> triangles = {
-      {"TextureCoordinateTest", 10},    {"TwoSidedPlane", 2},        {"EmissiveStrengthTest", 90},
-      {"NegativeScaleTest", 7724},      {"TextureSettingsTest", 72}, {"AlphaBlendModeTest", 61},
-      {"TransmissionTest", 128775},     {"SpecularTest", 44828},     {"TransmissionRoughnessTest", 77792},
-      {"NormalTangentTest", 7774},      {"NormalTangentMirrorTest", 5240}};
+  const std::map<std::string, size_t> triangles = {{"TextureCoordinateTest", 10},        {"TwoSidedPlane", 2},
+                                                   {"EmissiveStrengthTest", 90},         {"NegativeScaleTest", 7724},
+                                                   {"TextureSettingsTest", 72},          {"AlphaBlendModeTest", 61},
+                                                   {"TransmissionTest", 128775},         {"SpecularTest", 44828},
+                                                   {"TransmissionRoughnessTest", 77792}, {"NormalTangentTest", 7774},
+                                                   {"NormalTangentMirrorTest", 5240}};
   size_t models = 0;
   for (const auto& entry : std::filesystem::directory_iterator(scenes / "gltf_material_tests")) {
     std::string name = entry.path().filename().string();

@@ -163,9 +163,9 @@ TEST(HostileGltf, RepeatedChildrenAreRefusedInsteadOfVisitedExponentiallyOften) 
 
 TEST(HostileGltf, NodesWithTwoParentsOrListedTwiceAsRootsAreRefused) {
   json twoParents = {{{"children", {2}}}, {{"children", {2}}}, {{"mesh", 0}}};
-  EXPECT_NE(gltfError(triangleGltf(twoParents, {0, 1}))
-                .find("hostile.gltf: nodes[2]: listed again in nodes[1].children"),
-            std::string::npos);
+  EXPECT_NE(
+      gltfError(triangleGltf(twoParents, {0, 1})).find("hostile.gltf: nodes[2]: listed again in nodes[1].children"),
+      std::string::npos);
   EXPECT_NE(gltfError(triangleGltf({{{"mesh", 0}}}, {0, 0})).find("nodes[0]: listed again in scenes[0].nodes"),
             std::string::npos);
 }

@@ -6,8 +6,8 @@
 #include <png.h>
 #include <stb/stb_image_write.h>
 
-#include <cstdio>
 #include <jpeglib.h>
+#include <cstdio>
 
 #include <fstream>
 #include <functional>
@@ -47,9 +47,8 @@ void writePngWithLibpng(const std::string& path, uint32_t width, uint32_t height
   png_infop info = png_create_info_struct(png);
   png_init_io(png, file);
   png_set_compression_level(png, 9);
-  png_set_IHDR(png, info, width, height, bitDepth, colorType,
-               interlaced ? PNG_INTERLACE_ADAM7 : PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
-               PNG_FILTER_TYPE_DEFAULT);
+  png_set_IHDR(png, info, width, height, bitDepth, colorType, interlaced ? PNG_INTERLACE_ADAM7 : PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   if (extra) extra(png, info);
   png_write_info(png, info);
   std::vector<uint8_t> samples;
@@ -92,14 +91,17 @@ TEST(PngDecoding, SixteenBitPaletteAndInterlacedImages) {
   EXPECT_EQ(g16.channels, 1u);
   EXPECT_EQ(g16.bytes, (std::vector<uint8_t>{0x12, 0xab, 0xff}));
   // A palette with transparency becomes RGBA.
-  writePngWithLibpng(dir.file("p.png"), 2, 1, 8, PNG_COLOR_TYPE_PALETTE, false,
-                     [](uint32_t, std::vector<uint8_t>& s) { s = {1, 0}; },
-                     [](png_structp png, png_infop info) {
-                       png_color palette[2] = {{10, 20, 30}, {40, 50, 60}};
-                       png_set_PLTE(png, info, palette, 2);
-                       png_byte alpha[1] = {128};
-                       png_set_tRNS(png, info, alpha, 1, nullptr);
-                     });
+  writePngWithLibpng(
+      dir.file("p.png"), 2, 1, 8, PNG_COLOR_TYPE_PALETTE, false,
+      [](uint32_t, std::vector<uint8_t>& s) {
+        s = {1, 0};
+      },
+      [](png_structp png, png_infop info) {
+        png_color palette[2] = {{10, 20, 30}, {40, 50, 60}};
+        png_set_PLTE(png, info, palette, 2);
+        png_byte alpha[1] = {128};
+        png_set_tRNS(png, info, alpha, 1, nullptr);
+      });
   Texture p = decodeFile(dir.file("p.png"));
   ASSERT_EQ(p.channels, 4u);
   EXPECT_EQ(p.bytes, (std::vector<uint8_t>{40, 50, 60, 255, 10, 20, 30, 128}));
@@ -263,8 +265,8 @@ TEST(TextureLimits, HugePngTextureIsDecodedSmallerWithOneWarning) {
   EXPECT_EQ(t.width, 8192u);
   EXPECT_EQ(t.height, 8192u);
   EXPECT_EQ(t.channels, 1u);
-  EXPECT_EQ(t.bytes[0], 255);                      // top half white,
-  EXPECT_EQ(t.bytes[size_t(8191) * 8192], 0);      // bottom half black
+  EXPECT_EQ(t.bytes[0], 255);                  // top half white,
+  EXPECT_EQ(t.bytes[size_t(8191) * 8192], 0);  // bottom half black
   ASSERT_EQ(warnings.messages.size(), 1u);
   EXPECT_NE(warnings.messages[0].find("bomb.png: texture of 16000x16000 pixels downscaled to 8192x8192"),
             std::string::npos)

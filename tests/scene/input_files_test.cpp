@@ -78,10 +78,14 @@ TEST(InputFiles, FifosAreRefusedWithoutWaitingForAWriter) {
     std::string path = fifo(dir, name);
     std::string what = errorOf(path, [&] {
       std::string ext = fs::path(path).extension().string();
-      if (ext == ".obj") loadObj(path, warnings);
-      else if (ext == ".gltf") loadGltf(path, warnings);
-      else if (ext == ".json") loadSceneFile(path, &loadModel, warnings);
-      else loadEnvironmentImage(path);
+      if (ext == ".obj")
+        loadObj(path, warnings);
+      else if (ext == ".gltf")
+        loadGltf(path, warnings);
+      else if (ext == ".json")
+        loadSceneFile(path, &loadModel, warnings);
+      else
+        loadEnvironmentImage(path);
     });
     EXPECT_NE(what.find("is a FIFO"), std::string::npos) << what;
   }
@@ -101,11 +105,13 @@ TEST(InputFiles, ReferencedFilesThatAreFifosOrDevicesAreRefused) {
   std::string all;
   for (const std::string& w : warnings.messages) all += w + "\n";
   EXPECT_NE(all.find("material library 'lib.mtl' cannot be read (" + dir.file("lib.mtl") + ": is a FIFO"),
-            std::string::npos) << all;
+            std::string::npos)
+      << all;
   EXPECT_NE(all.find(dir.file("zero.png") + ": is a device"), std::string::npos) << all;
 
   linkTo(dir, "zero.bin", "/dev/zero");
-  std::string gltf = dir.write("b.gltf", R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "zero.bin", "byteLength": 12}]})");
+  std::string gltf =
+      dir.write("b.gltf", R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "zero.bin", "byteLength": 12}]})");
   EXPECT_NE(errorOf(gltf, [&] { loadGltf(gltf, warnings, OutsidePaths::Allowed); }).find("is a device"),
             std::string::npos);
   EXPECT_NE(errorOf(gltf, [&] { loadGltf(gltf, warnings); }).find("buffer 'zero.bin' leads to /dev/zero"),
@@ -122,7 +128,8 @@ TEST(InputFiles, FilesLargerThanTheLimitAreRefused) {
   std::string bytes = errorOf(obj, [&] { readFileBytes(obj); });
   setMaxInputFileBytes(limit);
   EXPECT_NE(what.find("is 32 bytes, larger than the 7.45e-09 GiB a file may be (--max-file-gib raises the limit)"),
-            std::string::npos) << what;
+            std::string::npos)
+      << what;
   EXPECT_EQ(what, bytes);
   EXPECT_EQ(loadObj(obj, warnings).triangleCount(), 1u);
   EXPECT_EQ(kDefaultMaxInputFileBytes, uint64_t(8) << 30);

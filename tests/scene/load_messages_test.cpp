@@ -18,11 +18,19 @@ TEST(LoadMessages, PrintableTextEscapesWhatATerminalWouldObey) {
   EXPECT_EQ(printableText("\x1b[31mred\x1b[0m"), "\\x1b[31mred\\x1b[0m");
   EXPECT_EQ(printableText("bell\a tab\t nul" + std::string(1, '\0')), "bell\\x07 tab\\x09 nul\\x00");
   EXPECT_EQ(printableText("two\nlines\r\n"), "two lines");
-  EXPECT_EQ(printableText("caf\xC3\xA9 \xE6\x97\xA5\xE6\x9C\xAC \xF0\x9F\x99\x82"), "caf\xC3\xA9 \xE6\x97\xA5\xE6\x9C\xAC \xF0\x9F\x99\x82");
-  EXPECT_EQ(printableText("\xC2\x9B" "31m"), "\\xc2\\x9b31m");            // C1 CSI, UTF-8 encoded
-  EXPECT_EQ(printableText("\x9b" "31m"), "\\x9b31m");                     // C1 CSI, a lone byte
-  EXPECT_EQ(printableText("a\xE2\x80\xAE" "gnp.exe"), "a\\xe2\\x80\\xaegnp.exe");  // right-to-left override
-  EXPECT_EQ(printableText("\xC0\xAF \xED\xA0\x80 \xF5\x80\x80\x80 \xE2\x82"), "\\xc0\\xaf \\xed\\xa0\\x80 \\xf5\\x80\\x80\\x80 \\xe2\\x82");
+  EXPECT_EQ(printableText("caf\xC3\xA9 \xE6\x97\xA5\xE6\x9C\xAC \xF0\x9F\x99\x82"),
+            "caf\xC3\xA9 \xE6\x97\xA5\xE6\x9C\xAC \xF0\x9F\x99\x82");
+  EXPECT_EQ(printableText("\xC2\x9B"
+                          "31m"),
+            "\\xc2\\x9b31m");  // C1 CSI, UTF-8 encoded
+  EXPECT_EQ(printableText("\x9b"
+                          "31m"),
+            "\\x9b31m");  // C1 CSI, a lone byte
+  EXPECT_EQ(printableText("a\xE2\x80\xAE"
+                          "gnp.exe"),
+            "a\\xe2\\x80\\xaegnp.exe");  // right-to-left override
+  EXPECT_EQ(printableText("\xC0\xAF \xED\xA0\x80 \xF5\x80\x80\x80 \xE2\x82"),
+            "\\xc0\\xaf \\xed\\xa0\\x80 \\xf5\\x80\\x80\\x80 \\xe2\\x82");
   EXPECT_EQ(printableText("\x7f"), "\\x7f");
   std::string once = printableText("\x1b]0;title\x07");
   EXPECT_EQ(printableText(once), once);
@@ -64,10 +72,13 @@ TEST(LoadMessages, JsonErrorsSayTheLineAndColumn) {
   EXPECT_EQ(sceneError(dir, "{\n  \"models\": [],\n  \"render\": {\"spp\": 1e400}\n}"),
             file + ":3:21: invalid JSON: number overflow parsing '1e400'");
   EXPECT_EQ(sceneError(dir, "{\"models\": [1,,]}"),
-            file + ":1:15: invalid JSON: syntax error while parsing value - unexpected ','; expected '[', '{', or a "
-                   "literal");
-  EXPECT_EQ(sceneError(dir, "{\"models\": \"\x1b[2J").rfind(file + ":1:13: invalid JSON: syntax error while parsing "
-                                                                "value - invalid string: control character U+001B", 0),
+            file +
+                ":1:15: invalid JSON: syntax error while parsing value - unexpected ','; expected '[', '{', or a "
+                "literal");
+  EXPECT_EQ(sceneError(dir, "{\"models\": \"\x1b[2J")
+                .rfind(file + ":1:13: invalid JSON: syntax error while parsing "
+                              "value - invalid string: control character U+001B",
+                       0),
             0u);
   EXPECT_EQ(sceneError(dir, R"({"models": [{"file": "\u001b[31m.obj"}]})"),
             dir.file("\\x1b[31m.obj") + ": cannot open: No such file or directory");

@@ -35,12 +35,14 @@ std::string errorOf(const std::string& text) {
 const char* kQuad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
 
 TEST(ObjLoader, TriangulatesPolygonsAndKeepsWinding) {
-  Scene s = loadText(std::string(kQuad) + "f 1 2 3 4 4\n" + "v 2 0 0\nv 3 0 0\nv 3 1 0\nv 2.5 1.5 0\nv 2 1 0\nf 5 6 7 8 9\n");
+  Scene s =
+      loadText(std::string(kQuad) + "f 1 2 3 4 4\n" + "v 2 0 0\nv 3 0 0\nv 3 1 0\nv 2.5 1.5 0\nv 2 1 0\nf 5 6 7 8 9\n");
   ASSERT_EQ(s.meshes.size(), 1u);
   const Mesh& m = s.meshes[0];
   EXPECT_EQ(m.triangleCount(), 2u + 3u + 3u);
   for (size_t t = 0; t < m.triangleCount(); ++t) {
-    Vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]], c = m.positions[m.indices[3 * t + 2]];
+    Vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
+         c = m.positions[m.indices[3 * t + 2]];
     EXPECT_GE(cross(b - a, c - a).z, 0.0f) << "triangle " << t << " flipped";
   }
   EXPECT_TRUE(s.cameraMissing);
@@ -96,8 +98,7 @@ TEST(ObjLoader, ErrorsNameFileAndLine) {
   EXPECT_EQ(errorOf("v 0 0 0\nv nan 0 0\nv 1 1 0\nf 1 2 3\n"), "test.obj:2: a coordinate is not a number");
   EXPECT_EQ(errorOf("v 0 0 0 # fine\nv 1 0 0\nv 1 1 0\nvn 0 0 1\nvn 0 0 1.#IND\nf 1 2 3\n"),
             "test.obj:5: a coordinate is not a number");
-  EXPECT_EQ(errorOf("v 0 0 0\nv 1 0 0\nv 1 1 0\nvn 0 0 1e39\nf 1//1 2//1 3//1\n"),
-            "test.obj:4: non-finite normal");
+  EXPECT_EQ(errorOf("v 0 0 0\nv 1 0 0\nv 1 1 0\nvn 0 0 1e39\nf 1//1 2//1 3//1\n"), "test.obj:4: non-finite normal");
   EXPECT_NE(errorOf("v 0 0 0\nv 1 0 0\nl 1 2\n").find("test.obj: has only line and point elements"), std::string::npos);
   EXPECT_NE(errorOf("# nothing\n").find("test.obj: has no faces"), std::string::npos);
   EXPECT_NE(errorOf("").find("test.obj: has no faces"), std::string::npos);
@@ -217,11 +218,16 @@ TEST(ObjLoaderSharedScenes, EdgeCases) {
   CANDELA_REQUIRE_SHARED_SCENES(scenes);
   // The deliberately invalid ones, and what a user should get: an error, or a warning and a render.
   const std::map<std::string, bool> invalidRejected = {
-      {"invalid-face-definition.obj", true},     {"invalid-relative-texture-index.obj", true},
-      {"invalid-relative-vertex-index.obj", true}, {"issue-140-zero-face-idx.obj", true},
-      {"test-nan.obj", true},                    {"line-prim.obj", true},
-      {"points-prim.obj", true},                 {"issue-356-leading-spaces-newmtl.obj", true},
-      {"missing_material_file.obj", false},      {"mtllib-multiple-files-issue-112.obj", false},
+      {"invalid-face-definition.obj", true},
+      {"invalid-relative-texture-index.obj", true},
+      {"invalid-relative-vertex-index.obj", true},
+      {"issue-140-zero-face-idx.obj", true},
+      {"test-nan.obj", true},
+      {"line-prim.obj", true},
+      {"points-prim.obj", true},
+      {"issue-356-leading-spaces-newmtl.obj", true},
+      {"missing_material_file.obj", false},
+      {"mtllib-multiple-files-issue-112.obj", false},
       {"issue-244-mtl-searchpaths.obj", false},
   };
   size_t valid = 0;

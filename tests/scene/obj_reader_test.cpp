@@ -165,7 +165,8 @@ TEST(ObjLoader, MalformedReferencesAreErrors) {
 TEST(ObjLoader, CoordinatesMustBeWholeNumbers) {
   const std::string faces = "f 1 2 3\n";
   for (const char* bad : {"v 0 0 1-2\n", "v 0 0 1e\n", "v 0 inf 0\n", "v 0 0 0x1p3\n", "v 0 0 0 red\n", "vt 0 0#\n"})
-    EXPECT_EQ(errorOf(std::string("v 0 0 0\nv 1 0 0\nv 0 1 0\n") + bad + faces), "test.obj:4: a coordinate is not a number")
+    EXPECT_EQ(errorOf(std::string("v 0 0 0\nv 1 0 0\nv 0 1 0\n") + bad + faces),
+              "test.obj:4: a coordinate is not a number")
         << bad;
   EXPECT_EQ(errorOf("v 0 0 0\nv 1e39 0 0\nv 0 1 0\nf 1 2 3\n"), "test.obj:2: non-finite vertex position");
   EXPECT_EQ(errorOf("vt 0 -1e39\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), "test.obj:1: non-finite texture coordinate");
@@ -205,7 +206,8 @@ TEST(ObjLoader, ReadsEveryLibraryOfAnMtllibStatementAndRecordsTheInputFiles) {
   dir.write("a.mtl", "newmtl red\nKd 1 0 0\n");
   dir.write("b c.mtl", "newmtl blue\nKd 0 0 1\nmap_Kd blue.png\n");
   const std::string obj =
-      dir.write("m.obj", "mtllib a.mtl b\\ c.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\nusemtl blue\nf 1 2 3\n");
+      dir.write("m.obj",
+                "mtllib a.mtl b\\ c.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\nusemtl blue\nf 1 2 3\n");
   LoadWarnings warnings;
   Scene s = loadObj(obj, warnings);
   ASSERT_EQ(s.materials.size(), 2u);

@@ -3,8 +3,8 @@
 // reads a file elsewhere.
 #include <gtest/gtest.h>
 
-#include <nlohmann/json.hpp>
 #include <stb/stb_image_write.h>
+#include <nlohmann/json.hpp>
 
 #include <cstring>
 #include <filesystem>
@@ -50,7 +50,8 @@ TEST(PathConfinement, ResolvesInsideAndRefusesOutside) {
   EXPECT_FALSE(up.allowed());
   EXPECT_EQ(up.path, dir.file("secret.txt"));
   EXPECT_NE(up.refusal.find("leads to " + dir.file("secret.txt") + ", outside the folder " + dir.file("model")),
-            std::string::npos) << up.refusal;
+            std::string::npos)
+      << up.refusal;
   EXPECT_NE(up.refusal.find("--allow-outside-paths"), std::string::npos);
   EXPECT_FALSE(resolveModelPath(dir.file("model"), "/etc/passwd", rule).allowed());
   EXPECT_FALSE(resolveModelPath(dir.file("model"), "..\\secret.txt", rule).allowed());
@@ -66,8 +67,8 @@ TEST(PathConfinement, ResolvesInsideAndRefusesOutside) {
   EXPECT_FALSE(resolveModelPath(dir.file("model"), "up/secret.txt", rule).allowed());
   // The model's own folder may be reached through a link.
   fs::create_directory_symlink(dir.file("model"), dir.file("linked-model"));
-  EXPECT_TRUE(resolveModelPath(dir.file("linked-model"), "a.png", {dir.file("linked-model"), OutsidePaths::Refused})
-                  .allowed());
+  EXPECT_TRUE(
+      resolveModelPath(dir.file("linked-model"), "a.png", {dir.file("linked-model"), OutsidePaths::Refused}).allowed());
   EXPECT_TRUE(resolveModelPath(dir.file("model"), "/etc/passwd", {dir.file("model"), OutsidePaths::Allowed}).allowed());
 }
 
@@ -91,19 +92,22 @@ TEST(PathConfinement, ObjMaterialLibrariesAndTexturesStayInTheModelsFolder) {
   writePng(dir.file("model/inside.png"));
   dir.write("model/m.mtl", "newmtl blue\nKd 0 0 1\nmap_Kd ../outside.png\nnewmtl green\nmap_Kd inside.png\n");
   // Faces use every material: only the materials faces use are made, and only their textures read.
-  const std::string obj = dir.write("model/m.obj", "mtllib ../outside.mtl " + dir.file("outside.mtl") +
-                                                       " m.mtl\nusemtl red\n" + kTriangleObj +
-                                                       "usemtl blue\nf 1 2 3\nusemtl green\nf 1 2 3\n");
+  const std::string obj =
+      dir.write("model/m.obj", "mtllib ../outside.mtl " + dir.file("outside.mtl") + " m.mtl\nusemtl red\n" +
+                                   kTriangleObj + "usemtl blue\nf 1 2 3\nusemtl green\nf 1 2 3\n");
 
   LoadWarnings warnings;
   Scene s = loadObj(obj, warnings);
   std::string all = allOf(warnings);
   EXPECT_NE(all.find(obj + ":1: material library '../outside.mtl' leads to " + dir.file("outside.mtl") +
                      ", outside the folder " + dir.file("model")),
-            std::string::npos) << all;
-  EXPECT_NE(all.find(obj + ":1: material library '" + dir.file("outside.mtl") + "' leads to"), std::string::npos) << all;
+            std::string::npos)
+      << all;
+  EXPECT_NE(all.find(obj + ":1: material library '" + dir.file("outside.mtl") + "' leads to"), std::string::npos)
+      << all;
   EXPECT_NE(all.find(dir.file("outside.png") + ": leads to " + dir.file("outside.png") + ", outside the folder"),
-            std::string::npos) << all;
+            std::string::npos)
+      << all;
   EXPECT_EQ(s.textures.size(), 1u);  // inside.png only
   for (const std::string& f : s.inputFiles) EXPECT_EQ(f.find("outside"), std::string::npos) << f;
 
@@ -120,8 +124,9 @@ json gltfWithBuffer(const std::string& uri) {
 TEST(PathConfinement, GltfBuffersOutsideTheFolderAreAnError) {
   TempFolder dir;
   dir.write("secret.bin", std::string(12, '\0'));
-  for (const std::string& uri : {std::string("../secret.bin"), std::string("..%2fsecret.bin"),
-                                 std::string("..%2Fsecret.bin"), std::string("..%5csecret.bin"), dir.file("secret.bin")}) {
+  for (const std::string& uri :
+       {std::string("../secret.bin"), std::string("..%2fsecret.bin"), std::string("..%2Fsecret.bin"),
+        std::string("..%5csecret.bin"), dir.file("secret.bin")}) {
     std::string gltf = dir.write("model/m.gltf", gltfWithBuffer(uri).dump());
     LoadWarnings warnings;
     try {
@@ -130,7 +135,8 @@ TEST(PathConfinement, GltfBuffersOutsideTheFolderAreAnError) {
     } catch (const LoadError& e) {
       EXPECT_NE(std::string(e.what()).find(gltf + ": buffer '"), std::string::npos) << e.what();
       EXPECT_NE(std::string(e.what()).find("leads to " + dir.file("secret.bin") + ", outside the folder"),
-                std::string::npos) << e.what();
+                std::string::npos)
+          << e.what();
     }
   }
   // The working directory, where tinygltf looks next, is not searched either.
@@ -193,7 +199,8 @@ TEST(PathConfinement, GltfImagesOutsideTheFolderAreAWarning) {
   writeTriangleBuffer(dir.file("model/m.bin"));
   json g = triangleInBuffer("m.bin");
   g.update({
-      {"images", {{{"uri", "..%2Foutside.png"}}, {{"uri", "a+b.png"}}, {{"uri", "a%00.png"}}, {{"uri", "file:///etc/passwd"}}}},
+      {"images",
+       {{{"uri", "..%2Foutside.png"}}, {{"uri", "a+b.png"}}, {{"uri", "a%00.png"}}, {{"uri", "file:///etc/passwd"}}}},
       {"textures", {{{"source", 0}}, {{"source", 1}}, {{"source", 2}}, {{"source", 3}}}},
       {"materials",
        {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}},
@@ -212,7 +219,8 @@ TEST(PathConfinement, GltfImagesOutsideTheFolderAreAWarning) {
   Scene s = loadGltf(gltf, warnings);
   std::string all = allOf(warnings);
   EXPECT_NE(all.find(dir.file("outside.png") + ": leads to " + dir.file("outside.png") + ", outside the folder"),
-            std::string::npos) << all;
+            std::string::npos)
+      << all;
   EXPECT_NE(all.find("images[2].uri 'a%00.png' names no file"), std::string::npos) << all;
   EXPECT_NE(all.find("images[3].uri 'file:///etc/passwd' names no file"), std::string::npos) << all;
   ASSERT_EQ(s.textures.size(), 1u) << all;  // a+b.png, by its own name
@@ -236,7 +244,8 @@ TEST(PathConfinement, SceneFilesNameModelsInTheirFolder) {
   } catch (const LoadError& e) {
     EXPECT_NE(std::string(e.what()).find(scene + ": models[0].file: '../models/t.obj' leads to " +
                                          dir.file("models/t.obj") + ", outside the folder " + dir.file("scenes")),
-              std::string::npos) << e.what();
+              std::string::npos)
+        << e.what();
   }
   EXPECT_EQ(loadSceneFile(scene, &loadModel, warnings, OutsidePaths::Allowed).triangleCount(), 1u);
 
@@ -245,14 +254,16 @@ TEST(PathConfinement, SceneFilesNameModelsInTheirFolder) {
   std::string linked = dir.write("scenes/linked.json", R"({"models": [{"file": "linked/t.obj"}]})");
   EXPECT_THROW(loadSceneFile(linked, &loadModel, warnings), LoadError);
 
-  std::string withMap = dir.write("scenes/e.json", R"({"models": [{"file": "t.obj"}], "environment": {"map": "../sky.hdr"}})");
+  std::string withMap =
+      dir.write("scenes/e.json", R"({"models": [{"file": "t.obj"}], "environment": {"map": "../sky.hdr"}})");
   dir.write("scenes/t.obj", kTriangleObj);
   try {
     loadSceneFile(withMap, &loadModel, warnings);
     ADD_FAILURE() << "an environment map outside the scene file's folder was read";
   } catch (const LoadError& e) {
     EXPECT_NE(std::string(e.what()).find(withMap + ": environment.map: '../sky.hdr' leads to " + dir.file("sky.hdr")),
-              std::string::npos) << e.what();
+              std::string::npos)
+        << e.what();
   }
 }
 

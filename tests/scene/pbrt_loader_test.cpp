@@ -82,9 +82,9 @@ TEST(PbrtLoader, ErrorsNameFileAndLine) {
             "test.pbrt:2: 'x' is not a number (value of 'radius')");
   EXPECT_EQ(loadError("WorldBegin\nMaterial \"diffuse\n\""), "test.pbrt:2: line break inside a string");
   EXPECT_EQ(loadError("AttributeEnd\n"), "test.pbrt:1: AttributeEnd without a matching begin");
-  EXPECT_EQ(
-      loadError("WorldBegin\nShape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" [0 1 3]"),
-      "test.pbrt:2: 'indices' refers to vertex 3 of 3");
+  EXPECT_EQ(loadError(
+                "WorldBegin\nShape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" [0 1 3]"),
+            "test.pbrt:2: 'indices' refers to vertex 3 of 3");
 }
 
 TEST(PbrtLoader, TransformsApplyInPbrtsOrder) {
@@ -301,13 +301,14 @@ TEST(PbrtLoader, PngTexturesNormalMapsAndTheirEncoding) {
   const uint8_t pixels[4 * 3] = {255, 0, 0, 0, 255, 0, 0, 0, 255, 128, 128, 255};
   ASSERT_TRUE(stbi_write_png(folder.file("albedo.png").c_str(), 2, 2, 3, pixels, 6));
   ASSERT_TRUE(stbi_write_png(folder.file("normals.png").c_str(), 2, 2, 3, pixels, 6));
-  std::string path = folder.write(
-      "scene.pbrt", std::string(kMirroredCamera) +
-                        "Texture \"srgb\" \"spectrum\" \"imagemap\" \"string filename\" \"albedo.png\"\n"
-                        "Texture \"linear\" \"spectrum\" \"imagemap\" \"string filename\" \"albedo.png\" "
-                        "\"string encoding\" \"linear\"\n"
-                        "Material \"diffuse\" \"texture reflectance\" \"srgb\" \"string normalmap\" \"normals.png\"\n" +
-                        kTriangle + "Material \"diffuse\" \"texture reflectance\" \"linear\"\n" + kTriangle);
+  std::string path =
+      folder.write("scene.pbrt",
+                   std::string(kMirroredCamera) +
+                       "Texture \"srgb\" \"spectrum\" \"imagemap\" \"string filename\" \"albedo.png\"\n"
+                       "Texture \"linear\" \"spectrum\" \"imagemap\" \"string filename\" \"albedo.png\" "
+                       "\"string encoding\" \"linear\"\n"
+                       "Material \"diffuse\" \"texture reflectance\" \"srgb\" \"string normalmap\" \"normals.png\"\n" +
+                       kTriangle + "Material \"diffuse\" \"texture reflectance\" \"linear\"\n" + kTriangle);
   LoadWarnings warnings;
   Scene scene = loadPbrt(path, warnings);
   EXPECT_TRUE(warnings.messages.empty()) << warnings.messages.front();
@@ -468,9 +469,9 @@ TEST(PbrtLoader, ParametersNotAppliedAreNamed) {
 
 TEST(PbrtLoader, UnknownSpectraWarnAndTakeTheDefault) {
   LoadWarnings warnings;
-  Scene scene = loadText(
-      std::string(kMirroredCamera) + "Material \"diffuse\" \"spectrum reflectance\" \"measured.spd\"\n" + kTriangle,
-      &warnings);
+  Scene scene = loadText(std::string(kMirroredCamera) +
+                             "Material \"diffuse\" \"spectrum reflectance\" \"measured.spd\"\n" + kTriangle,
+                         &warnings);
   expectNear(scene.materials[scene.meshes[0].triangleMaterials[0]].baseColor, {0.5f, 0.5f, 0.5f});
   ASSERT_EQ(warnings.messages.size(), 1u);
   EXPECT_NE(warnings.messages[0].find("'measured.spd'"), std::string::npos) << warnings.messages[0];
@@ -479,14 +480,15 @@ TEST(PbrtLoader, UnknownSpectraWarnAndTakeTheDefault) {
 TEST(PbrtLoader, ImageTexturesWithTheirUvMapping) {
   TempFolder folder;
   folder.write("grey.pfm", std::string("Pf\n2 1\n-1.0\n") + std::string("\0\0\0\x3f\0\0\x80\x3f", 8));
-  std::string path = folder.write(
-      "scene.pbrt", std::string(kMirroredCamera) +
-                        "Texture \"t\" \"spectrum\" \"imagemap\" \"string filename\" \"grey.pfm\" "
-                        "\"float uscale\" 2 \"float vscale\" 4 \"float scale\" 0.5\n"
-                        "Texture \"a\" \"float\" \"imagemap\" \"string filename\" \"grey.pfm\"\n"
-                        "Material \"diffuse\" \"texture reflectance\" \"t\"\n"
-                        "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"point2 uv\" [0 0 1 0 0 1] "
-                        "\"texture alpha\" \"a\"\n");
+  std::string path =
+      folder.write("scene.pbrt",
+                   std::string(kMirroredCamera) +
+                       "Texture \"t\" \"spectrum\" \"imagemap\" \"string filename\" \"grey.pfm\" "
+                       "\"float uscale\" 2 \"float vscale\" 4 \"float scale\" 0.5\n"
+                       "Texture \"a\" \"float\" \"imagemap\" \"string filename\" \"grey.pfm\"\n"
+                       "Material \"diffuse\" \"texture reflectance\" \"t\"\n"
+                       "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"point2 uv\" [0 0 1 0 0 1] "
+                       "\"texture alpha\" \"a\"\n");
   LoadWarnings warnings;
   Scene scene = loadPbrt(path, warnings);
   EXPECT_TRUE(warnings.messages.empty()) << warnings.messages.front();
@@ -652,8 +654,8 @@ TEST(PbrtLoader, PlyMeshesInEveryEncoding) {
   folder.write("be.ply", binaryQuadPly(true));
   folder.write("packed.ply.gz", gzip(binaryQuadPly(false)));
   for (const char* name : {"ascii.ply", "le.ply", "be.ply", "packed.ply.gz"}) {
-    std::string scenePath = folder.write(
-        "scene.pbrt", std::string(kMirroredCamera) + "Shape \"plymesh\" \"string filename\" \"" + name + "\"\n");
+    std::string scenePath = folder.write("scene.pbrt", std::string(kMirroredCamera) +
+                                                           "Shape \"plymesh\" \"string filename\" \"" + name + "\"\n");
     LoadWarnings warnings;
     Scene scene = loadPbrt(scenePath, warnings);
     ASSERT_EQ(scene.meshes.size(), 1u) << name;
@@ -682,8 +684,8 @@ TEST(PbrtLoader, PlyFacesOfMixedSizes) {
   ply += char(3);
   ply.append(reinterpret_cast<const char*>(triangle), sizeof(triangle));
   folder.write("mixed.ply", ply);
-  std::string path = folder.write(
-      "scene.pbrt", std::string(kMirroredCamera) + "Shape \"plymesh\" \"string filename\" \"mixed.ply\"\n");
+  std::string path = folder.write("scene.pbrt", std::string(kMirroredCamera) +
+                                                    "Shape \"plymesh\" \"string filename\" \"mixed.ply\"\n");
   LoadWarnings warnings;
   Scene scene = loadPbrt(path, warnings);
   ASSERT_EQ(scene.meshes.size(), 1u);

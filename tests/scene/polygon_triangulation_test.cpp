@@ -72,10 +72,12 @@ TEST(PolygonTriangulation, LargeAndDegeneratePolygonsStillGiveEveryTriangle) {
 TEST(PolygonTriangulation, ClippingIsBoundedToLinearTimeAndSaysWhenItFellBackToAFan) {
   // A thick spiral: ear clipping along its outline would test about 5000 corners per corner, cubic in the size.
   std::vector<Vec3> spiral;
-  for (int i = 0; i < 128; ++i) spiral.push_back({(1.5f + 0.3f * float(i)) * std::cos(0.3f * float(i)),
-                                                  (1.5f + 0.3f * float(i)) * std::sin(0.3f * float(i)), 0});
-  for (int i = 127; i >= 0; --i) spiral.push_back({(1.0f + 0.3f * float(i)) * std::cos(0.3f * float(i)),
-                                                   (1.0f + 0.3f * float(i)) * std::sin(0.3f * float(i)), 0});
+  for (int i = 0; i < 128; ++i)
+    spiral.push_back({(1.5f + 0.3f * float(i)) * std::cos(0.3f * float(i)),
+                      (1.5f + 0.3f * float(i)) * std::sin(0.3f * float(i)), 0});
+  for (int i = 127; i >= 0; --i)
+    spiral.push_back({(1.0f + 0.3f * float(i)) * std::cos(0.3f * float(i)),
+                      (1.0f + 0.3f * float(i)) * std::sin(0.3f * float(i)), 0});
   std::vector<uint32_t> triangles;
   EXPECT_FALSE(triangulatePolygon(spiral, triangles));
   EXPECT_EQ(triangles.size(), 3 * (spiral.size() - 2));

@@ -17,8 +17,8 @@ Scene loadModel(const std::string& path, LoadWarnings& warnings, SharedModelAsse
 
 Scene loadWithLights(TempFolder& dir, const std::string& lights, LoadWarnings& warnings) {
   dir.write("t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-  return loadSceneFile(dir.write("s.json", R"({"models": [{"file": "t.obj"}], "lights": )" + lights + "}"),
-                       &loadModel, warnings);
+  return loadSceneFile(dir.write("s.json", R"({"models": [{"file": "t.obj"}], "lights": )" + lights + "}"), &loadModel,
+                       warnings);
 }
 
 std::string errorOf(const std::string& lights) {
@@ -60,8 +60,9 @@ TEST(SceneFileLights, PointSpotAndDirectional) {
 }
 
 TEST(SceneFileLights, MistakesNameTheLightAndTheField) {
-  EXPECT_NE(errorOf(R"([{"type": "area", "position": [0, 0, 0]}])").find("s.json: lights[0].type: unknown light type 'area'"),
-            std::string::npos);
+  EXPECT_NE(
+      errorOf(R"([{"type": "area", "position": [0, 0, 0]}])").find("s.json: lights[0].type: unknown light type 'area'"),
+      std::string::npos);
   EXPECT_NE(errorOf(R"([{"type": "point"}])").find("lights[0]: 'position' is missing"), std::string::npos);
   EXPECT_NE(errorOf(R"([{"type": "spot", "position": [0, 1, 0], "direction": [0, -1, 0], "target": [0, 0, 0]}])")
                 .find("lights[0]: give either 'direction' or 'target'"),

@@ -166,7 +166,8 @@ struct CachedObj {
     texture = dir.file("wood.png");
     stbi_write_png(texture.c_str(), 4, 4, 3, pixels.data(), 12);
     library = dir.write("m.mtl", "newmtl wood\nKd 1 1 1\nmap_Kd wood.png\n");
-    model = dir.write("m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl wood\nf 1 2 3\nusemtl nowhere\nf 1 3 2\n");
+    model =
+        dir.write("m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl wood\nf 1 2 3\nusemtl nowhere\nf 1 3 2\n");
     cacheDirectory = dir.file("cache");
   }
   Scene load(LoadWarnings& warnings, int* freshLoads = nullptr) const {
@@ -394,25 +395,32 @@ TEST(SceneCache, HandBuiltCachesWithInvalidScenesAreRefused) {
       {"huge render height", [](Scene& s) { s.renderHints.height = 1u << 30; }},
       {"spp of 0", [](Scene& s) { s.renderHints.samplesPerPixel = 0u; }},
       {"unknown texture wrap", [](Scene& s) { s.textures[0].wrapV = TextureWrap(9); }},
-      {"unknown punctual light type", [](Scene& s) {
+      {"unknown punctual light type",
+       [](Scene& s) {
          PunctualLight light;
          light.type = PunctualLightType(7);
          s.punctualLights.push_back(light);
        }},
-      {"non-finite second camera", [&](Scene& s) {
+      {"non-finite second camera",
+       [&](Scene& s) {
          NamedCamera second{"b", s.camera};
          second.description.eye.x = nan;
          s.cameras.push_back(second);
        }},
-      {"texture size overflowing 64 bits", [](Scene& s) {
+      {"texture size overflowing 64 bits",
+       [](Scene& s) {
          s.textures[0].width = s.textures[0].height = 1u << 31;
          s.textures[0].bytes.clear();
        }},
-      {"texture with bytes and floats", [](Scene& s) { s.textures[1].bytes = {1, 2, 3}; }},
+      {"texture with bytes and floats",
+       [](Scene& s) {
+         s.textures[1].bytes = {1, 2, 3};
+       }},
       {"NaN texel", [&](Scene& s) { s.textures[1].floats[0] = nan; }},
       {"environment map larger than its floats", [](Scene& s) { s.environment.map.height = 1000; }},
       {"environment map without channels", [](Scene& s) { s.environment.map.channels = 0; }},
-      {"environment map of bytes", [](Scene& s) {
+      {"environment map of bytes",
+       [](Scene& s) {
          s.environment.map.bytes = {1, 2, 3, 4, 5, 6};
          s.environment.map.floats.clear();
        }},

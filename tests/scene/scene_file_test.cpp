@@ -53,7 +53,8 @@ TEST(SceneFile, ModelsTransformsOverridesCameraEnvironmentAndSettings) {
     "environment": {"radiance": [0.5, 0.5, 0.5], "intensity": 2, "visible": false},
     "render": {"width": 320, "height": 200, "spp": 8, "max_depth": 4},
     "colour": "unknown keys are warned about"
-  })"), &loadModel, warnings);
+  })"),
+                          &loadModel, warnings);
   validateScene(s);
   ASSERT_EQ(s.meshes.size(), 2u);
   ASSERT_EQ(s.instances.size(), 2u);
@@ -97,7 +98,8 @@ TEST(SceneFile, AFileNamedByManyModelsIsLoadedOnceAndInstanced) {
       {"file": "models/t.obj", "transform": {"translate": [10, 0, 0]}},
       {"file": "models/../models/t.obj", "transform": {"translate": [20, 0, 0]}},
       {"file": "models/t.obj", "materials": {"red": {"type": "mirror"}}}
-    ]})"), counting, warnings);
+    ]})"),
+                          counting, warnings);
   validateScene(s);
   EXPECT_EQ(loads, 2u);  // the one with other material overrides needs its own materials
   ASSERT_EQ(s.meshes.size(), 2u);
@@ -116,13 +118,14 @@ TEST(SceneFile, ModelsSharingAMaterialLibraryShareItsTextures) {
   std::vector<uint8_t> png = readFileBytes(std::string(CANDELA_SOURCE_DIR) + "/tests/scene/data/checker.png");
   dir.write("tex/a.png", std::string(png.begin(), png.end()));
   dir.write("tex/b.png", std::string(png.begin(), png.end()));
-  dir.write("lib.mtl", "newmtl a\nKd 1 1 1\nmap_Kd tex/a.png\nnewmtl b\nKd 1 1 1\nmap_Kd tex/b.png\n"
-                       "newmtl unused\nKd 1 1 1\nmap_Kd tex/missing.png\n");
+  dir.write("lib.mtl",
+            "newmtl a\nKd 1 1 1\nmap_Kd tex/a.png\nnewmtl b\nKd 1 1 1\nmap_Kd tex/b.png\n"
+            "newmtl unused\nKd 1 1 1\nmap_Kd tex/missing.png\n");
   std::string models;
   for (int i = 0; i < 6; ++i) {
     std::string name = "m" + std::to_string(i) + ".obj";
-    dir.write(name, std::string("mtllib lib.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl ") + (i % 2 ? "a" : "b") +
-                        "\nf 1 2 3\n");
+    dir.write(name,
+              std::string("mtllib lib.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl ") + (i % 2 ? "a" : "b") + "\nf 1 2 3\n");
     models += std::string(i ? "," : "") + R"({"file": ")" + name + R"("})";
   }
   LoadWarnings warnings;
@@ -149,8 +152,9 @@ TEST(SceneFile, ErrorsNameTheJsonPathOrLine) {
   EXPECT_NE(errorOf(dir, R"({"models": [{"file": "t.obj"}], "camera": {"position": [0,0,0], "target": [0,0,0]}})")
                 .find("camera: position and target coincide"),
             std::string::npos);
-  EXPECT_NE(errorOf(dir, R"({"models": [{"file": "t.obj"}], "render": {"spp": 0}})").find("render.spp: expected a whole"),
-            std::string::npos);
+  EXPECT_NE(
+      errorOf(dir, R"({"models": [{"file": "t.obj"}], "render": {"spp": 0}})").find("render.spp: expected a whole"),
+      std::string::npos);
   EXPECT_NE(errorOf(dir, R"({"models": [{"file": "other.json"}]})").find("models[0].file: models must be"),
             std::string::npos);
   EXPECT_NE(errorOf(dir, R"({"models": [{"file": "missing.obj"}]})").find("missing.obj"), std::string::npos);
@@ -208,7 +212,8 @@ TEST(SceneLoading, SceneFilesAreCachedAsAWhole) {
   const std::string cacheFile = sceneCacheFile(dir.file("cache"), json);
   ASSERT_EQ(readSceneCache(cacheFile, json, cached), SceneCacheRead::Hit);
   EXPECT_EQ(cached.scene.textures.size(), 1u);
-  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.file("cache")), std::filesystem::directory_iterator()), 1);
+  EXPECT_EQ(
+      std::distance(std::filesystem::directory_iterator(dir.file("cache")), std::filesystem::directory_iterator()), 1);
   Scene second = loadScene(json, options);
   EXPECT_EQ(second.meshes.size(), 2u);
   EXPECT_EQ(second.textures.size(), 1u);
@@ -242,7 +247,8 @@ TEST(SceneLoading, NamesTheCameraTakenAndWarnsWhenNothingEmitsLight) {
   std::string warnings = testing::internal::GetCapturedStderr();
   EXPECT_FLOAT_EQ(first.camera.eye.z, 3.0f);
   EXPECT_NE(warnings.find("2 cameras; taking 0 'front' (choose with --camera NAME|INDEX: 0 'front', 1 'side')"),
-            std::string::npos) << warnings;
+            std::string::npos)
+      << warnings;
   EXPECT_NE(warnings.find("the scene has no light source"), std::string::npos) << warnings;
 
   for (const char* choice : {"side", "1"}) {
@@ -259,7 +265,8 @@ TEST(SceneLoading, NamesTheCameraTakenAndWarnsWhenNothingEmitsLight) {
     loadScene(path, options);
     ADD_FAILURE() << "expected an error for an unknown camera";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("no camera 'top' (cameras: 0 'front', 1 'side')"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("no camera 'top' (cameras: 0 'front', 1 'side')"), std::string::npos)
+        << e.what();
   }
   testing::internal::GetCapturedStderr();
 

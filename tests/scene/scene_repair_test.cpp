@@ -118,8 +118,7 @@ TEST(SceneRepair, SingularNonFiniteOrOutOfRangeInstancesAreDropped) {
     repairScene(s, "model.gltf", warnings);
     ASSERT_EQ(s.instances.size(), 1u);
     ASSERT_EQ(warnings.messages.size(), 1u);
-    EXPECT_NE(warnings.messages[0].find("model.gltf: 1 instances dropped"), std::string::npos)
-        << warnings.messages[0];
+    EXPECT_NE(warnings.messages[0].find("model.gltf: 1 instances dropped"), std::string::npos) << warnings.messages[0];
 
     Scene only = quadScene();
     only.instances[0].objectToWorld = bad;
@@ -212,14 +211,33 @@ TEST(SceneRepair, ImpossibleCamerasAreRejectedNamingTheField) {
     void (*spoil)(CameraDescription&);
   };
   const Case cases[] = {
-      {"camera.position", [](CameraDescription& c) { c.eye = {3e38f, 0, 0}; }},
-      {"camera.position", [](CameraDescription& c) { c.eye = {0, kNan, 0}; }},
-      {"camera.target", [](CameraDescription& c) { c.target = {0, 0, -2e9f}; }},
+      {"camera.position",
+       [](CameraDescription& c) {
+         c.eye = {3e38f, 0, 0};
+       }},
+      {"camera.position",
+       [](CameraDescription& c) {
+         c.eye = {0, kNan, 0};
+       }},
+      {"camera.target",
+       [](CameraDescription& c) {
+         c.target = {0, 0, -2e9f};
+       }},
       {"camera.target", [](CameraDescription& c) { c.target = c.eye; }},
       {"camera.up", [](CameraDescription& c) { c.up = c.target - c.eye; }},
-      {"camera.up", [](CameraDescription& c) { c.up = {0, 0, 0}; }},
-      {"camera.up", [](CameraDescription& c) { c.up = {0, 1e-30f, 0}; }},
-      {"camera.target", [](CameraDescription& c) { c.eye = {0, 0, 0}; c.target = {0, 0, 1e-30f}; }},
+      {"camera.up",
+       [](CameraDescription& c) {
+         c.up = {0, 0, 0};
+       }},
+      {"camera.up",
+       [](CameraDescription& c) {
+         c.up = {0, 1e-30f, 0};
+       }},
+      {"camera.target",
+       [](CameraDescription& c) {
+         c.eye = {0, 0, 0};
+         c.target = {0, 0, 1e-30f};
+       }},
       {"camera.fov_degrees", [](CameraDescription& c) { c.verticalFovDegrees = 180.0f; }},
       {"camera.fov_degrees", [](CameraDescription& c) { c.verticalFovDegrees = 0.0f; }},
       {"camera.aperture_radius", [](CameraDescription& c) { c.apertureRadius = 1e30f; }},
@@ -241,8 +259,8 @@ TEST(SceneRepair, ImpossibleCamerasAreRejectedNamingTheField) {
 // The repair runs on every load: models, scene files and models read back from the scene cache.
 TEST(SceneRepair, LoadSceneRepairsModelsAlsoFromTheCache) {
   TempFolder dir;
-  std::string obj = dir.write("far.obj",
-                              "mtllib far.mtl\nusemtl lamp\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1e19 0 0\nf 1 2 3\nf 1 2 4\n");
+  std::string obj =
+      dir.write("far.obj", "mtllib far.mtl\nusemtl lamp\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1e19 0 0\nf 1 2 3\nf 1 2 4\n");
   dir.write("far.mtl", "newmtl lamp\nKe 3e38 3e38 3e38\n");
   SceneLoadOptions options;
   options.cache = {true, dir.file("cache")};

@@ -15,8 +15,8 @@ inline std::filesystem::path sharedScenes() {
   return std::filesystem::is_directory(p) ? p : std::filesystem::path();
 }
 
-#define CANDELA_REQUIRE_SHARED_SCENES(var)                                                 \
-  const std::filesystem::path var = ::candela::test::sharedScenes();                     \
+#define CANDELA_REQUIRE_SHARED_SCENES(var)                           \
+  const std::filesystem::path var = ::candela::test::sharedScenes(); \
   if (var.empty()) GTEST_SKIP() << "shared scenes not found at " << CANDELA_SHARED_SCENES
 
 // A fresh folder under the system's temporary directory, removed again when the object goes.

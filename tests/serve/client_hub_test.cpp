@@ -60,7 +60,8 @@ TEST(ClientHub, AClientGetsNoNewFrameUntilItAcknowledgesTheLast) {
 
 TEST(ClientHub, RefusesClientsPastTheLimit) {
   ClientHub hub;
-  for (size_t i = 0; i < ClientHub::kMaxClients; ++i) EXPECT_NE(hub.attach(std::make_shared<RecordingConnection>()), 0u);
+  for (size_t i = 0; i < ClientHub::kMaxClients; ++i)
+    EXPECT_NE(hub.attach(std::make_shared<RecordingConnection>()), 0u);
   EXPECT_EQ(hub.attach(std::make_shared<RecordingConnection>()), 0u);
 }
 

@@ -46,18 +46,37 @@ TEST(ClientMessages, ParsesSettings) {
 }
 
 TEST(ClientMessages, DropsMalformedMessagesWithAReason) {
-  for (const char* text :
-       {"", "not json", "{}", "[]", "42", "null", R"({"type":7})", R"({"type":"teleport"})", R"({"type":"pointer"})",
-        R"({"type":"pointer","action":"down","x":"a","y":1})", R"({"type":"pointer","action":"down","x":1e300,"y":1})",
-        R"({"type":"pointer","action":"fly","x":1,"y":1})", R"({"type":"wheel"})", R"({"type":"wheel","steps":1e9})",
-        R"({"type":"resize","width":0,"height":10})", R"({"type":"resize","width":100000,"height":100})",
-        R"({"type":"resize","width":100.5,"height":100})", R"({"type":"resize","width":100})",
-        R"({"type":"settings","max_depth":0})", R"({"type":"settings","max_depth":65})",
-        R"({"type":"settings","samples_per_frame":true})", R"({"type":"settings","exposure":"bright"})",
-        R"({"type":"settings","tonemap":"filmic"})", R"({"type":"settings","overrides":{"roughness":2}})",
-        R"({"type":"settings","overrides":{"nonsense":0.5}})", R"({"type":"settings","overrides":[0.5]})",
-        R"({"type":"keys","forward":1})", R"({"type":"action"})", R"({"type":"action","name":"delete"})",
-        R"({"type":"frame_ack","frame":-1})", R"({"type":"frame_ack"})"}) {
+  for (const char* text : {"",
+                           "not json",
+                           "{}",
+                           "[]",
+                           "42",
+                           "null",
+                           R"({"type":7})",
+                           R"({"type":"teleport"})",
+                           R"({"type":"pointer"})",
+                           R"({"type":"pointer","action":"down","x":"a","y":1})",
+                           R"({"type":"pointer","action":"down","x":1e300,"y":1})",
+                           R"({"type":"pointer","action":"fly","x":1,"y":1})",
+                           R"({"type":"wheel"})",
+                           R"({"type":"wheel","steps":1e9})",
+                           R"({"type":"resize","width":0,"height":10})",
+                           R"({"type":"resize","width":100000,"height":100})",
+                           R"({"type":"resize","width":100.5,"height":100})",
+                           R"({"type":"resize","width":100})",
+                           R"({"type":"settings","max_depth":0})",
+                           R"({"type":"settings","max_depth":65})",
+                           R"({"type":"settings","samples_per_frame":true})",
+                           R"({"type":"settings","exposure":"bright"})",
+                           R"({"type":"settings","tonemap":"filmic"})",
+                           R"({"type":"settings","overrides":{"roughness":2}})",
+                           R"({"type":"settings","overrides":{"nonsense":0.5}})",
+                           R"({"type":"settings","overrides":[0.5]})",
+                           R"({"type":"keys","forward":1})",
+                           R"({"type":"action"})",
+                           R"({"type":"action","name":"delete"})",
+                           R"({"type":"frame_ack","frame":-1})",
+                           R"({"type":"frame_ack"})"}) {
     std::string problem;
     EXPECT_FALSE(parseClientMessage(text, problem)) << text;
     EXPECT_FALSE(problem.empty()) << text;

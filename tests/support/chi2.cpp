@@ -28,8 +28,8 @@ double adaptiveSimpson(const std::function<double(double)>& f, double a, double 
 }
 
 double adaptiveSimpson2D(const SquareDensity& f, double x0, double y0, double x1, double y1) {
-  return adaptiveSimpson(
-      [&](double y) { return adaptiveSimpson([&](double x) { return f(x, y); }, x0, x1, 1e-8); }, y0, y1, 1e-8);
+  return adaptiveSimpson([&](double y) { return adaptiveSimpson([&](double x) { return f(x, y); }, x0, x1, 1e-8); }, y0,
+                         y1, 1e-8);
 }
 
 // Continued fraction for Q(a, x) (Numerical Recipes, gcf), valid for x >= a + 1.
@@ -88,8 +88,8 @@ Chi2Result chi2TestSquare(const SquareSampler& sample, const SquareDensity& dens
   Chi2Result result;
   for (int by = 0; by < ny; ++by)
     for (int bx = 0; bx < nx; ++bx) {
-      double integral = adaptiveSimpson2D(density, double(bx) / nx, double(by) / ny, double(bx + 1) / nx,
-                                          double(by + 1) / ny);
+      double integral =
+          adaptiveSimpson2D(density, double(bx) / nx, double(by) / ny, double(bx + 1) / nx, double(by + 1) / ny);
       result.integral += integral;
       expected[size_t(by) * nx + bx] = integral * double(options.sampleCount);
     }
@@ -132,9 +132,8 @@ Chi2Result chi2TestSquare(const SquareSampler& sample, const SquareDensity& dens
   double alpha = 1.0 - std::pow(1.0 - options.significance, 1.0 / options.testCount);
   result.passed = result.pValue >= alpha;
   std::ostringstream msg;
-  msg << "chi2 = " << chi2 << " with " << dof << " degrees of freedom, p = " << result.pValue
-      << " (reject below " << alpha << "), density integral = " << result.integral << ", failed samples = "
-      << failures;
+  msg << "chi2 = " << chi2 << " with " << dof << " degrees of freedom, p = " << result.pValue << " (reject below "
+      << alpha << "), density integral = " << result.integral << ", failed samples = " << failures;
   result.message = msg.str();
   return result;
 }

@@ -138,8 +138,8 @@ TEST_F(AtomicFileTest, ReadOnlyFolderIsAnErrorAndTheFileSurvives) {
   const fs::perms readWrite = fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read |
                               fs::perms::group_write | fs::perms::others_read | fs::perms::others_write;
   fs::permissions(path("out.png"), readWrite);
-  fs::permissions(dir_, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::others_read |
-                            fs::perms::others_exec);
+  fs::permissions(dir_,
+                  fs::perms::owner_read | fs::perms::owner_exec | fs::perms::others_read | fs::perms::others_exec);
   // Permissions do not bind the superuser: then the write is tried as nobody, in a child process.
   const pid_t child = ::fork();
   ASSERT_GE(child, 0);

@@ -6,18 +6,20 @@
 namespace candela {
 namespace {
 
+using test::Chi2Options;
 using test::chi2TestSphere;
 using test::chi2TestSquare;
-using test::Chi2Options;
 
 constexpr int kChi2Tests = 3;
 
 TEST(Sampling, CosineHemisphereMatchesItsPdf) {
   Chi2Options options;
   options.testCount = kChi2Tests;
-  auto r = chi2TestSphere([](double u1, double u2, double) -> std::optional<Vec3> {
-    return sampleCosineHemisphere({float(u1), float(u2)});
-  }, [](Vec3 d) { return double(cosineHemispherePdf(d.z)); }, options);
+  auto r = chi2TestSphere(
+      [](double u1, double u2, double) -> std::optional<Vec3> {
+        return sampleCosineHemisphere({float(u1), float(u2)});
+      },
+      [](Vec3 d) { return double(cosineHemispherePdf(d.z)); }, options);
   EXPECT_TRUE(r.passed) << r.message;
   EXPECT_NEAR(r.integral, 1.0, 1e-3);
 }
@@ -25,9 +27,11 @@ TEST(Sampling, CosineHemisphereMatchesItsPdf) {
 TEST(Sampling, UniformSphereMatchesItsPdf) {
   Chi2Options options;
   options.testCount = kChi2Tests;
-  auto r = chi2TestSphere([](double u1, double u2, double) -> std::optional<Vec3> {
-    return sampleUniformSphere({float(u1), float(u2)});
-  }, [](Vec3) { return double(uniformSpherePdf()); }, options);
+  auto r = chi2TestSphere(
+      [](double u1, double u2, double) -> std::optional<Vec3> {
+        return sampleUniformSphere({float(u1), float(u2)});
+      },
+      [](Vec3) { return double(uniformSpherePdf()); }, options);
   EXPECT_TRUE(r.passed) << r.message;
   EXPECT_NEAR(r.integral, 1.0, 1e-3);
 }
@@ -38,19 +42,22 @@ TEST(Sampling, UniformTriangleIsUniform) {
   Chi2Options options;
   options.binsX = options.binsY = 50;
   options.testCount = kChi2Tests;
-  auto r = chi2TestSquare([](double u1, double u2, double) -> std::optional<Vec2> {
-    return sampleUniformTriangle({float(u1), float(u2)});
-  }, [](double x, double y) { return x + y <= 1.0 ? 2.0 : 0.0; }, options);
+  auto r = chi2TestSquare(
+      [](double u1, double u2, double) -> std::optional<Vec2> {
+        return sampleUniformTriangle({float(u1), float(u2)});
+      },
+      [](double x, double y) { return x + y <= 1.0 ? 2.0 : 0.0; }, options);
   EXPECT_TRUE(r.passed) << r.message;
 }
 
 // A sampler that is wrong by a little must fail: the test has power.
 TEST(Sampling, Chi2RejectsASlightlyWrongPdf) {
   Chi2Options options;
-  auto r = chi2TestSphere([](double u1, double u2, double) -> std::optional<Vec3> {
-    return sampleCosineHemisphere({float(u1), float(u2)});
-  }, [](Vec3 d) { return d.z > 0 ? double(0.9f * cosineHemispherePdf(d.z) + 0.1f / (2.0f * kPi)) : 0.0; },
-     options);
+  auto r = chi2TestSphere(
+      [](double u1, double u2, double) -> std::optional<Vec3> {
+        return sampleCosineHemisphere({float(u1), float(u2)});
+      },
+      [](Vec3 d) { return d.z > 0 ? double(0.9f * cosineHemispherePdf(d.z) + 0.1f / (2.0f * kPi)) : 0.0; }, options);
   EXPECT_FALSE(r.passed) << r.message;
 }
 

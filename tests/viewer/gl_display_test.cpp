@@ -67,16 +67,16 @@ constexpr double kBilateralTolerance = 1e-5;
 TEST_F(GlDisplay, BilateralPassMatchesTheCpuFilter) {
   const Image input = testImage(67, 53);  // odd sizes: the borders are not aligned with anything
   display_->upload(input);
-  for (BilateralParams params : {BilateralParams{0, 1.0f, 0.1f}, BilateralParams{1, 1.0f, 0.1f},
-                                 BilateralParams{3, 2.0f, 0.5f}, BilateralParams{5, 3.0f, 5.0f},
-                                 BilateralParams{2, 0.7f, 0.2f}}) {
+  for (BilateralParams params :
+       {BilateralParams{0, 1.0f, 0.1f}, BilateralParams{1, 1.0f, 0.1f}, BilateralParams{3, 2.0f, 0.5f},
+        BilateralParams{5, 3.0f, 5.0f}, BilateralParams{2, 0.7f, 0.2f}}) {
     Image gpu = display_->bilateralOnGpu(params);
     Image cpu = bilateralFilter(input, params);
     ASSERT_EQ(gpu.width, cpu.width);
     ASSERT_EQ(gpu.height, cpu.height);
     double error = worstRelativeError(gpu, cpu);
-    EXPECT_LE(error, kBilateralTolerance) << "radius " << params.radius << ", spatial sigma "
-                                          << params.spatialSigma << ", range sigma " << params.rangeSigma;
+    EXPECT_LE(error, kBilateralTolerance) << "radius " << params.radius << ", spatial sigma " << params.spatialSigma
+                                          << ", range sigma " << params.rangeSigma;
     if (params.radius == 0) continue;
     BilateralParams off = params;
     off.rangeSigma *= 1.02f;

@@ -29,8 +29,8 @@ AgreementReport compareIndependentRenders(const std::vector<double>& a, const st
         double statistic = squares > 0.0 ? std::fabs(sum) / std::sqrt(squares) : 0.0;
         if (statistic > report.worstStatistic) {
           report.worstStatistic = statistic;
-          report.worstBlock = "block (" + std::to_string(bx) + ", " + std::to_string(by) + ") channel " +
-                              std::to_string(c);
+          report.worstBlock =
+              "block (" + std::to_string(bx) + ", " + std::to_string(by) + ") channel " + std::to_string(c);
         }
       }
   report.agree = report.worstStatistic < report.threshold;

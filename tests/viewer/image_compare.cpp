@@ -6,8 +6,8 @@
 //     they agree at family-wise false-rejection rate A
 // --crop W H compares the top-left W x H pixels of both (a window capture holds the image left of the panel).
 // Exit 2 on bad arguments or unreadable files, with one line saying why.
-#include <CLI/CLI.hpp>
 #include <stb/stb_image.h>
+#include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <cmath>

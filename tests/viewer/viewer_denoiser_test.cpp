@@ -58,8 +58,9 @@ TEST_F(ViewerDenoiserTest, WithoutOptixInTheBuildItSaysSo) {
     denoiser.prepareOptix();
     FAIL() << "a build without OptiX prepared the OptiX AI denoiser";
   } catch (const std::runtime_error& e) {
-    EXPECT_STREQ(e.what(), "the OptiX AI denoiser comes with the OptiX backend, which is not in this build (see "
-                           "README, 'GPU backend')");
+    EXPECT_STREQ(e.what(),
+                 "the OptiX AI denoiser comes with the OptiX backend, which is not in this build (see "
+                 "README, 'GPU backend')");
   }
 }
 

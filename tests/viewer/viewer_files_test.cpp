@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <stb/stb_image.h>
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <fstream>
@@ -67,7 +67,8 @@ TEST_F(ViewerFiles, ViewFileNamesTheModelsItCameFrom) {
   std::ofstream(dir / "models" / "scene.json") << R"({"models": [{"file": "box.obj", "transform": {"scale": 2}}]})";
 
   const fs::path fromObj = dir / "from-obj.json", fromJson = dir / "from-json.json";
-  EXPECT_EQ(writeViewFile(fromObj.string(), (dir / "models" / "box.obj").string(), scene, camera, settings, controls), "");
+  EXPECT_EQ(writeViewFile(fromObj.string(), (dir / "models" / "box.obj").string(), scene, camera, settings, controls),
+            "");
   EXPECT_EQ(writeViewFile(fromJson.string(), (dir / "models" / "scene.json").string(), scene, camera, settings,
                           controls),
             "");

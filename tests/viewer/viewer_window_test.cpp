@@ -1,8 +1,8 @@
 // `candela view` as a user runs it, on an X display (CTest starts Xvfb): headless frames and screenshots, mouse
 // and keyboard through xdotool, load errors, and the absence of a display.
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <stb/stb_image.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -68,9 +68,8 @@ class ViewerWindow : public ::testing::Test {
  protected:
   void SetUp() override {
     ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "these tests need an X display; CTest runs them under Xvfb";
-    dir_ = fs::temp_directory_path() /
-           ("candela-viewer-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = fs::temp_directory_path() / ("candela-viewer-" + std::to_string(::getpid()) + "-" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -84,8 +83,8 @@ class ViewerWindow : public ::testing::Test {
 TEST_F(ViewerWindow, FramesThenScreenshotMatchAHeadlessRender) {
   const std::string size[] = {"--width", "96", "--height", "72"};
   std::string log;
-  ASSERT_EQ(runCommand({kCandela, "view", "cornell-box", size[0], size[1], size[2], size[3], "--frames", "16",
-                        "--seed", "1", "--screenshot", path("view.png"), "--window-capture", path("window.png")},
+  ASSERT_EQ(runCommand({kCandela, "view", "cornell-box", size[0], size[1], size[2], size[3], "--frames", "16", "--seed",
+                        "1", "--screenshot", path("view.png"), "--window-capture", path("window.png")},
                        kProcessTimeout, &log),
             0)
       << log;
@@ -137,7 +136,8 @@ class RunningViewer {
 
   // Runs `xdotool <arguments>` through the shell; throws when it fails.
   static void xdotool(const std::string& arguments) {
-    if (std::system(("xdotool " + arguments).c_str()) != 0) throw std::runtime_error("xdotool " + arguments + " failed");
+    if (std::system(("xdotool " + arguments).c_str()) != 0)
+      throw std::runtime_error("xdotool " + arguments + " failed");
   }
   // Moves the pointer to (x, y) in the window.
   void pointAt(double x, double y) const {
@@ -331,8 +331,8 @@ std::string lastLine(std::string text) {
 // on without denoising.
 TEST_F(ViewerWindow, TheOptixDenoiserRunsOrThePanelSaysWhyNot) {
 #if CANDELA_HAS_OPTIX
-  RunningViewer viewer(dir_, {"cornell-box", "--width", "64", "--height", "64", "--max-depth", "1", "--denoise",
-                              "optix"});
+  RunningViewer viewer(dir_,
+                       {"cornell-box", "--width", "64", "--height", "64", "--max-depth", "1", "--denoise", "optix"});
   const json s = viewer.state();
   const std::string message = s["message"];
   if (s["message_is_error"]) {
@@ -349,8 +349,7 @@ TEST_F(ViewerWindow, TheOptixDenoiserRunsOrThePanelSaysWhyNot) {
 #else
   std::string text;
   EXPECT_EQ(runCommand({kCandela, "view", "--denoise", "optix", "--frames", "1"}, kProcessTimeout, &text), 1);
-  EXPECT_EQ(lastLine(text).rfind("candela: --denoise optix needs the OptiX backend, which is not in this build", 0),
-            0u)
+  EXPECT_EQ(lastLine(text).rfind("candela: --denoise optix needs the OptiX backend, which is not in this build", 0), 0u)
       << text;
 #endif
 }

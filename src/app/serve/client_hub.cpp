@@ -58,9 +58,9 @@ void ClientHub::receive(uint64_t client, ClientMessage message) {
     return;
   }
   const auto* action = std::get_if<ActionMessage>(&message);
-  const bool anyoneMay = action && (action->kind == ActionMessage::Kind::TakeControl ||
-                                    action->kind == ActionMessage::Kind::Screenshot ||
-                                    action->kind == ActionMessage::Kind::SaveView);
+  const bool anyoneMay =
+      action && (action->kind == ActionMessage::Kind::TakeControl || action->kind == ActionMessage::Kind::Screenshot ||
+                 action->kind == ActionMessage::Kind::SaveView);
   if (client != controller_ && !anyoneMay) return;  // watchers look; they do not steer
   if (messages_.size() >= kMaxQueuedMessages) return;
   messages_.push_back({client, std::move(message)});
@@ -71,8 +71,10 @@ void ClientHub::dropped(uint64_t client, const std::string& problem) {
   std::lock_guard lock(mutex_);
   const std::string kind = problem.substr(0, problem.find('\''));
   if (loggedProblems_.size() >= kMaxLoggedProblems || !loggedProblems_.insert(kind).second) return;
-  std::fprintf(stderr, "candela serve: dropped a message from client %llu: %s (such messages are dropped "
-               "silently from now on)\n", static_cast<unsigned long long>(client), problem.c_str());
+  std::fprintf(stderr,
+               "candela serve: dropped a message from client %llu: %s (such messages are dropped "
+               "silently from now on)\n",
+               static_cast<unsigned long long>(client), problem.c_str());
 }
 
 void ClientHub::waitForWork(std::chrono::milliseconds timeout) {

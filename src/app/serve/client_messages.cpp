@@ -71,7 +71,7 @@ struct Reader {
 
 constexpr const char* kShadingNames[] = {"own", "phong", "pbr", "disney"};
 constexpr const char* kToneMapperNames[] = {"aces", "clamp", "reinhard"};  // ToneMapper's order
-constexpr const char* kDenoiserNames[] = {"none", "atrous", "optix"};       // DenoiserChoice's order
+constexpr const char* kDenoiserNames[] = {"none", "atrous", "optix"};      // DenoiserChoice's order
 constexpr const char* kButtonNames[] = {"left", "right", "middle"};        // MouseButton's order
 constexpr const char* kPointerActions[] = {"down", "up", "move"};
 constexpr const char* kActionNames[] = {"frame", "reset", "screenshot", "save_view", "take_control"};
@@ -113,7 +113,8 @@ bool overrides(Reader& r, SettingsMessage& m) {
       m.overrides.emplace_back(name, std::nullopt);
       continue;
     }
-    if (!value.is_number() || !std::isfinite(value.get<double>())) return r.fail("overrides." + name, "is not a number");
+    if (!value.is_number() || !std::isfinite(value.get<double>()))
+      return r.fail("overrides." + name, "is not a number");
     const double v = value.get<double>();
     if (v < parameter->min || v > parameter->max) return r.fail("overrides." + name, "is out of range");
     m.overrides.emplace_back(name, float(v));

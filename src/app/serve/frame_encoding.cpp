@@ -30,8 +30,8 @@ std::string encodeJpeg(const DisplayImage& image, int quality) {
   unsigned char* jpeg = nullptr;
   unsigned long size = 0;
   // 4:2:0 chroma halves the bytes of a frame; the eye misses the colour detail in a moving picture.
-  const int status = tjCompress2(compressor.get(), image.rgb.data(), int(image.width), 0, int(image.height),
-                                 TJPF_RGB, &jpeg, &size, TJSAMP_420, quality, TJFLAG_FASTDCT);
+  const int status = tjCompress2(compressor.get(), image.rgb.data(), int(image.width), 0, int(image.height), TJPF_RGB,
+                                 &jpeg, &size, TJSAMP_420, quality, TJFLAG_FASTDCT);
   std::unique_ptr<unsigned char, void (*)(unsigned char*)> owned(jpeg, tjFree);
   if (status != 0) throw std::runtime_error(std::string("libjpeg-turbo: ") + tjGetErrorStr2(compressor.get()));
   return std::string(reinterpret_cast<const char*>(jpeg), size);

@@ -168,8 +168,8 @@ void ServeLoop::act(uint64_t client, ActionMessage::Kind kind) {
     case ActionMessage::Kind::SaveView: {
       const ViewFile file = makeViewFile(options_.sceneSpec, session_.scene(), camera_->description(),
                                          session_.appliedSettings(), controls_);
-      const Json message = {{"type", "view_file"}, {"name", "candela-view.json"}, {"text", file.text},
-                            {"note", file.note}};
+      const Json message = {
+          {"type", "view_file"}, {"name", "candela-view.json"}, {"text", file.text}, {"note", file.note}};
       hub_.send(client, std::make_shared<const std::string>(message.dump()), false);
       break;
     }

@@ -53,7 +53,7 @@ class ServeLoop {
   ViewerControls controls_;
   std::string backendName_;
   uint32_t viewWidth_, viewHeight_;  // the controlling browser's view, in device pixels
-  bool environmentEdited_ = false;  // since the backend last got the environment
+  bool environmentEdited_ = false;   // since the backend last got the environment
   bool materialsEdited_ = false;
   uint64_t controlChanges_ = 0;
   uint64_t framesSent_ = 0;

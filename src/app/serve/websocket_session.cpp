@@ -38,8 +38,8 @@ void WebSocketSession::read() {
 // A token bucket: a browser that sends faster than kMessagesPerSecond for long has the excess dropped.
 bool WebSocketSession::withinRate() {
   const auto now = std::chrono::steady_clock::now();
-  tokens_ = std::min(kMessageBurst,
-                     tokens_ + kMessagesPerSecond * std::chrono::duration<double>(now - lastRefill_).count());
+  tokens_ =
+      std::min(kMessageBurst, tokens_ + kMessagesPerSecond * std::chrono::duration<double>(now - lastRefill_).count());
   lastRefill_ = now;
   if (tokens_ < 1.0) return false;
   tokens_ -= 1.0;

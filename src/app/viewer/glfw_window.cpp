@@ -39,8 +39,7 @@ GlfwWindow::GlfwWindow(int width, int height, const std::string& title) {
   if (!window_) {
     std::string why = lastGlfwError;
     glfwTerminate();
-    throw std::runtime_error("cannot create an OpenGL 3.3 core context on display '" + displayName() +
-                             "': " + why);
+    throw std::runtime_error("cannot create an OpenGL 3.3 core context on display '" + displayName() + "': " + why);
   }
   glfwMakeContextCurrent(window_);
   glfwSwapInterval(0);  // the renderer, not the display's refresh, sets the pace

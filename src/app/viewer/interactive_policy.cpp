@@ -20,8 +20,8 @@ uint32_t InteractivePolicy::divisorFor(uint32_t width, uint32_t height) const {
   return uint32_t(std::min(d, double(kMaxDivisor)));
 }
 
-FramePlan InteractivePolicy::plan(uint32_t fullWidth, uint32_t fullHeight, uint32_t samplesPerFrame,
-                                  bool cameraMoved, double now) {
+FramePlan InteractivePolicy::plan(uint32_t fullWidth, uint32_t fullHeight, uint32_t samplesPerFrame, bool cameraMoved,
+                                  double now) {
   if (cameraMoved) lastMotion_ = now;
   const bool preview = now - lastMotion_ < settle_;
   if (preview && !inPreview_) divisor_ = divisorFor(fullWidth, fullHeight);
@@ -45,7 +45,8 @@ void InteractivePolicy::recordFrame(const FramePlan& plan, double seconds) {
   const double samples = double(plan.width) * double(plan.height) * double(plan.samplesPerPixel);
   if (samples <= 0.0 || !(seconds >= 0.0)) return;
   const double perSample = seconds / samples;
-  secondsPerSample_ = secondsPerSample_ == 0.0 ? perSample : (1.0 - kSmoothing) * secondsPerSample_ + kSmoothing * perSample;
+  secondsPerSample_ =
+      secondsPerSample_ == 0.0 ? perSample : (1.0 - kSmoothing) * secondsPerSample_ + kSmoothing * perSample;
 }
 
 }  // namespace candela

@@ -20,8 +20,8 @@ OrbitCamera::OrbitCamera(const CameraDescription& home, const Bounds3& sceneBoun
   axisX_ = frame.s;
   axisZ_ = frame.t;
   const float eyeTarget = length(home.eye - home.target);
-  sceneRadius_ = sceneBounds.empty() || sceneBounds.radius() <= 0.0f ? std::max(eyeTarget, 1e-3f)
-                                                                      : sceneBounds.radius();
+  sceneRadius_ =
+      sceneBounds.empty() || sceneBounds.radius() <= 0.0f ? std::max(eyeTarget, 1e-3f) : sceneBounds.radius();
   reset();
 }
 

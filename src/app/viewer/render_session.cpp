@@ -9,8 +9,8 @@ namespace {
 bool sameVector(Vec3 a, Vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
 
 bool sameSettings(const RenderSettings& a, const RenderSettings& b) {
-  return a.width == b.width && a.height == b.height && a.maxDepth == b.maxDepth &&
-         a.rouletteDepth == b.rouletteDepth && a.seed == b.seed && a.sampler == b.sampler;
+  return a.width == b.width && a.height == b.height && a.maxDepth == b.maxDepth && a.rouletteDepth == b.rouletteDepth &&
+         a.seed == b.seed && a.sampler == b.sampler;
 }
 
 }  // namespace
@@ -63,8 +63,8 @@ void RenderSession::setAovsEnabled(bool enabled) {
   ++restarts_;
 }
 
-FrameStats RenderSession::renderFrame(const Camera& camera, const RenderSettings& settings,
-                                      uint32_t samplesPerPixel, bool accumulate) {
+FrameStats RenderSession::renderFrame(const Camera& camera, const RenderSettings& settings, uint32_t samplesPerPixel,
+                                      bool accumulate) {
   RenderSettings wanted = settings;
   if (!accumulate) wanted.seed = settings.seed + uint32_t(frames_);
 

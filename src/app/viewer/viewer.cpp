@@ -29,7 +29,7 @@ namespace {
 
 constexpr int kPanelWidth = 380;
 constexpr int kMinImageSide = 64;
-constexpr double kMaxFlyStep = 0.1;    // seconds: a slow frame does not throw the camera far
+constexpr double kMaxFlyStep = 0.1;  // seconds: a slow frame does not throw the camera far
 constexpr double kTimingSmoothing = 0.1;
 
 class Viewer {
@@ -103,8 +103,7 @@ Viewer::Viewer(const ViewerOptions& options)
   status_.device = session_.backend().deviceName();
   status_.imageTransfer = transfer_.description();
   std::fprintf(stderr, "display: %s\n", status_.imageTransfer.c_str());
-  glfwSetWindowSizeLimits(window_.handle(), kPanelWidth + kMinImageSide, kMinImageSide, GLFW_DONT_CARE,
-                          GLFW_DONT_CARE);
+  glfwSetWindowSizeLimits(window_.handle(), kPanelWidth + kMinImageSide, kMinImageSide, GLFW_DONT_CARE, GLFW_DONT_CARE);
   glfwGetCursorPos(window_.handle(), &pointerX_, &pointerY_);
   imgui_.keepFromImGui(GLFW_KEY_F12);  // text fields have no use for it
   installCallbacks();
@@ -239,7 +238,8 @@ void Viewer::handle(const PanelRequests& requests) {
   }
   if (requests.openScene) {
     try {
-      showScene(loadScene(controls_.openSpec, {{}, options_.sceneCache, options_.outsidePaths, {}, options_.textureLimits}),
+      showScene(loadScene(controls_.openSpec,
+                          {{}, options_.sceneCache, options_.outsidePaths, {}, options_.textureLimits}),
                 controls_.openSpec);
       report("opened " + controls_.openSpec, false);
     } catch (const std::exception& e) {
@@ -393,8 +393,9 @@ int Viewer::run() {
 
 int runViewer(const ViewerOptions& options) {
   if (options.post.denoiser == DenoiserChoice::Optix && !ViewerDenoiser::optixInThisBuild())
-    throw std::runtime_error("--denoise optix needs the OptiX backend, which is not in this build (see README, "
-                             "'GPU backend')");
+    throw std::runtime_error(
+        "--denoise optix needs the OptiX backend, which is not in this build (see README, "
+        "'GPU backend')");
   Viewer viewer(options);
   return viewer.run();
 }

@@ -18,7 +18,7 @@ struct ViewerOptions {
   std::string camera;  // the name or index of the first scene's camera to take; empty: the first
   TextureLimits textureLimits;
   std::string backend = "auto";
-  bool interop = true;  // false: the image reaches the screen through the host copy even where interop works
+  bool interop = true;   // false: the image reaches the screen through the host copy even where interop works
   uint32_t width = 960;  // of the image; the panel sits beside it
   uint32_t height = 720;
   uint32_t maxDepth = 8;
@@ -26,9 +26,9 @@ struct ViewerOptions {
   SamplerKind sampler = SamplerKind::Sobol;
   uint32_t samplesPerFrame = 1;
   PostSettings post;
-  uint32_t frames = 0;         // render this many frames, then exit; 0: until the window closes
-  std::string screenshot;      // on exit: the accumulated image (.png, .exr or .pfm)
-  std::string windowCapture;   // on exit: the window's pixels, panel included (.png)
+  uint32_t frames = 0;                                // render this many frames, then exit; 0: until the window closes
+  std::string screenshot;                             // on exit: the accumulated image (.png, .exr or .pfm)
+  std::string windowCapture;                          // on exit: the window's pixels, panel included (.png)
   std::string stateFile = "candela-view-state.json";  // F12 writes the viewer's state here
 };
 

@@ -25,8 +25,9 @@ void ViewerDenoiser::prepareOptix() {
     return denoiser->denoise(beauty, {&aovs.albedo, &aovs.normal});
   };
 #else
-  throw std::runtime_error("the OptiX AI denoiser comes with the OptiX backend, which is not in this build (see "
-                           "README, 'GPU backend')");
+  throw std::runtime_error(
+      "the OptiX AI denoiser comes with the OptiX backend, which is not in this build (see "
+      "README, 'GPU backend')");
 #endif
 }
 

@@ -8,9 +8,9 @@
 #include <stdexcept>
 
 #include "core/atomic_file.h"
+#include "core/file_extension.h"
 #include "image/filters/bilateral.h"
 #include "image/image_io.h"
-#include "core/file_extension.h"
 
 namespace candela {
 

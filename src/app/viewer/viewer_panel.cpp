@@ -86,13 +86,14 @@ void drawMaterials(ViewerControls& c, PanelRequests& requests) {
 
 void drawPost(PostSettings& post) {
   int mapper = int(post.display.toneMapper);
-  if (ImGui::Combo("Tone mapper", &mapper, "ACES filmic\0Clamp\0Reinhard\0")) post.display.toneMapper = ToneMapper(mapper);
+  if (ImGui::Combo("Tone mapper", &mapper, "ACES filmic\0Clamp\0Reinhard\0"))
+    post.display.toneMapper = ToneMapper(mapper);
   ImGui::SliderFloat("Exposure", &post.display.exposure, -10.0f, 10.0f, "%.2f stops");
   // One row, so that the panel still fits a short window.
   int denoiser = int(post.denoiser);
   ImGui::SetNextItemWidth(kDenoiserComboWidth);
-  const char* const choices = ViewerDenoiser::optixInThisBuild() ? "No denoiser\0A-trous\0OptiX AI\0"
-                                                                 : "No denoiser\0A-trous\0";
+  const char* const choices =
+      ViewerDenoiser::optixInThisBuild() ? "No denoiser\0A-trous\0OptiX AI\0" : "No denoiser\0A-trous\0";
   if (ImGui::Combo("##denoiser", &denoiser, choices)) post.denoiser = DenoiserChoice(denoiser);
   ImGui::SameLine();
   ImGui::BeginDisabled(post.denoiser != DenoiserChoice::Atrous);
@@ -116,8 +117,8 @@ void drawActions(ViewerControls& c, PanelRequests& requests) {
   ImGui::InputText("##file", &c.sceneFilePath);
   ImGui::SameLine();
   requests.saveSceneFile = ImGui::Button("Save camera");
-  const bool entered = ImGui::InputTextWithHint("##open", "scene name or file", &c.openSpec,
-                                                ImGuiInputTextFlags_EnterReturnsTrue);
+  const bool entered =
+      ImGui::InputTextWithHint("##open", "scene name or file", &c.openSpec, ImGuiInputTextFlags_EnterReturnsTrue);
   const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
   requests.openSceneField = {0.5f * (lo.x + hi.x), 0.5f * (lo.y + hi.y)};
   requests.openSceneFieldActive = ImGui::IsItemActive();

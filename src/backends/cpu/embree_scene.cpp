@@ -31,8 +31,9 @@ std::vector<bool> meshesThatCanPassRays(const FlatScene& flat) {
 
 EmbreeScene::EmbreeScene() {
   device_ = rtcNewDevice(nullptr);
-  if (!device_) throw std::runtime_error("Embree could not create a device (error " +
-                                         std::to_string(rtcGetDeviceError(nullptr)) + ")");
+  if (!device_)
+    throw std::runtime_error("Embree could not create a device (error " + std::to_string(rtcGetDeviceError(nullptr)) +
+                             ")");
 }
 
 EmbreeScene::~EmbreeScene() {
@@ -55,12 +56,10 @@ void EmbreeScene::build(const FlatScene& flat) {
     RTCScene meshScene = rtcNewScene(device_);
     RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
     // Embree's own buffers carry the padding its SIMD loads need past the last vertex.
-    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                                 RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-                                                                 mesh.vertexCount));
-    auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0,
-                                                                   RTC_FORMAT_UINT3, 3 * sizeof(uint32_t),
-                                                                   mesh.triangleCount));
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                                 3 * sizeof(float), mesh.vertexCount));
+    auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                                   3 * sizeof(uint32_t), mesh.triangleCount));
     check(device_, "allocating mesh buffers");
     if (mesh.vertexCount > 0)
       std::memcpy(vertices, flat.positions.data() + mesh.firstVertex, mesh.vertexCount * sizeof(Vec3));

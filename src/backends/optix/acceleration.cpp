@@ -20,9 +20,10 @@ namespace {
 
 // Geometry flags per SBT index (launch_params.h): any-hit only where a material uses alpha; back faces culled
 // (by rays that ask for it: scenes with cut-outs) only where a material culls them.
-const unsigned int kGeometryFlags[kGeometrySbtRecords] = {
-    OPTIX_GEOMETRY_FLAG_DISABLE_ANYHIT | OPTIX_GEOMETRY_FLAG_DISABLE_TRIANGLE_FACE_CULLING,
-    OPTIX_GEOMETRY_FLAG_DISABLE_TRIANGLE_FACE_CULLING, OPTIX_GEOMETRY_FLAG_DISABLE_ANYHIT, OPTIX_GEOMETRY_FLAG_NONE};
+const unsigned int kGeometryFlags[kGeometrySbtRecords] = {OPTIX_GEOMETRY_FLAG_DISABLE_ANYHIT |
+                                                              OPTIX_GEOMETRY_FLAG_DISABLE_TRIANGLE_FACE_CULLING,
+                                                          OPTIX_GEOMETRY_FLAG_DISABLE_TRIANGLE_FACE_CULLING,
+                                                          OPTIX_GEOMETRY_FLAG_DISABLE_ANYHIT, OPTIX_GEOMETRY_FLAG_NONE};
 
 // Below this many meshes to build, each gets a GAS of its own.
 constexpr size_t kMinMeshesToBatch = 256;
@@ -128,7 +129,8 @@ void AccelerationStructures::update(OptixDeviceContext context, cudaStream_t str
       return other.sbtIndices == s.sbtIndices && sameTriangles(otherScene, other.meshIndex, flat, m);
     };
     auto [firstEarlier, lastEarlier] = earlierByKey.equal_range(s.key);
-    auto earlier = std::find_if(firstEarlier, lastEarlier, [&](const auto& e) { return equals(meshes[e.second], flat); });
+    auto earlier =
+        std::find_if(firstEarlier, lastEarlier, [&](const auto& e) { return equals(meshes[e.second], flat); });
     if (earlier != lastEarlier) {
       sharing.emplace_back(m, earlier->second);
       continue;
@@ -151,7 +153,7 @@ void AccelerationStructures::update(OptixDeviceContext context, cudaStream_t str
   }
 
   std::vector<OptixInstance> instances;
-  auto addInstance = [&](const float (&transform)[12], uint32_t id, OptixTraversableHandle handle) {
+  auto addInstance = [&](const float(&transform)[12], uint32_t id, OptixTraversableHandle handle) {
     OptixInstance instance{};
     std::memcpy(instance.transform, transform, sizeof instance.transform);
     instance.instanceId = id;

@@ -45,8 +45,8 @@ class AccelerationStructures {
   // One mesh's GAS and what it was built from. Meshes with equal triangles share one, so that a GAS a scene
   // keeps has the same handle whichever of the equal meshes it is found through.
   struct MeshStructure {
-    uint32_t meshIndex = 0;  // in the scene of the update that made or last kept it
-    uint64_t key = 0;        // meshKey: tells most different meshes apart cheaply
+    uint32_t meshIndex = 0;           // in the scene of the update that made or last kept it
+    uint64_t key = 0;                 // meshKey: tells most different meshes apart cheaply
     std::vector<uint8_t> sbtIndices;  // per triangle (materialSbtIndex); empty where all are 0
     // The allocation that holds the GAS, with those of the meshes built in the same update; it lives while one
     // of them is kept. Null for meshes without triangles.

@@ -17,8 +17,8 @@ DeviceBuffer::DeviceBuffer(size_t bytes, const char* purpose) : bytes_(bytes) {
     cudaGetLastError();
     size_t free = 0, total = 0;
     cudaMemGetInfo(&free, &total);
-    throw std::runtime_error("out of device memory: asked for " + formatBytes(bytes) + " for " + purpose +
-                             " with " + formatBytes(free) + " of " + formatBytes(total) + " free");
+    throw std::runtime_error("out of device memory: asked for " + formatBytes(bytes) + " for " + purpose + " with " +
+                             formatBytes(free) + " of " + formatBytes(total) + " free");
   }
   checkCuda(result, purpose);
 }
@@ -46,8 +46,7 @@ void DeviceBuffer::upload(const void* source, size_t bytes) {
 
 void DeviceBuffer::download(void* destination, size_t bytes) const {
   if (bytes > bytes_) throw std::logic_error("DeviceBuffer::download past the end of the buffer");
-  if (bytes > 0)
-    checkCuda(cudaMemcpy(destination, pointer_, bytes, cudaMemcpyDeviceToHost), "a device-to-host copy");
+  if (bytes > 0) checkCuda(cudaMemcpy(destination, pointer_, bytes, cudaMemcpyDeviceToHost), "a device-to-host copy");
 }
 
 }  // namespace candela::optix

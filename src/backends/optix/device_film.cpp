@@ -36,7 +36,7 @@ void DeviceFilm::clear(cudaStream_t stream) {
 }
 
 FilmView DeviceFilm::view() const {
-  return {radiance_.as<Vec3>(), emission_.as<Vec3>(), samples_.as<uint32_t>(), albedo_.as<Vec3>(),
+  return {radiance_.as<Vec3>(), emission_.as<Vec3>(), samples_.as<uint32_t>(),      albedo_.as<Vec3>(),
           normal_.as<Vec3>(),   depth_.as<float>(),   luminanceSquares_.as<float>()};
 }
 

@@ -52,8 +52,8 @@ std::vector<std::unique_ptr<Pipeline>> makePipelines(OptixDeviceContext context,
   pipelines.push_back(
       std::make_unique<Pipeline>(context, module, std::vector{RaygenProgram::Render, RaygenProgram::Record}));
   pipelines.push_back(std::make_unique<Pipeline>(context, module, std::vector{RaygenProgram::RawTrace}));
-  pipelines.push_back(std::make_unique<Pipeline>(
-      context, module, std::vector{RaygenProgram::RenderWithAovs, RaygenProgram::Record}));
+  pipelines.push_back(
+      std::make_unique<Pipeline>(context, module, std::vector{RaygenProgram::RenderWithAovs, RaygenProgram::Record}));
   return pipelines;
 }
 
@@ -77,8 +77,8 @@ struct OptixBackend::State {
 
   bool aovsEnabled = false;
   DeviceFilm film;
-  std::unique_ptr<CudaAtrous> atrous;           // made at the first a-trous read, for the image's size
-  DeviceBuffer filtered;                        // the filters' output
+  std::unique_ptr<CudaAtrous> atrous;  // made at the first a-trous read, for the image's size
+  DeviceBuffer filtered;               // the filters' output
   DeviceBuffer counters;
   DeviceBuffer totals{sizeof(CounterTotals), "the counter totals"};
   DeviceBuffer parameters{sizeof(LaunchParameters), "the launch parameters"};

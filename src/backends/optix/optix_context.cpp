@@ -15,8 +15,9 @@ namespace candela::optix {
 namespace {
 
 // The CUDA runtime is linked statically: the driver must support the toolkit the build used.
-constexpr const char* kMinimumDriverForRuntime =
-    CUDART_VERSION >= 13000 ? "580" : CUDART_VERSION >= 12000 ? "525" : "450";
+constexpr const char* kMinimumDriverForRuntime = CUDART_VERSION >= 13000   ? "580"
+                                                 : CUDART_VERSION >= 12000 ? "525"
+                                                                           : "450";
 
 std::string cudaVersionString(int version) {
   return std::to_string(version / 1000) + "." + std::to_string(version % 1000 / 10);

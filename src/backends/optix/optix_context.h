@@ -9,9 +9,9 @@
 namespace candela::optix {
 
 struct GpuInfo {
-  std::string name;               // "NVIDIA H100 80GB HBM3"
-  std::string driverVersion;      // "580.159.04"
-  int cudaDriverVersion = 0;      // 13000 for CUDA 13.0
+  std::string name;           // "NVIDIA H100 80GB HBM3"
+  std::string driverVersion;  // "580.159.04"
+  int cudaDriverVersion = 0;  // 13000 for CUDA 13.0
   int computeMajor = 0, computeMinor = 0;
   size_t memoryBytes = 0;
   unsigned int rtcoreVersion = 0;  // 0 when the GPU has no RT cores

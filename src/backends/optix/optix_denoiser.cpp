@@ -148,8 +148,8 @@ Image OptixImageDenoiser::denoise(const Image& beauty, const DenoiserGuides& gui
   params.hdrIntensity = s.intensity.address();
   params.hdrAverageColor = s.averageColor.address();
   params.blendFactor = 0.0f;
-  checkDenoiser(optixDenoiserInvoke(s.denoiser.get(), stream, &params, s.state.address(), s.state.size(),
-                                    &guideLayer, &layer, 1, 0, 0, s.scratch.address(), s.scratch.size()),
+  checkDenoiser(optixDenoiserInvoke(s.denoiser.get(), stream, &params, s.state.address(), s.state.size(), &guideLayer,
+                                    &layer, 1, 0, 0, s.scratch.address(), s.scratch.size()),
                 "denoising");
   checkCuda(cudaStreamSynchronize(stream), "denoising");
 

@@ -50,8 +50,8 @@ void checkCuda(cudaError_t result, const char* what) {
   if (result == cudaErrorMemoryAllocation) {
     size_t free = 0, total = 0;
     cudaMemGetInfo(&free, &total);
-    throw std::runtime_error(std::string("out of device memory during ") + what + " (" + formatBytes(free) +
-                             " of " + formatBytes(total) + " free)");
+    throw std::runtime_error(std::string("out of device memory during ") + what + " (" + formatBytes(free) + " of " +
+                             formatBytes(total) + " free)");
   }
   throw std::runtime_error(std::string("CUDA error during ") + what + ": " + cudaGetErrorString(result) + " (" +
                            cudaGetErrorName(result) + ")");
@@ -70,8 +70,7 @@ void checkOptix(OptixResult result, const char* what) {
                                    ": install driver " + minimumDriverForHeaders() + " or newer");
     case OPTIX_ERROR_DEVICE_OUT_OF_MEMORY:
       throw OptixError(result, std::string("out of device memory during ") + what + code);
-    default:
-      break;
+    default: break;
   }
   throw OptixError(result, std::string("OptiX failed during ") + what + ": " + optixGetErrorName(result) + code);
 }

@@ -226,9 +226,8 @@ Image atrousDenoise(const Image& color, const AovImages& aovs, const AtrousParam
   });
   const RgbPlanes reflected = filter(params.passes);
   Image result(color.width, color.height);
-  tbb::parallel_for(size_t(0), pixels, [&](size_t i) {
-    result.pixels[i] = remodulate(reflected.get(i), aovs.albedo.pixels[i]);
-  });
+  tbb::parallel_for(size_t(0), pixels,
+                    [&](size_t i) { result.pixels[i] = remodulate(reflected.get(i), aovs.albedo.pixels[i]); });
   tbb::parallel_for(size_t(0), pixels, [&](size_t i) { input.set(i, filterableEmission(aovs.emission.pixels[i])); });
   const RgbPlanes emission = filter(params.passes);
   auto varianceAt = [&](int x, int y) { return aovs.variance[size_t(y) * w + x]; };

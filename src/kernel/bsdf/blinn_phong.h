@@ -74,6 +74,8 @@ CANDELA_FN float roughnessToPhongExponent(float roughness) {
   float alpha = fmaxf(1e-3f, roughness * roughness);
   return fmaxf(0.0f, 2.0f / (alpha * alpha) - 2.0f);
 }
-CANDELA_FN float phongExponentToRoughness(float exponent) { return sqrtf(sqrtf(2.0f / (fmaxf(0.0f, exponent) + 2.0f))); }
+CANDELA_FN float phongExponentToRoughness(float exponent) {
+  return sqrtf(sqrtf(2.0f / (fmaxf(0.0f, exponent) + 2.0f)));
+}
 
 }  // namespace candela

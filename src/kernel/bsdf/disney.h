@@ -31,7 +31,8 @@ struct DisneyBsdf {
     diffuse = {base, m.roughness, clampf(m.subsurface, 0.0f, 1.0f), sheenColor};
 
     GgxDistribution lobe = GgxDistribution::anisotropic(m.roughness, m.anisotropic);
-    Vec3 dielectricF0 = lerp(clampf(m.specularTint, 0.0f, 1.0f), Vec3{1, 1, 1}, tint) * (0.08f * fmaxf(0.0f, m.specular));
+    Vec3 dielectricF0 =
+        lerp(clampf(m.specularTint, 0.0f, 1.0f), Vec3{1, 1, 1}, tint) * (0.08f * fmaxf(0.0f, m.specular));
     specular = {lobe, lerp(metallic, dielectricF0, base)};
     Vec3 sqrtBase{sqrtf(fmaxf(0.0f, base.x)), sqrtf(fmaxf(0.0f, base.y)), sqrtf(fmaxf(0.0f, base.z))};
     glass = {lobe, eta, sqrtBase};

@@ -2,8 +2,8 @@
 #include "core/sampling.h"
 #include "kernel/bsdf/bsdf_sample.h"
 #include "kernel/bsdf/fresnel.h"
-#include "kernel/bsdf/half_vector_reflection.h"
 #include "kernel/bsdf/ggx.h"
+#include "kernel/bsdf/half_vector_reflection.h"
 
 namespace candela {
 

@@ -19,7 +19,8 @@ struct LobeChoice {
     LobeChoice c;
     float total = 0.0f;
     for (int i = 0; i < N; ++i) total += estimates[i];
-    for (int i = 0; i < N; ++i) c.p[i] = total > 0.0f ? fmaxf(estimates[i] / total, estimates[i] > 0.0f ? kFloor : 0.0f) : 1.0f / N;
+    for (int i = 0; i < N; ++i)
+      c.p[i] = total > 0.0f ? fmaxf(estimates[i] / total, estimates[i] > 0.0f ? kFloor : 0.0f) : 1.0f / N;
     float sum = 0.0f;
     for (int i = 0; i < N; ++i) sum += c.p[i];
     for (int i = 0; i < N; ++i) c.p[i] /= sum;

@@ -24,12 +24,14 @@ struct PbrBsdf {
     metallic = clampf(metallic, 0.0f, 1.0f);
     diffuseColor = baseColor * (1.0f - metallic);
     dielectricF0 = 0.08f * clampf(specularLevel, 0.0f, 1.0f);
-    specular = {GgxDistribution::isotropic(roughness), lerp(metallic, Vec3{dielectricF0, dielectricF0, dielectricF0}, baseColor)};
+    specular = {GgxDistribution::isotropic(roughness),
+                lerp(metallic, Vec3{dielectricF0, dielectricF0, dielectricF0}, baseColor)};
   }
 
   CANDELA_FN Vec3 evalDiffuse(Vec3 wo, Vec3 wi) const {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return {0, 0, 0};
-    return diffuseColor * ((1.0f - fresnelSchlick(dielectricF0, wo.z)) * (1.0f - fresnelSchlick(dielectricF0, wi.z)) * kInvPi);
+    return diffuseColor *
+           ((1.0f - fresnelSchlick(dielectricF0, wo.z)) * (1.0f - fresnelSchlick(dielectricF0, wi.z)) * kInvPi);
   }
   CANDELA_FN LobeChoice<2> choice(Vec3 wo) const {
     return LobeChoice<2>::fromEstimates({luminance(diffuseColor) * (1.0f - fresnelSchlick(dielectricF0, wo.z)),

@@ -47,7 +47,8 @@ std::string readableStem(const std::string& modelPath) {
 
 std::string defaultSceneCacheDirectory() {
   if (std::string dir = environment("CANDELA_CACHE_DIR"); !dir.empty()) return dir;
-  if (std::string xdg = environment("XDG_CACHE_HOME"); fs::path(xdg).is_absolute()) return (fs::path(xdg) / "candela").string();
+  if (std::string xdg = environment("XDG_CACHE_HOME"); fs::path(xdg).is_absolute())
+    return (fs::path(xdg) / "candela").string();
   if (std::string home = environment("HOME"); !home.empty()) return (fs::path(home) / ".cache" / "candela").string();
   return {};
 }
@@ -56,7 +57,8 @@ std::string sceneCacheFile(const std::string& directory, const std::string& mode
   std::error_code ec;
   std::string absolute = fs::absolute(modelPath, ec).lexically_normal().string();
   char hash[17];
-  std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(XXH3_64bits(absolute.data(), absolute.size())));
+  std::snprintf(hash, sizeof hash, "%016llx",
+                static_cast<unsigned long long>(XXH3_64bits(absolute.data(), absolute.size())));
   return (fs::path(directory) / (readableStem(modelPath) + "-" + hash + ".scene")).string();
 }
 
@@ -130,8 +132,7 @@ Scene loadThroughSceneCache(const std::string& path, const SceneCacheSettings& s
                    "invalid scene cache ignored (" + problem + "); the model is loaded afresh and cached again");
       break;
     case SceneCacheRead::Missing:
-    case SceneCacheRead::Stale:
-      break;
+    case SceneCacheRead::Stale: break;
   }
   // A model that changes while it loads is not cached: the cache would hold the old one under the new key.
   const FileState before = fileState(path);

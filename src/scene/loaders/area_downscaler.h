@@ -15,8 +15,11 @@ class AreaDownscaler {
  public:
   AreaDownscaler(uint32_t sourceWidth, uint32_t sourceHeight, uint32_t targetWidth, uint32_t targetHeight,
                  uint32_t channels)
-      : sourceWidth_(sourceWidth), sourceHeight_(sourceHeight), targetWidth_(targetWidth),
-        targetHeight_(targetHeight), channels_(channels),
+      : sourceWidth_(sourceWidth),
+        sourceHeight_(sourceHeight),
+        targetWidth_(targetWidth),
+        targetHeight_(targetHeight),
+        channels_(channels),
         pixels_(size_t(targetWidth) * targetHeight * channels) {
     if (copies()) return;
     sums_.assign(size_t(targetWidth) * channels, 0.0);

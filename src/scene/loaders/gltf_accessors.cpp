@@ -18,8 +18,7 @@ float readComponent(const uint8_t* p, int componentType, bool normalized) {
       std::memcpy(&f, p, 4);
       return f;
     }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-      return normalized ? float(*p) / 255.0f : float(*p);
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? float(*p) / 255.0f : float(*p);
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
       uint16_t v;
       std::memcpy(&v, p, 2);
@@ -32,8 +31,7 @@ float readComponent(const uint8_t* p, int componentType, bool normalized) {
       std::memcpy(&v, p, 2);
       return normalized ? std::max(float(v) / 32767.0f, -1.0f) : float(v);
     }
-    default:
-      return 0.0f;
+    default: return 0.0f;
   }
 }
 
@@ -122,7 +120,8 @@ std::vector<float> GltfAccessorReader::readFloats(int index, int type, const std
   const size_t componentSize = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType)));
   const size_t elementSize = components * componentSize;
   auto decode = [&](const uint8_t* p, float* out) {
-    for (size_t k = 0; k < components; ++k) out[k] = readComponent(p + k * componentSize, a.componentType, a.normalized);
+    for (size_t k = 0; k < components; ++k)
+      out[k] = readComponent(p + k * componentSize, a.componentType, a.normalized);
   };
 
   View base;
@@ -146,14 +145,16 @@ std::vector<float> GltfAccessorReader::readFloats(int index, int type, const std
     if (!isIndexType(s.indices.componentType)) fail(sparseAt + ".indices", "componentType must be unsigned");
     if (s.indices.byteOffset < 0 || s.values.byteOffset < 0) fail(sparseAt, "byteOffset is negative");
     size_t indexSize = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(s.indices.componentType)));
-    View indices = bytes(s.indices.bufferView, size_t(s.indices.byteOffset), size_t(s.count), indexSize, sparseAt + ".indices");
-    View values = bytes(s.values.bufferView, size_t(s.values.byteOffset), size_t(s.count), elementSize, sparseAt + ".values");
+    View indices =
+        bytes(s.indices.bufferView, size_t(s.indices.byteOffset), size_t(s.count), indexSize, sparseAt + ".indices");
+    View values =
+        bytes(s.values.bufferView, size_t(s.values.byteOffset), size_t(s.count), elementSize, sparseAt + ".values");
     // Sparse data are tightly packed whatever the bufferView's byteStride says.
     for (size_t i = 0; i < size_t(s.count); ++i) {
       uint32_t target = readIndex(indices.data + i * indexSize, s.indices.componentType);
       if (target >= a.count)
-        fail(sparseAt + ".indices", "index " + std::to_string(target) + " is beyond the " + std::to_string(a.count) +
-                                        " elements");
+        fail(sparseAt + ".indices",
+             "index " + std::to_string(target) + " is beyond the " + std::to_string(a.count) + " elements");
       decode(values.data + i * elementSize, &out[target * components]);
     }
   }

@@ -28,8 +28,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr int kMaxJsonDepth = 128;     // deeper JSON is not a plausible glTF and would exhaust the stack
-constexpr int kMaxNodeDepth = 1024;    // deeper node hierarchies would exhaust the stack
+constexpr int kMaxJsonDepth = 128;   // deeper JSON is not a plausible glTF and would exhaust the stack
+constexpr int kMaxNodeDepth = 1024;  // deeper node hierarchies would exhaust the stack
 
 // The deepest nesting of arrays and objects in JSON text (strings skipped).
 int jsonDepth(const char* p, size_t n) {
@@ -38,8 +38,10 @@ int jsonDepth(const char* p, size_t n) {
   for (size_t i = 0; i < n; ++i) {
     char c = p[i];
     if (inString) {
-      if (c == '\\') ++i;
-      else if (c == '"') inString = false;
+      if (c == '\\')
+        ++i;
+      else if (c == '"')
+        inString = false;
     } else if (c == '"') {
       inString = true;
     } else if (c == '[' || c == '{') {
@@ -77,7 +79,7 @@ struct FileAccess {
   std::string_view json;  // the glTF's JSON, read for its buffer URIs when the first one is asked about
   std::optional<GltfBufferUris> bufferUris;
   std::vector<std::string> filesRead;  // buffers, for Scene::inputFiles
-  std::string refusal;  // why the last path asked about may not be read
+  std::string refusal;                 // why the last path asked about may not be read
 
   // The path tinygltf asks about, when it is one in the glTF file's folder and may be read.
   std::optional<std::string> allowed(const std::string& path) {
@@ -138,8 +140,8 @@ glm::mat4 localTransform(const tinygltf::Node& node) {
   if (node.translation.size() == 3)
     t = glm::translate(glm::mat4(1.0f), glm::vec3(node.translation[0], node.translation[1], node.translation[2]));
   if (node.rotation.size() == 4)
-    r = glm::mat4_cast(glm::quat(float(node.rotation[3]), float(node.rotation[0]), float(node.rotation[1]),
-                                 float(node.rotation[2])));
+    r = glm::mat4_cast(
+        glm::quat(float(node.rotation[3]), float(node.rotation[0]), float(node.rotation[1]), float(node.rotation[2])));
   if (node.scale.size() == 3) s = glm::scale(glm::mat4(1.0f), glm::vec3(node.scale[0], node.scale[1], node.scale[2]));
   return t * r * s;
 }
@@ -149,16 +151,21 @@ class GltfSceneBuilder {
   // Textures go to `sharedTextures` when given (and are left for its owner to finish), else to the builder's own.
   GltfSceneBuilder(const tinygltf::Model& model, std::string file, const PathRule& files, LoadWarnings& warnings,
                    TextureTable* sharedTextures)
-      : model_(model), file_(std::move(file)), files_(files), baseDir_(files.folder), warnings_(warnings),
-        accessors_(model, file_), textures_(sharedTextures ? *sharedTextures : ownTextures_),
+      : model_(model),
+        file_(std::move(file)),
+        files_(files),
+        baseDir_(files.folder),
+        warnings_(warnings),
+        accessors_(model, file_),
+        textures_(sharedTextures ? *sharedTextures : ownTextures_),
         sharesTextures_(sharedTextures != nullptr) {}
 
   Scene build() {
     checkGltfExtensions(model_, file_, warnings_);
     scene_.name = fs::path(file_).stem().string();
     for (size_t i = 0; i < model_.materials.size(); ++i) {
-      GltfMaterial m = materialFromGltf(model_, int(i), file_, [this](int t, bool srgb) { return texture(t, srgb); },
-                                        warnings_);
+      GltfMaterial m = materialFromGltf(
+          model_, int(i), file_, [this](int t, bool srgb) { return texture(t, srgb); }, warnings_);
       scene_.materials.push_back(m.material);
       scene_.materialNames.push_back(model_.materials[i].name);
       uvTransforms_.push_back(m.uvTransform);
@@ -217,8 +224,7 @@ class GltfSceneBuilder {
     if (auto light = node.extensions.find("KHR_lights_punctual"); light != node.extensions.end())
       addLight(light->second, world, where);
     if (node.skin >= 0) skinned_ = true;
-    for (size_t c = 0; c < node.children.size(); ++c)
-      visit(node.children[c], world, depth + 1, where + ".children");
+    for (size_t c = 0; c < node.children.size(); ++c) visit(node.children[c], world, depth + 1, where + ".children");
     nodeStates_[size_t(index)] = NodeState::Done;
   }
 
@@ -256,7 +262,8 @@ class GltfSceneBuilder {
       if (!translations.empty())
         local = glm::translate(local, glm::vec3(translations[i].x, translations[i].y, translations[i].z));
       if (!rotations.empty())
-        local *= glm::mat4_cast(glm::normalize(glm::quat(rotations[i].w, rotations[i].x, rotations[i].y, rotations[i].z)));
+        local *=
+            glm::mat4_cast(glm::normalize(glm::quat(rotations[i].w, rotations[i].x, rotations[i].y, rotations[i].z)));
       if (!scales.empty()) local = glm::scale(local, glm::vec3(scales[i].x, scales[i].y, scales[i].z));
       glm::mat4 instance = world * local;
       bool finite = true;
@@ -312,7 +319,8 @@ class GltfSceneBuilder {
       failLoad(file_, where + ".camera: camera " + std::to_string(index) + " does not exist");
     const tinygltf::Camera& c = model_.cameras[size_t(index)];
     if (c.type != "perspective") {
-      warnings_.add(file_, "cameras[" + std::to_string(index) + "] is " + c.type + "; only perspective cameras are used");
+      warnings_.add(file_,
+                    "cameras[" + std::to_string(index) + "] is " + c.type + "; only perspective cameras are used");
       return;
     }
     glm::vec3 eye = world * glm::vec4(0, 0, 0, 1);
@@ -376,7 +384,8 @@ class GltfSceneBuilder {
         warnings_.add(file_, where + ": points and lines are not rendered");
         continue;
       }
-      if (prim.mode > TINYGLTF_MODE_TRIANGLE_FAN) failLoad(file_, where + ".mode: unknown mode " + std::to_string(prim.mode));
+      if (prim.mode > TINYGLTF_MODE_TRIANGLE_FAN)
+        failLoad(file_, where + ".mode: unknown mode " + std::to_string(prim.mode));
       if (!prim.targets.empty()) warnings_.add(file_, where + ": morph targets are ignored");
       auto attribute = [&](const char* name) {
         auto it = prim.attributes.find(name);
@@ -530,20 +539,23 @@ class GltfSceneBuilder {
       wrapV = wrapMode(model_.samplers[size_t(t.sampler)].wrapT);
     }
     if (t.source < 0 || size_t(t.source) >= model_.images.size()) {
-      std::string ext = t.extensions.empty() ? "" : " (it uses " + t.extensions.begin()->first + ", which is not supported)";
+      std::string ext =
+          t.extensions.empty() ? "" : " (it uses " + t.extensions.begin()->first + ", which is not supported)";
       warnings_.add(file_, where + " has no image" + ext + "; the material is left untextured");
       return kNoTexture;
     }
     const tinygltf::Image& image = model_.images[size_t(t.source)];
     std::string imageWhere = "images[" + std::to_string(t.source) + "]";
     if (!image.image.empty())
-      return textures_.fromMemory(file_ + ": " + imageWhere, file_ + ": " + imageWhere, image.image, srgb, wrapU, wrapV);
+      return textures_.fromMemory(file_ + ": " + imageWhere, file_ + ": " + imageWhere, image.image, srgb, wrapU,
+                                  wrapV);
     if (!image.uri.empty() && !baseDir_.empty()) {
       std::optional<std::string> path = uriToPath(image.uri);
       if (path && !path->empty())
         return textures_.fromFile(confineModelPath(joinModelPath(baseDir_, *path), files_), srgb, wrapU, wrapV);
-      warnings_.add(file_, imageWhere + ".uri '" + image.uri + "' names no file in the glTF file's folder (a "
-                           "relative path with valid %-escapes); the material is left untextured");
+      warnings_.add(file_, imageWhere + ".uri '" + image.uri +
+                               "' names no file in the glTF file's folder (a "
+                               "relative path with valid %-escapes); the material is left untextured");
       return kNoTexture;
     }
     warnings_.add(file_, imageWhere + " has no data; the material is left untextured");
@@ -586,7 +598,8 @@ Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, c
   loader.SetImageLoader(&keepEncodedImage, nullptr);
   tinygltf::Model model;
   std::string err, warn;
-  bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, data, unsigned(std::min<size_t>(size, UINT32_MAX)), baseDir)
+  bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, data,
+                                                 unsigned(std::min<size_t>(size, UINT32_MAX)), baseDir)
                    : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(data),
                                                 unsigned(std::min<size_t>(size, UINT32_MAX)), baseDir);
   if (!ok && !access.refusal.empty()) failLoad(name, access.refusal);

@@ -120,22 +120,23 @@ GltfMaterial materialFromGltf(const tinygltf::Model& model, int index, const std
   }
   m.metallic = std::clamp(finiteOr(pbr.metallicFactor, 1), 0.0f, 1.0f);
   m.roughness = std::clamp(finiteOr(pbr.roughnessFactor, 1), 0.0f, 1.0f);
-  m.baseColorTexture = refs.use(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
-                                pbr.baseColorTexture.extensions, true);
+  m.baseColorTexture =
+      refs.use(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, pbr.baseColorTexture.extensions, true);
   m.metallicRoughnessTexture = refs.use(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
                                         pbr.metallicRoughnessTexture.extensions, false);
   m.normalTexture = refs.use(g.normalTexture.index, g.normalTexture.texCoord, g.normalTexture.extensions, false);
   if (g.normalTexture.index >= 0 && g.normalTexture.scale != 1.0)
     refs.warn("normalTexture.scale " + std::to_string(g.normalTexture.scale) + " is ignored");
-  m.emissionTexture = refs.use(g.emissiveTexture.index, g.emissiveTexture.texCoord, g.emissiveTexture.extensions,
-                               true);
+  m.emissionTexture = refs.use(g.emissiveTexture.index, g.emissiveTexture.texCoord, g.emissiveTexture.extensions, true);
 
   float strength = 1.0f;
   if (const tinygltf::Value* e = extension(g.extensions, "KHR_materials_emissive_strength"))
     strength = std::max(finiteOr(number(*e, "emissiveStrength", 1), 1), 0.0f);
   if (g.emissiveFactor.size() == 3)
-    m.emission = Vec3{std::max(finiteOr(g.emissiveFactor[0], 0), 0.0f), std::max(finiteOr(g.emissiveFactor[1], 0), 0.0f),
-                      std::max(finiteOr(g.emissiveFactor[2], 0), 0.0f)} * strength;
+    m.emission =
+        Vec3{std::max(finiteOr(g.emissiveFactor[0], 0), 0.0f), std::max(finiteOr(g.emissiveFactor[1], 0), 0.0f),
+             std::max(finiteOr(g.emissiveFactor[2], 0), 0.0f)} *
+        strength;
 
   m.alphaMode = g.alphaMode == "MASK" ? AlphaMode::Mask : g.alphaMode == "BLEND" ? AlphaMode::Blend : AlphaMode::Opaque;
   m.alphaCutoff = finiteOr(g.alphaCutoff, 0.5f);
@@ -146,15 +147,16 @@ GltfMaterial materialFromGltf(const tinygltf::Model& model, int index, const std
     if (!e) return nullptr;
     m.type = MaterialType::Disney;
     for (const char* t : textures)
-      if (hasTexture(*e, t)) refs.warn(std::string(name) + "." + t + " is ignored: the material model has no such texture");
+      if (hasTexture(*e, t))
+        refs.warn(std::string(name) + "." + t + " is ignored: the material model has no such texture");
     return e;
   };
   if (const tinygltf::Value* e = disneyOnly("KHR_materials_transmission", {"transmissionTexture"}))
     m.specTrans = std::clamp(finiteOr(number(*e, "transmissionFactor", 0), 0), 0.0f, 1.0f);
   if (const tinygltf::Value* e = disneyOnly("KHR_materials_ior", {}))
     m.ior = std::max(finiteOr(number(*e, "ior", 1.5), 1.5f), 1.0f);
-  if (const tinygltf::Value* e = disneyOnly("KHR_materials_clearcoat",
-                                            {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"})) {
+  if (const tinygltf::Value* e = disneyOnly("KHR_materials_clearcoat", {"clearcoatTexture", "clearcoatRoughnessTexture",
+                                                                        "clearcoatNormalTexture"})) {
     m.clearcoat = std::clamp(finiteOr(number(*e, "clearcoatFactor", 0), 0), 0.0f, 1.0f);
     m.clearcoatGloss = 1.0f - std::clamp(finiteOr(number(*e, "clearcoatRoughnessFactor", 0), 0), 0.0f, 1.0f);
   }
@@ -162,7 +164,8 @@ GltfMaterial materialFromGltf(const tinygltf::Model& model, int index, const std
     // Disney's sheen is a weight with a tint towards the base colour; glTF gives a colour. The weight is the
     // colour's brightest channel; a grey sheen is untinted.
     std::vector<double> c = numbers(*e, "sheenColorFactor", {0, 0, 0});
-    Vec3 colour{std::max(finiteOr(c[0], 0), 0.0f), std::max(finiteOr(c[1], 0), 0.0f), std::max(finiteOr(c[2], 0), 0.0f)};
+    Vec3 colour{std::max(finiteOr(c[0], 0), 0.0f), std::max(finiteOr(c[1], 0), 0.0f),
+                std::max(finiteOr(c[2], 0), 0.0f)};
     m.sheen = maxComponent(colour);
     m.sheenTint = m.sheen > 0.0f && (colour.x != colour.y || colour.y != colour.z) ? 1.0f : 0.0f;
   }

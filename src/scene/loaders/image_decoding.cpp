@@ -3,8 +3,8 @@
 #include <stb/stb_image.h>
 
 #include <algorithm>
-#include <cmath>
 #include <climits>
+#include <cmath>
 #include <memory>
 
 #include "core/file_extension.h"

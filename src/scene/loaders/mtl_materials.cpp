@@ -11,9 +11,8 @@ namespace {
 Vec3 rgb(const tinyobj::real_t (&c)[3]) { return {float(c[0]), float(c[1]), float(c[2])}; }
 
 bool isPbr(const tinyobj::material_t& m) {
-  return m.roughness > 0 || m.metallic > 0 || m.sheen > 0 || m.clearcoat_thickness > 0 ||
-         m.clearcoat_roughness > 0 || m.anisotropy > 0 || !m.roughness_texname.empty() ||
-         !m.metallic_texname.empty() || !m.sheen_texname.empty();
+  return m.roughness > 0 || m.metallic > 0 || m.sheen > 0 || m.clearcoat_thickness > 0 || m.clearcoat_roughness > 0 ||
+         m.anisotropy > 0 || !m.roughness_texname.empty() || !m.metallic_texname.empty() || !m.sheen_texname.empty();
 }
 
 bool hasTransform(const tinyobj::texture_option_t& o) {
@@ -28,11 +27,11 @@ class TextureSlots {
 
   int32_t use(const std::string& name, const tinyobj::texture_option_t& options, bool srgb, const char* statement) {
     if (name.empty()) return kNoTexture;
-    if (hasTransform(options))
-      warn(std::string(statement) + " has an -o/-s texture transform, which is ignored");
+    if (hasTransform(options)) warn(std::string(statement) + " has an -o/-s texture transform, which is ignored");
     std::string file = name;
     std::replace(file.begin(), file.end(), '\\', '/');
-    std::filesystem::path path = std::filesystem::path(file).is_absolute() ? std::filesystem::path(file) : directory_ / file;
+    std::filesystem::path path =
+        std::filesystem::path(file).is_absolute() ? std::filesystem::path(file) : directory_ / file;
     TextureWrap wrap = options.clamp ? TextureWrap::Clamp : TextureWrap::Repeat;
     return textures_.fromFile(confineModelPath(path.lexically_normal().string(), files_), srgb, wrap, wrap);
   }

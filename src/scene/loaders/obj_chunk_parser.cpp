@@ -49,8 +49,9 @@ struct AttributeNames {
   const char* one;
   const char* many;
 };
-constexpr AttributeNames kNames[3] = {
-    {"vertex", "vertices"}, {"texture coordinate", "texture coordinates"}, {"normal", "normals"}};
+constexpr AttributeNames kNames[3] = {{"vertex", "vertices"},
+                                      {"texture coordinate", "texture coordinates"},
+                                      {"normal", "normals"}};
 
 class ChunkParser {
  public:
@@ -132,7 +133,9 @@ class ChunkParser {
   }
 
   int64_t definedBefore(Attribute a) const {
-    size_t here = a == Attribute::Position ? c_.positions.size() : a == Attribute::Uv ? c_.uvs.size() : c_.normals.size();
+    size_t here = a == Attribute::Position ? c_.positions.size()
+                  : a == Attribute::Uv     ? c_.uvs.size()
+                                           : c_.normals.size();
     return count(c_.before, a) + int64_t(here);
   }
 
@@ -228,7 +231,8 @@ class ChunkParser {
       size_t digits = 0;
       while (digits < w.size() && w[digits] >= '0' && w[digits] <= '9') ++digits;
       int64_t value = 0;
-      if (digits > 0 && parseObjInteger(w.substr(0, digits), value)) group = uint32_t(std::min<int64_t>(value, INT32_MAX));
+      if (digits > 0 && parseObjInteger(w.substr(0, digits), value))
+        group = uint32_t(std::min<int64_t>(value, INT32_MAX));
     }
     smoothing_ = group;
     c_.lastSmoothing = group;
@@ -251,10 +255,14 @@ ObjChunkOutline outlineObjChunk(std::string_view text) {
   const char* end = p + text.size();
   while (p < end) {
     std::string_view k = keywordAt(p, end);
-    if (k == "v") ++outline.counts.positions;
-    else if (k == "vt") ++outline.counts.uvs;
-    else if (k == "vn") ++outline.counts.normals;
-    else if (k == "f") ++outline.faces;
+    if (k == "v")
+      ++outline.counts.positions;
+    else if (k == "vt")
+      ++outline.counts.uvs;
+    else if (k == "vn")
+      ++outline.counts.normals;
+    else if (k == "f")
+      ++outline.faces;
     p = pastLineEnd(lineEnd(p, end), end);
     ++outline.lines;
   }

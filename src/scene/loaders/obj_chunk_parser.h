@@ -46,12 +46,12 @@ struct ObjChunk {
   // In pages of their own, so that the memory goes back to the system as soon as the whole file's arrays are
   // put together.
   PageVector<Vec3> positions, normals;
-  PageVector<Vec2> uvs;  // as written: v runs up the image
+  PageVector<Vec2> uvs;                          // as written: v runs up the image
   PageVector<uint32_t> cornerPositions;          // 0-based, for positive references possibly past the end
   PageVector<int32_t> cornerUvs, cornerNormals;  // 0-based, -1: none
-  PageVector<uint32_t> faceSizes;      // corners per face; left empty while every face is a triangle
-  PageVector<uint32_t> faceSmoothing;  // smoothing group per face, or kObjInherited
-  PageVector<uint32_t> faceMaterial;   // per face the index of its "usemtl" in materialStatements, or kObjInherited
+  PageVector<uint32_t> faceSizes;                // corners per face; left empty while every face is a triangle
+  PageVector<uint32_t> faceSmoothing;            // smoothing group per face, or kObjInherited
+  PageVector<uint32_t> faceMaterial;  // per face the index of its "usemtl" in materialStatements, or kObjInherited
   std::vector<ObjMaterialStatement> materialStatements;
   std::optional<uint32_t> lastSmoothing;  // the group the chunk leaves set
 

@@ -159,8 +159,10 @@ class GeometryReader {
     m.ofStatement.assign(c.materialStatements.size(), kObjNoMaterial);
     for (size_t k = 0; k < c.materialStatements.size(); ++k) {
       const ObjMaterialStatement& s = c.materialStatements[k];
-      if (s.kind == ObjMaterialStatement::Kind::Libraries) materials_.loadLibraries(s.line, s.text);
-      else material_ = m.ofStatement[k] = materials_.find(s.line, s.text);
+      if (s.kind == ObjMaterialStatement::Kind::Libraries)
+        materials_.loadLibraries(s.line, s.text);
+      else
+        material_ = m.ofStatement[k] = materials_.find(s.line, s.text);
     }
     if (c.lastSmoothing) smoothing_ = *c.lastSmoothing;
     std::vector<ObjMaterialStatement>().swap(c.materialStatements);
@@ -204,9 +206,9 @@ class GeometryReader {
     auto at = [&](size_t line) { return name_ + ":" + std::to_string(line); };
     if (skinWeights) warnings_.add(at(*skinWeights), "'vw' (skin weight) statements are ignored");
     if (degenerate > 0)
-      warnings_.add(at(*firstDegenerate), degenerate == 1 ? "a face with fewer than 3 corners is left out"
-                                                          : std::to_string(degenerate) +
-                                                                " faces with fewer than 3 corners are left out");
+      warnings_.add(at(*firstDegenerate),
+                    degenerate == 1 ? "a face with fewer than 3 corners is left out"
+                                    : std::to_string(degenerate) + " faces with fewer than 3 corners are left out");
     if (firstDropped)
       warnings_.add(at(firstDropped->line), firstDropped->what + "; " + std::to_string(dropped) +
                                                 " references to missing normals or texture coordinates are ignored");

@@ -21,7 +21,7 @@ struct ObjGeometry {
   std::vector<uint32_t> cornerPositions;          // 3 per triangle
   std::vector<int32_t> cornerUvs, cornerNormals;  // 3 per triangle; -1: none
   std::vector<uint32_t> smoothingGroups;          // per triangle; 0: none
-  std::vector<uint32_t> materials;                // per triangle: what ObjMaterialResolver::find gave, or kObjNoMaterial
+  std::vector<uint32_t> materials;  // per triangle: what ObjMaterialResolver::find gave, or kObjNoMaterial
 
   size_t triangleCount() const { return materials.size(); }
 };

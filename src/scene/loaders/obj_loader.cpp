@@ -45,9 +45,8 @@ Scene loadObjSource(const std::string& name, ObjTextSource& text, const std::opt
     const tinyobj::material_t& mtl = libraries.materials()[i];
     const std::string& source = libraries.sourceOf(i);
     scene.materialNames.push_back(mtl.name);
-    scene.materials.push_back(
-        materialFromMtl(mtl, source, fs::path(source).parent_path().string(), files.value_or(PathRule{}),
-                        assets.textures, warnings));
+    scene.materials.push_back(materialFromMtl(mtl, source, fs::path(source).parent_path().string(),
+                                              files.value_or(PathRule{}), assets.textures, warnings));
   }
   for (uint32_t& id : scene.meshes[0].triangleMaterials) id = newId[id];
   scene.instances.push_back({0, Affine3x4{}});

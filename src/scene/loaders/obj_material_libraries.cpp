@@ -42,7 +42,8 @@ void forwardMessages(const std::string& file, const std::string& text, LoadWarni
     if (line.empty()) continue;
     if (counts[line]++ == 0) order.push_back(line);
   }
-  for (const std::string& l : order) warnings.add(file, counts[l] > 1 ? l + " (" + std::to_string(counts[l]) + " times)" : l);
+  for (const std::string& l : order)
+    warnings.add(file, counts[l] > 1 ? l + " (" + std::to_string(counts[l]) + " times)" : l);
 }
 
 }  // namespace
@@ -112,7 +113,8 @@ uint32_t ObjMaterialLibraries::find(size_t line, std::string_view name) {
 
 void ObjMaterialLibraries::reportUnknownNames() {
   std::vector<std::pair<std::string, Unknown>> byLine(unknown_.begin(), unknown_.end());
-  std::sort(byLine.begin(), byLine.end(), [](const auto& a, const auto& b) { return a.second.firstLine < b.second.firstLine; });
+  std::sort(byLine.begin(), byLine.end(),
+            [](const auto& a, const auto& b) { return a.second.firstLine < b.second.firstLine; });
   for (const auto& [name, u] : byLine)
     warnings_.add(objFile_ + ":" + std::to_string(u.firstLine),
                   "material '" + name + "' is in no material library; its faces are grey" +

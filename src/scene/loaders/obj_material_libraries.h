@@ -18,7 +18,7 @@ namespace candela {
 class MtlLibraryCache {
  public:
   struct Library {
-    std::string failure;  // why it could not be read ("not found", ...); empty when it was
+    std::string failure;                         // why it could not be read ("not found", ...); empty when it was
     std::vector<tinyobj::material_t> materials;  // in file order; the first of two equal names is the one used
   };
   const Library& get(const std::string& path, LoadWarnings& warnings);
@@ -46,7 +46,7 @@ class ObjMaterialLibraries : public ObjMaterialResolver {
 
   const std::vector<tinyobj::material_t>& materials() const { return materials_; }
   const std::string& sourceOf(size_t material) const { return sources_[material]; }  // the library it came from
-  const std::vector<std::string>& libraryFiles() const { return files_; }  // those read or looked for
+  const std::vector<std::string>& libraryFiles() const { return files_; }            // those read or looked for
 
  private:
   void load(size_t line, const std::string& name);

@@ -54,7 +54,7 @@ std::vector<Vec3> generateMissingNormals(ObjGeometry& g) {
 struct VertexKey {
   uint32_t position;
   int32_t uv;
-  int32_t normal;  // a normal of the file, or -1 for a generated one
+  int32_t normal;                     // a normal of the file, or -1 for a generated one
   std::array<uint32_t, 3> generated;  // bits of the generated normal, +0 for -0
 
   bool operator==(const VertexKey&) const = default;
@@ -94,8 +94,9 @@ std::vector<Vertex> shareVertices(ObjGeometry& g, const std::vector<Vec3>& gener
     uint32_t found = kEnd;
     for (uint32_t v = head[p]; v != kEnd; v = vertices[v].next) {
       const Vertex& x = vertices[v];
-      if (x.uv == uv && (n >= 0 ? x.normal == n
-                                : x.normal < 0 && sameGeneratedNormal(generated[size_t(-1 - x.normal)], generated[c]))) {
+      if (x.uv == uv &&
+          (n >= 0 ? x.normal == n
+                  : x.normal < 0 && sameGeneratedNormal(generated[size_t(-1 - x.normal)], generated[c]))) {
         found = v;
         break;
       }

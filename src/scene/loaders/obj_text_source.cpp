@@ -92,8 +92,8 @@ class FileText : public ObjTextSource {
       ssize_t n = ::pread(file_.descriptor(), text.data() + done, size - done, off_t(offset + done));
       if (n < 0 && errno == EINTR) continue;
       if (n <= 0)
-        failLoad(file_.path(),
-                 n == 0 ? std::string("changed while it was read") : std::string("read error: ") + std::strerror(errno));
+        failLoad(file_.path(), n == 0 ? std::string("changed while it was read")
+                                      : std::string("read error: ") + std::strerror(errno));
       done += size_t(n);
     }
     return text;

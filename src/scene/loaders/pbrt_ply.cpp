@@ -3,8 +3,8 @@
 #include <zlib.h>
 
 #include <cstring>
-#include <memory>
 #include <istream>
+#include <memory>
 #include <streambuf>
 
 #include "scene/loaders/file_bytes.h"
@@ -80,24 +80,15 @@ T readAs(const uint8_t* at, tinyply::Type type) {
     return T(value);
   };
   switch (type) {
-    case tinyply::Type::INT8:
-      return load(int8_t());
-    case tinyply::Type::UINT8:
-      return load(uint8_t());
-    case tinyply::Type::INT16:
-      return load(int16_t());
-    case tinyply::Type::UINT16:
-      return load(uint16_t());
-    case tinyply::Type::INT32:
-      return load(int32_t());
-    case tinyply::Type::UINT32:
-      return load(uint32_t());
-    case tinyply::Type::FLOAT32:
-      return load(float());
-    case tinyply::Type::FLOAT64:
-      return load(double());
-    case tinyply::Type::INVALID:
-      break;
+    case tinyply::Type::INT8: return load(int8_t());
+    case tinyply::Type::UINT8: return load(uint8_t());
+    case tinyply::Type::INT16: return load(int16_t());
+    case tinyply::Type::UINT16: return load(uint16_t());
+    case tinyply::Type::INT32: return load(int32_t());
+    case tinyply::Type::UINT32: return load(uint32_t());
+    case tinyply::Type::FLOAT32: return load(float());
+    case tinyply::Type::FLOAT64: return load(double());
+    case tinyply::Type::INVALID: break;
   }
   return T();
 }

@@ -31,9 +31,12 @@ bool project(std::span<const Vec3> corners, std::vector<Point>& points) {
   points.resize(corners.size());
   for (size_t i = 0; i < corners.size(); ++i) {
     Vec3 c = corners[i];
-    if (ax >= ay && ax >= az) points[i] = {c.y, n.x > 0.0f ? c.z : -c.z};
-    else if (ay >= az) points[i] = {c.z, n.y > 0.0f ? c.x : -c.x};
-    else points[i] = {c.x, n.z > 0.0f ? c.y : -c.y};
+    if (ax >= ay && ax >= az)
+      points[i] = {c.y, n.x > 0.0f ? c.z : -c.z};
+    else if (ay >= az)
+      points[i] = {c.z, n.y > 0.0f ? c.x : -c.x};
+    else
+      points[i] = {c.x, n.z > 0.0f ? c.y : -c.y};
   }
   return true;
 }

@@ -26,7 +26,8 @@ using nlohmann::json;
 // A JSON value with the path that leads to it, so that every complaint can say where it is.
 class Node {
  public:
-  Node(const json& value, std::string path, const std::string& file) : value_(value), path_(std::move(path)), file_(file) {}
+  Node(const json& value, std::string path, const std::string& file)
+      : value_(value), path_(std::move(path)), file_(file) {}
 
   [[noreturn]] void fail(const std::string& what) const { failLoad(file_, path_.empty() ? what : path_ + ": " + what); }
 
@@ -128,8 +129,8 @@ MaterialType materialType(const Node& n) {
 }
 
 void overrideMaterial(Material& m, const Node& o, LoadWarnings& warnings) {
-  o.expectObject({"type", "base_color", "emission", "roughness", "metallic", "ior", "specular_transmission",
-                  "opacity", "double_sided"},
+  o.expectObject({"type", "base_color", "emission", "roughness", "metallic", "ior", "specular_transmission", "opacity",
+                  "double_sided"},
                  warnings);
   if (o.has("type")) m.type = materialType(o["type"]);
   if (o.has("base_color")) m.baseColor = o["base_color"].vec3();
@@ -297,7 +298,8 @@ Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadW
     std::string file = resolve(model["file"], files);
     std::string ext = fs::path(file).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    if (ext != ".obj" && ext != ".gltf" && ext != ".glb") model["file"].fail("models must be .obj, .gltf or .glb files");
+    if (ext != ".obj" && ext != ".gltf" && ext != ".glb")
+      model["file"].fail("models must be .obj, .gltf or .glb files");
     glm::mat4 transform = model.has("transform") ? transformOf(model["transform"], warnings) : glm::mat4(1.0f);
     std::pair<std::string, std::string> key{file, model.has("materials") ? doc["models"][i]["materials"].dump() : ""};
     if (auto it = loaded.find(key); it != loaded.end()) {
@@ -322,7 +324,9 @@ Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadW
             overrideMaterial(part.materials[m], o, warnings);
             found = true;
           }
-        if (!found) warnings.add(path, "models[" + std::to_string(i) + "].materials." + name + ": no material of that name in " + file);
+        if (!found)
+          warnings.add(path,
+                       "models[" + std::to_string(i) + "].materials." + name + ": no material of that name in " + file);
       }
     }
     auto placed = [&](CameraDescription c) {

@@ -58,12 +58,12 @@ std::vector<TextureExtent> fitTextureLimits(const std::vector<TextureExtent>& im
 std::string downscaleWarning(const std::string& name, TextureExtent from, TextureExtent to,
                              const TextureLimits& limits) {
   auto size = [](TextureExtent e) { return std::to_string(e.width) + "x" + std::to_string(e.height); };
-  const bool bySize = std::max(from.width, from.height) > limits.maxSize &&
-                      std::max(to.width, to.height) == limits.maxSize;
+  const bool bySize =
+      std::max(from.width, from.height) > limits.maxSize && std::max(to.width, to.height) == limits.maxSize;
   const std::string why =
       bySize ? "the texture size limit is " + std::to_string(limits.maxSize) + " pixels (--max-texture-size)"
-             : "the scene's textures exceed the texture memory limit of " +
-                   std::to_string(limits.maxBytes >> 20) + " MiB (--max-texture-memory)";
+             : "the scene's textures exceed the texture memory limit of " + std::to_string(limits.maxBytes >> 20) +
+                   " MiB (--max-texture-memory)";
   return name + ": texture of " + size(from) + " pixels downscaled to " + size(to) + ": " + why;
 }
 

@@ -12,8 +12,8 @@ namespace candela {
 // memory limit, are decoded smaller (area averaged) with a warning; the command line raises both
 // (--max-texture-size, --max-texture-memory). Environment maps are not textures and are not limited here.
 struct TextureLimits {
-  uint32_t maxSize = 8192;                  // largest width or height of a texture, in pixels
-  uint64_t maxBytes = uint64_t(4) << 30;    // decoded bytes of all the textures of a scene
+  uint32_t maxSize = 8192;                // largest width or height of a texture, in pixels
+  uint64_t maxBytes = uint64_t(4) << 30;  // decoded bytes of all the textures of a scene
 };
 
 // The limits the texture loaders use, for the whole process; loadScene sets them from its options.

@@ -11,7 +11,8 @@
 namespace candela {
 
 int32_t TextureTable::add(const std::string& key, Request request) {
-  auto [it, inserted] = index_.try_emplace({key, request.srgb, request.wrapU, request.wrapV}, int32_t(requests_.size()));
+  auto [it, inserted] =
+      index_.try_emplace({key, request.srgb, request.wrapU, request.wrapV}, int32_t(requests_.size()));
   if (inserted) requests_.push_back(std::move(request));
   return it->second;
 }
@@ -28,8 +29,8 @@ int32_t TextureTable::fromFile(const ResolvedPath& file, bool srgb, TextureWrap 
   return add((file.allowed() ? "file:" : "refused file:") + file.path, std::move(r));
 }
 
-int32_t TextureTable::fromMemory(const std::string& key, const std::string& name, std::vector<uint8_t> bytes,
-                                 bool srgb, TextureWrap wrapU, TextureWrap wrapV) {
+int32_t TextureTable::fromMemory(const std::string& key, const std::string& name, std::vector<uint8_t> bytes, bool srgb,
+                                 TextureWrap wrapU, TextureWrap wrapV) {
   Request r;
   r.name = name;
   r.bytes = std::move(bytes);

@@ -32,8 +32,8 @@ class TextureTable {
  private:
   struct Request {
     std::string name;
-    std::string path;            // empty when the bytes are in memory
-    std::string refusal;         // why `path` may not be read (path_confinement.h); empty when it may
+    std::string path;     // empty when the bytes are in memory
+    std::string refusal;  // why `path` may not be read (path_confinement.h); empty when it may
     std::vector<uint8_t> bytes;
     bool srgb = false;
     TextureWrap wrapU = TextureWrap::Repeat, wrapV = TextureWrap::Repeat;

@@ -21,8 +21,8 @@ class OptixTracer {
   __device__ bool intersect(const Ray& ray, Hit& hit, uint32_t randomBits) const {
     uint32_t t = randomBits, b1 = 0, b2 = 0, instance = kMissedInstance, primitive = 0;
     optixTrace(traversable_, toFloat3(ray.origin), toFloat3(ray.direction), ray.tMin, ray.tMax, 0.0f,
-               OptixVisibilityMask(0xFF), cutoutFlags_, kRadianceRay, kRayTypeCount, kRadianceRay, t, b1, b2,
-               instance, primitive);
+               OptixVisibilityMask(0xFF), cutoutFlags_, kRadianceRay, kRayTypeCount, kRadianceRay, t, b1, b2, instance,
+               primitive);
     if (instance == kMissedInstance) return false;
     hit.t = __uint_as_float(t);
     hit.b1 = __uint_as_float(b1);

@@ -32,11 +32,10 @@ __device__ void renderPixel() {
   const uint3 index = optixGetLaunchIndex();
   const uint32_t pixel = launchPixel();
   const OptixTracer tracer = sceneTracer();
-  const PixelTally tally =
-      accumulatePixel<kWithAovs>(params.film, pixel, params.samplesPerPixel, [&](uint32_t s) {
-        return renderPixelSample<kWithAovs>(params.scene, tracer, params.camera, params.settings, index.x, index.y,
-                                            params.firstSample + s);
-      });
+  const PixelTally tally = accumulatePixel<kWithAovs>(params.film, pixel, params.samplesPerPixel, [&](uint32_t s) {
+    return renderPixelSample<kWithAovs>(params.scene, tracer, params.camera, params.settings, index.x, index.y,
+                                        params.firstSample + s);
+  });
   params.counters[pixel] = {tally.rays, tally.invalidSamples};
 }
 
@@ -47,8 +46,7 @@ extern "C" __global__ void __raygen__renderWithAovs() { renderPixel<true>(); }
 extern "C" __global__ void __raygen__record() {
   const uint3 index = optixGetLaunchIndex();
   const uint32_t pixel = launchPixel();
-  const RecordingTracer tracer(sceneTracer(), params.recording, pixel,
-                               params.settings.width * params.settings.height);
+  const RecordingTracer tracer(sceneTracer(), params.recording, pixel, params.settings.width * params.settings.height);
   PathResult path =
       renderPixelSample(params.scene, tracer, params.camera, params.settings, index.x, index.y, params.firstSample);
   params.recording.counts[pixel] = min(tracer.count(), params.recording.slotsPerPixel);
@@ -106,7 +104,9 @@ extern "C" __global__ void __anyhit__passThrough() {
   hit.b2 = barycentrics.y;
   hit.instanceId = hitInstance();
   hit.primitiveId = optixGetPrimitiveIndex();
-  if (passesThrough(params.scene, hit, [] { return false; }, optixGetPayload_0())) optixIgnoreIntersection();
+  if (passesThrough(
+          params.scene, hit, [] { return false; }, optixGetPayload_0()))
+    optixIgnoreIntersection();
 }
 
 extern "C" __global__ void __miss__shadow() { optixSetPayload_1(0); }

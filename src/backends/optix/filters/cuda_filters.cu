@@ -110,7 +110,8 @@ __global__ void atrousPassKernel(Planes p, int from, int w, int h, AtrousPassCon
       if (qx < 0 || qx >= w) continue;
       const size_t q = size_t(qy) * w + qx;
       const float kernelWeight = b3Weight(dx) * b3Weight(dy);
-      const float weight = atrousWeight(dx, dy, kernelWeight, k, centre, p.lum[from][q], p.nx[q], p.ny[q], p.nz[q], p.z[q]);
+      const float weight =
+          atrousWeight(dx, dy, kernelWeight, k, centre, p.lum[from][q], p.nx[q], p.ny[q], p.nz[q], p.z[q]);
       sr += inR[q] * weight;
       sg += inG[q] * weight;
       sb += inB[q] * weight;
@@ -144,8 +145,8 @@ __global__ void finishKernel(FilmView film, const float* imageVariance, Planes p
                         : imageVariance[q];
   };
   const Vec3 emission{p.r[from][i], p.g[from][i], p.b[from][i]};
-  output[i] = blendWithRaw(meanAt(film.radiance, film.samples, i), output[i] + emission,
-                           blendVariance(varianceAt, w, h, x, y));
+  output[i] =
+      blendWithRaw(meanAt(film.radiance, film.samples, i), output[i] + emission, blendVariance(varianceAt, w, h, x, y));
 }
 
 // What the bilateral filter smooths at pixel i: the mean radiance without the emission, where the film has one.

@@ -25,8 +25,8 @@ class CudaAtrous {
 
  private:
   uint32_t width_, height_;
-  DeviceBuffer planes_;         // colour twice (ping-pong) and the guides, one float plane each
-  DeviceBuffer luminanceSum_;   // one double
+  DeviceBuffer planes_;        // colour twice (ping-pong) and the guides, one float plane each
+  DeviceBuffer luminanceSum_;  // one double
 };
 
 // Enqueues the bilateral filter of image/filters/bilateral.h on `stream` for the film's mean radiance, without its
