@@ -107,24 +107,29 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
       return (dot(wi, si.geometricNormal) * woSide > 0.0f) == (dot(wi, bsdf.normal()) > 0.0f);
     };
 
+    // Whether a sampled light point is seen from here along a direction the BSDF can use, through a shadow ray;
+    // `f` receives the BSDF's value towards it.
+    auto litThroughShadowRay = [&](const LightSample& ls, Vec3& f) {
+      bool reachable = dot(ls.wi, si.geometricNormal) * woSide > 0.0f || bsdf.hasTransmission();
+      if (!ls.valid || !reachable || !sidesAgree(ls.wi)) return false;
+      f = bsdf.eval(wo, ls.wi);
+      if (isBlack(f)) return false;
+      Ray shadow{offsetRayOrigin(si.position, si.geometricNormal, ls.wi), ls.wi, 0.0f,
+                 ls.distance >= kInf ? kInf : ls.distance * (1.0f - 1e-4f)};
+      ++result.rays;
+      return !tracer.occluded(shadow, queryBits());
+    };
+
     // Next-event estimation.
     float uSelect = sampler.next1D();
     Vec2 uLight = sampler.next2D();
     if (!bsdf.isDelta()) {
       LightSample ls = sampleLight(scene, si.position, uSelect, uLight);
-      bool reachable = dot(ls.wi, si.geometricNormal) * woSide > 0.0f || bsdf.hasTransmission();
-      if (ls.valid && reachable && sidesAgree(ls.wi)) {
-        Vec3 f = bsdf.eval(wo, ls.wi);
-        if (!isBlack(f)) {
-          Ray shadow{offsetRayOrigin(si.position, si.geometricNormal, ls.wi), ls.wi, 0.0f,
-                     ls.distance >= kInf ? kInf : ls.distance * (1.0f - 1e-4f)};
-          ++result.rays;
-          if (!tracer.occluded(shadow, queryBits())) {
-            Vec3 le = ls.distance >= kInf ? ls.radiance : texturedLightRadiance(scene, ls);
-            float w = powerHeuristic(ls.pdf, bsdf.pdf(wo, ls.wi));
-            result.radiance += beta * f * le * (fabsf(dot(ls.wi, bsdf.normal())) * w / ls.pdf);
-          }
-        }
+      Vec3 f;
+      if (litThroughShadowRay(ls, f)) {
+        Vec3 le = ls.distance >= kInf ? ls.radiance : texturedLightRadiance(scene, ls);
+        float w = powerHeuristic(ls.pdf, bsdf.pdf(wo, ls.wi));
+        result.radiance += beta * f * le * (fabsf(dot(ls.wi, bsdf.normal())) * w / ls.pdf);
       }
     }
 
@@ -134,17 +139,9 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
       float uPunctual = sampler.next1D();
       if (!bsdf.isDelta()) {
         LightSample ls = samplePunctualLight(scene, si.position, uPunctual);
-        bool reachable = dot(ls.wi, si.geometricNormal) * woSide > 0.0f || bsdf.hasTransmission();
-        if (ls.valid && reachable && sidesAgree(ls.wi)) {
-          Vec3 f = bsdf.eval(wo, ls.wi);
-          if (!isBlack(f)) {
-            Ray shadow{offsetRayOrigin(si.position, si.geometricNormal, ls.wi), ls.wi, 0.0f,
-                       ls.distance >= kInf ? kInf : ls.distance * (1.0f - 1e-4f)};
-            ++result.rays;
-            if (!tracer.occluded(shadow, queryBits()))
-              result.radiance += beta * f * ls.radiance * (fabsf(dot(ls.wi, bsdf.normal())) / ls.pdf);
-          }
-        }
+        Vec3 f;
+        if (litThroughShadowRay(ls, f))
+          result.radiance += beta * f * ls.radiance * (fabsf(dot(ls.wi, bsdf.normal())) / ls.pdf);
       }
     }
 
