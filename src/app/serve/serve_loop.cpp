@@ -178,13 +178,8 @@ void ServeLoop::act(uint64_t client, ActionMessage::Kind kind) {
 
 // The OptiX AI denoiser is made when first chosen; where it cannot run the page says why and denoising goes off.
 void ServeLoop::prepareDenoiser() {
-  if (controls_.post.denoiser != DenoiserChoice::Optix) return;
-  try {
-    denoiser_.prepareOptix();
-  } catch (const std::runtime_error& e) {
-    controls_.post.denoiser = DenoiserChoice::None;
-    report(std::string("no OptiX AI denoiser: ") + e.what() + "; denoising is off", true);
-  }
+  const std::string why = denoiser_.prepareOrTurnOff(controls_.post.denoiser);
+  if (!why.empty()) report(why, true);
 }
 
 Image ServeLoop::accumulatedImage() {

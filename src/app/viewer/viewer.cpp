@@ -301,13 +301,8 @@ void Viewer::frame(double now, double seconds) {
 // The OptiX AI denoiser is made when first chosen; where it cannot run the panel says why and denoising goes off,
 // before any frame is rendered for it.
 void Viewer::prepareDenoiser() {
-  if (controls_.post.denoiser != DenoiserChoice::Optix) return;
-  try {
-    denoiser_.prepareOptix();
-  } catch (const std::runtime_error& e) {
-    controls_.post.denoiser = DenoiserChoice::None;
-    report(std::string("no OptiX AI denoiser: ") + e.what() + "; denoising is off", true);
-  }
+  const std::string why = denoiser_.prepareOrTurnOff(controls_.post.denoiser);
+  if (!why.empty()) report(why, true);
 }
 
 // What the window shows before its GPU passes: the film, through the chosen denoiser.

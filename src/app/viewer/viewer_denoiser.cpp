@@ -31,6 +31,17 @@ void ViewerDenoiser::prepareOptix() {
 #endif
 }
 
+std::string ViewerDenoiser::prepareOrTurnOff(DenoiserChoice& choice) {
+  if (choice != DenoiserChoice::Optix) return {};
+  try {
+    prepareOptix();
+  } catch (const std::runtime_error& e) {
+    choice = DenoiserChoice::None;
+    return std::string("no OptiX AI denoiser: ") + e.what() + "; denoising is off";
+  }
+  return {};
+}
+
 Image ViewerDenoiser::apply(const RenderSession& session, DenoiserChoice choice, const AtrousParams& atrousParams) {
   switch (choice) {
     case DenoiserChoice::None: return session.image();

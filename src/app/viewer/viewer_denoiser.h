@@ -1,5 +1,6 @@
 #pragma once
 #include <functional>
+#include <string>
 
 #include "app/viewer/post_settings.h"
 #include "app/viewer/render_session.h"
@@ -16,6 +17,9 @@ class ViewerDenoiser {
   // Makes the OptiX AI denoiser unless it is made already. Throws std::runtime_error with one sentence where it
   // cannot run: not in this build, no usable GPU, or no denoiser weights in the driver (OptiX error 7990).
   void prepareOptix();
+  // For a window or page: prepares the OptiX AI denoiser where `choice` asks for it; where it cannot run, turns
+  // `choice` to None and returns the sentence to show (empty when nothing went wrong).
+  std::string prepareOrTurnOff(DenoiserChoice& choice);
 
   // The accumulated image through `choice` (None: as it is). The AOVs must be enabled for the others, and
   // prepareOptix must have succeeded for Optix.
