@@ -21,7 +21,7 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 }
 
 bool needsAovs(const RenderJob& job) {
-  return !job.aovs.empty() || job.denoiser == "atrous" || job.denoiser == "optix";
+  return !job.aovs.empty() || job.denoiser != "none";  // the bilateral filter reads the emission, recorded with them
 }
 
 // Builds without OptiX refuse --denoise optix before rendering (runRenderJob).

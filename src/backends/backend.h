@@ -52,7 +52,8 @@ class Backend {
   // The mean of the accumulated samples.
   virtual Image readImage() const = 0;
   // The part of readImage() the camera sees emitted (PathResult::emitted): lights, emissive textures and the
-  // environment seen directly or through mirrors and smooth glass.
+  // environment seen directly or through mirrors and smooth glass. Recorded with the AOVs: throws
+  // std::logic_error when they are not enabled.
   virtual Image readEmission() const = 0;
 
   // Whether render() also accumulates the AOVs (albedo, normal, depth at the first non-specular vertex) for
@@ -62,9 +63,9 @@ class Backend {
   // The mean AOVs of the accumulated samples. Throws std::logic_error when they are not enabled.
   virtual AovImages readAovs() const = 0;
 
-  // The accumulated image through the a-trous filter guided by the AOVs (which must be enabled), or through the
-  // bilateral filter: by default the CPU filters on readImage(); a backend whose film lives on a GPU filters
-  // there and reads back only the result.
+  // The accumulated image through the a-trous filter guided by the AOVs, or through the bilateral filter, which
+  // keeps the emission apart (both need the AOVs enabled): by default the CPU filters on readImage(); a backend whose
+  // film lives on a GPU filters there and reads back only the result.
   virtual Image readAtrousDenoised(const AtrousParams& params) const {
     return atrousDenoise(readImage(), readAovs(), params);
   }

@@ -11,7 +11,7 @@ namespace candela {
 // samples dropped as invalid count nowhere, so they neither darken the pixel nor shift its AOVs.
 struct FilmView {
   Vec3* radiance = nullptr;
-  Vec3* emission = nullptr;     // the sums of PathResult::emitted
+  Vec3* emission = nullptr;     // the sums of PathResult::emitted; null while the AOVs are off, like them
   uint32_t* samples = nullptr;  // samples accepted per pixel
   // The AOV sums (kernel/aovs.h) and the sums of the squared luminance of the samples' radiance, the denoisers'
   // guides; null while the AOVs are off.

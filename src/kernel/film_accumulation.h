@@ -14,7 +14,8 @@ struct PixelTally {
 // One pixel's sums while samples are added to them: loaded from the film once and stored back once.
 template <bool kWithAovs>
 struct PixelSums {
-  Vec3 radiance, emission;
+  Vec3 radiance;
+  Vec3 emission;  // with the AOVs only, as PathResult::emitted
   PathAovs aovs;
   float luminanceSquares = 0.0f;
   uint32_t samples = 0;
@@ -22,9 +23,9 @@ struct PixelSums {
   CANDELA_HD static PixelSums load(const FilmView& film, size_t pixel) {
     PixelSums s;
     s.radiance = film.radiance[pixel];
-    s.emission = film.emission[pixel];
     s.samples = film.samples[pixel];
     if (kWithAovs) {
+      s.emission = film.emission[pixel];
       s.aovs = {film.albedo[pixel], film.normal[pixel], film.depth[pixel]};
       s.luminanceSquares = film.luminanceSquares[pixel];
     }
@@ -33,9 +34,9 @@ struct PixelSums {
 
   CANDELA_HD void store(const FilmView& film, size_t pixel) const {
     film.radiance[pixel] = radiance;
-    film.emission[pixel] = emission;
     film.samples[pixel] = samples;
     if (kWithAovs) {
+      film.emission[pixel] = emission;
       film.albedo[pixel] = aovs.albedo;
       film.normal[pixel] = aovs.normal;
       film.depth[pixel] = aovs.depth;

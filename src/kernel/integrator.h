@@ -16,7 +16,8 @@ struct PathResult {
   Vec3 radiance;
   // The part of `radiance` that the camera sees emitted: by the first surface the path hits, by the environment it
   // escapes to at once, or by either at the end of a chain of mirrors and smooth glass from the camera. It is no
-  // reflected light, so the denoisers keep it out of what they demodulate by the albedo and smooth.
+  // reflected light, so the denoisers keep it out of what they demodulate by the albedo and smooth. Only the
+  // kWithAovs instantiations, whose films the denoisers read, record it.
   Vec3 emitted;
   uint32_t rays = 0;  // camera, bounce and shadow rays traced for this path
   PathAovs aovs;      // filled only by the kWithAovs instantiations
@@ -30,10 +31,11 @@ CANDELA_FN Vec3 texturedLightRadiance(const SceneView& scene, const LightSample&
   hit.b2 = ls.barycentrics.y;
   hit.instanceId = light.instanceId;
   hit.primitiveId = light.primitiveId;
-  SurfaceInteraction si = makeInteraction(scene, hit);
-  const Material& m = scene.materials[si.materialId];
+  const HitTriangle tri = hitTriangle(scene, hit);
+  const Material& m = scene.materials[scene.triangleMaterials[tri.triangle]];
   if (m.emissionTexture == kNoTexture) return ls.radiance;
-  Vec4 c = lookup(scene, m.emissionTexture, si.uv);
+  const Vec2 uv = tri.mesh->hasUvs ? interpolate(scene.uvs, tri) : Vec2{};
+  Vec4 c = lookup(scene, m.emissionTexture, uv);
   return ls.radiance * Vec3{c.x, c.y, c.z};
 }
 
@@ -69,7 +71,7 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
       if (!isBlack(le) && (depth > 0 || scene.environment.visibleToCamera)) {
         float w = (depth == 0 || specularBounce) ? 1.0f : powerHeuristic(bsdfPdf, environmentPdf(scene, ray.direction));
         result.radiance += beta * le * w;
-        if (cameraChain) result.emitted += beta * le;
+        if (kWithAovs && cameraChain) result.emitted += beta * le;
       }
       break;
     }
@@ -96,7 +98,7 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
         w = powerHeuristic(bsdfPdf, lightPdf);
       }
       result.radiance += beta * material.emission * w;
-      if (cameraChain) result.emitted += beta * material.emission;
+      if (kWithAovs && cameraChain) result.emitted += beta * material.emission;
     }
     if (depth >= settings.maxDepth) break;
 

@@ -9,7 +9,7 @@ void HostFilm::reset(uint32_t width, uint32_t height, bool withAovs) {
   height_ = height;
   const size_t pixels = size_t(width) * height, aovPixels = withAovs ? pixels : 0;
   radiance_.assign(pixels, Vec3{});
-  emission_.assign(pixels, Vec3{});
+  emission_.assign(aovPixels, Vec3{});
   samples_.assign(pixels, 0);
   albedo_.assign(aovPixels, Vec3{});
   normal_.assign(aovPixels, Vec3{});
@@ -18,8 +18,9 @@ void HostFilm::reset(uint32_t width, uint32_t height, bool withAovs) {
 }
 
 FilmView HostFilm::view() {
-  FilmView v{radiance_.data(), emission_.data(), samples_.data()};
+  FilmView v{radiance_.data(), nullptr, samples_.data()};
   if (hasAovs()) {
+    v.emission = emission_.data();
     v.albedo = albedo_.data();
     v.normal = normal_.data();
     v.depth = depth_.data();
@@ -34,6 +35,11 @@ Image HostFilm::meanImage(const std::vector<Vec3>& sums) const {
   return image;
 }
 
+Image HostFilm::readEmission() const {
+  if (!hasAovs()) throw std::logic_error("HostFilm::readEmission on a film without AOVs");
+  return meanImage(emission_);
+}
+
 AovImages HostFilm::readAovs() const {
   if (!hasAovs()) throw std::logic_error("HostFilm::readAovs on a film without AOVs");
   AovImages aovs(width_, height_);
@@ -43,7 +49,7 @@ AovImages HostFilm::readAovs() const {
     aovs.depth[i] = filmMean(depth_[i], samples_[i]);
     aovs.variance[i] = meanLuminanceVariance(radiance_[i], luminanceSquares_[i], samples_[i]);
   }
-  aovs.emission = readEmission();
+  aovs.emission = meanImage(emission_);
   return aovs;
 }
 

@@ -17,17 +17,17 @@ class HostFilm {
   FilmView view();
 
   Image readImage() const { return meanImage(radiance_); }
-  Image readEmission() const { return meanImage(emission_); }
-  // Throws std::logic_error when the film has no AOV sums.
+  // Throw std::logic_error when the film has no AOV sums (the emission is recorded with them).
+  Image readEmission() const;
   AovImages readAovs() const;
 
  private:
   Image meanImage(const std::vector<Vec3>& sums) const;
 
   uint32_t width_ = 0, height_ = 0;
-  std::vector<Vec3> radiance_, emission_;
+  std::vector<Vec3> radiance_;
   std::vector<uint32_t> samples_;
-  std::vector<Vec3> albedo_, normal_;  // empty without AOVs
+  std::vector<Vec3> emission_, albedo_, normal_;  // empty without AOVs
   std::vector<float> depth_, luminanceSquares_;
 };
 

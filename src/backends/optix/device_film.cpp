@@ -22,7 +22,7 @@ void DeviceFilm::resize(uint32_t width, uint32_t height, bool withAovs) {
   height_ = height;
   const size_t pixels = size_t(width) * height, aovPixels = withAovs ? pixels : 0;
   resizeBuffer(radiance_, pixels * sizeof(Vec3), "the film's radiance sums");
-  resizeBuffer(emission_, pixels * sizeof(Vec3), "the film's emission sums");
+  resizeBuffer(emission_, aovPixels * sizeof(Vec3), "the film's emission sums");
   resizeBuffer(samples_, pixels * sizeof(uint32_t), "the film's sample counts");
   resizeBuffer(albedo_, aovPixels * sizeof(Vec3), "the albedo AOV");
   resizeBuffer(normal_, aovPixels * sizeof(Vec3), "the normal AOV");
@@ -54,6 +54,11 @@ Image DeviceFilm::meanImage(const DeviceBuffer& sums) const {
   return image;
 }
 
+Image DeviceFilm::readEmission() const {
+  if (!hasAovs()) throw std::logic_error("DeviceFilm::readEmission on a film without AOVs");
+  return meanImage(emission_);
+}
+
 AovImages DeviceFilm::readAovs() const {
   if (!hasAovs()) throw std::logic_error("DeviceFilm::readAovs on a film without AOVs");
   AovImages aovs(width_, height_);
@@ -71,7 +76,7 @@ AovImages DeviceFilm::readAovs() const {
     aovs.normal.pixels[i] = filmMean(aovs.normal.pixels[i], samples[i]);
     aovs.depth[i] = filmMean(aovs.depth[i], samples[i]);
   }
-  aovs.emission = readEmission();
+  aovs.emission = meanImage(emission_);
   return aovs;
 }
 

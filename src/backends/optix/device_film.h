@@ -25,8 +25,8 @@ class DeviceFilm {
 
   // The means, after waiting for the default stream's work on the film (downloads are synchronous).
   Image readImage() const { return meanImage(radiance_); }
-  Image readEmission() const { return meanImage(emission_); }
-  // Throws std::logic_error when the film has no AOV sums.
+  // Throw std::logic_error when the film has no AOV sums (the emission is recorded with them).
+  Image readEmission() const;
   AovImages readAovs() const;
 
  private:
@@ -34,8 +34,8 @@ class DeviceFilm {
   std::vector<uint32_t> downloadSamples() const;
 
   uint32_t width_ = 0, height_ = 0;
-  DeviceBuffer radiance_, emission_, samples_;
-  DeviceBuffer albedo_, normal_, depth_, luminanceSquares_;  // empty without AOVs
+  DeviceBuffer radiance_, samples_;
+  DeviceBuffer emission_, albedo_, normal_, depth_, luminanceSquares_;  // empty without AOVs
 };
 
 }  // namespace candela::optix

@@ -269,6 +269,7 @@ Image OptixBackend::readAtrousDenoised(const AtrousParams& params) const {
 
 Image OptixBackend::readBilateralFiltered(const BilateralParams& params) const {
   State& s = *state_;
+  if (!s.aovsEnabled) throw std::logic_error("OptixBackend::readBilateralFiltered without setAovsEnabled(true)");
   validateBilateralParams(params);
   cudaBilateral(s.film.view(), s.filterOutput(), s.settings.width, s.settings.height, params, s.context.stream());
   return s.downloadFiltered();
