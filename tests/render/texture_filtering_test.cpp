@@ -229,6 +229,25 @@ TEST(TextureFilteringRender, RecedingCheckerboardAliasesFarLess) {
   }
 }
 
+// The same for the reflection of a textured ceiling in a mirror floor: the cone goes on through the mirror, so the
+// reflection, a receding checkerboard twice as far below as the ceiling is above, aliases as little as the
+// ceiling. Measured (seed 1), rows below the horizon: finest 0.184, anisotropic 0.0211 (8.7 times less); with the
+// cone ended at the mirror, as at a diffuse bounce, both 0.184.
+TEST(TextureFilteringRender, ConesGoOnThroughMirrors) {
+  const Scene scene = mirroredTexturedCeiling(checkerboardTexture(256, 16));
+  RenderSettings settings = planeSettings(TextureFilter::Finest, 100);
+  settings.maxDepth = 2;
+  const Image reference = renderCpu(scene, settings, 256);
+  double mirrored[3];
+  for (TextureFilter filter : {TextureFilter::Finest, TextureFilter::Anisotropic}) {
+    settings.textureFilter = filter;
+    settings.seed = 1;
+    mirrored[int(filter)] = meanSquaredDifference(renderCpu(scene, settings, 1), reference, 60, 60);
+    std::printf("filter %d, mean squared error at 1 spp below the horizon: %.5f\n", int(filter), mirrored[int(filter)]);
+  }
+  EXPECT_LT(mirrored[int(TextureFilter::Anisotropic)], mirrored[int(TextureFilter::Finest)] / 4);
+}
+
 // Filtering moves no mean: the 1-sample image's mean matches the reference's, and a constant texture (an odd size,
 // sRGB) renders the same, pixel for pixel, with every filter.
 TEST(TextureFilteringRender, MeansStayTheSame) {

@@ -13,29 +13,63 @@ Texture checkerboardTexture(uint32_t size, uint32_t square) {
   return t;
 }
 
-Scene recedingTexturedPlane(const Texture& texture) {
-  Scene scene;
-  scene.name = "receding-textured-plane";
+namespace {
+
+// 400 x 400 units in the plane y = height, facing up or down, the texture repeated 100 times along each side
+// (4 units a tile).
+Mesh texturedPlane(float height, bool facingUp, uint32_t materialId) {
+  constexpr float kHalf = 200.0f, kRepeats = 100.0f;
+  const float n = facingUp ? 1.0f : -1.0f;
+  Mesh plane;
+  plane.positions = {
+      {-kHalf, height, -kHalf}, {kHalf, height, -kHalf}, {kHalf, height, kHalf}, {-kHalf, height, kHalf}};
+  plane.normals = {{0, n, 0}, {0, n, 0}, {0, n, 0}, {0, n, 0}};
+  plane.uvs = {{0, 0}, {kRepeats, 0}, {kRepeats, kRepeats}, {0, kRepeats}};
+  plane.indices = facingUp ? std::vector<uint32_t>{0, 2, 1, 0, 3, 2} : std::vector<uint32_t>{0, 1, 2, 0, 2, 3};
+  plane.triangleMaterials = {materialId, materialId};
+  return plane;
+}
+
+Material emitting(uint32_t texture) {
   Material m;
   m.baseColor = {0, 0, 0};
   m.emission = {1, 1, 1};
-  m.emissionTexture = 0;
-  scene.materials = {m};
-  scene.textures = {texture};
-  // 400 x 400 units in the plane y = 0, the texture repeated 100 times along each side (4 units a tile).
-  constexpr float kHalf = 200.0f, kRepeats = 100.0f;
-  Mesh plane;
-  plane.positions = {{-kHalf, 0, -kHalf}, {kHalf, 0, -kHalf}, {kHalf, 0, kHalf}, {-kHalf, 0, kHalf}};
-  plane.normals = {{0, 1, 0}, {0, 1, 0}, {0, 1, 0}, {0, 1, 0}};
-  plane.uvs = {{0, 0}, {kRepeats, 0}, {kRepeats, kRepeats}, {0, kRepeats}};
-  plane.indices = {0, 2, 1, 0, 3, 2};  // wound to face +y
-  plane.triangleMaterials = {0, 0};
-  scene.meshes = {plane};
-  scene.instances = {{0, Affine3x4{}}};
+  m.emissionTexture = int32_t(texture);
+  return m;
+}
+
+void lookTowardsTheHorizon(Scene& scene) {
   scene.environment.radiance = {0, 0, 0};
   scene.camera.eye = {0.3f, 1.0f, 0.0f};
   scene.camera.target = {0.0f, 0.75f, -10.0f};
   scene.camera.verticalFovDegrees = 40.0f;
+}
+
+}  // namespace
+
+Scene recedingTexturedPlane(const Texture& texture) {
+  Scene scene;
+  scene.name = "receding-textured-plane";
+  scene.materials = {emitting(0)};
+  scene.textures = {texture};
+  scene.meshes = {texturedPlane(0.0f, true, 0)};
+  scene.instances = {{0, Affine3x4{}}};
+  lookTowardsTheHorizon(scene);
+  return scene;
+}
+
+Scene mirroredTexturedCeiling(const Texture& texture) {
+  Scene scene;
+  scene.name = "mirrored-textured-ceiling";
+  Material mirror;
+  mirror.type = MaterialType::Mirror;
+  mirror.specularColor = {1, 1, 1};
+  scene.materials = {emitting(0), mirror};
+  scene.textures = {texture};
+  scene.meshes = {texturedPlane(2.0f, false, 0), texturedPlane(0.0f, true, 1)};
+  scene.meshes[1].uvs.clear();
+  scene.instances = {{0, Affine3x4{}}, {1, Affine3x4{}}};
+  lookTowardsTheHorizon(scene);
   return scene;
 }
 

@@ -16,6 +16,11 @@ Texture checkerboardTexture(uint32_t size, uint32_t square);
 // a render's error against a supersampled reference is all aliasing (and filtering), no lighting noise.
 Scene recedingTexturedPlane(const Texture& texture);
 
+// A mirror floor at y = 0 under a ceiling at y = 2 that emits `texture` as recedingTexturedPlane's plane does,
+// seen from between them towards the horizon: the image's upper half is the ceiling, the lower half its
+// reflection, whose texture footprints come from cones carried through the mirror.
+Scene mirroredTexturedCeiling(const Texture& texture);
+
 // The mean over all pixels of the squared difference of the luminances of two images of one size, or over rows
 // [firstRow, firstRow + rows) only.
 double meanSquaredDifference(const Image& a, const Image& b);
