@@ -38,30 +38,51 @@ CANDELA_FN float trilinearLevel(const TextureView& t, float footprintTexels) {
   return clampf(lod, 0.0f, float(t.levels - 1));
 }
 
-// Bilinear lookups in the two levels about `lod`, blended linearly.
-CANDELA_FN Vec4 trilinearLookup(const TexelArrays& arrays, const TextureView& t, Vec2 uv, float lod) {
+// The two levels a trilinear lookup at `lod` reads, and how much of the coarser one it takes.
+struct LevelPair {
+  TextureLevel fine, coarse;
+  float blend = 0.0f;  // 0: the fine level alone
+};
+
+CANDELA_FN LevelPair levelPair(const TextureView& t, float lod) {
+  LevelPair pair;
   uint32_t fine = uint32_t(lod);
-  Vec4 a = bilinearLookup(arrays, t, textureLevel(t, fine), uv);
-  float blend = lod - float(fine);
-  if (blend <= 0.0f || fine + 1 >= t.levels) return a;
-  Vec4 b = bilinearLookup(arrays, t, textureLevel(t, fine + 1), uv);
-  return {a.x + (b.x - a.x) * blend, a.y + (b.y - a.y) * blend, a.z + (b.z - a.z) * blend, a.w + (b.w - a.w) * blend};
+  pair.fine = textureLevel(t, fine);
+  if (fine + 1 < t.levels && lod > float(fine)) {
+    // The coarser level starts where the finer one ends.
+    pair.coarse = {pair.fine.offset + uint64_t(pair.fine.width) * pair.fine.height * t.channels,
+                   mipLevelSize(t.width, fine + 1), mipLevelSize(t.height, fine + 1)};
+    pair.blend = lod - float(fine);
+  }
+  return pair;
 }
 
-// The host's anisotropic filter: probes spaced evenly along the longer axis of the footprint, across its full
-// length, each a trilinear lookup at the level of the footprint's length divided by the probe count.
+// Bilinear lookups in the two levels of `pair`, blended linearly.
+CANDELA_FN Vec4 trilinearLookup(const TexelArrays& arrays, const TextureView& t, Vec2 uv, const LevelPair& pair) {
+  Vec4 a = bilinearLookup(arrays, t, pair.fine, uv);
+  if (pair.blend <= 0.0f) return a;
+  Vec4 b = bilinearLookup(arrays, t, pair.coarse, uv);
+  float w = pair.blend;
+  return {a.x + (b.x - a.x) * w, a.y + (b.y - a.y) * w, a.z + (b.z - a.z) * w, a.w + (b.w - a.w) * w};
+}
+
+// The host's anisotropic filter (after EXT_texture_filter_anisotropic): probes spaced evenly along the longer
+// axis of the footprint, across its full length, each a trilinear lookup at the level of the footprint's length
+// divided by the probe count. Probes no closer than a texel: a footprint under a texel long is magnified, one
+// bilinear lookup in level 0 as the texture unit does.
 CANDELA_FN Vec4 anisotropicLookup(const TexelArrays& arrays, const TextureView& t, Vec2 uv,
                                   const TextureFootprint& footprint) {
   float lx = texelLength(footprint.dUVdx, t), ly = texelLength(footprint.dUVdy, t);
   Vec2 major = lx >= ly ? footprint.dUVdx : footprint.dUVdy;
   float longer = fmaxf(lx, ly), shorter = fminf(lx, ly);
+  if (longer <= 1.0f) return bilinearLookup(arrays, t, textureLevel(t, 0), uv);
   float ratio = shorter > 0.0f ? longer / shorter : float(kMaxAnisotropy);
-  uint32_t probes = uint32_t(ceilf(clampf(ratio, 1.0f, float(kMaxAnisotropy))));
-  float lod = trilinearLevel(t, longer / float(probes));
+  uint32_t probes = uint32_t(ceilf(clampf(fminf(ratio, longer), 1.0f, float(kMaxAnisotropy))));
+  LevelPair pair = levelPair(t, trilinearLevel(t, longer / float(probes)));
   Vec4 sum;
   for (uint32_t i = 0; i < probes; ++i) {
     float s = (float(i) + 0.5f) / float(probes) - 0.5f;
-    Vec4 c = trilinearLookup(arrays, t, {uv.x + major.x * s, uv.y + major.y * s}, lod);
+    Vec4 c = trilinearLookup(arrays, t, {uv.x + major.x * s, uv.y + major.y * s}, pair);
     sum = {sum.x + c.x, sum.y + c.y, sum.z + c.z, sum.w + c.w};
   }
   float inv = 1.0f / float(probes);
@@ -87,7 +108,7 @@ CANDELA_FN Vec4 sampleTextureFiltered(const TexelArrays& arrays, int32_t index, 
 #endif
   if (t.width == 0 || t.height == 0) return {1, 1, 1, 1};
   if (footprint.filter == TextureFilter::Anisotropic) return anisotropicLookup(arrays, t, uv, footprint);
-  return trilinearLookup(arrays, t, uv, trilinearLevel(t, longer));
+  return trilinearLookup(arrays, t, uv, levelPair(t, trilinearLevel(t, longer)));
 }
 
 }  // namespace candela
