@@ -18,6 +18,8 @@ CANDELA_FN Vec4 lookup(const SceneView& scene, int32_t texture, const SurfaceInt
   return sampleTextureFiltered(scene.texels, texture, si.uv, si.footprint);
 }
 
+// Whether evaluateMaterial or applyNormalMap reads a texture of `m`: only then does a hit need its footprint.
+// (The opacity texture is read by materialAlpha, at a point.)
 CANDELA_FN bool hasTextures(const Material& m) {
   return m.baseColorTexture != kNoTexture || m.metallicRoughnessTexture != kNoTexture ||
          m.roughnessTexture != kNoTexture || m.metallicTexture != kNoTexture || m.emissionTexture != kNoTexture ||
