@@ -56,6 +56,27 @@ void addSamplerOption(CLI::App& cmd, SamplerKind& sampler) {
       ->default_str("sobol");
 }
 
+const char* textureFilterName(TextureFilter filter) {
+  switch (filter) {
+    case TextureFilter::Finest: return "finest";
+    case TextureFilter::Trilinear: return "trilinear";
+    case TextureFilter::Anisotropic: break;
+  }
+  return "anisotropic";
+}
+
+void addTextureFilterOption(CLI::App& cmd, TextureFilter& filter) {
+  const std::map<std::string, TextureFilter> filters = {{"finest", TextureFilter::Finest},
+                                                        {"trilinear", TextureFilter::Trilinear},
+                                                        {"anisotropic", TextureFilter::Anisotropic}};
+  cmd.add_option("--texture-filter", filter,
+                 "Texture filtering over each pixel's footprint, traced by ray cones through mirror and glass: "
+                 "finest (bilinear in the full-size texture), trilinear (mip levels) or anisotropic (mip levels, up "
+                 "to 16 lookups along the footprint)")
+      ->transform(CLI::CheckedTransformer(filters))
+      ->default_str("anisotropic");
+}
+
 void addTextureLimitOptions(CLI::App& cmd, TextureLimits& limits) {
   cmd.add_option("--max-texture-size", limits.maxSize,
                  "Largest width or height of a texture in pixels; a larger one is decoded smaller, with a warning")
@@ -95,6 +116,7 @@ void addRenderOptions(CLI::App& cmd, RenderJob& job) {
   cmd.add_option("--seed", job.settings.seed, "Seed of the random sequence; same seed, same image")
       ->capture_default_str();
   addSamplerOption(cmd, job.settings.sampler);
+  addTextureFilterOption(cmd, job.settings.textureFilter);
   // Validated while parsing, so a bad value is a usage error (exit status 2) like any other.
   auto validated = [](auto apply) {
     return CLI::Validator(
@@ -179,6 +201,7 @@ int runBench(const RenderJob& job) {
       {"spp", outcome.samplesPerPixel},
       {"max_depth", rendered.maxDepth},
       {"sampler", rendered.sampler == SamplerKind::Sobol ? "sobol" : "independent"},
+      {"texture_filter", textureFilterName(rendered.textureFilter)},
       {"backend", outcome.backendName},
       {"device", outcome.deviceName},
       {"seconds", outcome.seconds},

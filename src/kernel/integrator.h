@@ -6,6 +6,7 @@
 #include "kernel/interaction.h"
 #include "kernel/lights.h"
 #include "kernel/pass_through.h"
+#include "kernel/ray_cone.h"
 #include "kernel/render_settings.h"
 #include "kernel/shading_normal.h"
 #include "kernel/textured_material.h"
@@ -48,9 +49,11 @@ CANDELA_FN Vec3 texturedLightRadiance(const SceneView& scene, const LightSample&
 // that refract continue on the far side of the surface.
 // With kWithAovs the path also records PathAovs at its first non-specular vertex; without, that code is not
 // compiled in, so paths that do not need the guides pay nothing for them.
+// `cone` is the pixel's footprint about `ray`; textures are filtered over it as long as the path follows it
+// through delta bounces (kernel/ray_cone.h). A zero cone reads the finest texture level everywhere.
 template <bool kWithAovs = false, class Tracer>
 CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ray ray, PathSampler& sampler,
-                                const RenderSettings& settings) {
+                                const RenderSettings& settings, RayCone cone = {}) {
   PathResult result;
   Vec3 beta{1, 1, 1};
   float etaScale = 1.0f;  // product of eta^2 over refractions: undoes their radiance scaling for roulette
@@ -78,6 +81,8 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
     if (kWithAovs && aovsPending) pathLength += hit.t;
     SurfaceInteraction si = makeInteraction(scene, hit);
     const Material& stored = scene.materials[si.materialId];
+    if (hasTextures(stored))
+      si.footprint = textureFootprint(scene, hit, ray.direction, cone.widthAt(hit.t), settings.textureFilter);
     Vec3 wo = -ray.direction;
     Material material = evaluateMaterial(scene, stored, si);
     applyNormalMap(scene, material, si);
@@ -158,6 +163,7 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
     specularBounce = bs.isDelta;
     cameraChain = cameraChain && bs.isDelta;
     bsdfPdf = bs.pdf;
+    cone = bs.isDelta ? cone.afterDeltaBounce(hit.t) : RayCone{};
     lastScatter = si.position;
     ray = {offsetRayOrigin(si.position, si.geometricNormal, next), next, 0.0f, kInf};
     ++depth;
@@ -191,7 +197,7 @@ CANDELA_HD PathResult renderPixelSample(const SceneView& scene, const Tracer& tr
     dropped.radiance = {-1.0f, -1.0f, -1.0f};
     return dropped;
   }
-  return tracePath<kWithAovs>(scene, tracer, ray, sampler, settings);
+  return tracePath<kWithAovs>(scene, tracer, ray, sampler, settings, cameraRayCone(camera, settings.height));
 }
 
 }  // namespace candela

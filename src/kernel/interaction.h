@@ -4,6 +4,7 @@
 #include "core/math.h"
 #include "kernel/hit.h"
 #include "kernel/scene_view.h"
+#include "kernel/texture_filtering.h"
 #include "kernel/triangle_attributes.h"
 
 namespace candela {
@@ -17,6 +18,7 @@ struct SurfaceInteraction {
   Vec2 uv;
   Vec3 color{1, 1, 1};  // the vertex colour, white where the mesh has none
   uint32_t materialId = 0;
+  TextureFootprint footprint;  // what the material's lookups average over (none: the finest level)
 };
 
 CANDELA_FN SurfaceInteraction makeInteraction(const SceneView& scene, const Hit& hit) {

@@ -2,6 +2,7 @@
 #include <cstdint>
 
 #include "core/path_sampler.h"
+#include "kernel/texture_filtering.h"
 
 namespace candela {
 
@@ -12,6 +13,9 @@ struct RenderSettings {
   uint32_t rouletteDepth = 3;  // bounces before Russian roulette may end a path
   uint32_t seed = 0;
   SamplerKind sampler = SamplerKind::Sobol;
+  // How textures are filtered over the footprints of camera rays and of their mirror and glass bounces
+  // (kernel/ray_cone.h); Finest reads level 0 everywhere, as before mip pyramids.
+  TextureFilter textureFilter = TextureFilter::Anisotropic;
 };
 
 }  // namespace candela

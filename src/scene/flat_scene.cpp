@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include <tbb/parallel_for.h>
+
 #include "kernel/pass_through.h"
+#include "scene/mip_pyramid.h"
 #include "scene/tangents.h"
 #include "scene/transform.h"
 
@@ -74,7 +77,12 @@ bool anyCutouts(const std::vector<Material>& materials) {
   return false;
 }
 
+// Each texture's levels back to back in the array of its format: the finest, then the pyramid (kernel/texture.h).
+// Places are assigned first, then the textures are copied and their pyramids built in parallel, straight into
+// the arrays. A texture whose texels do not fill its size keeps just the one level.
 void packTextures(const Scene& scene, FlatScene& flat) {
+  std::vector<bool> pyramids;
+  size_t bytes = 0, floats = 0;
   for (const Texture& t : scene.textures) {
     TextureView view;
     view.width = t.width;
@@ -83,17 +91,31 @@ void packTextures(const Scene& scene, FlatScene& flat) {
     view.srgb = t.srgb ? 1u : 0u;
     view.wrapU = t.wrapU;
     view.wrapV = t.wrapV;
-    if (!t.bytes.empty()) {
-      view.format = TexelFormat::Unorm8;
-      view.offset = flat.texelBytes.size();
-      flat.texelBytes.insert(flat.texelBytes.end(), t.bytes.begin(), t.bytes.end());
-    } else {
-      view.format = TexelFormat::Float32;
-      view.offset = flat.texelFloats.size();
-      flat.texelFloats.insert(flat.texelFloats.end(), t.floats.begin(), t.floats.end());
-    }
+    const bool isBytes = !t.bytes.empty();
+    const size_t texels = size_t(t.width) * t.height * t.channels;
+    const bool pyramid = texels > 0 && (isBytes ? t.bytes.size() : t.floats.size()) == texels;
+    view.levels = pyramid ? fullMipLevelCount(t.width, t.height) : 1u;
+    const size_t values = (isBytes ? t.bytes.size() : t.floats.size()) +
+                          (pyramid ? coarserMipLevelsSize(t.width, t.height, t.channels) : 0);
+    view.format = isBytes ? TexelFormat::Unorm8 : TexelFormat::Float32;
+    view.offset = isBytes ? bytes : floats;
+    (isBytes ? bytes : floats) += values;
     flat.textures.push_back(view);
+    pyramids.push_back(pyramid);
   }
+  flat.texelBytes.resize(bytes);
+  flat.texelFloats.resize(floats);
+  tbb::parallel_for(size_t(0), scene.textures.size(), [&](size_t i) {
+    const Texture& t = scene.textures[i];
+    const TextureView& view = flat.textures[i];
+    if (view.format == TexelFormat::Unorm8) {
+      uint8_t* out = std::copy(t.bytes.begin(), t.bytes.end(), flat.texelBytes.data() + view.offset);
+      if (pyramids[i]) writeCoarserMipLevels(t.bytes.data(), t.width, t.height, t.channels, t.srgb, out);
+    } else {
+      float* out = std::copy(t.floats.begin(), t.floats.end(), flat.texelFloats.data() + view.offset);
+      if (pyramids[i]) writeCoarserMipLevels(t.floats.data(), t.width, t.height, t.channels, out);
+    }
+  });
 }
 
 void buildEnvironment(const Environment& env, FlatScene& flat) {

@@ -21,8 +21,8 @@ struct FlatScene {
   std::vector<InstanceRecord> instances;
   std::vector<Material> materials;
   std::vector<TextureView> textures;
-  std::vector<uint8_t> texelBytes;  // every 8-bit texture back to back
-  std::vector<float> texelFloats;   // every float texture back to back
+  std::vector<uint8_t> texelBytes;  // every 8-bit texture back to back, each with its mip levels
+  std::vector<float> texelFloats;   // every float texture back to back, each with its mip levels
   bool hasCutouts = false;
   std::vector<LightTriangle> lights;
   std::vector<float> lightCdf;

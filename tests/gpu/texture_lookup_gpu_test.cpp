@@ -88,7 +88,7 @@ float lookupBound(const TexelArrays& arrays, Vec2 uv, int channel) {
   for (int dy = 0; dy < 2; ++dy)
     for (int dx = 0; dx < 2; ++dx) {
       const int xi = wrapTexel(x0 + dx, int(t.width), t.wrapU), yi = wrapTexel(y0 + dy, int(t.height), t.wrapV);
-      Vec4 c = fetchTexel(arrays, t, xi, yi);
+      Vec4 c = fetchTexel(arrays, t, textureLevel(t, 0), xi, yi);
       lo = std::min(lo, channelOf(c, channel));
       hi = std::max(hi, channelOf(c, channel));
     }

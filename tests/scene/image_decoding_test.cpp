@@ -242,14 +242,22 @@ TEST(TextureLimits, FitSizeThenMemory) {
   EXPECT_EQ(fitted[0].height, 50u);
   EXPECT_EQ(fitted[1].width, 50u);
   EXPECT_EQ(fitted[1].height, 60u);
-  // 2 x 1000x1000 RGBA is 8 MB: both shrink by sqrt(2 MiB / 8 MB) = 0.512 to fit 2 MiB.
+  // 2 x 1000x1000 RGBA with their mip levels is 10.67 MB: both shrink by sqrt(2 MiB / 10.67 MB) = 0.443 to fit
+  // 2 MiB (8 MB, and 0.512, without the levels).
   limits = {4096, 2u << 20};
   fitted = fitTextureLimits({{1000, 1000, 4}, {1000, 1000, 4}}, limits);
   uint64_t total = 0;
-  for (const TextureExtent& e : fitted) total += uint64_t(e.width) * e.height * 4;
+  for (const TextureExtent& e : fitted) total += textureBytesWithMips(e);
   EXPECT_LE(total, limits.maxBytes);
-  EXPECT_EQ(fitted[0].width, 512u);
-  EXPECT_EQ(fitted[1].height, 512u);
+  EXPECT_EQ(fitted[0].width, 443u);
+  EXPECT_EQ(fitted[1].height, 443u);
+  // Narrow textures: their 1-texel side does not shrink, so the factor from the totals (0.5: 1x8 to 1x4, 28 of
+  // 60 bytes) would overshoot.
+  std::vector<TextureExtent> many(1000, TextureExtent{1, 8, 4});
+  limits = {4096, 15000};
+  total = 0;
+  for (const TextureExtent& e : fitTextureLimits(many, limits)) total += textureBytesWithMips(e);
+  EXPECT_LE(total, limits.maxBytes);
 }
 
 // The PNG bomb: 16000x16000 grey pixels, 1 bit each, in a few kilobytes.

@@ -10,7 +10,7 @@ bool sameVector(Vec3 a, Vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z;
 
 bool sameSettings(const RenderSettings& a, const RenderSettings& b) {
   return a.width == b.width && a.height == b.height && a.maxDepth == b.maxDepth && a.rouletteDepth == b.rouletteDepth &&
-         a.seed == b.seed && a.sampler == b.sampler;
+         a.seed == b.seed && a.sampler == b.sampler && a.textureFilter == b.textureFilter;
 }
 
 }  // namespace

@@ -10,16 +10,17 @@ namespace candela::optix {
 
 namespace {
 
-// A view's texels widened to four channels the way fetchTexel reads them: grey repeats its channel, grey +
+// A level's texels widened to four channels the way fetchTexel reads them: grey repeats its channel, grey +
 // alpha fills RGB from the grey, RGB gets an opaque alpha.
 template <class Texel, class Channel>
-std::vector<Texel> widenToFourChannels(const TextureView& view, const std::vector<Channel>& texels, Channel opaque) {
-  const size_t count = size_t(view.width) * view.height;
-  if (view.offset + count * view.channels > texels.size())
+std::vector<Texel> widenToFourChannels(const TextureView& view, const TextureLevel& level,
+                                       const std::vector<Channel>& texels, Channel opaque) {
+  const size_t count = size_t(level.width) * level.height;
+  if (level.offset + count * view.channels > texels.size())
     throw std::runtime_error("a texture's texels run past the end of the scene's texel array");
   std::vector<Texel> out(count);
   for (size_t i = 0; i < count; ++i) {
-    const Channel* c = texels.data() + view.offset + i * view.channels;
+    const Channel* c = texels.data() + level.offset + i * view.channels;
     switch (view.channels) {
       case 1: out[i] = {c[0], c[0], c[0], opaque}; break;
       case 2: out[i] = {c[0], c[0], c[0], c[1]}; break;
@@ -39,16 +40,18 @@ cudaTextureAddressMode addressMode(TextureWrap wrap) {
   return cudaAddressModeWrap;
 }
 
-cudaArray_t allocateArray(const cudaChannelFormatDesc& format, const TextureView& view, size_t bytes) {
-  cudaArray_t array = nullptr;
-  cudaError_t result = cudaMallocArray(&array, &format, view.width, view.height);
+cudaMipmappedArray_t allocateArray(const cudaChannelFormatDesc& format, const TextureView& view, size_t bytes) {
+  cudaMipmappedArray_t array = nullptr;
+  cudaError_t result =
+      cudaMallocMipmappedArray(&array, &format, make_cudaExtent(view.width, view.height, 0), view.levels);
   if (result == cudaErrorMemoryAllocation) {
     cudaGetLastError();
     size_t free = 0, total = 0;
     cudaMemGetInfo(&free, &total);
     throw std::runtime_error("out of device memory: asked for " + formatBytes(bytes) + " for a " +
-                             std::to_string(view.width) + "x" + std::to_string(view.height) + " texture with " +
-                             formatBytes(free) + " of " + formatBytes(total) + " free");
+                             std::to_string(view.width) + "x" + std::to_string(view.height) + " texture (" +
+                             std::to_string(view.levels) + " mip levels) with " + formatBytes(free) + " of " +
+                             formatBytes(total) + " free");
   }
   checkCuda(result, "allocating a texture array");
   return array;
@@ -64,26 +67,34 @@ DeviceTextures::DeviceTextures(const std::vector<TextureView>& views, const std:
       if (view.width == 0 || view.height == 0) continue;
       const bool bytes = view.format == TexelFormat::Unorm8;
       const size_t texelSize = bytes ? sizeof(uchar4) : sizeof(float4);
-      const size_t rowBytes = view.width * texelSize;
+      size_t arrayBytes = 0;
+      for (uint32_t level = 0; level < view.levels; ++level)
+        arrayBytes += size_t(mipLevelSize(view.width, level)) * mipLevelSize(view.height, level) * texelSize;
       const cudaChannelFormatDesc format = bytes ? cudaCreateChannelDesc<uchar4>() : cudaCreateChannelDesc<float4>();
-      cudaArray_t array = allocateArray(format, view, rowBytes * view.height);
+      cudaMipmappedArray_t array = allocateArray(format, view, arrayBytes);
       arrays_.push_back(array);
-      bytes_ += rowBytes * view.height;
-      if (bytes) {
-        std::vector<uchar4> texels = widenToFourChannels<uchar4, uint8_t>(view, texelBytes, 255);
-        checkCuda(cudaMemcpy2DToArray(array, 0, 0, texels.data(), rowBytes, rowBytes, view.height,
-                                      cudaMemcpyHostToDevice),
-                  "uploading a texture");
-      } else {
-        std::vector<float4> texels = widenToFourChannels<float4, float>(view, texelFloats, 1.0f);
-        checkCuda(cudaMemcpy2DToArray(array, 0, 0, texels.data(), rowBytes, rowBytes, view.height,
-                                      cudaMemcpyHostToDevice),
-                  "uploading a texture");
+      bytes_ += arrayBytes;
+      for (uint32_t level = 0; level < view.levels; ++level) {
+        const TextureLevel texels = textureLevel(view, level);
+        const size_t rowBytes = texels.width * texelSize;
+        cudaArray_t levelArray = nullptr;
+        checkCuda(cudaGetMipmappedArrayLevel(&levelArray, array, level), "finding a texture's mip level");
+        if (bytes) {
+          std::vector<uchar4> widened = widenToFourChannels<uchar4, uint8_t>(view, texels, texelBytes, 255);
+          checkCuda(cudaMemcpy2DToArray(levelArray, 0, 0, widened.data(), rowBytes, rowBytes, texels.height,
+                                        cudaMemcpyHostToDevice),
+                    "uploading a texture");
+        } else {
+          std::vector<float4> widened = widenToFourChannels<float4, float>(view, texels, texelFloats, 1.0f);
+          checkCuda(cudaMemcpy2DToArray(levelArray, 0, 0, widened.data(), rowBytes, rowBytes, texels.height,
+                                        cudaMemcpyHostToDevice),
+                    "uploading a texture");
+        }
       }
 
       cudaResourceDesc resource{};
-      resource.resType = cudaResourceTypeArray;
-      resource.res.array.array = array;
+      resource.resType = cudaResourceTypeMipmappedArray;
+      resource.res.mipmap.mipmap = array;
       cudaTextureDesc sampling{};
       sampling.addressMode[0] = addressMode(view.wrapU);
       sampling.addressMode[1] = addressMode(view.wrapV);
@@ -91,6 +102,11 @@ DeviceTextures::DeviceTextures(const std::vector<TextureView>& views, const std:
       sampling.readMode = bytes ? cudaReadModeNormalizedFloat : cudaReadModeElementType;
       sampling.sRGB = bytes && view.srgb ? 1 : 0;
       sampling.normalizedCoords = 1;
+      // Between levels as on the host (kernel/texture_filtering.h); anisotropic where tex2DGrad asks for it.
+      sampling.mipmapFilterMode = cudaFilterModeLinear;
+      sampling.minMipmapLevelClamp = 0.0f;
+      sampling.maxMipmapLevelClamp = float(view.levels - 1);
+      sampling.maxAnisotropy = kMaxAnisotropy;
       cudaTextureObject_t object = 0;
       checkCuda(cudaCreateTextureObject(&object, &resource, &sampling, nullptr), "creating a texture object");
       objects_.push_back(object);
@@ -128,7 +144,7 @@ DeviceTextures& DeviceTextures::operator=(DeviceTextures&& other) noexcept {
 
 void DeviceTextures::release() noexcept {
   for (cudaTextureObject_t object : objects_) cudaDestroyTextureObject(object);
-  for (cudaArray_t array : arrays_) cudaFreeArray(array);
+  for (cudaMipmappedArray_t array : arrays_) cudaFreeMipmappedArray(array);
   objects_.clear();
   arrays_.clear();
   bytes_ = 0;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <type_traits>
 
+#include "kernel/texture.h"
 #include "scene/loaders/area_downscaler.h"
 
 namespace candela {
@@ -13,8 +14,6 @@ namespace {
 
 std::atomic<uint32_t> currentMaxSize{TextureLimits{}.maxSize};
 std::atomic<uint64_t> currentMaxBytes{TextureLimits{}.maxBytes};
-
-uint64_t bytesOf(const TextureExtent& e) { return uint64_t(e.width) * e.height * e.bytesPerPixel; }
 
 TextureExtent scaled(const TextureExtent& e, double scale) {
   TextureExtent s = e;
@@ -32,6 +31,13 @@ void setTextureLimits(const TextureLimits& limits) {
 
 TextureLimits textureLimits() { return {currentMaxSize.load(), currentMaxBytes.load()}; }
 
+uint64_t textureBytesWithMips(const TextureExtent& e) {
+  uint64_t bytes = 0;
+  for (uint32_t level = 0, levels = fullMipLevelCount(e.width, e.height); level < levels; ++level)
+    bytes += uint64_t(mipLevelSize(e.width, level)) * mipLevelSize(e.height, level) * e.bytesPerPixel;
+  return bytes;
+}
+
 std::vector<TextureExtent> fitTextureLimits(const std::vector<TextureExtent>& images, const TextureLimits& limits) {
   std::vector<TextureExtent> fitted;
   uint64_t total = 0;
@@ -46,13 +52,25 @@ std::vector<TextureExtent> fitTextureLimits(const std::vector<TextureExtent>& im
       f.width = uint32_t(std::max<uint64_t>(1, uint64_t(e.width) * limits.maxSize / e.height));
     }
     fitted.push_back(f);
-    total += bytesOf(fitted.back());
+    total += textureBytesWithMips(fitted.back());
   }
   if (total <= limits.maxBytes) return fitted;
-  // One factor for every texture keeps their relative resolution; sides round down, so the total fits.
-  const double scale = std::sqrt(double(limits.maxBytes) / double(total));
-  for (TextureExtent& e : fitted) e = scaled(e, scale);
-  return fitted;
+  // One factor for every texture keeps their relative resolution. Sides round down, but the coarsest levels
+  // stay 1 texel wide, so a pyramid need not shrink with the square of the factor: shrink on until it fits, or
+  // until every texture is down to 1x1.
+  double scale = std::sqrt(double(limits.maxBytes) / double(total));
+  for (;;) {
+    std::vector<TextureExtent> shrunk;
+    uint64_t shrunkTotal = 0;
+    bool smallest = true;
+    for (const TextureExtent& e : fitted) {
+      shrunk.push_back(scaled(e, scale));
+      shrunkTotal += textureBytesWithMips(shrunk.back());
+      smallest = smallest && shrunk.back().width == 1 && shrunk.back().height == 1;
+    }
+    if (shrunkTotal <= limits.maxBytes || smallest) return shrunk;
+    scale *= 0.95;
+  }
 }
 
 std::string downscaleWarning(const std::string& name, TextureExtent from, TextureExtent to,
@@ -62,8 +80,8 @@ std::string downscaleWarning(const std::string& name, TextureExtent from, Textur
       std::max(from.width, from.height) > limits.maxSize && std::max(to.width, to.height) == limits.maxSize;
   const std::string why =
       bySize ? "the texture size limit is " + std::to_string(limits.maxSize) + " pixels (--max-texture-size)"
-             : "the scene's textures exceed the texture memory limit of " + std::to_string(limits.maxBytes >> 20) +
-                   " MiB (--max-texture-memory)";
+             : "the scene's textures with their mip levels exceed the texture memory limit of " +
+                   std::to_string(limits.maxBytes >> 20) + " MiB (--max-texture-memory)";
   return name + ": texture of " + size(from) + " pixels downscaled to " + size(to) + ": " + why;
 }
 
