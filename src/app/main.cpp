@@ -175,7 +175,8 @@ void addRenderControlOptions(CLI::App& cmd, RenderControl& control) {
   CLI::Option* checkpoint = cmd.add_option(
       "--checkpoint", control.checkpointPath,
       "Keep the render resumable in this .exr file: the film with its sample counts and the settings, written "
-      "every --checkpoint-every, when the render ends, and when SIGINT or SIGTERM stops it at a sample boundary");
+      "every --checkpoint-every, when the render ends, and when SIGINT, SIGTERM or SIGUSR1 (under mpirun: "
+      "SIGUSR1) stops it at a sample boundary");
   control.checkpointEverySeconds = 600.0;
   addDurationOption(cmd, "--checkpoint-every", control.checkpointEverySeconds,
                     "How often to write the --checkpoint, like 90s, 10m or 2h (default: 10m)");

@@ -9,12 +9,19 @@ namespace candela {
 namespace {
 
 volatile std::sig_atomic_t stopSignal = 0;
-struct sigaction previousInt, previousTerm;
+constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGUSR1};
+struct sigaction previous[3];
+
+struct sigaction* previousOf(int signal) {
+  for (int i = 0; i < 3; ++i)
+    if (kStopSignals[i] == signal) return &previous[i];
+  return nullptr;
+}
 
 void requestStop(int signal) {
   stopSignal = signal;
   // The next one ends the process the way it would have ended before.
-  ::sigaction(signal, signal == SIGINT ? &previousInt : &previousTerm, nullptr);
+  ::sigaction(signal, previousOf(signal), nullptr);
 }
 
 }  // namespace
@@ -25,13 +32,11 @@ StopOnSignals::StopOnSignals() {
   struct sigaction action {};
   action.sa_handler = &requestStop;
   sigemptyset(&action.sa_mask);
-  ::sigaction(SIGINT, &action, &previousInt);
-  ::sigaction(SIGTERM, &action, &previousTerm);
+  for (int i = 0; i < 3; ++i) ::sigaction(kStopSignals[i], &action, &previous[i]);
 }
 
 StopOnSignals::~StopOnSignals() {
-  ::sigaction(SIGINT, &previousInt, nullptr);
-  ::sigaction(SIGTERM, &previousTerm, nullptr);
+  for (int i = 0; i < 3; ++i) ::sigaction(kStopSignals[i], &previous[i], nullptr);
 }
 
 int StopOnSignals::requested() { return stopSignal; }
@@ -43,10 +48,12 @@ void StopOnSignals::forward(int signal) {
 void StopOnSignals::endWithRequestedSignal() {
   const int signal = stopSignal;
   if (signal == 0) return;
-  ::sigaction(signal, signal == SIGINT ? &previousInt : &previousTerm, nullptr);
+  ::sigaction(signal, previousOf(signal), nullptr);
   ::raise(signal);
 }
 
-const char* StopOnSignals::signalName(int signal) { return signal == SIGINT ? "SIGINT" : "SIGTERM"; }
+const char* StopOnSignals::signalName(int signal) {
+  return signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "SIGUSR1";
+}
 
 }  // namespace candela

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "app/checkpoint/stop_signals.h"
 #include "app/distributed/mpi_team.h"
 #include "scene/loaders/load_diagnostics.h"
 
@@ -33,7 +34,7 @@ int runDistributedRender(RenderJob job, double rankTimeoutSeconds, const std::fu
     session.abort(1);
   }
   // From here on no rank waits for another.
-  if (!outcome.writes) return outcome.end == RenderEnd::Signal ? 1 : 0;
+  if (!outcome.writes) return outcome.end == RenderEnd::Signal ? 128 + StopOnSignals::requested() : 0;
   try {
     return writeOutputs(outcome);
   } catch (const std::exception& e) {

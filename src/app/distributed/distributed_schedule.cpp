@@ -51,9 +51,13 @@ class CoordinatorSchedule final : public SampleSchedule {
     answerRequests();
     if (pause_ == SampleDispenser::Pause::None) pause_ = dispenser_.pause(secondsPerSample);
     if (pause_ == SampleDispenser::Pause::None) return {Assignment::Kind::Samples, dispenser_.take(1), 1};
+    // Before a checkpoint, rank 0 goes on rendering while the others finish their batches; the samples stay a
+    // prefix of the indices, as rank 0's own are done when it stops. An end waits idle: it is due now.
+    if (pause_ == SampleDispenser::Pause::Checkpoint && dispenser_.remaining() > 0 && !allPaused())
+      return {Assignment::Kind::Samples, dispenser_.take(1), 1};
     // Every worker learns of the pause at its next request, after its batches.
     const auto start = std::chrono::steady_clock::now();
-    while (!std::all_of(workers_.begin(), workers_.end(), [](const Worker& w) { return w.paused; })) {
+    while (!allPaused()) {
       if (!answerRequests()) std::this_thread::sleep_for(std::chrono::microseconds(500));
       if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > timeout_)
         throw std::runtime_error("ranks " + silentRanks() + " did not finish their batches within " +
@@ -90,6 +94,10 @@ class CoordinatorSchedule final : public SampleSchedule {
     uint32_t done = 0;
     bool paused = false;  // told of the current pause
   };
+
+  bool allPaused() const {
+    return std::all_of(workers_.begin(), workers_.end(), [](const Worker& w) { return w.paused; });
+  }
 
   uint64_t samplesDone() const {
     uint64_t done = ownDone_;
@@ -131,7 +139,8 @@ class CoordinatorSchedule final : public SampleSchedule {
       worker.done = request.samplesDone;
       if (request.stopSignal != 0) StopOnSignals::forward(int(request.stopSignal));
       const uint32_t count = batchSize(request.secondsPerSample);
-      if (pause_ == SampleDispenser::Pause::None) pause_ = dispenser_.pause(count * request.secondsPerSample);
+      // The rank renders its current batch before this one: the time limit must allow for both.
+      if (pause_ == SampleDispenser::Pause::None) pause_ = dispenser_.pause(2.0 * count * request.secondsPerSample);
       Answer answer;
       if (pause_ == SampleDispenser::Pause::None) {
         answer.kind = uint32_t(Assignment::Kind::Samples);
