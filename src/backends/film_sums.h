@@ -34,6 +34,11 @@ struct FilmSums {
   }
 
   size_t pixelCount() const { return size_t(width) * height; }
+  // The bytes of the sums and counts.
+  size_t bytes() const {
+    return (radiance.size() + emission.size() + albedo.size() + normal.size()) * sizeof(Vec3) +
+           samples.size() * sizeof(uint32_t) + (depth.size() + luminanceSquares.size()) * sizeof(float);
+  }
   bool hasAovs() const { return !albedo.empty(); }
   bool sameShape(const FilmSums& other) const {
     return width == other.width && height == other.height && hasAovs() == other.hasAovs();

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <thread>
 #include <vector>
@@ -74,11 +75,14 @@ class CoordinatorSchedule final : public SampleSchedule {
 
   bool combine(Backend& backend, FrameStats& stats) override {
     FilmSums film = backend.readFilm();
-    reduceFilm(film, stats, timeout_);
+    const double seconds = reduceFilm(film, stats, timeout_);
     backend.loadFilm(film);
     if (pause_ == SampleDispenser::Pause::End && showProgress_) {
       progress_.update(dispenser_.next() - first_);
       progress_.finish();
+      // What the scaling model of docs/performance.md needs: the time to add up the films.
+      std::fprintf(stderr, "films of %zu ranks (%.1f MiB each) added up in %.3f s\n", workers_.size() + 1,
+                   double(film.bytes()) / double(1 << 20), seconds);
     }
     pause_ = SampleDispenser::Pause::None;
     for (Worker& w : workers_) w.paused = false;

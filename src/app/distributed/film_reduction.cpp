@@ -24,7 +24,7 @@ void reduceValues(T* values, size_t count, int rank, double timeoutSeconds) {
     checkMpi(MPI_Ireduce(send.data(), rank == 0 ? receive.data() : nullptr, int(n), MPI_DOUBLE, MPI_SUM, 0,
                          MPI_COMM_WORLD, &request),
              "adding up the films");
-    waitPolitely(request, timeoutSeconds, "adding up the films");
+    waitActively(request, timeoutSeconds, "adding up the films");
     if (rank == 0)
       for (size_t i = 0; i < n; ++i) values[begin + i] = T(receive[i]);
   }
@@ -34,9 +34,13 @@ float* floats(std::vector<Vec3>& v) { return v.empty() ? nullptr : &v[0].x; }
 
 }  // namespace
 
-void reduceFilm(FilmSums& film, FrameStats& stats, double timeoutSeconds) {
+double reduceFilm(FilmSums& film, FrameStats& stats, double timeoutSeconds) {
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Request arrived;
+  checkMpi(MPI_Ibarrier(MPI_COMM_WORLD, &arrived), "waiting for the ranks' films");
+  waitPolitely(arrived, timeoutSeconds, "waiting for the ranks' films");
+  const double start = MPI_Wtime();
   for (std::vector<Vec3>* v : {&film.radiance, &film.emission, &film.albedo, &film.normal})
     reduceValues(floats(*v), v->size() * 3, rank, timeoutSeconds);
   reduceValues(film.samples.data(), film.samples.size(), rank, timeoutSeconds);
@@ -46,11 +50,12 @@ void reduceFilm(FilmSums& film, FrameStats& stats, double timeoutSeconds) {
   MPI_Request request;
   checkMpi(MPI_Ireduce(counts, sums, 2, MPI_UNSIGNED_LONG_LONG, MPI_SUM, 0, MPI_COMM_WORLD, &request),
            "adding up the ray counts");
-  waitPolitely(request, timeoutSeconds, "adding up the ray counts");
+  waitActively(request, timeoutSeconds, "adding up the ray counts");
   if (rank == 0) {
     stats.rays = sums[0];
     stats.invalidSamples = sums[1];
   }
+  return MPI_Wtime() - start;
 }
 
 }  // namespace candela

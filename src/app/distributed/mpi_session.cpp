@@ -42,11 +42,13 @@ void MpiSession::abort(int status) const {
   std::_Exit(status);
 }
 
-void waitPolitely(MPI_Request& request, double timeoutSeconds, const std::string& what) {
+namespace {
+
+// Tests `request` until it completes, sleeping `pause` between the tests (doubling up to a millisecond) or not
+// at all.
+void wait(MPI_Request& request, double timeoutSeconds, const std::string& what, std::chrono::microseconds pause) {
   using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
-  // Short sleeps at first (a reply is usually there at once), then up to a millisecond.
-  std::chrono::microseconds pause(20);
   for (;;) {
     int done = 0;
     checkMpi(MPI_Test(&request, &done, MPI_STATUS_IGNORE), what.c_str());
@@ -54,9 +56,21 @@ void waitPolitely(MPI_Request& request, double timeoutSeconds, const std::string
     if (std::chrono::duration<double>(Clock::now() - start).count() > timeoutSeconds)
       throw std::runtime_error(what + ": no answer for " + std::to_string(int(timeoutSeconds)) +
                                " s (--rank-timeout); a rank has stopped or hangs");
+    if (pause.count() == 0) continue;
     std::this_thread::sleep_for(pause);
     pause = std::min(pause * 2, std::chrono::microseconds(1000));
   }
+}
+
+}  // namespace
+
+void waitPolitely(MPI_Request& request, double timeoutSeconds, const std::string& what) {
+  // Short sleeps at first: a reply is usually there at once.
+  wait(request, timeoutSeconds, what, std::chrono::microseconds(20));
+}
+
+void waitActively(MPI_Request& request, double timeoutSeconds, const std::string& what) {
+  wait(request, timeoutSeconds, what, std::chrono::microseconds(0));
 }
 
 }  // namespace candela

@@ -36,5 +36,8 @@ void checkMpi(int code, const char* what);
 // Waits for `request` to complete, sleeping between tests so that a waiting rank leaves its core to the
 // rendering ranks; throws std::runtime_error naming `what` after `timeoutSeconds`.
 void waitPolitely(MPI_Request& request, double timeoutSeconds, const std::string& what);
+// The same without sleeping, for transfers under way between ranks that are all there: MPI moves a large
+// message only while a rank calls it, so sleeps would slow it down many times.
+void waitActively(MPI_Request& request, double timeoutSeconds, const std::string& what);
 
 }  // namespace candela
