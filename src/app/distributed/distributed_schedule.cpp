@@ -33,9 +33,10 @@ struct Answer {
   uint32_t kind = 0, first = 0, count = 0;
 };
 
-// A batch should keep a rank busy about this long: long against a message, short against a checkpoint interval,
-// and at least two of rank 0's samples, so that rank 0 answers the next request before the batch ends.
-constexpr double kBatchSeconds = 2.0;
+// A batch should keep a rank busy about this long: long against a message, short against a checkpoint interval
+// and the end's imbalance, and at least two of rank 0's samples, so that rank 0 answers the next request before
+// the batch ends.
+constexpr double kBatchSeconds = 1.0;
 
 class CoordinatorSchedule final : public SampleSchedule {
  public:
@@ -81,8 +82,11 @@ class CoordinatorSchedule final : public SampleSchedule {
       progress_.update(dispenser_.next() - first_);
       progress_.finish();
       // What the scaling model of docs/performance.md needs: the time to add up the films.
-      std::fprintf(stderr, "films of %zu ranks (%.1f MiB each) added up in %.3f s\n", workers_.size() + 1,
-                   double(film.bytes()) / double(1 << 20), seconds);
+      std::fprintf(stderr,
+                   "films of %zu ranks (%.1f MiB each) added up in %.3f s; rank 0 rendered %u of the %u "
+                   "samples per pixel\n",
+                   workers_.size() + 1, double(film.bytes()) / double(1 << 20), seconds, ownDone_,
+                   dispenser_.next() - first_);
     }
     pause_ = SampleDispenser::Pause::None;
     for (Worker& w : workers_) w.paused = false;
@@ -117,12 +121,12 @@ class CoordinatorSchedule final : public SampleSchedule {
   }
 
   // The samples per pixel of a batch for a rank that takes `secondsPerSample`: about kBatchSeconds' worth, and
-  // towards the end no more than its share of half the rest (guided self-scheduling), so that the ranks finish
-  // together.
+  // towards the end no more than its share of a quarter of the rest (guided self-scheduling, halved again as a
+  // rank holds two batches: the one it renders and the next), so that the ranks finish together.
   uint32_t batchSize(double secondsPerSample) const {
     const double target = std::max(kBatchSeconds, 2.0 * secondsPerSample_);
     const double byTime = secondsPerSample > 0.0 ? std::floor(target / secondsPerSample) : 1.0;
-    const double share = std::ceil(double(dispenser_.remaining()) / (2.0 * double(workers_.size() + 1)));
+    const double share = std::ceil(double(dispenser_.remaining()) / (4.0 * double(workers_.size() + 1)));
     return uint32_t(std::clamp(std::min(byTime, share), 1.0, 65536.0));
   }
 
