@@ -7,6 +7,7 @@
 #include <OpenEXR/ImfStringAttribute.h>
 
 #include <charconv>
+#include <cmath>
 #include <stdexcept>
 
 #include "core/atomic_file.h"
@@ -143,6 +144,14 @@ Checkpoint readCheckpoint(const std::string& path, const ExrAttributes& identity
   } catch (const std::exception& e) {
     cannotResume(path, std::string("not a readable OpenEXR file (") + e.what() + ")");
   }
+  // What a render adds up is finite (kernel/film_accumulation.h): a file that holds more was not written so.
+  const FilmSums& f = checkpoint.film;
+  for (const std::vector<Vec3>* sums : {&f.radiance, &f.emission, &f.albedo, &f.normal})
+    for (const Vec3& v : *sums)
+      if (!isFinite(v)) cannotResume(path, "its sums hold values that are not finite numbers");
+  for (const std::vector<float>* sums : {&f.depth, &f.luminanceSquares})
+    for (float v : *sums)
+      if (!std::isfinite(v)) cannotResume(path, "its sums hold values that are not finite numbers");
   for (uint32_t count : checkpoint.film.samples)
     if (count > checkpoint.nextSample)
       cannotResume(path, "a pixel holds more samples than the " + std::to_string(checkpoint.nextSample) +
