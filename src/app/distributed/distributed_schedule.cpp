@@ -62,8 +62,8 @@ class CoordinatorSchedule final : public SampleSchedule {
     while (!allPaused()) {
       if (!answerRequests()) std::this_thread::sleep_for(std::chrono::microseconds(500));
       if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > timeout_)
-        throw std::runtime_error("ranks " + silentRanks() + " did not finish their batches within " +
-                                 std::to_string(int(timeout_)) + " s (--rank-timeout)");
+        throw std::runtime_error(silentRanks() + " did not finish the batches within " + std::to_string(int(timeout_)) +
+                                 " s (--rank-timeout)");
     }
     return {pause_ == SampleDispenser::Pause::End ? Assignment::Kind::End : Assignment::Kind::Checkpoint};
   }
@@ -113,11 +113,13 @@ class CoordinatorSchedule final : public SampleSchedule {
     return done;
   }
 
+  // "rank 3" or "ranks 3, 5".
   std::string silentRanks() const {
     std::string ranks;
+    int count = 0;
     for (size_t i = 0; i < workers_.size(); ++i)
-      if (!workers_[i].paused) ranks += (ranks.empty() ? "" : ", ") + std::to_string(i + 1);
-    return ranks;
+      if (!workers_[i].paused) ranks += (count++ ? ", " : "") + std::to_string(i + 1);
+    return (count == 1 ? "rank " : "ranks ") + ranks;
   }
 
   // The samples per pixel of a batch for a rank that takes `secondsPerSample`: about kBatchSeconds' worth, and
