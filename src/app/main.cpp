@@ -15,6 +15,7 @@
 #include "app/backend_factory.h"
 #include "app/checkpoint/duration.h"
 #include "app/checkpoint/stop_signals.h"
+#include "app/distributed/mpi_launch.h"
 #include "app/render_job.h"
 #include "app/scene_loading.h"
 #include "app/serve/serve.h"
@@ -27,7 +28,6 @@
 #include "scene/loaders/load_diagnostics.h"
 #if CANDELA_HAS_MPI
 #include "app/distributed/distributed_render.h"
-#include "app/distributed/mpi_session.h"
 #endif
 
 using namespace candela;
@@ -234,6 +234,11 @@ int runRender(const RenderJob& job, const std::string& output, const DisplaySett
   auto writeOutputs = [&](const RenderOutcome& outcome) { return finishRender(job, outcome, output, display); };
 #if CANDELA_HAS_MPI
   if (launchedByMpi()) return runDistributedRender(job, rankTimeoutSeconds, checkOutputs, writeOutputs);
+#else
+  if (launchedByMpi())
+    std::fprintf(stderr,
+                 "candela: warning: this build has no MPI support (libopenmpi-dev was not found when it "
+                 "was configured): this process renders the whole image on its own\n");
 #endif
   checkOutputs();
   const int status = writeOutputs(runRenderJob(job, /*showProgress=*/true));

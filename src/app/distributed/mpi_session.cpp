@@ -7,12 +7,6 @@
 
 namespace candela {
 
-bool launchedByMpi() {
-  for (const char* variable : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"})
-    if (std::getenv(variable)) return true;
-  return false;
-}
-
 void checkMpi(int code, const char* what) {
   if (code == MPI_SUCCESS) return;
   char text[MPI_MAX_ERROR_STRING];

@@ -5,10 +5,6 @@
 
 namespace candela {
 
-// Whether this process was started by an MPI launcher (mpirun, mpiexec, srun with PMI/PMIx): a plain start does
-// not initialise MPI at all.
-bool launchedByMpi();
-
 // MPI, initialised for the life of the object (threads may exist, only this one calls MPI), with errors
 // returned rather than ending the process, and this process's place: its rank, the ranks, and its index among
 // the ranks on its node (for picking a GPU).
