@@ -36,6 +36,17 @@ else()
   message(STATUS "serve: off (needs Boost.Beast and libjpeg-turbo: libboost-dev libturbojpeg0-dev)")
 endif()
 
+# Distributed rendering (`mpirun candela render`): built when MPI (Open MPI: libopenmpi-dev) is found;
+# CANDELA_MPI_ENABLED says whether.
+find_package(MPI QUIET COMPONENTS CXX)
+if(MPI_CXX_FOUND)
+  set(CANDELA_MPI_ENABLED ON)
+  message(STATUS "mpi: on (MPI ${MPI_CXX_VERSION})")
+else()
+  set(CANDELA_MPI_ENABLED OFF)
+  message(STATUS "mpi: off (needs an MPI implementation: libopenmpi-dev openmpi-bin)")
+endif()
+
 if(CANDELA_BUILD_TESTS)
   find_package(GTest REQUIRED CONFIG)
 endif()

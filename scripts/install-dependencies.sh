@@ -14,6 +14,8 @@ packages=(
   libglfw3-dev libimgui-dev libgl-dev libgl1-mesa-dri libglx-mesa0 xvfb xdotool
   # candela serve (the viewer in a web browser)
   libboost-dev libturbojpeg0-dev
+  # distributed rendering under mpirun (Open MPI), and its tests
+  libopenmpi-dev openmpi-bin
   # scripts/check-format.sh (one version: others break lines differently)
   clang-format-14
 )

@@ -15,20 +15,20 @@ std::string availableBackends() { return "cpu, optix"; }
 std::string availableBackends() { return "cpu"; }
 #endif
 
-std::unique_ptr<Backend> createBackend(const std::string& name, std::string& why) {
+std::unique_ptr<Backend> createBackend(const std::string& name, std::string& why, [[maybe_unused]] int deviceIndex) {
   if (name == "cpu") {
     why = "backend: cpu (requested)";
     return std::make_unique<CpuBackend>();
   }
 #if CANDELA_HAS_OPTIX
   if (name == "optix") {
-    auto backend = std::make_unique<OptixBackend>();
+    auto backend = std::make_unique<OptixBackend>(deviceIndex);
     why = "backend: optix (requested)";
     return backend;
   }
   if (name == "auto") {
     try {
-      auto backend = std::make_unique<OptixBackend>();
+      auto backend = std::make_unique<OptixBackend>(deviceIndex);
       why = "backend: optix (auto: found " + backend->deviceName() + ")";
       return backend;
     } catch (const std::runtime_error& e) {

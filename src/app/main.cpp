@@ -8,8 +8,14 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <optional>
+
+#include <tbb/global_control.h>
 
 #include "app/backend_factory.h"
+#include "app/checkpoint/duration.h"
+#include "app/checkpoint/stop_signals.h"
+#include "app/distributed/mpi_launch.h"
 #include "app/render_job.h"
 #include "app/scene_loading.h"
 #include "app/serve/serve.h"
@@ -20,6 +26,9 @@
 #include "scene/builtin_scenes.h"
 #include "scene/loaders/file_bytes.h"
 #include "scene/loaders/load_diagnostics.h"
+#if CANDELA_HAS_MPI
+#include "app/distributed/distributed_render.h"
+#endif
 
 using namespace candela;
 
@@ -167,9 +176,65 @@ void checkOutputPath(const std::string& path) {
   checkAtomicTarget(path);
 }
 
-int runRender(const RenderJob& job, const std::string& output, const DisplaySettings& display) {
-  checkOutputPath(output);
-  RenderOutcome outcome = runRenderJob(job, /*showProgress=*/true);
+// A duration option: 90, 90s, 10m, 2h.
+void addDurationOption(CLI::App& cmd, const std::string& name, double& seconds, const std::string& help) {
+  cmd.add_option_function<std::string>(
+         name, [&seconds](const std::string& text) { seconds = parseDuration(text); }, help)
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            try {
+              parseDuration(text);
+            } catch (const std::invalid_argument& e) {
+              return std::string(e.what());
+            }
+            return std::string();
+          },
+          "DURATION", ""));
+}
+
+// --checkpoint, --checkpoint-every, --resume and --time-limit (app/checkpoint/render_control.h).
+void addRenderControlOptions(CLI::App& cmd, RenderControl& control) {
+  CLI::Option* checkpoint = cmd.add_option(
+      "--checkpoint", control.checkpointPath,
+      "Keep the render resumable in this .exr file: the film with its sample counts and the settings, written "
+      "every --checkpoint-every, when the render ends, and when SIGINT, SIGTERM or SIGUSR1 (under mpirun: "
+      "SIGUSR1) stops it at a sample boundary");
+  control.checkpointEverySeconds = 600.0;
+  addDurationOption(cmd, "--checkpoint-every", control.checkpointEverySeconds,
+                    "How often to write the --checkpoint, like 90s, 10m or 2h (default: 10m)");
+  cmd.get_option("--checkpoint-every")->needs(checkpoint);
+  cmd.add_option("--resume", control.resumePath,
+                 "Continue the render of this checkpoint up to --spp samples per pixel; the scene and settings must "
+                 "be the ones it was rendered with");
+  addDurationOption(cmd, "--time-limit", control.timeLimitSeconds,
+                    "Stop at the last sample boundary before this much time (like 55m) has passed since the start, "
+                    "and write the image of the samples so far");
+}
+
+// Fails early, before a long render, when the checkpoint cannot be written.
+void checkCheckpointPath(const std::string& path) {
+  if (path.empty()) return;
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  if (extension != ".exr") throw std::runtime_error("cannot write '" + path + "': a checkpoint is an .exr file");
+  checkAtomicTarget(path);
+}
+
+// Writes the outputs of a render and reports it; returns the exit status.
+int finishRender(const RenderJob& job, const RenderOutcome& outcome, const std::string& output,
+                 const DisplaySettings& display) {
+  const unsigned done = outcome.samplesPerPixel, asked = job.samplesPerPixel;
+  if (outcome.end == RenderEnd::Signal) {
+    const int signal = StopOnSignals::requested();
+    std::fprintf(stderr,
+                 "candela: %s stopped the render after %u of %u samples per pixel; '%s' holds them (continue "
+                 "with --resume)\n",
+                 StopOnSignals::signalName(signal), done, asked, job.control.checkpointPath.c_str());
+    return 128 + signal;
+  }
+  if (outcome.end == RenderEnd::TimeLimit)
+    std::fprintf(stderr, "candela: the time limit stopped the render after %u of %u samples per pixel\n", done, asked);
   std::vector<std::string> written = writeImageWithAovs(output, outcome.image, display, outcome.aovs, job.aovs);
   const RenderSettings& rendered = outcome.settings;
   double samples = double(rendered.width) * rendered.height * outcome.samplesPerPixel;
@@ -180,6 +245,28 @@ int runRender(const RenderJob& job, const std::string& output, const DisplaySett
                (unsigned long long)outcome.stats.invalidSamples);
   for (const std::string& path : written) std::printf("%s\n", std::filesystem::absolute(path).string().c_str());
   return 0;
+}
+
+int runRender(const RenderJob& job, const std::string& output, const DisplaySettings& display,
+              [[maybe_unused]] double rankTimeoutSeconds) {
+  auto checkOutputs = [&] {
+    checkOutputPath(output);
+    checkCheckpointPath(job.control.checkpointPath);
+  };
+  auto writeOutputs = [&](const RenderOutcome& outcome) { return finishRender(job, outcome, output, display); };
+#if CANDELA_HAS_MPI
+  if (launchedByMpi()) return runDistributedRender(job, rankTimeoutSeconds, checkOutputs, writeOutputs);
+#else
+  if (launchedByMpi())
+    std::fprintf(stderr,
+                 "candela: warning: this build has no MPI support (libopenmpi-dev was not found when it "
+                 "was configured): this process renders the whole image on its own\n");
+#endif
+  checkOutputs();
+  const int status = writeOutputs(runRenderJob(job, /*showProgress=*/true));
+  // Stopped by a signal: end as the signal would have ended the process, now that the checkpoint is written.
+  StopOnSignals::endWithRequestedSignal();
+  return status;
 }
 
 double median(std::vector<double> values) {
@@ -410,6 +497,10 @@ int main(int argc, char** argv) {
                    "optix (the OptiX AI denoiser with albedo and normal guides)")
       ->check(CLI::IsMember({"none", "atrous", "bilateral", "optix"}))
       ->capture_default_str();
+  addRenderControlOptions(*render, renderJob.control);
+  double rankTimeoutSeconds = 600.0;
+  addDurationOption(*render, "--rank-timeout", rankTimeoutSeconds,
+                    "Under mpirun: how long a rank waits for another before it ends the job (default: 10m)");
   render->add_option("--atrous-passes", renderJob.atrous.passes, "Passes of the a-trous denoiser")
       ->check(CLI::Range(1, kMaxAtrousPasses))
       ->capture_default_str();
@@ -436,6 +527,11 @@ int main(int argc, char** argv) {
   bench->add_option("--warmup", benchJob.warmupFrames, "Untimed launches before the timed ones")->capture_default_str();
   bench->add_flag("--raw-trace", benchJob.rawTrace,
                   "Also time tracing the same rays with no shading, the traversal ceiling (optix backend)");
+
+  unsigned threads = 0;
+  for (CLI::App* cmd : {render, bench})
+    cmd->add_option("--threads", threads, "CPU backend: render with this many threads (default: all)")
+        ->check(CLI::Range(1u, 4096u));
 
   ViewerOptions viewOptions;
   std::string viewToneMapper = "aces";
@@ -472,11 +568,13 @@ int main(int argc, char** argv) {
     job->given.maxDepth = cmd->count("--max-depth") > 0;
   }
 
+  std::optional<tbb::global_control> threadLimit;
+  if (threads > 0) threadLimit.emplace(tbb::global_control::max_allowed_parallelism, threads);
   try {
     if (*inspect) return runLoad(inspectSpec, inspectOptions);
     if (*render) {
       display.toneMapper = parseToneMapper(toneMapper);
-      return runRender(renderJob, output, display);
+      return runRender(renderJob, output, display, rankTimeoutSeconds);
     }
     if (*view) return runView(viewOptions, viewToneMapper);
     if (*serve) return runServeCommand(serveOptions, serveToneMapper);

@@ -2,12 +2,20 @@
 
 #include <chrono>
 #include <cstdio>
+#include <functional>
+#include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include "app/backend_factory.h"
-#include "app/progress.h"
+#include "app/checkpoint/checkpoint_file.h"
+#include "app/checkpoint/render_identity.h"
+#include "app/checkpoint/stop_signals.h"
 #include "app/render_memory.h"
 #include "app/scene_loading.h"
+#include "app/schedule/local_schedule.h"
+#include "app/schedule/render_team.h"
+#include "app/schedule/scheduled_render.h"
 #if CANDELA_HAS_OPTIX
 #include "backends/optix/optix_denoiser.h"
 #endif
@@ -48,6 +56,54 @@ void readResult(const Backend& backend, const RenderJob& job, RenderOutcome& out
   if (!job.aovs.empty()) outcome.aovs = std::move(aovs);
 }
 
+// A startup step that may fail on some processes of a team: all of them learn whether it failed anywhere.
+template <class Step>
+auto agreedStep(const RenderJob& job, const Step& step) {
+  if (!job.team) return step();
+  try {
+    auto result = step();
+    job.team->agree(nullptr);
+    return result;
+  } catch (const AgreedFailure&) {
+    throw;
+  } catch (...) {
+    job.team->agree(std::current_exception());
+    throw std::logic_error("RenderTeam::agree returned after a failure");
+  }
+}
+
+// The sample index the render starts at: 0, or the next one of the checkpoint it resumes from, whose film is
+// then in `backend` (on the writer; the other processes of a team start with empty films).
+uint32_t loadResumedFilm(const RenderJob& job, Backend& backend, const ExrAttributes& identity) {
+  if (job.control.resumePath.empty()) return 0;
+  return agreedStep(job, [&]() -> uint32_t {
+    if (job.team && !job.team->writes()) return 0;
+    const RenderSettings& s = job.settings;
+    Checkpoint c = readCheckpoint(job.control.resumePath, identity, s.width, s.height, needsAovs(job));
+    if (c.nextSample > job.samplesPerPixel)
+      throw std::runtime_error("cannot resume from '" + job.control.resumePath + "': it holds " +
+                               std::to_string(c.nextSample) + " samples per pixel, more than the " +
+                               std::to_string(job.samplesPerPixel) + " asked for (--spp)");
+    backend.loadFilm(c.film);
+    return c.nextSample;
+  });
+}
+
+// Renders the sample indices [first, end) under the job's control and team; fills the outcome's statistics.
+ScheduledRenderResult accumulateSamples(const RenderJob& job, Backend& backend, uint32_t first, uint32_t end,
+                                        const ExrAttributes& identity, bool showProgress,
+                                        const std::function<FrameStats()>& render) {
+  const auto timeLimitFrom = job.control.timeLimitFrom == std::chrono::steady_clock::time_point{}
+                                 ? std::chrono::steady_clock::now()
+                                 : job.control.timeLimitFrom;
+  const SampleDispenser dispenser(first, end, job.control, timeLimitFrom);
+  std::unique_ptr<SampleSchedule> schedule =
+      job.team ? job.team->schedule(dispenser, showProgress) : std::make_unique<LocalSchedule>(dispenser, showProgress);
+  std::optional<StopOnSignals> stopOnSignals;
+  if (job.control.stopsOnSignals()) stopOnSignals.emplace();
+  return renderScheduled(backend, *schedule, {job.control.checkpointPath, identity, job.samplesPerPixel}, render);
+}
+
 }  // namespace
 
 RenderOutcome runRenderJob(const RenderJob& job, bool showProgress) {
@@ -58,11 +114,14 @@ RenderOutcome runRenderJob(const RenderJob& job, bool showProgress) {
         "'GPU backend')");
 #endif
   const auto loadStart = std::chrono::steady_clock::now();
-  Scene scene =
-      loadScene(job.sceneSpec, {job.environmentPath, job.sceneCache, job.outsidePaths, job.camera, job.textureLimits});
+  Scene scene = agreedStep(job, [&] {
+    return loadScene(job.sceneSpec, {job.environmentPath, job.sceneCache, job.outsidePaths, job.camera,
+                                     job.textureLimits, !job.team || job.team->writes()});
+  });
   const double loadSeconds = secondsSince(loadStart);
   applyOverrides(scene.materials, job.materialOverrides);
   RenderJob hinted = job;
+  hinted.control.timeLimitFrom = loadStart;
   const RenderHints& hints = scene.renderHints;
   if (hints.width && !job.given.width) hinted.settings.width = *hints.width;
   if (hints.height && !job.given.height) hinted.settings.height = *hints.height;
@@ -75,15 +134,19 @@ RenderOutcome runRenderJob(const RenderJob& job, bool showProgress) {
 
 RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool showProgress) {
   using Clock = std::chrono::steady_clock;
-  checkRenderMemory(job);
+  agreedStep(job, [&] {
+    checkRenderMemory(job);
+    return true;
+  });
   RenderOutcome outcome;
   outcome.settings = job.settings;
   outcome.samplesPerPixel = job.samplesPerPixel;
   const auto backendStart = Clock::now();
   std::string why;
-  std::unique_ptr<Backend> backend = createBackend(job.backend, why);
+  std::unique_ptr<Backend> backend =
+      agreedStep(job, [&] { return createBackend(job.backend, why, job.team ? job.team->localIndex() : 0); });
   outcome.backendStartSeconds = secondsSince(backendStart);
-  std::fprintf(stderr, "%s\n", why.c_str());
+  if (!job.team || job.team->writes()) std::fprintf(stderr, "%s\n", why.c_str());
   if (job.rawTrace && !backend->supportsRawTrace())
     throw std::runtime_error("the raw-trace mode needs the optix backend, not " + backend->name());
   const auto setupStart = Clock::now();
@@ -98,29 +161,30 @@ RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool s
     return frame;
   };
 
+  const ExrAttributes identity = renderIdentity(job, needsAovs(job));
+  // Warm-up launches take the first sample indices, and the timed ones continue after them.
+  const uint32_t first = loadResumedFilm(job, *backend, identity) + job.warmupFrames;
   for (uint32_t w = 0; w < job.warmupFrames; ++w) renderFrame();
-  ProgressReporter progress("rendering", job.samplesPerPixel);
   auto start = Clock::now();
-  for (uint32_t s = 0; s < job.samplesPerPixel; ++s) {
-    auto frameStart = Clock::now();
-    FrameStats frame = renderFrame();
-    outcome.frameMilliseconds.push_back(std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count());
-    if (frame.deviceMilliseconds > 0.0) outcome.deviceFrameMilliseconds.push_back(frame.deviceMilliseconds);
-    outcome.stats.rays += frame.rays;
-    outcome.stats.invalidSamples += frame.invalidSamples;
-    if (showProgress) progress.update(s + 1);
-  }
+  ScheduledRenderResult rendered = accumulateSamples(job, *backend, first, job.samplesPerPixel + job.warmupFrames,
+                                                     identity, showProgress, renderFrame);
   outcome.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  if (showProgress) progress.finish();
+  outcome.samplesPerPixel = rendered.samples - job.warmupFrames;
+  outcome.end = rendered.end;
+  outcome.writes = rendered.writes;
+  outcome.stats = rendered.stats;
+  outcome.frameMilliseconds = std::move(rendered.frameMilliseconds);
+  outcome.deviceFrameMilliseconds = std::move(rendered.deviceFrameMilliseconds);
+  outcome.backendName = backend->name();
+  outcome.deviceName = backend->deviceName();
+  outcome.sceneName = scene.name;
+  if (!outcome.writes) return outcome;
   if (job.rawTrace) {
     RawTraceTiming timing = backend->timeRawTrace(job.warmupFrames, job.samplesPerPixel);
     outcome.rawTraceRaysPerFrame = timing.raysPerFrame;
     outcome.rawTraceMilliseconds = std::move(timing.deviceMilliseconds);
   }
   readResult(*backend, job, outcome);
-  outcome.backendName = backend->name();
-  outcome.deviceName = backend->deviceName();
-  outcome.sceneName = scene.name;
   return outcome;
 }
 

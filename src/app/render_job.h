@@ -2,6 +2,8 @@
 #include <string>
 #include <vector>
 
+#include "app/checkpoint/render_control.h"
+#include "app/schedule/sample_dispenser.h"
 #include "backends/backend.h"
 #include "image/aov_io.h"
 #include "scene/cache/scene_cache.h"
@@ -11,6 +13,8 @@
 #include "scene/scene.h"
 
 namespace candela {
+
+class RenderTeam;
 
 struct RenderJob {
   std::string sceneSpec = "cornell-box";
@@ -32,13 +36,17 @@ struct RenderJob {
   std::string denoiser = "none";  // "none", "atrous", "bilateral" or "optix"
   AtrousParams atrous;
   BilateralParams bilateral;
-  std::vector<Aov> aovs;  // AOVs to keep in RenderOutcome::aovs
+  std::vector<Aov> aovs;       // AOVs to keep in RenderOutcome::aovs
+  RenderControl control;       // checkpoints, resumption, time limit
+  RenderTeam* team = nullptr;  // the processes of a distributed render; null: this process renders alone
 };
 
 struct RenderOutcome {
   // What was rendered: the command line's settings, or the scene file's render hints where it gave none.
   RenderSettings settings;
-  uint32_t samplesPerPixel = 0;
+  uint32_t samplesPerPixel = 0;  // in the image: fewer than asked for when the render stopped early
+  RenderEnd end = RenderEnd::Complete;
+  bool writes = true;  // false on the processes of a distributed render that do not hold the image
   Image image;
   AovImages aovs;  // when RenderJob::aovs is not empty
   FrameStats stats;
@@ -60,7 +68,9 @@ struct RenderOutcome {
 // Loads the scene, builds the backend and accumulates the requested samples, one launch per sample per pixel,
 // after `warmupFrames` untimed launches; then denoises when asked (the a-trous and OptiX denoisers guided by the
 // AOVs, which are then accumulated too). Throws std::runtime_error on failure; a
-// denoiser that cannot run is reported on stderr and the image is kept as rendered.
+// denoiser that cannot run is reported on stderr and the image is kept as rendered. With `job.control` it
+// resumes from a checkpoint, writes checkpoints and may stop early (RenderOutcome::end); with `job.team`, this
+// process renders its share, and only the writer's outcome holds the image.
 RenderOutcome runRenderJob(const RenderJob& job, bool showProgress);
 RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool showProgress);
 

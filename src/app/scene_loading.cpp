@@ -155,8 +155,9 @@ Scene loadScene(const std::string& spec, const SceneLoadOptions& options) {
     warnings.add(spec,
                  "the scene has no light source (no emissive surface, punctual light or environment): the "
                  "image will be black; light it with --env");
-  for (const std::string& w : warnings.messages)
-    std::fprintf(stderr, "candela: warning: %s\n", printableText(w).c_str());
+  if (options.printWarnings)
+    for (const std::string& w : warnings.messages)
+      std::fprintf(stderr, "candela: warning: %s\n", printableText(w).c_str());
   if (scene.cameraMissing) frameSceneBounds(scene);
   return scene;
 }

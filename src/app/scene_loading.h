@@ -16,6 +16,7 @@ struct SceneLoadOptions {
   OutsidePaths outsidePaths = OutsidePaths::Refused;
   std::string camera = {};           // the name or index (in Scene::cameras) of the camera to take; empty: the first
   TextureLimits textureLimits = {};  // textures over them are decoded smaller, with a warning
+  bool printWarnings = true;         // false: only one of the processes of a distributed render prints them
 };
 
 // A built-in scene name or a scene file (.obj, .gltf, .glb, .pbrt, .json), chosen by extension, repaired

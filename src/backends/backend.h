@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "backends/device_image.h"
+#include "backends/film_sums.h"
 #include "image/aov_images.h"
 #include "image/filters/atrous.h"
 #include "image/filters/bilateral.h"
@@ -46,9 +47,18 @@ class Backend {
   virtual void setCamera(const Camera& camera) = 0;
   virtual void setSettings(const RenderSettings& settings) = 0;
 
-  // Adds `samplesPerPixel` samples to every pixel.
+  // Adds `samplesPerPixel` samples to every pixel: the sample indices from the next one (0 after a restart) on.
   virtual FrameStats render(uint32_t samplesPerPixel) = 0;
+  // Samples render() added per pixel since the restart (a loaded film's samples are not counted).
   virtual uint32_t accumulatedSamples() const = 0;
+  // The sample index of the next render() call's first sample; later calls continue after its last. A process
+  // that renders a share of the samples (a distributed render, a resumed one) renders its indices this way.
+  virtual void setNextSampleIndex(uint32_t index) = 0;
+
+  // The film's sums, and replacing them: render() then adds to the loaded sums. loadFilm throws
+  // std::invalid_argument when `film` has another size than the settings' or other AOVs than enabled.
+  virtual FilmSums readFilm() const = 0;
+  virtual void loadFilm(const FilmSums& film) = 0;
   // The mean of the accumulated samples.
   virtual Image readImage() const = 0;
   // The part of readImage() the camera sees emitted (PathResult::emitted): lights, emissive textures and the

@@ -42,7 +42,9 @@ void removeTemporariesAndResignal(int signal) {
   ::raise(signal);
 }
 
-void installSignalHandlers() {
+}  // namespace
+
+void installTemporaryRemovalOnSignals() {
   static std::once_flag once;
   std::call_once(once, [] {
     struct sigaction action {};
@@ -53,6 +55,8 @@ void installSignalHandlers() {
     ::sigaction(SIGTERM, &action, &previousTerm);
   });
 }
+
+namespace {
 
 int takeSlot(const std::string& path) {
   if (path.size() >= PATH_MAX) return -1;
@@ -110,7 +114,7 @@ std::string checkAtomicTarget(const std::string& target) {
 }
 
 AtomicFile::AtomicFile(const std::string& target) : target_(target), resolved_(checkAtomicTarget(target)) {
-  installSignalHandlers();
+  installTemporaryRemovalOnSignals();
   // A replaced file keeps its permissions; a new one gets those of any new file (0666 less the umask).
   struct stat existing {};
   const bool exists = ::stat(resolved_.c_str(), &existing) == 0;

@@ -61,6 +61,10 @@ class AtomicFile {
 // before a long render.
 std::string checkAtomicTarget(const std::string& target);
 
+// Installs the SIGINT and SIGTERM handlers that remove uncommitted temporaries, as the first AtomicFile does. A
+// caller that installs handlers of its own calls it first and hands the signal on to these (the previous ones).
+void installTemporaryRemovalOnSignals();
+
 // Writes `size` bytes to `path` through an AtomicFile.
 void writeFileAtomically(const std::string& path, const void* data, size_t size);
 

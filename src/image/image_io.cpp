@@ -8,6 +8,7 @@
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfIO.h>
 #include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStringAttribute.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -96,16 +97,19 @@ void writePngFile(const std::string& path, int width, int height, int channels, 
   file.commit();
 }
 
-void writeExrChannelsTo(AtomicFile& file, uint32_t width, uint32_t height, const std::vector<ExrChannel>& channels) {
+void writeExrChannelsTo(AtomicFile& file, uint32_t width, uint32_t height, const std::vector<ExrChannel>& channels,
+                        const ExrAttributes& attributes) {
+  const auto type = [](const ExrChannel& c) { return c.isUint ? Imf::UINT : Imf::FLOAT; };
   try {
     Imf::Header header{int(width), int(height)};
-    for (const ExrChannel& c : channels) header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
+    for (const auto& [name, value] : attributes) header.insert(name, Imf::StringAttribute(value));
+    for (const ExrChannel& c : channels) header.channels().insert(c.name, Imf::Channel(type(c)));
     AtomicFileStream stream(file);
     // The output file writes its table of line offsets when it goes, so it goes before the file is finished.
     Imf::OutputFile exr(stream, header);
     Imf::FrameBuffer fb;
     for (const ExrChannel& c : channels)
-      fb.insert(c.name, Imf::Slice(Imf::FLOAT, const_cast<char*>(c.base), c.xStride, c.xStride * width));
+      fb.insert(c.name, Imf::Slice(type(c), const_cast<char*>(c.base), c.xStride, c.xStride * width));
     exr.setFrameBuffer(fb);
     exr.writePixels(int(height));
   } catch (const WriteError&) {

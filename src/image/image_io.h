@@ -1,5 +1,6 @@
 #pragma once
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/atomic_file.h"
@@ -29,16 +30,20 @@ void writeImageTo(AtomicFile& file, const Image& image, const DisplaySettings& d
 void writePngFile(const std::string& path, int width, int height, int channels, const uint8_t* pixels, int strideBytes);
 void writePngTo(AtomicFile& file, int width, int height, int channels, const uint8_t* pixels, int strideBytes);
 
-// One float channel of an EXR file: `base` points at the top-left pixel's value, rows are packed.
+// One channel of an EXR file: `base` points at the top-left pixel's value, rows are packed.
 struct ExrChannel {
   std::string name;  // "R", or "layer.R" for a layer
   const char* base;
-  size_t xStride;  // bytes from one pixel's value to the next
+  size_t xStride;       // bytes from one pixel's value to the next
+  bool isUint = false;  // 32-bit unsigned integers rather than 32-bit floats
 };
+// Text attributes of an EXR header, name and value.
+using ExrAttributes = std::vector<std::pair<std::string, std::string>>;
 void writeExrChannels(const std::string& path, uint32_t width, uint32_t height,
                       const std::vector<ExrChannel>& channels);
 // Into an open AtomicFile, finished (on disk and closed) but not committed.
-void writeExrChannelsTo(AtomicFile& file, uint32_t width, uint32_t height, const std::vector<ExrChannel>& channels);
+void writeExrChannelsTo(AtomicFile& file, uint32_t width, uint32_t height, const std::vector<ExrChannel>& channels,
+                        const ExrAttributes& attributes = {});
 
 // True when writeImage knows the extension of `path`.
 bool isSupportedImageExtension(const std::string& path);

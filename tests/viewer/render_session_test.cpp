@@ -58,6 +58,9 @@ class RecordingBackend final : public Backend {
     return {};
   }
   uint32_t accumulatedSamples() const override { return log_.accumulated; }
+  void setNextSampleIndex(uint32_t) override {}
+  FilmSums readFilm() const override { return {}; }
+  void loadFilm(const FilmSums&) override {}
   Image readImage() const override { return {}; }
   Image readEmission() const override { return {}; }
   void setAovsEnabled(bool enabled) override {

@@ -72,6 +72,7 @@ void CpuBackend::setAovsEnabled(bool enabled) {
 void CpuBackend::restart() {
   film_.reset(settings_.width, settings_.height, aovsEnabled_);
   accumulated_ = 0;
+  nextSample_ = 0;
 }
 
 FrameStats CpuBackend::render(uint32_t samplesPerPixel) {
@@ -82,7 +83,7 @@ template <bool kWithAovs>
 FrameStats CpuBackend::renderSamples(uint32_t samplesPerPixel) {
   const SceneView scene = flat_.hostView();
   const EmbreeTracer tracer(embree_.topLevel(), scene);
-  const uint32_t firstSample = accumulated_;
+  const uint32_t firstSample = nextSample_;
   const FilmView film = film_.view();
   tbb::combinable<FrameStats> stats;
   tbb::parallel_for(
@@ -100,6 +101,7 @@ FrameStats CpuBackend::renderSamples(uint32_t samplesPerPixel) {
           }
       });
   accumulated_ += samplesPerPixel;
+  nextSample_ += samplesPerPixel;
   FrameStats total;
   stats.combine_each([&](const FrameStats& s) {
     total.rays += s.rays;

@@ -24,6 +24,9 @@ class CpuBackend final : public Backend {
 
   FrameStats render(uint32_t samplesPerPixel) override;
   uint32_t accumulatedSamples() const override { return accumulated_; }
+  void setNextSampleIndex(uint32_t index) override { nextSample_ = index; }
+  FilmSums readFilm() const override { return film_.sums(); }
+  void loadFilm(const FilmSums& film) override { film_.load(film); }
   Image readImage() const override { return film_.readImage(); }
   Image readEmission() const override { return film_.readEmission(); }
   void setAovsEnabled(bool enabled) override;
@@ -42,6 +45,7 @@ class CpuBackend final : public Backend {
   bool aovsEnabled_ = false;
   HostFilm film_;
   uint32_t accumulated_ = 0;
+  uint32_t nextSample_ = 0;
 };
 
 }  // namespace candela

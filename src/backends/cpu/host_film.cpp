@@ -5,51 +5,48 @@
 namespace candela {
 
 void HostFilm::reset(uint32_t width, uint32_t height, bool withAovs) {
-  width_ = width;
-  height_ = height;
-  const size_t pixels = size_t(width) * height, aovPixels = withAovs ? pixels : 0;
-  radiance_.assign(pixels, Vec3{});
-  emission_.assign(aovPixels, Vec3{});
-  samples_.assign(pixels, 0);
-  albedo_.assign(aovPixels, Vec3{});
-  normal_.assign(aovPixels, Vec3{});
-  depth_.assign(aovPixels, 0.0f);
-  luminanceSquares_.assign(aovPixels, 0.0f);
+  sums_ = FilmSums::zero(width, height, withAovs);
 }
 
 FilmView HostFilm::view() {
-  FilmView v{radiance_.data(), nullptr, samples_.data()};
+  FilmView v{sums_.radiance.data(), nullptr, sums_.samples.data()};
   if (hasAovs()) {
-    v.emission = emission_.data();
-    v.albedo = albedo_.data();
-    v.normal = normal_.data();
-    v.depth = depth_.data();
-    v.luminanceSquares = luminanceSquares_.data();
+    v.emission = sums_.emission.data();
+    v.albedo = sums_.albedo.data();
+    v.normal = sums_.normal.data();
+    v.depth = sums_.depth.data();
+    v.luminanceSquares = sums_.luminanceSquares.data();
   }
   return v;
 }
 
+void HostFilm::load(const FilmSums& sums) {
+  if (!sums.sameShape(sums_)) throw std::invalid_argument("HostFilm::load: the sums have another size or AOVs");
+  sums_ = sums;
+}
+
 Image HostFilm::meanImage(const std::vector<Vec3>& sums) const {
-  Image image(width_, height_);
-  for (size_t i = 0; i < sums.size(); ++i) image.pixels[i] = filmMean(sums[i], samples_[i]);
+  Image image(sums_.width, sums_.height);
+  for (size_t i = 0; i < sums.size(); ++i) image.pixels[i] = filmMean(sums[i], sums_.samples[i]);
   return image;
 }
 
 Image HostFilm::readEmission() const {
   if (!hasAovs()) throw std::logic_error("HostFilm::readEmission on a film without AOVs");
-  return meanImage(emission_);
+  return meanImage(sums_.emission);
 }
 
 AovImages HostFilm::readAovs() const {
   if (!hasAovs()) throw std::logic_error("HostFilm::readAovs on a film without AOVs");
-  AovImages aovs(width_, height_);
-  for (size_t i = 0; i < samples_.size(); ++i) {
-    aovs.albedo.pixels[i] = filmMean(albedo_[i], samples_[i]);
-    aovs.normal.pixels[i] = filmMean(normal_[i], samples_[i]);
-    aovs.depth[i] = filmMean(depth_[i], samples_[i]);
-    aovs.variance[i] = meanLuminanceVariance(radiance_[i], luminanceSquares_[i], samples_[i]);
+  const FilmSums& s = sums_;
+  AovImages aovs(s.width, s.height);
+  for (size_t i = 0; i < s.samples.size(); ++i) {
+    aovs.albedo.pixels[i] = filmMean(s.albedo[i], s.samples[i]);
+    aovs.normal.pixels[i] = filmMean(s.normal[i], s.samples[i]);
+    aovs.depth[i] = filmMean(s.depth[i], s.samples[i]);
+    aovs.variance[i] = meanLuminanceVariance(s.radiance[i], s.luminanceSquares[i], s.samples[i]);
   }
-  aovs.emission = meanImage(emission_);
+  aovs.emission = readEmission();
   return aovs;
 }
 

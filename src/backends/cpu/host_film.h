@@ -2,6 +2,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "backends/film_sums.h"
 #include "image/aov_images.h"
 #include "image/image.h"
 #include "kernel/film.h"
@@ -13,10 +14,14 @@ class HostFilm {
  public:
   // Clears the film to width x height pixels, with AOV sums or without.
   void reset(uint32_t width, uint32_t height, bool withAovs);
-  bool hasAovs() const { return !albedo_.empty(); }
+  bool hasAovs() const { return sums_.hasAovs(); }
   FilmView view();
 
-  Image readImage() const { return meanImage(radiance_); }
+  const FilmSums& sums() const { return sums_; }
+  // Replaces the sums with `sums`, which must have the film's size and AOVs (throws std::invalid_argument).
+  void load(const FilmSums& sums);
+
+  Image readImage() const { return meanImage(sums_.radiance); }
   // Throw std::logic_error when the film has no AOV sums (the emission is recorded with them).
   Image readEmission() const;
   AovImages readAovs() const;
@@ -24,11 +29,7 @@ class HostFilm {
  private:
   Image meanImage(const std::vector<Vec3>& sums) const;
 
-  uint32_t width_ = 0, height_ = 0;
-  std::vector<Vec3> radiance_;
-  std::vector<uint32_t> samples_;
-  std::vector<Vec3> emission_, albedo_, normal_;  // empty without AOVs
-  std::vector<float> depth_, luminanceSquares_;
+  FilmSums sums_;
 };
 
 }  // namespace candela

@@ -80,4 +80,32 @@ AovImages DeviceFilm::readAovs() const {
   return aovs;
 }
 
+FilmSums DeviceFilm::download() const {
+  FilmSums f = FilmSums::zero(width_, height_, hasAovs());
+  radiance_.download(f.radiance.data(), radiance_.size());
+  emission_.download(f.emission.data(), emission_.size());
+  samples_.download(f.samples.data(), samples_.size());
+  if (hasAovs()) {
+    albedo_.download(f.albedo.data(), albedo_.size());
+    normal_.download(f.normal.data(), normal_.size());
+    depth_.download(f.depth.data(), depth_.size());
+    luminanceSquares_.download(f.luminanceSquares.data(), luminanceSquares_.size());
+  }
+  return f;
+}
+
+void DeviceFilm::upload(const FilmSums& sums) {
+  if (sums.width != width_ || sums.height != height_ || sums.hasAovs() != hasAovs())
+    throw std::invalid_argument("DeviceFilm::upload: the sums have another size or AOVs");
+  radiance_.upload(sums.radiance.data(), radiance_.size());
+  emission_.upload(sums.emission.data(), emission_.size());
+  samples_.upload(sums.samples.data(), samples_.size());
+  if (hasAovs()) {
+    albedo_.upload(sums.albedo.data(), albedo_.size());
+    normal_.upload(sums.normal.data(), normal_.size());
+    depth_.upload(sums.depth.data(), depth_.size());
+    luminanceSquares_.upload(sums.luminanceSquares.data(), luminanceSquares_.size());
+  }
+}
+
 }  // namespace candela::optix

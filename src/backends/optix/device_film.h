@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "backends/film_sums.h"
 #include "backends/optix/device_buffer.h"
 #include "image/aov_images.h"
 #include "image/image.h"
@@ -28,6 +29,10 @@ class DeviceFilm {
   // Throw std::logic_error when the film has no AOV sums (the emission is recorded with them).
   Image readEmission() const;
   AovImages readAovs() const;
+
+  // The sums in host memory, and replacing them (same size and AOVs, else std::invalid_argument); synchronous.
+  FilmSums download() const;
+  void upload(const FilmSums& sums);
 
  private:
   Image meanImage(const DeviceBuffer& sums) const;

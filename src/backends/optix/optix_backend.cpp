@@ -65,6 +65,8 @@ struct LaunchResult {
 }  // namespace
 
 struct OptixBackend::State {
+  explicit State(int deviceIndex) : context(deviceIndex) {}
+
   OptixContext context;
   ProgramModule module{context.get()};
   std::vector<std::unique_ptr<Pipeline>> pipelines = makePipelines(context.get(), module.get());
@@ -84,6 +86,7 @@ struct OptixBackend::State {
   DeviceBuffer parameters{sizeof(LaunchParameters), "the launch parameters"};
   CudaEvent start, stop;
   uint32_t accumulated = 0;
+  uint32_t nextSample = 0;
 
   uint32_t pixelCount() const { return settings.width * settings.height; }
 
@@ -139,6 +142,7 @@ struct OptixBackend::State {
 
   void restart() {
     accumulated = 0;
+    nextSample = 0;
     film.clear(context.stream());
   }
 
@@ -159,7 +163,7 @@ struct OptixBackend::State {
   }
 };
 
-OptixBackend::OptixBackend() : state_(std::make_unique<State>()) {
+OptixBackend::OptixBackend(int deviceIndex) : state_(std::make_unique<State>(deviceIndex)) {
   std::fprintf(stderr, "optix: %s\n", deviceDescription().c_str());
   setSettings(RenderSettings{});
 }
@@ -223,19 +227,26 @@ FrameStats OptixBackend::render(uint32_t samplesPerPixel) {
   FrameStats stats;
   for (uint32_t done = 0; done < samplesPerPixel;) {
     LaunchParameters p = s.baseParameters();
-    p.firstSample = s.accumulated;
+    p.firstSample = s.nextSample;
     p.samplesPerPixel = std::min(samplesPerPixel - done, maxPerLaunch);
     LaunchResult r = s.launch(s.aovsEnabled ? RaygenProgram::RenderWithAovs : RaygenProgram::Render, p);
     stats.rays += r.totals.rays;
     stats.invalidSamples += r.totals.invalidSamples;
     stats.deviceMilliseconds += r.milliseconds;
     s.accumulated += p.samplesPerPixel;
+    s.nextSample += p.samplesPerPixel;
     done += p.samplesPerPixel;
   }
   return stats;
 }
 
 uint32_t OptixBackend::accumulatedSamples() const { return state_->accumulated; }
+
+void OptixBackend::setNextSampleIndex(uint32_t index) { state_->nextSample = index; }
+
+FilmSums OptixBackend::readFilm() const { return state_->film.download(); }
+
+void OptixBackend::loadFilm(const FilmSums& film) { state_->film.upload(film); }
 
 Image OptixBackend::readImage() const { return state_->film.readImage(); }
 
@@ -277,7 +288,7 @@ Image OptixBackend::readBilateralFiltered(const BilateralParams& params) const {
 
 std::array<unsigned char, 16> OptixBackend::deviceUuid() const {
   cudaDeviceProp properties{};
-  checkCuda(cudaGetDeviceProperties(&properties, 0), "reading the GPU's properties");
+  checkCuda(cudaGetDeviceProperties(&properties, state_->context.deviceOrdinal()), "reading the GPU's properties");
   std::array<unsigned char, 16> uuid{};
   std::memcpy(uuid.data(), properties.uuid.bytes, uuid.size());
   return uuid;
@@ -297,7 +308,7 @@ RawTraceTiming OptixBackend::timeRawTrace(uint32_t warmup, uint32_t frames) {
   if (!s.hasScene) throw std::logic_error("OptixBackend::timeRawTrace before setScene");
   const size_t pixels = s.pixelCount();
   LaunchParameters p = s.baseParameters();
-  p.firstSample = s.accumulated;
+  p.firstSample = s.nextSample;
   p.samplesPerPixel = 1;
   p.recording.slotsPerPixel = rayBoundPerSample(s.settings);
   const size_t slots = size_t(p.recording.slotsPerPixel) * pixels;

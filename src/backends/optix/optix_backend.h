@@ -14,8 +14,9 @@ namespace candela {
 class OptixBackend final : public Backend, public DeviceImage {
  public:
   // Prints the GPU, driver, OptiX ABI and RT-core version on stderr. Throws std::runtime_error with one
-  // sentence when there is no usable GPU (no CUDA device, no or too old a driver, no libnvoptix).
-  OptixBackend();
+  // sentence when there is no usable GPU (no CUDA device, no or too old a driver, no libnvoptix). Takes CUDA
+  // device `deviceIndex` modulo the devices there are.
+  explicit OptixBackend(int deviceIndex = 0);
   ~OptixBackend() override;
 
   std::string name() const override { return "optix"; }
@@ -32,6 +33,9 @@ class OptixBackend final : public Backend, public DeviceImage {
   // FrameStats::deviceMilliseconds holds the launches' GPU time from CUDA events.
   FrameStats render(uint32_t samplesPerPixel) override;
   uint32_t accumulatedSamples() const override;
+  void setNextSampleIndex(uint32_t index) override;
+  FilmSums readFilm() const override;
+  void loadFilm(const FilmSums& film) override;
   Image readImage() const override;
   Image readEmission() const override;
   void setAovsEnabled(bool enabled) override;

@@ -23,7 +23,8 @@ std::string cudaVersionString(int version) {
   return std::to_string(version / 1000) + "." + std::to_string(version % 1000 / 10);
 }
 
-void selectDevice() {
+// Makes device `index` modulo the device count current and returns its ordinal.
+int selectDevice(int index) {
   int count = 0;
   cudaError_t result = cudaGetDeviceCount(&count);
   if (result == cudaErrorInsufficientDriver) {
@@ -42,8 +43,10 @@ void selectDevice() {
     throw std::runtime_error("no CUDA device found: the OptiX backend needs an NVIDIA GPU and its driver");
   }
   checkCuda(result, "counting CUDA devices");
-  checkCuda(cudaSetDevice(0), "selecting CUDA device 0");
+  const int device = (index % count + count) % count;
+  checkCuda(cudaSetDevice(device), ("selecting CUDA device " + std::to_string(device)).c_str());
   checkCuda(cudaFree(nullptr), "creating the CUDA context");
+  return device;
 }
 
 // optixInit loads libnvoptix once per process and fills the function table.
@@ -58,10 +61,10 @@ void logFromOptix(unsigned int level, const char* tag, const char* message, void
 
 }  // namespace
 
-OptixContext::OptixContext() {
-  selectDevice();
+OptixContext::OptixContext(int deviceIndex) {
+  device_ = selectDevice(deviceIndex);
   cudaDeviceProp properties{};
-  checkCuda(cudaGetDeviceProperties(&properties, 0), "reading the GPU's properties");
+  checkCuda(cudaGetDeviceProperties(&properties, device_), "reading the GPU's properties");
   info_.name = properties.name;
   info_.computeMajor = properties.major;
   info_.computeMinor = properties.minor;

@@ -19,7 +19,8 @@ struct GpuInfo {
 
 class OptixContext {
  public:
-  OptixContext();
+  // On CUDA device `deviceIndex` modulo the devices there are.
+  explicit OptixContext(int deviceIndex = 0);
   ~OptixContext();
   OptixContext(const OptixContext&) = delete;
   OptixContext& operator=(const OptixContext&) = delete;
@@ -27,6 +28,7 @@ class OptixContext {
   OptixDeviceContext get() const { return context_; }
   cudaStream_t stream() const { return stream_; }
   const GpuInfo& info() const { return info_; }
+  int deviceOrdinal() const { return device_; }
 
   // One line for start-up: GPU, driver, OptiX ABI and RT-core version.
   std::string describe() const;
@@ -34,6 +36,7 @@ class OptixContext {
  private:
   OptixDeviceContext context_ = nullptr;
   cudaStream_t stream_ = nullptr;
+  int device_ = 0;
   GpuInfo info_;
 };
 

@@ -1,47 +1,20 @@
 #include "scene/loaders/exr_decoding.h"
 
 #include <OpenEXR/ImfArray.h>
-#include <OpenEXR/ImfIO.h>
 #include <OpenEXR/ImfRgbaFile.h>
 
-#include <cstring>
-
+#include "image/exr_memory_stream.h"
 #include "scene/loaders/image_decoding.h"
 #include "scene/loaders/load_diagnostics.h"
 
 namespace candela {
-
-namespace {
-
-// OpenEXR's input stream over bytes in memory.
-class MemoryStream : public Imf::IStream {
- public:
-  MemoryStream(const std::string& name, const uint8_t* data, size_t size)
-      : Imf::IStream(name.c_str()), data_(data), size_(size) {}
-
-  bool read(char c[], int n) override {
-    if (n < 0 || size_ - position_ < size_t(n)) throw std::runtime_error("file is truncated");
-    std::memcpy(c, data_ + position_, size_t(n));
-    position_ += size_t(n);
-    return position_ < size_;
-  }
-  uint64_t tellg() override { return position_; }
-  void seekg(uint64_t position) override { position_ = size_t(std::min<uint64_t>(position, size_)); }
-
- private:
-  const uint8_t* data_;
-  size_t size_;
-  size_t position_ = 0;
-};
-
-}  // namespace
 
 Texture decodeExr(const std::string& name, const uint8_t* data, size_t size) {
   Texture t;
   t.name = name;
   t.channels = 3;
   try {
-    MemoryStream stream(name, data, size);
+    ExrMemoryStream stream(name, data, size);
     Imf::RgbaInputFile file(stream);
     const Imath::Box2i window = file.dataWindow();
     // The window may lie anywhere in int's range: its size and offsets are computed in 64 bits.

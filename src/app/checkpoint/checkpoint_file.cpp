@@ -1,0 +1,162 @@
+#include "app/checkpoint/checkpoint_file.h"
+
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfStringAttribute.h>
+
+#include <charconv>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/atomic_file.h"
+#include "image/exr_memory_stream.h"
+#include "kernel/film.h"
+#include "scene/loaders/file_bytes.h"
+#include "scene/loaders/load_diagnostics.h"
+
+namespace candela {
+
+namespace {
+
+constexpr const char* kFormatAttribute = "candela.checkpoint";
+constexpr const char* kFormatVersion = "1";
+constexpr const char* kNextSampleAttribute = "candela.nextSample";
+constexpr const char* kSamplesPerPixelAttribute = "candela.spp";
+
+// The film's arrays as EXR channels, for writing and for reading alike.
+std::vector<ExrChannel> sumChannels(const FilmSums& film) {
+  const auto vec3 = [](const std::vector<Vec3>& values, const std::string& layer, const char* names) {
+    const char* base = reinterpret_cast<const char*>(values.data());
+    std::vector<ExrChannel> channels;
+    for (int i = 0; i < 3; ++i)
+      channels.push_back({layer + "." + names[i], base + size_t(i) * sizeof(float), sizeof(Vec3)});
+    return channels;
+  };
+  std::vector<ExrChannel> channels = vec3(film.radiance, "sum.radiance", "RGB");
+  channels.push_back({"sum.samples", reinterpret_cast<const char*>(film.samples.data()), sizeof(uint32_t), true});
+  if (film.hasAovs()) {
+    for (ExrChannel& c : vec3(film.emission, "sum.emission", "RGB")) channels.push_back(c);
+    for (ExrChannel& c : vec3(film.albedo, "sum.albedo", "RGB")) channels.push_back(c);
+    for (ExrChannel& c : vec3(film.normal, "sum.normal", "XYZ")) channels.push_back(c);
+    channels.push_back({"sum.depth", reinterpret_cast<const char*>(film.depth.data()), sizeof(float)});
+    channels.push_back(
+        {"sum.luminanceSquares", reinterpret_cast<const char*>(film.luminanceSquares.data()), sizeof(float)});
+  }
+  return channels;
+}
+
+// A checkpoint that cannot be resumed from, told apart from OpenEXR's own exceptions.
+class ResumeError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+[[noreturn]] void cannotResume(const std::string& path, const std::string& why) {
+  throw ResumeError("cannot resume from '" + printableText(path) + "': " + why);
+}
+
+std::string attribute(const Imf::Header& header, const std::string& name) {
+  const auto* a = header.findTypedAttribute<Imf::StringAttribute>(name);
+  return a ? a->value() : std::string();
+}
+
+uint32_t parseCount(const std::string& path, const std::string& name, const std::string& text) {
+  uint32_t value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || text.empty())
+    cannotResume(path, "its attribute " + name + " is not a count");
+  return value;
+}
+
+void checkIdentity(const std::string& path, const Imf::Header& header, const ExrAttributes& identity) {
+  for (const auto& [name, value] : identity) {
+    const std::string stored = attribute(header, name);
+    if (stored != value)
+      cannotResume(path, "it was rendered with " + name.substr(name.find('.') + 1) + " '" + printableText(stored) +
+                             "', this render has '" + printableText(value) + "'");
+  }
+}
+
+}  // namespace
+
+void writeCheckpoint(const std::string& path, const Checkpoint& checkpoint) {
+  const FilmSums& film = checkpoint.film;
+  std::vector<Vec3> means(film.pixelCount());
+  for (size_t i = 0; i < means.size(); ++i) means[i] = filmMean(film.radiance[i], film.samples[i]);
+  const char* base = reinterpret_cast<const char*>(means.data());
+  std::vector<ExrChannel> channels = {{"R", base, sizeof(Vec3)},
+                                      {"G", base + sizeof(float), sizeof(Vec3)},
+                                      {"B", base + 2 * sizeof(float), sizeof(Vec3)}};
+  for (ExrChannel& c : sumChannels(film)) channels.push_back(c);
+  ExrAttributes attributes = {{kFormatAttribute, kFormatVersion},
+                              {kNextSampleAttribute, std::to_string(checkpoint.nextSample)},
+                              {kSamplesPerPixelAttribute, std::to_string(checkpoint.samplesPerPixel)}};
+  attributes.insert(attributes.end(), checkpoint.identity.begin(), checkpoint.identity.end());
+  AtomicFile file(path);
+  writeExrChannelsTo(file, film.width, film.height, channels, attributes);
+  file.commit();
+}
+
+Checkpoint readCheckpoint(const std::string& path, const ExrAttributes& identity, uint32_t width, uint32_t height,
+                          bool withAovs) {
+  std::vector<uint8_t> bytes;
+  try {
+    bytes = readFileBytes(path);
+  } catch (const LoadError& e) {
+    throw std::runtime_error(std::string("cannot resume: ") + e.what());
+  }
+  Checkpoint checkpoint;
+  try {
+    ExrMemoryStream stream(path, bytes.data(), bytes.size());
+    Imf::InputFile exr(stream);
+    const Imf::Header& header = exr.header();
+    if (attribute(header, kFormatAttribute) != kFormatVersion)
+      cannotResume(path, "it is not a candela checkpoint (written with --checkpoint)");
+    checkIdentity(path, header, identity);
+    checkpoint.identity = identity;
+    checkpoint.nextSample = parseCount(path, kNextSampleAttribute, attribute(header, kNextSampleAttribute));
+    checkpoint.samplesPerPixel =
+        parseCount(path, kSamplesPerPixelAttribute, attribute(header, kSamplesPerPixelAttribute));
+    const Imath::Box2i window = header.dataWindow();
+    if (window.min.x != 0 || window.min.y != 0 || int64_t(window.max.x) + 1 != width ||
+        int64_t(window.max.y) + 1 != height)
+      cannotResume(path, "its pixels are not the " + std::to_string(width) + "x" + std::to_string(height) +
+                             " its attributes say");
+    if (withAovs != (header.channels().findChannel("sum.albedo.R") != nullptr))
+      cannotResume(path, withAovs ? "its film has no AOV sums, which this render's --aov or --denoise needs"
+                                  : "its film has AOV sums: resume with the --aov or --denoise it was rendered with");
+    checkpoint.film = FilmSums::zero(width, height, withAovs);
+    Imf::FrameBuffer frame;
+    for (const ExrChannel& c : sumChannels(checkpoint.film)) {
+      const Imf::Channel* stored = header.channels().findChannel(c.name);
+      const Imf::PixelType type = c.isUint ? Imf::UINT : Imf::FLOAT;
+      if (!stored || stored->type != type || stored->xSampling != 1 || stored->ySampling != 1)
+        cannotResume(path, "its channel " + c.name + " is missing or not a full-resolution " +
+                               (c.isUint ? "unsigned integer" : "float") + " channel");
+      frame.insert(c.name, Imf::Slice(type, const_cast<char*>(c.base), c.xStride, c.xStride * width));
+    }
+    exr.setFrameBuffer(frame);
+    exr.readPixels(window.min.y, window.max.y);
+  } catch (const ResumeError&) {
+    throw;
+  } catch (const std::exception& e) {
+    cannotResume(path, std::string("not a readable OpenEXR file (") + e.what() + ")");
+  }
+  // What a render adds up is finite (kernel/film_accumulation.h): a file that holds more was not written so.
+  const FilmSums& f = checkpoint.film;
+  for (const std::vector<Vec3>* sums : {&f.radiance, &f.emission, &f.albedo, &f.normal})
+    for (const Vec3& v : *sums)
+      if (!isFinite(v)) cannotResume(path, "its sums hold values that are not finite numbers");
+  for (const std::vector<float>* sums : {&f.depth, &f.luminanceSquares})
+    for (float v : *sums)
+      if (!std::isfinite(v)) cannotResume(path, "its sums hold values that are not finite numbers");
+  for (uint32_t count : checkpoint.film.samples)
+    if (count > checkpoint.nextSample)
+      cannotResume(path, "a pixel holds more samples than the " + std::to_string(checkpoint.nextSample) +
+                             " sample indices it says were rendered");
+  return checkpoint;
+}
+
+}  // namespace candela

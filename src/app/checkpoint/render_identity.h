@@ -1,0 +1,14 @@
+#pragma once
+#include "app/render_job.h"
+#include "image/image_io.h"
+
+namespace candela {
+
+// What makes a render's samples what they are, as named text values: the scene and the files it takes, the
+// camera, size, path depth, seed, sampler, material overrides, texture limits and whether the film has AOV sums.
+// Two renders with the same identity draw the same samples at the same sample indices, so a checkpoint of one
+// continues as the other. `job` holds the settings as rendered (the scene's render hints applied). The sample
+// count, backend, denoiser and outputs are not part of it: they may change between a render and its resumption.
+ExrAttributes renderIdentity(const RenderJob& job, bool withAovs);
+
+}  // namespace candela

@@ -1,0 +1,18 @@
+#pragma once
+#include <memory>
+
+#include "app/schedule/sample_schedule.h"
+
+namespace candela {
+
+// The schedules of a distributed render's ranks. Rank 0 hands out batches of sample indices from its dispenser
+// on request, so that a faster rank takes more, and renders its own share one sample at a time between the
+// requests; the other ranks ask for their next batch as they start one, so that its answer is there when they
+// finish. At a checkpoint or the end, rank 0 answers every request with the pause: then every handed-out batch
+// is rendered, and all ranks add up their films onto rank 0 (film_reduction.h), which writes. Rank 0 shows the
+// progress of all ranks.
+std::unique_ptr<SampleSchedule> makeCoordinatorSchedule(const SampleDispenser& dispenser, int ranks, bool showProgress,
+                                                        double timeoutSeconds);
+std::unique_ptr<SampleSchedule> makeWorkerSchedule(double timeoutSeconds);
+
+}  // namespace candela

@@ -1,0 +1,61 @@
+#include "app/distributed/film_reduction.h"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "app/distributed/mpi_session.h"
+
+namespace candela {
+
+namespace {
+
+constexpr size_t kSliceValues = size_t(1) << 20;  // doubles per reduction: 8 MiB
+
+// Adds `count` values of type T at `values` over the ranks, onto rank 0, a slice at a time.
+template <class T>
+void reduceValues(T* values, size_t count, int rank, double timeoutSeconds) {
+  std::vector<double> send(std::min(count, kSliceValues)), receive(rank == 0 ? send.size() : 0);
+  for (size_t begin = 0; begin < count; begin += kSliceValues) {
+    const size_t n = std::min(kSliceValues, count - begin);
+    std::copy(values + begin, values + begin + n, send.begin());
+    MPI_Request request;
+    checkMpi(MPI_Ireduce(send.data(), rank == 0 ? receive.data() : nullptr, int(n), MPI_DOUBLE, MPI_SUM, 0,
+                         MPI_COMM_WORLD, &request),
+             "adding up the films");
+    waitActively(request, timeoutSeconds, "adding up the films");
+    if (rank == 0)
+      for (size_t i = 0; i < n; ++i) values[begin + i] = T(receive[i]);
+  }
+}
+
+float* floats(std::vector<Vec3>& v) { return v.empty() ? nullptr : &v[0].x; }
+
+}  // namespace
+
+double reduceFilm(FilmSums& film, FrameStats& stats, double timeoutSeconds) {
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Request arrived;
+  checkMpi(MPI_Ibarrier(MPI_COMM_WORLD, &arrived), "waiting for the ranks' films");
+  waitPolitely(arrived, timeoutSeconds, "waiting for the ranks' films");
+  const double start = MPI_Wtime();
+  for (std::vector<Vec3>* v : {&film.radiance, &film.emission, &film.albedo, &film.normal})
+    reduceValues(floats(*v), v->size() * 3, rank, timeoutSeconds);
+  reduceValues(film.samples.data(), film.samples.size(), rank, timeoutSeconds);
+  reduceValues(film.depth.data(), film.depth.size(), rank, timeoutSeconds);
+  reduceValues(film.luminanceSquares.data(), film.luminanceSquares.size(), rank, timeoutSeconds);
+  unsigned long long counts[2] = {stats.rays, stats.invalidSamples}, sums[2] = {0, 0};
+  MPI_Request request;
+  checkMpi(MPI_Ireduce(counts, sums, 2, MPI_UNSIGNED_LONG_LONG, MPI_SUM, 0, MPI_COMM_WORLD, &request),
+           "adding up the ray counts");
+  waitActively(request, timeoutSeconds, "adding up the ray counts");
+  if (rank == 0) {
+    stats.rays = sums[0];
+    stats.invalidSamples = sums[1];
+  }
+  return MPI_Wtime() - start;
+}
+
+}  // namespace candela

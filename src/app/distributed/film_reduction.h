@@ -1,0 +1,14 @@
+#pragma once
+#include "backends/backend.h"
+#include "backends/film_sums.h"
+
+namespace candela {
+
+// Adds every rank's film and statistics onto rank 0, in double precision: the result differs from a single
+// process's sums only in the order of the additions. Collective over MPI_COMM_WORLD. On rank 0 `film` and `stats`
+// become the sums; elsewhere they are left as they are. The film goes in slices of a few MiB, so that the
+// reduction needs little memory beyond the film's. Returns the seconds the additions took, from when every rank
+// had come to them.
+double reduceFilm(FilmSums& film, FrameStats& stats, double timeoutSeconds);
+
+}  // namespace candela

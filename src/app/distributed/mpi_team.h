@@ -1,0 +1,23 @@
+#pragma once
+#include "app/distributed/mpi_session.h"
+#include "app/schedule/render_team.h"
+
+namespace candela {
+
+// The ranks of MPI_COMM_WORLD as a render team: rank 0 writes; each rank takes the GPU of its rank on its node.
+class MpiTeam final : public RenderTeam {
+ public:
+  // `timeoutSeconds`: how long a rank waits for another before it ends the job (--rank-timeout).
+  MpiTeam(const MpiSession& session, double timeoutSeconds) : session_(session), timeout_(timeoutSeconds) {}
+
+  bool writes() const override { return session_.rank() == 0; }
+  int localIndex() const override { return session_.localRank(); }
+  void agree(std::exception_ptr failure) override;
+  std::unique_ptr<SampleSchedule> schedule(const SampleDispenser& dispenser, bool showProgress) override;
+
+ private:
+  const MpiSession& session_;
+  double timeout_;
+};
+
+}  // namespace candela

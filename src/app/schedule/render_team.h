@@ -1,0 +1,34 @@
+#pragma once
+#include <exception>
+#include <memory>
+#include <stdexcept>
+
+#include "app/schedule/sample_schedule.h"
+
+namespace candela {
+
+// A failure every process of a team learnt of together (RenderTeam::agree): the writer's carries the one line to
+// print, the others' is empty. Each exits with status 1.
+class AgreedFailure : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The processes that render one image together (distributed/mpi_team.h); a render without one is a single
+// process's. Every process loads the scene and renders a share of the sample indices; one of them writes.
+class RenderTeam {
+ public:
+  virtual ~RenderTeam() = default;
+  // Whether this process writes the image and checkpoints, and reads the checkpoint it resumes from.
+  virtual bool writes() const = 0;
+  // Which of its node's GPUs this process takes (its rank among the processes on its node).
+  virtual int localIndex() const = 0;
+  // Every process calls it after a step that may fail on some of them, with its failure or null. Returns when
+  // none failed; otherwise every process throws AgreedFailure, the writer's with the first failing process's
+  // message and which process it was.
+  virtual void agree(std::exception_ptr failure) = 0;
+  // The schedule of this process; the writer's hands out `dispenser`'s indices to all.
+  virtual std::unique_ptr<SampleSchedule> schedule(const SampleDispenser& dispenser, bool showProgress) = 0;
+};
+
+}  // namespace candela
