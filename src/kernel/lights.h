@@ -1,5 +1,8 @@
 #pragma once
 #include "core/sampling.h"
+#include "kernel/hit.h"
+#include "kernel/light_bvh.h"
+#include "kernel/render_settings.h"
 #include "kernel/scene_view.h"
 
 namespace candela {
@@ -25,17 +28,40 @@ CANDELA_FN float environmentPdf(const SceneView& scene, Vec3 direction) {
   return scene.environmentSelectProbability * environmentDirectionPdf(scene.environment, direction);
 }
 
-// Solid-angle density with which sampleLight() picks a point on an emissive triangle seen from `from`.
-// Choosing a triangle by power and then a point by area gives an area density of pi * luminance(Le) / total
-// power, independent of which triangle it is.
-CANDELA_FN float triangleLightPdf(const SceneView& scene, Vec3 emittedRadiance, float distance, float cosAtLight) {
+// Solid-angle density of a point on a light at `distance` from the shading point, seen at cosAtLight from the
+// light's normal, whose area density is `areaPdf`.
+CANDELA_FN float solidAnglePdf(float areaPdf, float distance, float cosAtLight) {
   if (cosAtLight <= 0.0f) return 0.0f;
-  float areaPdf = (1.0f - scene.environmentSelectProbability) * scene.lightAreaPdfScale * luminance(emittedRadiance);
   return areaPdf * distance * distance / cosAtLight;
 }
 
-// Samples the environment or one emissive triangle (one-sided: emits along its geometric normal).
-CANDELA_FN LightSample sampleLight(const SceneView& scene, Vec3 from, float uSelect, Vec2 u) {
+// Area density, within the triangle choice, with which the power table picks a point on a triangle emitting
+// `emittedRadiance`: choosing a triangle by power and then a point by area gives pi * luminance(Le) / total
+// power, independent of which triangle it is.
+CANDELA_FN float powerTableAreaPdf(const SceneView& scene, Vec3 emittedRadiance) {
+  return scene.lightAreaPdfScale * luminance(emittedRadiance);
+}
+
+// Solid-angle density with which sampleLight() picks a point on the emissive triangle `hit` lies on, seen from
+// ctx. With the power table the density follows from the untextured emission alone; the BVH needs the light.
+CANDELA_FN float triangleLightPdf(const SceneView& scene, LightSamplerKind kind, LightSampleContext ctx, const Hit& hit,
+                                  Vec3 emittedRadiance, float distance, float cosAtLight) {
+  if (cosAtLight <= 0.0f) return 0.0f;
+  float areaPdf;
+  if (kind == LightSamplerKind::Power) {
+    areaPdf = powerTableAreaPdf(scene, emittedRadiance);
+  } else {
+    uint32_t index = findLightIndex(scene, hit.instanceId, hit.primitiveId);
+    if (index == scene.lightCount) return 0.0f;
+    areaPdf = lightBvhPmf(scene, ctx, index) / scene.lights[index].area;
+  }
+  return solidAnglePdf((1.0f - scene.environmentSelectProbability) * areaPdf, distance, cosAtLight);
+}
+
+// Samples the environment or one emissive triangle (one-sided: emits along its geometric normal), the triangle
+// chosen as `kind` says for the shading point ctx.
+CANDELA_FN LightSample sampleLight(const SceneView& scene, LightSamplerKind kind, LightSampleContext ctx, float uSelect,
+                                   Vec2 u) {
   LightSample ls;
   float pEnv = scene.environmentSelectProbability;
   if (uSelect < pEnv) {
@@ -48,19 +74,27 @@ CANDELA_FN LightSample sampleLight(const SceneView& scene, Vec3 from, float uSel
   }
   if (scene.lightCount == 0) return ls;
   float uTri = fminf((uSelect - pEnv) / (1.0f - pEnv), 0.99999994f);
-  ls.lightIndex = uint32_t(findInterval(scene.lightCdf, int(scene.lightCount), uTri));
+  float areaPdf;
+  if (kind == LightSamplerKind::Power) {
+    ls.lightIndex = uint32_t(findInterval(scene.lightCdf, int(scene.lightCount), uTri));
+    areaPdf = powerTableAreaPdf(scene, scene.lights[ls.lightIndex].radiance);
+  } else {
+    SampledLight picked = sampleLightBvh(scene, ctx, uTri);
+    if (picked.pmf == 0.0f) return ls;
+    ls.lightIndex = picked.index;
+    areaPdf = picked.pmf / scene.lights[ls.lightIndex].area;
+  }
   const LightTriangle& light = scene.lights[ls.lightIndex];
   Vec2 b = sampleUniformTriangle(u);
   ls.barycentrics = b;
   Vec3 p = light.p0 + light.edge1 * b.x + light.edge2 * b.y;
-  Vec3 toLight = p - from;
+  Vec3 toLight = p - ctx.p;
   float dist2 = dot(toLight, toLight);
   if (dist2 <= 0.0f) return ls;
   ls.distance = sqrtf(dist2);
   ls.wi = toLight / ls.distance;
   Vec3 n = normalize(cross(light.edge1, light.edge2)) * light.frontSign;
-  float cosAtLight = -dot(n, ls.wi);
-  ls.pdf = triangleLightPdf(scene, light.radiance, ls.distance, cosAtLight);
+  ls.pdf = solidAnglePdf((1.0f - pEnv) * areaPdf, ls.distance, -dot(n, ls.wi));
   ls.radiance = light.radiance;
   ls.valid = ls.pdf > 0.0f;
   return ls;

@@ -5,6 +5,10 @@
 
 namespace candela {
 
+// How next-event estimation picks an emissive triangle: through the light BVH, by how much each can light the
+// shading point, or by emitted power alone from one table.
+enum class LightSamplerKind : uint32_t { Bvh, Power };
+
 struct RenderSettings {
   uint32_t width = 512;
   uint32_t height = 512;
@@ -12,6 +16,7 @@ struct RenderSettings {
   uint32_t rouletteDepth = 3;  // bounces before Russian roulette may end a path
   uint32_t seed = 0;
   SamplerKind sampler = SamplerKind::Sobol;
+  LightSamplerKind lightSampler = LightSamplerKind::Bvh;
 };
 
 }  // namespace candela
