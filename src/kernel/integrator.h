@@ -92,8 +92,7 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
     if (!isBlack(material.emission) && cosAtSurface > 0.0f) {
       float w = 1.0f;
       if (depth > 0 && !specularBounce) {
-        // The light sampler chose this triangle by its untextured emission; its density must be the same here.
-        float lightPdf = triangleLightPdf(scene, settings.lightSampler, {lastScatter, lastNormal}, hit, stored.emission,
+        float lightPdf = triangleLightPdf(scene, settings.lightSampler, {lastScatter, lastNormal}, hit,
                                           length(si.position - lastScatter), cosAtSurface);
         w = powerHeuristic(bsdfPdf, lightPdf);
       }

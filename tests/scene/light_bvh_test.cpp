@@ -216,12 +216,13 @@ TEST_F(LightBvhTest, FindsEveryLightByItsTriangleAndNothingElse) {
 }
 
 // Next-event estimation's solid-angle density of a sampled light point must be the one the path tracer weighs
-// a BSDF sample that hits the same point with, or MIS is biased.
+// a BSDF sample that hits the same point with, or MIS is biased; for triangles sampled by area and by solid
+// angle alike.
 TEST_F(LightBvhTest, LightSamplePdfIsTheDensityOfHittingThatPoint) {
   std::mt19937 rng(4);
   std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
   for (LightSamplerKind kind : {LightSamplerKind::Bvh, LightSamplerKind::Power}) {
-    int checked = 0;
+    int checked = 0, bySolidAngle = 0;
     for (const LightSampleContext& ctx : randomContexts(100, 7)) {
       for (int i = 0; i < 20; ++i) {
         LightSample ls = sampleLight(view_, kind, ctx, uniform(rng), {uniform(rng), uniform(rng)});
@@ -231,12 +232,15 @@ TEST_F(LightBvhTest, LightSamplePdfIsTheDensityOfHittingThatPoint) {
         hit.instanceId = light.instanceId;
         hit.primitiveId = light.primitiveId;
         Vec3 n = normalize(cross(light.edge1, light.edge2)) * light.frontSign;
-        float pdf = triangleLightPdf(view_, kind, ctx, hit, light.radiance, ls.distance, -dot(n, ls.wi));
+        float pdf = triangleLightPdf(view_, kind, ctx, hit, ls.distance, -dot(n, ls.wi));
         EXPECT_NEAR(pdf, ls.pdf, 1e-4f * ls.pdf);
         ++checked;
+        if (sphericalSamplingSolidAngle(light, ctx.p) > 0.0f) ++bySolidAngle;
       }
     }
     EXPECT_GT(checked, 1000);
+    EXPECT_GT(bySolidAngle, 100);
+    EXPECT_LT(bySolidAngle, checked - 100);
   }
 }
 
