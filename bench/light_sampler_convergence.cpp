@@ -5,11 +5,12 @@
 //                             [--reference-image ref.exr]
 // Renders a reference with the light BVH and the independent sampler at --reference-spp (its own seed), then
 // for each light sampler and each power of two up to --max-spp the mean relMSE over --seeds renders (Sobol
-// sampler) against it and the median time of one render at that count. Prints one JSON object per line: the
+// sampler) against it and the fastest time of one render at that count. Prints one JSON object per line: the
 // curves, the equal-sample ratios (power table's relMSE over the BVH's) and the equal-time ratio at the time of
 // the power table's 16 spp (log-log interpolation of the BVH's curve). Results: docs/performance.md.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <map>
 #include <vector>
@@ -59,25 +60,28 @@ int run(const Options& options) {
       renderer.backend->name().c_str(), renderer.backend->deviceName().c_str());
   std::fflush(stdout);
 
+  // The two light samplers take turns, render by render, so that both see the same load on a shared machine;
+  // each point's time is the fastest of its seeds' renders, the least disturbed.
   std::map<LightSamplerKind, std::vector<Point>> curves;
+  const LightSamplerKind kinds[] = {LightSamplerKind::Power, LightSamplerKind::Bvh};
   renderer.settings.sampler = SamplerKind::Sobol;
-  for (LightSamplerKind kind : {LightSamplerKind::Power, LightSamplerKind::Bvh}) {
-    renderer.settings.lightSampler = kind;
-    for (uint32_t spp = 1; spp <= options.maxSpp; spp *= 2) {
-      std::vector<double> times;
-      double errorSum = 0.0;
-      for (uint32_t seed = 0; seed < options.seeds; ++seed) {
+  for (uint32_t spp = 1; spp <= options.maxSpp; spp *= 2) {
+    std::map<LightSamplerKind, double> fastest, errorSum;
+    for (uint32_t seed = 0; seed < options.seeds; ++seed)
+      for (LightSamplerKind kind : kinds) {
         double ms = 0.0;
+        renderer.settings.lightSampler = kind;
         renderer.settings.seed = seed + 1;
-        errorSum += bench::relMse(renderer.render(spp, ms), reference);
-        times.push_back(ms);
+        errorSum[kind] += bench::relMse(renderer.render(spp, ms), reference);
+        fastest[kind] = seed == 0 ? ms : std::min(fastest[kind], ms);
       }
-      Point p{spp, bench::median(times), errorSum / options.seeds};
+    for (LightSamplerKind kind : kinds) {
+      Point p{spp, fastest[kind], errorSum[kind] / options.seeds};
       curves[kind].push_back(p);
       std::printf("{\"light_sampler\": \"%s\", \"spp\": %u, \"milliseconds\": %.3f, \"relmse\": %.6g}\n",
                   lightSamplerName(kind), spp, p.milliseconds, p.relMse);
-      std::fflush(stdout);
     }
+    std::fflush(stdout);
   }
   const std::vector<Point>&power = curves[LightSamplerKind::Power], &bvh = curves[LightSamplerKind::Bvh];
   for (size_t i = 0; i < power.size(); ++i)

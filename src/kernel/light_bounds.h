@@ -15,6 +15,31 @@ struct LightBounds {
   uint32_t twoSided = 0;
 };
 
+// LightBounds as the sampler reads them: the box by its bounding sphere, which is all the importance needs of
+// it, and the cone's sine precomputed.
+struct CompactLightBounds {
+  Vec3 centre;
+  float radius = 0.0f;  // half the box's diagonal
+  Vec3 w{0, 0, 1};
+  float phi = 0.0f;
+  float cosThetaO = 1.0f, sinThetaO = 0.0f;
+  float cosThetaE = 0.0f;
+  uint32_t twoSided = 0;
+};
+
+CANDELA_FN CompactLightBounds compact(const LightBounds& b) {
+  CompactLightBounds c;
+  c.centre = (b.lo + b.hi) * 0.5f;
+  c.radius = 0.5f * length(b.hi - b.lo);
+  c.w = b.w;
+  c.phi = b.phi;
+  c.cosThetaO = b.cosThetaO;
+  c.sinThetaO = sqrtf(fmaxf(0.0f, 1.0f - b.cosThetaO * b.cosThetaO));
+  c.cosThetaE = b.cosThetaE;
+  c.twoSided = b.twoSided;
+  return c;
+}
+
 // Where a light is sampled from: the shading point and its normal (zero where there is no surface).
 struct LightSampleContext {
   Vec3 p;
@@ -39,29 +64,29 @@ CANDELA_FN float sinSubClamped(float sinA, float cosA, float sinB, float cosB) {
 // over squared distance, times the cosine of the smallest angle between the emission cone and the direction to
 // ctx, and of the smallest angle between the surface normal and any direction to the box. It is zero only where
 // no light in `b` can reach ctx.
-CANDELA_FN float lightImportance(const LightBounds& b, LightSampleContext ctx) {
+CANDELA_FN float lightImportance(const CompactLightBounds& b, LightSampleContext ctx) {
   using namespace detail;
-  Vec3 centre = (b.lo + b.hi) * 0.5f;
-  Vec3 toPoint = ctx.p - centre;
+  Vec3 toPoint = ctx.p - b.centre;
   float dist2 = dot(toPoint, toPoint);
-  // Clamped as pbrt does, so that points in or near the box do not get unbounded importance.
-  float d2 = fmaxf(dist2, length(b.hi - b.lo) * 0.5f);
+  // Clamped as pbrt does (to half the box's diagonal), so that points in or near the box do not get unbounded
+  // importance.
+  float d2 = fmaxf(dist2, b.radius);
+  float invDist = dist2 > 0.0f ? 1.0f / sqrtf(dist2) : 0.0f;
 
   // Angle between the cone axis and the direction from the box to the point.
-  Vec3 wi = dist2 > 0.0f ? toPoint / sqrtf(dist2) : Vec3{0, 0, 0};
+  Vec3 wi = toPoint * invDist;
   float cosThetaW = dot(b.w, wi);
   if (b.twoSided) cosThetaW = fabsf(cosThetaW);
   float sinThetaW = safeSqrt(1.0f - cosThetaW * cosThetaW);
 
   // Half-angle of the cone of directions from the point to the box's bounding sphere; all of them at the inside.
-  float radius2 = 0.25f * dot(b.hi - b.lo, b.hi - b.lo);
-  float cosThetaB = dist2 < radius2 ? -1.0f : safeSqrt(1.0f - radius2 / dist2);
-  float sinThetaB = safeSqrt(1.0f - cosThetaB * cosThetaB);
+  bool inside = dist2 < b.radius * b.radius;
+  float sinThetaB = inside ? 0.0f : b.radius * invDist;
+  float cosThetaB = inside ? -1.0f : safeSqrt(1.0f - sinThetaB * sinThetaB);
 
   // The smallest angle between an emission direction and a direction to the point, against the emission cutoff.
-  float sinThetaO = safeSqrt(1.0f - b.cosThetaO * b.cosThetaO);
-  float cosThetaX = cosSubClamped(sinThetaW, cosThetaW, sinThetaO, b.cosThetaO);
-  float sinThetaX = sinSubClamped(sinThetaW, cosThetaW, sinThetaO, b.cosThetaO);
+  float cosThetaX = cosSubClamped(sinThetaW, cosThetaW, b.sinThetaO, b.cosThetaO);
+  float sinThetaX = sinSubClamped(sinThetaW, cosThetaW, b.sinThetaO, b.cosThetaO);
   float cosThetaP = cosSubClamped(sinThetaX, cosThetaX, sinThetaB, cosThetaB);
   if (cosThetaP <= b.cosThetaE) return 0.0f;
 

@@ -40,7 +40,7 @@ struct LightTriangle {
 // One node of the light BVH (pbrt-v4's BVHLightSampler), flat in depth-first order: an interior node's first
 // child follows it and its second is at childOrLight; a leaf holds the one light at childOrLight in `lights`.
 struct LightBvhNode {
-  LightBounds bounds;
+  CompactLightBounds bounds;
   uint32_t childOrLight = 0;
   uint32_t isLeaf = 0;
 };

@@ -83,12 +83,12 @@ class Builder {
   LightBounds build(std::vector<BuildLight>& lights, size_t start, size_t end, uint64_t trail, int depth) {
     if (end - start == 1) {
       LightBvhNode leaf;
-      leaf.bounds = lights[start].bounds;
+      leaf.bounds = compact(lights[start].bounds);
       leaf.childOrLight = lights[start].index;
       leaf.isLeaf = 1;
       bvh_.nodes.push_back(leaf);
       bvh_.bitTrails[lights[start].index] = trail;
-      return leaf.bounds;
+      return lights[start].bounds;
     }
     size_t mid = split(lights, start, end, depth);
     size_t nodeIndex = bvh_.nodes.size();
@@ -96,8 +96,9 @@ class Builder {
     LightBounds first = build(lights, start, mid, trail, depth + 1);
     bvh_.nodes[nodeIndex].childOrLight = uint32_t(bvh_.nodes.size());
     LightBounds second = build(lights, mid, end, trail | (uint64_t(1) << depth), depth + 1);
-    bvh_.nodes[nodeIndex].bounds = unite(first, second);
-    return bvh_.nodes[nodeIndex].bounds;
+    LightBounds both = unite(first, second);
+    bvh_.nodes[nodeIndex].bounds = compact(both);
+    return both;
   }
 
  private:
