@@ -8,18 +8,18 @@
 // sampler's relMSE at the same time (log-log interpolation of its curve). Results: docs/performance.md.
 #include <CLI/CLI.hpp>
 
-#include <algorithm>
-#include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <map>
 #include <vector>
 
 #include "app/backend_factory.h"
 #include "app/scene_loading.h"
+#include "convergence.h"
 
 namespace candela {
 namespace {
+
+using bench::Point;
 
 struct Options {
   std::string scene = "cornell-box";
@@ -29,61 +29,10 @@ struct Options {
   uint32_t referenceSpp = 65536, maxSpp = 1024, seeds = 4;
 };
 
-struct Point {
-  uint32_t spp = 0;
-  double milliseconds = 0.0;  // median over the seeds
-  double relMse = 0.0;        // mean over the seeds
-};
-
-// relMSE as pbrt-v4's imgtool and the denoising literature use it: squared error over (reference^2 + 0.01).
-double relMse(const Image& image, const Image& reference) {
-  double sum = 0.0;
-  for (size_t i = 0; i < image.pixels.size(); ++i)
-    for (int c = 0; c < 3; ++c) {
-      double r = (&reference.pixels[i].x)[c], d = (&image.pixels[i].x)[c] - r;
-      sum += d * d / (r * r + 0.01);
-    }
-  return sum / (3.0 * double(image.pixels.size()));
-}
-
-struct Renderer {
-  std::unique_ptr<Backend> backend;
-  RenderSettings settings;
-
-  Image render(SamplerKind kind, uint32_t seed, uint32_t spp, double& milliseconds) {
-    settings.sampler = kind;
-    settings.seed = seed;
-    backend->setSettings(settings);
-    backend->render(1);              // the first launch after a change is not timed
-    backend->setSettings(settings);  // restarts the film
-    auto start = std::chrono::steady_clock::now();
-    for (uint32_t s = 0; s < spp; ++s) backend->render(1);
-    milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    return backend->readImage();
-  }
-};
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
-// The curve's relMSE at `milliseconds`, interpolated linearly in log-log between the points around it.
-double relMseAtTime(const std::vector<Point>& curve, double milliseconds) {
-  for (size_t i = 1; i < curve.size(); ++i)
-    if (curve[i].milliseconds >= milliseconds) {
-      const Point &a = curve[i - 1], &b = curve[i];
-      double t =
-          (std::log(milliseconds) - std::log(a.milliseconds)) / (std::log(b.milliseconds) - std::log(a.milliseconds));
-      return std::exp(std::log(a.relMse) + t * (std::log(b.relMse) - std::log(a.relMse)));
-    }
-  return curve.back().relMse;
-}
-
 int run(const Options& options) {
   Scene scene = loadScene(options.scene, {options.environment, {}});
   std::string why;
-  Renderer renderer{createBackend(options.backend, why), {}};
+  bench::Renderer renderer{createBackend(options.backend, why), {}};
   std::fprintf(stderr, "%s\n", why.c_str());
   renderer.settings.width = options.width;
   renderer.settings.height = options.height;
@@ -93,15 +42,7 @@ int run(const Options& options) {
   double referenceMs = 0.0;
   renderer.settings.sampler = SamplerKind::Independent;
   renderer.settings.seed = 1000003;
-  renderer.backend->setSettings(renderer.settings);
-  auto start = std::chrono::steady_clock::now();
-  for (uint32_t done = 0; done < options.referenceSpp;) {
-    uint32_t batch = std::min(64u, options.referenceSpp - done);
-    renderer.backend->render(batch);
-    done += batch;
-  }
-  referenceMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  Image reference = renderer.backend->readImage();
+  Image reference = renderer.renderReference(options.referenceSpp, referenceMs);
   std::printf("{\"reference_spp\": %u, \"reference_seconds\": %.1f, \"backend\": \"%s\", \"device\": \"%s\"}\n",
               options.referenceSpp, referenceMs / 1000.0, renderer.backend->name().c_str(),
               renderer.backend->deviceName().c_str());
@@ -114,10 +55,12 @@ int run(const Options& options) {
       double errorSum = 0.0;
       for (uint32_t seed = 0; seed < options.seeds; ++seed) {
         double ms = 0.0;
-        errorSum += relMse(renderer.render(kind, seed + 1, spp, ms), reference);
+        renderer.settings.sampler = kind;
+        renderer.settings.seed = seed + 1;
+        errorSum += bench::relMse(renderer.render(spp, ms), reference);
         times.push_back(ms);
       }
-      Point p{spp, median(times), errorSum / options.seeds};
+      Point p{spp, bench::median(times), errorSum / options.seeds};
       curves[kind].push_back(p);
       std::printf("{\"sampler\": \"%s\", \"spp\": %u, \"milliseconds\": %.3f, \"relmse\": %.6g}\n", name, spp,
                   p.milliseconds, p.relMse);
@@ -127,7 +70,7 @@ int run(const Options& options) {
   const std::vector<Point>& independent = curves[SamplerKind::Independent];
   if (options.maxSpp >= 32) {
     const Point& at16 = independent[4];
-    double sobol = relMseAtTime(curves[SamplerKind::Sobol], at16.milliseconds);
+    double sobol = bench::relMseAtTime(curves[SamplerKind::Sobol], at16.milliseconds);
     std::printf(
         "{\"equal_time_ms\": %.3f, \"independent_relmse\": %.6g, \"sobol_relmse\": %.6g, "
         "\"independent_over_sobol\": %.3f}\n",

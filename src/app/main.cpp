@@ -84,6 +84,16 @@ void addTextureFilterOption(CLI::App& cmd, TextureFilter& filter) {
                  "to 16 lookups along the footprint)")
       ->transform(CLI::CheckedTransformer(filters))
       ->default_str("anisotropic");
+void addLightSamplerOption(CLI::App& cmd, LightSamplerKind& lightSampler) {
+  cmd.add_option_function<std::string>(
+         "--light-sampler",
+         [&lightSampler](const std::string& name) {
+           lightSampler = name == "bvh" ? LightSamplerKind::Bvh : LightSamplerKind::Power;
+         },
+         "How next-event estimation picks an emissive triangle: bvh (a light BVH, by how much each can light the "
+         "shading point) or power (by emitted power alone)")
+      ->check(CLI::IsMember({"bvh", "power"}))
+      ->default_str("bvh");
 }
 
 void addTextureLimitOptions(CLI::App& cmd, TextureLimits& limits) {
@@ -126,6 +136,7 @@ void addRenderOptions(CLI::App& cmd, RenderJob& job) {
       ->capture_default_str();
   addSamplerOption(cmd, job.settings.sampler);
   addTextureFilterOption(cmd, job.settings.textureFilter);
+  addLightSamplerOption(cmd, job.settings.lightSampler);
   // Validated while parsing, so a bad value is a usage error (exit status 2) like any other.
   auto validated = [](auto apply) {
     return CLI::Validator(
@@ -289,6 +300,7 @@ int runBench(const RenderJob& job) {
       {"max_depth", rendered.maxDepth},
       {"sampler", rendered.sampler == SamplerKind::Sobol ? "sobol" : "independent"},
       {"texture_filter", textureFilterName(rendered.textureFilter)},
+      {"light_sampler", rendered.lightSampler == LightSamplerKind::Bvh ? "bvh" : "power"},
       {"backend", outcome.backendName},
       {"device", outcome.deviceName},
       {"seconds", outcome.seconds},
@@ -374,6 +386,7 @@ void addViewOptions(CLI::App& cmd, ViewerOptions& options, std::string& toneMapp
       ->capture_default_str();
   cmd.add_option("--seed", options.seed, "Seed of the random sequence")->capture_default_str();
   addSamplerOption(cmd, options.sampler);
+  addLightSamplerOption(cmd, options.lightSampler);
   cmd.add_option("--spp-per-frame", options.samplesPerFrame, "Samples per pixel added each frame at rest")
       ->check(CLI::Range(1u, 1024u))
       ->capture_default_str();
@@ -439,6 +452,7 @@ void addServeOptions(CLI::App& cmd, ServeOptions& options, std::string& toneMapp
       ->capture_default_str();
   cmd.add_option("--seed", options.seed, "Seed of the random sequence")->capture_default_str();
   addSamplerOption(cmd, options.sampler);
+  addLightSamplerOption(cmd, options.lightSampler);
   cmd.add_option("--spp-per-frame", options.samplesPerFrame, "Samples per pixel added each frame at rest")
       ->check(CLI::Range(1u, 64u))
       ->capture_default_str();

@@ -61,6 +61,7 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
   bool cameraChain = true;        // every bounce so far was off a delta lobe: emission found now is seen directly
   float bsdfPdf = 0.0f;           // solid-angle pdf of the BSDF sample that produced `ray`
   Vec3 lastScatter = ray.origin;  // where that sample was taken
+  Vec3 lastNormal;                // and the shading normal there, for the light sampler's density
   bool aovsPending = kWithAovs;
   float pathLength = 0.0f;  // camera to the current hit, summed while the AOVs are pending
   // Random bits for a ray query's pass-through decisions; scenes without cut-outs never ask for them.
@@ -98,8 +99,8 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
     if (!isBlack(material.emission) && cosAtSurface > 0.0f) {
       float w = 1.0f;
       if (depth > 0 && !specularBounce) {
-        // The light sampler chose this triangle by its untextured emission; its density must be the same here.
-        float lightPdf = triangleLightPdf(scene, stored.emission, length(si.position - lastScatter), cosAtSurface);
+        float lightPdf = triangleLightPdf(scene, settings.lightSampler, {lastScatter, lastNormal}, hit,
+                                          length(si.position - lastScatter), cosAtSurface);
         w = powerHeuristic(bsdfPdf, lightPdf);
       }
       result.radiance += beta * material.emission * w;
@@ -131,7 +132,7 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
     float uSelect = sampler.next1D();
     Vec2 uLight = sampler.next2D();
     if (!bsdf.isDelta()) {
-      LightSample ls = sampleLight(scene, si.position, uSelect, uLight);
+      LightSample ls = sampleLight(scene, settings.lightSampler, {si.position, bsdf.normal()}, uSelect, uLight);
       Vec3 f;
       if (litThroughShadowRay(ls, f)) {
         Vec3 le = ls.distance >= kInf ? ls.radiance : texturedLightRadiance(scene, ls);
@@ -165,6 +166,7 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
     bsdfPdf = bs.pdf;
     cone = bs.isDelta ? cone.afterDeltaBounce(hit.t) : RayCone{};
     lastScatter = si.position;
+    lastNormal = bsdf.normal();
     ray = {offsetRayOrigin(si.position, si.geometricNormal, next), next, 0.0f, kInf};
     ++depth;
 

@@ -1,5 +1,9 @@
 #pragma once
 #include "core/sampling.h"
+#include "core/spherical_triangle.h"
+#include "kernel/hit.h"
+#include "kernel/light_bvh.h"
+#include "kernel/render_settings.h"
 #include "kernel/scene_view.h"
 
 namespace candela {
@@ -25,17 +29,62 @@ CANDELA_FN float environmentPdf(const SceneView& scene, Vec3 direction) {
   return scene.environmentSelectProbability * environmentDirectionPdf(scene.environment, direction);
 }
 
-// Solid-angle density with which sampleLight() picks a point on an emissive triangle seen from `from`.
-// Choosing a triangle by power and then a point by area gives an area density of pi * luminance(Le) / total
-// power, independent of which triangle it is.
-CANDELA_FN float triangleLightPdf(const SceneView& scene, Vec3 emittedRadiance, float distance, float cosAtLight) {
+// Solid-angle density of a point on a light at `distance` from the shading point, seen at cosAtLight from the
+// light's normal, whose area density is `areaPdf`.
+CANDELA_FN float solidAnglePdf(float areaPdf, float distance, float cosAtLight) {
   if (cosAtLight <= 0.0f) return 0.0f;
-  float areaPdf = (1.0f - scene.environmentSelectProbability) * scene.lightAreaPdfScale * luminance(emittedRadiance);
   return areaPdf * distance * distance / cosAtLight;
 }
 
-// Samples the environment or one emissive triangle (one-sided: emits along its geometric normal).
-CANDELA_FN LightSample sampleLight(const SceneView& scene, Vec3 from, float uSelect, Vec2 u) {
+// Probability with which the power table picks a triangle emitting `emittedRadiance` over `area`: its power,
+// area x pi x luminance(Le), over the total.
+CANDELA_FN float powerTablePmf(const SceneView& scene, Vec3 emittedRadiance, float area) {
+  return scene.lightAreaPdfScale * luminance(emittedRadiance) * area;
+}
+
+// Solid angles between which a light triangle is sampled by solid angle rather than by area, as pbrt-v4's
+// Triangle: below, single precision cannot resolve the spherical construction; above (near a hemisphere) it
+// becomes unstable.
+constexpr float kMinSphericalSampleSolidAngle = 3e-4f;
+constexpr float kMaxSphericalSampleSolidAngle = 6.22f;
+
+// The solid angle `light` subtends from p where next-event estimation samples it by solid angle; 0 where it
+// samples it by area. Sampling and the density for MIS both decide through this one function.
+CANDELA_FN float sphericalSamplingSolidAngle(const LightTriangle& light, Vec3 p) {
+  Vec3 a = normalize(light.p0 - p), b = normalize(light.p0 + light.edge1 - p);
+  Vec3 c = normalize(light.p0 + light.edge2 - p);
+  float solidAngle = sphericalTriangleArea(a, b, c);
+  return solidAngle >= kMinSphericalSampleSolidAngle && solidAngle <= kMaxSphericalSampleSolidAngle ? solidAngle : 0.0f;
+}
+
+// Solid-angle density of a point on `light`, chosen with probability selectPmf, at `distance` and seen at
+// cosAtLight from its normal: uniform over the solid angle where sphericalSamplingSolidAngle gave one, else
+// uniform over the area.
+CANDELA_FN float trianglePointPdf(const LightTriangle& light, float selectPmf, float solidAngle, float distance,
+                                  float cosAtLight) {
+  if (cosAtLight <= 0.0f) return 0.0f;
+  if (solidAngle > 0.0f) return selectPmf / solidAngle;
+  return selectPmf / light.area * distance * distance / cosAtLight;
+}
+
+// Solid-angle density with which sampleLight() picks the point `hit` reaches on an emissive triangle, seen from
+// ctx.
+CANDELA_FN float triangleLightPdf(const SceneView& scene, LightSamplerKind kind, LightSampleContext ctx, const Hit& hit,
+                                  float distance, float cosAtLight) {
+  if (cosAtLight <= 0.0f) return 0.0f;
+  uint32_t index = findLightIndex(scene, hit.instanceId, hit.primitiveId);
+  if (index == scene.lightCount) return 0.0f;
+  const LightTriangle& light = scene.lights[index];
+  float selectPmf = kind == LightSamplerKind::Power ? powerTablePmf(scene, light.radiance, light.area)
+                                                    : lightBvhPmf(scene, ctx, index);
+  return (1.0f - scene.environmentSelectProbability) *
+         trianglePointPdf(light, selectPmf, sphericalSamplingSolidAngle(light, ctx.p), distance, cosAtLight);
+}
+
+// Samples the environment or one emissive triangle (one-sided: emits along its geometric normal), the triangle
+// chosen as `kind` says for the shading point ctx and the point on it by solid angle or by area.
+CANDELA_FN LightSample sampleLight(const SceneView& scene, LightSamplerKind kind, LightSampleContext ctx, float uSelect,
+                                   Vec2 u) {
   LightSample ls;
   float pEnv = scene.environmentSelectProbability;
   if (uSelect < pEnv) {
@@ -48,19 +97,35 @@ CANDELA_FN LightSample sampleLight(const SceneView& scene, Vec3 from, float uSel
   }
   if (scene.lightCount == 0) return ls;
   float uTri = fminf((uSelect - pEnv) / (1.0f - pEnv), 0.99999994f);
-  ls.lightIndex = uint32_t(findInterval(scene.lightCdf, int(scene.lightCount), uTri));
+  float selectPmf;
+  if (kind == LightSamplerKind::Power) {
+    ls.lightIndex = uint32_t(findInterval(scene.lightCdf, int(scene.lightCount), uTri));
+    const LightTriangle& light = scene.lights[ls.lightIndex];
+    selectPmf = powerTablePmf(scene, light.radiance, light.area);
+  } else {
+    SampledLight picked = sampleLightBvh(scene, ctx, uTri);
+    if (picked.pmf == 0.0f) return ls;
+    ls.lightIndex = picked.index;
+    selectPmf = picked.pmf;
+  }
   const LightTriangle& light = scene.lights[ls.lightIndex];
-  Vec2 b = sampleUniformTriangle(u);
-  ls.barycentrics = b;
-  Vec3 p = light.p0 + light.edge1 * b.x + light.edge2 * b.y;
-  Vec3 toLight = p - from;
+  float solidAngle = sphericalSamplingSolidAngle(light, ctx.p);
+  if (solidAngle > 0.0f) {
+    SphericalTriangleSample st =
+        sampleSphericalTriangle(light.p0, light.p0 + light.edge1, light.p0 + light.edge2, ctx.p, u);
+    if (st.pdf == 0.0f) return ls;
+    ls.barycentrics = st.barycentrics;
+  } else {
+    ls.barycentrics = sampleUniformTriangle(u);
+  }
+  Vec3 p = light.p0 + light.edge1 * ls.barycentrics.x + light.edge2 * ls.barycentrics.y;
+  Vec3 toLight = p - ctx.p;
   float dist2 = dot(toLight, toLight);
   if (dist2 <= 0.0f) return ls;
   ls.distance = sqrtf(dist2);
   ls.wi = toLight / ls.distance;
   Vec3 n = normalize(cross(light.edge1, light.edge2)) * light.frontSign;
-  float cosAtLight = -dot(n, ls.wi);
-  ls.pdf = triangleLightPdf(scene, light.radiance, ls.distance, cosAtLight);
+  ls.pdf = (1.0f - pEnv) * trianglePointPdf(light, selectPmf, solidAngle, ls.distance, -dot(n, ls.wi));
   ls.radiance = light.radiance;
   ls.valid = ls.pdf > 0.0f;
   return ls;

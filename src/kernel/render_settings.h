@@ -6,6 +6,10 @@
 
 namespace candela {
 
+// How next-event estimation picks an emissive triangle: through the light BVH, by how much each can light the
+// shading point, or by emitted power alone from one table.
+enum class LightSamplerKind : uint32_t { Bvh, Power };
+
 struct RenderSettings {
   uint32_t width = 512;
   uint32_t height = 512;
@@ -16,6 +20,7 @@ struct RenderSettings {
   // How textures are filtered over the footprints of camera rays and of their mirror and glass bounces
   // (kernel/ray_cone.h); Finest reads level 0 everywhere, as before mip pyramids.
   TextureFilter textureFilter = TextureFilter::Anisotropic;
+  LightSamplerKind lightSampler = LightSamplerKind::Bvh;
 };
 
 }  // namespace candela

@@ -3,6 +3,7 @@
 
 #include "core/math.h"
 #include "kernel/environment.h"
+#include "kernel/light_bounds.h"
 #include "kernel/material.h"
 #include "kernel/texture.h"
 
@@ -34,6 +35,14 @@ struct LightTriangle {
   uint32_t instanceId = 0;  // where it came from, for textured emission
   uint32_t primitiveId = 0;
   float frontSign = 1.0f;  // -1 under a mirroring instance: the front is then opposite cross(edge1, edge2)
+};
+
+// One node of the light BVH (pbrt-v4's BVHLightSampler), flat in depth-first order: an interior node's first
+// child follows it and its second is at childOrLight; a leaf holds the one light at childOrLight in `lights`.
+struct LightBvhNode {
+  CompactLightBounds bounds;
+  uint32_t childOrLight = 0;
+  uint32_t isLeaf = 0;
 };
 
 // A light at a point or infinitely far away in one direction, sampled by next-event estimation only: no ray
@@ -70,6 +79,10 @@ struct SceneView {
   const float* lightCdf = nullptr;  // lightCount + 1 entries, by emitted power
   uint32_t lightCount = 0;
   float lightAreaPdfScale = 0.0f;  // pi / total emitted power: triangle area pdf = scale * luminance(Le)
+  // The light BVH over `lights` (2 lightCount - 1 nodes), and per light the path from the root to its leaf: bit
+  // i is 1 where the path takes the second child at depth i.
+  const LightBvhNode* lightBvh = nullptr;
+  const uint64_t* lightBitTrails = nullptr;
   float environmentSelectProbability = 0.0f;
   EnvironmentView environment;
   const PunctualLight* punctualLights = nullptr;

@@ -7,6 +7,7 @@
 
 #include "kernel/pass_through.h"
 #include "scene/mip_pyramid.h"
+#include "scene/light_bvh.h"
 #include "scene/tangents.h"
 #include "scene/transform.h"
 
@@ -56,6 +57,9 @@ void buildLightTable(const Scene& scene, FlatScene& flat) {
     flat.lightCdf.back() = 1.0f;
     flat.lightAreaPdfScale = float(kPi / totalPower);
   }
+  LightBvh bvh = buildLightBvh(flat.lights);
+  flat.lightBvh = std::move(bvh.nodes);
+  flat.lightBitTrails = std::move(bvh.bitTrails);
   flat.environmentSelectProbability = environmentSamplingProbability(flat);
 }
 
@@ -230,6 +234,8 @@ SceneView FlatScene::hostView() const {
   v.lightCdf = lightCdf.data();
   v.lightCount = uint32_t(lights.size());
   v.lightAreaPdfScale = lightAreaPdfScale;
+  v.lightBvh = lightBvh.data();
+  v.lightBitTrails = lightBitTrails.data();
   v.environmentSelectProbability = environmentSelectProbability;
   v.punctualLights = punctualLights.data();
   v.punctualLightCount = uint32_t(punctualLights.size());

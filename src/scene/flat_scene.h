@@ -7,7 +7,7 @@
 
 namespace candela {
 
-// A Scene packed into the flat arrays kernel code reads, with the light table built. Backends either point
+// A Scene packed into the flat arrays kernel code reads, with the light table and the light BVH built. Backends either point
 // a SceneView at these arrays (CPU) or copy them to device memory (GPU).
 struct FlatScene {
   std::vector<Vec3> positions;
@@ -27,6 +27,8 @@ struct FlatScene {
   std::vector<LightTriangle> lights;
   std::vector<float> lightCdf;
   float lightAreaPdfScale = 0.0f;
+  std::vector<LightBvhNode> lightBvh;
+  std::vector<uint64_t> lightBitTrails;
   float environmentSelectProbability = 0.0f;
   std::vector<PunctualLight> punctualLights;
   // The environment's parameters; its pointers are set by hostView() (or by a backend, to device copies of

@@ -11,6 +11,7 @@
 
 #include "app/scene_loading.h"
 #include "gpu_render.h"
+#include "many_lights_scene.h"
 #include "render_comparison.h"
 #include "support/cutout_screen.h"
 
@@ -64,11 +65,11 @@ Scene splitIntoMeshes(const Scene& scene, size_t triangles) {
   return split;
 }
 
-void expectBackendsAgree(const Scene& scene, uint32_t seed) {
-  test::PixelStatistics cpu =
-      test::batchStatistics<CpuBackend>(scene, test::squareImage(kSize, seed), kBatches, kSamplesPerBatch);
-  test::PixelStatistics gpu =
-      test::batchStatistics<OptixBackend>(scene, test::squareImage(kSize, seed + 1), kBatches, kSamplesPerBatch);
+void expectBackendsAgree(const Scene& scene, uint32_t seed, LightSamplerKind lightSampler = LightSamplerKind::Bvh) {
+  RenderSettings cpuSettings = test::squareImage(kSize, seed), gpuSettings = test::squareImage(kSize, seed + 1);
+  cpuSettings.lightSampler = gpuSettings.lightSampler = lightSampler;
+  test::PixelStatistics cpu = test::batchStatistics<CpuBackend>(scene, cpuSettings, kBatches, kSamplesPerBatch);
+  test::PixelStatistics gpu = test::batchStatistics<OptixBackend>(scene, gpuSettings, kBatches, kSamplesPerBatch);
   test::expectRendersAgree(cpu, gpu, kBlock, kBatches, kAlpha);
 }
 
@@ -94,6 +95,14 @@ TEST(GpuManyMeshes, AgreesWithTheCpuBackend) {
   auto backend = test::makeBackend<OptixBackend>(split, test::squareImage(kSize, 1));
   EXPECT_GT(backend->accelerationStatistics().batchedMeshes, 4000u);
   expectBackendsAgree(split, 91);
+}
+
+// Hundreds of small lights (bench/many_lights_scene.h: 288 windows and 49 street lamps among buildings), picked
+// through the light BVH and by power, some sampled by solid angle and some by area.
+TEST(GpuNightTown, AgreesWithTheCpuBackendWithEitherLightSampler) {
+  const Scene town = makeNightTown(6, 1);
+  expectBackendsAgree(town, 111, LightSamplerKind::Bvh);
+  expectBackendsAgree(town, 121, LightSamplerKind::Power);
 }
 
 // Textured glTF materials with a normal map, lit by an importance-sampled environment map.

@@ -15,16 +15,20 @@
 
 namespace candela::test {
 
-// A backend and the sampler its paths draw from: the answers must hold for every pair.
-template <class BackendType, SamplerKind kKind>
+// A backend, the sampler its paths draw from and the way they pick emissive triangles: the answers must hold for
+// every combination.
+template <class BackendType, SamplerKind kKind, LightSamplerKind kLightKind = LightSamplerKind::Bvh>
 struct WithSampler {
   using Backend = BackendType;
   static constexpr SamplerKind kSampler = kKind;
+  static constexpr LightSamplerKind kLightSampler = kLightKind;
 };
 
+// Both samplers with the default light BVH, and the power table with the Sobol sampler.
 template <class BackendType>
 using EverySampler =
-    ::testing::Types<WithSampler<BackendType, SamplerKind::Sobol>, WithSampler<BackendType, SamplerKind::Independent>>;
+    ::testing::Types<WithSampler<BackendType, SamplerKind::Sobol>, WithSampler<BackendType, SamplerKind::Independent>,
+                     WithSampler<BackendType, SamplerKind::Sobol, LightSamplerKind::Power>>;
 
 // Batches of the Sobol sampler are parts of one stratified sequence, not independent: their spread overstates
 // the error of the overall mean, so the tests below stay valid for it, only more tolerant.
@@ -40,6 +44,7 @@ class AnalyticScenes : public ::testing::Test {
     backend.setScene(scene);
     RenderSettings settings;
     settings.sampler = Pairing::kSampler;
+    settings.lightSampler = Pairing::kLightSampler;
     settings.width = settings.height = size;
     settings.maxDepth = maxDepth;
     settings.rouletteDepth = rouletteDepth;

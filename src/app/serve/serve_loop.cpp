@@ -204,6 +204,7 @@ void ServeLoop::renderFrame(double now) {
   settings.maxDepth = controls_.maxDepth;
   settings.seed = options_.seed;
   settings.sampler = options_.sampler;
+  settings.lightSampler = options_.lightSampler;
   const auto renderStart = std::chrono::steady_clock::now();
   prepareDenoiser();
   session_.setAovsEnabled(controls_.post.denoiser != DenoiserChoice::None);

@@ -269,6 +269,7 @@ void Viewer::frame(double now, double seconds) {
   settings.maxDepth = controls_.maxDepth;
   settings.seed = options_.seed;
   settings.sampler = options_.sampler;
+  settings.lightSampler = options_.lightSampler;
   auto start = std::chrono::steady_clock::now();
   prepareDenoiser();
   session_.setAovsEnabled(controls_.post.denoiser != DenoiserChoice::None);

@@ -4,6 +4,7 @@
 
 #include "app/viewer/post_settings.h"
 #include "core/path_sampler.h"
+#include "kernel/render_settings.h"
 #include "scene/cache/scene_cache.h"
 #include "scene/loaders/path_confinement.h"
 #include "scene/loaders/texture_limits.h"
@@ -24,6 +25,7 @@ struct ViewerOptions {
   uint32_t maxDepth = 8;
   uint32_t seed = 0;
   SamplerKind sampler = SamplerKind::Sobol;
+  LightSamplerKind lightSampler = LightSamplerKind::Bvh;
   uint32_t samplesPerFrame = 1;
   PostSettings post;
   uint32_t frames = 0;                                // render this many frames, then exit; 0: until the window closes

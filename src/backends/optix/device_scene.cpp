@@ -26,6 +26,8 @@ void DeviceScene::upload(const FlatScene& flat) {
   view_.texels.texelFloats = nullptr;
   view_.lights = copy(buffers_, flat.lights, "the light table");
   view_.lightCdf = copy(buffers_, flat.lightCdf, "the light distribution");
+  view_.lightBvh = copy(buffers_, flat.lightBvh, "the light BVH");
+  view_.lightBitTrails = copy(buffers_, flat.lightBitTrails, "the light BVH's bit trails");
   view_.punctualLights = copy(buffers_, flat.punctualLights, "the punctual lights");
   updateEnvironment(flat);
 }

@@ -1,0 +1,80 @@
+#pragma once
+// What the convergence benchmarks share: relMSE against a reference, timed progressive renders, and reading a
+// relMSE-against-time curve at a given time.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "backends/backend.h"
+#include "image/image.h"
+#include "kernel/render_settings.h"
+
+namespace candela::bench {
+
+struct Point {
+  uint32_t spp = 0;
+  double milliseconds = 0.0;  // median over the seeds
+  double relMse = 0.0;        // mean over the seeds
+};
+
+// relMSE as pbrt-v4's imgtool and the denoising literature use it: squared error over (reference^2 + 0.01).
+inline double relMse(const Image& image, const Image& reference) {
+  double sum = 0.0;
+  for (size_t i = 0; i < image.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      double r = (&reference.pixels[i].x)[c], d = (&image.pixels[i].x)[c] - r;
+      sum += d * d / (r * r + 0.01);
+    }
+  return sum / (3.0 * double(image.pixels.size()));
+}
+
+inline double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+// The curve's relMSE at `milliseconds`, interpolated linearly in log-log between the points around it.
+inline double relMseAtTime(const std::vector<Point>& curve, double milliseconds) {
+  for (size_t i = 1; i < curve.size(); ++i)
+    if (curve[i].milliseconds >= milliseconds) {
+      const Point &a = curve[i - 1], &b = curve[i];
+      double t =
+          (std::log(milliseconds) - std::log(a.milliseconds)) / (std::log(b.milliseconds) - std::log(a.milliseconds));
+      return std::exp(std::log(a.relMse) + t * (std::log(b.relMse) - std::log(a.relMse)));
+    }
+  return curve.back().relMse;
+}
+
+struct Renderer {
+  std::unique_ptr<Backend> backend;
+  RenderSettings settings;
+
+  // Renders `spp` samples per pixel one launch at a time, as the viewer and `candela render` add them, and
+  // times them; the first launch after a change of settings is not timed.
+  Image render(uint32_t spp, double& milliseconds) {
+    backend->setSettings(settings);
+    backend->render(1);
+    backend->setSettings(settings);  // restarts the film
+    auto start = std::chrono::steady_clock::now();
+    for (uint32_t s = 0; s < spp; ++s) backend->render(1);
+    milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return backend->readImage();
+  }
+
+  // A reference of `spp` samples per pixel, rendered in batches; returns its time in milliseconds.
+  Image renderReference(uint32_t spp, double& milliseconds) {
+    backend->setSettings(settings);
+    auto start = std::chrono::steady_clock::now();
+    for (uint32_t done = 0; done < spp;) {
+      uint32_t batch = std::min(64u, spp - done);
+      backend->render(batch);
+      done += batch;
+    }
+    milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return backend->readImage();
+  }
+};
+
+}  // namespace candela::bench

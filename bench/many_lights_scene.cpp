@@ -1,0 +1,94 @@
+#include "many_lights_scene.h"
+
+#include <random>
+
+#include "scene/mesh_builders.h"
+
+namespace candela {
+
+namespace {
+
+Material diffuse(Vec3 albedo, Vec3 emission = {0, 0, 0}) {
+  Material m;
+  m.type = MaterialType::Diffuse;
+  m.baseColor = albedo;
+  m.emission = emission;
+  return m;
+}
+
+// An axis-aligned box from lo to hi, its faces facing out, without the bottom.
+void appendBox(Mesh& mesh, Vec3 lo, Vec3 hi, uint32_t materialId) {
+  Vec3 centre = (lo + hi) * 0.5f;
+  auto face = [&](Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 outward) {
+    appendQuad(mesh, a, b, c, d, centre + outward * 1e3f, materialId);
+  };
+  face({lo.x, hi.y, lo.z}, {hi.x, hi.y, lo.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}, {0, 1, 0});
+  face({lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z}, {0, 0, -1});
+  face({lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}, {0, 0, 1});
+  face({lo.x, lo.y, lo.z}, {lo.x, lo.y, hi.z}, {lo.x, hi.y, hi.z}, {lo.x, hi.y, lo.z}, {-1, 0, 0});
+  face({hi.x, lo.y, lo.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {hi.x, hi.y, lo.z}, {1, 0, 0});
+}
+
+}  // namespace
+
+Scene makeNightTown(uint32_t blocks, uint32_t seed) {
+  constexpr float kSpacing = 12.0f;  // block pitch, metres
+  constexpr float kBuilding = 7.0f;  // building footprint
+  constexpr float kLampHeight = 5.0f, kLampSize = 0.3f;
+  constexpr float kWindowWidth = 0.9f, kWindowHeight = 1.2f;
+  enum : uint32_t { kGround, kWall, kLamp, kWarmWindow, kColdWindow };
+  Scene scene;
+  scene.name = "night-town";
+  scene.materials = {diffuse({0.35f, 0.35f, 0.35f}), diffuse({0.6f, 0.55f, 0.5f}),
+                     diffuse({0.8f, 0.8f, 0.8f}, {400.0f, 300.0f, 160.0f}),
+                     diffuse({0.8f, 0.8f, 0.8f}, {6.0f, 4.5f, 2.5f}), diffuse({0.8f, 0.8f, 0.8f}, {2.5f, 3.5f, 5.0f})};
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  Mesh mesh;
+  mesh.name = "town";
+  const float half = 0.5f * kSpacing * float(blocks);
+  const float groundHalf = half + 2.0f * kSpacing;
+  appendQuad(mesh, {-groundHalf, 0, -groundHalf}, {groundHalf, 0, -groundHalf}, {groundHalf, 0, groundHalf},
+             {-groundHalf, 0, groundHalf}, {0, 1, 0}, kGround);
+  for (uint32_t i = 0; i < blocks; ++i)
+    for (uint32_t j = 0; j < blocks; ++j) {
+      Vec3 centre{-half + kSpacing * (float(i) + 0.5f), 0.0f, -half + kSpacing * (float(j) + 0.5f)};
+      float height = 4.0f + 14.0f * unit(rng);
+      Vec3 lo = centre - Vec3{0.5f * kBuilding, 0, 0.5f * kBuilding};
+      Vec3 hi = centre + Vec3{0.5f * kBuilding, height, 0.5f * kBuilding};
+      appendBox(mesh, lo, hi, kWall);
+      // Two windows per wall, a few centimetres out from it, at random places on it.
+      for (int wall = 0; wall < 4; ++wall) {
+        Vec3 outward = wall == 0   ? Vec3{0, 0, -1}
+                       : wall == 1 ? Vec3{0, 0, 1}
+                       : wall == 2 ? Vec3{-1, 0, 0}
+                                   : Vec3{1, 0, 0};
+        Vec3 along = wall < 2 ? Vec3{1, 0, 0} : Vec3{0, 0, 1};
+        for (int w = 0; w < 2; ++w) {
+          float s = (unit(rng) - 0.5f) * (kBuilding - 2.0f * kWindowWidth);
+          float y = 1.0f + unit(rng) * (height - 1.0f - 2.0f * kWindowHeight);
+          Vec3 base = centre + outward * (0.5f * kBuilding + 0.02f) + along * s + Vec3{0, y, 0};
+          Vec3 a = base - along * (0.5f * kWindowWidth), b = base + along * (0.5f * kWindowWidth);
+          Vec3 up{0, kWindowHeight, 0};
+          appendQuad(mesh, a, b, b + up, a + up, base + outward, unit(rng) < 0.7f ? kWarmWindow : kColdWindow);
+        }
+      }
+    }
+  // A lamp at every street crossing, shining down.
+  for (uint32_t i = 0; i <= blocks; ++i)
+    for (uint32_t j = 0; j <= blocks; ++j) {
+      Vec3 c{-half + kSpacing * float(i), kLampHeight, -half + kSpacing * float(j)};
+      float h = 0.5f * kLampSize;
+      appendQuad(mesh, c + Vec3{-h, 0, -h}, c + Vec3{h, 0, -h}, c + Vec3{h, 0, h}, c + Vec3{-h, 0, h},
+                 c - Vec3{0, 1, 0}, kLamp);
+    }
+  scene.meshes.push_back(std::move(mesh));
+  scene.instances.push_back({0, Affine3x4{}});
+  // Over a street at the town's edge, looking in along it and down onto the blocks.
+  scene.camera.eye = {-half - 6.0f, 14.0f, -0.3f * half};
+  scene.camera.target = {0.0f, 0.0f, 0.1f * half};
+  scene.camera.verticalFovDegrees = 50.0f;
+  return scene;
+}
+
+}  // namespace candela
