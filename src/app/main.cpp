@@ -84,6 +84,8 @@ void addTextureFilterOption(CLI::App& cmd, TextureFilter& filter) {
                  "to 16 lookups along the footprint)")
       ->transform(CLI::CheckedTransformer(filters))
       ->default_str("anisotropic");
+}
+
 void addLightSamplerOption(CLI::App& cmd, LightSamplerKind& lightSampler) {
   cmd.add_option_function<std::string>(
          "--light-sampler",
