@@ -15,6 +15,7 @@
 #include "scene/loaders/pbrt_lights.h"
 #include "scene/loaders/pbrt_spectra.h"
 #include "scene/loaders/pbrt_tokenizer.h"
+#include "scene/loaders/texture_limits.h"
 #include "scene/scene_test_files.h"
 
 namespace candela {
@@ -320,6 +321,30 @@ TEST(PbrtLoader, PngTexturesNormalMapsAndTheirEncoding) {
   EXPECT_FALSE(scene.textures[size_t(b.baseColorTexture)].srgb);
   ASSERT_NE(a.normalTexture, kNoTexture);
   EXPECT_FALSE(scene.textures[size_t(a.normalTexture)].srgb);  // normal maps hold vectors, not colours
+}
+
+TEST(PbrtLoader, ImageTexturesAreDecodedWithinTheTextureSizeLimit) {
+  TempFolder folder;
+  std::vector<uint8_t> pixels(256 * 128 * 3, 200);
+  ASSERT_TRUE(stbi_write_png(folder.file("large.png").c_str(), 256, 128, 3, pixels.data(), 256 * 3));
+  const std::string path =
+      folder.write("scene.pbrt", std::string(kMirroredCamera) +
+                                     "Texture \"t\" \"spectrum\" \"imagemap\" \"string filename\" \"large.png\"\n"
+                                     "Material \"diffuse\" \"texture reflectance\" \"t\"\n" +
+                                     kTriangle);
+  const TextureLimits defaults = textureLimits();
+  setTextureLimits({64, defaults.maxBytes});
+  LoadWarnings warnings;
+  Scene scene = loadPbrt(path, warnings);
+  setTextureLimits(defaults);
+  const Material& m = scene.materials[scene.meshes[0].triangleMaterials[0]];
+  ASSERT_NE(m.baseColorTexture, kNoTexture);
+  const Texture& t = scene.textures[size_t(m.baseColorTexture)];
+  EXPECT_EQ(t.width, 64u);
+  EXPECT_EQ(t.height, 32u);
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_NE(warnings.messages[0].find("large.png: texture of 256x128 pixels downscaled to 64x32"), std::string::npos)
+      << warnings.messages[0];
 }
 
 TEST(PbrtLoader, CameraFeaturesNotRenderedAreNamed) {
