@@ -1,56 +1,90 @@
 #!/usr/bin/env bash
-# Fetches public pbrt scenes, renders each with candela and prints the rows of the table in docs/pbrt-v4.md
-# (scene, load time, warnings, thumbnail). Needs network access, git, curl and unzip, and a build in ./build.
+# Renders public pbrt scenes with candela and prints the rows of the table in docs/pbrt-v4.md (scene, result, load
+# time, warnings, thumbnail).
 #   scripts/render-pbrt-scenes.sh [work folder]      (default: build/pbrt-scenes)
-# The scenes are kept in the work folder, never in the repository. SPP, WIDTH and HEIGHT set the thumbnails.
+# Scenes are looked for in the work folder, never in the repository:
+#   pbrt-v4-scenes/  a checkout of https://github.com/mmp/pbrt-v4-scenes (the smaller scenes below)
+#   bitterli/        Bitterli's rendering resources: <name>/scene.pbrt (pbrt-v3, from his site) or
+#                    <name>/pbrt/scene-v4.pbrt (pbrt-v4, as in https://github.com/gonsolo/bitterli)
+# Those that are missing are fetched when FETCH=1 (the default; needs network access, git, curl and unzip); a fetch
+# that fails is reported and the script goes on with what it has. `.xz` files (compressed meshes and maps in some
+# copies) are decompressed next to themselves when unxz is there.
+# CANDELA names the binary (default: build/src/candela); SPP, WIDTH and HEIGHT set the thumbnails; TIMEOUT bounds
+# each load and render in seconds.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-candela=$PWD/build/src/candela
+candela=$(realpath "${CANDELA:-build/src/candela}")
 work=${1:-build/pbrt-scenes}
 spp=${SPP:-64}
 width=${WIDTH:-320}
 height=${HEIGHT:-240}
-mkdir -p "$work/thumbnails"
+timeout=${TIMEOUT:-900}
+fetch=${FETCH:-1}
+mkdir -p "$work/thumbnails" "$work/bitterli"
 work=$(cd "$work" && pwd)
 
-# pbrt-v4-scenes (https://github.com/mmp/pbrt-v4-scenes): a sparse checkout of the smaller scenes.
 v4_folders=(killeroos lte-orb ganesha crown pbrt-book sssdragon transparent-machines watercolor)
 v4_scenes=(killeroos/killeroo-simple.pbrt killeroos/killeroo-gold.pbrt killeroos/killeroo-coated-gold.pbrt
            lte-orb/lte-orb-silver.pbrt lte-orb/lte-orb-rough-glass.pbrt ganesha/ganesha.pbrt crown/crown.pbrt
            pbrt-book/book.pbrt)
-if [ ! -d "$work/pbrt-v4-scenes/.git" ]; then
-  git clone --depth 1 --filter=blob:none --sparse https://github.com/mmp/pbrt-v4-scenes.git "$work/pbrt-v4-scenes"
-fi
-git -C "$work/pbrt-v4-scenes" sparse-checkout set "${v4_folders[@]}"
+bitterli=(cornell-box veach-mis veach-bidir veach-ajar staircase staircase2 living-room living-room-2
+          living-room-3 kitchen glass-of-water material-testball coffee classroom bathroom bathroom2 bedroom
+          dining-room house lamp spaceship dragon car car2 teapot teapot-full water-caustic volumetric-caustic
+          hair-curl curly-hair straight-hair furball)
 
-# Benedikt Bitterli's rendering resources (https://benedikt-bitterli.me/resources/), in pbrt-v3's format.
-bitterli=(cornell-box veach-mis veach-bidir staircase2 living-room-2 kitchen glass-of-water material-testball)
-mkdir -p "$work/bitterli"
-for name in "${bitterli[@]}"; do
-  if [ ! -d "$work/bitterli/$name" ]; then
-    curl -fsSL -o "$work/bitterli/$name.zip" "https://benedikt-bitterli.me/resources/pbrt-v3/$name.zip" &&
-      unzip -q -o "$work/bitterli/$name.zip" -d "$work/bitterli" || echo "could not fetch $name" >&2
+if [ "$fetch" = 1 ]; then
+  if [ ! -d "$work/pbrt-v4-scenes" ]; then
+    { git clone --depth 1 --filter=blob:none --sparse https://github.com/mmp/pbrt-v4-scenes.git \
+        "$work/pbrt-v4-scenes" && git -C "$work/pbrt-v4-scenes" sparse-checkout set "${v4_folders[@]}"; } ||
+      echo "could not fetch pbrt-v4-scenes" >&2
   fi
-done
+  for name in "${bitterli[@]}"; do
+    [ -d "$work/bitterli/$name" ] && continue
+    { curl -fsSL -o "$work/bitterli/$name.zip" "https://benedikt-bitterli.me/resources/pbrt-v3/$name.zip" &&
+        unzip -q -o "$work/bitterli/$name.zip" -d "$work/bitterli"; } || echo "could not fetch $name" >&2
+  done
+fi
+if command -v unxz > /dev/null; then
+  find "$work" -name '*.xz' -print0 | while IFS= read -r -d '' packed; do
+    [ -e "${packed%.xz}" ] || unxz -k "$packed" || echo "could not decompress $packed" >&2
+  done
+fi
 
 files=()
-for s in "${v4_scenes[@]}"; do files+=("$work/pbrt-v4-scenes/$s"); done
-for name in "${bitterli[@]}"; do
-  [ -f "$work/bitterli/$name/scene.pbrt" ] && files+=("$work/bitterli/$name/scene.pbrt")
+for s in "${v4_scenes[@]}"; do
+  [ -f "$work/pbrt-v4-scenes/$s" ] && files+=("$work/pbrt-v4-scenes/$s")
 done
+for name in "${bitterli[@]}"; do
+  for s in "$work/bitterli/$name/pbrt/scene-v4.pbrt" "$work/bitterli/$name/scene.pbrt"; do
+    [ -f "$s" ] && files+=("$s")
+  done
+done
+[ ${#files[@]} -gt 0 ] || { echo "no scenes in $work" >&2; exit 1; }
 
-echo "| scene | load time | warnings | thumbnail |"
-echo "| --- | --- | --- | --- |"
+# One line of text for the table: no pipes, the scene folder left out of paths.
+cell() { sed "s#$work/##g; s/|/\\\\|/g" | paste -sd ';' - | sed 's/;/; /g'; }
+
+echo "| scene | result | load time | warnings | thumbnail |"
+echo "| --- | --- | --- | --- | --- |"
 for file in "${files[@]}"; do
-  [ -f "$file" ] || { echo "missing $file" >&2; continue; }
   label=${file#"$work/"}
   thumb="$work/thumbnails/$(echo "$label" | tr '/' '-' | sed 's/\.pbrt$//').png"
-  load=$("$candela" load "$file" --no-cache 2>/dev/null | sed -n 's/.*"seconds":\([0-9.e-]*\).*/\1/p' || true)
-  if "$candela" render "$file" --no-cache --backend cpu --spp "$spp" --width "$width" --height "$height" \
-       -o "$thumb" > /dev/null 2> "$work/stderr.txt"; then
-    warnings=$(grep 'warning:' "$work/stderr.txt" | sed 's/^candela: warning: [^:]*: //' | paste -sd ';' - || true)
+  load=$(timeout "$timeout" "$candela" load "$file" --no-cache 2> /dev/null |
+         sed -n 's/.*"seconds":\([0-9.e-]*\).*/\1/p' || true)
+  if timeout "$timeout" "$candela" render "$file" --no-cache --backend cpu --spp "$spp" --width "$width" \
+       --height "$height" -o "$thumb" > /dev/null 2> "$work/stderr.txt"; then
+    warnings=$(grep 'warning:' "$work/stderr.txt" | sed 's/^candela: warning: [^:]*: //' | cell || true)
+    result=$([ -n "$warnings" ] && echo "renders with warnings" || echo "renders")
+    picture="![]($thumb)"
   else
-    warnings="failed: $(tail -n 1 "$work/stderr.txt")"
+    status=$?
+    if [ "$status" = 124 ]; then
+      result="no image within $timeout s"
+    else
+      result="refused: $(grep -v 'warning:' "$work/stderr.txt" | tail -n 1 | sed 's/^candela: //' | cell || true)"
+    fi
+    warnings=$(grep 'warning:' "$work/stderr.txt" | sed 's/^candela: warning: [^:]*: //' | cell || true)
+    picture=""
   fi
-  printf '| %s | %s s | %s | ![](%s) |\n' "$label" "${load:-?}" "${warnings:-none}" "$thumb"
+  printf '| %s | %s | %s s | %s | %s |\n' "$label" "$result" "${load:-?}" "${warnings:-none}" "$picture"
 done

@@ -17,8 +17,10 @@ CANDELA_FN bool isTraceableCameraRay(const Ray& ray) {
 }
 
 // Pinhole camera, or a thin lens when `lensRadius` > 0. `right` and `up` are scaled so that pixel offsets in
-// [-1, 1] span the image plane at distance 1 along `forward`. A thin lens keeps the plane at `focusDistance`
-// along `forward` sharp.
+// [-1, 1] span the image plane at distance 1 along `forward` (which reaches the image's centre: off the view axis
+// when the image is shifted). A thin lens keeps the plane at `focusDistance` along the view axis sharp.
+// An orthographic camera sends parallel rays along `forward` from the image rectangle centred on `position` and
+// spanned by `right` and `up` (in world units); its thin lens focuses the plane `focusDistance` ahead.
 struct Camera {
   Vec3 position{0, 0, 0};
   Vec3 forward{0, 0, 1};
@@ -26,6 +28,7 @@ struct Camera {
   Vec3 up{0, 1, 0};
   float lensRadius = 0.0f;
   float focusDistance = 1.0f;
+  bool orthographic = false;
 
   CANDELA_FN static Camera lookAt(Vec3 eye, Vec3 target, Vec3 worldUp, float verticalFovDegrees, float aspect) {
     Camera c;
@@ -44,11 +47,22 @@ struct Camera {
   CANDELA_FN Ray generateRay(float px, float py, int width, int height, Vec2 uLens = {}) const {
     float sx = 2.0f * px / float(width) - 1.0f;
     float sy = 1.0f - 2.0f * py / float(height);
+    if (orthographic) return orthographicRay(position + right * sx + up * sy, uLens);
     Vec3 through = forward + right * sx + up * sy;
     if (lensRadius <= 0.0f) return {position, normalize(through), 0.0f, kInf};
     Vec2 lens = sampleUniformDiskConcentric(uLens);
     Vec3 origin = position + (normalize(right) * lens.x + normalize(up) * lens.y) * lensRadius;
     Vec3 focus = position + through * focusDistance;
+    return {origin, normalize(focus - origin), 0.0f, kInf};
+  }
+
+ private:
+  CANDELA_FN Ray orthographicRay(Vec3 onImage, Vec2 uLens) const {
+    const Vec3 direction = normalize(forward);
+    if (lensRadius <= 0.0f) return {onImage, direction, 0.0f, kInf};
+    Vec2 lens = sampleUniformDiskConcentric(uLens);
+    Vec3 origin = onImage + (normalize(right) * lens.x + normalize(up) * lens.y) * lensRadius;
+    Vec3 focus = onImage + direction * focusDistance;
     return {origin, normalize(focus - origin), 0.0f, kInf};
   }
 };

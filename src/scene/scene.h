@@ -43,6 +43,9 @@ struct Instance {
   Affine3x4 objectToWorld;
 };
 
+// How a camera projects the scene onto the image. A byte, so that any value read from a cache file is defined.
+enum class Projection : uint8_t { Perspective, Orthographic };
+
 struct CameraDescription {
   Vec3 eye{0, 0, 0};
   Vec3 target{0, 0, 1};
@@ -50,9 +53,26 @@ struct CameraDescription {
   float verticalFovDegrees = 40.0f;
   float apertureRadius = 0.0f;  // 0: pinhole
   float focusDistance = 0.0f;   // 0: the distance from eye to target
+  // Where the image's centre lies off the view axis, in units of half the image's height (a shifted lens or
+  // pbrt's off-centre screen window); 0 0 centres it.
+  Vec2 imageShift{0, 0};
+  float orthographicHalfHeight = 1.0f;  // orthographic: half the image's height in world units
+  Projection projection = Projection::Perspective;
 
   Camera toCamera(float aspect) const {
     Camera c = Camera::lookAt(eye, target, up, verticalFovDegrees, aspect);
+    const bool orthographic = projection == Projection::Orthographic;
+    if (orthographic) {
+      // lookAt scaled right and up to the image plane at distance 1; here they span the image itself.
+      c.right = normalize(c.right) * (orthographicHalfHeight * aspect);
+      c.up = normalize(c.up) * orthographicHalfHeight;
+      c.orthographic = true;
+    }
+    const Vec3 shift = normalize(c.right) * (imageShift.x * length(c.up)) + c.up * imageShift.y;
+    if (orthographic)
+      c.position = c.position + shift;
+    else
+      c.forward = c.forward + shift;
     c.lensRadius = apertureRadius;
     c.focusDistance = focusDistance > 0.0f ? focusDistance : length(target - eye);
     return c;

@@ -421,6 +421,11 @@ void checkCamera(const CameraDescription& c, const std::string& file) {
     fail("aperture_radius", compact(c.apertureRadius) + " is negative, " + range);
   if (!(c.focusDistance >= 0.0f && c.focusDistance <= kMaxCameraCoordinate))
     fail("focus_distance", compact(c.focusDistance) + " is negative, " + range);
+  // The image's extent and shift are bounded alike, so that rays start within kMaxCameraRayOrigin.
+  if (!(c.orthographicHalfHeight > 0.0f && c.orthographicHalfHeight <= kMaxCameraCoordinate))
+    fail("orthographic_half_height", compact(c.orthographicHalfHeight) + " is not positive, " + range);
+  if (!(std::fabs(c.imageShift.x) <= kMaxCameraCoordinate && std::fabs(c.imageShift.y) <= kMaxCameraCoordinate))
+    fail("image_shift", compact(c.imageShift.x) + " " + compact(c.imageShift.y) + " is " + range);
 }
 
 }  // namespace

@@ -6,9 +6,12 @@
 #include "scene/environment_distribution.h"
 #include "scene/loaders/image_decoding.h"
 #include "scene/loaders/load_diagnostics.h"
+#include "texture_decoding_target.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {
+    const candela::ImageInfo info = candela::inspectImage("fuzz.hdr", data, size);
+    if (uint64_t(info.width) * info.height > candela::fuzz::kMaxFuzzedPixels) return 0;
     candela::Texture t = candela::decodeImage("fuzz.hdr", data, size, false);
     if (!t.floats.empty()) {
       std::vector<candela::Vec3> texels(size_t(t.width) * t.height);

@@ -3,6 +3,6 @@
 #include "texture_decoding_target.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  candela::fuzz::decodeTexture("fuzz.jpeg", data, size);
+  candela::fuzz::decodeTexture("fuzz.jpeg", data, size, candela::isJpeg);
   return 0;
 }

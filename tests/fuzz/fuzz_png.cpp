@@ -3,6 +3,6 @@
 #include "texture_decoding_target.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  candela::fuzz::decodeTexture("fuzz.png", data, size);
+  candela::fuzz::decodeTexture("fuzz.png", data, size, candela::isPng);
   return 0;
 }

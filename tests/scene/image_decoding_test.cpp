@@ -9,12 +9,15 @@
 #include <jpeglib.h>
 #include <cstdio>
 
+#include <algorithm>
+#include <cstring>
 #include <fstream>
 #include <functional>
 #include <iterator>
 
 #include "app/scene_loading.h"
 #include "scene/loaders/area_downscaler.h"
+#include "scene/loaders/exr_decoding.h"
 #include "scene/loaders/image_decoding.h"
 #include "scene/loaders/load_diagnostics.h"
 #include "scene/loaders/obj_loader.h"
@@ -220,6 +223,78 @@ TEST(ExrDecoding, DataWindowFarFromTheOrigin) {
     EXPECT_EQ(t.floats[(5 * 100 + 7) * 3 + 1], 5.0f);
     EXPECT_EQ(t.floats[(9 * 100 + 99) * 3 + 2], 1.0f);
   }
+}
+
+// The message of the LoadError that `decode` throws, or "(no error)".
+std::string decodeError(const std::function<void()>& decode) {
+  try {
+    decode();
+  } catch (const LoadError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(ExrDecoding, SizesAreCheckedOnTheHeaderBeforeDecoding) {
+  TempFolder dir;
+  const std::string path = dir.file("small.exr");
+  writeOffsetExr(path, 0, 0);
+  std::vector<uint8_t> bytes = readAll(path);
+  EXPECT_EQ(decodeExr(path, bytes.data(), bytes.size(), 1000).width, 100u);
+  EXPECT_EQ(decodeError([&] { decodeExr("small.exr", bytes.data(), bytes.size(), 999); }),
+            "small.exr: OpenEXR image of 100x10 pixels is larger than the limit of 999 pixels");
+  // The same file with a data window of 30000x30000 pixels in its header: refused before anything is allocated.
+  const std::string key("dataWindow\0box2i\0", 17);
+  auto at = std::search(bytes.begin(), bytes.end(), key.begin(), key.end());
+  ASSERT_NE(at, bytes.end());
+  const int32_t window[4] = {0, 0, 29999, 29999};
+  std::memcpy(&*(at + ptrdiff_t(key.size()) + 4), window, sizeof window);
+  EXPECT_EQ(decodeError([&] { decodeExr("huge.exr", bytes.data(), bytes.size()); }),
+            "huge.exr: image header claims 30000x30000 pixels, more than the file can hold");
+}
+
+TEST(ExrDecoding, AttributesLargerThanTheFileAreRefusedBeforeOpenExrAllocatesThem) {
+  // OpenEXR allocates an attribute's claimed size before reading it: 32 bytes of a fuzzer's input claiming about
+  // 2 GB took hundreds of MB and seconds before it found the file short.
+  TempFolder dir;
+  const std::string path = dir.file("small.exr");
+  writeOffsetExr(path, 0, 0);
+  std::vector<uint8_t> bytes = readAll(path);
+  const std::string key("channels\0chlist\0", 16);
+  auto at = std::search(bytes.begin(), bytes.end(), key.begin(), key.end());
+  ASSERT_NE(at, bytes.end());
+  const int32_t claimed = 0x7f000000;
+  std::memcpy(&*(at + ptrdiff_t(key.size())), &claimed, sizeof claimed);
+  EXPECT_EQ(decodeError([&] { decodeExr("claims.exr", bytes.data(), bytes.size()); }),
+            "claims.exr: OpenEXR header attribute 'channels' claims 2130706432 bytes, more than the file holds");
+  bytes.resize(20);
+  EXPECT_EQ(decodeError([&] { decodeExr("short.exr", bytes.data(), bytes.size()); }),
+            "short.exr: OpenEXR header is truncated");
+}
+
+TEST(ExrDecoding, AttributesReadByTheirContentMustBeOfTheirDeclaredSize) {
+  // OpenEXR reads a channel list up to its end and a box2i as 16 bytes whatever size they declare, so a file
+  // whose declared sizes disagree would hide the attributes after them from the check above.
+  TempFolder dir;
+  const std::string path = dir.file("small.exr");
+  writeOffsetExr(path, 0, 0);
+  std::vector<uint8_t> bytes = readAll(path);
+  const std::string key("dataWindow\0box2i\0", 17);
+  auto at = std::search(bytes.begin(), bytes.end(), key.begin(), key.end());
+  ASSERT_NE(at, bytes.end());
+  const int32_t declared = 12;
+  std::memcpy(&*(at + ptrdiff_t(key.size())), &declared, sizeof declared);
+  EXPECT_EQ(decodeError([&] { decodeExr("window.exr", bytes.data(), bytes.size()); }),
+            "window.exr: OpenEXR header attribute 'dataWindow' declares 12 bytes for a value of 16");
+  // A preview image of about 2^32 x 2^32 pixels: the fuzzer's input whose size overflowed 64 bits in this check
+  // (tests/fuzz/regressions/exr/preview-size-overflowing-64-bits.exr).
+  const uint8_t preview[] = {0x76, 0x2f, 0x31, 0x01, 0x02, 0x10, 0x00, 0x00, 0x63, 0x24, 0x24, 0x24, 0x24, 0x24,
+                             0x24, 0x87, 0x87, 0x87, 0x87, 0x87, 0x87, 0x87, 0x87, 0x87, 0x87, 0x44, 0x00, 0x70,
+                             0x72, 0x65, 0x76, 0x69, 0x65, 0x77, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x87, 0x87,
+                             0x87, 0xdb, 0xc8, 0xc8, 0x73, 0x01, 0x80, 0x01, 0x00, 0x7a, 0x00, 0x79, 0x57, 0x69};
+  const std::string message = decodeError([&] { decodeExr("preview.exr", preview, sizeof preview); });
+  EXPECT_EQ(message.rfind("preview.exr: OpenEXR header attribute 'c$$$$$$", 0), 0u) << message;
+  EXPECT_NE(message.find("' runs past the end of the file"), std::string::npos) << message;
 }
 
 TEST(AreaDownscaler, MeansOfTheCoveredPixels) {

@@ -15,6 +15,7 @@
 #include "scene/loaders/pbrt_lights.h"
 #include "scene/loaders/pbrt_spectra.h"
 #include "scene/loaders/pbrt_tokenizer.h"
+#include "scene/loaders/texture_limits.h"
 #include "scene/scene_test_files.h"
 
 namespace candela {
@@ -322,17 +323,87 @@ TEST(PbrtLoader, PngTexturesNormalMapsAndTheirEncoding) {
   EXPECT_FALSE(scene.textures[size_t(a.normalTexture)].srgb);  // normal maps hold vectors, not colours
 }
 
+TEST(PbrtLoader, ImageTexturesAreDecodedWithinTheTextureSizeLimit) {
+  TempFolder folder;
+  std::vector<uint8_t> pixels(256 * 128 * 3, 200);
+  ASSERT_TRUE(stbi_write_png(folder.file("large.png").c_str(), 256, 128, 3, pixels.data(), 256 * 3));
+  const std::string path =
+      folder.write("scene.pbrt", std::string(kMirroredCamera) +
+                                     "Texture \"t\" \"spectrum\" \"imagemap\" \"string filename\" \"large.png\"\n"
+                                     "Material \"diffuse\" \"texture reflectance\" \"t\"\n" +
+                                     kTriangle);
+  const TextureLimits defaults = textureLimits();
+  setTextureLimits({64, defaults.maxBytes});
+  LoadWarnings warnings;
+  Scene scene = loadPbrt(path, warnings);
+  setTextureLimits(defaults);
+  const Material& m = scene.materials[scene.meshes[0].triangleMaterials[0]];
+  ASSERT_NE(m.baseColorTexture, kNoTexture);
+  const Texture& t = scene.textures[size_t(m.baseColorTexture)];
+  EXPECT_EQ(t.width, 64u);
+  EXPECT_EQ(t.height, 32u);
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_NE(warnings.messages[0].find("large.png: texture of 256x128 pixels downscaled to 64x32"), std::string::npos)
+      << warnings.messages[0];
+}
+
 TEST(PbrtLoader, CameraFeaturesNotRenderedAreNamed) {
   LoadWarnings warnings;
   loadText(
-      "ConcatTransform [1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1]\nCamera \"orthographic\" \"float screenwindow\" "
+      "ConcatTransform [1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1]\nCamera \"realistic\" \"float screenwindow\" "
       "[-1 1 -1 1]\nPixelFilter \"gaussian\"\nWorldBegin\n",
       &warnings);
   std::string all;
   for (const std::string& w : warnings.messages) all += w + "\n";
-  EXPECT_NE(all.find("'orthographic'"), std::string::npos) << all;
-  EXPECT_NE(all.find("screenwindow"), std::string::npos) << all;
+  EXPECT_NE(all.find("'realistic'"), std::string::npos) << all;
+  EXPECT_NE(all.find("screen window is not of the image's aspect ratio"), std::string::npos) << all;
   EXPECT_NE(all.find("pixel filter"), std::string::npos) << all;
+}
+
+TEST(PbrtLoader, OrthographicCamerasSpanTheirScreenWindowInCameraUnits) {
+  LoadWarnings warnings;
+  Scene scene = loadText(
+      "Film \"rgb\" \"integer xresolution\" 200 \"integer yresolution\" 100\n"
+      "LookAt 0 0 -5  0 0 0  0 1 0\nCamera \"orthographic\" \"float lensradius\" 0.1 \"float focaldistance\" 3\n"
+      "WorldBegin\n",
+      &warnings);
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages.front();
+  EXPECT_EQ(scene.camera.projection, Projection::Orthographic);
+  EXPECT_FLOAT_EQ(scene.camera.orthographicHalfHeight, 1.0f);  // the shorter axis spans [-1, 1]
+  EXPECT_FLOAT_EQ(scene.camera.imageShift.x, 0.0f);
+  EXPECT_FLOAT_EQ(scene.camera.apertureRadius, 0.1f);
+  EXPECT_FLOAT_EQ(scene.camera.focusDistance, 3.0f);
+  // Rays leave the image rectangle in parallel: the top-left corner's ray starts 2 left of and 1 above the eye
+  // (through the lens's centre).
+  CameraDescription pinhole = scene.camera;
+  pinhole.apertureRadius = 0.0f;
+  const Camera c = pinhole.toCamera(2.0f);
+  const Ray corner = c.generateRay(0, 0, 200, 100), centre = c.generateRay(100, 50, 200, 100);
+  expectNear(corner.direction, centre.direction);
+  const Vec3 right = normalize(cross(centre.direction, scene.camera.up));
+  EXPECT_NEAR(dot(corner.origin - centre.origin, right), -2.0f, 1e-4f);
+  EXPECT_NEAR(dot(corner.origin - centre.origin, scene.camera.up), 1.0f, 1e-4f);
+
+  // An off-centre window [0 2 0 1] in a camera transform that scales by 2: half as large in the world, shifted.
+  Scene shifted = loadText(
+      "Film \"rgb\" \"integer xresolution\" 200 \"integer yresolution\" 100\nScale 2 2 2\n"
+      "LookAt 0 0 -5  0 0 0  0 1 0\nCamera \"orthographic\" \"float screenwindow\" [0 2 0 1]\nWorldBegin\n");
+  EXPECT_FLOAT_EQ(shifted.camera.orthographicHalfHeight, 0.25f);
+  EXPECT_FLOAT_EQ(shifted.camera.imageShift.x, 2.0f);
+  EXPECT_FLOAT_EQ(shifted.camera.imageShift.y, 1.0f);
+}
+
+TEST(PbrtLoader, PerspectiveScreenWindowsScaleAndShiftTheImage) {
+  Scene scene = loadText(
+      "Film \"rgb\" \"integer xresolution\" 200 \"integer yresolution\" 100\n"
+      "Camera \"perspective\" \"float fov\" 90 \"float screenwindow\" [-0.5 1.5 -0.25 0.75]\nWorldBegin\n");
+  // Screen coordinate 1 is tan(45 degrees) = 1 away from the axis at distance 1: the window is 1 high.
+  EXPECT_NEAR(scene.camera.verticalFovDegrees, 2.0f * std::atan(0.5f) * 180.0f / kPi, 1e-3f);
+  EXPECT_FLOAT_EQ(scene.camera.imageShift.x, 1.0f);
+  EXPECT_FLOAT_EQ(scene.camera.imageShift.y, 0.5f);
+  EXPECT_NE(loadError("Camera \"perspective\" \"float screenwindow\" [1 -1 -1 1]\nWorldBegin\n")
+                .find("test.pbrt:1: the camera's screen window is empty"),
+            std::string::npos);
 }
 
 TEST(PbrtLoader, ConcatTransformMultipliesTheCurrentTransform) {

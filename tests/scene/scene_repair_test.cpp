@@ -242,6 +242,16 @@ TEST(SceneRepair, ImpossibleCamerasAreRejectedNamingTheField) {
       {"camera.fov_degrees", [](CameraDescription& c) { c.verticalFovDegrees = 0.0f; }},
       {"camera.aperture_radius", [](CameraDescription& c) { c.apertureRadius = 1e30f; }},
       {"camera.focus_distance", [](CameraDescription& c) { c.focusDistance = kInfinity; }},
+      {"camera.orthographic_half_height",
+       [](CameraDescription& c) {
+         c.projection = Projection::Orthographic;
+         c.orthographicHalfHeight = 1e30f;
+       }},
+      {"camera.orthographic_half_height", [](CameraDescription& c) { c.orthographicHalfHeight = 0.0f; }},
+      {"camera.image_shift",
+       [](CameraDescription& c) {
+         c.imageShift = {kInfinity, 0};
+       }},
   };
   for (const Case& c : cases) {
     Scene s = quadScene();

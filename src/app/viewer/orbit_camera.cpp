@@ -43,11 +43,12 @@ Vec3 OrbitCamera::position() const { return target_ + offsetDirection() * distan
 Vec3 OrbitCamera::forward() const { return -offsetDirection(); }
 
 Camera OrbitCamera::camera(float aspect) const {
-  Camera c = Camera::lookAt(position(), target_, up_, home_.verticalFovDegrees, aspect);
-  // A thin lens focuses where the scene's camera said, or else on the target, wherever it has moved.
-  c.lensRadius = home_.apertureRadius;
-  c.focusDistance = home_.focusDistance > 0.0f ? home_.focusDistance : distance_;
-  return c;
+  // The scene camera's projection and lens at the orbit's position. A thin lens focuses where the scene's camera
+  // said, or else on the target (at distance_), wherever it has moved.
+  CameraDescription d = description();
+  d.up = up_;
+  if (!(d.focusDistance > 0.0f)) d.focusDistance = distance_;
+  return d.toCamera(aspect);
 }
 
 CameraDescription OrbitCamera::description() const {

@@ -17,7 +17,8 @@ bool sameSettings(const RenderSettings& a, const RenderSettings& b) {
 
 bool sameCamera(const Camera& a, const Camera& b) {
   return sameVector(a.position, b.position) && sameVector(a.forward, b.forward) && sameVector(a.right, b.right) &&
-         sameVector(a.up, b.up) && a.lensRadius == b.lensRadius && a.focusDistance == b.focusDistance;
+         sameVector(a.up, b.up) && a.lensRadius == b.lensRadius && a.focusDistance == b.focusDistance &&
+         a.orthographic == b.orthographic;
 }
 
 RenderSession::RenderSession(std::unique_ptr<Backend> backend) : backend_(std::move(backend)) {}

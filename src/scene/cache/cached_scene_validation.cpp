@@ -96,6 +96,11 @@ void checkCamera(const CameraDescription& c) {
     fail("the camera's field of view is not between 0 and 180 degrees");
   if (!(finite(c.apertureRadius) && c.apertureRadius >= 0.0f && finite(c.focusDistance) && c.focusDistance >= 0.0f))
     fail("the camera's aperture or focus distance is negative or not finite");
+  if (!(c.projection == Projection::Perspective || c.projection == Projection::Orthographic))
+    fail("the camera's projection is unknown");
+  if (!(finite(c.orthographicHalfHeight) && c.orthographicHalfHeight > 0.0f && finite(c.imageShift.x) &&
+        finite(c.imageShift.y)))
+    fail("the camera's orthographic size or image shift is not positive or not finite");
   const Vec3 forward = c.target - c.eye;
   if (!(length(forward) > 0.0f) || !(length(cross(forward, c.up)) > 0.0f))
     fail("the camera's position, target and up do not make a view");

@@ -12,8 +12,8 @@ namespace candela {
 bool pbrtWorldNeedsMirror(const glm::mat4& cameraFromWorld);
 
 // The camera of a `Camera` directive whose current transform was `cameraFromWorld`, for an image of width x
-// height: perspective (fov on the shorter image axis, lensradius, focaldistance); other projections are drawn
-// as perspective with a warning.
+// height: perspective (fov on the shorter image axis) or orthographic, each with lensradius, focaldistance,
+// screenwindow and frameaspectratio; other projections are drawn as perspective with a warning.
 CameraDescription makePbrtCamera(const std::string& type, const PbrtParameters& params,
                                  const glm::mat4& cameraFromWorld, uint32_t width, uint32_t height, bool mirrorX,
                                  PbrtContext& context);

@@ -4,6 +4,7 @@
 #include "scene/loaders/file_bytes.h"
 #include "scene/loaders/image_decoding.h"
 #include "scene/loaders/pbrt_pfm.h"
+#include "scene/loaders/texture_limits.h"
 
 namespace candela {
 
@@ -26,8 +27,16 @@ int32_t PbrtTextures::loadImage(const std::string& path, bool srgb, const std::s
     } else if (ext == ".pfm") {
       image = readPfm(resolved);
     } else {
+      // Decoded no larger than the texture size limit, checked on the header: a small PNG can claim 16000x16000
+      // pixels. The scene's memory limit applies once all its textures are read (fitSceneTextures).
       std::vector<uint8_t> bytes = readFileBytes(resolved);
-      image = decodeImage(resolved, bytes.data(), bytes.size(), srgb);
+      const ImageInfo info = inspectImage(resolved, bytes.data(), bytes.size());
+      const TextureLimits limits = textureLimits();
+      const TextureExtent full{info.width, info.height, info.channels * (info.hdr ? 4u : 1u)};
+      const TextureExtent fitted = fitTextureLimits({full}, {limits.maxSize, UINT64_MAX}).front();
+      if (fitted.width != full.width || fitted.height != full.height)
+        context_.warnings.add(context_.mainFile, downscaleWarning(resolved, full, fitted, limits));
+      image = decodeImage(resolved, bytes.data(), bytes.size(), srgb, fitted.width, fitted.height);
     }
     image.name = resolved;
     index = int32_t(context_.scene.textures.size());
