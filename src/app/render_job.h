@@ -62,6 +62,12 @@ struct RenderOutcome {
 // AOVs, which are then accumulated too). Throws std::runtime_error on failure; a
 // denoiser that cannot run is reported on stderr and the image is kept as rendered.
 RenderOutcome runRenderJob(const RenderJob& job, bool showProgress);
-RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool showProgress);
+// Renders `scene` as runRenderJob does once it is loaded: with a new backend, or with `backend` where given,
+// which must hold `scene` already (setScene or setInstanceTransforms).
+RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool showProgress,
+                                Backend* backend = nullptr);
+// The first half of runRenderJob: the job's scene, loaded with the material overrides applied. `hinted` becomes
+// `job` with the scene file's render hints where the command line gave none.
+Scene loadSceneForJob(const RenderJob& job, RenderJob& hinted);
 
 }  // namespace candela

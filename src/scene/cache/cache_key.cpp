@@ -14,7 +14,8 @@ namespace candela {
 namespace {
 
 // Bumped whenever the layout of a cache file changes.
-constexpr uint32_t kCacheFormatVersion = 3;  // 2: textures wrap per axis, cameras, vertex colours; 3: file states
+// 2: textures wrap per axis, cameras, vertex colours; 3: file states; 4: animations
+constexpr uint32_t kCacheFormatVersion = 4;
 
 std::string absolutePath(const std::string& path) {
   std::error_code ec;
