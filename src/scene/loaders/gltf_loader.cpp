@@ -265,7 +265,7 @@ class GltfSceneBuilder {
     if (source.matrix.size() == 16 && !animated_[size_t(index)]) {
       node.hasMatrix = 1;
       node.matrix = toAffine(localTransform(source));
-    } else {
+    } else if (source.matrix.size() == 16) {
       // glTF gives animated nodes no matrix; where a file does anyway, its channels replace parts of the
       // matrix's decomposition.
       glm::vec3 scale(1.0f), translation(0.0f), skew;
@@ -276,6 +276,13 @@ class GltfSceneBuilder {
       node.translation = {translation.x, translation.y, translation.z};
       node.rotation = {rotation.x, rotation.y, rotation.z, rotation.w};
       node.scale = {scale.x, scale.y, scale.z};
+    } else {
+      const auto& t = source.translation;
+      const auto& r = source.rotation;
+      const auto& sc = source.scale;
+      if (t.size() == 3) node.translation = {float(t[0]), float(t[1]), float(t[2])};
+      if (r.size() == 4) node.rotation = {float(r[0]), float(r[1]), float(r[2]), float(r[3])};
+      if (sc.size() == 3) node.scale = {float(sc[0]), float(sc[1]), float(sc[2])};
     }
     animationNodes_[size_t(index)] = int32_t(scene_.animation.nodes.size());
     scene_.animation.nodes.push_back(node);
