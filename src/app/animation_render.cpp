@@ -20,8 +20,7 @@ namespace fs = std::filesystem;
 int64_t parseFrameNumber(std::string_view text, const std::string& whole) {
   int64_t value = -1;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (text.empty() || error != std::errc() || end != text.data() + text.size() || value < 0 ||
-      value > kMaxFrameNumber)
+  if (text.empty() || error != std::errc() || end != text.data() + text.size() || value < 0 || value > kMaxFrameNumber)
     throw std::invalid_argument("'" + whole + "' is not a frame range A:B of whole numbers from 0 to " +
                                 std::to_string(kMaxFrameNumber));
   return value;
@@ -42,8 +41,7 @@ int chooseClip(const Scene& scene, const std::string& choice) {
     for (size_t i = 0; i < animation.clips.size(); ++i)
       names += (i ? ", " : "") + std::to_string(i) + " '" + animation.clips[i].name + "'";
     std::fprintf(stderr, "candela: warning: %zu animations; playing 0 '%s' (choose with --animation NAME|INDEX: %s)\n",
-                 animation.clips.size(), printableText(animation.clips[0].name).c_str(),
-                 printableText(names).c_str());
+                 animation.clips.size(), printableText(animation.clips[0].name).c_str(), printableText(names).c_str());
   }
   return int(clip);
 }
@@ -62,8 +60,7 @@ FrameRange parseFrameRange(const std::string& text) {
     throw std::invalid_argument("'" + text + "' is not a frame range A:B (for example 1:48)");
   const std::string_view all(text);
   FrameRange range{parseFrameNumber(all.substr(0, colon), text), parseFrameNumber(all.substr(colon + 1), text)};
-  if (range.last < range.first)
-    throw std::invalid_argument("'" + text + "': the last frame comes before the first");
+  if (range.last < range.first) throw std::invalid_argument("'" + text + "': the last frame comes before the first");
   return range;
 }
 
@@ -112,9 +109,8 @@ int runAnimatedRender(const RenderJob& job, const AnimationRequest& request, con
     const RenderOutcome outcome = renderLoadedScene(hinted, scene, /*showProgress=*/true, backend.get());
     const std::vector<std::string> written = writeImageWithAovs(path, outcome.image, display, outcome.aovs, job.aovs);
     std::fprintf(stderr, "rendered %s at %g s: %ux%u at %u spp in %.2f s, %llu invalid samples dropped\n",
-                 fs::path(path).filename().string().c_str(), seconds, outcome.settings.width,
-                 outcome.settings.height, outcome.samplesPerPixel, outcome.seconds,
-                 (unsigned long long)outcome.stats.invalidSamples);
+                 fs::path(path).filename().string().c_str(), seconds, outcome.settings.width, outcome.settings.height,
+                 outcome.samplesPerPixel, outcome.seconds, (unsigned long long)outcome.stats.invalidSamples);
     for (const std::string& file : written) std::printf("%s\n", fs::absolute(file).string().c_str());
     std::fflush(stdout);
   };

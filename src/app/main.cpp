@@ -136,33 +136,33 @@ void addRenderOptions(CLI::App& cmd, RenderJob& job) {
 
 // --time, --frames, --fps and --animation of `candela render` (animation_render.h).
 void addAnimationOptions(CLI::App& cmd, AnimationRequest& request) {
-  CLI::Option* time =
-      cmd.add_option_function<double>(
-             "--time", [&request](double seconds) { request.time = seconds; },
-             "Render the scene's animation at this time in seconds")
+  CLI::Option* time = cmd.add_option_function<double>(
+                             "--time", [&request](double seconds) { request.time = seconds; },
+                             "Render the scene's animation at this time in seconds")
+                          ->check(CLI::Validator(
+                              [](std::string& text) {
+                                double seconds = 0.0;
+                                if (!CLI::detail::lexical_cast(text, seconds) || !std::isfinite(seconds))
+                                  return "'" + text + "' is not a finite number of seconds";
+                                return std::string();
+                              },
+                              "SECONDS", ""));
+  CLI::Option* frames =
+      cmd.add_option_function<std::string>(
+             "--frames", [&request](const std::string& text) { request.frames = parseFrameRange(text); },
+             "Render frames A to B of the animation (A:B), frame f at f/fps seconds, each to the output name with its "
+             "last run of # replaced by the frame number (out_####.png; without #, _#### goes before the extension)")
           ->check(CLI::Validator(
               [](std::string& text) {
-                double seconds = 0.0;
-                if (!CLI::detail::lexical_cast(text, seconds) || !std::isfinite(seconds))
-                  return "'" + text + "' is not a finite number of seconds";
+                try {
+                  parseFrameRange(text);
+                } catch (const std::invalid_argument& e) {
+                  return std::string(e.what());
+                }
                 return std::string();
               },
-              "SECONDS", ""));
-  CLI::Option* frames = cmd.add_option_function<std::string>(
-         "--frames", [&request](const std::string& text) { request.frames = parseFrameRange(text); },
-         "Render frames A to B of the animation (A:B), frame f at f/fps seconds, each to the output name with its "
-         "last run of # replaced by the frame number (out_####.png; without #, _#### goes before the extension)")
-      ->check(CLI::Validator(
-          [](std::string& text) {
-            try {
-              parseFrameRange(text);
-            } catch (const std::invalid_argument& e) {
-              return std::string(e.what());
-            }
-            return std::string();
-          },
-          "A:B", ""))
-      ->excludes(time);
+              "A:B", ""))
+          ->excludes(time);
   cmd.add_option("--fps", request.framesPerSecond, "Frames per second of --frames")
       ->check(CLI::Range(0.001, 1000.0))
       ->needs(frames)

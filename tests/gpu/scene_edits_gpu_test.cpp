@@ -1,4 +1,5 @@
-// Material, environment and instance transform edits on the OptiX backend give the images that a rebuild with setScene gives.
+// Material, environment and instance transform edits on the OptiX backend give the images that a rebuild with setScene
+// gives.
 #include <gtest/gtest.h>
 
 #include "backends/optix/optix_backend.h"

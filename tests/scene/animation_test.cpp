@@ -10,11 +10,11 @@
 
 #include "app/animation_render.h"
 #include "app/scene_loading.h"
-#include "scene/loaders/scene_file.h"
 #include "backends/cpu/cpu_backend.h"
 #include "scene/animation_player.h"
 #include "scene/cache/scene_cache.h"
 #include "scene/loaders/gltf_loader.h"
+#include "scene/loaders/scene_file.h"
 #include "scene/scene_test_files.h"
 
 namespace candela {
@@ -42,16 +42,16 @@ AnimationChannel channel(AnimatedProperty property, AnimationInterpolation inter
 }
 
 TEST(AnimationSampling, LinearStepAndClampedEnds) {
-  const AnimationChannel linear = channel(AnimatedProperty::Translation, AnimationInterpolation::Linear, {1, 3},
-                                          {{0, 0, 0, 0}, {4, -2, 8, 0}});
+  const AnimationChannel linear =
+      channel(AnimatedProperty::Translation, AnimationInterpolation::Linear, {1, 3}, {{0, 0, 0, 0}, {4, -2, 8, 0}});
   const Vec4 quarter = sampleChannel(linear, 1.5f);
   expectNear({quarter.x, quarter.y, quarter.z}, {1, -0.5f, 2});
   EXPECT_EQ(sampleChannel(linear, 0.0f).x, 0.0f);  // before the first key: the first value
   EXPECT_EQ(sampleChannel(linear, 9.0f).x, 4.0f);  // after the last: the last
   EXPECT_EQ(sampleChannel(linear, std::numeric_limits<float>::quiet_NaN()).x, 0.0f);
 
-  const AnimationChannel step =
-      channel(AnimatedProperty::Scale, AnimationInterpolation::Step, {0, 1, 2}, {{1, 1, 1, 0}, {2, 2, 2, 0}, {3, 3, 3, 0}});
+  const AnimationChannel step = channel(AnimatedProperty::Scale, AnimationInterpolation::Step, {0, 1, 2},
+                                        {{1, 1, 1, 0}, {2, 2, 2, 0}, {3, 3, 3, 0}});
   EXPECT_EQ(sampleChannel(step, 0.999f).x, 1.0f);
   EXPECT_EQ(sampleChannel(step, 1.0f).x, 2.0f);
   EXPECT_EQ(sampleChannel(step, 1.5f).x, 2.0f);
@@ -121,9 +121,11 @@ struct AnimatedFile {
     const int indexAccessor = int(gltf["accessors"].size() - 1);
     gltf["meshes"] = {
         {{"primitives", {{{"attributes", {{"POSITION", positions}}}, {"indices", indexAccessor}, {"material", 0}}}}}};
-    gltf["materials"] = {{{"emissiveFactor", {1, 1, 1}}, {"pbrMetallicRoughness", {{"baseColorFactor", {0, 0, 0, 1}}}}}};
+    gltf["materials"] = {
+        {{"emissiveFactor", {1, 1, 1}}, {"pbrMetallicRoughness", {{"baseColorFactor", {0, 0, 0, 1}}}}}};
     gltf["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"znear", 0.1}}}}};
-    gltf["nodes"] = {{{"children", {1}}}, {{"mesh", 0}, {"translation", {0, 1, 0}}},
+    gltf["nodes"] = {{{"children", {1}}},
+                     {{"mesh", 0}, {"translation", {0, 1, 0}}},
                      {{"camera", 0}, {"translation", {0, 0, 10}}}};
     gltf["scenes"] = {{{"nodes", {0, 2}}}};
     const int twoKeys = add({0, 2}, "SCALAR"), threeKeys = add({0, 1, 2}, "SCALAR"), unitKeys = add({0, 1}, "SCALAR");
@@ -131,19 +133,18 @@ struct AnimatedFile {
     const int turns = add({0, 0, 0, 1, 0, 0, kSqrtHalf, kSqrtHalf}, "VEC4");
     const int scales = add({1, 1, 1, 3, 3, 3}, "VEC3");
     const int bounce = add({0, 0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0}, "VEC3");
-    gltf["animations"] = {
-        {{"name", "Move"},
-         {"samplers",
-          {{{"input", threeKeys}, {"output", moves}},
-           {{"input", twoKeys}, {"output", turns}, {"interpolation", "LINEAR"}},
-           {{"input", unitKeys}, {"output", scales}, {"interpolation", "STEP"}}}},
-         {"channels",
-          {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}},
-           {{"sampler", 1}, {"target", {{"node", 0}, {"path", "rotation"}}}},
-           {{"sampler", 2}, {"target", {{"node", 1}, {"path", "scale"}}}}}}},
-        {{"name", "Bounce"},
-         {"samplers", {{{"input", unitKeys}, {"output", bounce}, {"interpolation", "CUBICSPLINE"}}}},
-         {"channels", {{{"sampler", 0}, {"target", {{"node", 1}, {"path", "translation"}}}}}}}};
+    gltf["animations"] = {{{"name", "Move"},
+                           {"samplers",
+                            {{{"input", threeKeys}, {"output", moves}},
+                             {{"input", twoKeys}, {"output", turns}, {"interpolation", "LINEAR"}},
+                             {{"input", unitKeys}, {"output", scales}, {"interpolation", "STEP"}}}},
+                           {"channels",
+                            {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}},
+                             {{"sampler", 1}, {"target", {{"node", 0}, {"path", "rotation"}}}},
+                             {{"sampler", 2}, {"target", {{"node", 1}, {"path", "scale"}}}}}}},
+                          {{"name", "Bounce"},
+                           {"samplers", {{{"input", unitKeys}, {"output", bounce}, {"interpolation", "CUBICSPLINE"}}}},
+                           {"channels", {{{"sampler", 0}, {"target", {{"node", 1}, {"path", "translation"}}}}}}}};
   }
 
   std::string write(const TempFolder& folder) {
@@ -335,8 +336,7 @@ TEST(GltfAnimation, ASceneFilePlacingAModelTwiceAnimatesBothPlacements) {
   TempFolder folder;
   AnimatedFile file;
   file.write(folder);
-  const std::string scenePath = folder.write(
-      "scene.json", R"({"models": [{"file": "animated.gltf"},
+  const std::string scenePath = folder.write("scene.json", R"({"models": [{"file": "animated.gltf"},
                                    {"file": "animated.gltf", "transform": {"translate": [0, 0, -5]}}]})");
   Scene scene = loadScene(scenePath, SceneLoadOptions{});
   ASSERT_EQ(scene.instances.size(), 2u);
@@ -377,7 +377,7 @@ TEST(GltfAnimation, TheSceneCacheKeepsTheAnimation) {
 
 TEST(FrameSequence, FileNamesReplaceTheLastRunOfHashes) {
   EXPECT_EQ(frameFileName("out_####.png", 7), "out_0007.png");
-  EXPECT_EQ(frameFileName("out_##.exr", 123), "out_123.exr");  // wider numbers are not cut
+  EXPECT_EQ(frameFileName("out_##.exr", 123), "out_123.exr");                   // wider numbers are not cut
   EXPECT_EQ(frameFileName("a#b/shot_###_v##.png", 5), "a#b/shot_###_v05.png");  // in the file name only
   EXPECT_EQ(frameFileName("renders/out.png", 12), "renders/out_0012.png");
   EXPECT_EQ(frameFileName("out", 0), "out_0000");

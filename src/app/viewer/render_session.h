@@ -56,7 +56,7 @@ class RenderSession {
   SceneSummary summary_;
   void applyEnvironment();
   void applyMaterials();
-  std::optional<AnimationPlayer> player_;  // for a scene with an animation
+  std::optional<AnimationPlayer> player_;      // for a scene with an animation
   std::optional<std::pair<int, float>> pose_;  // the clip and time the instances are posed for; none: rest
 
   // What the scene was loaded with, and the viewer's adjustments to it.

@@ -37,8 +37,7 @@ class SamplerReader {
     else if (sampler.interpolation == "CUBICSPLINE")
       channel.interpolation = AnimationInterpolation::CubicSpline;
     else
-      failLoad(file_, where + ".interpolation: '" + sampler.interpolation +
-                          "' is not LINEAR, STEP or CUBICSPLINE");
+      failLoad(file_, where + ".interpolation: '" + sampler.interpolation + "' is not LINEAR, STEP or CUBICSPLINE");
     channel.times = readTimes(sampler.input, where + ".input");
     if (property == AnimatedProperty::Rotation) {
       channel.values = accessors_.readVec4(sampler.output, where + ".output");
@@ -86,8 +85,7 @@ std::vector<bool> animatedGltfNodes(const tinygltf::Model& model) {
   std::vector<bool> animated(model.nodes.size());
   for (const tinygltf::Animation& animation : model.animations)
     for (const tinygltf::AnimationChannel& channel : animation.channels)
-      if (channel.target_node >= 0 && size_t(channel.target_node) < animated.size() &&
-          propertyOf(channel.target_path))
+      if (channel.target_node >= 0 && size_t(channel.target_node) < animated.size() && propertyOf(channel.target_path))
         animated[size_t(channel.target_node)] = true;
   return animated;
 }
@@ -131,8 +129,9 @@ std::vector<AnimationClip> readGltfAnimations(const tinygltf::Model& model, cons
     warnings.add(file, std::to_string(weightChannels) +
                            " animation channels of morph target weights are ignored (morph targets are not supported)");
   if (unknownChannels > 0)
-    warnings.add(file, std::to_string(unknownChannels) + " animation channels of paths glTF does not define (such as '" +
-                           unknownPath + "') are ignored");
+    warnings.add(file, std::to_string(unknownChannels) +
+                           " animation channels of paths glTF does not define (such as '" + unknownPath +
+                           "') are ignored");
   return clips;
 }
 

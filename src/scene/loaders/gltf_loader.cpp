@@ -4,8 +4,8 @@
 
 #include <glm/gtc/quaternion.hpp>
 #define GLM_ENABLE_EXPERIMENTAL  // matrix_decompose is in glm/gtx
-#include <glm/gtx/matrix_decompose.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <glm/gtx/matrix_decompose.hpp>
 #include <glm/mat4x4.hpp>
 
 #include <cmath>
@@ -14,13 +14,14 @@
 #include <map>
 #include <sstream>
 
-#include "scene/loaders/file_bytes.h"
 #include "scene/animation_player.h"
+#include "scene/loaders/file_bytes.h"
 #include "scene/loaders/gltf_accessors.h"
 #include "scene/loaders/gltf_animation.h"
 #include "scene/loaders/gltf_buffer_uris.h"
 #include "scene/loaders/gltf_extensions.h"
 #include "scene/loaders/gltf_materials.h"
+#include "scene/loaders/image_decoding.h"
 #include "scene/loaders/path_confinement.h"
 #include "scene/loaders/texture_table.h"
 #include "scene/scene_repair.h"
@@ -169,7 +170,8 @@ class GltfSceneBuilder {
     scene_.name = fs::path(file_).stem().string();
     for (size_t i = 0; i < model_.materials.size(); ++i) {
       GltfMaterial m = materialFromGltf(
-          model_, int(i), file_, [this](int t, bool srgb) { return texture(t, srgb); }, warnings_);
+          model_, int(i), file_, [this](int t, bool srgb) { return texture(t, srgb); },
+          [this](int t, bool srgb) { return textureMean(t, srgb); }, warnings_);
       scene_.materials.push_back(m.material);
       scene_.materialNames.push_back(model_.materials[i].name);
       uvTransforms_.push_back(m.uvTransform);
@@ -251,7 +253,8 @@ class GltfSceneBuilder {
     if (scene_.instances.size() == kMaxInstances)
       failLoad(file_, where + ": more than " + std::to_string(kMaxInstances) + " mesh instances");
     if (animationNode >= 0)
-      scene_.animation.instances.push_back({uint32_t(scene_.instances.size()), uint32_t(animationNode), toAffine(local)});
+      scene_.animation.instances.push_back(
+          {uint32_t(scene_.instances.size()), uint32_t(animationNode), toAffine(local)});
     scene_.instances.push_back({mesh, toAffine(world)});
   }
 
@@ -629,6 +632,45 @@ class GltfSceneBuilder {
     }
     warnings_.add(file_, imageWhere + " has no data; the material is left untextured");
     return kNoTexture;
+  }
+
+  // The mean texel of textures[index] from a small decode of its image, for what needs one number for a
+  // texture (gltf_materials.h); nothing where the image cannot be read.
+  std::optional<Vec4> textureMean(int index, bool srgb) {
+    if (index < 0 || size_t(index) >= model_.textures.size()) return std::nullopt;
+    const int source = model_.textures[size_t(index)].source;
+    if (source < 0 || size_t(source) >= model_.images.size()) return std::nullopt;
+    const tinygltf::Image& image = model_.images[size_t(source)];
+    const std::string name = file_ + ": images[" + std::to_string(source) + "]";
+    try {
+      std::vector<uint8_t> bytes;
+      if (!image.image.empty()) {
+        bytes = image.image;
+      } else {
+        std::optional<std::string> path = image.uri.empty() || baseDir_.empty() ? std::nullopt : uriToPath(image.uri);
+        if (!path || path->empty()) return std::nullopt;
+        const ResolvedPath resolved = confineModelPath(joinModelPath(baseDir_, *path), files_);
+        if (!resolved.allowed()) return std::nullopt;
+        bytes = readFileBytes(resolved.path);
+      }
+      constexpr uint32_t kMeanSide = 16;
+      const Texture t = decodeImage(name, bytes.data(), bytes.size(), srgb, kMeanSide, kMeanSide);
+      const size_t texels = size_t(t.width) * t.height;
+      if (texels == 0) return std::nullopt;
+      double sum[4] = {0, 0, 0, 0};
+      for (size_t i = 0; i < texels; ++i)
+        for (uint32_t c = 0; c < 4; ++c) {
+          const uint32_t from = t.channels == 1 ? 0 : std::min(c, t.channels - 1);
+          const size_t at = i * t.channels + from;
+          float v = t.floats.empty() ? float(t.bytes[at]) / 255.0f : t.floats[at];
+          if (t.channels == 1 && c == 3) v = 1.0f;  // grey images have no alpha
+          sum[c] += c < 3 && t.srgb ? srgbToLinear(v) : v;
+        }
+      return Vec4{float(sum[0] / double(texels)), float(sum[1] / double(texels)), float(sum[2] / double(texels)),
+                  float(sum[3] / double(texels))};
+    } catch (const LoadError&) {
+      return std::nullopt;
+    }
   }
 
   const tinygltf::Model& model_;

@@ -29,6 +29,9 @@ struct GltfMaterial {
 
 // Returns a texture id for glTF textures[index] (its image, sampler wrap mode and colour encoding), or kNoTexture.
 using GltfTextureResolver = std::function<int32_t(int index, bool srgb)>;
+// The mean texel of glTF textures[index] (linear RGBA; sRGB colours decoded where `srgb`), or nothing where its
+// image cannot be read.
+using GltfTextureMean = std::function<std::optional<Vec4>(int index, bool srgb)>;
 
 // Maps glTF materials[index]:
 //   metallic-roughness (the core model)                                  -> Pbr
@@ -39,7 +42,11 @@ using GltfTextureResolver = std::function<int32_t(int index, bool srgb)>;
 // clearcoat, sheen, specular) have no slot: each of those gives a warning. A texture transform is returned for
 // baking when all textures of the material share it, and ignored with a warning otherwise; likewise the
 // TEXCOORD set. KHR_materials_unlit becomes a black surface emitting the base colour.
+// KHR_materials_pbrSpecularGlossiness becomes Pbr (gltf_specular_glossiness.h): the diffuse texture is the base
+// colour texture, scaled so that its mean converts as the factors do; the specular-glossiness texture cannot be
+// converted texel by texel and is reduced to its mean (`textureMean`), with a warning.
 GltfMaterial materialFromGltf(const tinygltf::Model& model, int index, const std::string& file,
-                              const GltfTextureResolver& texture, LoadWarnings& warnings);
+                              const GltfTextureResolver& texture, const GltfTextureMean& textureMean,
+                              LoadWarnings& warnings);
 
 }  // namespace candela
