@@ -6,6 +6,7 @@
 #include <limits>
 #include <set>
 
+#include "kernel/bsdf/ggx.h"
 #include "scene/loaders/file_bytes.h"
 #include "scene/loaders/gltf_loader.h"
 #include "scene/loaders/gltf_specular_glossiness.h"
@@ -477,6 +478,34 @@ TEST(GltfLoader, SpecularGlossinessMaterialsBecomeMetallicRoughness) {
                                       "reduced to its mean"),
             std::string::npos)
       << warnings.messages[0];
+}
+
+TEST(GltfLoader, AnisotropyStretchesTheLobeAlongTheTangentAsGltfDoes) {
+  json g = triangleGltf();
+  json slightly = {{"anisotropyStrength", 0.5}};
+  json rotated = {{"anisotropyStrength", 1.0}, {"anisotropyRotation", 0.5}};
+  json first = {{"pbrMetallicRoughness", {{"roughnessFactor", 0.4}}}};
+  json second = {{"pbrMetallicRoughness", {{"roughnessFactor", 0.2}}}};
+  first["extensions"]["KHR_materials_anisotropy"] = slightly;
+  second["extensions"]["KHR_materials_anisotropy"] = rotated;
+  g["materials"] = {first, second};
+  g["meshes"][0]["primitives"][0]["material"] = 0;
+  g["extensionsUsed"] = {"KHR_materials_anisotropy"};
+  LoadWarnings warnings;
+  const Scene s = load(g, warnings);
+  const Material& m = s.materials[0];
+  EXPECT_EQ(m.type, MaterialType::Disney);
+  // glTF: alpha 0.16 across the tangent, mix(0.16, 1, 0.25) = 0.37 along it.
+  const GgxDistribution lobe = GgxDistribution::anisotropic(m.roughness, m.anisotropic);
+  EXPECT_NEAR(lobe.alphaX, 0.37f, 1e-5f);
+  EXPECT_NEAR(lobe.alphaY, 0.16f, 1e-5f);
+  // Alpha 0.04 across and 1 along the tangent is beyond Disney's widest stretch: the alpha along it is kept.
+  const GgxDistribution widest = GgxDistribution::anisotropic(s.materials[1].roughness, s.materials[1].anisotropic);
+  EXPECT_FLOAT_EQ(s.materials[1].anisotropic, 1.0f);
+  EXPECT_NEAR(widest.alphaX, 1.0f, 1e-5f);
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_NE(warnings.messages[0].find("materials[1]: KHR_materials_anisotropy.anisotropyRotation is ignored"),
+            std::string::npos);
 }
 
 TEST(GltfLoader, NonFiniteNormalsDoNotRejectTheFile) {

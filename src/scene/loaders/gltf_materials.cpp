@@ -241,6 +241,22 @@ GltfMaterial materialFromGltf(const tinygltf::Model& model, int index, const std
     std::vector<double> c = numbers(*e, "specularColorFactor", {1, 1, 1});
     m.specularTint = (c[0] != c[1] || c[1] != c[2]) ? 1.0f : 0.0f;
   }
+  if (const tinygltf::Value* e = disneyOnly("KHR_materials_anisotropy", {"anisotropyTexture"})) {
+    // glTF stretches the GGX lobe along the tangent to alpha_t = mix(alpha, 1, strength^2), keeping alpha = r^2
+    // across it; the Disney lobe has alpha_x = r'^2 / aspect and alpha_y = r'^2 aspect with aspect =
+    // sqrt(1 - 0.9 anisotropic). Both alphas match for alpha_t / alpha up to 10, Disney's widest stretch; beyond,
+    // alpha_t matches and the lobe is wider across.
+    const float stretch = std::clamp(finiteOr(number(*e, "anisotropyStrength", 0), 0), 0.0f, 1.0f);
+    const float alpha = m.roughness * m.roughness;
+    const float alphaT = alpha + (1.0f - alpha) * stretch * stretch;
+    if (alphaT > alpha) {
+      const float ratio = alphaT / std::max(alpha, 1e-8f);
+      m.anisotropic = std::clamp((1.0f - 1.0f / ratio) / 0.9f, 0.0f, 1.0f);
+      m.roughness = std::sqrt(alphaT * std::sqrt(1.0f - 0.9f * m.anisotropic));
+    }
+    if (finiteOr(number(*e, "anisotropyRotation", 0), 0) != 0.0f)
+      refs.warn("KHR_materials_anisotropy.anisotropyRotation is ignored: the lobe is stretched along the tangent");
+  }
   if (extension(g.extensions, "KHR_materials_unlit")) {
     // Unlit: the base colour is what the camera sees, whatever the lighting. Rendered as a black surface that
     // emits its base colour (texture included), so it also lights its surroundings a little.

@@ -35,7 +35,9 @@ using GltfTextureMean = std::function<std::optional<Vec4>(int index, bool srgb)>
 
 // Maps glTF materials[index]:
 //   metallic-roughness (the core model)                                  -> Pbr
-//   with KHR_materials_transmission, _ior, _clearcoat, _sheen or _specular -> Disney
+//   with KHR_materials_transmission, _ior, _clearcoat, _sheen, _specular or _anisotropy -> Disney
+// (anisotropy: the strength stretches the lobe along the tangent as glTF's does, up to Disney's widest stretch;
+// its rotation and texture are ignored with a warning)
 // emissiveFactor times KHR_materials_emissive_strength is the emitted radiance; alphaMode, alphaCutoff and
 // doubleSided are kept. The base colour, metallic-roughness, normal and emissive textures are used; occlusion
 // maps are left out on purpose (a path tracer computes occlusion), and extension textures (transmission,
