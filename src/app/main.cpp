@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -12,6 +13,7 @@
 
 #include <tbb/global_control.h>
 
+#include "app/animation_render.h"
 #include "app/backend_factory.h"
 #include "app/checkpoint/duration.h"
 #include "app/checkpoint/stop_signals.h"
@@ -174,6 +176,42 @@ void addRenderOptions(CLI::App& cmd, RenderJob& job) {
   cmd.add_option("--backend", job.backend, "auto, cpu or optix (in this build: " + availableBackends() + ")")
       ->check(CLI::IsMember({"auto", "cpu", "optix"}))
       ->capture_default_str();
+}
+
+// --time, --frames, --fps and --animation of `candela render` (animation_render.h).
+void addAnimationOptions(CLI::App& cmd, AnimationRequest& request) {
+  CLI::Option* time = cmd.add_option_function<double>(
+                             "--time", [&request](double seconds) { request.time = seconds; },
+                             "Render the scene's animation at this time in seconds")
+                          ->check(CLI::Validator(
+                              [](std::string& text) {
+                                double seconds = 0.0;
+                                if (!CLI::detail::lexical_cast(text, seconds) || !std::isfinite(seconds))
+                                  return "'" + text + "' is not a finite number of seconds";
+                                return std::string();
+                              },
+                              "SECONDS", ""));
+  CLI::Option* frames =
+      cmd.add_option_function<std::string>(
+             "--frames", [&request](const std::string& text) { request.frames = parseFrameRange(text); },
+             "Render frames A to B of the animation (A:B), frame f at f/fps seconds, each to the output name with its "
+             "last run of # replaced by the frame number (out_####.png; without #, _#### goes before the extension)")
+          ->check(CLI::Validator(
+              [](std::string& text) {
+                try {
+                  parseFrameRange(text);
+                } catch (const std::invalid_argument& e) {
+                  return std::string(e.what());
+                }
+                return std::string();
+              },
+              "A:B", ""))
+          ->excludes(time);
+  cmd.add_option("--fps", request.framesPerSecond, "Frames per second of --frames")
+      ->check(CLI::Range(0.001, 1000.0))
+      ->needs(frames)
+      ->capture_default_str();
+  cmd.add_option("--animation", request.clip, "The animation to play, by name or index (default: the first)");
 }
 
 std::string formatRate(double perSecond) {
@@ -504,6 +542,8 @@ int main(int argc, char** argv) {
   render->add_option("-o,--output", output, "Output image: .png (tone mapped), .exr or .pfm (linear)")
       ->capture_default_str();
   render->add_option("--exposure", display.exposure, "Exposure in stops, for .png")->capture_default_str();
+  AnimationRequest animation;
+  addAnimationOptions(*render, animation);
   render->add_option("--tonemap", toneMapper, "Tone mapper for .png: aces, reinhard or clamp (linear)")
       ->check(CLI::IsMember({"aces", "reinhard", "clamp"}))
       ->capture_default_str();
@@ -590,6 +630,8 @@ int main(int argc, char** argv) {
     if (*inspect) return runLoad(inspectSpec, inspectOptions);
     if (*render) {
       display.toneMapper = parseToneMapper(toneMapper);
+      if (animation.requested()) return runAnimatedRender(renderJob, animation, output, display);
+      if (!animation.clip.empty()) throw std::runtime_error("--animation needs --time or --frames");
       return runRender(renderJob, output, display, rankTimeoutSeconds);
     }
     if (*view) return runView(viewOptions, viewToneMapper);

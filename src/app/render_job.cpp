@@ -114,25 +114,29 @@ RenderOutcome runRenderJob(const RenderJob& job, bool showProgress) {
         "'GPU backend')");
 #endif
   const auto loadStart = std::chrono::steady_clock::now();
-  Scene scene = agreedStep(job, [&] {
-    return loadScene(job.sceneSpec, {job.environmentPath, job.sceneCache, job.outsidePaths, job.camera,
-                                     job.textureLimits, !job.team || job.team->writes()});
-  });
+  RenderJob hinted;
+  Scene scene = agreedStep(job, [&] { return loadSceneForJob(job, hinted); });
   const double loadSeconds = secondsSince(loadStart);
-  applyOverrides(scene.materials, job.materialOverrides);
-  RenderJob hinted = job;
   hinted.control.timeLimitFrom = loadStart;
-  const RenderHints& hints = scene.renderHints;
-  if (hints.width && !job.given.width) hinted.settings.width = *hints.width;
-  if (hints.height && !job.given.height) hinted.settings.height = *hints.height;
-  if (hints.samplesPerPixel && !job.given.samplesPerPixel) hinted.samplesPerPixel = *hints.samplesPerPixel;
-  if (hints.maxDepth && !job.given.maxDepth) hinted.settings.maxDepth = *hints.maxDepth;
   RenderOutcome outcome = renderLoadedScene(hinted, scene, showProgress);
   outcome.loadSeconds = loadSeconds;
   return outcome;
 }
 
-RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool showProgress) {
+Scene loadSceneForJob(const RenderJob& job, RenderJob& hinted) {
+  Scene scene = loadScene(job.sceneSpec, {job.environmentPath, job.sceneCache, job.outsidePaths, job.camera,
+                                          job.textureLimits, !job.team || job.team->writes()});
+  applyOverrides(scene.materials, job.materialOverrides);
+  hinted = job;
+  const RenderHints& hints = scene.renderHints;
+  if (hints.width && !job.given.width) hinted.settings.width = *hints.width;
+  if (hints.height && !job.given.height) hinted.settings.height = *hints.height;
+  if (hints.samplesPerPixel && !job.given.samplesPerPixel) hinted.samplesPerPixel = *hints.samplesPerPixel;
+  if (hints.maxDepth && !job.given.maxDepth) hinted.settings.maxDepth = *hints.maxDepth;
+  return scene;
+}
+
+RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool showProgress, Backend* given) {
   using Clock = std::chrono::steady_clock;
   agreedStep(job, [&] {
     checkRenderMemory(job);
@@ -142,15 +146,18 @@ RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool s
   outcome.settings = job.settings;
   outcome.samplesPerPixel = job.samplesPerPixel;
   const auto backendStart = Clock::now();
-  std::string why;
-  std::unique_ptr<Backend> backend =
-      agreedStep(job, [&] { return createBackend(job.backend, why, job.team ? job.team->localIndex() : 0); });
+  std::unique_ptr<Backend> created;
+  if (!given) {
+    std::string why;
+    created = agreedStep(job, [&] { return createBackend(job.backend, why, job.team ? job.team->localIndex() : 0); });
+    if (!job.team || job.team->writes()) std::fprintf(stderr, "%s\n", why.c_str());
+  }
+  Backend* backend = given ? given : created.get();
   outcome.backendStartSeconds = secondsSince(backendStart);
-  if (!job.team || job.team->writes()) std::fprintf(stderr, "%s\n", why.c_str());
   if (job.rawTrace && !backend->supportsRawTrace())
     throw std::runtime_error("the raw-trace mode needs the optix backend, not " + backend->name());
   const auto setupStart = Clock::now();
-  backend->setScene(scene);
+  if (!given) backend->setScene(scene);
   backend->setSettings(job.settings);
   backend->setAovsEnabled(needsAovs(job));
   backend->setCamera(scene.camera.toCamera(float(job.settings.width) / float(job.settings.height)));

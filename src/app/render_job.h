@@ -72,6 +72,12 @@ struct RenderOutcome {
 // resumes from a checkpoint, writes checkpoints and may stop early (RenderOutcome::end); with `job.team`, this
 // process renders its share, and only the writer's outcome holds the image.
 RenderOutcome runRenderJob(const RenderJob& job, bool showProgress);
-RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool showProgress);
+// Renders `scene` as runRenderJob does once it is loaded: with a new backend, or with `backend` where given,
+// which must hold `scene` already (setScene or setInstanceTransforms).
+RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool showProgress,
+                                Backend* backend = nullptr);
+// The first half of runRenderJob: the job's scene, loaded with the material overrides applied. `hinted` becomes
+// `job` with the scene file's render hints where the command line gave none.
+Scene loadSceneForJob(const RenderJob& job, RenderJob& hinted);
 
 }  // namespace candela

@@ -208,6 +208,21 @@ bool FlatScene::replaceMaterials(const std::vector<Material>& replacement) {
   return true;
 }
 
+bool FlatScene::replaceInstanceTransforms(const Scene& scene) {
+  if (scene.instances.size() != instances.size()) return false;
+  for (size_t i = 0; i < instances.size(); ++i)
+    if (scene.instances[i].meshId != instances[i].meshId) return false;
+  for (size_t i = 0; i < instances.size(); ++i) {
+    instances[i].objectToWorld = scene.instances[i].objectToWorld;
+    instances[i].normalToWorld = normalTransform(scene.instances[i].objectToWorld);
+  }
+  lights.clear();
+  lightCdf.clear();
+  lightAreaPdfScale = 0.0f;
+  buildLightTable(scene, *this);
+  return true;
+}
+
 void FlatScene::replaceEnvironment(const Environment& replacement) {
   environment = EnvironmentView{};
   environmentTexels.clear();

@@ -43,6 +43,9 @@ struct FlatScene {
   // what changed: the same count, the same emission (the light table) and no material newly needing tangents.
   // Returns false, changing nothing, when the scene must be built again instead.
   bool replaceMaterials(const std::vector<Material>& replacement);
+  // Takes the instance transforms of `scene`, the scene this was built from with only those changed, and builds
+  // the light table again. Returns false, changing nothing, when the instances differ in number or meshes.
+  bool replaceInstanceTransforms(const Scene& scene);
   // Rebuilds the environment's parameters, texels and sampling distribution, and how often light sampling
   // picks it; the geometry and the light table stay.
   void replaceEnvironment(const Environment& replacement);

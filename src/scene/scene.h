@@ -9,6 +9,7 @@
 #include "kernel/material.h"
 #include "kernel/scene_view.h"
 #include "kernel/texture.h"
+#include "scene/animation.h"
 
 namespace candela {
 
@@ -116,6 +117,8 @@ struct Scene {
   RenderHints renderHints;
   bool cameraMissing = false;        // the input had no camera: `camera` is to be framed around the scene's bounds
   std::vector<NamedCamera> cameras;  // every camera the input defines, in order; `camera` is the first
+  // Keyframed node transforms (glTF animations); `instances` hold the rest pose. See animation_player.h.
+  SceneAnimation animation;
   // The files the scene was read from: the model, its material libraries, buffers and images (what the scene
   // cache checks for changes).
   std::vector<std::string> inputFiles;

@@ -166,8 +166,8 @@ size_t repairAttributes(Mesh& mesh) {
       std::plus<size_t>());
 }
 
-// Usable: finite, and neither singular nor so close to it that its inverse (which transforms normals, and rays
-// into the instance) has an entry beyond 1 / kMinInstanceScale.
+}  // namespace
+
 bool usableTransform(const Affine3x4& transform) {
   for (float x : transform.m)
     if (!std::isfinite(x)) return false;
@@ -213,6 +213,8 @@ Bounds3 meshBounds(const Mesh& mesh) {
         return a;
       });
 }
+
+namespace {
 
 // What repairing one mesh did, and the bounds of what is left of it.
 struct MeshRepair {
@@ -287,24 +289,32 @@ void repairInstances(Scene& scene, const std::vector<MeshRepair>& repairs, const
   scene.meshes.resize(kept);
 
   size_t unusable = 0, outOfRange = 0, out = 0;
-  for (const Instance& inst : scene.instances) {
+  // The animation refers to instances by index: each instance's new one, or ~0u where it was dropped.
+  std::vector<uint32_t> newInstanceIndex(scene.animation.empty() ? 0 : scene.instances.size(), ~0u);
+  for (size_t i = 0; i < scene.instances.size(); ++i) {
+    const Instance inst = scene.instances[i];
+    if (!newInstanceIndex.empty()) newInstanceIndex[i] = uint32_t(out);
     if (inst.meshId >= newMeshId.size()) {
       scene.instances[out++] = inst;  // validateScene names this
       continue;
     }
     const uint32_t mesh = newMeshId[inst.meshId];
-    if (mesh == ~0u) continue;
-    if (!usableTransform(inst.objectToWorld)) {
+    bool keep = mesh != ~0u;
+    if (keep && !usableTransform(inst.objectToWorld)) {
       ++unusable;
-      continue;
-    }
-    if (!boundsWithinRange(bounds[mesh], inst.objectToWorld)) {
+      keep = false;
+    } else if (keep && !boundsWithinRange(bounds[mesh], inst.objectToWorld)) {
       ++outOfRange;
+      keep = false;
+    }
+    if (!keep) {
+      if (!newInstanceIndex.empty()) newInstanceIndex[i] = ~0u;
       continue;
     }
     scene.instances[out++] = {mesh, inst.objectToWorld};
   }
   scene.instances.resize(out);
+  if (!newInstanceIndex.empty()) scene.animation.renumberInstances(newInstanceIndex);
   if (unusable > 0)
     warnings.add(file, std::to_string(unusable) +
                            " instances dropped: their transform is not finite, is singular, or shrinks some "

@@ -2,6 +2,7 @@
 #include <cstddef>
 #include <string>
 
+#include "core/bounds.h"
 #include "scene/loaders/load_diagnostics.h"
 #include "scene/scene.h"
 
@@ -22,6 +23,13 @@ constexpr float kMinInstanceScale = 1e-8f;
 constexpr float kMaxRadiance = 1e6f;
 // Instances over the whole scene.
 constexpr size_t kMaxInstances = 10'000'000;
+
+// Whether an instance transform is usable: finite, and neither singular nor so close to it that its inverse
+// (which transforms normals, and rays into the instance) has an entry beyond 1 / kMinInstanceScale.
+bool usableTransform(const Affine3x4& transform);
+// Whether `transform` keeps the corners of `objectBounds` within kMaxSceneCoordinate.
+bool boundsWithinRange(const Bounds3& objectBounds, const Affine3x4& transform);
+Bounds3 meshBounds(const Mesh& mesh);
 
 // Repairs a loaded scene once, before it is rendered, so that no number in it can make a backend fail:
 // - triangles that use a non-finite vertex or one beyond kMaxSceneCoordinate are dropped (one warning per mesh

@@ -1,4 +1,5 @@
-// Material and environment edits on the OptiX backend give the images that a rebuild with setScene gives.
+// Material, environment and instance transform edits on the OptiX backend give the images that a rebuild with setScene
+// gives.
 #include <gtest/gtest.h>
 
 #include "backends/optix/optix_backend.h"
@@ -12,6 +13,10 @@ std::unique_ptr<Backend> makeOptix() { return std::make_unique<OptixBackend>(); 
 TEST(GpuSceneEdits, SetMaterialsGivesTheImageOfSetScene) { test::expectMaterialEditMatchesRebuild(makeOptix); }
 
 TEST(GpuSceneEdits, SetEnvironmentGivesTheImageOfSetScene) { test::expectEnvironmentEditMatchesRebuild(makeOptix); }
+
+TEST(GpuSceneEdits, SetInstanceTransformsGivesTheImageOfSetScene) {
+  test::expectInstanceTransformEditMatchesRebuild(makeOptix);
+}
 
 }  // namespace
 }  // namespace candela

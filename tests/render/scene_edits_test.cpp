@@ -1,5 +1,6 @@
-// Material and environment edits on the CPU backend (Backend::setMaterials, setEnvironment) give the images
-// that a rebuild with setScene gives; edits that the light table or the tangents depend on are refused.
+// Material, environment and instance transform edits on the CPU backend (Backend::setMaterials, setEnvironment,
+// setInstanceTransforms) give the images that a rebuild with setScene gives; material edits that the light table
+// or the tangents depend on are refused.
 #include <gtest/gtest.h>
 
 #include "backends/cpu/cpu_backend.h"
@@ -15,6 +16,10 @@ std::unique_ptr<Backend> makeCpu() { return std::make_unique<CpuBackend>(); }
 TEST(CpuSceneEdits, SetMaterialsGivesTheImageOfSetScene) { test::expectMaterialEditMatchesRebuild(makeCpu); }
 
 TEST(CpuSceneEdits, SetEnvironmentGivesTheImageOfSetScene) { test::expectEnvironmentEditMatchesRebuild(makeCpu); }
+
+TEST(CpuSceneEdits, SetInstanceTransformsGivesTheImageOfSetScene) {
+  test::expectInstanceTransformEditMatchesRebuild(makeCpu);
+}
 
 TEST(FlatSceneEdits, RefusesMaterialsThatTheLightTableOrTangentsDependOn) {
   const Scene scene = makeCornellBox();

@@ -6,8 +6,10 @@
 #include <limits>
 #include <set>
 
+#include "kernel/bsdf/ggx.h"
 #include "scene/loaders/file_bytes.h"
 #include "scene/loaders/gltf_loader.h"
+#include "scene/loaders/gltf_specular_glossiness.h"
 #include "scene/scene_test_files.h"
 
 namespace candela {
@@ -417,6 +419,93 @@ TEST(GltfLoader, UnlitMaterialsEmitTheirBaseColour) {
   EXPECT_TRUE(warnings.messages.empty());
   EXPECT_FLOAT_EQ(s.materials[0].emission.z, 0.6f);
   EXPECT_TRUE(isBlack(s.materials[0].baseColor));
+}
+
+TEST(SpecularGlossiness, DielectricsAndMetalsConvertExactly) {
+  // A 4% specular over a diffuse colour is a dielectric of that base colour.
+  const MetallicRoughness plastic =
+      metallicRoughnessFromSpecularGlossiness({0.5f, 0.2f, 0.1f}, {0.04f, 0.04f, 0.04f}, 0.75f);
+  EXPECT_FLOAT_EQ(plastic.metallic, 0.0f);
+  EXPECT_NEAR(plastic.baseColor.x, 0.5f, 1e-6f);
+  EXPECT_NEAR(plastic.baseColor.z, 0.1f, 1e-6f);
+  EXPECT_FLOAT_EQ(plastic.roughness, 0.25f);
+  // Gold: no diffuse, a coloured specular: a metal whose base colour is the specular colour.
+  const Vec3 gold{1.0f, 0.766f, 0.336f};
+  const MetallicRoughness metal = metallicRoughnessFromSpecularGlossiness({0, 0, 0}, gold, 1.0f);
+  EXPECT_NEAR(metal.metallic, 1.0f, 1e-4f);
+  EXPECT_NEAR(metal.baseColor.y, gold.y, 1e-3f);
+  EXPECT_NEAR(metal.baseColor.z, gold.z, 1e-3f);
+  EXPECT_FLOAT_EQ(metal.roughness, 0.0f);
+  // A specular below 4% is still a dielectric; out-of-range input is clamped.
+  EXPECT_FLOAT_EQ(metallicRoughnessFromSpecularGlossiness({2, 2, 2}, {0.01f, 0.01f, 0.01f}, 3.0f).metallic, 0.0f);
+  EXPECT_FLOAT_EQ(metallicRoughnessFromSpecularGlossiness({2, 2, 2}, {0.01f, 0.01f, 0.01f}, 3.0f).roughness, 0.0f);
+}
+
+TEST(GltfLoader, SpecularGlossinessMaterialsBecomeMetallicRoughness) {
+  json g = triangleGltf();
+  std::vector<uint8_t> png = readFileBytes(std::string(CANDELA_SOURCE_DIR) + "/tests/scene/data/checker.png");
+  g["images"] = {{{"uri", "data:image/png;base64," + base64(png)}}};
+  g["textures"] = {{{"source", 0}}};
+  json plastic = {{"diffuseFactor", {0.5, 0.5, 0.5, 0.8}},
+                  {"specularFactor", {0.04, 0.04, 0.04}},
+                  {"glossinessFactor", 0.7},
+                  {"diffuseTexture", {{"index", 0}}}};
+  json gold = {{"diffuseFactor", {0, 0, 0, 1}}, {"specularFactor", {1.0, 0.766, 0.336}}, {"glossinessFactor", 0.9}};
+  json glossMapped = {{"specularGlossinessTexture", {{"index", 0}}}};
+  g["materials"] = json::array();
+  for (const json& e : {plastic, gold, glossMapped})
+    g["materials"].push_back({{"extensions", {{"KHR_materials_pbrSpecularGlossiness", e}}}});
+  g["meshes"][0]["primitives"][0]["material"] = 0;
+  g["extensionsUsed"] = {"KHR_materials_pbrSpecularGlossiness"};
+  g["extensionsRequired"] = {"KHR_materials_pbrSpecularGlossiness"};
+  LoadWarnings warnings;
+  const Scene s = load(g, warnings);
+  const Material& p = s.materials[0];
+  EXPECT_EQ(p.type, MaterialType::Pbr);
+  EXPECT_FLOAT_EQ(p.metallic, 0.0f);
+  EXPECT_NEAR(p.roughness, 0.3f, 1e-6f);
+  EXPECT_EQ(p.baseColorTexture, 0);  // the diffuse texture, whose mean the factor keeps at the converted colour
+  EXPECT_NEAR(p.baseColor.x, 0.5f, 1e-5f);
+  EXPECT_FLOAT_EQ(p.opacity, 0.8f);
+  const Material& m = s.materials[1];
+  EXPECT_NEAR(m.metallic, 1.0f, 1e-4f);
+  EXPECT_NEAR(m.baseColor.z, 0.336f, 1e-3f);
+  EXPECT_NEAR(m.roughness, 0.1f, 1e-6f);
+  EXPECT_EQ(m.baseColorTexture, kNoTexture);
+  EXPECT_EQ(m.metallicRoughnessTexture, kNoTexture);
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_NE(warnings.messages[0].find("materials[2]: KHR_materials_pbrSpecularGlossiness.specularGlossinessTexture is "
+                                      "reduced to its mean"),
+            std::string::npos)
+      << warnings.messages[0];
+}
+
+TEST(GltfLoader, AnisotropyStretchesTheLobeAlongTheTangentAsGltfDoes) {
+  json g = triangleGltf();
+  json slightly = {{"anisotropyStrength", 0.5}};
+  json rotated = {{"anisotropyStrength", 1.0}, {"anisotropyRotation", 0.5}};
+  json first = {{"pbrMetallicRoughness", {{"roughnessFactor", 0.4}}}};
+  json second = {{"pbrMetallicRoughness", {{"roughnessFactor", 0.2}}}};
+  first["extensions"]["KHR_materials_anisotropy"] = slightly;
+  second["extensions"]["KHR_materials_anisotropy"] = rotated;
+  g["materials"] = {first, second};
+  g["meshes"][0]["primitives"][0]["material"] = 0;
+  g["extensionsUsed"] = {"KHR_materials_anisotropy"};
+  LoadWarnings warnings;
+  const Scene s = load(g, warnings);
+  const Material& m = s.materials[0];
+  EXPECT_EQ(m.type, MaterialType::Disney);
+  // glTF: alpha 0.16 across the tangent, mix(0.16, 1, 0.25) = 0.37 along it.
+  const GgxDistribution lobe = GgxDistribution::anisotropic(m.roughness, m.anisotropic);
+  EXPECT_NEAR(lobe.alphaX, 0.37f, 1e-5f);
+  EXPECT_NEAR(lobe.alphaY, 0.16f, 1e-5f);
+  // Alpha 0.04 across and 1 along the tangent is beyond Disney's widest stretch: the alpha along it is kept.
+  const GgxDistribution widest = GgxDistribution::anisotropic(s.materials[1].roughness, s.materials[1].anisotropic);
+  EXPECT_FLOAT_EQ(s.materials[1].anisotropic, 1.0f);
+  EXPECT_NEAR(widest.alphaX, 1.0f, 1e-5f);
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_NE(warnings.messages[0].find("materials[1]: KHR_materials_anisotropy.anisotropyRotation is ignored"),
+            std::string::npos);
 }
 
 TEST(GltfLoader, NonFiniteNormalsDoNotRejectTheFile) {

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 
 #include "scene/builtin_scenes.h"
@@ -85,6 +86,27 @@ void expectEnvironmentEditMatchesRebuild(const BackendFactory& makeBackend) {
   edited.environment.intensity = 2.0f;
   edited.environment.rotationDegrees = 30.0f;
   Image afterEdit = renderEdited(makeBackend, original, [&](Backend& b) { b.setEnvironment(edited.environment); });
+  Image rebuilt = renderRebuilt(makeBackend, edited);
+  expectSameImage(afterEdit, rebuilt);
+  Image unedited = renderRebuilt(makeBackend, original);
+  EXPECT_NE(std::memcmp(unedited.pixels.data(), rebuilt.pixels.data(), rebuilt.pixels.size() * sizeof(Vec3)), 0);
+}
+
+void expectInstanceTransformEditMatchesRebuild(const BackendFactory& makeBackend) {
+  const Scene original = makeCornellBox();
+  Scene edited = original;
+  const float c = std::cos(0.05f), s = std::sin(0.05f);
+  for (Instance& instance : edited.instances) {
+    Affine3x4& m = instance.objectToWorld;
+    for (int row = 0; row < 3; ++row) {  // turned a little about y, then moved
+      const float x = m.m[4 * row], z = m.m[4 * row + 2];
+      m.m[4 * row] = c * x + s * z;
+      m.m[4 * row + 2] = -s * x + c * z;
+    }
+    m.m[3] += 0.05f;
+    m.m[7] -= 0.03f;
+  }
+  Image afterEdit = renderEdited(makeBackend, original, [&](Backend& b) { b.setInstanceTransforms(edited); });
   Image rebuilt = renderRebuilt(makeBackend, edited);
   expectSameImage(afterEdit, rebuilt);
   Image unedited = renderRebuilt(makeBackend, original);

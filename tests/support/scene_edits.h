@@ -1,6 +1,6 @@
 #pragma once
-// Checks of Backend::setMaterials and Backend::setEnvironment that any backend must pass: renders after an edit
-// equal, bit for bit, renders of a fresh backend given the edited scene with setScene. With the same seed both
+// Checks of Backend::setMaterials, setEnvironment and setInstanceTransforms that any backend must pass: renders after
+// an edit equal, bit for bit, renders of a fresh backend given the edited scene with setScene. With the same seed both
 // draw the same random numbers, so they trace the same paths; any sample of the old scene left in the film, or
 // any array that missed the edit, changes the image.
 #include <functional>
@@ -20,5 +20,8 @@ void expectMaterialEditMatchesRebuild(const BackendFactory& makeBackend);
 
 // The material gallery's uniform sky replaced by a small map, scaled and turned.
 void expectEnvironmentEditMatchesRebuild(const BackendFactory& makeBackend);
+
+// The Cornell box with every instance moved and turned a little, its light included (the light table follows).
+void expectInstanceTransformEditMatchesRebuild(const BackendFactory& makeBackend);
 
 }  // namespace candela::test

@@ -3,6 +3,7 @@
 #include <memory>
 #include <vector>
 
+#include "app/viewer/animation_clock.h"
 #include "app/viewer/render_session.h"
 #include "scene/builtin_scenes.h"
 
@@ -11,7 +12,8 @@ namespace {
 
 // Records what the session asks of it.
 struct BackendLog {
-  int scenes = 0, cameras = 0, settings = 0, restarts = 0, materialEdits = 0, environmentEdits = 0;
+  int scenes = 0, cameras = 0, settings = 0, restarts = 0, materialEdits = 0, environmentEdits = 0, transformEdits = 0;
+  std::vector<Instance> instances;
   bool acceptMaterials = true;  // whether setMaterials takes the edit or asks for setScene
   uint32_t accumulated = 0;
   std::vector<uint32_t> seeds;
@@ -29,6 +31,12 @@ class RecordingBackend final : public Backend {
     log_.intensity = scene.environment.intensity;
     log_.rotation = scene.environment.rotationDegrees;
     log_.materials = scene.materials;
+    log_.instances = scene.instances;
+    restart();
+  }
+  void setInstanceTransforms(const Scene& scene) override {
+    ++log_.transformEdits;
+    log_.instances = scene.instances;
     restart();
   }
   bool setMaterials(const std::vector<Material>& materials) override {
@@ -136,6 +144,58 @@ TEST_F(SessionTest, TurningTheDenoiserGuidesOnOrOffRestarts) {
   EXPECT_EQ(session.accumulatedSamples(), 1u);
   session.setAovsEnabled(false);
   EXPECT_EQ(session.restarts(), 3u);
+}
+
+// The furnace's first instance sliding along x by 1 over 0..2 s.
+Scene slidingScene() {
+  Scene scene = makeWhiteFurnace();
+  AnimationNode node;
+  node.translation = {scene.instances[0].objectToWorld.m[3], 0, 0};
+  scene.animation.nodes.push_back(node);
+  scene.animation.instances.push_back({0, 0, Affine3x4{}});
+  AnimationClip clip;
+  clip.name = "slide";
+  clip.end = 2.0f;
+  AnimationChannel channel;
+  channel.times = {0.0f, 2.0f};
+  channel.values = {{node.translation.x, 0, 0, 0}, {node.translation.x + 1, 0, 0, 0}};
+  clip.channels.push_back(channel);
+  scene.animation.clips.push_back(clip);
+  return scene;
+}
+
+TEST_F(SessionTest, ANewAnimationPoseRestartsThroughSetInstanceTransforms) {
+  const Scene scene = slidingScene();
+  session.setScene(scene);
+  session.renderFrame(camera, settings, 1, true);
+  EXPECT_TRUE(session.poseAnimation(0, 1.0f));
+  session.renderFrame(camera, settings, 1, true);
+  EXPECT_EQ(log.transformEdits, 1);
+  EXPECT_EQ(log.scenes, 1);  // the pose rebuilt nothing
+  EXPECT_EQ(session.restarts(), 2u);
+  EXPECT_NEAR(log.instances[0].objectToWorld.m[3], scene.instances[0].objectToWorld.m[3] + 0.5f, 1e-6f);
+  // The same pose again changes nothing.
+  EXPECT_FALSE(session.poseAnimation(0, 1.0f));
+  session.renderFrame(camera, settings, 1, true);
+  EXPECT_EQ(log.transformEdits, 1);
+  EXPECT_EQ(session.accumulatedSamples(), 2u);
+}
+
+TEST(AnimationClock, PlayingWrapsAtTheClipsEndAndPausedStays) {
+  const Scene scene = slidingScene();
+  AnimationControls controls;
+  advanceAnimation(controls, scene.animation, 1.5);
+  EXPECT_FLOAT_EQ(controls.time, 1.5f);
+  advanceAnimation(controls, scene.animation, 1.0);
+  EXPECT_FLOAT_EQ(controls.time, 0.5f);  // 2.5 s wraps into the 2 s clip
+  controls.playing = false;
+  advanceAnimation(controls, scene.animation, 1.0);
+  EXPECT_FLOAT_EQ(controls.time, 0.5f);
+  controls.clip = 7;  // out of range: back to the last clip
+  controls.time = -3.0f;
+  advanceAnimation(controls, scene.animation, 0.0);
+  EXPECT_EQ(controls.clip, 0);
+  EXPECT_FLOAT_EQ(controls.time, 0.0f);
 }
 
 TEST_F(SessionTest, WithoutAccumulationEveryFrameStartsAfreshWithItsOwnSeed) {

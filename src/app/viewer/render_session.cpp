@@ -27,11 +27,23 @@ void RenderSession::setScene(Scene scene) {
   scene_ = std::move(scene);
   summary_ = summarizeScene(scene_);
   sceneMaterials_ = scene_.materials;
+  player_.reset();
+  if (!scene_.animation.empty()) player_.emplace(scene_);
+  pose_.reset();
+  instancesChanged_ = false;
   sceneIntensity_ = scene_.environment.intensity;
   sceneRotation_ = scene_.environment.rotationDegrees;
   applyEnvironment();
   applyMaterials();
   sceneChanged_ = true;
+}
+
+bool RenderSession::poseAnimation(int clip, float time) {
+  if (!player_ || (pose_ && pose_->first == clip && pose_->second == time)) return false;
+  player_->pose(scene_, clip, time);
+  pose_ = {clip, time};
+  instancesChanged_ = true;
+  return true;
 }
 
 void RenderSession::setEnvironment(float intensityScale, float extraRotationDegrees) {
@@ -72,9 +84,10 @@ FrameStats RenderSession::renderFrame(const Camera& camera, const RenderSettings
   bool restart = !haveFrame_ || !accumulate;
   if (!sceneChanged_ && materialsChanged_ && !backend_->setMaterials(scene_.materials)) sceneChanged_ = true;
   if (!sceneChanged_ && environmentChanged_) backend_->setEnvironment(scene_.environment);
+  if (!sceneChanged_ && instancesChanged_) backend_->setInstanceTransforms(scene_);
   if (sceneChanged_) backend_->setScene(scene_);
-  if (sceneChanged_ || materialsChanged_ || environmentChanged_) restart = true;
-  sceneChanged_ = materialsChanged_ = environmentChanged_ = false;
+  if (sceneChanged_ || materialsChanged_ || environmentChanged_ || instancesChanged_) restart = true;
+  sceneChanged_ = materialsChanged_ = environmentChanged_ = instancesChanged_ = false;
   if (!haveFrame_ || !sameSettings(wanted, applied_)) {
     backend_->setSettings(wanted);
     applied_ = wanted;

@@ -1,9 +1,11 @@
 #pragma once
 #include <cstdint>
 #include <memory>
+#include <optional>
 
 #include "app/viewer/scene_summary.h"
 #include "backends/backend.h"
+#include "scene/animation_player.h"
 #include "scene/material_overrides.h"
 
 namespace candela {
@@ -27,6 +29,11 @@ class RenderSession {
   // (Backend::setMaterials), or the whole scene again where it cannot take them so.
   void setMaterialOverrides(const MaterialOverrides& overrides);
 
+  // Poses the scene's animated instances for `clip` at `time` (AnimationPlayer); the backend gets the new
+  // transforms (Backend::setInstanceTransforms) with the next frame, only when the pose is another one.
+  // Returns whether it is.
+  bool poseAnimation(int clip, float time);
+
   // Adds `samplesPerPixel` samples. With `accumulate` off every frame starts afresh with its own seed, so
   // successive frames show independent noise.
   FrameStats renderFrame(const Camera& camera, const RenderSettings& settings, uint32_t samplesPerPixel,
@@ -49,6 +56,8 @@ class RenderSession {
   SceneSummary summary_;
   void applyEnvironment();
   void applyMaterials();
+  std::optional<AnimationPlayer> player_;      // for a scene with an animation
+  std::optional<std::pair<int, float>> pose_;  // the clip and time the instances are posed for; none: rest
 
   // What the scene was loaded with, and the viewer's adjustments to it.
   std::vector<Material> sceneMaterials_;
@@ -61,6 +70,7 @@ class RenderSession {
   bool sceneChanged_ = true;
   bool materialsChanged_ = false;
   bool environmentChanged_ = false;
+  bool instancesChanged_ = false;
   bool haveFrame_ = false;
   Camera camera_;
   RenderSettings applied_;

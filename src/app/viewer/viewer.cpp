@@ -206,6 +206,15 @@ void Viewer::showScene(Scene scene, const std::string& spec) {
   SceneSummary summary = summarizeScene(scene);
   camera_ = std::make_unique<OrbitCamera>(scene.camera, summary.bounds);
   status_.sceneName = scene.name;
+  status_.animationClips.clear();
+  status_.animationRanges.clear();
+  if (!scene.animation.empty())
+    for (const AnimationClip& clip : scene.animation.clips) {
+      status_.animationClips.push_back(clip.name);
+      status_.animationRanges.push_back({clip.start, clip.end});
+    }
+  controls_.animation = {};
+  if (!scene.animation.empty()) controls_.animation.time = scene.animation.clips[0].start;
   sceneSpec_ = spec;
   sceneJustShown_ = true;
   session_.setScene(std::move(scene));
@@ -253,12 +262,18 @@ void Viewer::frame(double now, double seconds) {
   const int imageWidth = std::max(framebufferWidth_ - kPanelWidth, 1);
   const int imageHeight = std::max(framebufferHeight_, 1);
 
+  // A playing animation moves on with the wall clock; a new pose restarts the accumulation like a camera move.
+  bool posed = false;
+  if (const SceneAnimation& animation = session_.scene().animation; !animation.empty()) {
+    advanceAnimation(controls_.animation, animation, seconds);
+    posed = session_.poseAnimation(controls_.animation.clip, controls_.animation.time);
+  }
   // ImGui takes this frame's share of the queued input first; the camera takes what ImGui does not want.
   handleInput(imgui_.beginFrame());
   input_.apply(*camera_, heldFlyKeys(), float(std::min(seconds, kMaxFlyStep)), float(imageHeight));
   const Camera camera = camera_->camera(float(imageWidth) / float(imageHeight));
   // A scene's first camera is where the view starts, not a motion.
-  const bool moved = !sceneJustShown_ && !sameCamera(camera, lastCamera_);
+  const bool moved = (!sceneJustShown_ && !sameCamera(camera, lastCamera_)) || (posed && controls_.animation.playing);
   lastCamera_ = camera;
   sceneJustShown_ = false;
   lastPlan_ = policy_.plan(uint32_t(imageWidth), uint32_t(imageHeight), controls_.samplesPerFrame, moved, now);

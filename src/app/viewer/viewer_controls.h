@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "app/viewer/animation_clock.h"
 #include "app/viewer/post_settings.h"
 #include "scene/material_overrides.h"
 
@@ -18,6 +19,7 @@ struct ViewerControls {
   MaterialOverrides materials;
   std::vector<float> overrideSliders;  // one per overrideParameters() entry: its value while it is switched off
   PostSettings post;
+  AnimationControls animation;
 
   std::string screenshotBase = "candela-view";      // the panel saves <base>.png and <base>.exr
   std::string sceneFilePath = "candela-view.json";  // camera and settings

@@ -110,6 +110,24 @@ void drawPost(PostSettings& post) {
   ImGui::EndDisabled();
 }
 
+// Play/pause, the time (dragging it pauses) and, where the scene has several, the animation that plays.
+void drawAnimation(const PanelStatus& s, AnimationControls& a) {
+  const size_t clip = size_t(a.clip) < s.animationRanges.size() ? size_t(a.clip) : 0;
+  if (ImGui::Button(a.playing ? "Pause" : "Play")) a.playing = !a.playing;
+  ImGui::SameLine();
+  const auto [start, end] = s.animationRanges[clip];
+  if (ImGui::SliderFloat("Time", &a.time, start, end, "%.2f s", ImGuiSliderFlags_AlwaysClamp)) a.playing = false;
+  if (s.animationClips.size() < 2) return;
+  if (ImGui::BeginCombo("Animation", s.animationClips[clip].c_str())) {
+    for (size_t i = 0; i < s.animationClips.size(); ++i)
+      if (ImGui::Selectable(s.animationClips[i].c_str(), i == clip)) {
+        a.clip = int(i);
+        a.time = s.animationRanges[i].first;
+      }
+    ImGui::EndCombo();
+  }
+}
+
 void drawActions(ViewerControls& c, PanelRequests& requests) {
   ImGui::InputText("##shot", &c.screenshotBase);
   ImGui::SameLine();
@@ -138,6 +156,8 @@ PanelRequests drawPanel(const PanelStatus& status, ViewerControls& controls, flo
   ImGui::PushItemWidth(-110.0f);
   if (ImGui::CollapsingHeader("Status", ImGuiTreeNodeFlags_DefaultOpen)) drawStatus(status);
   if (ImGui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen)) drawRenderSettings(controls, requests);
+  if (!status.animationClips.empty() && ImGui::CollapsingHeader("Animation", ImGuiTreeNodeFlags_DefaultOpen))
+    drawAnimation(status, controls.animation);
   if (ImGui::CollapsingHeader("Materials")) drawMaterials(controls, requests);
   if (ImGui::CollapsingHeader("Post", ImGuiTreeNodeFlags_DefaultOpen)) drawPost(controls.post);
   if (ImGui::CollapsingHeader("Actions", ImGuiTreeNodeFlags_DefaultOpen)) drawActions(controls, requests);

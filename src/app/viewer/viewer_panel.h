@@ -1,5 +1,7 @@
 #pragma once
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "app/viewer/scene_summary.h"
 #include "app/viewer/viewer_controls.h"
@@ -19,6 +21,8 @@ struct PanelStatus {
   bool preview = false;
   std::string sceneName;
   SceneSummary scene;
+  std::vector<std::string> animationClips;               // the scene's animations; none: no animation section
+  std::vector<std::pair<float, float>> animationRanges;  // each one's first and last key time
   Vec3 cameraPosition;
   Vec3 cameraDirection;
   std::string message;  // the outcome of the last action

@@ -54,6 +54,12 @@ void CpuBackend::setEnvironment(const Environment& environment) {
   restart();
 }
 
+void CpuBackend::setInstanceTransforms(const Scene& scene) {
+  if (!flat_.replaceInstanceTransforms(scene)) return setScene(scene);
+  embree_.updateInstanceTransforms(flat_);
+  restart();
+}
+
 void CpuBackend::setCamera(const Camera& camera) {
   camera_ = camera;
   restart();

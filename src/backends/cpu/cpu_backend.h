@@ -19,6 +19,7 @@ class CpuBackend final : public Backend {
   void setScene(const Scene& scene) override;
   bool setMaterials(const std::vector<Material>& materials) override;
   void setEnvironment(const Environment& environment) override;
+  void setInstanceTransforms(const Scene& scene) override;
   void setCamera(const Camera& camera) override;
   void setSettings(const RenderSettings& settings) override;
 

@@ -93,6 +93,16 @@ void EmbreeScene::build(const FlatScene& flat) {
   check(device_, "building the instance BVH");
 }
 
+void EmbreeScene::updateInstanceTransforms(const FlatScene& flat) {
+  for (uint32_t i = 0; i < flat.instances.size(); ++i) {
+    RTCGeometry geometry = rtcGetGeometry(top_, i);
+    rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, flat.instances[i].objectToWorld.m);
+    rtcCommitGeometry(geometry);
+  }
+  rtcCommitScene(top_);
+  check(device_, "building the instance BVH");
+}
+
 bool EmbreeScene::filtersMatch(const FlatScene& flat) const { return filtered_ == meshesThatCanPassRays(flat); }
 
 }  // namespace candela

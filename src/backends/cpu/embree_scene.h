@@ -18,6 +18,9 @@ class EmbreeScene {
   EmbreeScene& operator=(const EmbreeScene&) = delete;
 
   void build(const FlatScene& flat);
+  // After FlatScene::replaceInstanceTransforms: the instances take their new transforms and only the top-level
+  // BVH is built again.
+  void updateInstanceTransforms(const FlatScene& flat);
   RTCScene topLevel() const { return top_; }
   // Whether the meshes that carry filter functions are still those that need them after a material edit.
   bool filtersMatch(const FlatScene& flat) const;

@@ -134,6 +134,7 @@ void validateCachedScene(const Scene& scene) {
   for (const NamedCamera& c : scene.cameras) checkCamera(c.description);
   checkPunctualLights(scene.punctualLights);
   checkRenderHints(scene.renderHints);
+  validateAnimation(scene.animation, scene.instances.size());
 }
 
 }  // namespace candela

@@ -5,7 +5,8 @@ namespace candela {
 namespace {
 
 static_assert(std::is_trivially_copyable_v<Material> && std::is_trivially_copyable_v<Instance> &&
-              std::is_trivially_copyable_v<CameraDescription>);
+              std::is_trivially_copyable_v<CameraDescription> && std::is_trivially_copyable_v<AnimationNode> &&
+              std::is_trivially_copyable_v<AnimatedInstance>);
 
 void writeTexture(BinaryWriter& out, const Texture& t) {
   out.string(t.name);
@@ -51,10 +52,51 @@ void readOptional(BinaryReader& in, std::optional<T>& v) {
   }
 }
 
-// The least a mesh, a texture or a string takes in the file, for checking counts before allocating.
+// The least a mesh, a texture, a string, an animation clip or channel takes in the file, for checking counts
+// before allocating.
 constexpr uint64_t kMeshBytes = 8 * sizeof(uint64_t);
 constexpr uint64_t kTextureBytes = 3 * sizeof(uint64_t);
 constexpr uint64_t kStringBytes = sizeof(uint64_t);
+constexpr uint64_t kClipBytes = 2 * sizeof(uint64_t) + 2 * sizeof(float);
+constexpr uint64_t kChannelBytes = sizeof(uint32_t) + 2 + 2 * sizeof(uint64_t);
+
+void writeAnimation(BinaryWriter& out, const SceneAnimation& a) {
+  out.array(a.nodes);
+  out.array(a.instances);
+  out.value(uint64_t(a.clips.size()));
+  for (const AnimationClip& clip : a.clips) {
+    out.string(clip.name);
+    out.value(clip.start);
+    out.value(clip.end);
+    out.value(uint64_t(clip.channels.size()));
+    for (const AnimationChannel& c : clip.channels) {
+      out.value(c.node);
+      out.value(c.property);
+      out.value(c.interpolation);
+      out.array(c.times);
+      out.array(c.values);
+    }
+  }
+}
+
+void readAnimation(BinaryReader& in, SceneAnimation& a) {
+  in.array(a.nodes);
+  in.array(a.instances);
+  a.clips.resize(size_t(in.count(kClipBytes)));
+  for (AnimationClip& clip : a.clips) {
+    in.string(clip.name);
+    in.value(clip.start);
+    in.value(clip.end);
+    clip.channels.resize(size_t(in.count(kChannelBytes)));
+    for (AnimationChannel& c : clip.channels) {
+      in.value(c.node);
+      in.value(c.property);
+      in.value(c.interpolation);
+      in.array(c.times);
+      in.array(c.values);
+    }
+  }
+}
 
 }  // namespace
 
@@ -96,6 +138,7 @@ void writeScene(BinaryWriter& out, const Scene& s) {
   }
   out.value(uint64_t(s.inputFiles.size()));
   for (const std::string& f : s.inputFiles) out.string(f);
+  writeAnimation(out, s.animation);
 }
 
 bool readScene(BinaryReader& in, Scene& s) {
@@ -139,6 +182,7 @@ bool readScene(BinaryReader& in, Scene& s) {
   }
   s.inputFiles.resize(size_t(in.count(kStringBytes)));
   for (std::string& f : s.inputFiles) in.string(f);
+  readAnimation(in, s.animation);
   return in.ok();
 }
 

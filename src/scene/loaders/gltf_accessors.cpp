@@ -182,6 +182,10 @@ std::vector<Vec2> GltfAccessorReader::readVec2(int accessor, const std::string& 
   return out;
 }
 
+std::vector<float> GltfAccessorReader::readScalars(int accessor, const std::string& where) const {
+  return readFloats(accessor, TINYGLTF_TYPE_SCALAR, where);
+}
+
 std::vector<Vec4> GltfAccessorReader::readColours(int index, const std::string& where) const {
   if (accessor(index, where).type == TINYGLTF_TYPE_VEC4) return readVec4(index, where);
   std::vector<Vec3> rgb = readVec3(index, where);

@@ -25,6 +25,7 @@ class GltfAccessorReader {
   std::vector<Vec3> readVec3(int accessor, const std::string& where) const;
   std::vector<Vec4> readVec4(int accessor, const std::string& where) const;
   std::vector<Vec2> readVec2(int accessor, const std::string& where) const;
+  std::vector<float> readScalars(int accessor, const std::string& where) const;
   // VEC3 or VEC4 colours; a VEC3 accessor gets alpha 1.
   std::vector<Vec4> readColours(int accessor, const std::string& where) const;
   std::vector<uint32_t> readIndices(int accessor, const std::string& where) const;

@@ -12,10 +12,19 @@ namespace candela {
 namespace {
 
 // Read fully or in part; where in part, the loader warns about what it leaves out.
-constexpr std::array<std::string_view, 11> kSupported = {
-    "EXT_mesh_gpu_instancing", "KHR_lights_punctual",   "KHR_materials_clearcoat", "KHR_materials_emissive_strength",
-    "KHR_materials_ior",       "KHR_materials_sheen",   "KHR_materials_specular",  "KHR_materials_transmission",
-    "KHR_materials_unlit",     "KHR_mesh_quantization", "KHR_texture_transform"};
+constexpr std::array<std::string_view, 13> kSupported = {"EXT_mesh_gpu_instancing",
+                                                         "KHR_lights_punctual",
+                                                         "KHR_materials_anisotropy",
+                                                         "KHR_materials_clearcoat",
+                                                         "KHR_materials_emissive_strength",
+                                                         "KHR_materials_ior",
+                                                         "KHR_materials_pbrSpecularGlossiness",
+                                                         "KHR_materials_sheen",
+                                                         "KHR_materials_specular",
+                                                         "KHR_materials_transmission",
+                                                         "KHR_materials_unlit",
+                                                         "KHR_mesh_quantization",
+                                                         "KHR_texture_transform"};
 
 bool contains(auto& list, const std::string& name) { return std::find(list.begin(), list.end(), name) != list.end(); }
 

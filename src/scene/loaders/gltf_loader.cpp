@@ -3,7 +3,9 @@
 #include <tiny_gltf.h>
 
 #include <glm/gtc/quaternion.hpp>
+#define GLM_ENABLE_EXPERIMENTAL  // matrix_decompose is in glm/gtx
 #include <glm/gtc/type_ptr.hpp>
+#include <glm/gtx/matrix_decompose.hpp>
 #include <glm/mat4x4.hpp>
 
 #include <cmath>
@@ -12,11 +14,14 @@
 #include <map>
 #include <sstream>
 
+#include "scene/animation_player.h"
 #include "scene/loaders/file_bytes.h"
 #include "scene/loaders/gltf_accessors.h"
+#include "scene/loaders/gltf_animation.h"
 #include "scene/loaders/gltf_buffer_uris.h"
 #include "scene/loaders/gltf_extensions.h"
 #include "scene/loaders/gltf_materials.h"
+#include "scene/loaders/image_decoding.h"
 #include "scene/loaders/path_confinement.h"
 #include "scene/loaders/texture_table.h"
 #include "scene/scene_repair.h"
@@ -165,7 +170,8 @@ class GltfSceneBuilder {
     scene_.name = fs::path(file_).stem().string();
     for (size_t i = 0; i < model_.materials.size(); ++i) {
       GltfMaterial m = materialFromGltf(
-          model_, int(i), file_, [this](int t, bool srgb) { return texture(t, srgb); }, warnings_);
+          model_, int(i), file_, [this](int t, bool srgb) { return texture(t, srgb); },
+          [this](int t, bool srgb) { return textureMean(t, srgb); }, warnings_);
       scene_.materials.push_back(m.material);
       scene_.materialNames.push_back(model_.materials[i].name);
       uvTransforms_.push_back(m.uvTransform);
@@ -184,20 +190,28 @@ class GltfSceneBuilder {
       for (size_t i = 0; i < model_.nodes.size(); ++i)
         if (!isChild[i]) roots.push_back(int(i));
     }
-    for (int r : roots) visit(r, glm::mat4(1.0f), 0, "scenes[" + std::to_string(std::max(sceneIndex, 0)) + "].nodes");
+    animated_ = animatedGltfNodes(model_);
+    animationNodes_.assign(model_.nodes.size(), -1);
+    for (int r : roots)
+      visit(r, glm::mat4(1.0f), 0, "scenes[" + std::to_string(std::max(sceneIndex, 0)) + "].nodes", -1);
     if (scene_.instances.empty()) failLoad(file_, "has no meshes to render");
+    readAnimations();
     if (lightRangesIgnored_ > 0)
       warnings_.add(file_, std::to_string(lightRangesIgnored_) +
                                " KHR_lights_punctual lights have a range, which is ignored: their light falls off "
                                "with the square of the distance everywhere");
     if (skinned_) warnings_.add(file_, "skins are ignored; meshes are loaded in their bind pose");
+    if (morphedPrimitives_ > 0)
+      warnings_.add(file_, std::to_string(morphedPrimitives_) +
+                               " primitives have morph targets, which are ignored; they keep their base shape");
     if (!sharesTextures_) textures_.finish(scene_, 0, warnings_);
     scene_.cameraMissing = !cameraFound_;
     return std::move(scene_);
   }
 
  private:
-  void visit(int index, const glm::mat4& parent, int depth, const std::string& from) {
+  // `parentNode`: the parent's entry in scene_.animation.nodes, or -1 where the parent does not move.
+  void visit(int index, const glm::mat4& parent, int depth, const std::string& from, int32_t parentNode) {
     if (index < 0 || size_t(index) >= model_.nodes.size())
       failLoad(file_, from + ": node " + std::to_string(index) + " does not exist");
     std::string where = "nodes[" + std::to_string(index) + "]";
@@ -215,31 +229,89 @@ class GltfSceneBuilder {
     glm::mat4 world = parent * localTransform(node);
     for (int i = 0; i < 16; ++i)
       if (!std::isfinite(glm::value_ptr(world)[i])) failLoad(file_, where + ": transform is not finite");
+    const int32_t animationNode =
+        animated_[size_t(index)] || parentNode >= 0 ? addAnimationNode(index, parent, parentNode) : -1;
     if (node.mesh >= 0) {
       if (size_t(node.mesh) >= model_.meshes.size())
         failLoad(file_, where + ".mesh: mesh " + std::to_string(node.mesh) + " does not exist");
-      if (std::optional<uint32_t> mesh = meshFor(node.mesh)) addInstances(*mesh, node, world, where);
+      if (std::optional<uint32_t> mesh = meshFor(node.mesh)) addInstances(*mesh, node, world, where, animationNode);
     }
     if (node.camera >= 0) takeCamera(node.camera, world, where);
     if (auto light = node.extensions.find("KHR_lights_punctual"); light != node.extensions.end())
       addLight(light->second, world, where);
+    if (animationNode >= 0 && (node.camera >= 0 || node.extensions.count("KHR_lights_punctual")))
+      staticUnderAnimation_ = true;
     if (node.skin >= 0) skinned_ = true;
-    for (size_t c = 0; c < node.children.size(); ++c) visit(node.children[c], world, depth + 1, where + ".children");
+    for (size_t c = 0; c < node.children.size(); ++c)
+      visit(node.children[c], world, depth + 1, where + ".children", animationNode);
     nodeStates_[size_t(index)] = NodeState::Done;
   }
 
-  void addInstance(uint32_t mesh, const glm::mat4& world, const std::string& where) {
+  // `local`: what the instance's transform applies before the node's (`world`), for the animation to keep.
+  void addInstance(uint32_t mesh, const glm::mat4& world, const std::string& where, int32_t animationNode,
+                   const glm::mat4& local) {
     if (scene_.instances.size() == kMaxInstances)
       failLoad(file_, where + ": more than " + std::to_string(kMaxInstances) + " mesh instances");
+    if (animationNode >= 0)
+      scene_.animation.instances.push_back(
+          {uint32_t(scene_.instances.size()), uint32_t(animationNode), toAffine(local)});
     scene_.instances.push_back({mesh, toAffine(world)});
+  }
+
+  // Makes the node an entry of the animation's nodes, under `parentNode` (-1: under the fixed `parent`).
+  int32_t addAnimationNode(int index, const glm::mat4& parent, int32_t parentNode) {
+    const tinygltf::Node& source = model_.nodes[size_t(index)];
+    AnimationNode node;
+    node.parent = parentNode;
+    if (parentNode < 0) node.parentToWorld = toAffine(parent);
+    node.sourceIndex = uint32_t(index);
+    if (source.matrix.size() == 16 && !animated_[size_t(index)]) {
+      node.hasMatrix = 1;
+      node.matrix = toAffine(localTransform(source));
+    } else if (source.matrix.size() == 16) {
+      // glTF gives animated nodes no matrix; where a file does anyway, its channels replace parts of the
+      // matrix's decomposition.
+      glm::vec3 scale(1.0f), translation(0.0f), skew;
+      glm::vec4 perspective;
+      glm::quat rotation(1.0f, 0.0f, 0.0f, 0.0f);
+      if (!glm::decompose(localTransform(source), scale, rotation, translation, skew, perspective))
+        failLoad(file_, "nodes[" + std::to_string(index) + "].matrix: an animated node needs an invertible matrix");
+      node.translation = {translation.x, translation.y, translation.z};
+      node.rotation = {rotation.x, rotation.y, rotation.z, rotation.w};
+      node.scale = {scale.x, scale.y, scale.z};
+    } else {
+      const auto& t = source.translation;
+      const auto& r = source.rotation;
+      const auto& sc = source.scale;
+      if (t.size() == 3) node.translation = {float(t[0]), float(t[1]), float(t[2])};
+      if (r.size() == 4) node.rotation = {float(r[0]), float(r[1]), float(r[2]), float(r[3])};
+      if (sc.size() == 3) node.scale = {float(sc[0]), float(sc[1]), float(sc[2])};
+    }
+    animationNodes_[size_t(index)] = int32_t(scene_.animation.nodes.size());
+    scene_.animation.nodes.push_back(node);
+    return animationNodes_[size_t(index)];
+  }
+
+  void readAnimations() {
+    scene_.animation.clips = readGltfAnimations(model_, accessors_, animationNodes_, file_, warnings_);
+    if (scene_.animation.empty()) {
+      scene_.animation = {};
+      return;
+    }
+    if (staticUnderAnimation_)
+      warnings_.add(file_, "cameras and lights below animated nodes stay where the file places them at rest");
+    // The rest pose through the player, so that animated instances scaled to nothing at rest are hidden
+    // rather than dropped by the scene's repair: they may grow later.
+    AnimationPlayer(scene_).pose(scene_, -1, 0.0f);
   }
 
   // One instance of `mesh` at the node's transform, or, with EXT_mesh_gpu_instancing, one per element of its
   // TRANSLATION, ROTATION and SCALE accessors, each applied before the node's transform.
-  void addInstances(uint32_t mesh, const tinygltf::Node& node, const glm::mat4& world, const std::string& where) {
+  void addInstances(uint32_t mesh, const tinygltf::Node& node, const glm::mat4& world, const std::string& where,
+                    int32_t animationNode) {
     auto ext = node.extensions.find("EXT_mesh_gpu_instancing");
     if (ext == node.extensions.end() || !ext->second.Has("attributes")) {
-      addInstance(mesh, world, where);
+      addInstance(mesh, world, where, animationNode, glm::mat4(1.0f));
       return;
     }
     const tinygltf::Value& attributes = ext->second.Get("attributes");
@@ -272,7 +344,7 @@ class GltfSceneBuilder {
         warnings_.add(file_, at + "*: instance " + std::to_string(i) + " has a non-finite transform and is left out");
         continue;
       }
-      addInstance(mesh, instance, where);
+      addInstance(mesh, instance, where, animationNode, local);
     }
   }
 
@@ -386,7 +458,7 @@ class GltfSceneBuilder {
       }
       if (prim.mode > TINYGLTF_MODE_TRIANGLE_FAN)
         failLoad(file_, where + ".mode: unknown mode " + std::to_string(prim.mode));
-      if (!prim.targets.empty()) warnings_.add(file_, where + ": morph targets are ignored");
+      if (!prim.targets.empty()) ++morphedPrimitives_;
       auto attribute = [&](const char* name) {
         auto it = prim.attributes.find(name);
         return it == prim.attributes.end() ? -1 : it->second;
@@ -562,6 +634,45 @@ class GltfSceneBuilder {
     return kNoTexture;
   }
 
+  // The mean texel of textures[index] from a small decode of its image, for what needs one number for a
+  // texture (gltf_materials.h); nothing where the image cannot be read.
+  std::optional<Vec4> textureMean(int index, bool srgb) {
+    if (index < 0 || size_t(index) >= model_.textures.size()) return std::nullopt;
+    const int source = model_.textures[size_t(index)].source;
+    if (source < 0 || size_t(source) >= model_.images.size()) return std::nullopt;
+    const tinygltf::Image& image = model_.images[size_t(source)];
+    const std::string name = file_ + ": images[" + std::to_string(source) + "]";
+    try {
+      std::vector<uint8_t> bytes;
+      if (!image.image.empty()) {
+        bytes = image.image;
+      } else {
+        std::optional<std::string> path = image.uri.empty() || baseDir_.empty() ? std::nullopt : uriToPath(image.uri);
+        if (!path || path->empty()) return std::nullopt;
+        const ResolvedPath resolved = confineModelPath(joinModelPath(baseDir_, *path), files_);
+        if (!resolved.allowed()) return std::nullopt;
+        bytes = readFileBytes(resolved.path);
+      }
+      constexpr uint32_t kMeanSide = 16;
+      const Texture t = decodeImage(name, bytes.data(), bytes.size(), srgb, kMeanSide, kMeanSide);
+      const size_t texels = size_t(t.width) * t.height;
+      if (texels == 0) return std::nullopt;
+      double sum[4] = {0, 0, 0, 0};
+      for (size_t i = 0; i < texels; ++i)
+        for (uint32_t c = 0; c < 4; ++c) {
+          const uint32_t from = t.channels == 1 ? 0 : std::min(c, t.channels - 1);
+          const size_t at = i * t.channels + from;
+          float v = t.floats.empty() ? float(t.bytes[at]) / 255.0f : t.floats[at];
+          if (t.channels == 1 && c == 3) v = 1.0f;  // grey images have no alpha
+          sum[c] += c < 3 && t.srgb ? srgbToLinear(v) : v;
+        }
+      return Vec4{float(sum[0] / double(texels)), float(sum[1] / double(texels)), float(sum[2] / double(texels)),
+                  float(sum[3] / double(texels))};
+    } catch (const LoadError&) {
+      return std::nullopt;
+    }
+  }
+
   const tinygltf::Model& model_;
   std::string file_;
   PathRule files_;
@@ -579,6 +690,10 @@ class GltfSceneBuilder {
   bool cameraFound_ = false;
   size_t lightRangesIgnored_ = 0;
   bool skinned_ = false;
+  size_t morphedPrimitives_ = 0;
+  std::vector<bool> animated_;           // per node of the file: a channel moves it
+  std::vector<int32_t> animationNodes_;  // per node of the file: its entry in scene_.animation.nodes, or -1
+  bool staticUnderAnimation_ = false;    // a camera or light lies below an animated node
   enum class NodeState : uint8_t { Unvisited, OnPath, Done };
   std::vector<NodeState> nodeStates_;  // by node index, for the traversal
 };

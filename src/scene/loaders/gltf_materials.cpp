@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "scene/loaders/gltf_specular_glossiness.h"
+
 namespace candela {
 
 bool UvTransform::operator==(const UvTransform& o) const { return std::equal(m, m + 6, o.m); }
@@ -101,10 +103,70 @@ class TextureRefs {
   std::vector<int> texCoords_;
 };
 
+// KHR_materials_pbrSpecularGlossiness on `m`, which holds the core model's reading of the material.
+void convertSpecularGlossiness(const tinygltf::Value& e, Material& m, TextureRefs& refs,
+                               const GltfTextureMean& textureMean) {
+  auto textureIndex = [&](const char* key) {
+    if (!hasTexture(e, key) || !e.Get(key).Has("index") || !e.Get(key).Get("index").IsInt()) return -1;
+    return e.Get(key).Get("index").GetNumberAsInt();
+  };
+  auto texCoordOf = [&](const char* key) {
+    return hasTexture(e, key) ? int(std::clamp(number(e.Get(key), "texCoord", 0), 0.0, 255.0)) : 0;
+  };
+  const std::vector<double> d = numbers(e, "diffuseFactor", {1, 1, 1, 1});
+  const std::vector<double> s = numbers(e, "specularFactor", {1, 1, 1});
+  const Vec3 diffuseFactor{std::max(finiteOr(d[0], 1), 0.0f), std::max(finiteOr(d[1], 1), 0.0f),
+                           std::max(finiteOr(d[2], 1), 0.0f)};
+  Vec3 specular{std::max(finiteOr(s[0], 1), 0.0f), std::max(finiteOr(s[1], 1), 0.0f),
+                std::max(finiteOr(s[2], 1), 0.0f)};
+  float glossiness = std::clamp(finiteOr(number(e, "glossinessFactor", 1), 1), 0.0f, 1.0f);
+  m.opacity = std::clamp(finiteOr(d[3], 1), 0.0f, 1.0f);
+
+  const int diffuseTexture = textureIndex("diffuseTexture");
+  Vec3 diffuse = diffuseFactor;
+  Vec3 diffuseMean{1, 1, 1};
+  if (diffuseTexture >= 0) {
+    if (std::optional<Vec4> mean = textureMean(diffuseTexture, true)) diffuseMean = {mean->x, mean->y, mean->z};
+    diffuse = diffuse * diffuseMean;
+  }
+  if (const int specularTexture = textureIndex("specularGlossinessTexture"); specularTexture >= 0) {
+    if (std::optional<Vec4> mean = textureMean(specularTexture, true)) {
+      specular = specular * Vec3{mean->x, mean->y, mean->z};
+      glossiness *= mean->w;
+      refs.warn(
+          "KHR_materials_pbrSpecularGlossiness.specularGlossinessTexture is reduced to its mean specular colour and "
+          "glossiness: the metallic-roughness model has no texture for them");
+    } else {
+      refs.warn("KHR_materials_pbrSpecularGlossiness.specularGlossinessTexture cannot be read and is ignored");
+    }
+  }
+  const MetallicRoughness converted = metallicRoughnessFromSpecularGlossiness(diffuse, specular, glossiness);
+  m.type = MaterialType::Pbr;
+  m.metallic = converted.metallic;
+  m.roughness = converted.roughness;
+  m.metallicRoughnessTexture = kNoTexture;
+  // The diffuse texture's variation carries over: the base colour factor takes its mean to the converted colour.
+  auto ratio = [](float colour, float mean) { return mean > 1e-4f ? colour / mean : colour; };
+  m.baseColor = diffuseTexture >= 0
+                    ? Vec3{ratio(converted.baseColor.x, diffuseMean.x), ratio(converted.baseColor.y, diffuseMean.y),
+                           ratio(converted.baseColor.z, diffuseMean.z)}
+                    : converted.baseColor;
+  tinygltf::ExtensionMap diffuseExtensions;  // its KHR_texture_transform
+  if (diffuseTexture >= 0 && e.Get("diffuseTexture").Has("extensions")) {
+    const tinygltf::Value& extensions = e.Get("diffuseTexture").Get("extensions");
+    if (extensions.IsObject())
+      for (const std::string& key : extensions.Keys()) diffuseExtensions[key] = extensions.Get(key);
+  }
+  m.baseColorTexture = diffuseTexture >= 0
+                           ? refs.use(diffuseTexture, texCoordOf("diffuseTexture"), diffuseExtensions, true)
+                           : kNoTexture;
+}
+
 }  // namespace
 
 GltfMaterial materialFromGltf(const tinygltf::Model& model, int index, const std::string& file,
-                              const GltfTextureResolver& texture, LoadWarnings& warnings) {
+                              const GltfTextureResolver& texture, const GltfTextureMean& textureMean,
+                              LoadWarnings& warnings) {
   const tinygltf::Material& g = model.materials[size_t(index)];
   TextureRefs refs(file, "materials[" + std::to_string(index) + "]", texture, warnings);
   GltfMaterial out;
@@ -120,10 +182,14 @@ GltfMaterial materialFromGltf(const tinygltf::Model& model, int index, const std
   }
   m.metallic = std::clamp(finiteOr(pbr.metallicFactor, 1), 0.0f, 1.0f);
   m.roughness = std::clamp(finiteOr(pbr.roughnessFactor, 1), 0.0f, 1.0f);
-  m.baseColorTexture =
-      refs.use(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, pbr.baseColorTexture.extensions, true);
-  m.metallicRoughnessTexture = refs.use(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
-                                        pbr.metallicRoughnessTexture.extensions, false);
+  if (const tinygltf::Value* e = extension(g.extensions, "KHR_materials_pbrSpecularGlossiness")) {
+    convertSpecularGlossiness(*e, m, refs, textureMean);
+  } else {
+    m.baseColorTexture =
+        refs.use(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, pbr.baseColorTexture.extensions, true);
+    m.metallicRoughnessTexture = refs.use(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
+                                          pbr.metallicRoughnessTexture.extensions, false);
+  }
   m.normalTexture = refs.use(g.normalTexture.index, g.normalTexture.texCoord, g.normalTexture.extensions, false);
   if (g.normalTexture.index >= 0 && g.normalTexture.scale != 1.0)
     refs.warn("normalTexture.scale " + std::to_string(g.normalTexture.scale) + " is ignored");
@@ -174,6 +240,22 @@ GltfMaterial materialFromGltf(const tinygltf::Model& model, int index, const std
     m.specular = 0.5f * std::clamp(finiteOr(number(*e, "specularFactor", 1), 1), 0.0f, 1.0f);
     std::vector<double> c = numbers(*e, "specularColorFactor", {1, 1, 1});
     m.specularTint = (c[0] != c[1] || c[1] != c[2]) ? 1.0f : 0.0f;
+  }
+  if (const tinygltf::Value* e = disneyOnly("KHR_materials_anisotropy", {"anisotropyTexture"})) {
+    // glTF stretches the GGX lobe along the tangent to alpha_t = mix(alpha, 1, strength^2), keeping alpha = r^2
+    // across it; the Disney lobe has alpha_x = r'^2 / aspect and alpha_y = r'^2 aspect with aspect =
+    // sqrt(1 - 0.9 anisotropic). Both alphas match for alpha_t / alpha up to 10, Disney's widest stretch; beyond,
+    // alpha_t matches and the lobe is wider across.
+    const float stretch = std::clamp(finiteOr(number(*e, "anisotropyStrength", 0), 0), 0.0f, 1.0f);
+    const float alpha = m.roughness * m.roughness;
+    const float alphaT = alpha + (1.0f - alpha) * stretch * stretch;
+    if (alphaT > alpha) {
+      const float ratio = alphaT / std::max(alpha, 1e-8f);
+      m.anisotropic = std::clamp((1.0f - 1.0f / ratio) / 0.9f, 0.0f, 1.0f);
+      m.roughness = std::sqrt(alphaT * std::sqrt(1.0f - 0.9f * m.anisotropic));
+    }
+    if (finiteOr(number(*e, "anisotropyRotation", 0), 0) != 0.0f)
+      refs.warn("KHR_materials_anisotropy.anisotropyRotation is ignored: the lobe is stretched along the tangent");
   }
   if (extension(g.extensions, "KHR_materials_unlit")) {
     // Unlit: the base colour is what the camera sees, whatever the lighting. Rendered as a black surface that

@@ -29,17 +29,26 @@ struct GltfMaterial {
 
 // Returns a texture id for glTF textures[index] (its image, sampler wrap mode and colour encoding), or kNoTexture.
 using GltfTextureResolver = std::function<int32_t(int index, bool srgb)>;
+// The mean texel of glTF textures[index] (linear RGBA; sRGB colours decoded where `srgb`), or nothing where its
+// image cannot be read.
+using GltfTextureMean = std::function<std::optional<Vec4>(int index, bool srgb)>;
 
 // Maps glTF materials[index]:
 //   metallic-roughness (the core model)                                  -> Pbr
-//   with KHR_materials_transmission, _ior, _clearcoat, _sheen or _specular -> Disney
+//   with KHR_materials_transmission, _ior, _clearcoat, _sheen, _specular or _anisotropy -> Disney
+// (anisotropy: the strength stretches the lobe along the tangent as glTF's does, up to Disney's widest stretch;
+// its rotation and texture are ignored with a warning)
 // emissiveFactor times KHR_materials_emissive_strength is the emitted radiance; alphaMode, alphaCutoff and
 // doubleSided are kept. The base colour, metallic-roughness, normal and emissive textures are used; occlusion
 // maps are left out on purpose (a path tracer computes occlusion), and extension textures (transmission,
 // clearcoat, sheen, specular) have no slot: each of those gives a warning. A texture transform is returned for
 // baking when all textures of the material share it, and ignored with a warning otherwise; likewise the
 // TEXCOORD set. KHR_materials_unlit becomes a black surface emitting the base colour.
+// KHR_materials_pbrSpecularGlossiness becomes Pbr (gltf_specular_glossiness.h): the diffuse texture is the base
+// colour texture, scaled so that its mean converts as the factors do; the specular-glossiness texture cannot be
+// converted texel by texel and is reduced to its mean (`textureMean`), with a warning.
 GltfMaterial materialFromGltf(const tinygltf::Model& model, int index, const std::string& file,
-                              const GltfTextureResolver& texture, LoadWarnings& warnings);
+                              const GltfTextureResolver& texture, const GltfTextureMean& textureMean,
+                              LoadWarnings& warnings);
 
 }  // namespace candela

@@ -226,6 +226,7 @@ void appendScene(Scene& scene, Scene&& part, const Affine3x4& transform) {
     scene.materialNames.push_back(part.materialNames[i]);
   }
   scene.inputFiles.insert(scene.inputFiles.end(), part.inputFiles.begin(), part.inputFiles.end());
+  appendAnimation(scene.animation, part.animation, transform, uint32_t(scene.instances.size()));
   glm::mat4 outer = toMat4(transform);
   for (const Instance& inst : part.instances)
     scene.instances.push_back({inst.meshId + meshBase, toAffine(outer * toMat4(inst.objectToWorld))});
@@ -288,8 +289,13 @@ Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadW
   scene.name = fs::path(path).stem().string();
   std::optional<CameraDescription> modelCamera;
   SharedModelAssets shared;
-  // A model file loaded before with the same material overrides: its instances, relative to its transform.
-  std::map<std::pair<std::string, std::string>, std::vector<Instance>> loaded;
+  // A model file loaded before with the same material overrides: its instances, relative to its transform, and
+  // its animation.
+  struct LoadedModel {
+    std::vector<Instance> instances;
+    SceneAnimation animation;
+  };
+  std::map<std::pair<std::string, std::string>, LoadedModel> loaded;
   Node models = root["models"];
   if (models.size() == 0) models.fail("a scene needs at least one model");
   for (size_t i = 0; i < models.size(); ++i) {
@@ -303,16 +309,18 @@ Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadW
     glm::mat4 transform = model.has("transform") ? transformOf(model["transform"], warnings) : glm::mat4(1.0f);
     std::pair<std::string, std::string> key{file, model.has("materials") ? doc["models"][i]["materials"].dump() : ""};
     if (auto it = loaded.find(key); it != loaded.end()) {
-      for (const Instance& inst : it->second)
+      appendAnimation(scene.animation, it->second.animation, toAffine(transform), uint32_t(scene.instances.size()));
+      for (const Instance& inst : it->second.instances)
         scene.instances.push_back({inst.meshId, toAffine(transform * toMat4(inst.objectToWorld))});
       if (scene.instances.size() > kMaxInstances)
         model.fail("the models hold more than " + std::to_string(kMaxInstances) + " mesh instances in all");
       continue;
     }
     Scene part = loadModel(file, warnings, shared);
-    std::vector<Instance>& instances = loaded[key];
+    LoadedModel& first = loaded[key];
     for (const Instance& inst : part.instances)
-      instances.push_back({inst.meshId + uint32_t(scene.meshes.size()), inst.objectToWorld});
+      first.instances.push_back({inst.meshId + uint32_t(scene.meshes.size()), inst.objectToWorld});
+    first.animation = part.animation;
     if (model.has("materials")) {
       if (!model["materials"].isObject()) model["materials"].fail("expected an object of material names");
       const json& overrides = doc["models"][i]["materials"];

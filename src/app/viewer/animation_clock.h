@@ -1,0 +1,17 @@
+#pragma once
+#include "scene/animation.h"
+
+namespace candela {
+
+// The viewer's animation controls: which clip plays, where it is, and whether it runs.
+struct AnimationControls {
+  bool playing = true;
+  int clip = 0;       // an index into SceneAnimation::clips
+  float time = 0.0f;  // seconds
+};
+
+// Moves a playing animation on by `seconds` of wall-clock time, starting the clip over when it passes its end;
+// keeps the clip index and the time within the clip's range. A clip of no length stays at its start.
+void advanceAnimation(AnimationControls& controls, const SceneAnimation& animation, double seconds);
+
+}  // namespace candela

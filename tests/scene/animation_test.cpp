@@ -1,0 +1,396 @@
+// glTF node animations: channel sampling, node transforms at given times against hand-computed ones, hostile
+// animation data, and renders at two times.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include "app/animation_render.h"
+#include "app/scene_loading.h"
+#include "backends/cpu/cpu_backend.h"
+#include "scene/animation_player.h"
+#include "scene/cache/scene_cache.h"
+#include "scene/loaders/gltf_loader.h"
+#include "scene/loaders/scene_file.h"
+#include "scene/scene_test_files.h"
+
+namespace candela {
+namespace {
+
+using nlohmann::json;
+using test::TempFolder;
+
+constexpr float kSqrtHalf = 0.70710678f;
+
+void expectNear(Vec3 a, Vec3 b, float tolerance = 1e-5f) {
+  EXPECT_NEAR(a.x, b.x, tolerance);
+  EXPECT_NEAR(a.y, b.y, tolerance);
+  EXPECT_NEAR(a.z, b.z, tolerance);
+}
+
+AnimationChannel channel(AnimatedProperty property, AnimationInterpolation interpolation, std::vector<float> times,
+                         std::vector<Vec4> values) {
+  AnimationChannel c;
+  c.property = property;
+  c.interpolation = interpolation;
+  c.times = std::move(times);
+  c.values = std::move(values);
+  return c;
+}
+
+TEST(AnimationSampling, LinearStepAndClampedEnds) {
+  const AnimationChannel linear =
+      channel(AnimatedProperty::Translation, AnimationInterpolation::Linear, {1, 3}, {{0, 0, 0, 0}, {4, -2, 8, 0}});
+  const Vec4 quarter = sampleChannel(linear, 1.5f);
+  expectNear({quarter.x, quarter.y, quarter.z}, {1, -0.5f, 2});
+  EXPECT_EQ(sampleChannel(linear, 0.0f).x, 0.0f);  // before the first key: the first value
+  EXPECT_EQ(sampleChannel(linear, 9.0f).x, 4.0f);  // after the last: the last
+  EXPECT_EQ(sampleChannel(linear, std::numeric_limits<float>::quiet_NaN()).x, 0.0f);
+
+  const AnimationChannel step = channel(AnimatedProperty::Scale, AnimationInterpolation::Step, {0, 1, 2},
+                                        {{1, 1, 1, 0}, {2, 2, 2, 0}, {3, 3, 3, 0}});
+  EXPECT_EQ(sampleChannel(step, 0.999f).x, 1.0f);
+  EXPECT_EQ(sampleChannel(step, 1.0f).x, 2.0f);
+  EXPECT_EQ(sampleChannel(step, 1.5f).x, 2.0f);
+  EXPECT_EQ(sampleChannel(step, 2.5f).x, 3.0f);
+}
+
+TEST(AnimationSampling, RotationsSlerpAlongTheShorterArc) {
+  // 0 and 90 degrees about z; the second key is given as the negated quaternion, the same rotation.
+  const AnimationChannel rotation = channel(AnimatedProperty::Rotation, AnimationInterpolation::Linear, {0, 1},
+                                            {{0, 0, 0, 1}, {0, 0, -kSqrtHalf, -kSqrtHalf}});
+  const Vec4 half = sampleChannel(rotation, 0.5f);
+  const float s = std::sin(kPi / 8), c = std::cos(kPi / 8);  // 45 degrees: half angle 22.5
+  EXPECT_NEAR(half.x, 0.0f, 1e-6f);
+  EXPECT_NEAR(half.y, 0.0f, 1e-6f);
+  EXPECT_NEAR(std::fabs(half.z), s, 1e-6f);
+  EXPECT_NEAR(std::fabs(half.w), c, 1e-6f);
+  EXPECT_GT(half.z * half.w, 0.0f);  // a positive rotation about z, not the long way round
+  // A third of the way: 30 degrees, which a normalised linear blend of the quaternions would not give.
+  const Vec4 third = sampleChannel(rotation, 1.0f / 3.0f);
+  EXPECT_NEAR(std::fabs(third.z), std::sin(kPi / 12), 1e-5f);
+}
+
+TEST(AnimationSampling, CubicSplineUsesTangentsScaledByTheKeyInterval) {
+  // Keys at 0 and 2 s with values 0 and 1, out-tangent 3 per second at the first, in-tangent -1 at the second.
+  const AnimationChannel cubic =
+      channel(AnimatedProperty::Translation, AnimationInterpolation::CubicSpline, {0, 2},
+              {{9, 9, 9, 0}, {0, 0, 0, 0}, {3, 0, 0, 0}, {-1, 0, 0, 0}, {1, 0, 0, 0}, {9, 9, 9, 0}});
+  // s = 0.5: h00 = 0.5, h10 = 0.125, h01 = 0.5, h11 = -0.125; tangents times 2 s: 6 and -2.
+  EXPECT_NEAR(sampleChannel(cubic, 1.0f).x, 0.5f * 0 + 0.125f * 6 + 0.5f * 1 - 0.125f * -2, 1e-6f);
+  EXPECT_EQ(sampleChannel(cubic, 0.0f).x, 0.0f);  // the value, not the in-tangent
+  EXPECT_EQ(sampleChannel(cubic, 5.0f).x, 1.0f);
+}
+
+// A glTF written for these tests: a unit quad (emissive, facing +z) under two nodes and a camera at z = 10, with
+// two animations.
+//   "Move": node 0 translates linearly (0,0,0) -> (2,0,0) -> (2,4,0) at 0, 1, 2 s and turns linearly from 0 to
+//           90 degrees about z over 0..2 s; node 1 (the quad's, at rest at (0,1,0)) scales by step 1 -> 3 at 1 s.
+//   "Bounce": node 1 translates by cubic spline from (0,1,0) (out-tangent (0,2,0)) to (0,1,0) over 0..1 s.
+struct AnimatedFile {
+  json gltf;
+  std::vector<uint8_t> buffer;
+
+  // Adds an accessor of float data and returns its index.
+  int add(const std::vector<float>& values, const char* type) {
+    const size_t offset = buffer.size();
+    buffer.resize(offset + values.size() * sizeof(float));
+    std::memcpy(buffer.data() + offset, values.data(), values.size() * sizeof(float));
+    const int components = std::string(type) == "SCALAR" ? 1 : std::string(type) == "VEC3" ? 3 : 4;
+    gltf["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", values.size() * 4}});
+    gltf["accessors"].push_back({{"bufferView", gltf["bufferViews"].size() - 1},
+                                 {"componentType", 5126},
+                                 {"count", values.size() / size_t(components)},
+                                 {"type", type}});
+    return int(gltf["accessors"].size() - 1);
+  }
+
+  AnimatedFile() {
+    gltf = {{"asset", {{"version", "2.0"}}}, {"bufferViews", json::array()}, {"accessors", json::array()}};
+    const int positions = add({-0.5f, -0.5f, 0, 0.5f, -0.5f, 0, 0.5f, 0.5f, 0, -0.5f, 0.5f, 0}, "VEC3");
+    const size_t indexOffset = buffer.size();
+    const uint16_t indices[6] = {0, 1, 2, 0, 2, 3};
+    buffer.resize(indexOffset + sizeof indices);
+    std::memcpy(buffer.data() + indexOffset, indices, sizeof indices);
+    gltf["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", indexOffset}, {"byteLength", sizeof indices}});
+    gltf["accessors"].push_back(
+        {{"bufferView", gltf["bufferViews"].size() - 1}, {"componentType", 5123}, {"count", 6}, {"type", "SCALAR"}});
+    const int indexAccessor = int(gltf["accessors"].size() - 1);
+    gltf["meshes"] = {
+        {{"primitives", {{{"attributes", {{"POSITION", positions}}}, {"indices", indexAccessor}, {"material", 0}}}}}};
+    gltf["materials"] = {
+        {{"emissiveFactor", {1, 1, 1}}, {"pbrMetallicRoughness", {{"baseColorFactor", {0, 0, 0, 1}}}}}};
+    gltf["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"znear", 0.1}}}}};
+    gltf["nodes"] = {{{"children", {1}}},
+                     {{"mesh", 0}, {"translation", {0, 1, 0}}},
+                     {{"camera", 0}, {"translation", {0, 0, 10}}}};
+    gltf["scenes"] = {{{"nodes", {0, 2}}}};
+    const int twoKeys = add({0, 2}, "SCALAR"), threeKeys = add({0, 1, 2}, "SCALAR"), unitKeys = add({0, 1}, "SCALAR");
+    const int moves = add({0, 0, 0, 2, 0, 0, 2, 4, 0}, "VEC3");
+    const int turns = add({0, 0, 0, 1, 0, 0, kSqrtHalf, kSqrtHalf}, "VEC4");
+    const int scales = add({1, 1, 1, 3, 3, 3}, "VEC3");
+    const int bounce = add({0, 0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0}, "VEC3");
+    gltf["animations"] = {{{"name", "Move"},
+                           {"samplers",
+                            {{{"input", threeKeys}, {"output", moves}},
+                             {{"input", twoKeys}, {"output", turns}, {"interpolation", "LINEAR"}},
+                             {{"input", unitKeys}, {"output", scales}, {"interpolation", "STEP"}}}},
+                           {"channels",
+                            {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}},
+                             {{"sampler", 1}, {"target", {{"node", 0}, {"path", "rotation"}}}},
+                             {{"sampler", 2}, {"target", {{"node", 1}, {"path", "scale"}}}}}}},
+                          {{"name", "Bounce"},
+                           {"samplers", {{{"input", unitKeys}, {"output", bounce}, {"interpolation", "CUBICSPLINE"}}}},
+                           {"channels", {{{"sampler", 0}, {"target", {{"node", 1}, {"path", "translation"}}}}}}}};
+  }
+
+  std::string write(const TempFolder& folder) {
+    gltf["buffers"] = {{{"byteLength", buffer.size()}, {"uri", "animated.bin"}}};
+    folder.write("animated.bin", std::string(buffer.begin(), buffer.end()));
+    return folder.write("animated.gltf", gltf.dump());
+  }
+};
+
+Scene loadAnimated(const TempFolder& folder, AnimatedFile file = {}) {
+  LoadWarnings warnings;
+  return loadGltf(file.write(folder), warnings);
+}
+
+// Where the quad's object-space point (1, 0, 0) lands.
+Vec3 quadPoint(const Scene& scene) { return scene.instances.at(0).objectToWorld.point({1, 0, 0}); }
+
+TEST(GltfAnimation, NodeTransformsAtGivenTimesAreTheHandComputedOnes) {
+  TempFolder folder;
+  Scene scene = loadAnimated(folder);
+  ASSERT_EQ(scene.animation.clips.size(), 2u);
+  EXPECT_EQ(scene.animation.clips[0].name, "Move");
+  EXPECT_EQ(scene.animation.clips[0].start, 0.0f);
+  EXPECT_EQ(scene.animation.clips[0].end, 2.0f);
+  ASSERT_EQ(scene.animation.instances.size(), 1u);
+  expectNear(quadPoint(scene), {1, 1, 0});  // the rest pose: node 1's translation only
+
+  const AnimationPlayer player(scene);
+  player.pose(scene, 0, 0.0f);
+  expectNear(quadPoint(scene), {1, 1, 0});
+  // 0.5 s: node 0 at (1, 0, 0), turned 22.5 degrees; node 1 at (0, 1, 0), scale 1. The point (1, 1, 0) turned.
+  player.pose(scene, 0, 0.5f);
+  const float c = std::cos(kPi / 8), s = std::sin(kPi / 8);
+  expectNear(quadPoint(scene), {1 + c - s, s + c, 0});
+  // 1 s: node 0 at (2, 0, 0), turned 45 degrees; node 1 scaled by 3: (3, 1, 0) turned is (2, 4, 0) / sqrt 2.
+  player.pose(scene, 0, 1.0f);
+  expectNear(quadPoint(scene), {2 + 2 * kSqrtHalf, 4 * kSqrtHalf, 0});
+  // 2 s and after: node 0 at (2, 4, 0), turned 90 degrees: (3, 1, 0) becomes (-1, 3, 0).
+  player.pose(scene, 0, 7.0f);
+  expectNear(quadPoint(scene), {1, 7, 0});
+
+  // "Bounce" at 0.5 s: y = h00 * 1 + h10 * 2 + h01 * 1 = 0.5 + 0.25 + 0.5; node 0 at rest.
+  player.pose(scene, 1, 0.5f);
+  expectNear(quadPoint(scene), {1, 1.25f, 0});
+  player.pose(scene, -1, 0.5f);  // the rest pose again
+  expectNear(quadPoint(scene), {1, 1, 0});
+}
+
+TEST(GltfAnimation, ClipsAreChosenByNameOrIndex) {
+  TempFolder folder;
+  const Scene scene = loadAnimated(folder);
+  EXPECT_EQ(findClip(scene.animation, ""), 0u);
+  EXPECT_EQ(findClip(scene.animation, "Bounce"), 1u);
+  EXPECT_EQ(findClip(scene.animation, "1"), 1u);
+  try {
+    findClip(scene.animation, "Walk");
+    FAIL() << "an unknown clip was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "no animation 'Walk' (animations: 0 'Move', 1 'Bounce')");
+  }
+}
+
+TEST(GltfAnimation, AnInstanceScaledToNothingAtRestIsHiddenNotDropped) {
+  TempFolder folder;
+  AnimatedFile file;
+  file.gltf["nodes"][1]["scale"] = {0, 0, 0};  // grows to 3 at 1 s
+  const std::string path = file.write(folder);
+  SceneLoadOptions options;
+  Scene scene = loadScene(path, options);
+  ASSERT_EQ(scene.instances.size(), 1u);  // the scene's repair kept it
+  ASSERT_EQ(scene.animation.instances.size(), 1u);
+  EXPECT_LT(length(scene.instances[0].objectToWorld.vector({1, 0, 0})), 1e-5f);
+  const AnimationPlayer player(scene);
+  player.pose(scene, 0, 1.0f);
+  expectNear(quadPoint(scene), {2 + 2 * kSqrtHalf, 4 * kSqrtHalf, 0});
+}
+
+std::string loadError(AnimatedFile file) {
+  TempFolder folder;
+  LoadWarnings warnings;
+  try {
+    loadGltf(file.write(folder), warnings);
+  } catch (const LoadError& e) {
+    return e.what();
+  }
+  return "(loaded)";
+}
+
+TEST(GltfAnimation, HostileKeysAreOneLineNamingTheSampler) {
+  {
+    AnimatedFile file;
+    const int times = file.add({0, std::numeric_limits<float>::quiet_NaN(), 2}, "SCALAR");
+    file.gltf["animations"][0]["samplers"][0]["input"] = times;
+    EXPECT_NE(loadError(file).find("animations[0].samplers[0].input: key time 1 is not a finite number"),
+              std::string::npos)
+        << loadError(file);
+  }
+  {
+    AnimatedFile file;
+    const int times = file.add({0, 1, 1}, "SCALAR");
+    file.gltf["animations"][0]["samplers"][0]["input"] = times;
+    EXPECT_NE(loadError(file).find("animations[0].samplers[0].input: key times must increase, but key 2"),
+              std::string::npos)
+        << loadError(file);
+  }
+  {
+    AnimatedFile file;
+    const int values = file.add({0, 0, 0, 1, 1, 1}, "VEC3");  // two values for three keys
+    file.gltf["animations"][0]["samplers"][0]["output"] = values;
+    EXPECT_NE(loadError(file).find("animations[0].samplers[0].output: 2 values for 3 key times (LINEAR needs 3)"),
+              std::string::npos)
+        << loadError(file);
+  }
+  {
+    AnimatedFile file;
+    file.gltf["animations"][1]["samplers"][0]["output"] = file.add({0, 1, 0, 0, 1, 0}, "VEC3");
+    EXPECT_NE(loadError(file).find("animations[1].samplers[0].output: 2 values for 2 key times (CUBICSPLINE needs 6)"),
+              std::string::npos)
+        << loadError(file);
+  }
+  {
+    AnimatedFile file;
+    file.gltf["animations"][0]["samplers"][0]["interpolation"] = "BEZIER";
+    EXPECT_NE(loadError(file).find("'BEZIER' is not LINEAR, STEP or CUBICSPLINE"), std::string::npos)
+        << loadError(file);
+  }
+  {
+    AnimatedFile file;
+    file.gltf["animations"][0]["channels"][0]["target"]["node"] = 17;
+    EXPECT_NE(loadError(file).find("animations[0].channels[0].target.node: node 17 does not exist"), std::string::npos)
+        << loadError(file);
+  }
+}
+
+TEST(GltfAnimation, MorphWeightChannelsAreIgnoredWithOneWarning) {
+  TempFolder folder;
+  AnimatedFile file;
+  const int weights = file.add({0, 1}, "SCALAR");
+  file.gltf["animations"][0]["samplers"].push_back({{"input", weights}, {"output", weights}});
+  for (int i = 0; i < 2; ++i)
+    file.gltf["animations"][0]["channels"].push_back({{"sampler", 3}, {"target", {{"node", 1}, {"path", "weights"}}}});
+  LoadWarnings warnings;
+  const Scene scene = loadGltf(file.write(folder), warnings);
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_NE(warnings.messages[0].find("2 animation channels of morph target weights are ignored"), std::string::npos);
+  EXPECT_EQ(scene.animation.clips[0].channels.size(), 3u);
+}
+
+// Mean brightness of the left and right halves of an image.
+std::pair<double, double> halves(const Image& image) {
+  double left = 0, right = 0;
+  for (uint32_t y = 0; y < image.height; ++y)
+    for (uint32_t x = 0; x < image.width; ++x) (x < image.width / 2 ? left : right) += image.at(x, y).x;
+  const double n = double(image.width / 2) * image.height;
+  return {left / n, right / n};
+}
+
+TEST(GltfAnimation, RendersAtTwoTimesDifferWhereTheQuadMoved) {
+  TempFolder folder;
+  AnimatedFile file;
+  // "Move" becomes a slide of node 0 from x = -2 to x = 2 over 1 s, without turning or scaling.
+  file.gltf["animations"][0]["samplers"][0]["output"] = file.add({-2, -1, 0, 2, -1, 0, 2, -1, 0}, "VEC3");
+  file.gltf["animations"][0]["channels"] = {file.gltf["animations"][0]["channels"][0]};
+  Scene scene = loadScene(file.write(folder), SceneLoadOptions{});
+  const AnimationPlayer player(scene);
+  CpuBackend backend;
+  RenderSettings settings;
+  settings.width = 48;
+  settings.height = 32;
+  settings.seed = 3;
+  backend.setScene(scene);
+  backend.setSettings(settings);
+  backend.setCamera(scene.camera.toCamera(48.0f / 32.0f));
+  auto renderAt = [&](float time) {
+    player.pose(scene, 0, time);
+    backend.setInstanceTransforms(scene);
+    backend.render(2);
+    return halves(backend.readImage());
+  };
+  const auto [leftAtStart, rightAtStart] = renderAt(0.0f);
+  const auto [leftAtEnd, rightAtEnd] = renderAt(1.0f);
+  EXPECT_GT(leftAtStart, 0.01);  // the quad covers about 2% of a half
+  EXPECT_EQ(rightAtStart, 0.0);
+  EXPECT_EQ(leftAtEnd, 0.0);
+  EXPECT_GT(rightAtEnd, 0.01);
+}
+
+TEST(GltfAnimation, ASceneFilePlacingAModelTwiceAnimatesBothPlacements) {
+  TempFolder folder;
+  AnimatedFile file;
+  file.write(folder);
+  const std::string scenePath = folder.write("scene.json", R"({"models": [{"file": "animated.gltf"},
+                                   {"file": "animated.gltf", "transform": {"translate": [0, 0, -5]}}]})");
+  Scene scene = loadScene(scenePath, SceneLoadOptions{});
+  ASSERT_EQ(scene.instances.size(), 2u);
+  ASSERT_EQ(scene.animation.instances.size(), 2u);
+  ASSERT_EQ(scene.animation.clips.size(), 2u);
+  EXPECT_EQ(scene.animation.clips[0].channels.size(), 6u);  // "Move" of both placements plays as one
+  AnimationPlayer(scene).pose(scene, 0, 7.0f);
+  expectNear(scene.instances[0].objectToWorld.point({1, 0, 0}), {1, 7, 0});
+  expectNear(scene.instances[1].objectToWorld.point({1, 0, 0}), {1, 7, -5});
+}
+
+TEST(GltfAnimation, TheSceneCacheKeepsTheAnimation) {
+  TempFolder folder;
+  AnimatedFile file;
+  const std::string path = file.write(folder);
+  LoadWarnings warnings;
+  const Scene scene = loadGltf(path, warnings);
+  const std::string cache = sceneCacheFile(folder.file("cache"), path);
+  writeSceneCache(cache, path, scene, {});
+  CachedScene read;
+  ASSERT_EQ(readSceneCache(cache, path, read), SceneCacheRead::Hit);
+  ASSERT_EQ(read.scene.animation.clips.size(), 2u);
+  ASSERT_EQ(read.scene.animation.nodes.size(), scene.animation.nodes.size());
+  EXPECT_EQ(read.scene.animation.clips[1].name, "Bounce");
+  EXPECT_EQ(read.scene.animation.clips[1].channels[0].interpolation, AnimationInterpolation::CubicSpline);
+  Scene posed = read.scene;
+  AnimationPlayer(posed).pose(posed, 0, 1.0f);
+  expectNear(quadPoint(posed), {2 + 2 * kSqrtHalf, 4 * kSqrtHalf, 0});
+
+  // A cache file whose animation refers to a missing instance is not trusted.
+  Scene broken = scene;
+  broken.animation.instances[0].instance = 5;
+  writeSceneCache(cache, path, broken, {});
+  std::string problem;
+  EXPECT_EQ(readSceneCache(cache, path, read, &problem), SceneCacheRead::Invalid);
+  EXPECT_EQ(problem, "an animated instance refers to a missing instance or node");
+}
+
+TEST(FrameSequence, FileNamesReplaceTheLastRunOfHashes) {
+  EXPECT_EQ(frameFileName("out_####.png", 7), "out_0007.png");
+  EXPECT_EQ(frameFileName("out_##.exr", 123), "out_123.exr");                   // wider numbers are not cut
+  EXPECT_EQ(frameFileName("a#b/shot_###_v##.png", 5), "a#b/shot_###_v05.png");  // in the file name only
+  EXPECT_EQ(frameFileName("renders/out.png", 12), "renders/out_0012.png");
+  EXPECT_EQ(frameFileName("out", 0), "out_0000");
+}
+
+TEST(FrameSequence, RangesAreWholeNumbersInOrder) {
+  const FrameRange range = parseFrameRange("3:48");
+  EXPECT_EQ(range.first, 3);
+  EXPECT_EQ(range.last, 48);
+  EXPECT_EQ(parseFrameRange("0:0").last, 0);
+  for (const char* bad : {"48", "5:2", "-1:3", "1:x", "1.5:3", ":3", "1:", "1:99999999", " 1:2"})
+    EXPECT_THROW(parseFrameRange(bad), std::invalid_argument) << bad;
+}
+
+}  // namespace
+}  // namespace candela
