@@ -92,9 +92,11 @@ FrameStats CpuBackend::renderSamples(uint32_t samplesPerPixel) {
         for (uint32_t y = tile.rows().begin(); y < tile.rows().end(); ++y)
           for (uint32_t x = tile.cols().begin(); x < tile.cols().end(); ++x) {
             const PixelTally tally =
-                accumulatePixel<kWithAovs>(film, size_t(y) * settings_.width + x, samplesPerPixel, [&](uint32_t s) {
-                  return renderPixelSample<kWithAovs>(scene, tracer, camera_, settings_, x, y, firstSample + s);
-                });
+                accumulatePixel<kWithAovs>(film, size_t(y) * settings_.width + x, firstSample, samplesPerPixel,
+                                           [&](uint32_t s) {
+                                             return renderPixelSample<kWithAovs>(scene, tracer, camera_, settings_, x,
+                                                                                 y, s);
+                                           });
             local.rays += tally.rays;
             local.invalidSamples += tally.invalidSamples;
           }

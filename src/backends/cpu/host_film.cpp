@@ -15,6 +15,8 @@ void HostFilm::reset(uint32_t width, uint32_t height, bool withAovs) {
   normal_.assign(aovPixels, Vec3{});
   depth_.assign(aovPixels, 0.0f);
   luminanceSquares_.assign(aovPixels, 0.0f);
+  oddLuminance_.assign(aovPixels, 0.0f);
+  oddSamples_.assign(aovPixels, 0);
 }
 
 FilmView HostFilm::view() {
@@ -24,6 +26,8 @@ FilmView HostFilm::view() {
     v.normal = normal_.data();
     v.depth = depth_.data();
     v.luminanceSquares = luminanceSquares_.data();
+    v.oddLuminance = oddLuminance_.data();
+    v.oddSamples = oddSamples_.data();
   }
   return v;
 }
@@ -42,6 +46,7 @@ AovImages HostFilm::readAovs() const {
     aovs.normal.pixels[i] = filmMean(normal_[i], samples_[i]);
     aovs.depth[i] = filmMean(depth_[i], samples_[i]);
     aovs.variance[i] = meanLuminanceVariance(radiance_[i], luminanceSquares_[i], samples_[i]);
+    aovs.halvesVariance[i] = halvesVariance(radiance_[i], oddLuminance_[i], samples_[i], oddSamples_[i]);
   }
   aovs.emission = readEmission();
   return aovs;

@@ -28,7 +28,8 @@ class HostFilm {
   std::vector<Vec3> radiance_, emission_;
   std::vector<uint32_t> samples_;
   std::vector<Vec3> albedo_, normal_;  // empty without AOVs
-  std::vector<float> depth_, luminanceSquares_;
+  std::vector<float> depth_, luminanceSquares_, oddLuminance_;
+  std::vector<uint32_t> oddSamples_;
 };
 
 }  // namespace candela

@@ -35,7 +35,7 @@ class DeviceFilm {
 
   uint32_t width_ = 0, height_ = 0;
   DeviceBuffer radiance_, emission_, samples_;
-  DeviceBuffer albedo_, normal_, depth_, luminanceSquares_;  // empty without AOVs
+  DeviceBuffer albedo_, normal_, depth_, luminanceSquares_, oddLuminance_, oddSamples_;  // empty without AOVs
 };
 
 }  // namespace candela::optix
