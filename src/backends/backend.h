@@ -28,6 +28,7 @@ class TemporalDenoiser {
   virtual Image denoise(const Camera& camera, bool filmContinues) = 0;
   // Forgets the history (a new scene).
   virtual void reset() = 0;
+  virtual const TemporalParams& params() const = 0;
 };
 
 struct FrameStats {
@@ -113,6 +114,7 @@ class HostTemporalDenoiser : public TemporalDenoiser {
     return filter_.filter({color, aovs, camera, backend_.accumulatedSamples(), filmContinues});
   }
   void reset() override { filter_.reset(); }
+  const TemporalParams& params() const override { return filter_.params(); }
 
  private:
   const Backend& backend_;
