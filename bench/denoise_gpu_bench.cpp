@@ -61,10 +61,9 @@ int main() {
                         albedo.as<Vec3>(), normal.as<Vec3>(),   depth.as<float>()};
     AtrousParams params;
     params.passes = 5;
-    const double atrousMs =
-        medianMilliseconds(stream, [&] {
-          atrous.run(film, variance.as<float>(), halves.as<float>(), out.as<Vec3>(), params, stream);
-        });
+    const double atrousMs = medianMilliseconds(stream, [&] {
+      atrous.run(film, variance.as<float>(), halves.as<float>(), out.as<Vec3>(), params, stream);
+    });
     const double bilateralMs =
         medianMilliseconds(stream, [&] { cudaBilateral(film, out.as<Vec3>(), w, h, BilateralParams{}, stream); });
     std::printf(

@@ -34,8 +34,8 @@ std::vector<CameraDescription> readCameraPath(const std::string& path, const Cam
   const uintmax_t size = std::filesystem::file_size(path, error);
   if (error) throw std::runtime_error("cannot read camera path '" + path + "': " + error.message());
   if (size > kMaxCameraPathBytes)
-    throw std::runtime_error("camera path '" + path + "' is larger than " +
-                             std::to_string(kMaxCameraPathBytes >> 20) + " MiB");
+    throw std::runtime_error("camera path '" + path + "' is larger than " + std::to_string(kMaxCameraPathBytes >> 20) +
+                             " MiB");
   std::ifstream in(path);
   if (!in) throw std::runtime_error("cannot read camera path '" + path + "'");
   std::vector<CameraDescription> frames;

@@ -50,8 +50,9 @@ void runCameraPathRender(const RenderJob& pathJob, const TemporalParams& tempora
                                               pathJob.camera, pathJob.textureLimits});
   applyOverrides(scene.materials, pathJob.materialOverrides);
   const RenderJob job = withHints(pathJob, scene.renderHints);
-  const std::vector<CameraDescription> path = source.file.empty() ? orbitCameraPath(scene.camera, source.orbitFrames, source.orbitDegrees)
-                                                                  : readCameraPath(source.file, scene.camera);
+  const std::vector<CameraDescription> path =
+      source.file.empty() ? orbitCameraPath(scene.camera, source.orbitFrames, source.orbitDegrees)
+                          : readCameraPath(source.file, scene.camera);
   // Every frame's file must be writable before the first frame is rendered.
   for (size_t i = 0; i < path.size(); ++i) checkAtomicTarget(frameFileName(output, i, path.size()));
 

@@ -167,12 +167,14 @@ void addCameraPathOptions(CLI::App& cmd, CameraPathSource& source) {
   auto* file = cmd.add_option("--camera-path", source.file,
                               "Render an image sequence along the cameras of FILE, one per line: 'eye_x eye_y eye_z "
                               "target_x target_y target_z [fov_degrees]'; frame i goes to <output>.<i>.<ext>");
-  auto* orbit = cmd.add_option("--camera-orbit", source.orbitFrames,
-                               "Render an image sequence of FRAMES cameras on a circle around the scene camera's target")
-                    ->check(CLI::Range(uint32_t(1), uint32_t(kMaxCameraPathFrames)));
-  cmd.add_option("--camera-orbit-degrees", source.orbitDegrees,
-                 "The arc of --camera-orbit in degrees (360: a full turn; less: from the scene camera's eye to the arc's "
-                 "end, both in the sequence)")
+  auto* orbit =
+      cmd.add_option("--camera-orbit", source.orbitFrames,
+                     "Render an image sequence of FRAMES cameras on a circle around the scene camera's target")
+          ->check(CLI::Range(uint32_t(1), uint32_t(kMaxCameraPathFrames)));
+  cmd.add_option(
+         "--camera-orbit-degrees", source.orbitDegrees,
+         "The arc of --camera-orbit in degrees (360: a full turn; less: from the scene camera's eye to the arc's "
+         "end, both in the sequence)")
       ->check(CLI::Range(-360.0f, 360.0f))
       ->capture_default_str();
   file->excludes(orbit);

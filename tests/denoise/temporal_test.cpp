@@ -148,8 +148,8 @@ TEST(CameraPaths, AFileGivesOneFramePerLineAndRefusesNonsenseWithItsLine) {
   EXPECT_EQ(frames[0].verticalFovDegrees, 33.0f);
   EXPECT_EQ(frames[1].verticalFovDegrees, 50.0f);
   EXPECT_EQ(frames[1].eye.x, 1.0f);
-  for (const char* bad : {"0 1 4 0 1\n", "0 1 4 0 1 0 40 7\n", "0 nan 4 0 1 0\n", "0 1 4 0 1 0 180\n",
-                          "1 1 1 1 1 1\n", "2e18 0 0 0 0 0\n", "0 1 4 0 1 0x\n"}) {
+  for (const char* bad : {"0 1 4 0 1\n", "0 1 4 0 1 0 40 7\n", "0 nan 4 0 1 0\n", "0 1 4 0 1 0 180\n", "1 1 1 1 1 1\n",
+                          "2e18 0 0 0 0 0\n", "0 1 4 0 1 0x\n"}) {
     write(bad);
     try {
       readCameraPath(file, base);

@@ -34,7 +34,7 @@ class RenderSession {
 
   uint32_t accumulatedSamples() const { return backend_->accumulatedSamples(); }
   const Camera& camera() const { return camera_; }  // of the last frame
-  uint64_t restarts() const { return restarts_; }  // times accumulation started over
+  uint64_t restarts() const { return restarts_; }   // times accumulation started over
   uint64_t frames() const { return frames_; }
   const RenderSettings& appliedSettings() const { return applied_; }
   Image image() const { return backend_->readImage(); }

@@ -33,15 +33,15 @@ void DeviceFilm::resize(uint32_t width, uint32_t height, bool withAovs) {
 }
 
 void DeviceFilm::clear(cudaStream_t stream) {
-  for (DeviceBuffer* b :
-       {&radiance_, &emission_, &samples_, &albedo_, &normal_, &depth_, &luminanceSquares_, &oddLuminance_, &oddSamples_})
+  for (DeviceBuffer* b : {&radiance_, &emission_, &samples_, &albedo_, &normal_, &depth_, &luminanceSquares_,
+                          &oddLuminance_, &oddSamples_})
     if (b->size() > 0) checkCuda(cudaMemsetAsync(b->as<void>(), 0, b->size(), stream), "clearing the film");
 }
 
 FilmView DeviceFilm::view() const {
-  return {radiance_.as<Vec3>(),         emission_.as<Vec3>(),     samples_.as<uint32_t>(),
-          albedo_.as<Vec3>(),           normal_.as<Vec3>(),       depth_.as<float>(),
-          luminanceSquares_.as<float>(), oddLuminance_.as<float>(), oddSamples_.as<uint32_t>()};
+  return {radiance_.as<Vec3>(),      emission_.as<Vec3>(), samples_.as<uint32_t>(),       albedo_.as<Vec3>(),
+          normal_.as<Vec3>(),        depth_.as<float>(),   luminanceSquares_.as<float>(), oddLuminance_.as<float>(),
+          oddSamples_.as<uint32_t>()};
 }
 
 std::vector<uint32_t> DeviceFilm::downloadSamples() const {

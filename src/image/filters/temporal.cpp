@@ -82,9 +82,9 @@ Image TemporalFilter::filter(const TemporalFrame& frame) {
   tbb::parallel_for(size_t(0), pixels, [&](size_t i) {
     const TemporalSample base{base_.reflected[i], base_.emission[i], base_.length[i], base_.moment1[i],
                               base_.moment2[i]};
-    const TemporalSample s = accumulateTemporal(
-        base, demodulate(frame.color.pixels[i], aovs.emission.pixels[i], aovs.albedo.pixels[i]),
-        filterableEmission(aovs.emission.pixels[i]), samples);
+    const TemporalSample s =
+        accumulateTemporal(base, demodulate(frame.color.pixels[i], aovs.emission.pixels[i], aovs.albedo.pixels[i]),
+                           filterableEmission(aovs.emission.pixels[i]), samples);
     reflected.pixels[i] = s.reflected;
     emission.pixels[i] = s.emission;
     firstPassVariance[i] = temporalVariance(s, samples);

@@ -30,10 +30,10 @@ void validateTemporalParams(const TemporalParams& params);
 
 // The frames in the temporal filter's terms.
 struct TemporalFrame {
-  const Image& color;      // the film's mean radiance
-  const AovImages& aovs;   // its AOVs (emission included)
-  Camera camera;           // that saw it
-  uint32_t samples;        // per pixel in the film
+  const Image& color;     // the film's mean radiance
+  const AovImages& aovs;  // its AOVs (emission included)
+  Camera camera;          // that saw it
+  uint32_t samples;       // per pixel in the film
   // Whether the film continues the previous frame's (same camera and scene: samples were added to it), so that
   // the history it started from is not to be reprojected again.
   bool filmContinues;

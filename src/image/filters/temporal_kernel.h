@@ -117,8 +117,7 @@ CANDELA_HD TemporalSample reprojectHistory(const Camera& current, const Camera& 
 // The history `base` (length in samples' worth) and the current film's mean of `samples` samples, weighted by their
 // counts: where the history is short the film counts more, so disoccluded pixels take the new frame alone. The
 // moments count each frame's mean as one value of the luminance.
-CANDELA_FN TemporalSample accumulateTemporal(const TemporalSample& base, Vec3 reflected, Vec3 emission,
-                                             float samples) {
+CANDELA_FN TemporalSample accumulateTemporal(const TemporalSample& base, Vec3 reflected, Vec3 emission, float samples) {
   const float total = base.length + samples, a = samples / total;
   TemporalSample out;
   out.reflected = base.reflected + (reflected - base.reflected) * a;

@@ -220,8 +220,7 @@ void CudaAtrous::run(const FilmView& film, const float* imageVariance, const flo
   remodulateKernel<<<grid, kBlock, 0, stream>>>(film, p, from, w, h, output);
   from = filter(Signal::Emission);
   // The passes are done with the colour widths' plane.
-  stratifiedVarianceKernel<<<grid, kBlock, 0, stream>>>(film, imageVariance, imageHalvesVariance, w, h,
-                                                        p.inverseWidth);
+  stratifiedVarianceKernel<<<grid, kBlock, 0, stream>>>(film, imageVariance, imageHalvesVariance, w, h, p.inverseWidth);
   finishKernel<<<grid, kBlock, 0, stream>>>(film, p.inverseWidth, p, from, w, h, output);
   checkCuda(cudaGetLastError(), "launching the a-trous filter");
 }
