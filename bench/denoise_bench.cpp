@@ -6,6 +6,7 @@
 #include "filter_inputs.h"
 #include "image/filters/atrous.h"
 #include "image/filters/bilateral.h"
+#include "image/filters/temporal.h"
 
 namespace candela {
 namespace {
@@ -17,6 +18,21 @@ void atrousFivePasses(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(atrousDenoise(in.color, in.aovs, params));
 }
 BENCHMARK(atrousFivePasses)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// Reprojection, accumulation and the a-trous passes (reflected light and emission) of a frame whose camera moved
+// a little since the last. (The random frame's depths do not match a camera, so much of the history is rejected:
+// the same taps are read and weighed either way.)
+void temporalAndAtrous(benchmark::State& state) {
+  const bench::FilterInput in = bench::noisyFrame();
+  TemporalFilter filter;
+  Camera camera = Camera::lookAt({0, 5, 0}, {0, 0, 0}, {0, 0, 1}, 40.0f, 1920.0f / 1080.0f);
+  filter.filter({in.color, in.aovs, camera, 1, false});
+  for (auto _ : state) {
+    camera.position.x += 1e-4f;
+    benchmark::DoNotOptimize(filter.filter({in.color, in.aovs, camera, 1, false}));
+  }
+}
+BENCHMARK(temporalAndAtrous)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void bilateralRadius3(benchmark::State& state) {
   const bench::FilterInput in = bench::noisyFrame();

@@ -51,6 +51,7 @@ int main() {
     DeviceBuffer depth = DeviceBuffer::fromVector(in.aovs.depth, "the depth");
     DeviceBuffer emission = DeviceBuffer::fromVector(in.aovs.emission.pixels, "the emission");
     DeviceBuffer variance = DeviceBuffer::fromVector(in.aovs.variance, "the variance");
+    DeviceBuffer halves = DeviceBuffer::fromVector(in.aovs.halvesVariance, "the halves' variance");
     DeviceBuffer out(color.size(), "the output");
     cudaStream_t stream;
     checkCuda(cudaStreamCreate(&stream), "creating a CUDA stream");
@@ -60,8 +61,9 @@ int main() {
                         albedo.as<Vec3>(), normal.as<Vec3>(),   depth.as<float>()};
     AtrousParams params;
     params.passes = 5;
-    const double atrousMs =
-        medianMilliseconds(stream, [&] { atrous.run(film, variance.as<float>(), out.as<Vec3>(), params, stream); });
+    const double atrousMs = medianMilliseconds(stream, [&] {
+      atrous.run(film, variance.as<float>(), halves.as<float>(), out.as<Vec3>(), params, stream);
+    });
     const double bilateralMs =
         medianMilliseconds(stream, [&] { cudaBilateral(film, out.as<Vec3>(), w, h, BilateralParams{}, stream); });
     std::printf(

@@ -18,6 +18,8 @@
 #include "app/checkpoint/duration.h"
 #include "app/checkpoint/stop_signals.h"
 #include "app/distributed/mpi_launch.h"
+#include "app/camera_path.h"
+#include "app/camera_path_render.h"
 #include "app/render_job.h"
 #include "app/scene_loading.h"
 #include "app/serve/serve.h"
@@ -320,6 +322,34 @@ int runRender(const RenderJob& job, const std::string& output, const DisplaySett
   return status;
 }
 
+// --camera-path FILE, --camera-orbit FRAMES: an image sequence (app/camera_path_render.h).
+void addCameraPathOptions(CLI::App& cmd, CameraPathSource& source) {
+  auto* file = cmd.add_option("--camera-path", source.file,
+                              "Render an image sequence along the cameras of FILE, one per line: 'eye_x eye_y eye_z "
+                              "target_x target_y target_z [fov_degrees]'; frame i goes to <output>.<i>.<ext>");
+  auto* orbit =
+      cmd.add_option("--camera-orbit", source.orbitFrames,
+                     "Render an image sequence of FRAMES cameras on a circle around the scene camera's target")
+          ->check(CLI::Range(uint32_t(1), uint32_t(kMaxCameraPathFrames)));
+  cmd.add_option(
+         "--camera-orbit-degrees", source.orbitDegrees,
+         "The arc of --camera-orbit in degrees (360: a full turn; less: from the scene camera's eye to the arc's "
+         "end, both in the sequence)")
+      ->check(CLI::Range(-360.0f, 360.0f))
+      ->capture_default_str();
+  file->excludes(orbit);
+}
+
+int runCameraPath(const RenderJob& job, const CameraPathSource& source, const std::string& output,
+                  const DisplaySettings& display) {
+  if (!source.given()) throw std::runtime_error("--denoise temporal needs a sequence: --camera-path or --camera-orbit");
+  checkOutputPath(output);
+  TemporalParams temporal;
+  temporal.atrous = job.atrous;
+  runCameraPathRender(job, temporal, source, output, display);
+  return 0;
+}
+
 double median(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   size_t n = values.size();
@@ -551,7 +581,7 @@ int main(int argc, char** argv) {
       ->add_option("--denoise", renderJob.denoiser,
                    "Denoiser: none; atrous (edge-avoiding a-trous guided by albedo, normal and depth); bilateral; "
                    "optix (the OptiX AI denoiser with albedo and normal guides)")
-      ->check(CLI::IsMember({"none", "atrous", "bilateral", "optix"}))
+      ->check(CLI::IsMember({"none", "atrous", "bilateral", "optix", "temporal"}))
       ->capture_default_str();
   addRenderControlOptions(*render, renderJob.control);
   double rankTimeoutSeconds = 600.0;
@@ -560,6 +590,8 @@ int main(int argc, char** argv) {
   render->add_option("--atrous-passes", renderJob.atrous.passes, "Passes of the a-trous denoiser")
       ->check(CLI::Range(1, kMaxAtrousPasses))
       ->capture_default_str();
+  CameraPathSource cameraPath;
+  addCameraPathOptions(*render, cameraPath);
   render
       ->add_option_function<std::string>(
           "--aov", [&renderJob](const std::string& list) { renderJob.aovs = parseAovList(list); },
@@ -630,6 +662,8 @@ int main(int argc, char** argv) {
     if (*inspect) return runLoad(inspectSpec, inspectOptions);
     if (*render) {
       display.toneMapper = parseToneMapper(toneMapper);
+      if (cameraPath.given() || renderJob.denoiser == "temporal")
+        return runCameraPath(renderJob, cameraPath, output, display);
       if (animation.requested()) return runAnimatedRender(renderJob, animation, output, display);
       if (!animation.clip.empty()) throw std::runtime_error("--animation needs --time or --frames");
       return runRender(renderJob, output, display, rankTimeoutSeconds);

@@ -10,12 +10,27 @@
 #include "image/aov_images.h"
 #include "image/filters/atrous.h"
 #include "image/filters/bilateral.h"
+#include "image/filters/temporal.h"
 #include "image/image.h"
 #include "kernel/camera.h"
 #include "kernel/render_settings.h"
 #include "scene/scene.h"
 
 namespace candela {
+
+// The temporal filter (image/filters/temporal.h) applied to a backend's film frame after frame; it keeps the
+// history. Made by Backend::makeTemporalDenoiser, used while that backend lives.
+class TemporalDenoiser {
+ public:
+  virtual ~TemporalDenoiser() = default;
+  // The backend's accumulated image through the filter (the AOVs must be enabled). `camera` is the one that saw
+  // the film; `filmContinues` says that the film is the one the previous call filtered, with samples added since
+  // (the camera and scene did not change).
+  virtual Image denoise(const Camera& camera, bool filmContinues) = 0;
+  // Forgets the history (a new scene).
+  virtual void reset() = 0;
+  virtual const TemporalParams& params() const = 0;
+};
 
 struct FrameStats {
   uint64_t rays = 0;                // camera, bounce and shadow rays traced
@@ -86,6 +101,10 @@ class Backend {
     return bilateralFilter(readImage(), readEmission(), params);
   }
 
+  // The temporal filter for this backend's film: by default the CPU filter on readImage() and readAovs(); a backend
+  // whose film lives on a GPU filters there and reads back only the result.
+  virtual std::unique_ptr<TemporalDenoiser> makeTemporalDenoiser(const TemporalParams& params) const;
+
   // Capabilities some backends have; callers ask for them here rather than for a backend's type.
   //
   // The traversal ceiling for this scene and ray mix (`bench --raw-trace`): records every ray of one sample per
@@ -98,5 +117,26 @@ class Backend {
   // The image in GPU memory, for consumers on the same GPU; null where the image lives on the host.
   virtual const DeviceImage* deviceImage() const { return nullptr; }
 };
+
+// The temporal filter on the host, for any backend.
+class HostTemporalDenoiser : public TemporalDenoiser {
+ public:
+  HostTemporalDenoiser(const Backend& backend, const TemporalParams& params) : backend_(backend), filter_(params) {}
+  Image denoise(const Camera& camera, bool filmContinues) override {
+    const Image color = backend_.readImage();
+    const AovImages aovs = backend_.readAovs();
+    return filter_.filter({color, aovs, camera, backend_.accumulatedSamples(), filmContinues});
+  }
+  void reset() override { filter_.reset(); }
+  const TemporalParams& params() const override { return filter_.params(); }
+
+ private:
+  const Backend& backend_;
+  TemporalFilter filter_;
+};
+
+inline std::unique_ptr<TemporalDenoiser> Backend::makeTemporalDenoiser(const TemporalParams& params) const {
+  return std::make_unique<HostTemporalDenoiser>(*this, params);
+}
 
 }  // namespace candela

@@ -13,9 +13,11 @@ struct FilmSums {
   uint32_t width = 0, height = 0;
   std::vector<Vec3> radiance;
   std::vector<uint32_t> samples;
-  // The emission sums, the AOV sums and the squared-luminance sums; empty when the film has no AOVs.
+  // The emission sums, the AOV sums, the squared-luminance sums and the luminance sums and counts of the samples
+  // of odd index (kernel/film.h); empty when the film has no AOVs.
   std::vector<Vec3> emission, albedo, normal;
-  std::vector<float> depth, luminanceSquares;
+  std::vector<float> depth, luminanceSquares, oddLuminance;
+  std::vector<uint32_t> oddSamples;
 
   // A cleared film of width x height pixels, with AOV sums or without.
   static FilmSums zero(uint32_t width, uint32_t height, bool withAovs) {
@@ -30,6 +32,8 @@ struct FilmSums {
     f.normal.assign(aovPixels, Vec3{});
     f.depth.assign(aovPixels, 0.0f);
     f.luminanceSquares.assign(aovPixels, 0.0f);
+    f.oddLuminance.assign(aovPixels, 0.0f);
+    f.oddSamples.assign(aovPixels, 0);
     return f;
   }
 
@@ -37,7 +41,8 @@ struct FilmSums {
   // The bytes of the sums and counts.
   size_t bytes() const {
     return (radiance.size() + emission.size() + albedo.size() + normal.size()) * sizeof(Vec3) +
-           samples.size() * sizeof(uint32_t) + (depth.size() + luminanceSquares.size()) * sizeof(float);
+           (samples.size() + oddSamples.size()) * sizeof(uint32_t) +
+           (depth.size() + luminanceSquares.size() + oddLuminance.size()) * sizeof(float);
   }
   bool hasAovs() const { return !albedo.empty(); }
   bool sameShape(const FilmSums& other) const {

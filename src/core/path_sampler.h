@@ -19,11 +19,14 @@ enum class SamplerKind : uint32_t {
 // pure function of (pixel, sample index, dimension, seed, kind), so the CPU and GPU backends draw the same
 // sequence and accumulation can resume at any sample index.
 //
-// Sobol: the dimension (and the seed and pixel) hash to three seeds; one Owen-scrambles the sample index
-// (Burley 2020), which keeps each aligned block of 2^m indices a block and decorrelates the dimensions, the other
-// two Owen-scramble the first two Sobol dimensions at that index. A pixel's first 2^m samples of any next2D call
-// thus form a (0,m,2)-net, and of any next1D call one point in each interval of length 2^-m. Pixels are
-// scrambled independently of each other.
+// Sobol: a pixel's samples of even and of odd index are two sequences of their own, scrambled independently, so
+// that the difference of their means measures the variance of the pixel's mean (kernel/film.h, halvesVariance),
+// which the sample variance overstates for stratified samples. Within a half, sample index i is point i / 2. The
+// dimension (and the seed, pixel and half) hash to three seeds; one Owen-scrambles the point's index (Burley
+// 2020), which keeps each aligned block of 2^m indices a block and decorrelates the dimensions, the other two
+// Owen-scramble the first two Sobol dimensions at that index. A half's first 2^m samples of any next2D call thus
+// form a (0,m,2)-net, and of any next1D call one point in each interval of length 2^-m. Pixels are scrambled
+// independently of each other.
 class PathSampler {
  public:
   CANDELA_FN PathSampler(uint32_t pixel, uint32_t sampleIndex, uint32_t seed, SamplerKind kind = SamplerKind::Sobol)
@@ -33,7 +36,7 @@ class PathSampler {
     uint32_t dimension = dimension_++;
     if (kind_ == SamplerKind::Independent) return randomUniform(pixel_, sampleIndex_, dimension, seed_);
     Uint4 seeds = dimensionSeeds(dimension);
-    uint32_t index = owenScramble(sampleIndex_, seeds.x);
+    uint32_t index = owenScramble(sampleIndex_ >> 1, seeds.x);
     return bitsToUnitFloat(owenScramble(sobolDimension0(index), seeds.y));
   }
 
@@ -44,7 +47,7 @@ class PathSampler {
     }
     Uint4 seeds = dimensionSeeds(dimension_);
     dimension_ += 2;
-    uint32_t index = owenScramble(sampleIndex_, seeds.x);
+    uint32_t index = owenScramble(sampleIndex_ >> 1, seeds.x);
     return {bitsToUnitFloat(owenScramble(sobolDimension0(index), seeds.y)),
             bitsToUnitFloat(owenScramble(sobolDimension1(index), seeds.z))};
   }
@@ -53,8 +56,11 @@ class PathSampler {
   CANDELA_FN uint32_t nextBits() { return pcg4d({pixel_, sampleIndex_, dimension_++, seed_}).x; }
 
  private:
-  // The Sobol seeds of a dimension; the constant keeps them apart from the white-noise numbers of the same inputs.
-  CANDELA_FN Uint4 dimensionSeeds(uint32_t dimension) const { return pcg4d({pixel_, dimension, seed_, 0x50B01u}); }
+  // The Sobol seeds of a dimension in the sample's half; the constant keeps them apart from the white-noise numbers
+  // of the same inputs.
+  CANDELA_FN Uint4 dimensionSeeds(uint32_t dimension) const {
+    return pcg4d({pixel_, dimension, seed_, 0x50B01u + (sampleIndex_ & 1u)});
+  }
 
   uint32_t pixel_;
   uint32_t sampleIndex_;

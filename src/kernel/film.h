@@ -13,12 +13,15 @@ struct FilmView {
   Vec3* radiance = nullptr;
   Vec3* emission = nullptr;     // the sums of PathResult::emitted; null while the AOVs are off, like them
   uint32_t* samples = nullptr;  // samples accepted per pixel
-  // The AOV sums (kernel/aovs.h) and the sums of the squared luminance of the samples' radiance, the denoisers'
-  // guides; null while the AOVs are off.
+  // The AOV sums (kernel/aovs.h), the sums of the squared luminance of the samples' radiance, and the sum of the
+  // luminance and the count of the samples of odd index (the half the Sobol sampler scrambles apart from the even
+  // one): the denoisers' guides; null while the AOVs are off.
   Vec3* albedo = nullptr;
   Vec3* normal = nullptr;
   float* depth = nullptr;
   float* luminanceSquares = nullptr;
+  float* oddLuminance = nullptr;
+  uint32_t* oddSamples = nullptr;
 };
 
 // A pixel's sum over `samples` samples as a mean; zero where no sample was accepted.
@@ -33,17 +36,39 @@ constexpr float kUnknownVariance = -1.0f;
 // Cornell box's 4-sample relMSE 4.6x lower than raw, against 3.0x for 0 (docs/denoising.md).
 constexpr float kVarianceStandardErrors = 5.0f;
 
+// The factor by which meanLuminanceVariance overstates the sample variance over the count: 1 +
+// kVarianceStandardErrors relative standard errors of a sample variance of n normal samples (sqrt(2 / (n - 1))).
+CANDELA_FN float varianceOverstatement(uint32_t samples) {
+  return 1.0f + kVarianceStandardErrors * sqrtf(2.0f / (float(samples) - 1.0f));
+}
+
 // An upper estimate of the variance of a pixel's mean luminance, from the sum of its samples' radiance, the sum of
-// their squared luminance and their count: the sample variance over the count, times 1 + kVarianceStandardErrors
-// relative standard errors of a sample variance of normal samples (sqrt(2 / (n - 1))). Saturated sums
-// (kernel/film_accumulation.h) give a large finite value.
+// their squared luminance and their count: the sample variance over the count, times varianceOverstatement.
+// Saturated sums (kernel/film_accumulation.h) give a large finite value. For stratified samples (the Sobol
+// sampler) the sample variance overstates the variance of the mean further; halvesVariance measures by how much.
 CANDELA_FN float meanLuminanceVariance(Vec3 radianceSum, float luminanceSquaresSum, uint32_t samples) {
   if (samples < 2) return kUnknownVariance;
   const float n = float(samples), mean = luminance(radianceSum) / n;
   const float spread = luminanceSquaresSum / n - mean * mean;
   const float variance = (spread > 0.0f ? spread : 0.0f) / (n - 1.0f);
-  const float bound = variance * (1.0f + kVarianceStandardErrors * sqrtf(2.0f / (n - 1.0f)));
+  const float bound = variance * varianceOverstatement(samples);
   return bound < 3.0e38f ? bound : 3.0e38f;
+}
+
+// The variance of a pixel's mean luminance from the difference of the means of its two halves of samples (even and
+// odd index), which the Sobol sampler scrambles independently, so that they are independent estimates of the pixel.
+// With halves of n_e and n_o samples, E[(m_e - m_o)^2] = s_e^2 + s_o^2 (their means' variances), and the pixel's
+// mean has variance (n_e^2 s_e^2 + n_o^2 s_o^2) / n^2, which for s^2 proportional to 1 / n is
+// E[(m_e - m_o)^2] n_e n_o / n^2: unbiased whether or not the samples are stratified, where the sample variance
+// over the count assumes independent samples. One degree of freedom, so the filter only pools it over
+// neighbourhoods (atrous_kernel.h, stratifiedVariance); times varianceOverstatement, on the scale of
+// meanLuminanceVariance, so that the two compare. kUnknownVariance while a half has no sample.
+CANDELA_FN float halvesVariance(Vec3 radianceSum, float oddLuminanceSum, uint32_t samples, uint32_t oddSamples) {
+  if (oddSamples == 0 || oddSamples >= samples) return kUnknownVariance;
+  const float n = float(samples), no = float(oddSamples), ne = n - no;
+  const float d = (luminance(radianceSum) - oddLuminanceSum) / ne - oddLuminanceSum / no;
+  const float variance = d * d * (ne / n) * (no / n) * varianceOverstatement(samples);
+  return variance < 3.0e38f ? variance : 3.0e38f;
 }
 
 // The mean at pixel i of a film's sums, or of an image of means where there are no sample counts (null): the

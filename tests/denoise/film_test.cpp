@@ -41,11 +41,11 @@ TEST(FilmAccumulation, DropsSamplesThatWouldOverflowTheSums) {
   film.reset(1, 1, true);
   const std::vector<PathResult> samples = {sample({3e38f, 1, 1}, {}, {0, 0, 1}), sample({3e38f, 1, 1}, {}, {0, 1, 0}),
                                            sample({1, 1, 1}, {3e38f, 0, 0}, {0, 1, 0})};
-  PixelTally tally = accumulatePixel<true>(film.view(), 0, 2, [&](uint32_t i) { return samples[i]; });
+  PixelTally tally = accumulatePixel<true>(film.view(), 0, 0, 2, [&](uint32_t i) { return samples[i]; });
   EXPECT_EQ(tally.rays, 2u);
   EXPECT_EQ(tally.invalidSamples, 1u);
   // A second call starts from the film's sums: radiance 3e38 + 1 and emission 0 + 3e38 are finite, so it is kept.
-  tally = accumulatePixel<true>(film.view(), 0, 1, [&](uint32_t) { return samples[2]; });
+  tally = accumulatePixel<true>(film.view(), 0, 2, 1, [&](uint32_t) { return samples[2]; });
   EXPECT_EQ(tally.invalidSamples, 0u);
   const Image image = film.readImage();
   EXPECT_TRUE(allFinite(image));
@@ -63,10 +63,30 @@ TEST(FilmAccumulation, DropsNegativeAndNonFiniteSamplesAndDividesByTheSamplesKep
                                            sample({NAN, 0, 0}, {}, {}), sample({1, 1, 1}, {0, -1, 0}, {}),
                                            sample({4, 4, 4}, {}, {})};
   const PixelTally tally =
-      accumulatePixel<false>(film.view(), 0, uint32_t(samples.size()), [&](uint32_t i) { return samples[i]; });
+      accumulatePixel<false>(film.view(), 0, 0, uint32_t(samples.size()), [&](uint32_t i) { return samples[i]; });
   EXPECT_EQ(tally.invalidSamples, 3u);
   EXPECT_EQ(film.readImage().pixels[0].x, 3.0f);
   EXPECT_THROW(film.readEmission(), std::logic_error);  // recorded with the AOVs only
+}
+
+// The film keeps the luminance of the samples of odd index apart; the variance of the pixel's mean from its two
+// halves is the squared difference of their means times n_e n_o / n^2 (times the overstatement of the sample
+// variance's bound, to compare with it). Even samples of luminance 1 and 3 (mean 2),
+// odd ones of 4 and 4 (mean 4): (2 - 4)^2 / 4 = 1. A dropped odd sample counts in neither half.
+TEST(FilmAccumulation, KeepsTheOddSamplesApartForTheHalvesVariance) {
+  HostFilm film;
+  film.reset(1, 1, true);
+  const std::vector<PathResult> samples = {sample({1, 1, 1}, {}, {0, 0, 1}), sample({4, 4, 4}, {}, {0, 0, 1}),
+                                           sample({3, 3, 3}, {}, {0, 0, 1}), sample({NAN, 0, 0}, {}, {0, 0, 1}),
+                                           sample({2, 2, 2}, {}, {0, 0, 1}), sample({4, 4, 4}, {}, {0, 0, 1})};
+  accumulatePixel<true>(film.view(), 0, 0, uint32_t(samples.size()), [&](uint32_t i) { return samples[i]; });
+  // Kept: even indices 0, 2, 4 (1, 3, 2: mean 2), odd 1, 5 (4, 4: mean 4); n = 5, n_e = 3, n_o = 2.
+  const AovImages aovs = film.readAovs();
+  EXPECT_NEAR(aovs.halvesVariance[0], 4.0f * 3.0f * 2.0f / 25.0f * varianceOverstatement(5), 1e-5f);
+
+  film.reset(1, 1, true);
+  accumulatePixel<true>(film.view(), 0, 0, 1, [&](uint32_t i) { return samples[i]; });
+  EXPECT_EQ(film.readAovs().halvesVariance[0], kUnknownVariance);  // no odd sample yet
 }
 
 // A closed sphere of albedo 0 emitting 2e38 inside: every path's estimate is finite, any two sum to infinity. Each

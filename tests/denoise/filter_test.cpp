@@ -198,6 +198,26 @@ TEST(Atrous, InteriorVarianceIsTheGeneralOne) {
   EXPECT_FLOAT_EQ(interiorLuminanceVariance(&spike[0], &spike[3], &spike[6], 1), 64.0f - 16.0f);
 }
 
+// The variance for the mix with the raw pixel is the sample-variance bound scaled by the neighbourhood's ratio of
+// the halves' estimate to it: down where the halves agree better than the bound says (stratified samples), never
+// up, and not at all where either is unknown.
+TEST(AtrousVariance, TheHalvesScaleTheBoundDownOverTheNeighbourhood) {
+  const int w = 9, h = 9;
+  std::vector<float> bound(size_t(w) * h, 2.0f), halves(size_t(w) * h, 0.5f);
+  bound[4 * w + 4] = 4.0f;  // the centre's own bound is kept, scaled
+  auto at = [&](const std::vector<float>& v) { return [&v, w](int x, int y) { return v[size_t(y) * w + x]; }; };
+  // 25 pixels: halves 12.5, bounds 24 * 2 + 4 = 52.
+  EXPECT_NEAR(stratifiedVariance(at(bound), at(halves), w, h, 4, 4), 4.0f * 12.5f / 52.0f, 1e-6f);
+  // At a corner only the 3x3 inside the image count: ratio 0.25.
+  EXPECT_NEAR(stratifiedVariance(at(bound), at(halves), w, h, 0, 0), 0.5f, 1e-6f);
+  std::fill(halves.begin(), halves.end(), 8.0f);
+  EXPECT_EQ(stratifiedVariance(at(bound), at(halves), w, h, 4, 4), 4.0f);
+  std::fill(halves.begin(), halves.end(), kUnknownVariance);
+  EXPECT_EQ(stratifiedVariance(at(bound), at(halves), w, h, 4, 4), 4.0f);
+  bound[4 * w + 4] = kUnknownVariance;
+  EXPECT_EQ(stratifiedVariance(at(bound), at(halves), w, h, 4, 4), kUnknownVariance);
+}
+
 TEST(FastExp, MatchesTheLibraryExponential) {
   double worst = 0.0;
   for (int i = 0; i <= 200000; ++i) {

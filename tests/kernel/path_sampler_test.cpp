@@ -83,31 +83,59 @@ TEST(SobolSequence, OwenScramblingKeepsLeadingBitsTogether) {
   }
 }
 
-// Every power-of-two prefix of a pixel's samples, and every aligned block after it (accumulation that resumes),
-// is a (0,m,2)-net in each 2D decision, for any pixel, seed and position in the path.
-TEST(SobolSampler, EachPairIsAZeroTwoSequence) {
-  for (uint32_t pixel : {0u, 7u, 123456u})
-    for (uint32_t seed : {0u, 99u})
-      for (uint32_t skip : {0u, 3u, 17u})
-        for (uint32_t m = 0; m <= 10; ++m)
-          for (uint32_t block : {0u, 1u, 5u}) {
-            std::vector<Vec2> points;
-            for (uint32_t i = 0; i < (1u << m); ++i) points.push_back(pairAt(pixel, (block << m) + i, seed, skip));
-            std::string why;
-            ASSERT_TRUE(isZeroNet(points, why)) << "pixel " << pixel << ", seed " << seed << ", after " << skip
-                                                << " numbers, block " << block << ": " << why;
-          }
+// Sample i of half h (0: even sample indices, 1: odd) of a pixel.
+uint32_t halfIndex(uint32_t half, uint32_t i) { return 2 * i + half; }
+
+// In each half of a pixel's samples, every power-of-two prefix, and every aligned block after it (accumulation that
+// resumes), is a (0,m,2)-net in each 2D decision, for any pixel, seed and position in the path.
+TEST(SobolSampler, EachPairIsAZeroTwoSequenceInEachHalf) {
+  for (uint32_t half : {0u, 1u})
+    for (uint32_t pixel : {0u, 7u, 123456u})
+      for (uint32_t seed : {0u, 99u})
+        for (uint32_t skip : {0u, 3u, 17u})
+          for (uint32_t m = 0; m <= 10; ++m)
+            for (uint32_t block : {0u, 1u, 5u}) {
+              std::vector<Vec2> points;
+              for (uint32_t i = 0; i < (1u << m); ++i)
+                points.push_back(pairAt(pixel, halfIndex(half, (block << m) + i), seed, skip));
+              std::string why;
+              ASSERT_TRUE(isZeroNet(points, why)) << "half " << half << ", pixel " << pixel << ", seed " << seed
+                                                  << ", after " << skip << " numbers, block " << block << ": " << why;
+            }
 }
 
-TEST(SobolSampler, EachSingleNumberIsStratified) {
-  for (uint32_t pixel : {0u, 31u})
-    for (uint32_t skip : {0u, 1u, 9u})
-      for (uint32_t m = 0; m <= 12; ++m) {
-        std::vector<int> counts(size_t(1) << m, 0);
-        for (uint32_t i = 0; i < (1u << m); ++i) ++counts[size_t(singleAt(pixel, i, 5, skip) * float(1u << m))];
-        for (size_t c = 0; c < counts.size(); ++c)
-          ASSERT_EQ(counts[c], 1) << "pixel " << pixel << ", dimension " << skip << ", " << (1u << m) << " samples";
-      }
+TEST(SobolSampler, EachSingleNumberIsStratifiedInEachHalf) {
+  for (uint32_t half : {0u, 1u})
+    for (uint32_t pixel : {0u, 31u})
+      for (uint32_t skip : {0u, 1u, 9u})
+        for (uint32_t m = 0; m <= 12; ++m) {
+          std::vector<int> counts(size_t(1) << m, 0);
+          for (uint32_t i = 0; i < (1u << m); ++i)
+            ++counts[size_t(singleAt(pixel, halfIndex(half, i), 5, skip) * float(1u << m))];
+          for (size_t c = 0; c < counts.size(); ++c)
+            ASSERT_EQ(counts[c], 1) << "half " << half << ", pixel " << pixel << ", dimension " << skip << ", "
+                                    << (1u << m) << " samples";
+        }
+}
+
+// The two halves are scrambled independently: over the scrambles (pixels), a half's number and the other half's
+// number at the same point index fill the square uniformly. (Were the halves one net, or one scramble, they would
+// not.)
+TEST(SobolSampler, TheHalvesAreScrambledIndependently) {
+  for (uint32_t skip : {0u, 4u}) {
+    uint32_t counter = 0;
+    test::Chi2Options options;
+    options.binsX = options.binsY = 64;
+    options.sampleCount = 400000;
+    options.testCount = 2;
+    auto sample = [&](double, double, double) -> std::optional<Vec2> {
+      const uint32_t i = counter++, pixel = i / 16, point = i % 16;
+      return Vec2{singleAt(pixel, halfIndex(0, point), 3, skip), singleAt(pixel, halfIndex(1, point), 3, skip)};
+    };
+    test::Chi2Result r = test::chi2TestSquare(
+        sample, [](double, double) { return 1.0; }, options);
+    EXPECT_TRUE(r.passed) << "after " << skip << " numbers: " << r.message;
+  }
 }
 
 // A check that the net test above can fail: white noise is not a net.

@@ -48,6 +48,32 @@ TEST_F(ViewerDenoiserTest, EachChoiceGivesItsFiltersImage) {
   EXPECT_FALSE(sameImage(atrous, plain)) << "the filter changed nothing";
 }
 
+// While the camera moves the a-trous choice runs the temporal filter; once the camera stands still long enough for
+// the film to hold kTemporalSamples samples, the spatial filter again.
+TEST_F(ViewerDenoiserTest, TheCameraMovingTurnsTheTemporalFilterOnUntilTheFilmHasConverged) {
+  AtrousParams params;
+  params.passes = 3;
+  denoiser.apply(session, DenoiserChoice::Atrous, params);
+  EXPECT_FALSE(denoiser.temporalActive());
+  RenderSettings settings = session.appliedSettings();
+  Scene scene = makeCornellBox();
+  for (int frame = 1; frame <= 3; ++frame) {
+    scene.camera.eye.x += 0.01f;
+    session.renderFrame(scene.camera.toCamera(40.0f / 32.0f), settings, 1, true);
+    const Image moving = denoiser.apply(session, DenoiserChoice::Atrous, params);
+    EXPECT_TRUE(denoiser.temporalActive());
+    // From the second moving frame on there is a history (the first is filtered as the spatial filter does at one
+    // sample).
+    if (frame > 1) {
+      EXPECT_FALSE(sameImage(moving, atrousDenoise(session.image(), session.backend().readAovs(), params)));
+    }
+  }
+  session.renderFrame(scene.camera.toCamera(40.0f / 32.0f), settings, ViewerDenoiser::kTemporalSamples, true);
+  const Image still = denoiser.apply(session, DenoiserChoice::Atrous, params);
+  EXPECT_FALSE(denoiser.temporalActive());
+  EXPECT_TRUE(sameImage(still, atrousDenoise(session.image(), session.backend().readAovs(), params)));
+}
+
 TEST_F(ViewerDenoiserTest, TheOptixDenoiserIsUsedOnlyOncePrepared) {
   EXPECT_THROW(denoiser.apply(session, DenoiserChoice::Optix, {}), std::logic_error);
 }

@@ -43,6 +43,9 @@ std::vector<ExrChannel> sumChannels(const FilmSums& film) {
     channels.push_back({"sum.depth", reinterpret_cast<const char*>(film.depth.data()), sizeof(float)});
     channels.push_back(
         {"sum.luminanceSquares", reinterpret_cast<const char*>(film.luminanceSquares.data()), sizeof(float)});
+    channels.push_back({"sum.oddLuminance", reinterpret_cast<const char*>(film.oddLuminance.data()), sizeof(float)});
+    channels.push_back(
+        {"sum.oddSamples", reinterpret_cast<const char*>(film.oddSamples.data()), sizeof(uint32_t), true});
   }
   return channels;
 }
@@ -149,7 +152,7 @@ Checkpoint readCheckpoint(const std::string& path, const ExrAttributes& identity
   for (const std::vector<Vec3>* sums : {&f.radiance, &f.emission, &f.albedo, &f.normal})
     for (const Vec3& v : *sums)
       if (!isFinite(v)) cannotResume(path, "its sums hold values that are not finite numbers");
-  for (const std::vector<float>* sums : {&f.depth, &f.luminanceSquares})
+  for (const std::vector<float>* sums : {&f.depth, &f.luminanceSquares, &f.oddLuminance})
     for (float v : *sums)
       if (!std::isfinite(v)) cannotResume(path, "its sums hold values that are not finite numbers");
   for (uint32_t count : checkpoint.film.samples)

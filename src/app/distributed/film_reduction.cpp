@@ -46,6 +46,8 @@ double reduceFilm(FilmSums& film, FrameStats& stats, double timeoutSeconds) {
   reduceValues(film.samples.data(), film.samples.size(), rank, timeoutSeconds);
   reduceValues(film.depth.data(), film.depth.size(), rank, timeoutSeconds);
   reduceValues(film.luminanceSquares.data(), film.luminanceSquares.size(), rank, timeoutSeconds);
+  reduceValues(film.oddLuminance.data(), film.oddLuminance.size(), rank, timeoutSeconds);
+  reduceValues(film.oddSamples.data(), film.oddSamples.size(), rank, timeoutSeconds);
   unsigned long long counts[2] = {stats.rays, stats.invalidSamples}, sums[2] = {0, 0};
   MPI_Request request;
   checkMpi(MPI_Ireduce(counts, sums, 2, MPI_UNSIGNED_LONG_LONG, MPI_SUM, 0, MPI_COMM_WORLD, &request),

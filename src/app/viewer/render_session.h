@@ -40,7 +40,8 @@ class RenderSession {
                          bool accumulate);
 
   uint32_t accumulatedSamples() const { return backend_->accumulatedSamples(); }
-  uint64_t restarts() const { return restarts_; }  // times accumulation started over
+  const Camera& camera() const { return camera_; }  // of the last frame
+  uint64_t restarts() const { return restarts_; }   // times accumulation started over
   uint64_t frames() const { return frames_; }
   const RenderSettings& appliedSettings() const { return applied_; }
   Image image() const { return backend_->readImage(); }

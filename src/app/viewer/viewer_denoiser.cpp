@@ -45,12 +45,28 @@ std::string ViewerDenoiser::prepareOrTurnOff(DenoiserChoice& choice) {
 Image ViewerDenoiser::apply(const RenderSession& session, DenoiserChoice choice, const AtrousParams& atrousParams) {
   switch (choice) {
     case DenoiserChoice::None: return session.image();
-    case DenoiserChoice::Atrous: return session.atrousImage(atrousParams);
+    case DenoiserChoice::Atrous: return atrous(session, atrousParams);
     case DenoiserChoice::Optix:
       if (!optix_) throw std::logic_error("the OptiX AI denoiser was not prepared");
       return optix_(session.image(), session.backend().readAovs());
   }
   throw std::logic_error("unknown denoiser");
+}
+
+Image ViewerDenoiser::atrous(const RenderSession& session, const AtrousParams& params) {
+  const bool restarted = haveFrame_ && session.restarts() != lastRestarts_;
+  haveFrame_ = true;
+  lastRestarts_ = session.restarts();
+  temporalActive_ = restarted || (temporalActive_ && session.accumulatedSamples() < kTemporalSamples);
+  if (!temporalActive_) return session.atrousImage(params);
+  TemporalParams temporalParams;
+  temporalParams.atrous = params;
+  temporalParams.maxHistory = float(kTemporalSamples);
+  if (!temporal_ || temporalBackend_ != &session.backend() || temporal_->params().atrous.passes != params.passes) {
+    temporal_ = session.backend().makeTemporalDenoiser(temporalParams);
+    temporalBackend_ = &session.backend();
+  }
+  return temporal_->denoise(session.camera(), /*filmContinues=*/!restarted);
 }
 
 }  // namespace candela

@@ -1,5 +1,6 @@
 #pragma once
 #include <functional>
+#include <memory>
 #include <string>
 
 #include "app/viewer/post_settings.h"
@@ -22,11 +23,25 @@ class ViewerDenoiser {
   std::string prepareOrTurnOff(DenoiserChoice& choice);
 
   // The accumulated image through `choice` (None: as it is). The AOVs must be enabled for the others, and
-  // prepareOptix must have succeeded for Optix.
+  // prepareOptix must have succeeded for Optix. A-trous, called once per frame: once the accumulation restarted
+  // (the camera or scene changed) the temporal filter (image/filters/temporal.h) runs, with the history of the frames
+  // before, until the film holds kTemporalSamples samples; then the spatial filter, which mixes in the raw pixels as
+  // they converge, so the image sharpens when the camera stops.
   Image apply(const RenderSession& session, DenoiserChoice choice, const AtrousParams& atrousParams);
 
+  // Samples after which a film that stands still is filtered spatially again: the temporal history counts as at most
+  // this many (TemporalParams::maxHistory).
+  static constexpr uint32_t kTemporalSamples = 16;
+  bool temporalActive() const { return temporalActive_; }
+
  private:
+  Image atrous(const RenderSession& session, const AtrousParams& params);
+
   std::function<Image(const Image&, const AovImages&)> optix_;
+  std::unique_ptr<TemporalDenoiser> temporal_;
+  const Backend* temporalBackend_ = nullptr;  // the one temporal_ reads
+  bool haveFrame_ = false, temporalActive_ = false;
+  uint64_t lastRestarts_ = 0;
 };
 
 }  // namespace candela

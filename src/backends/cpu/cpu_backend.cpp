@@ -92,20 +92,19 @@ FrameStats CpuBackend::renderSamples(uint32_t samplesPerPixel) {
   const uint32_t firstSample = nextSample_;
   const FilmView film = film_.view();
   tbb::combinable<FrameStats> stats;
-  tbb::parallel_for(
-      tbb::blocked_range2d<uint32_t>(0, settings_.height, kTileSize, 0, settings_.width, kTileSize),
-      [&](const tbb::blocked_range2d<uint32_t>& tile) {
-        FrameStats& local = stats.local();
-        for (uint32_t y = tile.rows().begin(); y < tile.rows().end(); ++y)
-          for (uint32_t x = tile.cols().begin(); x < tile.cols().end(); ++x) {
-            const PixelTally tally =
-                accumulatePixel<kWithAovs>(film, size_t(y) * settings_.width + x, samplesPerPixel, [&](uint32_t s) {
-                  return renderPixelSample<kWithAovs>(scene, tracer, camera_, settings_, x, y, firstSample + s);
-                });
-            local.rays += tally.rays;
-            local.invalidSamples += tally.invalidSamples;
-          }
-      });
+  tbb::parallel_for(tbb::blocked_range2d<uint32_t>(0, settings_.height, kTileSize, 0, settings_.width, kTileSize),
+                    [&](const tbb::blocked_range2d<uint32_t>& tile) {
+                      FrameStats& local = stats.local();
+                      for (uint32_t y = tile.rows().begin(); y < tile.rows().end(); ++y)
+                        for (uint32_t x = tile.cols().begin(); x < tile.cols().end(); ++x) {
+                          const PixelTally tally = accumulatePixel<kWithAovs>(
+                              film, size_t(y) * settings_.width + x, firstSample, samplesPerPixel, [&](uint32_t s) {
+                                return renderPixelSample<kWithAovs>(scene, tracer, camera_, settings_, x, y, s);
+                              });
+                          local.rays += tally.rays;
+                          local.invalidSamples += tally.invalidSamples;
+                        }
+                    });
   accumulated_ += samplesPerPixel;
   nextSample_ += samplesPerPixel;
   FrameStats total;

@@ -16,6 +16,8 @@ FilmView HostFilm::view() {
     v.normal = sums_.normal.data();
     v.depth = sums_.depth.data();
     v.luminanceSquares = sums_.luminanceSquares.data();
+    v.oddLuminance = sums_.oddLuminance.data();
+    v.oddSamples = sums_.oddSamples.data();
   }
   return v;
 }
@@ -45,6 +47,7 @@ AovImages HostFilm::readAovs() const {
     aovs.normal.pixels[i] = filmMean(s.normal[i], s.samples[i]);
     aovs.depth[i] = filmMean(s.depth[i], s.samples[i]);
     aovs.variance[i] = meanLuminanceVariance(s.radiance[i], s.luminanceSquares[i], s.samples[i]);
+    aovs.halvesVariance[i] = halvesVariance(s.radiance[i], s.oddLuminance[i], s.samples[i], s.oddSamples[i]);
   }
   aovs.emission = readEmission();
   return aovs;

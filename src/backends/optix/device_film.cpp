@@ -28,16 +28,20 @@ void DeviceFilm::resize(uint32_t width, uint32_t height, bool withAovs) {
   resizeBuffer(normal_, aovPixels * sizeof(Vec3), "the normal AOV");
   resizeBuffer(depth_, aovPixels * sizeof(float), "the depth AOV");
   resizeBuffer(luminanceSquares_, aovPixels * sizeof(float), "the film's squared luminance sums");
+  resizeBuffer(oddLuminance_, aovPixels * sizeof(float), "the film's luminance sums of odd samples");
+  resizeBuffer(oddSamples_, aovPixels * sizeof(uint32_t), "the film's counts of odd samples");
 }
 
 void DeviceFilm::clear(cudaStream_t stream) {
-  for (DeviceBuffer* b : {&radiance_, &emission_, &samples_, &albedo_, &normal_, &depth_, &luminanceSquares_})
+  for (DeviceBuffer* b : {&radiance_, &emission_, &samples_, &albedo_, &normal_, &depth_, &luminanceSquares_,
+                          &oddLuminance_, &oddSamples_})
     if (b->size() > 0) checkCuda(cudaMemsetAsync(b->as<void>(), 0, b->size(), stream), "clearing the film");
 }
 
 FilmView DeviceFilm::view() const {
-  return {radiance_.as<Vec3>(), emission_.as<Vec3>(), samples_.as<uint32_t>(),      albedo_.as<Vec3>(),
-          normal_.as<Vec3>(),   depth_.as<float>(),   luminanceSquares_.as<float>()};
+  return {radiance_.as<Vec3>(),      emission_.as<Vec3>(), samples_.as<uint32_t>(),       albedo_.as<Vec3>(),
+          normal_.as<Vec3>(),        depth_.as<float>(),   luminanceSquares_.as<float>(), oddLuminance_.as<float>(),
+          oddSamples_.as<uint32_t>()};
 }
 
 std::vector<uint32_t> DeviceFilm::downloadSamples() const {
@@ -66,12 +70,16 @@ AovImages DeviceFilm::readAovs() const {
   normal_.download(aovs.normal.pixels.data(), normal_.size());
   depth_.download(aovs.depth.data(), depth_.size());
   std::vector<Vec3> radiance(samples_.size() / sizeof(uint32_t));
-  std::vector<float> squares(radiance.size());
+  std::vector<float> squares(radiance.size()), oddLuminance(radiance.size());
+  std::vector<uint32_t> oddSamples(radiance.size());
   radiance_.download(radiance.data(), radiance_.size());
   luminanceSquares_.download(squares.data(), luminanceSquares_.size());
+  oddLuminance_.download(oddLuminance.data(), oddLuminance_.size());
+  oddSamples_.download(oddSamples.data(), oddSamples_.size());
   const std::vector<uint32_t> samples = downloadSamples();
   for (size_t i = 0; i < samples.size(); ++i) {
     aovs.variance[i] = meanLuminanceVariance(radiance[i], squares[i], samples[i]);
+    aovs.halvesVariance[i] = halvesVariance(radiance[i], oddLuminance[i], samples[i], oddSamples[i]);
     aovs.albedo.pixels[i] = filmMean(aovs.albedo.pixels[i], samples[i]);
     aovs.normal.pixels[i] = filmMean(aovs.normal.pixels[i], samples[i]);
     aovs.depth[i] = filmMean(aovs.depth[i], samples[i]);
@@ -90,6 +98,8 @@ FilmSums DeviceFilm::download() const {
     normal_.download(f.normal.data(), normal_.size());
     depth_.download(f.depth.data(), depth_.size());
     luminanceSquares_.download(f.luminanceSquares.data(), luminanceSquares_.size());
+    oddLuminance_.download(f.oddLuminance.data(), oddLuminance_.size());
+    oddSamples_.download(f.oddSamples.data(), oddSamples_.size());
   }
   return f;
 }
@@ -105,6 +115,8 @@ void DeviceFilm::upload(const FilmSums& sums) {
     normal_.upload(sums.normal.data(), normal_.size());
     depth_.upload(sums.depth.data(), depth_.size());
     luminanceSquares_.upload(sums.luminanceSquares.data(), luminanceSquares_.size());
+    oddLuminance_.upload(sums.oddLuminance.data(), oddLuminance_.size());
+    oddSamples_.upload(sums.oddSamples.data(), oddSamples_.size());
   }
 }
 

@@ -274,7 +274,7 @@ Image OptixBackend::readAtrousDenoised(const AtrousParams& params) const {
     s.atrous.reset();
     s.atrous = std::make_unique<CudaAtrous>(s.settings.width, s.settings.height);
   }
-  s.atrous->run(s.film.view(), nullptr, s.filterOutput(), params, s.context.stream());
+  s.atrous->run(s.film.view(), nullptr, nullptr, s.filterOutput(), params, s.context.stream());
   return s.downloadFiltered();
 }
 

@@ -5,6 +5,7 @@
 #include <tbb/parallel_reduce.h>
 
 #include <algorithm>
+#include <functional>
 #include <stdexcept>
 #include <string>
 
@@ -147,15 +148,23 @@ __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"))) vo
 
 // One pass, tap by tap over whole rows so that the inner loop vectorises over contiguous pixels; every pixel
 // still sums its taps in the (dy, dx) order of the CUDA version.
-void atrousPass(Planes& planes, int from, int w, int h, const AtrousPassConstants& k, float colorSigma, float mean) {
+// `variance`, unless null, replaces the neighbourhood's luminance variance where it is not negative.
+void atrousPass(Planes& planes, int from, int w, int h, const AtrousPassConstants& k, float colorSigma, float mean,
+                const float* variance) {
   const RgbPlanes in = planes.colour(from), out = planes.colour(1 - from);
   float *lum = planes[kLuminance], *inverseWidth = planes[kInverseWidth];
   tbb::parallel_for(0, h, [&](int y) {
     const size_t row = size_t(y) * w;
     for (int x = 0; x < w; ++x) lum[row + x] = luminance(in.get(row + x));
   });
-  tbb::parallel_for(0, h,
-                    [&](int y) { inverseColorWidthRow(lum, w, h, y, colorSigma, mean, inverseWidth + size_t(y) * w); });
+  tbb::parallel_for(0, h, [&](int y) {
+    float* row = inverseWidth + size_t(y) * w;
+    inverseColorWidthRow(lum, w, h, y, colorSigma, mean, row);
+    if (variance)
+      for (int x = 0; x < w; ++x)
+        if (variance[size_t(y) * w + x] >= 0.0f)
+          row[x] = atrousInverseColorWidth(variance[size_t(y) * w + x], colorSigma, mean);
+  });
   const float *nx = planes[kNx], *ny = planes[kNy], *nz = planes[kNz], *z = planes[kDepth];
   const float *slopeX = planes[kSlopeX], *slopeY = planes[kSlopeY];
   tbb::parallel_for(tbb::blocked_range<int>(0, h), [&](const tbb::blocked_range<int>& rows) {
@@ -203,9 +212,34 @@ void validateAtrousInput(const Image& color, const AovImages& aovs, const Atrous
   const uint32_t w = color.width, h = color.height;
   if (aovs.albedo.width != w || aovs.albedo.height != h || aovs.normal.width != w || aovs.normal.height != h ||
       aovs.emission.width != w || aovs.emission.height != h || aovs.depth.size() != size_t(w) * h ||
-      aovs.variance.size() != size_t(w) * h)
+      aovs.variance.size() != size_t(w) * h || aovs.halvesVariance.size() != size_t(w) * h)
     throw std::invalid_argument("the a-trous filter's AOVs differ in size from the image");
 }
+
+namespace {
+
+// Runs `passes` passes on planes.colour(0) and returns the planes that hold the result; `afterFirstPass`, unless
+// null, receives the planes after the first, whose colour widths come from `firstPassVariance` where it is given.
+RgbPlanes runPasses(Planes& planes, int w, int h, const AtrousParams& params,
+                    const std::function<void(const RgbPlanes&)>& afterFirstPass = nullptr,
+                    const float* firstPassVariance = nullptr) {
+  const size_t pixels = size_t(w) * h;
+  const float mean = meanLuminance(planes.colour(0), pixels);
+  for (int pass = 0; pass < params.passes; ++pass) {
+    atrousPass(planes, pass % 2, w, h, atrousPassConstants(params, pass), params.colorSigma, mean,
+               pass == 0 ? firstPassVariance : nullptr);
+    if (pass == 0 && afterFirstPass) afterFirstPass(planes.colour(1));
+  }
+  return planes.colour(params.passes % 2);
+}
+
+Image imageOf(const RgbPlanes& planes, uint32_t w, uint32_t h) {
+  Image image(w, h);
+  tbb::parallel_for(size_t(0), image.pixels.size(), [&](size_t i) { image.pixels[i] = planes.get(i); });
+  return image;
+}
+
+}  // namespace
 
 Image atrousDenoise(const Image& color, const AovImages& aovs, const AtrousParams& params) {
   validateAtrousInput(color, aovs, params);
@@ -213,24 +247,24 @@ Image atrousDenoise(const Image& color, const AovImages& aovs, const AtrousParam
   const size_t pixels = color.pixels.size();
   Planes planes(pixels);
   fillGuides(aovs, planes);
-  // Runs `passes` passes on planes.colour(0) and returns the planes that hold the result.
-  auto filter = [&](int passes) {
-    const float mean = meanLuminance(planes.colour(0), pixels);
-    for (int pass = 0; pass < passes; ++pass)
-      atrousPass(planes, pass % 2, w, h, atrousPassConstants(params, pass), params.colorSigma, mean);
-    return planes.colour(passes % 2);
-  };
   const RgbPlanes input = planes.colour(0);
   tbb::parallel_for(size_t(0), pixels, [&](size_t i) {
     input.set(i, demodulate(color.pixels[i], aovs.emission.pixels[i], aovs.albedo.pixels[i]));
   });
-  const RgbPlanes reflected = filter(params.passes);
+  const RgbPlanes reflected = runPasses(planes, w, h, params);
   Image result(color.width, color.height);
   tbb::parallel_for(size_t(0), pixels,
                     [&](size_t i) { result.pixels[i] = remodulate(reflected.get(i), aovs.albedo.pixels[i]); });
   tbb::parallel_for(size_t(0), pixels, [&](size_t i) { input.set(i, filterableEmission(aovs.emission.pixels[i])); });
-  const RgbPlanes emission = filter(params.passes);
-  auto varianceAt = [&](int x, int y) { return aovs.variance[size_t(y) * w + x]; };
+  const RgbPlanes emission = runPasses(planes, w, h, params);
+  // The variance of each pixel's mean (stratifiedVariance), in the plane the passes are done with.
+  float* variance = planes[kInverseWidth];
+  auto boundAt = [&](int x, int y) { return aovs.variance[size_t(y) * w + x]; };
+  auto halvesAt = [&](int x, int y) { return aovs.halvesVariance[size_t(y) * w + x]; };
+  tbb::parallel_for(0, h, [&](int y) {
+    for (int x = 0; x < w; ++x) variance[size_t(y) * w + x] = stratifiedVariance(boundAt, halvesAt, w, h, x, y);
+  });
+  auto varianceAt = [&](int x, int y) { return variance[size_t(y) * w + x]; };
   tbb::parallel_for(0, h, [&](int y) {
     for (int x = 0; x < w; ++x) {
       const size_t i = size_t(y) * w + x;
@@ -239,6 +273,26 @@ Image atrousDenoise(const Image& color, const AovImages& aovs, const AtrousParam
     }
   });
   return result;
+}
+
+Image atrousSmooth(const Image& signal, const AovImages& guides, const AtrousParams& params, Image* firstLevel,
+                   const std::vector<float>* firstPassVariance) {
+  validateAtrousInput(signal, guides, params);
+  if (firstPassVariance && firstPassVariance->size() != signal.pixels.size())
+    throw std::invalid_argument("the a-trous filter's first-pass variance differs in size from the image");
+  const int w = int(signal.width), h = int(signal.height);
+  Planes planes(signal.pixels.size());
+  fillGuides(guides, planes);
+  const RgbPlanes input = planes.colour(0);
+  tbb::parallel_for(size_t(0), signal.pixels.size(), [&](size_t i) { input.set(i, signal.pixels[i]); });
+  if (firstLevel && params.passes == 0) *firstLevel = signal;
+  const RgbPlanes result = runPasses(
+      planes, w, h, params,
+      [&](const RgbPlanes& level) {
+        if (firstLevel) *firstLevel = imageOf(level, signal.width, signal.height);
+      },
+      firstPassVariance ? firstPassVariance->data() : nullptr);
+  return imageOf(result, signal.width, signal.height);
 }
 
 }  // namespace candela

@@ -35,4 +35,11 @@ void validateAtrousParams(const AtrousParams& params);
 void validateAtrousInput(const Image& color, const AovImages& aovs, const AtrousParams& params);
 Image atrousDenoise(const Image& color, const AovImages& aovs, const AtrousParams& params);
 
+// The passes alone, on a signal that is already what they should smooth (the temporal filter's accumulated
+// demodulated light), guided by the AOVs' normals and depths; no demodulation and no mix with raw pixels.
+// `firstLevel`, unless null, receives the output of the first pass (SVGF's history). `firstPassVariance`, unless
+// null, gives the first pass the variance of each pixel's luminance (negative: the neighbourhood's, as ever).
+Image atrousSmooth(const Image& signal, const AovImages& guides, const AtrousParams& params, Image* firstLevel,
+                   const std::vector<float>* firstPassVariance = nullptr);
+
 }  // namespace candela

@@ -55,6 +55,36 @@ CANDELA_FN Vec3 blendWithRaw(Vec3 raw, Vec3 filtered, float variance) {
   return filtered + (raw - filtered) * rawWeight;
 }
 
+// The neighbourhood over which stratifiedVariance pools the two estimates: (2 r + 1)^2 pixels.
+constexpr int kStratificationRadius = 2;
+
+// The variance of pixel (x, y)'s mean luminance for the mix with the raw pixel: its sample-variance bound
+// (varianceAt, meanLuminanceVariance), scaled down by the ratio of the halves' estimate (halvesAt, halvesVariance,
+// on the same scale) to it, both summed over the pixel's neighbourhood. The sample variance over the count is the
+// variance of the mean for independent samples, but overstates it for stratified ones (Sobol), whose mean
+// converges faster: at 64 samples the filter then trusted its blur too much and was worse than the raw image on
+// the Cornell box (docs/denoising.md). The halves' estimate is unbiased either way but has one degree of freedom,
+// so it only sets the ratio, over 25 pixels; the bound keeps each pixel's own structure. Never scaled up: for
+// independent samples the ratio is 1 up to noise.
+template <class VarianceAt, class HalvesAt>
+CANDELA_HD float stratifiedVariance(const VarianceAt& varianceAt, const HalvesAt& halvesAt, int w, int h, int x,
+                                    int y) {
+  const float own = varianceAt(x, y);
+  if (own < 0.0f) return own;
+  float variances = 0.0f, halves = 0.0f;
+  for (int dy = -kStratificationRadius; dy <= kStratificationRadius; ++dy) {
+    if (y + dy < 0 || y + dy >= h) continue;
+    for (int dx = -kStratificationRadius; dx <= kStratificationRadius; ++dx) {
+      if (x + dx < 0 || x + dx >= w) continue;
+      const float v = varianceAt(x + dx, y + dy), hv = halvesAt(x + dx, y + dy);
+      if (v < 0.0f || hv < 0.0f) continue;
+      variances = fminf(variances + v, 3.0e38f);
+      halves = fminf(halves + hv, 3.0e38f);
+    }
+  }
+  return variances > halves ? own * (halves / variances) : own;
+}
+
 // The variance blendWithRaw takes for pixel (x, y): its own (varianceAt(x, y)), or the median of its 3x3
 // neighbourhood's inside the image where that is larger. A pixel whose few samples happened to agree (all black,
 // say) has a variance near zero and would keep its raw value, a speck in the filtered image; its neighbours'

@@ -32,10 +32,10 @@ __device__ void renderPixel() {
   const uint3 index = optixGetLaunchIndex();
   const uint32_t pixel = launchPixel();
   const OptixTracer tracer = sceneTracer();
-  const PixelTally tally = accumulatePixel<kWithAovs>(params.film, pixel, params.samplesPerPixel, [&](uint32_t s) {
-    return renderPixelSample<kWithAovs>(params.scene, tracer, params.camera, params.settings, index.x, index.y,
-                                        params.firstSample + s);
-  });
+  const PixelTally tally =
+      accumulatePixel<kWithAovs>(params.film, pixel, params.firstSample, params.samplesPerPixel, [&](uint32_t s) {
+        return renderPixelSample<kWithAovs>(params.scene, tracer, params.camera, params.settings, index.x, index.y, s);
+      });
   params.counters[pixel] = {tally.rays, tally.invalidSamples};
 }
 

@@ -132,18 +132,32 @@ __global__ void remodulateKernel(FilmView film, Planes p, int from, int w, int h
   output[i] = remodulate({p.r[from][i], p.g[from][i], p.b[from][i]}, meanAt(film.albedo, film.samples, i));
 }
 
-// Adds the filtered emission to the remodulated reflected light in `output` and mixes the sum with the raw pixel
-// (blendWithRaw). The variance comes from the film's sums, or for images of means from `imageVariance`.
-__global__ void finishKernel(FilmView film, const float* imageVariance, Planes p, int from, int w, int h,
-                             Vec3* output) {
+// The variance of each pixel's mean for the mix with the raw pixel (stratifiedVariance), into `variance`: from the
+// film's sums, or for images of means from `imageVariance` and `imageHalvesVariance`.
+__global__ void stratifiedVarianceKernel(FilmView film, const float* imageVariance, const float* imageHalvesVariance,
+                                         int w, int h, float* variance) {
   const int x = int(blockIdx.x * blockDim.x + threadIdx.x), y = int(blockIdx.y * blockDim.y + threadIdx.y);
   if (x >= w || y >= h) return;
-  const size_t i = size_t(y) * w + x;
-  auto varianceAt = [&](int qx, int qy) {
+  auto boundAt = [&](int qx, int qy) {
     const size_t q = size_t(qy) * w + qx;
     return film.samples ? meanLuminanceVariance(film.radiance[q], film.luminanceSquares[q], film.samples[q])
                         : imageVariance[q];
   };
+  auto halvesAt = [&](int qx, int qy) {
+    const size_t q = size_t(qy) * w + qx;
+    return film.samples ? halvesVariance(film.radiance[q], film.oddLuminance[q], film.samples[q], film.oddSamples[q])
+                        : imageHalvesVariance[q];
+  };
+  variance[size_t(y) * w + x] = stratifiedVariance(boundAt, halvesAt, w, h, x, y);
+}
+
+// Adds the filtered emission to the remodulated reflected light in `output` and mixes the sum with the raw pixel
+// (blendWithRaw) by the variances stratifiedVarianceKernel wrote.
+__global__ void finishKernel(FilmView film, const float* variance, Planes p, int from, int w, int h, Vec3* output) {
+  const int x = int(blockIdx.x * blockDim.x + threadIdx.x), y = int(blockIdx.y * blockDim.y + threadIdx.y);
+  if (x >= w || y >= h) return;
+  const size_t i = size_t(y) * w + x;
+  auto varianceAt = [&](int qx, int qy) { return variance[size_t(qy) * w + qx]; };
   const Vec3 emission{p.r[from][i], p.g[from][i], p.b[from][i]};
   output[i] =
       blendWithRaw(meanAt(film.radiance, film.samples, i), output[i] + emission, blendVariance(varianceAt, w, h, x, y));
@@ -185,8 +199,8 @@ CudaAtrous::CudaAtrous(uint32_t width, uint32_t height)
       planes_(size_t(kPlaneCount) * width * height * sizeof(float), "the a-trous filter's planes"),
       luminanceSum_(sizeof(double), "the a-trous filter's luminance sum") {}
 
-void CudaAtrous::run(const FilmView& film, const float* imageVariance, Vec3* output, const AtrousParams& params,
-                     cudaStream_t stream) {
+void CudaAtrous::run(const FilmView& film, const float* imageVariance, const float* imageHalvesVariance, Vec3* output,
+                     const AtrousParams& params, cudaStream_t stream) {
   const int w = int(width_), h = int(height_);
   const Planes p = planesOf(planes_.as<float>(), size_t(width_) * height_);
   const dim3 grid = gridFor(width_, height_);
@@ -205,7 +219,9 @@ void CudaAtrous::run(const FilmView& film, const float* imageVariance, Vec3* out
   int from = filter(Signal::Reflected);
   remodulateKernel<<<grid, kBlock, 0, stream>>>(film, p, from, w, h, output);
   from = filter(Signal::Emission);
-  finishKernel<<<grid, kBlock, 0, stream>>>(film, imageVariance, p, from, w, h, output);
+  // The passes are done with the colour widths' plane.
+  stratifiedVarianceKernel<<<grid, kBlock, 0, stream>>>(film, imageVariance, imageHalvesVariance, w, h, p.inverseWidth);
+  finishKernel<<<grid, kBlock, 0, stream>>>(film, p.inverseWidth, p, from, w, h, output);
   checkCuda(cudaGetLastError(), "launching the a-trous filter");
 }
 
@@ -224,12 +240,13 @@ Image atrousDenoiseCuda(const Image& color, const AovImages& aovs, const AtrousP
   DeviceBuffer depth = DeviceBuffer::fromVector(aovs.depth, "the depth AOV");
   DeviceBuffer emission = DeviceBuffer::fromVector(aovs.emission.pixels, "the emission image");
   DeviceBuffer variance = DeviceBuffer::fromVector(aovs.variance, "the variance AOV");
+  DeviceBuffer halves = DeviceBuffer::fromVector(aovs.halvesVariance, "the halves' variance AOV");
   DeviceBuffer out(c.size(), "the filtered image");
   CudaAtrous filter(color.width, color.height);
   // Images of means: no sample counts.
   const FilmView film{c.as<Vec3>(),      emission.as<Vec3>(), nullptr,
                       albedo.as<Vec3>(), normal.as<Vec3>(),   depth.as<float>()};
-  filter.run(film, variance.as<float>(), out.as<Vec3>(), params, nullptr);
+  filter.run(film, variance.as<float>(), halves.as<float>(), out.as<Vec3>(), params, nullptr);
   checkCuda(cudaStreamSynchronize(nullptr), "running the a-trous filter");
   Image result(color.width, color.height);
   out.download(result.pixels.data(), out.size());

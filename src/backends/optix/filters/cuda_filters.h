@@ -18,10 +18,11 @@ class CudaAtrous {
   uint32_t width() const { return width_; }
   uint32_t height() const { return height_; }
   // Enqueues the filter of the film's means on `stream`; the film needs its AOVs, and `output` is device memory for
-  // width * height pixels. For images of means, the film has no sample counts and `imageVariance` holds
-  // AovImages::variance (null for a film). Validate the params with validateAtrousParams first.
-  void run(const FilmView& film, const float* imageVariance, Vec3* output, const AtrousParams& params,
-           cudaStream_t stream);
+  // width * height pixels. For images of means, the film has no sample counts and `imageVariance` and
+  // `imageHalvesVariance` hold AovImages::variance and halvesVariance (null for a film). Validate the params with
+  // validateAtrousParams first.
+  void run(const FilmView& film, const float* imageVariance, const float* imageHalvesVariance, Vec3* output,
+           const AtrousParams& params, cudaStream_t stream);
 
  private:
   uint32_t width_, height_;

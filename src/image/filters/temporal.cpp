@@ -1,0 +1,113 @@
+#include "image/filters/temporal.h"
+
+#include <tbb/parallel_for.h>
+
+#include <stdexcept>
+
+#include "image/filters/atrous_kernel.h"
+#include "image/filters/temporal_kernel.h"
+
+namespace candela {
+
+void validateTemporalParams(const TemporalParams& params) {
+  validateAtrousParams(params.atrous);
+  if (!(params.maxHistory >= 1.0f && params.maxHistory <= 1e6f))
+    throw std::invalid_argument("the temporal filter's history must count between 1 and 1e6 samples");
+  if (!(params.depthTolerance > 0.0f) || !(params.normalTolerance >= -1.0f && params.normalTolerance <= 1.0f))
+    throw std::invalid_argument("the temporal filter's depth tolerance must be positive, its normal one a cosine");
+}
+
+void TemporalFilter::History::resize(size_t pixels) {
+  reflected.assign(pixels, Vec3{});
+  emission.assign(pixels, Vec3{});
+  normal.assign(pixels, Vec3{});
+  length.assign(pixels, 0.0f);
+  moment1.assign(pixels, 0.0f);
+  moment2.assign(pixels, 0.0f);
+  depth.assign(pixels, 0.0f);
+  emissive.assign(pixels, 0);
+}
+
+TemporalFilter::TemporalFilter(TemporalParams params) : params_(params) { validateTemporalParams(params_); }
+
+void TemporalFilter::reset() {
+  haveHistory_ = false;
+  width_ = height_ = 0;
+}
+
+Image TemporalFilter::filter(const TemporalFrame& frame) {
+  validateAtrousInput(frame.color, frame.aovs, params_.atrous);
+  const int w = int(frame.color.width), h = int(frame.color.height);
+  const size_t pixels = frame.color.pixels.size();
+  if (frame.color.width != width_ || frame.color.height != height_) {
+    width_ = frame.color.width;
+    height_ = frame.color.height;
+    haveHistory_ = false;
+    base_.resize(pixels);
+    last_.resize(pixels);
+  }
+  const TemporalLimits limits{params_.maxHistory, params_.depthTolerance, params_.normalTolerance};
+  const AovImages& aovs = frame.aovs;
+
+  // The history this film starts from: the last frame's reprojected, unless the film goes on from that frame's.
+  if (!frame.filmContinues) {
+    tbb::parallel_for(0, h, [&](int y) {
+      for (int x = 0; x < w; ++x) {
+        const size_t i = size_t(y) * w + x;
+        TemporalSample s;
+        if (haveHistory_) {
+          auto historyAt = [&](int qx, int qy, TemporalGuides& guides) {
+            const size_t q = size_t(qy) * w + qx;
+            guides = {last_.normal[q], last_.depth[q], last_.emissive[q] != 0};
+            return TemporalSample{last_.reflected[q], last_.emission[q], last_.length[q], last_.moment1[q],
+                                  last_.moment2[q]};
+          };
+          const TemporalGuides guides{unitOrZero(aovs.normal.pixels[i]), aovs.depth[i],
+                                      isEmissive(aovs.emission.pixels[i])};
+          s = reprojectHistory(frame.camera, camera_, w, h, x, y, guides, limits, historyAt);
+        }
+        base_.reflected[i] = s.reflected;
+        base_.emission[i] = s.emission;
+        base_.length[i] = s.length;
+        base_.moment1[i] = s.moment1;
+        base_.moment2[i] = s.moment2;
+      }
+    });
+  }
+
+  // The film added to it; the reflected light goes through the a-trous passes.
+  Image reflected(width_, height_), emission(width_, height_);
+  std::vector<float> firstPassVariance(pixels);
+  const float samples = float(frame.samples > 0 ? frame.samples : 1);
+  tbb::parallel_for(size_t(0), pixels, [&](size_t i) {
+    const TemporalSample base{base_.reflected[i], base_.emission[i], base_.length[i], base_.moment1[i],
+                              base_.moment2[i]};
+    const TemporalSample s =
+        accumulateTemporal(base, demodulate(frame.color.pixels[i], aovs.emission.pixels[i], aovs.albedo.pixels[i]),
+                           filterableEmission(aovs.emission.pixels[i]), samples);
+    reflected.pixels[i] = s.reflected;
+    emission.pixels[i] = s.emission;
+    firstPassVariance[i] = temporalVariance(s, samples);
+    last_.emission[i] = s.emission;
+    last_.length[i] = s.length;
+    last_.moment1[i] = s.moment1;
+    last_.moment2[i] = s.moment2;
+    last_.normal[i] = unitOrZero(aovs.normal.pixels[i]);
+    last_.depth[i] = aovs.depth[i];
+    last_.emissive[i] = isEmissive(s.emission);
+  });
+  Image firstLevel;
+  const Image smoothed = atrousSmooth(reflected, aovs, params_.atrous, &firstLevel, &firstPassVariance);
+  last_.reflected = firstLevel.pixels;
+  camera_ = frame.camera;
+  haveHistory_ = true;
+
+  const Image smoothedEmission = atrousSmooth(emission, aovs, params_.atrous, nullptr);
+  Image result(width_, height_);
+  tbb::parallel_for(size_t(0), pixels, [&](size_t i) {
+    result.pixels[i] = remodulate(smoothed.pixels[i], aovs.albedo.pixels[i]) + smoothedEmission.pixels[i];
+  });
+  return result;
+}
+
+}  // namespace candela
