@@ -15,11 +15,11 @@
 
 #include "app/animation_render.h"
 #include "app/backend_factory.h"
+#include "app/camera_path.h"
+#include "app/camera_path_render.h"
 #include "app/checkpoint/duration.h"
 #include "app/checkpoint/stop_signals.h"
 #include "app/distributed/mpi_launch.h"
-#include "app/camera_path.h"
-#include "app/camera_path_render.h"
 #include "app/render_job.h"
 #include "app/scene_loading.h"
 #include "app/serve/serve.h"

@@ -6,8 +6,8 @@
 #include <tbb/parallel_for.h>
 
 #include "kernel/pass_through.h"
-#include "scene/mip_pyramid.h"
 #include "scene/light_bvh.h"
+#include "scene/mip_pyramid.h"
 #include "scene/tangents.h"
 #include "scene/transform.h"
 

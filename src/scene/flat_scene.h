@@ -7,8 +7,8 @@
 
 namespace candela {
 
-// A Scene packed into the flat arrays kernel code reads, with the light table and the light BVH built. Backends either point
-// a SceneView at these arrays (CPU) or copy them to device memory (GPU).
+// A Scene packed into the flat arrays kernel code reads, with the light table and the light BVH built. Backends either
+// point a SceneView at these arrays (CPU) or copy them to device memory (GPU).
 struct FlatScene {
   std::vector<Vec3> positions;
   std::vector<Vec3> normals;

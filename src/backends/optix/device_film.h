@@ -40,7 +40,8 @@ class DeviceFilm {
 
   uint32_t width_ = 0, height_ = 0;
   DeviceBuffer radiance_, samples_;
-  DeviceBuffer emission_, albedo_, normal_, depth_, luminanceSquares_, oddLuminance_, oddSamples_;  // empty without AOVs
+  DeviceBuffer emission_, albedo_, normal_, depth_, luminanceSquares_, oddLuminance_,
+      oddSamples_;  // empty without AOVs
 };
 
 }  // namespace candela::optix
