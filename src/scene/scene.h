@@ -45,7 +45,7 @@ struct Instance {
 };
 
 // How a camera projects the scene onto the image. A byte, so that any value read from a cache file is defined.
-enum class Projection : uint8_t { Perspective, Orthographic };
+enum class Projection : uint32_t { Perspective, Orthographic };  // 32 bits: CameraDescription has no padding
 
 struct CameraDescription {
   Vec3 eye{0, 0, 0};
