@@ -36,10 +36,9 @@ CANDELA_FN float solidAnglePdf(float areaPdf, float distance, float cosAtLight) 
   return areaPdf * distance * distance / cosAtLight;
 }
 
-// Probability with which the power table picks a triangle emitting `emittedRadiance` over `area`: its power,
-// area x pi x luminance(Le), over the total.
-CANDELA_FN float powerTablePmf(const SceneView& scene, Vec3 emittedRadiance, float area) {
-  return scene.lightAreaPdfScale * luminance(emittedRadiance) * area;
+// Probability with which the power table picks `light`: its power over the total.
+CANDELA_FN float powerTablePmf(const SceneView& scene, const LightTriangle& light) {
+  return scene.inverseLightPower * light.power;
 }
 
 // Solid angles between which a light triangle is sampled by solid angle rather than by area, as pbrt-v4's
@@ -75,7 +74,7 @@ CANDELA_FN float triangleLightPdf(const SceneView& scene, LightSamplerKind kind,
   uint32_t index = findLightIndex(scene, hit.instanceId, hit.primitiveId);
   if (index == scene.lightCount) return 0.0f;
   const LightTriangle& light = scene.lights[index];
-  float selectPmf = kind == LightSamplerKind::Power ? powerTablePmf(scene, light.radiance, light.area)
+  float selectPmf = kind == LightSamplerKind::Power ? powerTablePmf(scene, light)
                                                     : lightBvhPmf(scene, ctx, index);
   return (1.0f - scene.environmentSelectProbability) *
          trianglePointPdf(light, selectPmf, sphericalSamplingSolidAngle(light, ctx.p), distance, cosAtLight);
@@ -101,7 +100,7 @@ CANDELA_FN LightSample sampleLight(const SceneView& scene, LightSamplerKind kind
   if (kind == LightSamplerKind::Power) {
     ls.lightIndex = uint32_t(findInterval(scene.lightCdf, int(scene.lightCount), uTri));
     const LightTriangle& light = scene.lights[ls.lightIndex];
-    selectPmf = powerTablePmf(scene, light.radiance, light.area);
+    selectPmf = powerTablePmf(scene, light);
   } else {
     SampledLight picked = sampleLightBvh(scene, ctx, uTri);
     if (picked.pmf == 0.0f) return ls;

@@ -35,6 +35,9 @@ struct LightTriangle {
   uint32_t instanceId = 0;  // where it came from, for textured emission
   uint32_t primitiveId = 0;
   float frontSign = 1.0f;  // -1 under a mirroring instance: the front is then opposite cross(edge1, edge2)
+  // What light sampling weighs it by: area x luminance of the radiance it emits on average, its emission
+  // texture's mean over the triangle included. Triangles that emit nothing on average are left out of the table.
+  float power = 0.0f;
 };
 
 // One node of the light BVH (pbrt-v4's BVHLightSampler), flat in depth-first order: an interior node's first
@@ -78,7 +81,7 @@ struct SceneView {
   const LightTriangle* lights = nullptr;
   const float* lightCdf = nullptr;  // lightCount + 1 entries, by emitted power
   uint32_t lightCount = 0;
-  float lightAreaPdfScale = 0.0f;  // pi / total emitted power: triangle area pdf = scale * luminance(Le)
+  float inverseLightPower = 0.0f;  // 1 / the sum of the lights' `power`
   // The light BVH over `lights` (2 lightCount - 1 nodes), and per light the path from the root to its leaf: bit
   // i is 1 where the path takes the second child at depth i.
   const LightBvhNode* lightBvh = nullptr;

@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include "kernel/pass_through.h"
+#include "scene/emission_average.h"
 #include "scene/light_bvh.h"
 #include "scene/mip_pyramid.h"
 #include "scene/tangents.h"
@@ -23,9 +24,16 @@ float environmentSamplingProbability(const FlatScene& flat) {
   return environmentEmits ? (flat.lights.empty() ? 1.0f : 0.5f) : 0.0f;
 }
 
+// The emissive triangles of every instance, each weighed by what it emits on average (its material's emission
+// times the mean of its emission texture over it); those that emit nothing there are left out. The textures
+// must be packed already.
 void buildLightTable(const Scene& scene, FlatScene& flat) {
-  double totalPower = 0.0;
-  std::vector<double> powers;
+  struct Candidate {
+    const Mesh* mesh;
+    uint32_t triangle;
+  };
+  std::vector<Candidate> candidates;
+  std::vector<LightTriangle> lights;
   for (uint32_t instanceId = 0; instanceId < flat.instances.size(); ++instanceId) {
     const InstanceRecord& inst = flat.instances[instanceId];
     const Mesh& mesh = scene.meshes[inst.meshId];
@@ -41,21 +49,40 @@ void buildLightTable(const Scene& scene, FlatScene& flat) {
       LightTriangle light{p0,         p1 - p0,     p2 - p0,  m.emission, 0.5f * length(cross(p1 - p0, p2 - p0)),
                           instanceId, uint32_t(t), frontSign};
       if (!(light.area > 0.0f)) continue;  // degenerate: can neither be sampled nor hit
-      double power = double(light.area) * kPi * luminance(m.emission);
-      flat.lights.push_back(light);
-      powers.push_back(power);
-      totalPower += power;
+      lights.push_back(light);
+      candidates.push_back({&mesh, uint32_t(t)});
     }
+  }
+  const TexelArrays texels{flat.textures.data(), uint32_t(flat.textures.size()), flat.texelBytes.data(),
+                           flat.texelFloats.data()};
+  tbb::parallel_for(size_t(0), lights.size(), [&](size_t i) {
+    const Mesh& mesh = *candidates[i].mesh;
+    const uint32_t t = candidates[i].triangle;
+    const Material& m = scene.materials[mesh.triangleMaterials[t]];
+    Vec3 mean = m.emission;
+    if (m.emissionTexture != kNoTexture) {
+      Vec2 uv[3] = {};
+      if (!mesh.uvs.empty())
+        for (int k = 0; k < 3; ++k) uv[k] = mesh.uvs[mesh.indices[3 * t + k]];
+      mean *= meanTextureOverTriangle(texels, m.emissionTexture, uv[0], uv[1], uv[2]);
+    }
+    lights[i].power = lights[i].area * luminance(mean);
+  });
+  double totalPower = 0.0;
+  for (const LightTriangle& light : lights) {
+    if (!(light.power > 0.0f)) continue;
+    flat.lights.push_back(light);
+    totalPower += light.power;
   }
   flat.lightCdf.assign(1, 0.0f);
   double running = 0.0;
-  for (double p : powers) {
-    running += p;
+  for (const LightTriangle& light : flat.lights) {
+    running += light.power;
     flat.lightCdf.push_back(float(running / totalPower));
   }
   if (!flat.lights.empty()) {
     flat.lightCdf.back() = 1.0f;
-    flat.lightAreaPdfScale = float(kPi / totalPower);
+    flat.inverseLightPower = float(1.0 / totalPower);
   }
   LightBvh bvh = buildLightBvh(flat.lights);
   flat.lightBvh = std::move(bvh.nodes);
@@ -188,9 +215,9 @@ FlatScene FlatScene::build(const Scene& scene) {
   }
   for (const Instance& inst : scene.instances)
     flat.instances.push_back({inst.meshId, inst.objectToWorld, normalTransform(inst.objectToWorld)});
+  packTextures(scene, flat);
   buildLightTable(scene, flat);
   flat.punctualLights = scene.punctualLights;
-  packTextures(scene, flat);
   flat.hasCutouts = anyCutouts(flat.materials);
   return flat;
 }
@@ -218,7 +245,7 @@ bool FlatScene::replaceInstanceTransforms(const Scene& scene) {
   }
   lights.clear();
   lightCdf.clear();
-  lightAreaPdfScale = 0.0f;
+  inverseLightPower = 0.0f;
   buildLightTable(scene, *this);
   return true;
 }
@@ -248,7 +275,7 @@ SceneView FlatScene::hostView() const {
   v.lights = lights.data();
   v.lightCdf = lightCdf.data();
   v.lightCount = uint32_t(lights.size());
-  v.lightAreaPdfScale = lightAreaPdfScale;
+  v.inverseLightPower = inverseLightPower;
   v.lightBvh = lightBvh.data();
   v.lightBitTrails = lightBitTrails.data();
   v.environmentSelectProbability = environmentSelectProbability;

@@ -26,7 +26,7 @@ struct FlatScene {
   bool hasCutouts = false;
   std::vector<LightTriangle> lights;
   std::vector<float> lightCdf;
-  float lightAreaPdfScale = 0.0f;
+  float inverseLightPower = 0.0f;
   std::vector<LightBvhNode> lightBvh;
   std::vector<uint64_t> lightBitTrails;
   float environmentSelectProbability = 0.0f;

@@ -167,7 +167,7 @@ LightBounds triangleLightBounds(const LightTriangle& light) {
   b.lo = minimum(light.p0, minimum(p1, p2));
   b.hi = maximum(light.p0, maximum(p1, p2));
   b.w = normalize(cross(light.edge1, light.edge2)) * light.frontSign;
-  b.phi = luminance(light.radiance) * light.area;
+  b.phi = light.power;
   b.cosThetaO = 1.0f;  // one normal
   b.cosThetaE = 0.0f;  // emits over the hemisphere about it
   b.twoSided = 0;

@@ -254,6 +254,7 @@ TEST(LightBvh, CoincidentLightsGiveABalancedTree) {
     lights[i].edge2 = {0, 1, 0};
     lights[i].radiance = {1, 1, 1};
     lights[i].area = 0.5f;
+    lights[i].power = 0.5f;
     lights[i].primitiveId = i;
   }
   LightBvh bvh = buildLightBvh(lights);
