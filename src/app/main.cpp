@@ -584,6 +584,9 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"none", "atrous", "bilateral", "optix", "temporal"}))
       ->capture_default_str();
   addRenderControlOptions(*render, renderJob.control);
+  // A checkpoint holds one image: a sequence's frames would overwrite it, and each would resume from it.
+  for (const char* option : {"--checkpoint", "--resume"})
+    render->get_option("--frames")->excludes(render->get_option(option));
   double rankTimeoutSeconds = 600.0;
   addDurationOption(*render, "--rank-timeout", rankTimeoutSeconds,
                     "Under mpirun: how long a rank waits for another before it ends the job (default: 10m)");
