@@ -1,17 +1,52 @@
 #pragma once
-// What the convergence benchmarks share: relMSE against a reference, timed progressive renders, and reading a
-// relMSE-against-time curve at a given time.
+// What the convergence benchmarks share: their common options, relMSE against a reference, timed progressive
+// renders, and reading a relMSE-against-time curve at a given time.
+#include <CLI/CLI.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <exception>
+#include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
+#include "app/backend_factory.h"
 #include "backends/backend.h"
 #include "image/image.h"
 #include "kernel/render_settings.h"
+#include "scene/scene.h"
 
 namespace candela::bench {
+
+// The options every convergence benchmark takes; each sets its own defaults.
+struct ConvergenceOptions {
+  std::string backend = "cpu";
+  uint32_t width = 256, height = 256;
+  uint32_t referenceSpp = 65536, maxSpp = 1024, seeds = 4;
+};
+
+inline void addConvergenceOptions(CLI::App& app, ConvergenceOptions& options) {
+  app.add_option("--backend", options.backend, "cpu or optix")->capture_default_str();
+  app.add_option("--width", options.width)->check(CLI::Range(1u, 8192u))->capture_default_str();
+  app.add_option("--height", options.height)->check(CLI::Range(1u, 8192u))->capture_default_str();
+  app.add_option("--reference-spp", options.referenceSpp)->check(CLI::Range(1u, 1u << 24))->capture_default_str();
+  app.add_option("--max-spp", options.maxSpp)->check(CLI::Range(1u, 1u << 16))->capture_default_str();
+  app.add_option("--seeds", options.seeds)->check(CLI::Range(1u, 64u))->capture_default_str();
+}
+
+// Parses the command line and runs the benchmark; a failure is one line naming `program`, and exit status 1.
+inline int runBenchmark(CLI::App& app, int argc, char** argv, const char* program, const std::function<int()>& run) {
+  CLI11_PARSE(app, argc, argv);
+  try {
+    return run();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: %s\n", program, e.what());
+    return 1;
+  }
+}
 
 struct Point {
   uint32_t spp = 0;
@@ -51,6 +86,18 @@ struct Renderer {
   std::unique_ptr<Backend> backend;
   RenderSettings settings;
 
+  // A renderer of `scene` from its camera on the options' backend (which it names on stderr) at their size.
+  static Renderer of(const Scene& scene, const ConvergenceOptions& options) {
+    std::string why;
+    Renderer renderer{createBackend(options.backend, why), {}};
+    std::fprintf(stderr, "%s\n", why.c_str());
+    renderer.settings.width = options.width;
+    renderer.settings.height = options.height;
+    renderer.backend->setScene(scene);
+    renderer.backend->setCamera(scene.camera.toCamera(float(options.width) / float(options.height)));
+    return renderer;
+  }
+
   // Renders `spp` samples per pixel one launch at a time, as the viewer and `candela render` add them, and
   // times them; the first launch after a change of settings is not timed.
   Image render(uint32_t spp, double& milliseconds) {
@@ -63,8 +110,11 @@ struct Renderer {
     return backend->readImage();
   }
 
-  // A reference of `spp` samples per pixel, rendered in batches; returns its time in milliseconds.
+  // A reference of `spp` samples per pixel with the independent sampler at a seed of its own, rendered in
+  // batches; returns its time in milliseconds.
   Image renderReference(uint32_t spp, double& milliseconds) {
+    settings.sampler = SamplerKind::Independent;
+    settings.seed = 1000003;
     backend->setSettings(settings);
     auto start = std::chrono::steady_clock::now();
     for (uint32_t done = 0; done < spp;) {

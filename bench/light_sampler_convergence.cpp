@@ -15,7 +15,6 @@
 #include <map>
 #include <vector>
 
-#include "app/backend_factory.h"
 #include "app/scene_loading.h"
 #include "convergence.h"
 #include "image/image_io.h"
@@ -26,31 +25,26 @@ namespace {
 
 using bench::Point;
 
-struct Options {
+struct Options : bench::ConvergenceOptions {
   std::string scene = "night-town";
   uint32_t blocks = 24;
-  std::string backend = "cpu";
-  uint32_t width = 192, height = 108;
-  uint32_t referenceSpp = 8192, maxSpp = 256, seeds = 4;
   std::string referenceImage;
+
+  Options() {
+    width = 192;
+    height = 108;
+    referenceSpp = 8192;
+    maxSpp = 256;
+  }
 };
 
 const char* lightSamplerName(LightSamplerKind kind) { return kind == LightSamplerKind::Bvh ? "bvh" : "power"; }
 
 int run(const Options& options) {
   Scene scene = options.scene == "night-town" ? makeNightTown(options.blocks, 1) : loadScene(options.scene, {});
-  std::string why;
-  bench::Renderer renderer{createBackend(options.backend, why), {}};
-  std::fprintf(stderr, "%s\n", why.c_str());
-  renderer.settings.width = options.width;
-  renderer.settings.height = options.height;
-  renderer.backend->setScene(scene);
-  renderer.backend->setCamera(scene.camera.toCamera(float(options.width) / float(options.height)));
-
+  bench::Renderer renderer = bench::Renderer::of(scene, options);
   double referenceMs = 0.0;
-  renderer.settings.sampler = SamplerKind::Independent;
   renderer.settings.lightSampler = LightSamplerKind::Bvh;
-  renderer.settings.seed = 1000003;
   Image reference = renderer.renderReference(options.referenceSpp, referenceMs);
   if (!options.referenceImage.empty()) writeImage(options.referenceImage, reference, DisplaySettings{});
   std::printf(
@@ -106,18 +100,8 @@ int main(int argc, char** argv) {
   app.add_option("--blocks", options.blocks, "night-town: blocks per side")
       ->check(CLI::Range(1u, 200u))
       ->capture_default_str();
-  app.add_option("--backend", options.backend, "cpu or optix")->capture_default_str();
-  app.add_option("--width", options.width)->check(CLI::Range(1u, 8192u))->capture_default_str();
-  app.add_option("--height", options.height)->check(CLI::Range(1u, 8192u))->capture_default_str();
-  app.add_option("--reference-spp", options.referenceSpp)->check(CLI::Range(1u, 1u << 24))->capture_default_str();
-  app.add_option("--max-spp", options.maxSpp)->check(CLI::Range(1u, 1u << 16))->capture_default_str();
-  app.add_option("--seeds", options.seeds)->check(CLI::Range(1u, 64u))->capture_default_str();
+  candela::bench::addConvergenceOptions(app, options);
   app.add_option("--reference-image", options.referenceImage, "Write the reference here (.exr, .png, ...)");
-  CLI11_PARSE(app, argc, argv);
-  try {
-    return candela::run(options);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "light_sampler_convergence: %s\n", e.what());
-    return 1;
-  }
+  return candela::bench::runBenchmark(app, argc, argv, "light_sampler_convergence",
+                                      [&] { return candela::run(options); });
 }

@@ -6,31 +6,6 @@
 
 namespace candela {
 
-namespace {
-
-Material diffuse(Vec3 albedo, Vec3 emission = {0, 0, 0}) {
-  Material m;
-  m.type = MaterialType::Diffuse;
-  m.baseColor = albedo;
-  m.emission = emission;
-  return m;
-}
-
-// An axis-aligned box from lo to hi, its faces facing out, without the bottom.
-void appendBox(Mesh& mesh, Vec3 lo, Vec3 hi, uint32_t materialId) {
-  Vec3 centre = (lo + hi) * 0.5f;
-  auto face = [&](Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 outward) {
-    appendQuad(mesh, a, b, c, d, centre + outward * 1e3f, materialId);
-  };
-  face({lo.x, hi.y, lo.z}, {hi.x, hi.y, lo.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}, {0, 1, 0});
-  face({lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z}, {0, 0, -1});
-  face({lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}, {0, 0, 1});
-  face({lo.x, lo.y, lo.z}, {lo.x, lo.y, hi.z}, {lo.x, hi.y, hi.z}, {lo.x, hi.y, lo.z}, {-1, 0, 0});
-  face({hi.x, lo.y, lo.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {hi.x, hi.y, lo.z}, {1, 0, 0});
-}
-
-}  // namespace
-
 Scene makeNightTown(uint32_t blocks, uint32_t seed) {
   constexpr float kSpacing = 12.0f;  // block pitch, metres
   constexpr float kBuilding = 7.0f;  // building footprint
@@ -39,9 +14,10 @@ Scene makeNightTown(uint32_t blocks, uint32_t seed) {
   enum : uint32_t { kGround, kWall, kLamp, kWarmWindow, kColdWindow };
   Scene scene;
   scene.name = "night-town";
-  scene.materials = {diffuse({0.35f, 0.35f, 0.35f}), diffuse({0.6f, 0.55f, 0.5f}),
-                     diffuse({0.8f, 0.8f, 0.8f}, {400.0f, 300.0f, 160.0f}),
-                     diffuse({0.8f, 0.8f, 0.8f}, {6.0f, 4.5f, 2.5f}), diffuse({0.8f, 0.8f, 0.8f}, {2.5f, 3.5f, 5.0f})};
+  scene.materials = {diffuseMaterial({0.35f, 0.35f, 0.35f}), diffuseMaterial({0.6f, 0.55f, 0.5f}),
+                     diffuseMaterial({0.8f, 0.8f, 0.8f}, {400.0f, 300.0f, 160.0f}),
+                     diffuseMaterial({0.8f, 0.8f, 0.8f}, {6.0f, 4.5f, 2.5f}),
+                     diffuseMaterial({0.8f, 0.8f, 0.8f}, {2.5f, 3.5f, 5.0f})};
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   Mesh mesh;
@@ -54,9 +30,10 @@ Scene makeNightTown(uint32_t blocks, uint32_t seed) {
     for (uint32_t j = 0; j < blocks; ++j) {
       Vec3 centre{-half + kSpacing * (float(i) + 0.5f), 0.0f, -half + kSpacing * (float(j) + 0.5f)};
       float height = 4.0f + 14.0f * unit(rng);
-      Vec3 lo = centre - Vec3{0.5f * kBuilding, 0, 0.5f * kBuilding};
-      Vec3 hi = centre + Vec3{0.5f * kBuilding, height, 0.5f * kBuilding};
-      appendBox(mesh, lo, hi, kWall);
+      const float r = 0.5f * kBuilding;
+      const Vec3 floor[4] = {centre + Vec3{-r, 0, -r}, centre + Vec3{r, 0, -r}, centre + Vec3{r, 0, r},
+                             centre + Vec3{-r, 0, r}};
+      appendBlock(mesh, floor, height, kWall);
       // Two windows per wall, a few centimetres out from it, at random places on it.
       for (int wall = 0; wall < 4; ++wall) {
         Vec3 outward = wall == 0   ? Vec3{0, 0, -1}

@@ -12,7 +12,6 @@
 #include <map>
 #include <vector>
 
-#include "app/backend_factory.h"
 #include "app/scene_loading.h"
 #include "convergence.h"
 
@@ -21,27 +20,15 @@ namespace {
 
 using bench::Point;
 
-struct Options {
+struct Options : bench::ConvergenceOptions {
   std::string scene = "cornell-box";
-  std::string backend = "cpu";
   std::string environment;
-  uint32_t width = 256, height = 256;
-  uint32_t referenceSpp = 65536, maxSpp = 1024, seeds = 4;
 };
 
 int run(const Options& options) {
   Scene scene = loadScene(options.scene, {options.environment, {}});
-  std::string why;
-  bench::Renderer renderer{createBackend(options.backend, why), {}};
-  std::fprintf(stderr, "%s\n", why.c_str());
-  renderer.settings.width = options.width;
-  renderer.settings.height = options.height;
-  renderer.backend->setScene(scene);
-  renderer.backend->setCamera(scene.camera.toCamera(float(options.width) / float(options.height)));
-
+  bench::Renderer renderer = bench::Renderer::of(scene, options);
   double referenceMs = 0.0;
-  renderer.settings.sampler = SamplerKind::Independent;
-  renderer.settings.seed = 1000003;
   Image reference = renderer.renderReference(options.referenceSpp, referenceMs);
   std::printf("{\"reference_spp\": %u, \"reference_seconds\": %.1f, \"backend\": \"%s\", \"device\": \"%s\"}\n",
               options.referenceSpp, referenceMs / 1000.0, renderer.backend->name().c_str(),
@@ -86,18 +73,7 @@ int main(int argc, char** argv) {
   candela::Options options;
   CLI::App app{"Error against time for the path samplers"};
   app.add_option("--scene", options.scene, "Scene file or built-in scene")->capture_default_str();
-  app.add_option("--backend", options.backend, "cpu or optix")->capture_default_str();
   app.add_option("--env", options.environment, "Environment map");
-  app.add_option("--width", options.width)->capture_default_str();
-  app.add_option("--height", options.height)->capture_default_str();
-  app.add_option("--reference-spp", options.referenceSpp)->capture_default_str();
-  app.add_option("--max-spp", options.maxSpp)->capture_default_str();
-  app.add_option("--seeds", options.seeds)->check(CLI::Range(1u, 64u))->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
-  try {
-    return candela::run(options);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "sampler_convergence: %s\n", e.what());
-    return 1;
-  }
+  candela::bench::addConvergenceOptions(app, options);
+  return candela::bench::runBenchmark(app, argc, argv, "sampler_convergence", [&] { return candela::run(options); });
 }

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "app/backend_factory.h"
+#include "app/schedule/render_team.h"
 #include "core/atomic_file.h"
 #include "image/aov_io.h"
 #include "scene/animation_player.h"
@@ -26,17 +27,18 @@ int64_t parseFrameNumber(std::string_view text, const std::string& whole) {
   return value;
 }
 
-// The clip to play, with a warning naming it where the scene has several and none was chosen.
-int chooseClip(const Scene& scene, const std::string& choice) {
+// The clip to play, with a warning (where `warn`) naming it where the scene has several and none was chosen.
+int chooseClip(const Scene& scene, const std::string& choice, bool warn) {
   const SceneAnimation& animation = scene.animation;
   if (animation.empty()) {
     if (!choice.empty()) throw std::runtime_error(scene.name + ": no animation '" + choice + "' (it has none)");
-    std::fprintf(stderr, "candela: warning: %s has no animation; every time shows the same image\n",
-                 printableText(scene.name).c_str());
+    if (warn)
+      std::fprintf(stderr, "candela: warning: %s has no animation; every time shows the same image\n",
+                   printableText(scene.name).c_str());
     return -1;
   }
   const size_t clip = findClip(animation, choice);
-  if (choice.empty() && animation.clips.size() > 1) {
+  if (warn && choice.empty() && animation.clips.size() > 1) {
     std::string names;
     for (size_t i = 0; i < animation.clips.size(); ++i)
       names += (i ? ", " : "") + std::to_string(i) + " '" + animation.clips[i].name + "'";
@@ -84,29 +86,39 @@ std::string frameFileName(const std::string& output, int64_t frame) {
 
 int runAnimatedRender(const RenderJob& job, const AnimationRequest& request, const std::string& output,
                       const DisplaySettings& display) {
-  if (request.frames) {
-    checkOutput(frameFileName(output, request.frames->first));
-    checkOutput(frameFileName(output, request.frames->last));
-  } else {
-    checkOutput(output);
-  }
+  RenderTeam* const team = job.team;
+  const bool writes = !team || team->writes();
+  agreedStep(team, [&] {
+    if (!writes) return true;
+    if (request.frames) {
+      checkOutput(frameFileName(output, request.frames->first));
+      checkOutput(frameFileName(output, request.frames->last));
+    } else {
+      checkOutput(output);
+    }
+    return true;
+  });
   RenderJob hinted;
-  Scene scene = loadSceneForJob(job, hinted);
-  const int clip = chooseClip(scene, request.clip);
+  Scene scene = agreedStep(team, [&] { return loadSceneForJob(job, hinted); });
+  const int clip = agreedStep(team, [&] { return chooseClip(scene, request.clip, writes); });
   const AnimationPlayer player(scene);
   std::string why;
-  std::unique_ptr<Backend> backend = createBackend(hinted.backend, why);
-  std::fprintf(stderr, "%s\n", why.c_str());
+  std::unique_ptr<Backend> backend =
+      agreedStep(team, [&] { return createBackend(hinted.backend, why, team ? team->localIndex() : 0); });
+  if (writes) std::fprintf(stderr, "%s\n", why.c_str());
+  // With a team, every process poses the scene and takes its share of each frame's samples; the film, added up
+  // on the writer, is written there (distributed/distributed_render.h says why).
   auto renderAt = [&](double seconds, const std::string& path, bool first) {
     const size_t hidden = clip >= 0 ? player.pose(scene, clip, float(seconds)) : 0;
-    if (hidden > 0)
+    if (hidden > 0 && writes)
       std::fprintf(stderr, "candela: warning: at %g s, %zu animated instances would lie beyond +-1e8 and are hidden\n",
                    seconds, hidden);
     if (first)
       backend->setScene(scene);
     else
       backend->setInstanceTransforms(scene);
-    const RenderOutcome outcome = renderLoadedScene(hinted, scene, /*showProgress=*/true, backend.get());
+    const RenderOutcome outcome = renderLoadedScene(hinted, scene, /*showProgress=*/writes, backend.get());
+    if (!outcome.writes) return;
     const std::vector<std::string> written = writeImageWithAovs(path, outcome.image, display, outcome.aovs, job.aovs);
     std::fprintf(stderr, "rendered %s at %g s: %ux%u at %u spp in %.2f s, %llu invalid samples dropped\n",
                  fs::path(path).filename().string().c_str(), seconds, outcome.settings.width, outcome.settings.height,

@@ -39,7 +39,8 @@ std::string frameFileName(const std::string& output, int64_t frame);
 // loaded and handed to the backend once; each frame only poses the animated instances again
 // (Backend::setInstanceTransforms). Every file is written atomically, and the paths written are printed on
 // stdout as they are done. A scene without an animation renders the same image at every time, with a warning.
-// Throws std::runtime_error on failure.
+// With `job.team`, every process of the team calls it: each frame's sample indices are shared among them, and the
+// writer writes the frames. Throws std::runtime_error on failure.
 int runAnimatedRender(const RenderJob& job, const AnimationRequest& request, const std::string& output,
                       const DisplaySettings& display);
 

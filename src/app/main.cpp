@@ -300,6 +300,14 @@ int finishRender(const RenderJob& job, const RenderOutcome& outcome, const std::
   return 0;
 }
 
+#if !CANDELA_HAS_MPI
+void warnNoMpi() {
+  std::fprintf(stderr,
+               "candela: warning: this build has no MPI support (libopenmpi-dev was not found when it "
+               "was configured): this process renders the whole image on its own\n");
+}
+#endif
+
 int runRender(const RenderJob& job, const std::string& output, const DisplaySettings& display,
               [[maybe_unused]] double rankTimeoutSeconds) {
   auto checkOutputs = [&] {
@@ -310,16 +318,27 @@ int runRender(const RenderJob& job, const std::string& output, const DisplaySett
 #if CANDELA_HAS_MPI
   if (launchedByMpi()) return runDistributedRender(job, rankTimeoutSeconds, checkOutputs, writeOutputs);
 #else
-  if (launchedByMpi())
-    std::fprintf(stderr,
-                 "candela: warning: this build has no MPI support (libopenmpi-dev was not found when it "
-                 "was configured): this process renders the whole image on its own\n");
+  if (launchedByMpi()) warnNoMpi();
 #endif
   checkOutputs();
   const int status = writeOutputs(runRenderJob(job, /*showProgress=*/true));
   // Stopped by a signal: end as the signal would have ended the process, now that the checkpoint is written.
   StopOnSignals::endWithRequestedSignal();
   return status;
+}
+
+// `candela render --time` or `--frames`: alone, or under an MPI launcher with the ranks sharing every frame.
+int runAnimation(const RenderJob& job, const AnimationRequest& request, const std::string& output,
+                 const DisplaySettings& display, [[maybe_unused]] double rankTimeoutSeconds) {
+#if CANDELA_HAS_MPI
+  if (launchedByMpi())
+    return runDistributedSequence(job, rankTimeoutSeconds, [&](const RenderJob& teamJob) {
+      return runAnimatedRender(teamJob, request, output, display);
+    });
+#else
+  if (launchedByMpi()) warnNoMpi();
+#endif
+  return runAnimatedRender(job, request, output, display);
 }
 
 // --camera-path FILE, --camera-orbit FRAMES: an image sequence (app/camera_path_render.h).
@@ -584,6 +603,9 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"none", "atrous", "bilateral", "optix", "temporal"}))
       ->capture_default_str();
   addRenderControlOptions(*render, renderJob.control);
+  // A checkpoint holds one image: a sequence's frames would overwrite it, and each would resume from it.
+  for (const char* option : {"--checkpoint", "--resume"})
+    render->get_option("--frames")->excludes(render->get_option(option));
   double rankTimeoutSeconds = 600.0;
   addDurationOption(*render, "--rank-timeout", rankTimeoutSeconds,
                     "Under mpirun: how long a rank waits for another before it ends the job (default: 10m)");
@@ -664,7 +686,7 @@ int main(int argc, char** argv) {
       display.toneMapper = parseToneMapper(toneMapper);
       if (cameraPath.given() || renderJob.denoiser == "temporal")
         return runCameraPath(renderJob, cameraPath, output, display);
-      if (animation.requested()) return runAnimatedRender(renderJob, animation, output, display);
+      if (animation.requested()) return runAnimation(renderJob, animation, output, display, rankTimeoutSeconds);
       if (!animation.clip.empty()) throw std::runtime_error("--animation needs --time or --frames");
       return runRender(renderJob, output, display, rankTimeoutSeconds);
     }

@@ -56,27 +56,11 @@ void readResult(const Backend& backend, const RenderJob& job, RenderOutcome& out
   if (!job.aovs.empty()) outcome.aovs = std::move(aovs);
 }
 
-// A startup step that may fail on some processes of a team: all of them learn whether it failed anywhere.
-template <class Step>
-auto agreedStep(const RenderJob& job, const Step& step) {
-  if (!job.team) return step();
-  try {
-    auto result = step();
-    job.team->agree(nullptr);
-    return result;
-  } catch (const AgreedFailure&) {
-    throw;
-  } catch (...) {
-    job.team->agree(std::current_exception());
-    throw std::logic_error("RenderTeam::agree returned after a failure");
-  }
-}
-
 // The sample index the render starts at: 0, or the next one of the checkpoint it resumes from, whose film is
 // then in `backend` (on the writer; the other processes of a team start with empty films).
 uint32_t loadResumedFilm(const RenderJob& job, Backend& backend, const ExrAttributes& identity) {
   if (job.control.resumePath.empty()) return 0;
-  return agreedStep(job, [&]() -> uint32_t {
+  return agreedStep(job.team, [&]() -> uint32_t {
     if (job.team && !job.team->writes()) return 0;
     const RenderSettings& s = job.settings;
     Checkpoint c = readCheckpoint(job.control.resumePath, identity, s.width, s.height, needsAovs(job));
@@ -115,7 +99,7 @@ RenderOutcome runRenderJob(const RenderJob& job, bool showProgress) {
 #endif
   const auto loadStart = std::chrono::steady_clock::now();
   RenderJob hinted;
-  Scene scene = agreedStep(job, [&] { return loadSceneForJob(job, hinted); });
+  Scene scene = agreedStep(job.team, [&] { return loadSceneForJob(job, hinted); });
   const double loadSeconds = secondsSince(loadStart);
   hinted.control.timeLimitFrom = loadStart;
   RenderOutcome outcome = renderLoadedScene(hinted, scene, showProgress);
@@ -138,7 +122,7 @@ Scene loadSceneForJob(const RenderJob& job, RenderJob& hinted) {
 
 RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool showProgress, Backend* given) {
   using Clock = std::chrono::steady_clock;
-  agreedStep(job, [&] {
+  agreedStep(job.team, [&] {
     checkRenderMemory(job);
     return true;
   });
@@ -149,7 +133,8 @@ RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool s
   std::unique_ptr<Backend> created;
   if (!given) {
     std::string why;
-    created = agreedStep(job, [&] { return createBackend(job.backend, why, job.team ? job.team->localIndex() : 0); });
+    created =
+        agreedStep(job.team, [&] { return createBackend(job.backend, why, job.team ? job.team->localIndex() : 0); });
     if (!job.team || job.team->writes()) std::fprintf(stderr, "%s\n", why.c_str());
   }
   Backend* backend = given ? given : created.get();

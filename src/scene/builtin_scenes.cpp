@@ -12,33 +12,13 @@ namespace {
 constexpr float kMillimetre = 0.001f;
 Vec3 mm(float x, float y, float z) { return Vec3{x, y, z} * kMillimetre; }
 
-Material diffuse(Vec3 albedo, Vec3 emission = {0, 0, 0}) {
-  Material m;
-  m.type = MaterialType::Diffuse;
-  m.baseColor = albedo;
-  m.emission = emission;
-  return m;
-}
-
-// A block from its four floor corners and height, faces wound outwards.
-void appendBlock(Mesh& mesh, const Vec3 (&floor)[4], float height, uint32_t material) {
-  Vec3 centre = (floor[0] + floor[1] + floor[2] + floor[3]) * 0.25f + Vec3{0, height * 0.5f, 0};
-  auto up = [&](Vec3 p) { return p + Vec3{0, height, 0}; };
-  auto away = [&](Vec3 a, Vec3 b, Vec3 c, Vec3 d) { return (a + b + c + d) * 0.5f - centre; };
-  Vec3 t0 = up(floor[0]), t1 = up(floor[1]), t2 = up(floor[2]), t3 = up(floor[3]);
-  appendQuad(mesh, t0, t1, t2, t3, away(t0, t1, t2, t3), material);
-  for (int i = 0; i < 4; ++i) {
-    Vec3 a = floor[i], b = floor[(i + 1) % 4];
-    appendQuad(mesh, a, b, up(b), up(a), away(a, b, up(b), up(a)), material);
-  }
-}
-
 // The Cornell box's walls, light and camera, without the two blocks.
 Scene makeCornellRoom() {
   Scene scene;
   enum : uint32_t { kWhite, kRed, kGreen, kLight };
-  scene.materials = {diffuse({0.725f, 0.71f, 0.68f}), diffuse({0.63f, 0.065f, 0.05f}), diffuse({0.14f, 0.45f, 0.091f}),
-                     diffuse({0.78f, 0.78f, 0.78f}, {17.0f, 12.0f, 4.0f})};
+  scene.materials = {diffuseMaterial({0.725f, 0.71f, 0.68f}), diffuseMaterial({0.63f, 0.065f, 0.05f}),
+                     diffuseMaterial({0.14f, 0.45f, 0.091f}),
+                     diffuseMaterial({0.78f, 0.78f, 0.78f}, {17.0f, 12.0f, 4.0f})};
 
   Mesh room;
   room.name = "room";
@@ -98,7 +78,7 @@ Scene makeCornellSpheres() {
 Scene makeClosedEmissiveSphere(float albedo, float emission) {
   Scene scene;
   scene.name = "closed-sphere";
-  scene.materials = {diffuse({albedo, albedo, albedo}, {emission, emission, emission})};
+  scene.materials = {diffuseMaterial({albedo, albedo, albedo}, {emission, emission, emission})};
   scene.meshes.push_back(makeUvSphere(1.0f, 48, 24, 0, /*inward=*/true));
   // Interpolated normals would break the energy balance the analytic answer rests on: keep the facets.
   scene.meshes.back().normals.clear();
@@ -112,7 +92,7 @@ Scene makeClosedEmissiveSphere(float albedo, float emission) {
 Scene makeWhiteFurnace() {
   Scene scene;
   scene.name = "white-furnace";
-  scene.materials = {diffuse({1, 1, 1})};
+  scene.materials = {diffuseMaterial({1, 1, 1})};
   scene.meshes.push_back(makeUvSphere(1.0f, 64, 32, 0, /*inward=*/false));
   scene.instances.push_back({0, Affine3x4{}});
   scene.environment.radiance = {1, 1, 1};
@@ -188,11 +168,11 @@ Scene makeMaterialGallery() {
     }
   float halfWidth = 0.5f * kColumns * kSpacing + 2.0f;
   addQuad(scene, {-halfWidth, 0, -4}, {halfWidth, 0, -4}, {halfWidth, 0, 4}, {-halfWidth, 0, 4}, {0, 1, 0},
-          diffuse({0.5f, 0.5f, 0.5f}));
+          diffuseMaterial({0.5f, 0.5f, 0.5f}));
   addQuad(scene, {-halfWidth, 0, 1}, {halfWidth, 0, 1}, {halfWidth, 8, 1}, {-halfWidth, 8, 1}, {0, 0, 0},
-          diffuse({0.35f, 0.35f, 0.35f}));
+          diffuseMaterial({0.35f, 0.35f, 0.35f}));
   addQuad(scene, {-2.5f, 9, -6}, {2.5f, 9, -6}, {2.5f, 9, -2}, {-2.5f, 9, -2}, {0, 0, 0},
-          diffuse({0, 0, 0}, {6.0f, 6.0f, 6.0f}));
+          diffuseMaterial({0, 0, 0}, {6.0f, 6.0f, 6.0f}));
   scene.environment.radiance = {0.25f, 0.27f, 0.3f};
   scene.camera.eye = {0.0f, 3.0f, -14.0f};
   scene.camera.target = {0.0f, 3.0f, 0.0f};
@@ -212,13 +192,13 @@ Scene makeMirrorCorridor() {
   addQuad(scene, {kHalfWidth, 0, -kHalfLength}, {kHalfWidth, 0, kHalfLength}, {kHalfWidth, kHeight, kHalfLength},
           {kHalfWidth, kHeight, -kHalfLength}, {0, 1, 0}, mirror);
   addQuad(scene, {-kHalfWidth, 0, -kHalfLength}, {kHalfWidth, 0, -kHalfLength}, {kHalfWidth, 0, kHalfLength},
-          {-kHalfWidth, 0, kHalfLength}, {0, 1, 0}, diffuse({0.6f, 0.6f, 0.6f}));
+          {-kHalfWidth, 0, kHalfLength}, {0, 1, 0}, diffuseMaterial({0.6f, 0.6f, 0.6f}));
   // A light strip along the whole ceiling: paths that reach it only through the mirrors (which light sampling
   // cannot follow) find it often enough to converge quickly.
   addQuad(scene, {-0.5f, kHeight, -kHalfLength}, {0.5f, kHeight, -kHalfLength}, {0.5f, kHeight, kHalfLength},
-          {-0.5f, kHeight, kHalfLength}, {0, 0, 0}, diffuse({0, 0, 0}, {3.0f, 2.8f, 2.4f}));
-  addSphere(scene, {0.0f, 0.35f, 0.8f}, 0.35f, diffuse({0.7f, 0.15f, 0.1f}));
-  addSphere(scene, {-0.35f, 0.25f, -0.3f}, 0.25f, diffuse({0.15f, 0.35f, 0.7f}));
+          {-0.5f, kHeight, kHalfLength}, {0, 0, 0}, diffuseMaterial({0, 0, 0}, {3.0f, 2.8f, 2.4f}));
+  addSphere(scene, {0.0f, 0.35f, 0.8f}, 0.35f, diffuseMaterial({0.7f, 0.15f, 0.1f}));
+  addSphere(scene, {-0.35f, 0.25f, -0.3f}, 0.25f, diffuseMaterial({0.15f, 0.35f, 0.7f}));
   Material gold = disney({1.0f, 0.71f, 0.29f}, 0.25f);
   gold.metallic = 1.0f;
   addSphere(scene, {0.4f, 0.3f, 0.0f}, 0.3f, gold);

@@ -41,4 +41,20 @@ void appendQuad(Mesh& mesh, Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 towards, uint32
   mesh.triangleMaterials.insert(mesh.triangleMaterials.end(), {materialId, materialId});
 }
 
+void appendBlock(Mesh& mesh, const Vec3 (&floor)[4], float height, uint32_t materialId) {
+  Vec3 centre = (floor[0] + floor[1] + floor[2] + floor[3]) * 0.25f + Vec3{0, height * 0.5f, 0};
+  auto up = [&](Vec3 p) { return p + Vec3{0, height, 0}; };
+  auto away = [&](Vec3 a, Vec3 b, Vec3 c, Vec3 d) { return (a + b + c + d) * 0.5f - centre; };
+  Vec3 t0 = up(floor[0]), t1 = up(floor[1]), t2 = up(floor[2]), t3 = up(floor[3]);
+  appendQuad(mesh, t0, t1, t2, t3, away(t0, t1, t2, t3), materialId);
+  for (int i = 0; i < 4; ++i) {
+    Vec3 a = floor[i], b = floor[(i + 1) % 4];
+    appendQuad(mesh, a, b, up(b), up(a), away(a, b, up(b), up(a)), materialId);
+  }
+}
+
+Material diffuseMaterial(Vec3 albedo, Vec3 emission) {
+  return {.type = MaterialType::Diffuse, .baseColor = albedo, .emission = emission};
+}
+
 }  // namespace candela

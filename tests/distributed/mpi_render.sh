@@ -4,11 +4,8 @@
 # cannot read the scene makes one error line and exit status 1. Skips (77) without mpirun.
 set -u
 candela=$1 compare=$2 out=$3
-command -v mpirun >/dev/null || { echo "mpirun not found: skipped"; exit 77; }
-mpirun=(mpirun --oversubscribe)
-[ "$(id -u)" -eq 0 ] && mpirun+=(--allow-run-as-root)
+source "$(dirname "$0")/mpi_common.sh"
 mkdir -p "$out" && cd "$out" && rm -rf ./*.exr ./*.log here elsewhere
-fail() { echo "FAILED: $*"; exit 1; }
 args=(cornell-box --backend cpu --threads 1 --width 32 --height 24 --spp 24 --seed 3 --aov albedo,normal,depth)
 
 "$candela" render "${args[@]}" --checkpoint single.exr -o single-image.exr >/dev/null 2>&1 || fail "single render"
@@ -41,17 +38,8 @@ total=$((done + 20))
   fail "uninterrupted render"
 "$compare" straight.exr stop.exr 1e-4 >compare-stop.log || fail "after SIGUSR1 and resuming: $(cat compare-stop.log)"
 
-# The scene is on one node's disk only: rank 1 starts in a folder without it.
-mkdir -p here elsewhere
-printf 'v 0 0 -2\nv 1 0 -2\nv 0 1 -2\nf 1 2 3\n' >here/triangle.obj
-scene=(render triangle.obj --no-cache --backend cpu --width 8 --height 8 --spp 2 -o "$out/triangle.png")
-output=$("${mpirun[@]}" -n 1 --wdir "$out/here" "$candela" "${scene[@]}" : -n 1 --wdir "$out/elsewhere" "$candela" \
-         "${scene[@]}" 2>&1)
-status=$?
-[ "$status" -eq 1 ] || fail "a rank without the scene: exit status $status: $output"
-# (Rank 0 warns that the triangle has no light; that is no error line.)
-lines=$(grep '^candela:' <<<"$output" | grep -vc '^candela: warning:')
-[ "$lines" -eq 1 ] || fail "a rank without the scene: $lines error lines from candela: $output"
-grep -Eq "^candela: rank 1 of 2: .*triangle\.obj" <<<"$output" || fail "a rank without the scene said: $output"
-[ ! -e "$out/triangle.png" ] || fail "an image was written although a rank failed"
-echo "mpirun -n 2 equals one process; a rank without the scene: $(grep '^candela: rank' <<<"$output")"
+# The scene is on one node's disk only.
+printf 'v 0 0 -2\nv 1 0 -2\nv 0 1 -2\nf 1 2 3\n' >triangle.obj
+failure=$(rank_without_scene "$out" triangle.obj "$out/triangle.png" "$candela" render triangle.obj --no-cache \
+          --backend cpu --width 8 --height 8 --spp 2 -o "$out/triangle.png") || { echo "$failure"; exit 1; }
+echo "mpirun -n 2 equals one process; a rank without the scene: $failure"

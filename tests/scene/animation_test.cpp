@@ -16,14 +16,15 @@
 #include "scene/loaders/gltf_loader.h"
 #include "scene/loaders/scene_file.h"
 #include "scene/scene_test_files.h"
+#include "support/animated_gltf.h"
 
 namespace candela {
 namespace {
 
 using nlohmann::json;
+using test::AnimatedFile;
+using test::kSqrtHalf;
 using test::TempFolder;
-
-constexpr float kSqrtHalf = 0.70710678f;
 
 void expectNear(Vec3 a, Vec3 b, float tolerance = 1e-5f) {
   EXPECT_NEAR(a.x, b.x, tolerance);
@@ -85,78 +86,9 @@ TEST(AnimationSampling, CubicSplineUsesTangentsScaledByTheKeyInterval) {
   EXPECT_EQ(sampleChannel(cubic, 5.0f).x, 1.0f);
 }
 
-// A glTF written for these tests: a unit quad (emissive, facing +z) under two nodes and a camera at z = 10, with
-// two animations.
-//   "Move": node 0 translates linearly (0,0,0) -> (2,0,0) -> (2,4,0) at 0, 1, 2 s and turns linearly from 0 to
-//           90 degrees about z over 0..2 s; node 1 (the quad's, at rest at (0,1,0)) scales by step 1 -> 3 at 1 s.
-//   "Bounce": node 1 translates by cubic spline from (0,1,0) (out-tangent (0,2,0)) to (0,1,0) over 0..1 s.
-struct AnimatedFile {
-  json gltf;
-  std::vector<uint8_t> buffer;
-
-  // Adds an accessor of float data and returns its index.
-  int add(const std::vector<float>& values, const char* type) {
-    const size_t offset = buffer.size();
-    buffer.resize(offset + values.size() * sizeof(float));
-    std::memcpy(buffer.data() + offset, values.data(), values.size() * sizeof(float));
-    const int components = std::string(type) == "SCALAR" ? 1 : std::string(type) == "VEC3" ? 3 : 4;
-    gltf["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", values.size() * 4}});
-    gltf["accessors"].push_back({{"bufferView", gltf["bufferViews"].size() - 1},
-                                 {"componentType", 5126},
-                                 {"count", values.size() / size_t(components)},
-                                 {"type", type}});
-    return int(gltf["accessors"].size() - 1);
-  }
-
-  AnimatedFile() {
-    gltf = {{"asset", {{"version", "2.0"}}}, {"bufferViews", json::array()}, {"accessors", json::array()}};
-    const int positions = add({-0.5f, -0.5f, 0, 0.5f, -0.5f, 0, 0.5f, 0.5f, 0, -0.5f, 0.5f, 0}, "VEC3");
-    const size_t indexOffset = buffer.size();
-    const uint16_t indices[6] = {0, 1, 2, 0, 2, 3};
-    buffer.resize(indexOffset + sizeof indices);
-    std::memcpy(buffer.data() + indexOffset, indices, sizeof indices);
-    gltf["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", indexOffset}, {"byteLength", sizeof indices}});
-    gltf["accessors"].push_back(
-        {{"bufferView", gltf["bufferViews"].size() - 1}, {"componentType", 5123}, {"count", 6}, {"type", "SCALAR"}});
-    const int indexAccessor = int(gltf["accessors"].size() - 1);
-    gltf["meshes"] = {
-        {{"primitives", {{{"attributes", {{"POSITION", positions}}}, {"indices", indexAccessor}, {"material", 0}}}}}};
-    gltf["materials"] = {
-        {{"emissiveFactor", {1, 1, 1}}, {"pbrMetallicRoughness", {{"baseColorFactor", {0, 0, 0, 1}}}}}};
-    gltf["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"znear", 0.1}}}}};
-    gltf["nodes"] = {{{"children", {1}}},
-                     {{"mesh", 0}, {"translation", {0, 1, 0}}},
-                     {{"camera", 0}, {"translation", {0, 0, 10}}}};
-    gltf["scenes"] = {{{"nodes", {0, 2}}}};
-    const int twoKeys = add({0, 2}, "SCALAR"), threeKeys = add({0, 1, 2}, "SCALAR"), unitKeys = add({0, 1}, "SCALAR");
-    const int moves = add({0, 0, 0, 2, 0, 0, 2, 4, 0}, "VEC3");
-    const int turns = add({0, 0, 0, 1, 0, 0, kSqrtHalf, kSqrtHalf}, "VEC4");
-    const int scales = add({1, 1, 1, 3, 3, 3}, "VEC3");
-    const int bounce = add({0, 0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0}, "VEC3");
-    gltf["animations"] = {{{"name", "Move"},
-                           {"samplers",
-                            {{{"input", threeKeys}, {"output", moves}},
-                             {{"input", twoKeys}, {"output", turns}, {"interpolation", "LINEAR"}},
-                             {{"input", unitKeys}, {"output", scales}, {"interpolation", "STEP"}}}},
-                           {"channels",
-                            {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}},
-                             {{"sampler", 1}, {"target", {{"node", 0}, {"path", "rotation"}}}},
-                             {{"sampler", 2}, {"target", {{"node", 1}, {"path", "scale"}}}}}}},
-                          {{"name", "Bounce"},
-                           {"samplers", {{{"input", unitKeys}, {"output", bounce}, {"interpolation", "CUBICSPLINE"}}}},
-                           {"channels", {{{"sampler", 0}, {"target", {{"node", 1}, {"path", "translation"}}}}}}}};
-  }
-
-  std::string write(const TempFolder& folder) {
-    gltf["buffers"] = {{{"byteLength", buffer.size()}, {"uri", "animated.bin"}}};
-    folder.write("animated.bin", std::string(buffer.begin(), buffer.end()));
-    return folder.write("animated.gltf", gltf.dump());
-  }
-};
-
 Scene loadAnimated(const TempFolder& folder, AnimatedFile file = {}) {
   LoadWarnings warnings;
-  return loadGltf(file.write(folder), warnings);
+  return loadGltf(file.write(folder.path()), warnings);
 }
 
 // Where the quad's object-space point (1, 0, 0) lands.
@@ -211,7 +143,7 @@ TEST(GltfAnimation, AnInstanceScaledToNothingAtRestIsHiddenNotDropped) {
   TempFolder folder;
   AnimatedFile file;
   file.gltf["nodes"][1]["scale"] = {0, 0, 0};  // grows to 3 at 1 s
-  const std::string path = file.write(folder);
+  const std::string path = file.write(folder.path());
   SceneLoadOptions options;
   Scene scene = loadScene(path, options);
   ASSERT_EQ(scene.instances.size(), 1u);  // the scene's repair kept it
@@ -226,7 +158,7 @@ std::string loadError(AnimatedFile file) {
   TempFolder folder;
   LoadWarnings warnings;
   try {
-    loadGltf(file.write(folder), warnings);
+    loadGltf(file.write(folder.path()), warnings);
   } catch (const LoadError& e) {
     return e.what();
   }
@@ -287,7 +219,7 @@ TEST(GltfAnimation, MorphWeightChannelsAreIgnoredWithOneWarning) {
   for (int i = 0; i < 2; ++i)
     file.gltf["animations"][0]["channels"].push_back({{"sampler", 3}, {"target", {{"node", 1}, {"path", "weights"}}}});
   LoadWarnings warnings;
-  const Scene scene = loadGltf(file.write(folder), warnings);
+  const Scene scene = loadGltf(file.write(folder.path()), warnings);
   ASSERT_EQ(warnings.messages.size(), 1u);
   EXPECT_NE(warnings.messages[0].find("2 animation channels of morph target weights are ignored"), std::string::npos);
   EXPECT_EQ(scene.animation.clips[0].channels.size(), 3u);
@@ -308,7 +240,7 @@ TEST(GltfAnimation, RendersAtTwoTimesDifferWhereTheQuadMoved) {
   // "Move" becomes a slide of node 0 from x = -2 to x = 2 over 1 s, without turning or scaling.
   file.gltf["animations"][0]["samplers"][0]["output"] = file.add({-2, -1, 0, 2, -1, 0, 2, -1, 0}, "VEC3");
   file.gltf["animations"][0]["channels"] = {file.gltf["animations"][0]["channels"][0]};
-  Scene scene = loadScene(file.write(folder), SceneLoadOptions{});
+  Scene scene = loadScene(file.write(folder.path()), SceneLoadOptions{});
   const AnimationPlayer player(scene);
   CpuBackend backend;
   RenderSettings settings;
@@ -335,7 +267,7 @@ TEST(GltfAnimation, RendersAtTwoTimesDifferWhereTheQuadMoved) {
 TEST(GltfAnimation, ASceneFilePlacingAModelTwiceAnimatesBothPlacements) {
   TempFolder folder;
   AnimatedFile file;
-  file.write(folder);
+  file.write(folder.path());
   const std::string scenePath = folder.write("scene.json", R"({"models": [{"file": "animated.gltf"},
                                    {"file": "animated.gltf", "transform": {"translate": [0, 0, -5]}}]})");
   Scene scene = loadScene(scenePath, SceneLoadOptions{});
@@ -351,7 +283,7 @@ TEST(GltfAnimation, ASceneFilePlacingAModelTwiceAnimatesBothPlacements) {
 TEST(GltfAnimation, TheSceneCacheKeepsTheAnimation) {
   TempFolder folder;
   AnimatedFile file;
-  const std::string path = file.write(folder);
+  const std::string path = file.write(folder.path());
   LoadWarnings warnings;
   const Scene scene = loadGltf(path, warnings);
   const std::string cache = sceneCacheFile(folder.file("cache"), path);

@@ -1,6 +1,7 @@
 #include "app/distributed/distributed_render.h"
 
 #include <cstdio>
+#include <optional>
 
 #include "app/checkpoint/stop_signals.h"
 #include "app/distributed/mpi_team.h"
@@ -8,13 +9,36 @@
 
 namespace candela {
 
+namespace {
+
+// Runs `render` on this rank with the ranks of MPI_COMM_WORLD as `job`'s team. Returns nothing when it returned,
+// and the exit status when it failed: on a failure every rank agreed on, rank 0's one line and 1; any other
+// failure ends the whole job, as the other ranks may wait for this one in a collective.
+std::optional<int> renderAsTeam(RenderJob job, const MpiSession& session, MpiTeam& team,
+                                const std::function<void(const RenderJob&)>& render) {
+  if (session.size() > 1) job.team = &team;
+  try {
+    render(job);
+    return std::nullopt;
+  } catch (const AgreedFailure& e) {
+    if (*e.what()) std::fprintf(stderr, "candela: %s\n", printableText(e.what()).c_str());
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "candela: rank %d of %d: %s\n", session.rank(), session.size(),
+                 printableText(e.what()).c_str());
+    std::fflush(stderr);
+    session.abort(1);
+  }
+}
+
+}  // namespace
+
 int runDistributedRender(RenderJob job, double rankTimeoutSeconds, const std::function<void()>& checkOutputs,
                          const std::function<int(const RenderOutcome&)>& writeOutputs) {
   MpiSession session;
   MpiTeam team(session, rankTimeoutSeconds);
-  if (session.size() > 1) job.team = &team;
   RenderOutcome outcome;
-  try {
+  const std::optional<int> failed = renderAsTeam(job, session, team, [&](const RenderJob& teamJob) {
     std::exception_ptr failure;
     try {
       if (team.writes()) checkOutputs();
@@ -22,17 +46,9 @@ int runDistributedRender(RenderJob job, double rankTimeoutSeconds, const std::fu
       failure = std::current_exception();
     }
     team.agree(failure);
-    outcome = runRenderJob(job, /*showProgress=*/team.writes());
-  } catch (const AgreedFailure& e) {
-    if (*e.what()) std::fprintf(stderr, "candela: %s\n", printableText(e.what()).c_str());
-    return 1;
-  } catch (const std::exception& e) {
-    // The other ranks may wait for this one in a collective: end them all.
-    std::fprintf(stderr, "candela: rank %d of %d: %s\n", session.rank(), session.size(),
-                 printableText(e.what()).c_str());
-    std::fflush(stderr);
-    session.abort(1);
-  }
+    outcome = runRenderJob(teamJob, /*showProgress=*/team.writes());
+  });
+  if (failed) return *failed;
   // From here on no rank waits for another.
   if (!outcome.writes) return outcome.end == RenderEnd::Signal ? 128 + StopOnSignals::requested() : 0;
   try {
@@ -41,6 +57,16 @@ int runDistributedRender(RenderJob job, double rankTimeoutSeconds, const std::fu
     std::fprintf(stderr, "candela: %s\n", printableText(e.what()).c_str());
     return 1;
   }
+}
+
+int runDistributedSequence(RenderJob job, double rankTimeoutSeconds,
+                           const std::function<int(const RenderJob&)>& renderSequence) {
+  MpiSession session;
+  MpiTeam team(session, rankTimeoutSeconds);
+  int status = 0;
+  const std::optional<int> failed =
+      renderAsTeam(job, session, team, [&](const RenderJob& teamJob) { status = renderSequence(teamJob); });
+  return failed ? *failed : status;
 }
 
 }  // namespace candela

@@ -31,4 +31,21 @@ class RenderTeam {
   virtual std::unique_ptr<SampleSchedule> schedule(const SampleDispenser& dispenser, bool showProgress) = 0;
 };
 
+// Runs `step`, a start-up step that may fail on some processes of `team`, and returns its result; with a team,
+// every process learns whether it failed anywhere (RenderTeam::agree). Without one it is just `step()`.
+template <class Step>
+auto agreedStep(RenderTeam* team, const Step& step) {
+  if (!team) return step();
+  try {
+    auto result = step();
+    team->agree(nullptr);
+    return result;
+  } catch (const AgreedFailure&) {
+    throw;
+  } catch (...) {
+    team->agree(std::current_exception());
+    throw std::logic_error("RenderTeam::agree returned after a failure");
+  }
+}
+
 }  // namespace candela

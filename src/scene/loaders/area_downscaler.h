@@ -48,6 +48,10 @@ class AreaDownscaler {
     ++sourceRow_;
   }
 
+  uint32_t targetWidth() const { return targetWidth_; }
+  uint32_t targetHeight() const { return targetHeight_; }
+  uint32_t channels() const { return channels_; }
+
   // The target image, once every source row has been added.
   std::vector<Sample> finish() {
     if (!copies() && rowsInSums_ > 0) emitRow();

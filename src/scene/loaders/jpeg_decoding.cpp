@@ -7,7 +7,7 @@
 #include <csetjmp>
 #include <vector>
 
-#include "scene/loaders/area_downscaler.h"
+#include "scene/loaders/downscaled_texture.h"
 #include "scene/loaders/load_diagnostics.h"
 
 namespace candela {
@@ -145,13 +145,7 @@ Texture decodeJpeg(const std::string& name, const uint8_t* data, size_t size, ui
     if (c.out_color_space == JCS_CMYK) cmykToRgba(row.data(), c.output_width, c.saw_Adobe_marker);
     target.addRow(row.data());
   }
-  Texture t;
-  t.name = name;
-  t.width = targetWidth;
-  t.height = targetHeight;
-  t.channels = channels;
-  t.bytes = target.finish();
-  return t;
+  return finishTexture(name, target);
 }
 
 }  // namespace candela

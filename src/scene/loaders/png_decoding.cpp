@@ -7,7 +7,7 @@
 #include <cstring>
 #include <vector>
 
-#include "scene/loaders/area_downscaler.h"
+#include "scene/loaders/downscaled_texture.h"
 #include "scene/loaders/load_diagnostics.h"
 
 namespace candela {
@@ -120,13 +120,7 @@ Texture decodePng(const std::string& name, const uint8_t* data, size_t size, uin
       target.addRow(rows.data());
     }
   }
-  Texture t;
-  t.name = name;
-  t.width = targetWidth;
-  t.height = targetHeight;
-  t.channels = channels;
-  t.bytes = target.finish();
-  return t;
+  return finishTexture(name, target);
 }
 
 }  // namespace candela
