@@ -95,7 +95,7 @@ int runAnimatedRender(const RenderJob& job, const AnimationRequest& request, con
   const int clip = chooseClip(scene, request.clip);
   const AnimationPlayer player(scene);
   std::string why;
-  std::unique_ptr<Backend> backend = createBackend(hinted.backend, why);
+  std::unique_ptr<Backend> backend = createBackend(hinted.backend, why, hinted.devices);
   std::fprintf(stderr, "%s\n", why.c_str());
   auto renderAt = [&](double seconds, const std::string& path, bool first) {
     const size_t hidden = clip >= 0 ? player.pose(scene, clip, float(seconds)) : 0;
