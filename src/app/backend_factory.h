@@ -2,6 +2,7 @@
 #include <memory>
 #include <string>
 
+#include "app/device_list.h"
 #include "backends/backend.h"
 
 namespace candela {
@@ -10,8 +11,13 @@ namespace candela {
 std::string availableBackends();
 
 // `name` is "auto", "cpu" or "optix". For "auto", `why` receives one sentence saying which backend was chosen
-// and why. A GPU backend takes GPU `deviceIndex` modulo the GPUs it sees (the processes of a distributed render on
-// one node take one each). Throws std::runtime_error when the requested backend cannot run here.
-std::unique_ptr<Backend> createBackend(const std::string& name, std::string& why, int deviceIndex = 0);
+// and why. A GPU backend renders on the GPUs `devices` names: on one, the OptiX backend; on several, the
+// OptiX backend on each behind one (optix/multi_gpu_backend.h). Throws std::runtime_error when the requested
+// backend cannot run here, std::invalid_argument when `devices` names GPUs that are not there or was given
+// for the cpu backend; "auto" falls back to the CPU only when the devices were not named.
+std::unique_ptr<Backend> createBackend(const std::string& name, std::string& why, const DeviceRequest& devices = {});
+// The same on the one GPU `deviceIndex` modulo the GPUs it sees (the processes of a distributed render on one
+// node take one each).
+std::unique_ptr<Backend> createBackend(const std::string& name, std::string& why, int deviceIndex);
 
 }  // namespace candela

@@ -57,7 +57,7 @@ void runCameraPathRender(const RenderJob& pathJob, const TemporalParams& tempora
   for (size_t i = 0; i < path.size(); ++i) checkAtomicTarget(frameFileName(output, i, path.size()));
 
   std::string why;
-  std::unique_ptr<Backend> backend = createBackend(job.backend, why);
+  std::unique_ptr<Backend> backend = createBackend(job.backend, why, job.devices);
   if (!why.empty()) std::fprintf(stderr, "%s\n", why.c_str());
   backend->setScene(scene);
   backend->setSettings(job.settings);

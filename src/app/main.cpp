@@ -57,6 +57,27 @@ void addSceneInputOptions(CLI::App& cmd, SceneCacheSettings& cache, OutsidePaths
       ->check(CLI::Range(0.001, 1e6));
 }
 
+// --devices: the GPUs of the optix backend. A malformed list is a usage error; GPUs that are not there are found
+// when the backend starts.
+void addDevicesOption(CLI::App& cmd, DeviceRequest& devices) {
+  cmd.add_option_function<std::string>(
+         "--devices", [&devices](const std::string& text) { devices = parseDeviceRequest(text); },
+         "GPUs to render on, optix backend: all (every GPU of the kind of GPU 0) or CUDA indices like 0,1; each "
+         "frame is shared between them, and the first one shows the image (a repeat, like 0,0, puts two contexts "
+         "on one GPU)")
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            try {
+              parseDeviceRequest(text);
+            } catch (const std::invalid_argument& e) {
+              return std::string(e.what());
+            }
+            return std::string();
+          },
+          "all|I,J,...", ""))
+      ->default_str("all");
+}
+
 void addSamplerOption(CLI::App& cmd, SamplerKind& sampler) {
   cmd.add_option_function<std::string>(
          "--sampler",
@@ -178,6 +199,7 @@ void addRenderOptions(CLI::App& cmd, RenderJob& job) {
   cmd.add_option("--backend", job.backend, "auto, cpu or optix (in this build: " + availableBackends() + ")")
       ->check(CLI::IsMember({"auto", "cpu", "optix"}))
       ->capture_default_str();
+  addDevicesOption(cmd, job.devices);
 }
 
 // --time, --frames, --fps and --animation of `candela render` (animation_render.h).
@@ -414,6 +436,19 @@ int runBench(const RenderJob& job) {
     report["device_mrays_per_s"] = raysPerFrame / m / 1e3;
     report["rays_per_sample"] = raysPerFrame / samplesPerFrame;
   }
+  // Several devices: each one's median GPU time for its share of a launch, and the final combine of the films.
+  if (!outcome.perDeviceFrameMilliseconds.empty()) {
+    const size_t devices = outcome.perDeviceFrameMilliseconds.front().size();
+    nlohmann::ordered_json perDevice = nlohmann::ordered_json::array();
+    for (size_t d = 0; d < devices; ++d) {
+      std::vector<double> ms;
+      for (const std::vector<double>& frame : outcome.perDeviceFrameMilliseconds) ms.push_back(frame[d]);
+      perDevice.push_back(median(ms));
+    }
+    report["devices"] = devices;
+    report["median_device_ms_per_frame_by_device"] = perDevice;
+    report["combine_ms"] = outcome.combineMilliseconds;
+  }
   if (!outcome.rawTraceMilliseconds.empty()) {
     double m = median(outcome.rawTraceMilliseconds);
     double rawRate = double(outcome.rawTraceRaysPerFrame) / m / 1e3;
@@ -461,6 +496,7 @@ void addViewOptions(CLI::App& cmd, ViewerOptions& options, std::string& toneMapp
   cmd.add_option("--backend", options.backend, "auto, cpu or optix (in this build: " + availableBackends() + ")")
       ->check(CLI::IsMember({"auto", "cpu", "optix"}))
       ->capture_default_str();
+  addDevicesOption(cmd, options.devices);
   cmd.add_flag_callback(
       "--no-interop", [&options] { options.interop = false; },
       "OptiX backend: show the image through a copy to the host, not CUDA-OpenGL interop");
@@ -525,6 +561,7 @@ void addServeOptions(CLI::App& cmd, ServeOptions& options, std::string& toneMapp
   cmd.add_option("--backend", options.backend, "auto, cpu or optix (in this build: " + availableBackends() + ")")
       ->check(CLI::IsMember({"auto", "cpu", "optix"}))
       ->capture_default_str();
+  addDevicesOption(cmd, options.devices);
   cmd.add_option("--port", options.port, "TCP port to listen on (0: any free port)")->capture_default_str();
   cmd.add_option("--bind", options.bind, "Address to listen on; any but loopback requires a token")
       ->capture_default_str();

@@ -133,8 +133,13 @@ RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool s
   std::unique_ptr<Backend> created;
   if (!given) {
     std::string why;
-    created =
-        agreedStep(job.team, [&] { return createBackend(job.backend, why, job.team ? job.team->localIndex() : 0); });
+    // Under mpirun each rank renders on one GPU: its local rank's.
+    if (job.team && job.devices.given)
+      throw std::runtime_error("--devices does not apply under mpirun: each rank renders on the GPU of its local rank");
+    created = agreedStep(job.team, [&] {
+      return job.team ? createBackend(job.backend, why, job.team->localIndex())
+                      : createBackend(job.backend, why, job.devices);
+    });
     if (!job.team || job.team->writes()) std::fprintf(stderr, "%s\n", why.c_str());
   }
   Backend* backend = given ? given : created.get();
@@ -167,6 +172,7 @@ RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool s
   outcome.stats = rendered.stats;
   outcome.frameMilliseconds = std::move(rendered.frameMilliseconds);
   outcome.deviceFrameMilliseconds = std::move(rendered.deviceFrameMilliseconds);
+  outcome.perDeviceFrameMilliseconds = std::move(rendered.perDeviceFrameMilliseconds);
   outcome.backendName = backend->name();
   outcome.deviceName = backend->deviceName();
   outcome.sceneName = scene.name;
@@ -177,6 +183,7 @@ RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool s
     outcome.rawTraceMilliseconds = std::move(timing.deviceMilliseconds);
   }
   readResult(*backend, job, outcome);
+  outcome.combineMilliseconds = backend->lastCombineMilliseconds();
   return outcome;
 }
 

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "app/checkpoint/render_control.h"
+#include "app/device_list.h"
 #include "app/schedule/sample_dispenser.h"
 #include "backends/backend.h"
 #include "image/aov_io.h"
@@ -30,6 +31,7 @@ struct RenderJob {
   RenderSettings settings;
   uint32_t samplesPerPixel = 64;
   std::string backend = "auto";
+  DeviceRequest devices;  // the GPUs of the optix backend
   MaterialOverrides materialOverrides;
   uint32_t warmupFrames = 0;      // untimed launches before the timed ones
   bool rawTrace = false;          // also time the backend's raw-trace mode (optix only)
@@ -61,7 +63,11 @@ struct RenderOutcome {
   std::string sceneName;
   std::vector<double> frameMilliseconds;        // wall clock of each timed launch
   std::vector<double> deviceFrameMilliseconds;  // GPU time of each timed launch, where the backend measures it
-  uint64_t rawTraceRaysPerFrame = 0;            // with RenderJob::rawTrace
+  // On several devices: each one's GPU time for its share of each timed launch ([launch][device]), and the time
+  // the final read took to add the other devices' films to the first one's.
+  std::vector<std::vector<double>> perDeviceFrameMilliseconds;
+  double combineMilliseconds = 0.0;
+  uint64_t rawTraceRaysPerFrame = 0;  // with RenderJob::rawTrace
   std::vector<double> rawTraceMilliseconds;
 };
 

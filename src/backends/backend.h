@@ -36,6 +36,9 @@ struct FrameStats {
   uint64_t rays = 0;                // camera, bounce and shadow rays traced
   uint64_t invalidSamples = 0;      // NaN/Inf/negative path estimates, or ones that would overflow a pixel's sums
   double deviceMilliseconds = 0.0;  // GPU time of the launches (CUDA events); 0 where the backend has none
+  // Where a backend renders on several devices: each one's GPU time for its share (deviceMilliseconds is then the
+  // slowest one's); empty otherwise.
+  std::vector<double> perDeviceMilliseconds;
 };
 
 // What Backend::timeRawTrace measured.
@@ -116,6 +119,9 @@ class Backend {
   }
   // The image in GPU memory, for consumers on the same GPU; null where the image lives on the host.
   virtual const DeviceImage* deviceImage() const { return nullptr; }
+  // Where a backend renders on several devices: how long the last read that found samples on the others took to
+  // add them to the film it reads (milliseconds); 0 otherwise.
+  virtual double lastCombineMilliseconds() const { return 0.0; }
 };
 
 // The temporal filter on the host, for any backend.

@@ -24,6 +24,8 @@ ScheduledRenderResult renderScheduled(Backend& backend, SampleSchedule& schedule
         ++rendered;
         result.frameMilliseconds.push_back(ms);
         if (frame.deviceMilliseconds > 0.0) result.deviceFrameMilliseconds.push_back(frame.deviceMilliseconds);
+        if (!frame.perDeviceMilliseconds.empty())
+          result.perDeviceFrameMilliseconds.push_back(frame.perDeviceMilliseconds);
         result.stats.rays += frame.rays;
         result.stats.invalidSamples += frame.invalidSamples;
         schedule.sampleDone();

@@ -22,6 +22,7 @@ struct ScheduledRenderResult {
   RenderEnd end = RenderEnd::Complete;
   FrameStats stats;
   std::vector<double> frameMilliseconds, deviceFrameMilliseconds;  // this process's launches
+  std::vector<std::vector<double>> perDeviceFrameMilliseconds;     // [launch][device], on several devices
 };
 
 // Runs `schedule`'s assignments on `backend` (its scene, settings and camera set, its film holding any resumed

@@ -32,9 +32,9 @@ std::shared_ptr<const std::string> binaryMessage(const Json& header, const std::
   return message;
 }
 
-std::unique_ptr<Backend> makeBackend(const std::string& name) {
+std::unique_ptr<Backend> makeBackend(const std::string& name, const DeviceRequest& devices) {
   std::string why;
-  std::unique_ptr<Backend> backend = createBackend(name, why);
+  std::unique_ptr<Backend> backend = createBackend(name, why, devices);
   std::fprintf(stderr, "%s\n", why.c_str());
   return backend;
 }
@@ -44,7 +44,7 @@ std::unique_ptr<Backend> makeBackend(const std::string& name) {
 ServeLoop::ServeLoop(const ServeOptions& options, ClientHub& hub)
     : options_(options),
       hub_(hub),
-      session_(makeBackend(options.backend)),
+      session_(makeBackend(options.backend, options.devices)),
       viewWidth_(options.width),
       viewHeight_(options.height) {
   controls_.maxDepth = options.maxDepth;

@@ -2,6 +2,7 @@
 #include <cstdint>
 #include <string>
 
+#include "app/device_list.h"
 #include "app/viewer/post_settings.h"
 #include "core/path_sampler.h"
 #include "kernel/render_settings.h"
@@ -16,6 +17,7 @@ struct ServeOptions {
   SceneCacheSettings sceneCache;
   OutsidePaths outsidePaths = OutsidePaths::Refused;
   std::string backend = "auto";
+  DeviceRequest devices;  // the GPUs of the optix backend
   std::string bind = "127.0.0.1";
   uint16_t port = 8080;  // 0: any free port (the printed address names it)
   std::string token;     // required of every request when not empty; a random one is made for other addresses

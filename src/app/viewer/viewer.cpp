@@ -87,7 +87,7 @@ Viewer::Viewer(const ViewerOptions& options)
       imgui_(window_.handle()),
       session_([&] {
         std::string why;
-        std::unique_ptr<Backend> backend = createBackend(options.backend, why);
+        std::unique_ptr<Backend> backend = createBackend(options.backend, why, options.devices);
         std::fprintf(stderr, "%s\n", why.c_str());
         return backend;
       }()),

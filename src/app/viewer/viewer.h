@@ -2,6 +2,7 @@
 #include <cstdint>
 #include <string>
 
+#include "app/device_list.h"
 #include "app/viewer/post_settings.h"
 #include "core/path_sampler.h"
 #include "kernel/render_settings.h"
@@ -19,8 +20,9 @@ struct ViewerOptions {
   std::string camera;  // the name or index of the first scene's camera to take; empty: the first
   TextureLimits textureLimits;
   std::string backend = "auto";
-  bool interop = true;   // false: the image reaches the screen through the host copy even where interop works
-  uint32_t width = 960;  // of the image; the panel sits beside it
+  DeviceRequest devices;  // the GPUs of the optix backend; the first one shows the image
+  bool interop = true;    // false: the image reaches the screen through the host copy even where interop works
+  uint32_t width = 960;   // of the image; the panel sits beside it
   uint32_t height = 720;
   uint32_t maxDepth = 8;
   uint32_t seed = 0;

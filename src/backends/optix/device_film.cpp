@@ -33,9 +33,45 @@ void DeviceFilm::resize(uint32_t width, uint32_t height, bool withAovs) {
 }
 
 void DeviceFilm::clear(cudaStream_t stream) {
-  for (DeviceBuffer* b : {&radiance_, &emission_, &samples_, &albedo_, &normal_, &depth_, &luminanceSquares_,
-                          &oddLuminance_, &oddSamples_})
-    if (b->size() > 0) checkCuda(cudaMemsetAsync(b->as<void>(), 0, b->size(), stream), "clearing the film");
+  for (const Sums& s : sums())
+    if (s.buffer->size() > 0)
+      checkCuda(cudaMemsetAsync(s.buffer->as<void>(), 0, s.buffer->size(), stream), "clearing the film");
+}
+
+std::vector<DeviceFilm::Sums> DeviceFilm::sums() const {
+  return {{&radiance_, sizeof(Vec3)},
+          {&emission_, sizeof(Vec3)},
+          {&samples_, sizeof(uint32_t)},
+          {&albedo_, sizeof(Vec3)},
+          {&normal_, sizeof(Vec3)},
+          {&depth_, sizeof(float)},
+          {&luminanceSquares_, sizeof(float)},
+          {&oddLuminance_, sizeof(float)},
+          {&oddSamples_, sizeof(uint32_t)}};
+}
+
+void DeviceFilm::copyPixels(const DeviceFilm& source, int sourceDevice, int device, uint32_t first, uint32_t count,
+                            cudaStream_t stream) {
+  if (source.width_ != width_ || source.height_ != height_ || source.hasAovs() != hasAovs())
+    throw std::logic_error("DeviceFilm::copyPixels between films of other sizes or AOVs");
+  if (size_t(first) + count > pixelCount()) throw std::logic_error("DeviceFilm::copyPixels past the film's end");
+  const std::vector<Sums> from = source.sums(), to = sums();
+  for (size_t i = 0; i < to.size(); ++i) {
+    if (to[i].buffer->size() == 0) continue;
+    const size_t offset = size_t(first) * to[i].bytesPerPixel, bytes = size_t(count) * to[i].bytesPerPixel;
+    checkCuda(cudaMemcpyPeerAsync(to[i].buffer->as<char>() + offset, device, from[i].buffer->as<char>() + offset,
+                                  sourceDevice, bytes, stream),
+              "copying film sums between devices");
+  }
+}
+
+void DeviceFilm::clearPixels(uint32_t first, uint32_t count, cudaStream_t stream) {
+  if (size_t(first) + count > pixelCount()) throw std::logic_error("DeviceFilm::clearPixels past the film's end");
+  for (const Sums& s : sums())
+    if (s.buffer->size() > 0)
+      checkCuda(cudaMemsetAsync(s.buffer->as<char>() + size_t(first) * s.bytesPerPixel, 0,
+                                size_t(count) * s.bytesPerPixel, stream),
+                "clearing film sums");
 }
 
 FilmView DeviceFilm::view() const {

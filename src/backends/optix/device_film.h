@@ -34,7 +34,22 @@ class DeviceFilm {
   FilmSums download() const;
   void upload(const FilmSums& sums);
 
+  // Enqueues on `stream` copying `source`'s sums of the pixels [first, first + count) over this film's. `source`
+  // has this film's size and AOVs (else std::logic_error) and lives on CUDA device `sourceDevice`, this film on
+  // `device`: the same device, or another, peer to peer where the GPUs allow it, else through host memory.
+  void copyPixels(const DeviceFilm& source, int sourceDevice, int device, uint32_t first, uint32_t count,
+                  cudaStream_t stream);
+  // Enqueues clearing the sums of the pixels [first, first + count) on `stream`.
+  void clearPixels(uint32_t first, uint32_t count, cudaStream_t stream);
+
  private:
+  struct Sums {
+    const DeviceBuffer* buffer;
+    size_t bytesPerPixel;
+  };
+  // Every buffer of sums with its bytes per pixel; the AOV buffers are empty without AOVs.
+  std::vector<Sums> sums() const;
+
   Image meanImage(const DeviceBuffer& sums) const;
   std::vector<uint32_t> downloadSamples() const;
 

@@ -58,6 +58,7 @@ struct LaunchParameters {
   OptixTraversableHandle traversable = 0;
   uint32_t firstSample = 0;      // sample index of this launch's first sample in every pixel
   uint32_t samplesPerPixel = 0;  // samples each pixel takes in this launch
+  uint32_t firstRow = 0;         // the launch covers the image's rows from here on (a band of it, or all)
   FilmView film;                 // its AOV pointers are null unless the AOVs are enabled
   PixelCounters* counters = nullptr;
   RayRecording recording;

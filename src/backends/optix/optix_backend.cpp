@@ -9,8 +9,10 @@
 #include <stdexcept>
 
 #include "backends/optix/acceleration.h"
+#include "backends/optix/cuda_devices.h"
 #include "backends/optix/device_film.h"
 #include "backends/optix/device_scene.h"
+#include "backends/optix/film_addition.h"
 #include "backends/optix/filters/cuda_filters.h"
 #include "backends/optix/launch_params.h"
 #include "backends/optix/mean_image.h"
@@ -79,6 +81,7 @@ struct OptixBackend::State {
 
   bool aovsEnabled = false;
   DeviceFilm film;
+  DeviceFilm incoming;                 // another device's film rows on their way into this one (moveFilmRows)
   std::unique_ptr<CudaAtrous> atrous;  // made at the first a-trous read, for the image's size
   DeviceBuffer filtered;               // the filters' output
   DeviceBuffer counters;
@@ -103,24 +106,25 @@ struct OptixBackend::State {
     return p;
   }
 
-  // Uploads the parameters, launches one raygen program over the image and sums its counters, timing both
-  // with CUDA events; waits for the result.
   const Pipeline& pipeline(RaygenProgram program) const {
     for (const auto& p : pipelines)
       if (p->has(program)) return *p;
     throw std::logic_error("no pipeline holds the raygen program");
   }
 
-  LaunchResult launch(RaygenProgram program, const LaunchParameters& p) {
+  // Uploads the parameters, launches one raygen program over `rows` rows of the image from p.firstRow on and
+  // sums their counters, timing both with CUDA events; waits for the result.
+  LaunchResult launch(RaygenProgram program, const LaunchParameters& p, uint32_t rows) {
     cudaStream_t stream = context.stream();
     const Pipeline& pipe = pipeline(program);
     checkCuda(cudaMemcpyAsync(parameters.as<void>(), &p, sizeof p, cudaMemcpyHostToDevice, stream),
               "uploading the launch parameters");
     checkCuda(cudaEventRecord(start.get(), stream), "recording a CUDA event");
     checkOptix(optixLaunch(pipe.get(), stream, parameters.address(), sizeof p, &pipe.bindingTable(program),
-                           settings.width, settings.height, 1),
+                           settings.width, rows, 1),
                "launching the device programs");
-    sumPixelCounters(counters.as<PixelCounters>(), pixelCount(), totals.as<CounterTotals>(), stream);
+    sumPixelCounters(counters.as<PixelCounters>() + size_t(p.firstRow) * settings.width, rows * settings.width,
+                     totals.as<CounterTotals>(), stream);
     checkCuda(cudaEventRecord(stop.get(), stream), "recording a CUDA event");
     LaunchResult result;
     checkCuda(cudaMemcpyAsync(&result.totals, totals.as<void>(), sizeof result.totals, cudaMemcpyDeviceToHost, stream),
@@ -220,8 +224,14 @@ void OptixBackend::setSettings(const RenderSettings& settings) {
 }
 
 FrameStats OptixBackend::render(uint32_t samplesPerPixel) {
+  return renderRows(samplesPerPixel, 0, state_->settings.height);
+}
+
+FrameStats OptixBackend::renderRows(uint32_t samplesPerPixel, uint32_t firstRow, uint32_t rows) {
   State& s = *state_;
   if (!s.hasScene) throw std::logic_error("OptixBackend::render before setScene");
+  if (size_t(firstRow) + rows > s.settings.height) throw std::logic_error("OptixBackend::renderRows past the image");
+  if (rows == 0) return {};
   // Per-pixel ray counts are 32-bit: long requests are split into launches that cannot overflow them.
   const uint32_t maxPerLaunch = std::max(1u, 0xFFFFFFFFu / rayBoundPerSample(s.settings));
   FrameStats stats;
@@ -229,7 +239,8 @@ FrameStats OptixBackend::render(uint32_t samplesPerPixel) {
     LaunchParameters p = s.baseParameters();
     p.firstSample = s.nextSample;
     p.samplesPerPixel = std::min(samplesPerPixel - done, maxPerLaunch);
-    LaunchResult r = s.launch(s.aovsEnabled ? RaygenProgram::RenderWithAovs : RaygenProgram::Render, p);
+    p.firstRow = firstRow;
+    LaunchResult r = s.launch(s.aovsEnabled ? RaygenProgram::RenderWithAovs : RaygenProgram::Render, p, rows);
     stats.rays += r.totals.rays;
     stats.invalidSamples += r.totals.invalidSamples;
     stats.deviceMilliseconds += r.milliseconds;
@@ -301,6 +312,28 @@ void OptixBackend::writeImageToDevice(Vec3* destination) const {
   checkCuda(cudaStreamSynchronize(s.context.stream()), "copying the image on the device");
 }
 
+int OptixBackend::deviceOrdinal() const { return state_->context.deviceOrdinal(); }
+
+void OptixBackend::moveFilmRows(OptixBackend& source, uint32_t firstRow, uint32_t rows) {
+  State& s = *state_;
+  State& from = *source.state_;
+  if (&source == this) throw std::logic_error("OptixBackend::moveFilmRows from itself");
+  if (size_t(firstRow) + rows > s.settings.height) throw std::logic_error("OptixBackend::moveFilmRows past the image");
+  if (rows == 0) return;
+  const uint32_t first = firstRow * s.settings.width, count = rows * s.settings.width;
+  {
+    CurrentDevice here(deviceOrdinal());
+    s.incoming.resize(s.settings.width, s.settings.height, s.aovsEnabled);
+    s.incoming.copyPixels(from.film, source.deviceOrdinal(), deviceOrdinal(), first, count, s.context.stream());
+    addFilmPixels(s.film.view(), s.incoming.view(), first, count, s.aovsEnabled, s.context.stream());
+    checkCuda(cudaGetLastError(), "launching the film addition");
+    checkCuda(cudaStreamSynchronize(s.context.stream()), "adding another device's film");
+  }
+  CurrentDevice there(source.deviceOrdinal());
+  from.film.clearPixels(first, count, from.context.stream());
+  checkCuda(cudaStreamSynchronize(from.context.stream()), "clearing the film rows moved to another device");
+}
+
 AccelerationStatistics OptixBackend::accelerationStatistics() const { return state_->acceleration.statistics(); }
 
 RawTraceTiming OptixBackend::timeRawTrace(uint32_t warmup, uint32_t frames) {
@@ -319,11 +352,11 @@ RawTraceTiming OptixBackend::timeRawTrace(uint32_t warmup, uint32_t frames) {
   p.recording.rayTypes = rayTypes.as<uint8_t>();
   p.recording.counts = counts.as<uint32_t>();
 
-  const LaunchResult recorded = s.launch(RaygenProgram::Record, p);
+  const LaunchResult recorded = s.launch(RaygenProgram::Record, p, s.settings.height);
   RawTraceTiming timing;
   timing.raysPerFrame = recorded.totals.rays;
   for (uint32_t i = 0; i < warmup + frames; ++i) {
-    LaunchResult r = s.launch(RaygenProgram::RawTrace, p);
+    LaunchResult r = s.launch(RaygenProgram::RawTrace, p, s.settings.height);
     if (r.totals.rays != recorded.totals.rays)
       throw std::runtime_error("the raw-trace mode replayed " + std::to_string(r.totals.rays) + " of " +
                                std::to_string(recorded.totals.rays) + " recorded rays: a path traced more rays " +

@@ -54,6 +54,16 @@ class OptixBackend final : public Backend, public DeviceImage {
   bool supportsRawTrace() const override { return true; }
   RawTraceTiming timeRawTrace(uint32_t warmup, uint32_t frames) override;
 
+  // For a backend that shares the image between several (MultiGpuBackend): render() on the rows
+  // [firstRow, firstRow + rows) only, whose pixels take the samples while the others keep theirs; and adding the
+  // film sums of `source`, a backend of the same settings and AOVs on this GPU or another, in the rows
+  // [firstRow, firstRow + rows) to this one's, clearing them there, so that those samples move rather than count
+  // twice. renderRows counts its samples in accumulatedSamples() as render() does; moveFilmRows changes no count.
+  FrameStats renderRows(uint32_t samplesPerPixel, uint32_t firstRow, uint32_t rows);
+  void moveFilmRows(OptixBackend& source, uint32_t firstRow, uint32_t rows);
+  // The CUDA device the backend renders on.
+  int deviceOrdinal() const;
+
   // setScene keeps the GAS of every mesh whose triangles did not change (meshes with equal triangles share
   // one) and rebuilds the IAS only when an instance or a GAS changed; setMaterials rebuilds the GASes of meshes
   // on which a material started or stopped using alpha or culling back faces.

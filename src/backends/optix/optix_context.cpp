@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "backends/optix/cuda_devices.h"
 #include "backends/optix/optix_error.h"
 
 namespace candela::optix {
@@ -23,8 +24,9 @@ std::string cudaVersionString(int version) {
   return std::to_string(version / 1000) + "." + std::to_string(version % 1000 / 10);
 }
 
-// Makes device `index` modulo the device count current and returns its ordinal.
-int selectDevice(int index) {
+}  // namespace
+
+int cudaDeviceCount() {
   int count = 0;
   cudaError_t result = cudaGetDeviceCount(&count);
   if (result == cudaErrorInsufficientDriver) {
@@ -43,6 +45,14 @@ int selectDevice(int index) {
     throw std::runtime_error("no CUDA device found: the OptiX backend needs an NVIDIA GPU and its driver");
   }
   checkCuda(result, "counting CUDA devices");
+  return count;
+}
+
+namespace {
+
+// Makes device `index` modulo the device count current and returns its ordinal.
+int selectDevice(int index) {
+  const int count = cudaDeviceCount();
   const int device = (index % count + count) % count;
   checkCuda(cudaSetDevice(device), ("selecting CUDA device " + std::to_string(device)).c_str());
   checkCuda(cudaFree(nullptr), "creating the CUDA context");

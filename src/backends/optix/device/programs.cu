@@ -16,9 +16,15 @@ __constant__ LaunchParameters params;
 
 namespace {
 
-__device__ uint32_t launchPixel() {
+// The image pixel of this launch index: a launch covers the rows from params.firstRow on.
+__device__ uint2 launchPixelXY() {
   const uint3 index = optixGetLaunchIndex();
-  return index.y * params.settings.width + index.x;
+  return make_uint2(index.x, index.y + params.firstRow);
+}
+
+__device__ uint32_t launchPixel() {
+  const uint2 xy = launchPixelXY();
+  return xy.y * params.settings.width + xy.x;
 }
 
 __device__ OptixTracer sceneTracer() { return OptixTracer(params.traversable, params.scene.hasCutouts != 0); }
@@ -29,12 +35,12 @@ __device__ OptixTracer sceneTracer() { return OptixTracer(params.traversable, pa
 // counts invalid ones; with kWithAovs the AOVs too.
 template <bool kWithAovs>
 __device__ void renderPixel() {
-  const uint3 index = optixGetLaunchIndex();
+  const uint2 xy = launchPixelXY();
   const uint32_t pixel = launchPixel();
   const OptixTracer tracer = sceneTracer();
   const PixelTally tally =
       accumulatePixel<kWithAovs>(params.film, pixel, params.firstSample, params.samplesPerPixel, [&](uint32_t s) {
-        return renderPixelSample<kWithAovs>(params.scene, tracer, params.camera, params.settings, index.x, index.y, s);
+        return renderPixelSample<kWithAovs>(params.scene, tracer, params.camera, params.settings, xy.x, xy.y, s);
       });
   params.counters[pixel] = {tally.rays, tally.invalidSamples};
 }
@@ -44,11 +50,11 @@ extern "C" __global__ void __raygen__renderWithAovs() { renderPixel<true>(); }
 
 // Traces one sample per pixel like __raygen__render and records its rays; the image is left alone.
 extern "C" __global__ void __raygen__record() {
-  const uint3 index = optixGetLaunchIndex();
+  const uint2 xy = launchPixelXY();
   const uint32_t pixel = launchPixel();
   const RecordingTracer tracer(sceneTracer(), params.recording, pixel, params.settings.width * params.settings.height);
   PathResult path =
-      renderPixelSample(params.scene, tracer, params.camera, params.settings, index.x, index.y, params.firstSample);
+      renderPixelSample(params.scene, tracer, params.camera, params.settings, xy.x, xy.y, params.firstSample);
   params.recording.counts[pixel] = min(tracer.count(), params.recording.slotsPerPixel);
   params.counters[pixel] = {tracer.count(), isValidSample(path.radiance) ? 0u : 1u};
 }

@@ -1,0 +1,238 @@
+#include "backends/optix/multi_gpu_backend.h"
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+
+#include "backends/optix/cuda_devices.h"
+#include "backends/optix/optix_error.h"
+
+namespace candela {
+
+using optix::CurrentDevice;
+
+namespace {
+
+// Lets the first device read the others' memory directly where the GPUs allow it (NVLink or PCIe peer to
+// peer); cudaMemcpyPeerAsync goes through host memory otherwise. Returns whether every pair allows it.
+bool enablePeerAccess(const std::vector<int>& ordinals) {
+  bool all = true;
+  CurrentDevice first(ordinals[0]);
+  for (size_t i = 1; i < ordinals.size(); ++i) {
+    if (ordinals[i] == ordinals[0]) continue;  // the same GPU: an ordinary device-to-device copy
+    int possible = 0;
+    optix::checkCuda(cudaDeviceCanAccessPeer(&possible, ordinals[0], ordinals[i]), "asking for peer-to-peer access");
+    if (!possible) {
+      all = false;
+      continue;
+    }
+    const cudaError_t result = cudaDeviceEnablePeerAccess(ordinals[i], 0);
+    if (result == cudaErrorPeerAccessAlreadyEnabled)
+      cudaGetLastError();
+    else
+      optix::checkCuda(result, "enabling peer-to-peer access");
+  }
+  return all;
+}
+
+}  // namespace
+
+MultiGpuBackend::MultiGpuBackend(const std::vector<int>& deviceIndices)
+    : ordinals_(deviceIndices),
+      threads_(deviceIndices.size()),
+      devices_(deviceIndices.size()),
+      balance_(deviceIndices.size()),
+      unmerged_(deviceIndices.size()) {
+  if (deviceIndices.size() < 2) throw std::logic_error("MultiGpuBackend needs two devices at least");
+  try {
+    // Each context is made on its own thread, which keeps that device current.
+    threads_.run([&](size_t i) { devices_[i] = std::make_unique<OptixBackend>(deviceIndices[i]); });
+    for (size_t i = 0; i < devices_.size(); ++i) ordinals_[i] = devices_[i]->deviceOrdinal();
+    peerToPeer_ = enablePeerAccess(ordinals_);
+  } catch (...) {
+    threads_.run([&](size_t i) { devices_[i].reset(); });
+    throw;
+  }
+  settings_ = RenderSettings{};
+}
+
+// Each device's memory is freed with that device current.
+MultiGpuBackend::~MultiGpuBackend() {
+  threads_.run([&](size_t i) {
+    CurrentDevice device(ordinals_[i]);
+    devices_[i].reset();
+  });
+}
+
+std::string MultiGpuBackend::deviceName() const {
+  std::string name = devices_[0]->deviceName();
+  bool alike = true;
+  std::string gpus;
+  for (size_t i = 0; i < devices_.size(); ++i) {
+    alike = alike && devices_[i]->deviceName() == name;
+    gpus += (i ? ", " : "") + std::to_string(ordinals_[i]);
+  }
+  if (!alike) {
+    name.clear();
+    for (size_t i = 0; i < devices_.size(); ++i) name += (i ? " + " : "") + devices_[i]->deviceName();
+  } else {
+    name = std::to_string(devices_.size()) + " x " + name;
+  }
+  return name + " (GPUs " + gpus + "; combined " + (peerToPeer_ ? "peer to peer" : "through host memory") + ")";
+}
+
+void MultiGpuBackend::onEveryDevice(const std::function<void(OptixBackend&)>& task) {
+  threads_.run([&](size_t i) {
+    CurrentDevice device(ordinals_[i]);
+    task(*devices_[i]);
+  });
+}
+
+void MultiGpuBackend::restart() {
+  accumulated_ = 0;
+  nextSample_ = 0;
+  std::fill(unmerged_.begin(), unmerged_.end(), RowRange{});
+}
+
+void MultiGpuBackend::setScene(const Scene& scene) {
+  onEveryDevice([&](OptixBackend& d) { d.setScene(scene); });
+  restart();
+}
+
+bool MultiGpuBackend::setMaterials(const std::vector<Material>& materials) {
+  std::vector<char> taken(devices_.size());
+  threads_.run([&](size_t i) {
+    CurrentDevice device(ordinals_[i]);
+    taken[i] = devices_[i]->setMaterials(materials);
+  });
+  // Every device holds the same scene, so they all decide alike.
+  if (std::count(taken.begin(), taken.end(), taken[0]) != std::ptrdiff_t(taken.size()))
+    throw std::logic_error("MultiGpuBackend::setMaterials: the devices decided differently");
+  if (taken[0]) restart();
+  return taken[0];
+}
+
+void MultiGpuBackend::setEnvironment(const Environment& environment) {
+  onEveryDevice([&](OptixBackend& d) { d.setEnvironment(environment); });
+  restart();
+}
+
+void MultiGpuBackend::setCamera(const Camera& camera) {
+  onEveryDevice([&](OptixBackend& d) { d.setCamera(camera); });
+  restart();
+}
+
+void MultiGpuBackend::setSettings(const RenderSettings& settings) {
+  onEveryDevice([&](OptixBackend& d) { d.setSettings(settings); });
+  settings_ = settings;
+  restart();
+}
+
+void MultiGpuBackend::setAovsEnabled(bool enabled) {
+  onEveryDevice([&](OptixBackend& d) { d.setAovsEnabled(enabled); });
+  restart();
+}
+
+bool MultiGpuBackend::aovsEnabled() const { return devices_[0]->aovsEnabled(); }
+
+FrameStats MultiGpuBackend::render(uint32_t samplesPerPixel) {
+  const std::vector<DeviceShare> shares = planShares(samplesPerPixel, settings_.height, balance_.weights());
+  std::vector<FrameStats> stats(devices_.size());
+  threads_.run([&](size_t i) {
+    const DeviceShare& share = shares[i];
+    if (share.empty()) return;
+    CurrentDevice device(ordinals_[i]);
+    devices_[i]->setNextSampleIndex(nextSample_ + share.firstSample);
+    stats[i] = devices_[i]->renderRows(share.samples, share.firstRow, share.rows);
+  });
+  FrameStats total;
+  for (size_t i = 0; i < devices_.size(); ++i) {
+    total.rays += stats[i].rays;
+    total.invalidSamples += stats[i].invalidSamples;
+    total.deviceMilliseconds = std::max(total.deviceMilliseconds, stats[i].deviceMilliseconds);
+    total.perDeviceMilliseconds.push_back(stats[i].deviceMilliseconds);
+    if (i == 0 || shares[i].empty()) continue;
+    RowRange& rows = unmerged_[i];
+    const uint32_t end = shares[i].firstRow + shares[i].rows;
+    rows = rows.first == rows.end ? RowRange{shares[i].firstRow, end}
+                                  : RowRange{std::min(rows.first, shares[i].firstRow), std::max(rows.end, end)};
+  }
+  balance_.record(shares, settings_.width, total.perDeviceMilliseconds);
+  lastShares_ = shares;
+  accumulated_ += samplesPerPixel;
+  nextSample_ += samplesPerPixel;
+  return total;
+}
+
+void MultiGpuBackend::mergeFilms() const {
+  const auto start = std::chrono::steady_clock::now();
+  bool merged = false;
+  for (size_t i = 1; i < devices_.size(); ++i) {
+    RowRange& rows = unmerged_[i];
+    if (rows.first == rows.end) continue;
+    devices_[0]->moveFilmRows(*devices_[i], rows.first, rows.end - rows.first);
+    rows = {};
+    merged = true;
+  }
+  if (merged)
+    combineMilliseconds_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+FilmSums MultiGpuBackend::readFilm() const {
+  mergeFilms();
+  CurrentDevice device(ordinals_[0]);
+  return devices_[0]->readFilm();
+}
+
+// After the merge the other devices' films are clear, so the loaded sums are all there is.
+void MultiGpuBackend::loadFilm(const FilmSums& film) {
+  mergeFilms();
+  CurrentDevice device(ordinals_[0]);
+  devices_[0]->loadFilm(film);
+}
+
+Image MultiGpuBackend::readImage() const {
+  mergeFilms();
+  CurrentDevice device(ordinals_[0]);
+  return devices_[0]->readImage();
+}
+
+Image MultiGpuBackend::readEmission() const {
+  mergeFilms();
+  CurrentDevice device(ordinals_[0]);
+  return devices_[0]->readEmission();
+}
+
+AovImages MultiGpuBackend::readAovs() const {
+  mergeFilms();
+  CurrentDevice device(ordinals_[0]);
+  return devices_[0]->readAovs();
+}
+
+Image MultiGpuBackend::readAtrousDenoised(const AtrousParams& params) const {
+  mergeFilms();
+  CurrentDevice device(ordinals_[0]);
+  return devices_[0]->readAtrousDenoised(params);
+}
+
+Image MultiGpuBackend::readBilateralFiltered(const BilateralParams& params) const {
+  mergeFilms();
+  CurrentDevice device(ordinals_[0]);
+  return devices_[0]->readBilateralFiltered(params);
+}
+
+std::array<unsigned char, 16> MultiGpuBackend::deviceUuid() const { return devices_[0]->deviceUuid(); }
+
+void MultiGpuBackend::writeImageToDevice(Vec3* destination) const {
+  mergeFilms();
+  CurrentDevice device(ordinals_[0]);
+  devices_[0]->writeImageToDevice(destination);
+}
+
+RawTraceTiming MultiGpuBackend::timeRawTrace(uint32_t warmup, uint32_t frames) {
+  CurrentDevice device(ordinals_[0]);
+  devices_[0]->setNextSampleIndex(nextSample_);
+  return devices_[0]->timeRawTrace(warmup, frames);
+}
+
+}  // namespace candela
