@@ -201,7 +201,8 @@ PbrtMaterial PbrtMaterials::makeMix(const PbrtParameters& params) {
       context_.warn("mix of see-through material",
                     "'" + names->strings[i] +
                         "' lets light through ('interface', 'thindielectric'), which a mix "
-                        "does not choose per point: in the mix it is opaque");
+                        "does not choose per point: in the mix it is opaque ('interface' a grey diffuse, "
+                        "'thindielectric' a mirror)");
     auto found = mixDepths_.find(id);
     if (found != mixDepths_.end()) depth = std::max(depth, found->second + 1);
     m.mixedMaterials[i] = id;
