@@ -81,11 +81,10 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
     }
     if (kWithAovs && aovsPending) pathLength += hit.t;
     SurfaceInteraction si = makeInteraction(scene, hit);
-    const Material& stored = scene.materials[si.materialId];
-    if (hasTextures(stored))
+    if (hasTextures(scene.materials[si.materialId]))
       si.footprint = textureFootprint(scene, hit, ray.direction, cone.widthAt(hit.t), settings.textureFilter);
     Vec3 wo = -ray.direction;
-    Material material = evaluateMaterial(scene, stored, si);
+    Material material = evaluateSurfaceMaterial(scene, si, wo);
     applyNormalMap(scene, material, si);
     keepReflectionAboveSurface(si, wo);
     if (kWithAovs && aovsPending && !isSpecularMaterial(material)) {

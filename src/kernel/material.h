@@ -13,7 +13,13 @@ enum class MaterialType : uint32_t {
   Disney,       // Burley's principled BSDF with the 2015 transmission extension
   Mirror,       // perfect specular reflection tinted by specularColor
   Glass,        // smooth dielectric with index `ior`, transmission tinted by baseColor
+  Mix,          // the scattering of one of two materials, chosen per shading point (kernel/textured_material.h)
 };
+
+// How many mixes a chain of mixed materials may pass through before it reaches a material of another type:
+// the kernel resolves a mix in a loop of at most this many steps, and scene validation rejects longer chains
+// (and cycles).
+constexpr uint32_t kMaxMixDepth = 8;
 
 enum class AlphaMode : uint32_t { Opaque = 0, Mask, Blend };
 
@@ -57,6 +63,13 @@ struct Material {
   int32_t emissionTexture = kNoTexture;           // sRGB, multiplies emission
   int32_t normalTexture = kNoTexture;             // tangent space
   int32_t opacityTexture = kNoTexture;            // R
+
+  // Mix: a shading point scatters as mixedMaterials[1] with probability mixAmount (times the R channel of
+  // mixAmountTexture), else as mixedMaterials[0], pbrt-v4's convention. Emission and coverage (alpha, culling)
+  // are the mix's own, as in pbrt, where both belong to the shape; the mixed materials' are not used.
+  uint32_t mixedMaterials[2] = {0, 0};
+  float mixAmount = 0.5f;
+  int32_t mixAmountTexture = kNoTexture;  // R
 };
 
 }  // namespace candela

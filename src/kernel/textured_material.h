@@ -1,4 +1,5 @@
 #pragma once
+#include "core/rng.h"
 #include "kernel/interaction.h"
 #include "kernel/material.h"
 #include "kernel/scene_view.h"
@@ -19,9 +20,10 @@ CANDELA_FN Vec4 lookup(const SceneView& scene, int32_t texture, const SurfaceInt
 }
 
 // Whether evaluateMaterial or applyNormalMap reads a texture of `m`: only then does a hit need its footprint.
-// (The opacity texture is read by materialAlpha, at a point.)
+// (The opacity texture is read by materialAlpha, at a point.) A mix may read its amount texture and those of the
+// material it chooses: it always takes the footprint.
 CANDELA_FN bool hasTextures(const Material& m) {
-  return m.baseColorTexture != kNoTexture || m.metallicRoughnessTexture != kNoTexture ||
+  return m.type == MaterialType::Mix || m.baseColorTexture != kNoTexture || m.metallicRoughnessTexture != kNoTexture ||
          m.roughnessTexture != kNoTexture || m.metallicTexture != kNoTexture || m.emissionTexture != kNoTexture ||
          m.normalTexture != kNoTexture;
 }
@@ -32,6 +34,13 @@ CANDELA_FN float materialAlpha(const SceneView& scene, const Material& m, Vec2 u
   if (m.baseColorTexture != kNoTexture) alpha *= lookup(scene, m.baseColorTexture, uv).w;
   if (m.opacityTexture != kNoTexture) alpha *= lookup(scene, m.opacityTexture, uv).x;
   return alpha;
+}
+
+// The radiance `m` emits at the surface point: its emission times its emission texture.
+CANDELA_FN Vec3 emittedRadiance(const SceneView& scene, const Material& m, const SurfaceInteraction& si) {
+  if (m.emissionTexture == kNoTexture) return m.emission;
+  Vec4 c = lookup(scene, m.emissionTexture, si);
+  return m.emission * Vec3{c.x, c.y, c.z};
 }
 
 // The material's parameters at the surface point with its textures applied (averaged over si.footprint); factors
@@ -50,10 +59,42 @@ CANDELA_FN Material evaluateMaterial(const SceneView& scene, const Material& sto
   }
   if (m.roughnessTexture != kNoTexture) m.roughness *= lookup(scene, m.roughnessTexture, si).x;
   if (m.metallicTexture != kNoTexture) m.metallic *= lookup(scene, m.metallicTexture, si).x;
-  if (m.emissionTexture != kNoTexture) {
-    Vec4 c = lookup(scene, m.emissionTexture, si);
-    m.emission *= Vec3{c.x, c.y, c.z};
+  m.emission = emittedRadiance(scene, stored, si);
+  return m;
+}
+
+// A number in [0, 1) hashed from a shading point, the direction towards the viewer and a mix (pbrt-v4's
+// HashFloat(p, wo, ...)): the same vertex of a path always gets the same one, so next-event estimation, BSDF
+// sampling and their MIS weights all see one material there, while other points and directions get
+// independent ones. The mix's id makes nested mixes choose independently.
+CANDELA_FN float mixChoiceNumber(Vec3 p, Vec3 wo, uint32_t mixId) {
+  auto bits = [](float f) { return uint32_t(floatAsInt(f)); };
+  Uint4 h = pcg4d({bits(p.x), bits(p.y), bits(p.z), mixId});
+  h = pcg4d({h.x ^ bits(wo.x), h.y ^ bits(wo.y), h.z ^ bits(wo.z), h.w});
+  return bitsToUnitFloat(h.x);
+}
+
+// The material whose scattering material `id` shows at the surface point seen from `wo`: `id` itself unless it
+// is a mix, else (through mixes of mixes) the one its choices lead to, as pbrt-v4's MixMaterial::ChooseMaterial
+// picks: the second material where the hashed number is below the amount. Scene validation keeps chains within
+// kMaxMixDepth, so the loop always ends on a material of another type.
+CANDELA_FN uint32_t chooseMixedMaterial(const SceneView& scene, uint32_t id, const SurfaceInteraction& si, Vec3 wo) {
+  for (uint32_t level = 0; level < kMaxMixDepth; ++level) {
+    const Material& m = scene.materials[id];
+    if (m.type != MaterialType::Mix) break;
+    float amount = m.mixAmount;
+    if (m.mixAmountTexture != kNoTexture) amount *= lookup(scene, m.mixAmountTexture, si).x;
+    id = m.mixedMaterials[mixChoiceNumber(si.position, wo, id) < amount ? 1 : 0];
   }
+  return id;
+}
+
+// The material at the shading point si seen from `wo`, textures applied: the surface's own, or for a mix the one
+// it chooses there, with the mix's emission.
+CANDELA_FN Material evaluateSurfaceMaterial(const SceneView& scene, const SurfaceInteraction& si, Vec3 wo) {
+  const uint32_t chosen = chooseMixedMaterial(scene, si.materialId, si, wo);
+  Material m = evaluateMaterial(scene, scene.materials[chosen], si);
+  if (chosen != si.materialId) m.emission = emittedRadiance(scene, scene.materials[si.materialId], si);
   return m;
 }
 

@@ -95,10 +95,22 @@ bool needsTangents(const Material& m) {
   return m.normalTexture != kNoTexture || (m.type == MaterialType::Disney && m.anisotropic > 0.0f);
 }
 
-bool needsTangents(const Scene& scene, const Mesh& mesh) {
+// Per material, whether it or a material it may choose (through mixes: validation bounds their chains) needs
+// tangents.
+std::vector<bool> materialsNeedingTangents(const std::vector<Material>& materials) {
+  std::vector<bool> needed(materials.size());
+  for (size_t i = 0; i < materials.size(); ++i) needed[i] = needsTangents(materials[i]);
+  for (uint32_t round = 0; round < kMaxMixDepth; ++round)
+    for (size_t i = 0; i < materials.size(); ++i)
+      if (materials[i].type == MaterialType::Mix)
+        needed[i] = needed[materials[i].mixedMaterials[0]] || needed[materials[i].mixedMaterials[1]];
+  return needed;
+}
+
+bool needsTangents(const std::vector<bool>& materialsNeeding, const Mesh& mesh) {
   if (mesh.uvs.empty()) return false;
   for (uint32_t id : mesh.triangleMaterials)
-    if (needsTangents(scene.materials[id])) return true;
+    if (materialsNeeding[id]) return true;
   return false;
 }
 
@@ -174,6 +186,7 @@ FlatScene FlatScene::build(const Scene& scene) {
   FlatScene flat;
   flat.materials = scene.materials;
   buildEnvironment(scene.environment, flat);
+  const std::vector<bool> materialsNeeding = materialsNeedingTangents(scene.materials);
   const bool anyColors =
       std::any_of(scene.meshes.begin(), scene.meshes.end(), [](const Mesh& m) { return !m.colors.empty(); });
   for (const Mesh& mesh : scene.meshes) {
@@ -195,7 +208,8 @@ FlatScene FlatScene::build(const Scene& scene) {
       flat.uvs.insert(flat.uvs.end(), mesh.uvs.begin(), mesh.uvs.end());
     std::vector<Vec4> generated;
     const std::vector<Vec4>* meshTangents = &mesh.tangents;
-    if (mesh.tangents.empty() && needsTangents(scene, mesh)) meshTangents = &(generated = generateTangents(mesh));
+    if (mesh.tangents.empty() && needsTangents(materialsNeeding, mesh))
+      meshTangents = &(generated = generateTangents(mesh));
     record.hasTangents = meshTangents->empty() ? 0u : 1u;
     if (meshTangents->empty())
       flat.tangents.resize(flat.positions.size());

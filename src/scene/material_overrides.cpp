@@ -85,7 +85,8 @@ ShadingModel parseShadingModel(const std::string& name) {
 }
 
 Material applyOverrides(Material m, const MaterialOverrides& o) {
-  if (m.type == MaterialType::Mirror || m.type == MaterialType::Glass) return m;
+  // A mix has no parameters of its own to override: the materials it mixes, in the same list, take them.
+  if (m.type == MaterialType::Mirror || m.type == MaterialType::Glass || m.type == MaterialType::Mix) return m;
   MaterialType target = o.shading == ShadingModel::Own ? m.type : modelType(o.shading);
   bool fromPhong = m.type == MaterialType::BlinnPhong;
   if (fromPhong && target != MaterialType::BlinnPhong) {

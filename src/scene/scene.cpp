@@ -1,6 +1,9 @@
 #include "scene/scene.h"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace candela {
 
@@ -21,7 +24,21 @@ size_t sceneMemoryBytes(const Scene& scene) {
 }
 
 namespace {
+
 bool finite(Vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// Whether every chain of mixes reaches a material of another type within kMaxMixDepth mixes (which a cycle never
+// does). mixes[i] converges from below to the number of mixes the longest chain from material i passes: after
+// round r it is exact wherever that number is at most r, and it exceeds r on longer chains and cycles.
+bool mixChainsEnd(const std::vector<Material>& materials) {
+  std::vector<uint32_t> mixes(materials.size(), 0);
+  for (uint32_t round = 0; round <= kMaxMixDepth; ++round)
+    for (size_t i = 0; i < materials.size(); ++i)
+      if (materials[i].type == MaterialType::Mix)
+        mixes[i] = 1 + std::max(mixes[materials[i].mixedMaterials[0]], mixes[materials[i].mixedMaterials[1]]);
+  return std::all_of(mixes.begin(), mixes.end(), [](uint32_t n) { return n <= kMaxMixDepth; });
+}
+
 }  // namespace
 
 void validateScene(const Scene& scene) {
@@ -51,12 +68,20 @@ void validateScene(const Scene& scene) {
   }
   for (const Instance& inst : scene.instances)
     if (inst.meshId >= scene.meshes.size()) fail("an instance refers to a missing mesh");
+  bool anyMix = false;
   for (const Material& m : scene.materials) {
     if (!finite(m.baseColor) || !finite(m.emission)) fail("a material has non-finite parameters");
     for (int32_t t : {m.baseColorTexture, m.metallicRoughnessTexture, m.roughnessTexture, m.metallicTexture,
-                      m.emissionTexture, m.normalTexture, m.opacityTexture})
+                      m.emissionTexture, m.normalTexture, m.opacityTexture, m.mixAmountTexture})
       if (t != kNoTexture && (t < 0 || size_t(t) >= scene.textures.size())) fail("a material uses a missing texture");
+    if (m.type != MaterialType::Mix) continue;
+    anyMix = true;
+    if (m.mixedMaterials[0] >= scene.materials.size() || m.mixedMaterials[1] >= scene.materials.size())
+      fail("a mix material mixes a missing material");
+    if (!std::isfinite(m.mixAmount)) fail("a mix material has a non-finite amount");
   }
+  if (anyMix && !mixChainsEnd(scene.materials))
+    fail("mix materials nest more than " + std::to_string(kMaxMixDepth) + " deep or mix themselves");
   for (const PunctualLight& light : scene.punctualLights)
     if (!finite(light.position) || !finite(light.direction) || !finite(light.intensity))
       fail("a punctual light has non-finite parameters");

@@ -86,6 +86,38 @@ TEST(GpuCutoutScreen, AgreesWithTheCpuBackend) {
   expectBackendsAgree(test::makeCutoutScreen(test::ScreenCoverage::HalfBlend), 81);
 }
 
+// Mix materials, chosen per shading point by the same hash on both backends: the material gallery with each
+// material mixed with the next (amount 0.4, the mix keeping the first's emission), and the floor's mix mixed
+// again with the next mix through a texture (nested, and a textured amount).
+TEST(GpuMixedMaterials, AgreeWithTheCpuBackend) {
+  Scene scene = makeMaterialGallery();
+  const uint32_t n = uint32_t(scene.materials.size());
+  for (uint32_t i = 0; i < n; ++i) {
+    Material mix;
+    mix.type = MaterialType::Mix;
+    mix.mixedMaterials[0] = i;
+    mix.mixedMaterials[1] = (i + 1) % n;
+    mix.mixAmount = 0.4f;
+    mix.emission = scene.materials[i].emission;
+    scene.materials.push_back(mix);
+  }
+  Texture amount;
+  amount.width = amount.height = 2;
+  amount.channels = 1;
+  amount.bytes = {40, 220, 220, 40};
+  scene.textures.push_back(amount);
+  Material nested = scene.materials[n];
+  nested.mixedMaterials[0] = n;
+  nested.mixedMaterials[1] = n + 1;
+  nested.mixAmount = 0.9f;
+  nested.mixAmountTexture = int32_t(scene.textures.size() - 1);
+  scene.materials.push_back(nested);
+  if (!scene.materialNames.empty()) scene.materialNames.resize(scene.materials.size(), "mix");
+  for (Mesh& mesh : scene.meshes)
+    for (uint32_t& m : mesh.triangleMaterials) m = m == 0 ? 2 * n : n + m;
+  expectBackendsAgree(scene, 131);
+}
+
 // Scenes of many meshes have them built many to a GAS, in world space (acceleration.cpp): the Cornell spheres
 // cut into about 5,000 meshes of one instance each (several batches, and both spheres' transforms) must render
 // as the CPU backend renders them.

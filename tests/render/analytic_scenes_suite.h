@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -146,6 +147,62 @@ TYPED_TEST_P(AnalyticScenes, DirectionalLightOnFloorEveryPixelIsTheAnswer) {
       << worst;
 }
 
+// A floor made of a mix of two greys, chosen per shading point: every pixel sees the floor of the mean albedo,
+// (1 - amount) first + amount second (pbrt-v4's convention), whether the amount is a number or a number times a
+// texture. Per pixel the choices are noise about that mean; the image mean tests the mean more finely.
+inline constexpr float kMixFirst = 0.9f, kMixSecond = 0.1f, kMixIrradiance = 3.0f, kMixCos = 0.6f;
+
+inline Scene makeTestMixedFloor(float amount, std::optional<uint8_t> amountTexel) {
+  return makeMixedFloor(kMixFirst, kMixSecond, amount, amountTexel, kMixIrradiance, kMixCos);
+}
+
+inline float mixedFloorRadiance(float amount) {
+  return directionallyLitFloorRadiance((1.0f - amount) * kMixFirst + amount * kMixSecond, kMixIrradiance, kMixCos);
+}
+
+// The image-mean test of a mixed floor: 5 of them below.
+inline void expectImageMean(const PixelStatistics& stats, float expected, double alpha) {
+  ImageMean m = imageMean(stats);
+  EXPECT_LT(std::fabs(m.mean - expected), twoSidedNormalQuantile(sidak(alpha, 5.0)) * m.standardError)
+      << m.mean << " +- " << m.standardError << ", expected " << expected;
+}
+
+TYPED_TEST_P(AnalyticScenes, MixedFloorEveryPixelIsTheMeanOfItsMaterials) {
+  const uint32_t maxDepth = 4, rouletteDepth = RenderSettings{}.rouletteDepth;
+  for (float amount : {0.3f, 0.75f}) {
+    SCOPED_TRACE("amount " + std::to_string(amount));
+    PixelStatistics stats = TestFixture::render(makeTestMixedFloor(amount, std::nullopt), 16, maxDepth, rouletteDepth);
+    const float expected = mixedFloorRadiance(amount);
+    std::string worst;
+    EXPECT_EQ(countRejectedPixels(stats, {expected, expected, expected}, TestFixture::kBatches, TestFixture::kAlpha,
+                                  worst),
+              0u)
+        << worst;
+    expectImageMean(stats, expected, TestFixture::kAlpha);
+  }
+  // A textured amount: 0.6 times a texel of 128/255.
+  PixelStatistics stats = TestFixture::render(makeTestMixedFloor(0.6f, uint8_t(128)), 16, maxDepth, rouletteDepth);
+  expectImageMean(stats, mixedFloorRadiance(0.6f * 128.0f / 255.0f), TestFixture::kAlpha);
+}
+
+// The tests above reject the answers of a mix chosen per triangle (each of the floor's two triangles one grey)
+// and of a textured amount taken as 0.5.
+TYPED_TEST_P(AnalyticScenes, MixedFloorDetectsWrongAnswers) {
+  const uint32_t maxDepth = 4, rouletteDepth = RenderSettings{}.rouletteDepth;
+  Scene perTriangle = makeTestMixedFloor(0.5f, std::nullopt);
+  perTriangle.meshes[0].triangleMaterials = {0, 1};
+  PixelStatistics stats = TestFixture::render(perTriangle, 16, maxDepth, rouletteDepth);
+  const float expected = mixedFloorRadiance(0.5f);
+  std::string worst;
+  EXPECT_GT(countRejectedPixels(stats, {expected, expected, expected}, TestFixture::kBatches, TestFixture::kAlpha,
+                                worst),
+            0u);
+  ImageMean textured =
+      imageMean(TestFixture::render(makeTestMixedFloor(0.6f, uint8_t(128)), 16, maxDepth, rouletteDepth));
+  EXPECT_GT(std::fabs(textured.mean - mixedFloorRadiance(0.5f)),
+            twoSidedNormalQuantile(sidak(TestFixture::kAlpha, 5.0)) * textured.standardError);
+}
+
 // A white, non-absorbing object under a uniform environment of radiance 1 is invisible: every pixel is 1.
 TYPED_TEST_P(AnalyticScenes, WhiteFurnaceEveryPixelIsOne) {
   PixelStatistics stats = TestFixture::render(makeWhiteFurnace(), 32, 64, RenderSettings{}.rouletteDepth);
@@ -186,6 +243,7 @@ REGISTER_TYPED_TEST_SUITE_P(AnalyticScenes, ClosedSphereEveryPixelIsEmissionOver
                             ClosedSphereImageMeanIsEmissionOverOneMinusAlbedoWithDefaultRoulette,
                             ClosedSphereDetectsWrongAnswers, PointLightInClosedSphereEveryPixelIsTheAnswer,
                             DirectionalLightOnFloorEveryPixelIsTheAnswer, WhiteFurnaceEveryPixelIsOne,
-                            CutoutScreenPassesHalfTheSky, CutoutScreenDetectsWrongAnswers);
+                            CutoutScreenPassesHalfTheSky, CutoutScreenDetectsWrongAnswers,
+                            MixedFloorEveryPixelIsTheMeanOfItsMaterials, MixedFloorDetectsWrongAnswers);
 
 }  // namespace candela::test

@@ -224,6 +224,15 @@ TEST(MaterialOverrides, SwitchModelsAndReplaceParameters) {
   Material mirror;
   mirror.type = MaterialType::Mirror;
   EXPECT_EQ(applyOverrides(mirror, o).type, MaterialType::Mirror);
+  // A mix stays one: the materials it mixes, in the same list, take the overrides.
+  Material mix;
+  mix.type = MaterialType::Mix;
+  mix.mixedMaterials[1] = 3;
+  std::vector<Material> materials = {mix, pbr};
+  applyOverrides(materials, o);
+  EXPECT_EQ(materials[0].type, MaterialType::Mix);
+  EXPECT_EQ(materials[0].mixedMaterials[1], 3u);
+  EXPECT_EQ(materials[1].type, MaterialType::BlinnPhong);
   // Every parameter the viewer can bind reaches the material.
   MaterialOverrides all;
   for (const OverrideParameter& p : overrideParameters()) setOverride(all, p.name, 0.625f);

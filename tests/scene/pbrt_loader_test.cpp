@@ -4,6 +4,7 @@
 #include <stb/stb_image_write.h>
 #include <zlib.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <sstream>
@@ -433,12 +434,88 @@ TEST(PbrtLoader, NamedAndMixedMaterials) {
                      "NamedMaterial \"mixed\"\nShape \"sphere\"\n";
   Scene scene = loadText(text);
   ASSERT_EQ(scene.meshes.size(), 1u);
-  size_t blue = 0, total = scene.meshes[0].triangleMaterials.size();
-  for (uint32_t id : scene.meshes[0].triangleMaterials) blue += scene.materials[id].baseColor.z > 0.5f;
-  EXPECT_NEAR(double(blue) / double(total), 0.25, 0.05);  // amount is the second material's share
-  EXPECT_EQ(scene.materialNames[scene.meshes[0].triangleMaterials[0]] == "red" ||
-                scene.materialNames[scene.meshes[0].triangleMaterials[0]] == "blue",
-            true);
+  // Every triangle takes the mix, which chooses per shading point (kernel/textured_material.h).
+  const std::vector<uint32_t>& ids = scene.meshes[0].triangleMaterials;
+  EXPECT_TRUE(std::all_of(ids.begin(), ids.end(), [&](uint32_t id) { return id == ids[0]; }));
+  const Material& mix = scene.materials[ids[0]];
+  ASSERT_EQ(mix.type, MaterialType::Mix);
+  EXPECT_EQ(scene.materialNames[ids[0]], "mixed");
+  EXPECT_EQ(scene.materialNames[mix.mixedMaterials[0]], "red");
+  EXPECT_EQ(scene.materialNames[mix.mixedMaterials[1]], "blue");
+  EXPECT_FLOAT_EQ(mix.mixAmount, 0.25f);  // the second material's probability, as in pbrt-v4
+  EXPECT_EQ(mix.mixAmountTexture, kNoTexture);
+}
+
+TEST(PbrtLoader, MixAmountTexturesAreHonoured) {
+  LoadWarnings warnings;
+  const std::string triangle =
+      "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"point2 uv\" [0 0 1 0 0 1] "
+      "\"integer indices\" [0 1 2]\n";
+  Scene scene = loadText(std::string(kMirroredCamera) +
+                             "Texture \"amount\" \"float\" \"checkerboard\" \"float tex1\" 0.2 \"float tex2\" 0.8 "
+                             "\"float uscale\" 4\n"
+                             "Texture \"scaled\" \"float\" \"scale\" \"texture tex\" \"amount\" \"float scale\" 0.5\n"
+                             "MakeNamedMaterial \"a\" \"string type\" \"diffuse\"\n"
+                             "MakeNamedMaterial \"b\" \"string type\" \"conductor\"\n"
+                             "MakeNamedMaterial \"m\" \"string type\" \"mix\" \"string materials\" [\"a\" \"b\"] "
+                             "\"texture amount\" \"amount\"\n"
+                             "MakeNamedMaterial \"half\" \"string type\" \"mix\" \"string materials\" [\"a\" \"b\"] "
+                             "\"texture amount\" \"scaled\"\n"
+                             "NamedMaterial \"m\"\n" +
+                             triangle + "NamedMaterial \"half\"\n" + triangle,
+                         &warnings);
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages[0];
+  const Material& mix = scene.materials[scene.meshes[0].triangleMaterials[0]];
+  ASSERT_EQ(mix.type, MaterialType::Mix);
+  ASSERT_NE(mix.mixAmountTexture, kNoTexture);  // the checkerboard's image of 0.2 and 0.8
+  EXPECT_FLOAT_EQ(mix.mixAmount, 1.0f);
+  // The amount texture's mapping reaches the mesh: a period of the checkerboard's image (two checks) is 1/2 of
+  // u wide at uscale 4, so u = 1 becomes 2 periods.
+  EXPECT_NEAR(scene.meshes[0].uvs[1].x, 2.0f, 1e-5f);
+  const Material& half = scene.materials[scene.meshes[1].triangleMaterials[0]];
+  EXPECT_EQ(half.mixAmountTexture, mix.mixAmountTexture);
+  EXPECT_FLOAT_EQ(half.mixAmount, 0.5f);  // the scale texture's factor times the same image
+}
+
+TEST(PbrtLoader, MixesOfMixesNestUpToTheBound) {
+  auto chain = [](uint32_t mixes) {
+    std::string text = std::string(kMirroredCamera) + "MakeNamedMaterial \"m0\" \"string type\" \"diffuse\"\n";
+    for (uint32_t i = 1; i <= mixes; ++i)
+      text += "MakeNamedMaterial \"m" + std::to_string(i) + "\" \"string type\" \"mix\" \"string materials\" [\"m" +
+              std::to_string(i - 1) + "\" \"m0\"]\n";
+    return text + "NamedMaterial \"m" + std::to_string(mixes) + "\"\n" + kTriangle;
+  };
+  Scene scene = loadText(chain(kMaxMixDepth));
+  const Material& outer = scene.materials[scene.meshes[0].triangleMaterials[0]];
+  EXPECT_EQ(outer.type, MaterialType::Mix);
+  EXPECT_EQ(scene.materials[outer.mixedMaterials[0]].type, MaterialType::Mix);
+  EXPECT_EQ(scene.materials[outer.mixedMaterials[1]].type, MaterialType::Diffuse);
+  EXPECT_NE(loadError(chain(kMaxMixDepth + 1))
+                .find("test.pbrt:" + std::to_string(kMaxMixDepth + 5) + ": mix materials nest more than 8 deep"),
+            std::string::npos)
+      << loadError(chain(kMaxMixDepth + 1));
+}
+
+// pbrt-v4's area lights and alpha belong to the shape: a mix keeps them, the materials it mixes are untouched.
+TEST(PbrtLoader, MixedShapesKeepTheirEmissionAndAlpha) {
+  LoadWarnings warnings;
+  Scene scene = loadText(std::string(kMirroredCamera) +
+                             "MakeNamedMaterial \"a\" \"string type\" \"diffuse\"\n"
+                             "MakeNamedMaterial \"gap\" \"string type\" \"interface\"\n"
+                             "MakeNamedMaterial \"m\" \"string type\" \"mix\" \"string materials\" [\"a\" \"gap\"]\n"
+                             "NamedMaterial \"m\"\nAreaLightSource \"diffuse\" \"rgb L\" [1 2 3]\n"
+                             "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" [0 1 2] "
+                             "\"float alpha\" 0.5\n",
+                         &warnings);
+  const Material& mix = scene.materials[scene.meshes[0].triangleMaterials[0]];
+  ASSERT_EQ(mix.type, MaterialType::Mix);
+  expectNear(mix.emission, {1, 2, 3});
+  EXPECT_EQ(mix.alphaMode, AlphaMode::Blend);
+  EXPECT_FLOAT_EQ(mix.opacity, 0.5f);
+  EXPECT_TRUE(isBlack(scene.materials[mix.mixedMaterials[0]].emission));
+  // An 'interface' in a mix cannot let light through per point: said so.
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_NE(warnings.messages[0].find("'gap' lets light through"), std::string::npos) << warnings.messages[0];
 }
 
 TEST(PbrtLoader, AreaLightsEmitFromTheirShapes) {

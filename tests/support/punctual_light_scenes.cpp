@@ -54,4 +54,26 @@ Scene makeDirectionallyLitFloor(float albedo, float irradiance, float cosAngle) 
   return scene;
 }
 
+Scene makeMixedFloor(float first, float second, float amount, std::optional<uint8_t> amountTexel, float irradiance,
+                     float cosAngle) {
+  Scene scene = makeDirectionallyLitFloor(first, irradiance, cosAngle);
+  scene.name = "mixed-floor";
+  Material mix;
+  mix.type = MaterialType::Mix;
+  mix.mixedMaterials[0] = 0;
+  mix.mixedMaterials[1] = 1;
+  mix.mixAmount = amount;
+  if (amountTexel) {
+    Texture texel;
+    texel.name = "mix amount";
+    texel.width = texel.height = texel.channels = 1;
+    texel.bytes = {*amountTexel};
+    scene.textures.push_back(texel);
+    mix.mixAmountTexture = 0;
+  }
+  scene.materials = {grey(first), grey(second), mix};
+  for (uint32_t& m : scene.meshes[0].triangleMaterials) m = 2;
+  return scene;
+}
+
 }  // namespace candela::test

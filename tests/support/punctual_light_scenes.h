@@ -1,5 +1,8 @@
 #pragma once
 // Scenes lit by punctual lights whose answers are known exactly.
+#include <cstdint>
+#include <optional>
+
 #include "scene/scene.h"
 
 namespace candela::test {
@@ -20,5 +23,12 @@ Scene makeDirectionallyLitFloor(float albedo, float irradiance, float cosAngle);
 inline float directionallyLitFloorRadiance(float albedo, float irradiance, float cosAngle) {
   return albedo * irradiance * cosAngle / kPi;
 }
+
+// That floor made of a mix of two greys: `second` at each shading point with probability `amount`, else `first`
+// (pbrt-v4's convention), so that every pixel sees the floor of albedo (1 - amount) first + amount second. With
+// `amountTexel`, the amount is `amount` times a one-texel linear texture of that byte value. Materials 0 and 1
+// are the greys; the floor's two triangles use the mix, material 2.
+Scene makeMixedFloor(float first, float second, float amount, std::optional<uint8_t> amountTexel, float irradiance,
+                     float cosAngle);
 
 }  // namespace candela::test

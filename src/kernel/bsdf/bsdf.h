@@ -52,7 +52,8 @@ class Bsdf {
       case MaterialType::Disney: return f(DisneyBsdf(m, eta_));
       case MaterialType::Mirror: return f(MirrorBsdf{m.specularColor});
       case MaterialType::Glass: return f(SmoothDielectricBsdf{eta_, sqrtColor(m.baseColor)});
-      case MaterialType::Diffuse: break;
+      case MaterialType::Diffuse:
+      case MaterialType::Mix: break;  // a mix never gets here: evaluateSurfaceMaterial resolves it first
     }
     return f(LambertianBsdf{m.baseColor});
   }

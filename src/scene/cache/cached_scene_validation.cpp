@@ -62,7 +62,7 @@ void checkMeshes(const Scene& scene) {
 
 void checkMaterials(const Scene& scene) {
   for (const Material& m : scene.materials) {
-    if (uint32_t(m.type) > uint32_t(MaterialType::Glass)) fail("a material has an unknown type");
+    if (uint32_t(m.type) > uint32_t(MaterialType::Mix)) fail("a material has an unknown type");
     if (uint32_t(m.alphaMode) > uint32_t(AlphaMode::Blend)) fail("a material has an unknown alpha mode");
     if (m.doubleSided > 1) fail("a material's double-sided flag is neither 0 nor 1");
     if (!finite(m.baseColor) || !finite(m.emission) || !finite(m.specularColor))

@@ -459,27 +459,12 @@ class PbrtReader {
   // its emission and alpha, and its texture coordinates through the material's uv mapping.
   void assignMaterials(Mesh& mesh, const PbrtMaterial& material, const std::vector<Vec3>& emission, AlphaSpec alpha,
                        size_t triangles) {
-    std::vector<float> cumulative;
-    float total = 0.0f;
-    for (auto choice : material.choices) cumulative.push_back(total += choice.second);
-    for (size_t t = 0; t < triangles; ++t) {
-      size_t pick = 0;
-      if (cumulative.size() > 1) {
-        // A fixed hash of the triangle index: pbrt's mix chooses per shading point, candela per triangle.
-        uint32_t h = uint32_t(t) * 0x9E3779B1u;
-        h ^= h >> 16;
-        h *= 0x85EBCA6Bu;
-        h ^= h >> 13;
-        float u = float(h >> 8) * (1.0f / 16777216.0f) * total;
-        while (pick + 1 < cumulative.size() && u >= cumulative[pick]) ++pick;
-      }
-      Vec3 emitted = emission.empty() ? Vec3{0, 0, 0} : emission[t];
-      mesh.triangleMaterials[t] = variant(material.choices[pick].first, emitted, alpha);
-    }
+    for (size_t t = 0; t < triangles; ++t)
+      mesh.triangleMaterials[t] = variant(material.id, emission.empty() ? Vec3{0, 0, 0} : emission[t], alpha);
     for (size_t t = triangles; t < mesh.triangleMaterials.size(); ++t)
       mesh.triangleMaterials[t] = mesh.triangleMaterials[t - triangles];
     // pbrt's (u, v) through the base colour texture's mapping, then v flipped: candela's v runs down the image.
-    auto [scale, offset] = materials_.uvMapping(material.choices.front().first);
+    auto [scale, offset] = materials_.uvMapping(material.id);
     for (Vec2& uv : mesh.uvs) uv = {scale.x * uv.x + offset.x, 1.0f - (scale.y * uv.y + offset.y)};
   }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "scene/loaders/pbrt_spectra.h"
 
@@ -45,7 +46,7 @@ std::pair<Vec2, Vec2> PbrtMaterials::uvMapping(uint32_t materialId) const {
 
 PbrtMaterial PbrtMaterials::fallback() {
   if (!fallback_) fallback_ = add(Material{.baseColor = {0.5f, 0.5f, 0.5f}}, "pbrt default diffuse");
-  return PbrtMaterial{{{*fallback_, 1.0f}}};
+  return PbrtMaterial{*fallback_};
 }
 
 Material PbrtMaterials::translate(const std::string& type, const PbrtParameters& params,
@@ -185,24 +186,49 @@ Material PbrtMaterials::translate(const std::string& type, const PbrtParameters&
   return m;
 }
 
-PbrtMaterial PbrtMaterials::make(const std::string& type, const PbrtParameters& params) {
-  if (type == "mix") {
-    const PbrtParameter* names = params.find("materials");
-    if (!names || names->strings.size() != 2) params.fail("mix material needs 'materials' naming two materials");
-    float amount = params.getFloat("amount", 0.5f);
-    if (params.getTexture("amount")) context_.warn("mix amount texture", "a textured mix 'amount' is taken as 0.5");
-    amount = std::clamp(amount, 0.0f, 1.0f);
-    PbrtMaterial out;
-    for (auto [index, weight] : {std::pair{0, 1.0f - amount}, std::pair{1, amount}})
-      for (auto [id, p] : named(names->strings[size_t(index)], params.file, params.line).choices)
-        if (weight * p > 0.0f) out.choices.push_back({id, weight * p});
-    if (out.choices.empty()) return fallback();
-    return out;
+// pbrt-v4's MixMaterial: a shading point takes the second material with probability `amount` (a number or a
+// float texture), chosen per point by the kernel (kernel/textured_material.h).
+PbrtMaterial PbrtMaterials::makeMix(const PbrtParameters& params) {
+  const PbrtParameter* names = params.find("materials");
+  if (!names || names->strings.size() != 2) params.fail("mix material needs 'materials' naming two materials");
+  Material m;
+  m.type = MaterialType::Mix;
+  uint32_t depth = 1;
+  for (size_t i = 0; i < 2; ++i) {
+    uint32_t id = named(names->strings[i], params.file, params.line).id;
+    const Material& mixed = context_.scene.materials[id];
+    if (mixed.alphaMode != AlphaMode::Opaque)
+      context_.warn("mix of see-through material",
+                    "'" + names->strings[i] +
+                        "' lets light through ('interface', 'thindielectric'), which a mix "
+                        "does not choose per point: in the mix it is opaque ('interface' a grey diffuse, "
+                        "'thindielectric' a mirror)");
+    auto found = mixDepths_.find(id);
+    if (found != mixDepths_.end()) depth = std::max(depth, found->second + 1);
+    m.mixedMaterials[i] = id;
   }
+  if (depth > kMaxMixDepth) params.fail("mix materials nest more than " + std::to_string(kMaxMixDepth) + " deep");
+  PbrtTexture amount = textures_.value(params, "amount", {0.5f, 0.5f, 0.5f});
+  m.mixAmountTexture = amount.image;
+  // With an image the factor scales texels, which may lie below 1; alone it is the probability.
+  m.mixAmount = amount.image != kNoTexture ? std::max(0.0f, amount.factor.x) : std::clamp(amount.factor.x, 0.0f, 1.0f);
+  if (!std::isfinite(m.mixAmount)) params.fail("mix material's 'amount' is not a finite number");
+  uint32_t id = add(m, pendingName_.empty() ? "pbrt mix" : pendingName_);
+  mixDepths_[id] = depth;
+  // A mesh's texture coordinates take one mapping (uvMapping): a mixed material's, else the amount texture's.
+  for (uint32_t mixed : m.mixedMaterials)
+    if (auto found = uvMappings_.find(mixed); found != uvMappings_.end() && !uvMappings_.count(id))
+      uvMappings_[id] = found->second;
+  if (!uvMappings_.count(id) && amount.image != kNoTexture) uvMappings_[id] = {amount.uvScale, amount.uvOffset};
+  return PbrtMaterial{id};
+}
+
+PbrtMaterial PbrtMaterials::make(const std::string& type, const PbrtParameters& params) {
+  if (type == "mix") return makeMix(params);
   const PbrtTexture* baseTexture = nullptr;
   Material m = translate(type, params, baseTexture);
   std::string name = pendingName_.empty() ? "pbrt " + type : pendingName_;
-  return PbrtMaterial{{{add(m, name, baseTexture), 1.0f}}};
+  return PbrtMaterial{add(m, name, baseTexture)};
 }
 
 void PbrtMaterials::defineNamed(const std::string& name, const PbrtParameters& params) {

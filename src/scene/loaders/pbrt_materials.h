@@ -1,8 +1,8 @@
 #pragma once
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
-#include <vector>
 
 #include "scene/loaders/pbrt_context.h"
 #include "scene/loaders/pbrt_parameters.h"
@@ -10,10 +10,9 @@
 
 namespace candela {
 
-// A pbrt material as candela materials: usually one, several for `mix` (each with the probability that a
-// triangle takes it: pbrt picks per shading point, candela per triangle).
+// A pbrt material as a candela material: its id in the scene's list (for `mix`, a Mix over the two it mixes).
 struct PbrtMaterial {
-  std::vector<std::pair<uint32_t, float>> choices;  // scene material id, probability
+  uint32_t id = 0;
 };
 
 // Turns pbrt's materials into candela's models (docs/pbrt-v4.md lists how), appending them to the scene.
@@ -34,11 +33,13 @@ class PbrtMaterials {
  private:
   uint32_t add(const Material& m, const std::string& name, const PbrtTexture* baseTexture = nullptr);
   Material translate(const std::string& type, const PbrtParameters& params, const PbrtTexture*& baseTexture);
+  PbrtMaterial makeMix(const PbrtParameters& params);
 
   PbrtContext& context_;
   PbrtTextures& textures_;
   std::map<std::string, PbrtMaterial> named_;
   std::map<uint32_t, std::pair<Vec2, Vec2>> uvMappings_;
+  std::map<uint32_t, uint32_t> mixDepths_;  // per mix: the most mixes a chain from it passes (kMaxMixDepth bounds it)
   std::optional<uint32_t> fallback_;
   std::string pendingName_;
   PbrtTexture baseTexture_;
