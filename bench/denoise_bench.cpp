@@ -19,22 +19,12 @@ void atrousFivePasses(benchmark::State& state) {
 }
 BENCHMARK(atrousFivePasses)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// The frame with emitted light in the top `percent` percent of its rows (a sky, say) added to its colour.
-bench::FilterInput withEmission(bench::FilterInput in, int percent) {
-  const size_t rows = size_t(in.color.height) * size_t(percent) / 100;
-  for (size_t i = 0; i < rows * in.color.width; ++i) {
-    in.aovs.emission.pixels[i] = Vec3{1.0f, 0.9f, 0.8f} * (1.0f + 0.1f * in.color.pixels[i].x);
-    in.color.pixels[i] = in.color.pixels[i] + in.aovs.emission.pixels[i];
-  }
-  return in;
-}
-
 // Reprojection, accumulation and the a-trous passes (reflected light and emission) of a frame whose camera moved
 // a little since the last, with emitters seen in the given percentage of rows: the emission's passes skip the rows
 // and columns far from any, so 100 is the worst case. (The random frame's depths do not match a camera, so much of
 // the history is rejected: the same taps are read and weighed either way.)
 void temporalAndAtrous(benchmark::State& state) {
-  const bench::FilterInput in = withEmission(bench::noisyFrame(), int(state.range(0)));
+  const bench::FilterInput in = bench::withEmission(bench::noisyFrame(), int(state.range(0)));
   TemporalFilter filter;
   Camera camera = Camera::lookAt({0, 5, 0}, {0, 0, 0}, {0, 0, 1}, 40.0f, 1920.0f / 1080.0f);
   filter.filter({in.color, in.aovs, camera, 1, false});
