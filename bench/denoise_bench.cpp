@@ -20,10 +20,11 @@ void atrousFivePasses(benchmark::State& state) {
 BENCHMARK(atrousFivePasses)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // Reprojection, accumulation and the a-trous passes (reflected light and emission) of a frame whose camera moved
-// a little since the last. (The random frame's depths do not match a camera, so much of the history is rejected:
-// the same taps are read and weighed either way.)
+// a little since the last, with emitters seen in the given percentage of rows: the emission's passes skip the rows
+// and columns far from any, so 100 is the worst case. (The random frame's depths do not match a camera, so much of
+// the history is rejected: the same taps are read and weighed either way.)
 void temporalAndAtrous(benchmark::State& state) {
-  const bench::FilterInput in = bench::noisyFrame();
+  const bench::FilterInput in = bench::withEmission(bench::noisyFrame(), int(state.range(0)));
   TemporalFilter filter;
   Camera camera = Camera::lookAt({0, 5, 0}, {0, 0, 0}, {0, 0, 1}, 40.0f, 1920.0f / 1080.0f);
   filter.filter({in.color, in.aovs, camera, 1, false});
@@ -32,7 +33,7 @@ void temporalAndAtrous(benchmark::State& state) {
     benchmark::DoNotOptimize(filter.filter({in.color, in.aovs, camera, 1, false}));
   }
 }
-BENCHMARK(temporalAndAtrous)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(temporalAndAtrous)->Arg(0)->Arg(25)->Arg(100)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void bilateralRadius3(benchmark::State& state) {
   const bench::FilterInput in = bench::noisyFrame();

@@ -1,5 +1,5 @@
-// The CUDA filters at 1920x1080 on images already in device memory, timed with CUDA events: 20 untimed runs,
-// then the median of 100. Prints one JSON line per filter.
+// The CUDA filters (a-trous, temporal with a-trous, bilateral) at 1920x1080 on images already in device memory, timed
+// with CUDA events: 20 untimed runs, then the median of 100. Prints one JSON line per filter.
 #include <cuda_runtime.h>
 
 #include <algorithm>
@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "backends/optix/filters/cuda_filters.h"
+#include "backends/optix/filters/cuda_temporal.h"
 #include "backends/optix/optix_error.h"
 #include "filter_inputs.h"
 
@@ -64,11 +65,31 @@ int main() {
     const double atrousMs = medianMilliseconds(stream, [&] {
       atrous.run(film, variance.as<float>(), halves.as<float>(), out.as<Vec3>(), params, stream);
     });
+    // Reprojection, accumulation and the a-trous passes (reflected light and emission) of a frame whose camera moved
+    // a little since the last, as the CPU benchmark's temporalAndAtrous.
+    // With emitted light in a quarter of the rows, which the emission's passes do not skip.
+    const bench::FilterInput sky = bench::withEmission(in, 25);
+    DeviceBuffer skyColor = DeviceBuffer::fromVector(sky.color.pixels, "the image with emission");
+    DeviceBuffer skyEmission = DeviceBuffer::fromVector(sky.aovs.emission.pixels, "the emission");
+    FilmView skyFilm = film;
+    skyFilm.radiance = skyColor.as<Vec3>();
+    skyFilm.emission = skyEmission.as<Vec3>();
+    CudaTemporal temporal;
+    Camera camera = Camera::lookAt({0, 5, 0}, {0, 0, 0}, {0, 0, 1}, 40.0f, float(w) / float(h));
+    temporal.run(skyFilm, w, h, camera, 1, false, out.as<Vec3>(), stream);
+    const double temporalMs = medianMilliseconds(stream, [&] {
+      camera.position.x += 1e-4f;
+      temporal.run(skyFilm, w, h, camera, 1, false, out.as<Vec3>(), stream);
+    });
     const double bilateralMs =
         medianMilliseconds(stream, [&] { cudaBilateral(film, out.as<Vec3>(), w, h, BilateralParams{}, stream); });
     std::printf(
         "{\"filter\":\"atrous\",\"passes\":5,\"width\":%u,\"height\":%u,\"device\":\"%s\",\"median_ms\":%.4f}\n", w, h,
         properties.name, atrousMs);
+    std::printf(
+        "{\"filter\":\"temporal\",\"passes\":5,\"emitting_rows_percent\":25,\"width\":%u,\"height\":%u,\"device\":\"%"
+        "s\",\"median_ms\":%.4f}\n",
+        w, h, properties.name, temporalMs);
     std::printf(
         "{\"filter\":\"bilateral\",\"radius\":3,\"width\":%u,\"height\":%u,\"device\":\"%s\",\"median_ms\":%.4f}\n", w,
         h, properties.name, bilateralMs);

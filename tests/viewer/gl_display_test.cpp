@@ -85,6 +85,31 @@ TEST_F(GlDisplay, BilateralPassMatchesTheCpuFilter) {
   }
 }
 
+// With the emission beside the image, the pass smooths only the rest and adds the emission back, as the CPU and
+// CUDA filters do: a bright emitter (part of the image, as the backend's emission is) is not smeared over its
+// neighbours. Without the emission apart the same pass differs by far more than the tolerance.
+TEST_F(GlDisplay, BilateralPassKeepsTheEmissionApart) {
+  Image input = testImage(67, 53);
+  Image emission(input.width, input.height);
+  for (uint32_t y = 10; y < 30; ++y)
+    for (uint32_t x = 5; x < 25; ++x) {
+      emission.at(x, y) = {40.0f, 30.0f, 20.0f};
+      input.at(x, y) = input.at(x, y) + emission.at(x, y);
+    }
+  display_->upload(input, &emission);
+  for (BilateralParams params : {BilateralParams{1, 1.0f, 0.1f}, BilateralParams{3, 2.0f, 5.0f}}) {
+    const Image gpu = display_->bilateralOnGpu(params);
+    EXPECT_LE(worstRelativeError(gpu, bilateralFilter(input, emission, params)), kBilateralTolerance)
+        << "radius " << params.radius << ", range sigma " << params.rangeSigma;
+    EXPECT_GT(worstRelativeError(gpu, bilateralFilter(input, params)), 1e-2)
+        << "the emission made no difference at radius " << params.radius;
+  }
+  // An image uploaded without emission is filtered whole again.
+  display_->upload(input);
+  EXPECT_LE(worstRelativeError(display_->bilateralOnGpu(BilateralParams{}), bilateralFilter(input, BilateralParams{})),
+            kBilateralTolerance);
+}
+
 std::vector<uint8_t> cpuDisplayBytes(const Image& image, float exposure, ToneMapper mapper) {
   std::vector<uint8_t> bytes;
   for (const Vec3& p : image.pixels) {

@@ -139,7 +139,7 @@ TEST_F(ViewerFiles, ScreenshotShowsWhatThePostSettingsShow) {
   post.bilateral = true;
   post.bilateralParams = {2, 1.0f, 0.5f};
   const fs::path file = dir / "shot.png";
-  saveScreenshot(file.string(), image, post);
+  saveScreenshot(file.string(), image, Image(), post);
 
   int w = 0, h = 0, n = 0;
   unsigned char* bytes = stbi_load(file.c_str(), &w, &h, &n, 3);
@@ -156,7 +156,42 @@ TEST_F(ViewerFiles, ScreenshotShowsWhatThePostSettingsShow) {
   }
   EXPECT_GT(unfilteredDiffers, 0);
   stbi_image_free(bytes);
-  EXPECT_THROW(saveScreenshot((dir / "shot.bmp").string(), image, post), std::runtime_error);
+  EXPECT_THROW(saveScreenshot((dir / "shot.bmp").string(), image, Image(), post), std::runtime_error);
+}
+
+// With the emission the backend records, the bilateral filter keeps it apart, as the window's pass does: a bright
+// emitter in the corner stays where it is instead of being smeared over its neighbours.
+TEST_F(ViewerFiles, ScreenshotKeepsTheEmissionApartFromTheBilateralFilter) {
+  Image image(16, 8), emission(16, 8);
+  for (uint32_t y = 0; y < 8; ++y)
+    for (uint32_t x = 0; x < 16; ++x) {
+      image.at(x, y) = {0.1f * float((x + y) % 3), 0.2f, 0.3f};
+      if (x < 4 && y < 4) {
+        emission.at(x, y) = {8.0f, 6.0f, 4.0f};
+        image.at(x, y) = image.at(x, y) + emission.at(x, y);
+      }
+    }
+  PostSettings post;
+  post.display = {-4.0f, ToneMapper::Clamp};  // the emitter's 8 shows as 0.5: nothing clipped
+  post.bilateral = true;
+  post.bilateralParams = {2, 1.0f, 5.0f};  // wide enough in range to smear the emitter without the emission apart
+  const fs::path file = dir / "emitter.png";
+  saveScreenshot(file.string(), image, emission, post);
+  int w = 0, h = 0, n = 0;
+  unsigned char* bytes = stbi_load(file.c_str(), &w, &h, &n, 3);
+  ASSERT_NE(bytes, nullptr);
+  ASSERT_EQ(w * h, 16 * 8);
+  const Image expected = bilateralFilter(image, emission, post.bilateralParams),
+              smeared = bilateralFilter(image, post.bilateralParams);
+  int smearedDiffers = 0;
+  for (size_t i = 0; i < expected.pixels.size(); ++i) {
+    const Vec3 e = toneMap(expected.pixels[i], -4.0f, ToneMapper::Clamp);
+    const Vec3 wrong = toneMap(smeared.pixels[i], -4.0f, ToneMapper::Clamp);
+    EXPECT_EQ(bytes[3 * i], uint8_t(e.x * 255.0f + 0.5f));
+    smearedDiffers += bytes[3 * i] != uint8_t(wrong.x * 255.0f + 0.5f);
+  }
+  stbi_image_free(bytes);
+  EXPECT_GT(smearedDiffers, 0);
 }
 
 }  // namespace

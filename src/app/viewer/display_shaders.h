@@ -13,31 +13,42 @@ void main() {
 }
 )";
 
-// The sum of image/filters/bilateral.cpp, texel for texel: the output has the input's layout.
+// The sum of image/filters/bilateral.cpp, texel for texel: the output has the input's layout. With
+// `separateEmission`, the part of the image the camera sees emitted (`emission`, Backend::readEmission) is kept out
+// of the sum and added back after, as bilateralFilter(input, emission, params) does (bilateralReflected in
+// bilateral_kernel.h): an emitter is not smeared over its surroundings, nor they over it.
 inline constexpr const char* kBilateralFragmentShader = R"(#version 330 core
 uniform sampler2D image;
+uniform sampler2D emission;
+uniform bool separateEmission;
 uniform int radius;
 uniform float spatialScale;  // 1 / (2 spatialSigma^2)
 uniform float rangeScale;    // 1 / (2 rangeSigma^2)
 out vec4 result;
+vec3 filtered(ivec2 q) {
+  vec3 c = texelFetch(image, q, 0).rgb;
+  if (!separateEmission) return c;
+  return min(max(c - texelFetch(emission, q, 0).rgb, vec3(0.0)), vec3(1e18));
+}
 void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
   ivec2 size = textureSize(image, 0);
-  vec3 centre = texelFetch(image, p, 0).rgb;
+  vec3 centre = filtered(p);
   vec3 sum = vec3(0.0);
   float weightSum = 0.0;
   for (int dy = -radius; dy <= radius; ++dy) {
     if (p.y + dy < 0 || p.y + dy >= size.y) continue;
     for (int dx = -radius; dx <= radius; ++dx) {
       if (p.x + dx < 0 || p.x + dx >= size.x) continue;
-      vec3 c = texelFetch(image, p + ivec2(dx, dy), 0).rgb;
+      vec3 c = filtered(p + ivec2(dx, dy));
       vec3 d = c - centre;
       float weight = exp(-float(dx * dx + dy * dy) * spatialScale - dot(d, d) * rangeScale);
       sum += c * weight;
       weightSum += weight;
     }
   }
-  result = vec4(sum / weightSum, 1.0);
+  vec3 emitted = separateEmission ? texelFetch(emission, p, 0).rgb : vec3(0.0);
+  result = vec4(sum / weightSum + emitted, 1.0);
 }
 )";
 

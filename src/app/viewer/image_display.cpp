@@ -16,15 +16,20 @@ ImageDisplay::ImageDisplay()
 
 ImageDisplay::~ImageDisplay() { glDeleteVertexArrays(1, &emptyVertexArray_); }
 
-void ImageDisplay::upload(const Image& image) {
+void ImageDisplay::upload(const Image& image, const Image* emission) {
   static_assert(sizeof(Vec3) == 3 * sizeof(float));
+  if (emission && (emission->width != image.width || emission->height != image.height))
+    throw std::invalid_argument("the emission image differs in size from the image");
   source_.upload(GLsizei(image.width), GLsizei(image.height), &image.pixels.data()->x);
+  hasEmission_ = emission != nullptr;
+  if (hasEmission_) emission_.upload(GLsizei(emission->width), GLsizei(emission->height), &emission->pixels.data()->x);
 }
 
 void ImageDisplay::uploadFromPixelBuffer(GLuint buffer, GLsizei width, GLsizei height) {
   glBindBuffer(GL_PIXEL_UNPACK_BUFFER, buffer);
   source_.upload(width, height, nullptr);  // with an unpack buffer bound, the pointer is an offset into it
   glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+  hasEmission_ = false;
 }
 
 const GlTexture& ImageDisplay::runBilateral(const BilateralParams& params) {
@@ -41,6 +46,11 @@ const GlTexture& ImageDisplay::runBilateral(const BilateralParams& params) {
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, source_.id());
   glUniform1i(bilateral_.uniform("image"), 0);
+  glActiveTexture(GL_TEXTURE1);
+  glBindTexture(GL_TEXTURE_2D, hasEmission_ ? emission_.id() : source_.id());  // unread without emission
+  glUniform1i(bilateral_.uniform("emission"), 1);
+  glUniform1i(bilateral_.uniform("separateEmission"), hasEmission_ ? 1 : 0);
+  glActiveTexture(GL_TEXTURE0);
   glUniform1i(bilateral_.uniform("radius"), params.radius);
   glUniform1f(bilateral_.uniform("spatialScale"), 1.0f / (2.0f * params.spatialSigma * params.spatialSigma));
   glUniform1f(bilateral_.uniform("rangeScale"), 1.0f / (2.0f * params.rangeSigma * params.rangeSigma));

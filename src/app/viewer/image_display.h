@@ -16,8 +16,10 @@ class ImageDisplay {
   ImageDisplay(const ImageDisplay&) = delete;
   ImageDisplay& operator=(const ImageDisplay&) = delete;
 
-  void upload(const Image& image);
-  // The same from a pixel buffer object holding width * height RGB floats (row 0 first), GPU to GPU.
+  // The image to show and, unless null, the part of it the camera sees emitted (Backend::readEmission, of the same
+  // size), which the bilateral pass then keeps apart: it smooths the rest and adds the emission back.
+  void upload(const Image& image, const Image* emission = nullptr);
+  // The image from a pixel buffer object holding width * height RGB floats (row 0 first), GPU to GPU; no emission.
   void uploadFromPixelBuffer(GLuint buffer, GLsizei width, GLsizei height);
   // Draws the uploaded image, stretched over the viewport (x, y, width, height) of the current framebuffer.
   void draw(const PostSettings& post, int x, int y, int width, int height);
@@ -30,6 +32,8 @@ class ImageDisplay {
   GlProgram bilateral_;
   GlProgram toneMap_;
   GlTexture source_;
+  GlTexture emission_;
+  bool hasEmission_ = false;  // emission_ belongs to source_
   GlTexture filtered_;
   GlFramebuffer filteredTarget_;
   GLuint emptyVertexArray_ = 0;

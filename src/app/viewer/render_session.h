@@ -45,6 +45,8 @@ class RenderSession {
   uint64_t frames() const { return frames_; }
   const RenderSettings& appliedSettings() const { return applied_; }
   Image image() const { return backend_->readImage(); }
+  // The part of image() the camera sees emitted (AOVs enabled).
+  Image emission() const { return backend_->readEmission(); }
   // Starts or stops accumulating the AOVs; a change restarts the accumulation.
   void setAovsEnabled(bool enabled);
   // The accumulated image through the backend's a-trous denoiser (AOVs enabled).

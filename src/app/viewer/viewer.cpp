@@ -55,6 +55,8 @@ class Viewer {
   void report(const std::string& message, bool isError);
   void prepareDenoiser();
   Image accumulatedImage();
+  // The emission for saveScreenshot: empty where the backend does not record it (no AOVs).
+  Image screenshotEmission() const;
 
   ViewerOptions options_;
   GlfwWindow window_;
@@ -232,9 +234,9 @@ void Viewer::handle(const PanelRequests& requests) {
   if (requests.applyMaterials) session_.setMaterialOverrides(controls_.materials);
   try {
     if (requests.saveScreenshot) {
-      Image image = accumulatedImage();
-      saveScreenshot(controls_.screenshotBase + ".png", image, controls_.post);
-      saveScreenshot(controls_.screenshotBase + ".exr", image, controls_.post);
+      const Image image = accumulatedImage(), emission = screenshotEmission();
+      saveScreenshot(controls_.screenshotBase + ".png", image, emission, controls_.post);
+      saveScreenshot(controls_.screenshotBase + ".exr", image, emission, controls_.post);
       report("saved " + controls_.screenshotBase + ".png and .exr", false);
     }
     if (requests.saveSceneFile) {
@@ -287,13 +289,19 @@ void Viewer::frame(double now, double seconds) {
   settings.lightSampler = options_.lightSampler;
   auto start = std::chrono::steady_clock::now();
   prepareDenoiser();
-  session_.setAovsEnabled(controls_.post.denoiser != DenoiserChoice::None);
+  // The bilateral pass keeps the emission apart, which the backend records with the AOVs.
+  session_.setAovsEnabled(controls_.post.denoiser != DenoiserChoice::None || controls_.post.bilateral);
   session_.renderFrame(camera, settings, lastPlan_.samplesPerPixel, controls_.accumulate);
-  // The denoised image is made on the host side of the backend; the plain one may stay on the device (interop).
-  if (controls_.post.denoiser != DenoiserChoice::None)
+  // The denoised image is made on the host side of the backend, and the emission the bilateral pass needs is read
+  // from there; otherwise the image may stay on the device (interop).
+  if (controls_.post.bilateral) {
+    const Image emission = session_.emission();
+    display_.upload(accumulatedImage(), &emission);
+  } else if (controls_.post.denoiser != DenoiserChoice::None) {
     display_.upload(accumulatedImage());
-  else
+  } else {
     transfer_.transfer(session_, display_);
+  }
   policy_.recordFrame(lastPlan_, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
 
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -322,6 +330,8 @@ void Viewer::prepareDenoiser() {
 }
 
 // What the window shows before its GPU passes: the film, through the chosen denoiser.
+Image Viewer::screenshotEmission() const { return session_.backend().aovsEnabled() ? session_.emission() : Image(); }
+
 Image Viewer::accumulatedImage() {
   return denoiser_.apply(session_, controls_.post.denoiser, controls_.post.atrousParams);
 }
@@ -371,7 +381,8 @@ void Viewer::writeState() {
 
 void Viewer::writeExitFiles() {
   if (!options_.windowCapture.empty()) captureWindow(options_.windowCapture, framebufferWidth_, framebufferHeight_);
-  if (!options_.screenshot.empty()) saveScreenshot(options_.screenshot, accumulatedImage(), controls_.post);
+  if (!options_.screenshot.empty())
+    saveScreenshot(options_.screenshot, accumulatedImage(), screenshotEmission(), controls_.post);
 }
 
 int Viewer::run() {

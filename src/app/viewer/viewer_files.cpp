@@ -25,9 +25,12 @@ void writeJson(const std::string& path, const nlohmann::ordered_json& json) {
 
 }  // namespace
 
-void saveScreenshot(const std::string& path, const Image& accumulated, const PostSettings& post) {
-  if (post.bilateral)
+void saveScreenshot(const std::string& path, const Image& accumulated, const Image& emission,
+                    const PostSettings& post) {
+  if (post.bilateral && emission.pixels.empty())
     writeImage(path, bilateralFilter(accumulated, post.bilateralParams), post.display);
+  else if (post.bilateral)
+    writeImage(path, bilateralFilter(accumulated, emission, post.bilateralParams), post.display);
   else
     writeImage(path, accumulated, post.display);
 }

@@ -11,9 +11,9 @@ namespace candela {
 // The files the viewer writes. Each throws std::runtime_error with a sentence naming the file on failure.
 
 // The accumulated image (denoised where the a-trous denoiser is on) as the window shows it: through the CPU
-// bilateral filter when it is on; a .png is tone
-// mapped with the panel's settings, an .exr or .pfm stays linear.
-void saveScreenshot(const std::string& path, const Image& accumulated, const PostSettings& post);
+// bilateral filter when it is on, which keeps `emission` (the part of the image the camera sees emitted) apart
+// unless it is empty; a .png is tone mapped with the panel's settings, an .exr or .pfm stays linear.
+void saveScreenshot(const std::string& path, const Image& accumulated, const Image& emission, const PostSettings& post);
 
 // The view as a JSON scene file (docs/scene-file.md's format): "models" naming the scene's source when it is a
 // model file (.obj, .gltf, .glb) or taken over from a scene file (paths made absolute), the camera, the

@@ -14,6 +14,7 @@
 #include "backends/optix/device_scene.h"
 #include "backends/optix/film_addition.h"
 #include "backends/optix/filters/cuda_filters.h"
+#include "backends/optix/filters/cuda_temporal.h"
 #include "backends/optix/launch_params.h"
 #include "backends/optix/mean_image.h"
 #include "backends/optix/optix_context.h"
@@ -295,6 +296,30 @@ Image OptixBackend::readBilateralFiltered(const BilateralParams& params) const {
   validateBilateralParams(params);
   cudaBilateral(s.film.view(), s.filterOutput(), s.settings.width, s.settings.height, params, s.context.stream());
   return s.downloadFiltered();
+}
+
+// The temporal filter on the backend's film in device memory.
+class OptixBackend::DeviceTemporalDenoiser : public TemporalDenoiser {
+ public:
+  DeviceTemporalDenoiser(const OptixBackend& backend, const TemporalParams& params)
+      : backend_(backend), filter_(params) {}
+  Image denoise(const Camera& camera, bool filmContinues) override {
+    State& s = *backend_.state_;
+    if (!s.aovsEnabled) throw std::logic_error("the temporal filter without setAovsEnabled(true)");
+    filter_.run(s.film.view(), s.settings.width, s.settings.height, camera, s.accumulated, filmContinues,
+                s.filterOutput(), s.context.stream());
+    return s.downloadFiltered();
+  }
+  void reset() override { filter_.reset(); }
+  const TemporalParams& params() const override { return filter_.params(); }
+
+ private:
+  const OptixBackend& backend_;
+  CudaTemporal filter_;
+};
+
+std::unique_ptr<TemporalDenoiser> OptixBackend::makeTemporalDenoiser(const TemporalParams& params) const {
+  return std::make_unique<DeviceTemporalDenoiser>(*this, params);
 }
 
 std::array<unsigned char, 16> OptixBackend::deviceUuid() const {

@@ -44,6 +44,8 @@ class OptixBackend final : public Backend, public DeviceImage {
   // The CUDA versions of the CPU filters, run on the film in device memory; only the result comes back.
   Image readAtrousDenoised(const AtrousParams& params) const override;
   Image readBilateralFiltered(const BilateralParams& params) const override;
+  // The CUDA version of the temporal filter, its history kept in device memory; only the result comes back.
+  std::unique_ptr<TemporalDenoiser> makeTemporalDenoiser(const TemporalParams& params) const override;
 
   // The image stays on the GPU for consumers there (CUDA-OpenGL interop).
   const DeviceImage* deviceImage() const override { return this; }
@@ -70,6 +72,7 @@ class OptixBackend final : public Backend, public DeviceImage {
   AccelerationStatistics accelerationStatistics() const;
 
  private:
+  class DeviceTemporalDenoiser;
   struct State;
   std::unique_ptr<State> state_;
 };

@@ -8,6 +8,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "image/filters/atrous_kernel.h"
 #include "image/filters/planes.h"
@@ -30,9 +31,9 @@ enum Plane : size_t {
   kPlaneCount = kColour + 6
 };
 
+// The workspace's planes by name.
 struct Planes {
-  PlaneStack stack;
-  explicit Planes(size_t pixels) : stack(kPlaneCount, pixels) {}
+  PlaneStack& stack;
   const float* operator[](Plane p) const { return stack[p]; }
   float* operator[](Plane p) { return stack[p]; }
   // The demodulated colour in the two buffers the passes alternate between.
@@ -146,6 +147,38 @@ __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"))) vo
   edgePixel(w - 1);
 }
 
+// The columns [first, last) of a row outside which a signal is zero in every channel; first == last where all of
+// the row is.
+struct NonZeroColumns {
+  int first = 0, last = 0;
+};
+
+NonZeroColumns nonZeroColumns(const RgbPlanes& c, size_t row, int w) {
+  auto nonZero = [&](int x) { return c.r[row + x] != 0.0f || c.g[row + x] != 0.0f || c.b[row + x] != 0.0f; };
+  int first = 0;
+  while (first < w && !nonZero(first)) ++first;
+  if (first == w) return {};
+  int last = w;
+  while (!nonZero(last - 1)) --last;
+  return {first, last};
+}
+
+// The columns of row y where a pass may give a pixel other than zero: those with a tap in a non-zero column.
+// Elsewhere every tap is zero, so the weighted mean is (exactly) zero: a signal that is zero in most pixels (the
+// emission, where a few lights are seen) is filtered only around where it is not.
+NonZeroColumns outputColumns(const std::vector<NonZeroColumns>& columns, int y, int w, int h, int step) {
+  int first = w, last = 0;
+  for (int dy = -2; dy <= 2; ++dy) {
+    const int qy = y + dy * step;
+    if (qy < 0 || qy >= h || columns[qy].first == columns[qy].last) continue;
+    first = std::min(first, columns[qy].first - 2 * step);
+    last = std::max(last, columns[qy].last + 2 * step);
+  }
+  first = std::max(first, 0);
+  last = std::min(last, w);
+  return first < last ? NonZeroColumns{first, last} : NonZeroColumns{};
+}
+
 // One pass, tap by tap over whole rows so that the inner loop vectorises over contiguous pixels; every pixel
 // still sums its taps in the (dy, dx) order of the CUDA version.
 // `variance`, unless null, replaces the neighbourhood's luminance variance where it is not negative.
@@ -153,11 +186,15 @@ void atrousPass(Planes& planes, int from, int w, int h, const AtrousPassConstant
                 const float* variance) {
   const RgbPlanes in = planes.colour(from), out = planes.colour(1 - from);
   float *lum = planes[kLuminance], *inverseWidth = planes[kInverseWidth];
+  std::vector<NonZeroColumns> columns(static_cast<size_t>(h));
   tbb::parallel_for(0, h, [&](int y) {
     const size_t row = size_t(y) * w;
     for (int x = 0; x < w; ++x) lum[row + x] = luminance(in.get(row + x));
+    columns[y] = nonZeroColumns(in, row, w);
   });
   tbb::parallel_for(0, h, [&](int y) {
+    const NonZeroColumns cols = outputColumns(columns, y, w, h, k.step);
+    if (cols.first == cols.last) return;  // the row's output is zero
     float* row = inverseWidth + size_t(y) * w;
     inverseColorWidthRow(lum, w, h, y, colorSigma, mean, row);
     if (variance)
@@ -170,13 +207,14 @@ void atrousPass(Planes& planes, int from, int w, int h, const AtrousPassConstant
   tbb::parallel_for(tbb::blocked_range<int>(0, h), [&](const tbb::blocked_range<int>& rows) {
     RowSums sums{uint32_t(w)};
     for (int y = rows.begin(); y < rows.end(); ++y) {
-      sums.clear();
       const size_t row = size_t(y) * w;
+      const NonZeroColumns cols = outputColumns(columns, y, w, h, k.step);
+      sums.clear();
       const CentreRow centre{lum + row, inverseWidth + row, nx + row,    ny + row, nz + row,
                              z + row,   slopeX + row,       slopeY + row};
       // In spans short enough that the rows a span reads stay in the L1 cache over its 25 taps.
-      for (int start = 0; start < w; start += kSpan) {
-        const int end = std::min(w, start + kSpan);
+      for (int start = cols.first; start < cols.last; start += kSpan) {
+        const int end = std::min(cols.last, start + kSpan);
         for (int dy = -2; dy <= 2; ++dy) {
           const int qy = y + dy * k.step;
           if (qy < 0 || qy >= h) continue;
@@ -192,8 +230,10 @@ void atrousPass(Planes& planes, int from, int w, int h, const AtrousPassConstant
           }
         }
       }
-      // The centre tap's weight is b3(0)^2 > 0: the sum of weights is never zero.
-      for (int x = 0; x < w; ++x) out.set(row + x, Vec3{sums.r[x], sums.g[x], sums.b[x]} / sums.weight[x]);
+      // The centre tap's weight is b3(0)^2 > 0: the sum of weights is never zero where taps were summed.
+      for (int x = 0; x < w; ++x)
+        out.set(row + x,
+                x >= cols.first && x < cols.last ? Vec3{sums.r[x], sums.g[x], sums.b[x]} / sums.weight[x] : Vec3{});
     }
   });
 }
@@ -216,15 +256,31 @@ void validateAtrousInput(const Image& color, const AovImages& aovs, const Atrous
     throw std::invalid_argument("the a-trous filter's AOVs differ in size from the image");
 }
 
-namespace {
+AtrousWorkspace::AtrousWorkspace() = default;
+AtrousWorkspace::~AtrousWorkspace() = default;
 
-// Runs `passes` passes on planes.colour(0) and returns the planes that hold the result; `afterFirstPass`, unless
-// null, receives the planes after the first, whose colour widths come from `firstPassVariance` where it is given.
-RgbPlanes runPasses(Planes& planes, int w, int h, const AtrousParams& params,
-                    const std::function<void(const RgbPlanes&)>& afterFirstPass = nullptr,
-                    const float* firstPassVariance = nullptr) {
-  const size_t pixels = size_t(w) * h;
-  const float mean = meanLuminance(planes.colour(0), pixels);
+void AtrousWorkspace::setGuides(const AovImages& guides) {
+  if (!stack_ || guides.width() != width_ || guides.height() != height_) {
+    stack_.reset();
+    width_ = guides.width();
+    height_ = guides.height();
+    stack_ = std::make_unique<PlaneStack>(kPlaneCount, size_t(width_) * height_);
+  }
+  Planes planes{*stack_};
+  fillGuides(guides, planes);
+}
+
+RgbPlanes AtrousWorkspace::signal() { return Planes{*stack_}.colour(0); }
+
+float* AtrousWorkspace::scratch() { return (*stack_)[kInverseWidth]; }
+
+RgbPlanes AtrousWorkspace::runPasses(const AtrousParams& params,
+                                     const std::function<void(const RgbPlanes&)>& afterFirstPass,
+                                     const float* firstPassVariance) {
+  Planes planes{*stack_};
+  const int w = int(width_), h = int(height_);
+  const float mean = meanLuminance(planes.colour(0), size_t(w) * h);
+  if (params.passes == 0 && afterFirstPass) afterFirstPass(planes.colour(0));
   for (int pass = 0; pass < params.passes; ++pass) {
     atrousPass(planes, pass % 2, w, h, atrousPassConstants(params, pass), params.colorSigma, mean,
                pass == 0 ? firstPassVariance : nullptr);
@@ -233,32 +289,24 @@ RgbPlanes runPasses(Planes& planes, int w, int h, const AtrousParams& params,
   return planes.colour(params.passes % 2);
 }
 
-Image imageOf(const RgbPlanes& planes, uint32_t w, uint32_t h) {
-  Image image(w, h);
-  tbb::parallel_for(size_t(0), image.pixels.size(), [&](size_t i) { image.pixels[i] = planes.get(i); });
-  return image;
-}
-
-}  // namespace
-
 Image atrousDenoise(const Image& color, const AovImages& aovs, const AtrousParams& params) {
   validateAtrousInput(color, aovs, params);
   const int w = int(color.width), h = int(color.height);
   const size_t pixels = color.pixels.size();
-  Planes planes(pixels);
-  fillGuides(aovs, planes);
-  const RgbPlanes input = planes.colour(0);
+  AtrousWorkspace workspace;
+  workspace.setGuides(aovs);
+  const RgbPlanes input = workspace.signal();
   tbb::parallel_for(size_t(0), pixels, [&](size_t i) {
     input.set(i, demodulate(color.pixels[i], aovs.emission.pixels[i], aovs.albedo.pixels[i]));
   });
-  const RgbPlanes reflected = runPasses(planes, w, h, params);
+  const RgbPlanes reflected = workspace.runPasses(params);
   Image result(color.width, color.height);
   tbb::parallel_for(size_t(0), pixels,
                     [&](size_t i) { result.pixels[i] = remodulate(reflected.get(i), aovs.albedo.pixels[i]); });
   tbb::parallel_for(size_t(0), pixels, [&](size_t i) { input.set(i, filterableEmission(aovs.emission.pixels[i])); });
-  const RgbPlanes emission = runPasses(planes, w, h, params);
-  // The variance of each pixel's mean (stratifiedVariance), in the plane the passes are done with.
-  float* variance = planes[kInverseWidth];
+  const RgbPlanes emission = workspace.runPasses(params);
+  // The variance of each pixel's mean (stratifiedVariance), in a plane the passes are done with.
+  float* variance = workspace.scratch();
   auto boundAt = [&](int x, int y) { return aovs.variance[size_t(y) * w + x]; };
   auto halvesAt = [&](int x, int y) { return aovs.halvesVariance[size_t(y) * w + x]; };
   tbb::parallel_for(0, h, [&](int y) {
@@ -273,26 +321,6 @@ Image atrousDenoise(const Image& color, const AovImages& aovs, const AtrousParam
     }
   });
   return result;
-}
-
-Image atrousSmooth(const Image& signal, const AovImages& guides, const AtrousParams& params, Image* firstLevel,
-                   const std::vector<float>* firstPassVariance) {
-  validateAtrousInput(signal, guides, params);
-  if (firstPassVariance && firstPassVariance->size() != signal.pixels.size())
-    throw std::invalid_argument("the a-trous filter's first-pass variance differs in size from the image");
-  const int w = int(signal.width), h = int(signal.height);
-  Planes planes(signal.pixels.size());
-  fillGuides(guides, planes);
-  const RgbPlanes input = planes.colour(0);
-  tbb::parallel_for(size_t(0), signal.pixels.size(), [&](size_t i) { input.set(i, signal.pixels[i]); });
-  if (firstLevel && params.passes == 0) *firstLevel = signal;
-  const RgbPlanes result = runPasses(
-      planes, w, h, params,
-      [&](const RgbPlanes& level) {
-        if (firstLevel) *firstLevel = imageOf(level, signal.width, signal.height);
-      },
-      firstPassVariance ? firstPassVariance->data() : nullptr);
-  return imageOf(result, signal.width, signal.height);
 }
 
 }  // namespace candela

@@ -1,5 +1,9 @@
 #pragma once
+#include <functional>
+#include <memory>
+
 #include "image/aov_images.h"
+#include "image/filters/planes.h"
 #include "image/image.h"
 
 namespace candela {
@@ -22,8 +26,10 @@ struct AtrousParams {
   // from the 3x3 neighbourhood (SVGF's spatial variance estimate): it narrows as the image gets smoother.
   float colorSigma = 1.25f;
   float normalSigma = 1.0f;  // on |n_p - n_q| of unit normals
-  // On |z_p - z_q| over the difference the centre's depth gradient predicts for the tap (SVGF).
-  float depthSigma = 10.0f;
+  // On |z_p - z_q| over the difference the centre's depth gradient predicts for the tap (SVGF). 4 rather than SVGF's
+  // 1 or the 10 this was: on the quality scenes at 4 spp with the Sobol sampler, 10 left the material gallery 3.9x
+  // better than raw and 4 makes it 4.1x (docs/denoising.md, 'With the Sobol sampler').
+  float depthSigma = 4.0f;
 };
 
 constexpr int kMaxAtrousPasses = 10;
@@ -35,11 +41,31 @@ void validateAtrousParams(const AtrousParams& params);
 void validateAtrousInput(const Image& color, const AovImages& aovs, const AtrousParams& params);
 Image atrousDenoise(const Image& color, const AovImages& aovs, const AtrousParams& params);
 
-// The passes alone, on a signal that is already what they should smooth (the temporal filter's accumulated
-// demodulated light), guided by the AOVs' normals and depths; no demodulation and no mix with raw pixels.
-// `firstLevel`, unless null, receives the output of the first pass (SVGF's history). `firstPassVariance`, unless
-// null, gives the first pass the variance of each pixel's luminance (negative: the neighbourhood's, as ever).
-Image atrousSmooth(const Image& signal, const AovImages& guides, const AtrousParams& params, Image* firstLevel,
-                   const std::vector<float>* firstPassVariance = nullptr);
+// The a-trous passes on planes that outlive one image, for the temporal filter: it writes its accumulated signals
+// (already what the passes should smooth: no demodulation, no mix with raw pixels) straight into them frame after
+// frame, and fills the guides once for both of its signals.
+class AtrousWorkspace {
+ public:
+  AtrousWorkspace();
+  ~AtrousWorkspace();
+  // The guide planes from the AOVs' normals and depths; the planes are made for their size, or kept from the last
+  // call where it is the same.
+  void setGuides(const AovImages& guides);
+  // Where runPasses starts: the caller writes the signal there (after setGuides).
+  RgbPlanes signal();
+  // The passes on signal(), guided by the guides set. `afterFirstPass`, unless null, receives the output of the first
+  // pass (SVGF's history; the signal itself for no passes). `firstPassVariance`, unless null, gives the first pass the
+  // variance of each pixel's luminance (negative: the neighbourhood's, as ever). Returns the planes that hold the
+  // result, valid until the next call or until the next signal is written (after an even number of passes they are
+  // signal()'s).
+  RgbPlanes runPasses(const AtrousParams& params, const std::function<void(const RgbPlanes&)>& afterFirstPass = nullptr,
+                      const float* firstPassVariance = nullptr);
+  // A plane of the size free for the caller once runPasses is done, until the next call.
+  float* scratch();
+
+ private:
+  uint32_t width_ = 0, height_ = 0;
+  std::unique_ptr<PlaneStack> stack_;
+};
 
 }  // namespace candela

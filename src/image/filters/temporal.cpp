@@ -75,9 +75,11 @@ Image TemporalFilter::filter(const TemporalFrame& frame) {
     });
   }
 
-  // The film added to it; the reflected light goes through the a-trous passes.
-  Image reflected(width_, height_), emission(width_, height_);
-  std::vector<float> firstPassVariance(pixels);
+  // The film added to it, straight into the planes of the a-trous passes, which the reflected light goes through;
+  // the accumulated emission waits in the new history.
+  workspace_.setGuides(aovs);
+  const RgbPlanes signal = workspace_.signal();
+  variance_.resize(pixels);
   const float samples = float(frame.samples > 0 ? frame.samples : 1);
   tbb::parallel_for(size_t(0), pixels, [&](size_t i) {
     const TemporalSample base{base_.reflected[i], base_.emission[i], base_.length[i], base_.moment1[i],
@@ -85,9 +87,8 @@ Image TemporalFilter::filter(const TemporalFrame& frame) {
     const TemporalSample s =
         accumulateTemporal(base, demodulate(frame.color.pixels[i], aovs.emission.pixels[i], aovs.albedo.pixels[i]),
                            filterableEmission(aovs.emission.pixels[i]), samples);
-    reflected.pixels[i] = s.reflected;
-    emission.pixels[i] = s.emission;
-    firstPassVariance[i] = temporalVariance(s, samples);
+    signal.set(i, s.reflected);
+    variance_[i] = temporalVariance(s, samples);
     last_.emission[i] = s.emission;
     last_.length[i] = s.length;
     last_.moment1[i] = s.moment1;
@@ -96,17 +97,22 @@ Image TemporalFilter::filter(const TemporalFrame& frame) {
     last_.depth[i] = aovs.depth[i];
     last_.emissive[i] = isEmissive(s.emission);
   });
-  Image firstLevel;
-  const Image smoothed = atrousSmooth(reflected, aovs, params_.atrous, &firstLevel, &firstPassVariance);
-  last_.reflected = firstLevel.pixels;
+  // The first level becomes the next frame's history.
+  const RgbPlanes reflected = workspace_.runPasses(
+      params_.atrous,
+      [&](const RgbPlanes& level) {
+        tbb::parallel_for(size_t(0), pixels, [&](size_t i) { last_.reflected[i] = level.get(i); });
+      },
+      variance_.data());
+  Image result(width_, height_);
+  tbb::parallel_for(size_t(0), pixels,
+                    [&](size_t i) { result.pixels[i] = remodulate(reflected.get(i), aovs.albedo.pixels[i]); });
   camera_ = frame.camera;
   haveHistory_ = true;
 
-  const Image smoothedEmission = atrousSmooth(emission, aovs, params_.atrous, nullptr);
-  Image result(width_, height_);
-  tbb::parallel_for(size_t(0), pixels, [&](size_t i) {
-    result.pixels[i] = remodulate(smoothed.pixels[i], aovs.albedo.pixels[i]) + smoothedEmission.pixels[i];
-  });
+  tbb::parallel_for(size_t(0), pixels, [&](size_t i) { signal.set(i, last_.emission[i]); });
+  const RgbPlanes emission = workspace_.runPasses(params_.atrous);
+  tbb::parallel_for(size_t(0), pixels, [&](size_t i) { result.pixels[i] = result.pixels[i] + emission.get(i); });
   return result;
 }
 

@@ -1,63 +1,19 @@
 #include "backends/optix/filters/cuda_filters.h"
 
+#include "backends/optix/filters/cuda_atrous_passes.h"
 #include "backends/optix/optix_error.h"
-#include "image/filters/atrous_kernel.h"
 #include "image/filters/bilateral_kernel.h"
 
 namespace candela::optix {
 
 namespace {
 
-constexpr int kPlaneCount = 15;  // r, g, b, luminance twice; inverse colour width; nx, ny, nz, z, gx, gy
-const dim3 kBlock(16, 16);
-
-dim3 gridFor(uint32_t width, uint32_t height) {
-  return dim3((width + kBlock.x - 1) / kBlock.x, (height + kBlock.y - 1) / kBlock.y);
-}
-
-struct Planes {
-  float* r[2];
-  float* g[2];
-  float* b[2];
-  float* lum[2];
-  float* inverseWidth;
-  float *nx, *ny, *nz, *z, *gx, *gy;
-};
-
-Planes planesOf(float* base, size_t pixels) {
-  Planes p;
-  float* next = base;
-  auto take = [&] {
-    float* plane = next;
-    next += pixels;
-    return plane;
-  };
-  for (int i = 0; i < 2; ++i) {
-    p.r[i] = take();
-    p.g[i] = take();
-    p.b[i] = take();
-    p.lum[i] = take();
-  }
-  p.inverseWidth = take();
-  p.nx = take();
-  p.ny = take();
-  p.nz = take();
-  p.z = take();
-  p.gx = take();
-  p.gy = take();
-  return p;
-}
-
-__device__ float filmDepth(const FilmView& film, int x, int y, int w, int h) {
-  return x < 0 || y < 0 || x >= w || y >= h ? 0.0f : meanAt(film.depth, film.samples, size_t(y) * w + x);
-}
-
 // What the filter smooths, as atrous.cpp does: first the demodulated reflected light, then the emission.
 enum class Signal { Reflected, Emission };
 
 // Fills the colour planes with the signal, and with the reflected light also the guide planes; sums the colour's
 // luminance.
-__global__ void prepareKernel(FilmView film, Planes p, int w, int h, Signal signal, double* luminanceSum) {
+__global__ void prepareKernel(FilmView film, AtrousPlanes p, int w, int h, Signal signal, double* luminanceSum) {
   const int x = int(blockIdx.x * blockDim.x + threadIdx.x), y = int(blockIdx.y * blockDim.y + threadIdx.y);
   double lum = 0.0;
   if (x < w && y < h) {
@@ -66,66 +22,13 @@ __global__ void prepareKernel(FilmView film, Planes p, int w, int h, Signal sign
     const Vec3 c = signal == Signal::Emission ? filterableEmission(emission)
                                               : demodulate(meanAt(film.radiance, film.samples, i), emission,
                                                            meanAt(film.albedo, film.samples, i));
-    p.r[0][i] = c.x;
-    p.g[0][i] = c.y;
-    p.b[0][i] = c.z;
-    lum = luminance(c);
-    p.lum[0][i] = float(lum);
+    lum = setSignal(p, x, y, w, c);
+    if (signal == Signal::Reflected) writeAtrousGuides(film, p, x, y, w, h);
   }
-  if (signal == Signal::Reflected && x < w && y < h) {
-    const size_t i = size_t(y) * w + x;
-    const Vec3 n = unitOrZero(meanAt(film.normal, film.samples, i));
-    p.nx[i] = n.x;
-    p.ny[i] = n.y;
-    p.nz[i] = n.z;
-    const float z = filmDepth(film, x, y, w, h);
-    p.z[i] = z;
-    p.gx[i] = depthSlope(filmDepth(film, x - 1, y, w, h), z, filmDepth(film, x + 1, y, w, h));
-    p.gy[i] = depthSlope(filmDepth(film, x, y - 1, w, h), z, filmDepth(film, x, y + 1, w, h));
-  }
-  for (int offset = 16; offset > 0; offset /= 2) lum += __shfl_down_sync(0xFFFFFFFFu, lum, offset);
-  if ((threadIdx.y * blockDim.x + threadIdx.x) % 32 == 0) atomicAdd(luminanceSum, lum);
+  addToLuminanceSum(lum, luminanceSum);
 }
 
-__global__ void colorWidthKernel(Planes p, int from, int w, int h, float colorSigma, const double* luminanceSum) {
-  const int x = int(blockIdx.x * blockDim.x + threadIdx.x), y = int(blockIdx.y * blockDim.y + threadIdx.y);
-  if (x >= w || y >= h) return;
-  const float mean = float(*luminanceSum / double(size_t(w) * h));
-  p.inverseWidth[size_t(y) * w + x] =
-      atrousInverseColorWidth(localLuminanceVariance(p.lum[from], w, h, x, y), colorSigma, mean);
-}
-
-__global__ void atrousPassKernel(Planes p, int from, int w, int h, AtrousPassConstants k) {
-  const int x = int(blockIdx.x * blockDim.x + threadIdx.x), y = int(blockIdx.y * blockDim.y + threadIdx.y);
-  if (x >= w || y >= h) return;
-  const float *inR = p.r[from], *inG = p.g[from], *inB = p.b[from];
-  const size_t i = size_t(y) * w + x;
-  const AtrousCentre centre{p.lum[from][i], p.inverseWidth[i], p.nx[i], p.ny[i], p.nz[i], p.z[i], p.gx[i], p.gy[i]};
-  float sr = 0.0f, sg = 0.0f, sb = 0.0f, sw = 0.0f;
-  for (int dy = -2; dy <= 2; ++dy) {
-    const int qy = y + dy * k.step;
-    if (qy < 0 || qy >= h) continue;
-    for (int dx = -2; dx <= 2; ++dx) {
-      const int qx = x + dx * k.step;
-      if (qx < 0 || qx >= w) continue;
-      const size_t q = size_t(qy) * w + qx;
-      const float kernelWeight = b3Weight(dx) * b3Weight(dy);
-      const float weight =
-          atrousWeight(dx, dy, kernelWeight, k, centre, p.lum[from][q], p.nx[q], p.ny[q], p.nz[q], p.z[q]);
-      sr += inR[q] * weight;
-      sg += inG[q] * weight;
-      sb += inB[q] * weight;
-      sw += weight;
-    }
-  }
-  const Vec3 out = Vec3{sr, sg, sb} / sw;
-  p.r[1 - from][i] = out.x;
-  p.g[1 - from][i] = out.y;
-  p.b[1 - from][i] = out.z;
-  p.lum[1 - from][i] = luminance(out);
-}
-
-__global__ void remodulateKernel(FilmView film, Planes p, int from, int w, int h, Vec3* output) {
+__global__ void remodulateKernel(FilmView film, AtrousPlanes p, int from, int w, int h, Vec3* output) {
   const int x = int(blockIdx.x * blockDim.x + threadIdx.x), y = int(blockIdx.y * blockDim.y + threadIdx.y);
   if (x >= w || y >= h) return;
   const size_t i = size_t(y) * w + x;
@@ -153,7 +56,8 @@ __global__ void stratifiedVarianceKernel(FilmView film, const float* imageVarian
 
 // Adds the filtered emission to the remodulated reflected light in `output` and mixes the sum with the raw pixel
 // (blendWithRaw) by the variances stratifiedVarianceKernel wrote.
-__global__ void finishKernel(FilmView film, const float* variance, Planes p, int from, int w, int h, Vec3* output) {
+__global__ void finishKernel(FilmView film, const float* variance, AtrousPlanes p, int from, int w, int h,
+                             Vec3* output) {
   const int x = int(blockIdx.x * blockDim.x + threadIdx.x), y = int(blockIdx.y * blockDim.y + threadIdx.y);
   if (x >= w || y >= h) return;
   const size_t i = size_t(y) * w + x;
@@ -196,39 +100,36 @@ __global__ void bilateralKernel(FilmView film, Vec3* output, int w, int h, int r
 CudaAtrous::CudaAtrous(uint32_t width, uint32_t height)
     : width_(width),
       height_(height),
-      planes_(size_t(kPlaneCount) * width * height * sizeof(float), "the a-trous filter's planes"),
+      planes_(atrousPlanesBytes(width, height), "the a-trous filter's planes"),
       luminanceSum_(sizeof(double), "the a-trous filter's luminance sum") {}
 
 void CudaAtrous::run(const FilmView& film, const float* imageVariance, const float* imageHalvesVariance, Vec3* output,
                      const AtrousParams& params, cudaStream_t stream) {
   const int w = int(width_), h = int(height_);
-  const Planes p = planesOf(planes_.as<float>(), size_t(width_) * height_);
-  const dim3 grid = gridFor(width_, height_);
+  const AtrousPlanes p = atrousPlanesOf(planes_.as<void>(), width_, height_);
+  const dim3 grid = filterGridFor(width_, height_);
   double* sum = luminanceSum_.as<double>();
   // Runs the passes on the signal; returns the colour planes that hold the result.
   auto filter = [&](Signal signal) {
     checkCuda(cudaMemsetAsync(sum, 0, sizeof(double), stream), "clearing the a-trous luminance sum");
-    prepareKernel<<<grid, kBlock, 0, stream>>>(film, p, w, h, signal, sum);
-    int from = 0;
-    for (int pass = 0; pass < params.passes; ++pass, from = 1 - from) {
-      colorWidthKernel<<<grid, kBlock, 0, stream>>>(p, from, w, h, params.colorSigma, sum);
-      atrousPassKernel<<<grid, kBlock, 0, stream>>>(p, from, w, h, atrousPassConstants(params, pass));
-    }
-    return from;
+    clearNonZeroRows(p, h, stream);
+    prepareKernel<<<grid, kFilterBlock, 0, stream>>>(film, p, w, h, signal, sum);
+    return enqueueAtrousPasses(p, w, h, params, sum, nullptr, nullptr, stream);
   };
   int from = filter(Signal::Reflected);
-  remodulateKernel<<<grid, kBlock, 0, stream>>>(film, p, from, w, h, output);
+  remodulateKernel<<<grid, kFilterBlock, 0, stream>>>(film, p, from, w, h, output);
   from = filter(Signal::Emission);
   // The passes are done with the colour widths' plane.
-  stratifiedVarianceKernel<<<grid, kBlock, 0, stream>>>(film, imageVariance, imageHalvesVariance, w, h, p.inverseWidth);
-  finishKernel<<<grid, kBlock, 0, stream>>>(film, p.inverseWidth, p, from, w, h, output);
+  stratifiedVarianceKernel<<<grid, kFilterBlock, 0, stream>>>(film, imageVariance, imageHalvesVariance, w, h,
+                                                              p.inverseWidth);
+  finishKernel<<<grid, kFilterBlock, 0, stream>>>(film, p.inverseWidth, p, from, w, h, output);
   checkCuda(cudaGetLastError(), "launching the a-trous filter");
 }
 
 void cudaBilateral(const FilmView& film, Vec3* output, uint32_t width, uint32_t height, const BilateralParams& params,
                    cudaStream_t stream) {
-  bilateralKernel<<<gridFor(width, height), kBlock, 0, stream>>>(film, output, int(width), int(height), params.radius,
-                                                                 bilateralScales(params));
+  bilateralKernel<<<filterGridFor(width, height), kFilterBlock, 0, stream>>>(film, output, int(width), int(height),
+                                                                             params.radius, bilateralScales(params));
   checkCuda(cudaGetLastError(), "launching the bilateral filter");
 }
 
