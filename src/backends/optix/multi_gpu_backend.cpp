@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <stdexcept>
 
 #include "backends/optix/cuda_devices.h"
@@ -34,6 +35,25 @@ bool enablePeerAccess(const std::vector<int>& ordinals) {
   }
   return all;
 }
+
+// A temporal filter of the first device whose every frame starts by adding the other devices' films to its own.
+class CombiningTemporalDenoiser : public TemporalDenoiser {
+ public:
+  CombiningTemporalDenoiser(std::unique_ptr<TemporalDenoiser> first, std::function<void()> combine, int ordinal)
+      : first_(std::move(first)), combine_(std::move(combine)), ordinal_(ordinal) {}
+  Image denoise(const Camera& camera, bool filmContinues) override {
+    combine_();
+    CurrentDevice device(ordinal_);
+    return first_->denoise(camera, filmContinues);
+  }
+  void reset() override { first_->reset(); }
+  const TemporalParams& params() const override { return first_->params(); }
+
+ private:
+  std::unique_ptr<TemporalDenoiser> first_;
+  std::function<void()> combine_;
+  int ordinal_;
+};
 
 }  // namespace
 
@@ -219,6 +239,12 @@ Image MultiGpuBackend::readBilateralFiltered(const BilateralParams& params) cons
   mergeFilms();
   CurrentDevice device(ordinals_[0]);
   return devices_[0]->readBilateralFiltered(params);
+}
+
+std::unique_ptr<TemporalDenoiser> MultiGpuBackend::makeTemporalDenoiser(const TemporalParams& params) const {
+  CurrentDevice device(ordinals_[0]);
+  return std::make_unique<CombiningTemporalDenoiser>(devices_[0]->makeTemporalDenoiser(params),
+                                                     [this] { mergeFilms(); }, ordinals_[0]);
 }
 
 std::array<unsigned char, 16> MultiGpuBackend::deviceUuid() const { return devices_[0]->deviceUuid(); }

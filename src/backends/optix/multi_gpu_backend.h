@@ -54,6 +54,8 @@ class MultiGpuBackend final : public Backend, public DeviceImage {
   AovImages readAovs() const override;
   Image readAtrousDenoised(const AtrousParams& params) const override;
   Image readBilateralFiltered(const BilateralParams& params) const override;
+  // The first device's filter, fed the combined film before every frame.
+  std::unique_ptr<TemporalDenoiser> makeTemporalDenoiser(const TemporalParams& params) const override;
   double lastCombineMilliseconds() const override { return combineMilliseconds_; }
 
   const DeviceImage* deviceImage() const override { return this; }
