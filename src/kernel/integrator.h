@@ -128,28 +128,17 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
       return !tracer.occluded(shadow, queryBits());
     };
 
-    // Next-event estimation.
+    // Next-event estimation of one light of any kind. A punctual light's sample takes no MIS weight: no BSDF
+    // sample can hit it.
     float uSelect = sampler.next1D();
     Vec2 uLight = sampler.next2D();
     if (!bsdf.isDelta()) {
       LightSample ls = sampleLight(scene, settings.lightSampler, {si.position, bsdf.normal()}, uSelect, uLight);
       Vec3 f;
       if (litThroughShadowRay(ls, f)) {
-        Vec3 le = ls.distance >= kInf ? ls.radiance : texturedLightRadiance(scene, ls);
-        float w = powerHeuristic(ls.pdf, bsdf.pdf(wo, ls.wi));
+        Vec3 le = ls.isDelta || ls.distance >= kInf ? ls.radiance : texturedLightRadiance(scene, ls);
+        float w = ls.isDelta ? 1.0f : powerHeuristic(ls.pdf, bsdf.pdf(wo, ls.wi));
         result.radiance += beta * f * le * (fabsf(dot(ls.wi, bsdf.normal())) * w / ls.pdf);
-      }
-    }
-
-    // Next-event estimation of one punctual light, an estimator of its own beside the one above: no BSDF sample
-    // can hit a delta light, so there is nothing to weigh it against.
-    if (scene.punctualLightCount > 0) {
-      float uPunctual = sampler.next1D();
-      if (!bsdf.isDelta()) {
-        LightSample ls = samplePunctualLight(scene, si.position, uPunctual);
-        Vec3 f;
-        if (litThroughShadowRay(ls, f))
-          result.radiance += beta * f * ls.radiance * (fabsf(dot(ls.wi, bsdf.normal())) / ls.pdf);
       }
     }
 

@@ -5,6 +5,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "kernel/lights.h"
 #include "kernel/pass_through.h"
 #include "scene/light_bvh.h"
 #include "scene/mip_pyramid.h"
@@ -15,14 +16,23 @@ namespace candela {
 
 namespace {
 
-// How often next-event estimation samples the environment rather than an emissive triangle.
-float environmentSamplingProbability(const FlatScene& flat) {
+// How often next-event estimation picks each kind of light, as pbrt-v4's BVHLightSampler: each infinite light (an
+// emitting environment, each directional light) and the bounded lights together alike.
+void setLightSelectProbabilities(FlatScene& flat) {
   bool environmentEmits = flat.environmentTexels.empty()
                               ? !isBlack(flat.environment.scale)
                               : flat.environmentDistribution.funcAverage > 0.0f && !isBlack(flat.environment.scale);
-  return environmentEmits ? (flat.lights.empty() ? 1.0f : 0.5f) : 0.0f;
+  const size_t directional = flat.punctualLights.size() - flat.boundedPunctualLightCount;
+  const size_t infinite = (environmentEmits ? 1 : 0) + directional;
+  const bool bounded = !flat.lights.empty() || flat.boundedPunctualLightCount > 0;
+  const float each = infinite + (bounded ? 1 : 0) > 0 ? 1.0f / float(infinite + (bounded ? 1 : 0)) : 0.0f;
+  flat.environmentSelectProbability = environmentEmits ? each : 0.0f;
+  flat.directionalSelectProbability = directional > 0 ? each : 0.0f;
+  flat.boundedSelectProbability = bounded ? 1.0f - float(infinite) * each : 0.0f;
 }
 
+// The power table and the light BVH over the bounded lights: the emissive triangles, which this collects, then
+// the point and spot lights at the front of flat.punctualLights.
 void buildLightTable(const Scene& scene, FlatScene& flat) {
   double totalPower = 0.0;
   std::vector<double> powers;
@@ -41,11 +51,17 @@ void buildLightTable(const Scene& scene, FlatScene& flat) {
       LightTriangle light{p0,         p1 - p0,     p2 - p0,  m.emission, 0.5f * length(cross(p1 - p0, p2 - p0)),
                           instanceId, uint32_t(t), frontSign};
       if (!(light.area > 0.0f)) continue;  // degenerate: can neither be sampled nor hit
-      double power = double(light.area) * kPi * luminance(m.emission);
+      double power = trianglePower(light.radiance, light.area);
       flat.lights.push_back(light);
       powers.push_back(power);
       totalPower += power;
     }
+  }
+  const std::vector<PunctualLight> bounded(flat.punctualLights.begin(),
+                                           flat.punctualLights.begin() + long(flat.boundedPunctualLightCount));
+  for (const PunctualLight& light : bounded) {
+    powers.push_back(punctualLightPower(light));
+    totalPower += powers.back();
   }
   flat.lightCdf.assign(1, 0.0f);
   double running = 0.0;
@@ -53,14 +69,28 @@ void buildLightTable(const Scene& scene, FlatScene& flat) {
     running += p;
     flat.lightCdf.push_back(float(running / totalPower));
   }
-  if (!flat.lights.empty()) {
+  flat.inverseLightPower = 0.0f;
+  if (!powers.empty()) {
     flat.lightCdf.back() = 1.0f;
-    flat.lightAreaPdfScale = float(kPi / totalPower);
+    flat.inverseLightPower = float(1.0 / totalPower);
   }
-  LightBvh bvh = buildLightBvh(flat.lights);
+  LightBvh bvh = buildLightBvh(flat.lights, bounded);
   flat.lightBvh = std::move(bvh.nodes);
   flat.lightBitTrails = std::move(bvh.bitTrails);
-  flat.environmentSelectProbability = environmentSamplingProbability(flat);
+  setLightSelectProbabilities(flat);
+}
+
+// The scene's punctual lights that emit, the point and spot lights first (in their order), then the directional
+// ones, as SceneView orders them.
+void collectPunctualLights(const Scene& scene, FlatScene& flat) {
+  flat.punctualLights.clear();
+  for (const PunctualLight& light : scene.punctualLights)
+    if (light.type != PunctualLightType::Directional && punctualLightPower(light) > 0.0f)
+      flat.punctualLights.push_back(light);
+  flat.boundedPunctualLightCount = uint32_t(flat.punctualLights.size());
+  for (const PunctualLight& light : scene.punctualLights)
+    if (light.type == PunctualLightType::Directional && luminance(light.intensity) > 0.0f)
+      flat.punctualLights.push_back(light);
 }
 
 // Tangents are needed where a normal map or an anisotropic lobe must be oriented on the surface.
@@ -188,8 +218,8 @@ FlatScene FlatScene::build(const Scene& scene) {
   }
   for (const Instance& inst : scene.instances)
     flat.instances.push_back({inst.meshId, inst.objectToWorld, normalTransform(inst.objectToWorld)});
+  collectPunctualLights(scene, flat);
   buildLightTable(scene, flat);
-  flat.punctualLights = scene.punctualLights;
   packTextures(scene, flat);
   flat.hasCutouts = anyCutouts(flat.materials);
   return flat;
@@ -218,7 +248,6 @@ bool FlatScene::replaceInstanceTransforms(const Scene& scene) {
   }
   lights.clear();
   lightCdf.clear();
-  lightAreaPdfScale = 0.0f;
   buildLightTable(scene, *this);
   return true;
 }
@@ -228,7 +257,7 @@ void FlatScene::replaceEnvironment(const Environment& replacement) {
   environmentTexels.clear();
   environmentDistribution = EnvironmentDistribution{};
   buildEnvironment(replacement, *this);
-  environmentSelectProbability = environmentSamplingProbability(*this);
+  setLightSelectProbabilities(*this);
 }
 
 SceneView FlatScene::hostView() const {
@@ -246,14 +275,17 @@ SceneView FlatScene::hostView() const {
   v.texels = {textures.data(), uint32_t(textures.size()), texelBytes.data(), texelFloats.data()};
   v.hasCutouts = hasCutouts ? 1u : 0u;
   v.lights = lights.data();
-  v.lightCdf = lightCdf.data();
   v.lightCount = uint32_t(lights.size());
-  v.lightAreaPdfScale = lightAreaPdfScale;
+  v.punctualLights = punctualLights.data();
+  v.punctualLightCount = uint32_t(punctualLights.size());
+  v.boundedPunctualLightCount = boundedPunctualLightCount;
+  v.lightCdf = lightCdf.data();
+  v.inverseLightPower = inverseLightPower;
   v.lightBvh = lightBvh.data();
   v.lightBitTrails = lightBitTrails.data();
   v.environmentSelectProbability = environmentSelectProbability;
-  v.punctualLights = punctualLights.data();
-  v.punctualLightCount = uint32_t(punctualLights.size());
+  v.directionalSelectProbability = directionalSelectProbability;
+  v.boundedSelectProbability = boundedSelectProbability;
   v.environment = environment;
   if (!environmentTexels.empty()) {
     v.environment.texels = environmentTexels.data();
