@@ -36,7 +36,8 @@ CANDELA_FN SampledLight sampleLightBvh(const SceneView& scene, LightSampleContex
     } else {
       nodeIndex = node.childOrLight;
       u = fminf((u - pFirst) / (1.0f - pFirst), 0.99999994f);
-      pmf *= 1.0f - pFirst;
+      // Not 1 - pFirst, which loses the digits of a rare second child: as lightBvhPmf() computes it.
+      pmf *= second / (first + second);
     }
   }
 }

@@ -158,6 +158,31 @@ TEST_P(LightBvhTest, SampledPmfIsThePmfOfTheSampledLight) {
   }
 }
 
+// A child of a ten-thousandth of its parent's importance is picked with that probability, to the last digits, as
+// lightBvhPmf() gives it (the descent once took 1 - p for it, which cancels to three digits).
+TEST(LightBvh, SampledPmfOfAnUnlikelyChildIsExact) {
+  Scene scene;
+  for (float x : {0.1f, 10.0f}) {
+    PunctualLight light;
+    light.position = {x, 0, 0};
+    light.intensity = {1, 1, 1};
+    scene.punctualLights.push_back(light);
+  }
+  FlatScene flat = FlatScene::build(scene);
+  SceneView view = flat.hostView();
+  const LightSampleContext ctx{{0, 0, 0}, {0, 0, 0}};
+  int picked[2] = {};
+  for (float u : {0.0f, 0.5f, 0.99995f, 0.99999994f}) {
+    SampledLight light = sampleLightBvh(view, ctx, u);
+    ASSERT_GT(light.pmf, 0.0f);
+    EXPECT_FLOAT_EQ(light.pmf, lightBvhPmf(view, ctx, light.index)) << "u " << u;
+    ++picked[light.index];
+  }
+  EXPECT_GT(picked[0], 0);
+  EXPECT_GT(picked[1], 0);
+  EXPECT_NEAR(lightBvhPmf(view, ctx, 1), 1e-4, 1e-6);
+}
+
 // Where every light can reach the point, sampling always picks one: the pmfs sum to one.
 TEST(LightBvh, PmfsSumToOneWhereEveryLightCanReachThePoint) {
   std::mt19937 rng(12);
