@@ -1,6 +1,8 @@
 // light_sampler_convergence: error against samples and time for the light samplers (the light BVH and the power
-// table), on a generated town at night with thousands of small lights (many_lights_scene.h) or any scene.
-//   light_sampler_convergence [--scene night-town] [--blocks 24] [--backend cpu|optix] [--width 192]
+// table), on a generated town at night with thousands of small lights, a field of point lights
+// (many_lights_scene.h) or any scene.
+//   light_sampler_convergence [--scene night-town|point-field] [--blocks 24] [--point-lights 1000]
+//                             [--backend cpu|optix] [--width 192]
 //                             [--height 108] [--reference-spp 8192] [--max-spp 256] [--seeds 4]
 //                             [--reference-image ref.exr]
 // Renders a reference with the light BVH and the independent sampler at --reference-spp (its own seed), then
@@ -28,6 +30,7 @@ using bench::Point;
 struct Options : bench::ConvergenceOptions {
   std::string scene = "night-town";
   uint32_t blocks = 24;
+  uint32_t pointLights = 1000;
   std::string referenceImage;
 
   Options() {
@@ -41,17 +44,20 @@ struct Options : bench::ConvergenceOptions {
 const char* lightSamplerName(LightSamplerKind kind) { return kind == LightSamplerKind::Bvh ? "bvh" : "power"; }
 
 int run(const Options& options) {
-  Scene scene = options.scene == "night-town" ? makeNightTown(options.blocks, 1) : loadScene(options.scene, {});
+  Scene scene = options.scene == "night-town"    ? makeNightTown(options.blocks, 1)
+                : options.scene == "point-field" ? makePointLitField(options.pointLights, 1)
+                                                 : loadScene(options.scene, {});
   bench::Renderer renderer = bench::Renderer::of(scene, options);
   double referenceMs = 0.0;
   renderer.settings.lightSampler = LightSamplerKind::Bvh;
   Image reference = renderer.renderReference(options.referenceSpp, referenceMs);
   if (!options.referenceImage.empty()) writeImage(options.referenceImage, reference, DisplaySettings{});
   std::printf(
-      "{\"scene\": \"%s\", \"triangles\": %zu, \"reference_spp\": %u, \"reference_seconds\": %.1f, "
+      "{\"scene\": \"%s\", \"triangles\": %zu, \"punctual_lights\": %zu, \"reference_spp\": %u, \"reference_seconds\": "
+      "%.1f, "
       "\"backend\": \"%s\", \"device\": \"%s\"}\n",
-      scene.name.c_str(), scene.triangleCount(), options.referenceSpp, referenceMs / 1000.0,
-      renderer.backend->name().c_str(), renderer.backend->deviceName().c_str());
+      scene.name.c_str(), scene.triangleCount(), scene.punctualLights.size(), options.referenceSpp,
+      referenceMs / 1000.0, renderer.backend->name().c_str(), renderer.backend->deviceName().c_str());
   std::fflush(stdout);
 
   // The two light samplers take turns, render by render, so that both see the same load on a shared machine;
@@ -95,10 +101,13 @@ int run(const Options& options) {
 int main(int argc, char** argv) {
   candela::Options options;
   CLI::App app{"Error against samples and time for the light samplers"};
-  app.add_option("--scene", options.scene, "night-town (generated), or a scene file or built-in scene")
+  app.add_option("--scene", options.scene, "night-town or point-field (generated), or a scene file or built-in scene")
       ->capture_default_str();
   app.add_option("--blocks", options.blocks, "night-town: blocks per side")
       ->check(CLI::Range(1u, 200u))
+      ->capture_default_str();
+  app.add_option("--point-lights", options.pointLights, "point-field: point lights")
+      ->check(CLI::Range(1u, 1000000u))
       ->capture_default_str();
   candela::bench::addConvergenceOptions(app, options);
   app.add_option("--reference-image", options.referenceImage, "Write the reference here (.exr, .png, ...)");

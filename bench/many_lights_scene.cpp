@@ -68,4 +68,41 @@ Scene makeNightTown(uint32_t blocks, uint32_t seed) {
   return scene;
 }
 
+Scene makePointLitField(uint32_t lights, uint32_t seed) {
+  constexpr float kHalf = 50.0f;   // the field is 100 m square
+  constexpr float kPillar = 1.0f;  // half the side of a pillar
+  enum : uint32_t { kGround, kPillarMaterial };
+  Scene scene;
+  scene.name = "point-field";
+  scene.materials = {diffuse({0.4f, 0.4f, 0.4f}), diffuse({0.6f, 0.55f, 0.5f})};
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  Mesh mesh;
+  mesh.name = "field";
+  appendQuad(mesh, {-kHalf, 0, -kHalf}, {kHalf, 0, -kHalf}, {kHalf, 0, kHalf}, {-kHalf, 0, kHalf}, {0, 1, 0}, kGround);
+  // Pillars on a 10 m grid, to cast the shadows that make some lights reach a point and others not.
+  for (int i = -4; i <= 4; ++i)
+    for (int j = -4; j <= 4; ++j) {
+      Vec3 c{10.0f * float(i), 0.0f, 10.0f * float(j)};
+      appendBox(mesh, c - Vec3{kPillar, 0, kPillar}, c + Vec3{kPillar, 2.0f + 4.0f * unit(rng), kPillar},
+                kPillarMaterial);
+    }
+  scene.meshes.push_back(std::move(mesh));
+  scene.instances.push_back({0, Affine3x4{}});
+  // Lamps of one intensity (so that picking by power picks uniformly) and random warm or cold tints.
+  for (uint32_t i = 0; i < lights; ++i) {
+    PunctualLight light;
+    light.type = PunctualLightType::Point;
+    light.position = {kHalf * (2.0f * unit(rng) - 1.0f), 0.3f + 1.2f * unit(rng), kHalf * (2.0f * unit(rng) - 1.0f)};
+    light.intensity = unit(rng) < 0.7f ? Vec3{24.0f, 18.0f, 10.0f} : Vec3{10.0f, 16.0f, 26.0f};
+    light.intensity = light.intensity * (1.0f / luminance(light.intensity));
+    scene.punctualLights.push_back(light);
+  }
+  // From a corner above the field, looking across it.
+  scene.camera.eye = {-kHalf - 5.0f, 12.0f, -kHalf * 0.4f};
+  scene.camera.target = {0.0f, 0.0f, kHalf * 0.1f};
+  scene.camera.verticalFovDegrees = 50.0f;
+  return scene;
+}
+
 }  // namespace candela

@@ -114,48 +114,39 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
       return (dot(wi, si.geometricNormal) * woSide > 0.0f) == (dot(wi, bsdf.normal()) > 0.0f);
     };
 
-    // Whether a sampled light point is seen from here along a direction the BSDF can use, through a shadow ray;
-    // `f` receives the BSDF's value towards it.
-    auto litThroughShadowRay = [&](const LightSample& ls, Vec3& f) {
-      bool reachable = dot(ls.wi, si.geometricNormal) * woSide > 0.0f || bsdf.hasTransmission();
-      if (!ls.valid || !reachable || !sidesAgree(ls.wi)) return false;
-      f = bsdf.eval(wo, ls.wi);
-      if (isBlack(f)) return false;
-      Ray shadow{offsetRayOrigin(si.position, si.geometricNormal, ls.wi), ls.wi, 0.0f,
-                 ls.distance >= kInf ? kInf : ls.distance * (1.0f - 1e-4f)};
-      ++result.rays;
-      return !tracer.occluded(shadow, queryBits());
-    };
-
-    // Next-event estimation.
+    // Next-event estimation of one light of any kind: what it adds if a shadow ray finds it unoccluded, the BSDF's
+    // value and density (for the MIS weight) evaluated in one call. A punctual light's sample takes no MIS
+    // weight: no BSDF sample can hit it.
     float uSelect = sampler.next1D();
     Vec2 uLight = sampler.next2D();
+    Vec3 lightContribution;
+    Ray shadow;
     if (!bsdf.isDelta()) {
       LightSample ls = sampleLight(scene, settings.lightSampler, {si.position, bsdf.normal()}, uSelect, uLight);
-      Vec3 f;
-      if (litThroughShadowRay(ls, f)) {
-        Vec3 le = ls.distance >= kInf ? ls.radiance : texturedLightRadiance(scene, ls);
-        float w = powerHeuristic(ls.pdf, bsdf.pdf(wo, ls.wi));
-        result.radiance += beta * f * le * (fabsf(dot(ls.wi, bsdf.normal())) * w / ls.pdf);
+      bool reachable = dot(ls.wi, si.geometricNormal) * woSide > 0.0f || bsdf.hasTransmission();
+      BsdfEval e;
+      if (ls.valid && reachable && sidesAgree(ls.wi)) e = bsdf.evalPdf(wo, ls.wi);
+      if (!isBlack(e.f)) {
+        Vec3 le = ls.isDelta || ls.distance >= kInf ? ls.radiance : texturedLightRadiance(scene, ls);
+        float w = ls.isDelta ? 1.0f : powerHeuristic(ls.pdf, e.pdf);
+        lightContribution = beta * e.f * le * (fabsf(dot(ls.wi, bsdf.normal())) * w / ls.pdf);
+        shadow = {offsetRayOrigin(si.position, si.geometricNormal, ls.wi), ls.wi, 0.0f,
+                  ls.distance >= kInf ? kInf : ls.distance * (1.0f - 1e-4f)};
       }
     }
 
-    // Next-event estimation of one punctual light, an estimator of its own beside the one above: no BSDF sample
-    // can hit a delta light, so there is nothing to weigh it against.
-    if (scene.punctualLightCount > 0) {
-      float uPunctual = sampler.next1D();
-      if (!bsdf.isDelta()) {
-        LightSample ls = samplePunctualLight(scene, si.position, uPunctual);
-        Vec3 f;
-        if (litThroughShadowRay(ls, f))
-          result.radiance += beta * f * ls.radiance * (fabsf(dot(ls.wi, bsdf.normal())) / ls.pdf);
-      }
-    }
-
-    // Continue the path by sampling the BSDF.
+    // The BSDF's sample for the path's next direction, taken before the shadow ray is traced: the BSDF, built
+    // once for this vertex, is then done with, and its parameters need not be kept across the trace.
     float uChoice = sampler.next1D();
     Vec2 uBsdf = sampler.next2D();
     BsdfSample bs = bsdf.sample(wo, uChoice, uBsdf);
+
+    if (!isBlack(lightContribution)) {
+      ++result.rays;
+      if (!tracer.occluded(shadow, queryBits())) result.radiance += lightContribution;
+    }
+
+    // Continue the path along the BSDF's sample.
     Vec3 next;
     if (!bs.valid || isBlack(bs.f) || !continuePathTowards(bs.wi, wo, si.geometricNormal, bsdf.normal(), next)) break;
     beta *= bs.f * (fabsf(dot(bs.wi, bsdf.normal())) / bs.pdf);

@@ -4,7 +4,8 @@
 
 namespace candela {
 
-// An emissive triangle chosen for a shading point, with the probability of the choice; pmf 0 when none was.
+// A bounded light (an emissive triangle, a point or a spot light; see SceneView) chosen for a shading point, with the
+// probability of the choice; pmf 0 when none was.
 struct SampledLight {
   uint32_t index = 0;
   float pmf = 0.0f;
@@ -14,7 +15,7 @@ struct SampledLight {
 // importance for ctx and rescaling `u` for the next decision. Picks nothing where no light can reach ctx.
 CANDELA_FN SampledLight sampleLightBvh(const SceneView& scene, LightSampleContext ctx, float u) {
   SampledLight picked;
-  if (scene.lightCount == 0) return picked;
+  if (boundedLightCount(scene) == 0) return picked;
   uint32_t nodeIndex = 0;
   float pmf = 1.0f;
   for (;;) {
@@ -35,7 +36,8 @@ CANDELA_FN SampledLight sampleLightBvh(const SceneView& scene, LightSampleContex
     } else {
       nodeIndex = node.childOrLight;
       u = fminf((u - pFirst) / (1.0f - pFirst), 0.99999994f);
-      pmf *= 1.0f - pFirst;
+      // Not 1 - pFirst, which loses the digits of a rare second child: as lightBvhPmf() computes it.
+      pmf *= second / (first + second);
     }
   }
 }

@@ -12,9 +12,12 @@ struct LightSample {
   Vec3 wi;                // unit direction from the shading point to the light
   float distance = kInf;  // to the sampled point; infinite for the environment
   Vec3 radiance;          // emitted towards the shading point
-  float pdf = 0.0f;       // solid angle density of wi, light selection included
+  float pdf = 0.0f;       // solid angle density of wi, light selection included; a delta light's pmf
   bool valid = false;
-  uint32_t lightIndex = 0;  // the triangle sampled, and the point's barycentrics of its vertices 1 and 2
+  bool isDelta = false;  // a punctual light: no BSDF sample can find it, so it takes no MIS weight
+  // The light sampled, lights[i] below lightCount, else punctualLights[i - lightCount]; on a triangle the
+  // point's barycentrics of its vertices 1 and 2.
+  uint32_t lightIndex = 0;
   Vec2 barycentrics;
 };
 
@@ -36,7 +39,17 @@ CANDELA_FN float solidAnglePdf(float areaPdf, float distance, float cosAtLight) 
   return areaPdf * distance * distance / cosAtLight;
 }
 
-// Probability with which the power table picks `light`: its power over the total.
+// Emitted power (luminance) of the bounded lights, by which the power table picks them: a one-sided triangle's
+// pi x luminance(Le) x area; a point light's 4 pi x luminance(I); a spot light's 2 pi x luminance(I) x the
+// solid-angle measure of its cone with the falloff (as pbrt-v4's SpotLight::Phi).
+CANDELA_FN float trianglePower(Vec3 emittedRadiance, float area) { return kPi * luminance(emittedRadiance) * area; }
+CANDELA_FN float punctualLightPower(const PunctualLight& light) {
+  float perSteradian = luminance(light.intensity);
+  if (light.type != PunctualLightType::Spot) return 4.0f * kPi * perSteradian;
+  return 2.0f * kPi * perSteradian * ((1.0f - light.cosInner) + 0.5f * (light.cosInner - light.cosOuter));
+}
+
+// Probability with which the power table picks the triangle `light` among the bounded lights.
 CANDELA_FN float powerTablePmf(const SceneView& scene, const LightTriangle& light) {
   return scene.inverseLightPower * light.power;
 }
@@ -76,12 +89,45 @@ CANDELA_FN float triangleLightPdf(const SceneView& scene, LightSamplerKind kind,
   const LightTriangle& light = scene.lights[index];
   float selectPmf = kind == LightSamplerKind::Power ? powerTablePmf(scene, light)
                                                     : lightBvhPmf(scene, ctx, index);
-  return (1.0f - scene.environmentSelectProbability) *
+  return scene.boundedSelectProbability *
          trianglePointPdf(light, selectPmf, sphericalSamplingSolidAngle(light, ctx.p), distance, cosAtLight);
 }
 
-// Samples the environment or one emissive triangle (one-sided: emits along its geometric normal), the triangle
-// chosen as `kind` says for the shading point ctx and the point on it by solid angle or by area.
+// A spot light's falloff between its cones: 1 inside cosInner, 0 outside cosOuter, smoothstep between (as
+// pbrt-v4's SpotLight).
+CANDELA_FN float spotFalloff(const PunctualLight& light, float cosAngle) {
+  if (cosAngle >= light.cosInner) return 1.0f;
+  if (cosAngle <= light.cosOuter) return 0.0f;
+  float t = (cosAngle - light.cosOuter) / (light.cosInner - light.cosOuter);
+  return t * t * (3.0f - 2.0f * t);
+}
+
+// What the punctual `light`, picked with probability `pmf`, sends to `from`: `radiance` is the irradiance it
+// gives a surface facing it, `pdf` the pmf (no density: the direction is fixed).
+CANDELA_FN LightSample samplePunctualLight(const PunctualLight& light, Vec3 from, float pmf) {
+  LightSample ls;
+  ls.isDelta = true;
+  ls.pdf = pmf;
+  if (light.type == PunctualLightType::Directional) {
+    ls.wi = -light.direction;
+    ls.radiance = light.intensity;
+    ls.valid = pmf > 0.0f && !isBlack(ls.radiance);
+    return ls;
+  }
+  Vec3 toLight = light.position - from;
+  float dist2 = dot(toLight, toLight);
+  if (!(dist2 > 0.0f)) return ls;
+  ls.distance = sqrtf(dist2);
+  ls.wi = toLight / ls.distance;
+  float falloff = light.type == PunctualLightType::Spot ? spotFalloff(light, -dot(ls.wi, light.direction)) : 1.0f;
+  ls.radiance = light.intensity * (falloff / dist2);
+  ls.valid = pmf > 0.0f && !isBlack(ls.radiance);
+  return ls;
+}
+
+// Samples one light for the shading point ctx (see SceneView): with uSelect the environment, a directional light
+// or the bounded lights, then among those a bounded light as `kind` says. A triangle (one-sided: it emits along
+// its geometric normal) is sampled at a point by solid angle or by area, with u; a punctual light is its point.
 CANDELA_FN LightSample sampleLight(const SceneView& scene, LightSamplerKind kind, LightSampleContext ctx, float uSelect,
                                    Vec2 u) {
   LightSample ls;
@@ -94,19 +140,38 @@ CANDELA_FN LightSample sampleLight(const SceneView& scene, LightSamplerKind kind
     ls.valid = ls.pdf > 0.0f;
     return ls;
   }
-  if (scene.lightCount == 0) return ls;
-  float uTri = fminf((uSelect - pEnv) / (1.0f - pEnv), 0.99999994f);
+  uint32_t directionalCount = scene.punctualLightCount - scene.boundedPunctualLightCount;
+  float pDirectional = scene.directionalSelectProbability * float(directionalCount);
+  float pBounded = scene.boundedSelectProbability;
+  if (uSelect < pEnv + pDirectional || pBounded == 0.0f) {
+    if (directionalCount == 0) return ls;
+    uint32_t k = uint32_t((uSelect - pEnv) / scene.directionalSelectProbability);
+    if (k >= directionalCount) k = directionalCount - 1;
+    ls = samplePunctualLight(scene.punctualLights[scene.boundedPunctualLightCount + k], ctx.p,
+                             scene.directionalSelectProbability);
+    ls.lightIndex = scene.lightCount + scene.boundedPunctualLightCount + k;
+    return ls;
+  }
+  float uBounded = fminf((uSelect - pEnv - pDirectional) / pBounded, 0.99999994f);
+  uint32_t index;
   float selectPmf;
   if (kind == LightSamplerKind::Power) {
-    ls.lightIndex = uint32_t(findInterval(scene.lightCdf, int(scene.lightCount), uTri));
-    const LightTriangle& light = scene.lights[ls.lightIndex];
-    selectPmf = powerTablePmf(scene, light);
+    index = uint32_t(findInterval(scene.lightCdf, int(boundedLightCount(scene)), uBounded));
+    selectPmf = index < scene.lightCount
+                    ? powerTablePmf(scene, scene.lights[index])
+                    : scene.inverseLightPower * punctualLightPower(scene.punctualLights[index - scene.lightCount]);
   } else {
-    SampledLight picked = sampleLightBvh(scene, ctx, uTri);
+    SampledLight picked = sampleLightBvh(scene, ctx, uBounded);
     if (picked.pmf == 0.0f) return ls;
-    ls.lightIndex = picked.index;
+    index = picked.index;
     selectPmf = picked.pmf;
   }
+  if (index >= scene.lightCount) {
+    ls = samplePunctualLight(scene.punctualLights[index - scene.lightCount], ctx.p, pBounded * selectPmf);
+    ls.lightIndex = index;
+    return ls;
+  }
+  ls.lightIndex = index;
   const LightTriangle& light = scene.lights[ls.lightIndex];
   float solidAngle = sphericalSamplingSolidAngle(light, ctx.p);
   if (solidAngle > 0.0f) {
@@ -124,45 +189,9 @@ CANDELA_FN LightSample sampleLight(const SceneView& scene, LightSamplerKind kind
   ls.distance = sqrtf(dist2);
   ls.wi = toLight / ls.distance;
   Vec3 n = normalize(cross(light.edge1, light.edge2)) * light.frontSign;
-  ls.pdf = (1.0f - pEnv) * trianglePointPdf(light, selectPmf, solidAngle, ls.distance, -dot(n, ls.wi));
+  ls.pdf = pBounded * trianglePointPdf(light, selectPmf, solidAngle, ls.distance, -dot(n, ls.wi));
   ls.radiance = light.radiance;
   ls.valid = ls.pdf > 0.0f;
-  return ls;
-}
-
-// A spot light's falloff between its cones: 1 inside cosInner, 0 outside cosOuter, smoothstep between (as
-// pbrt-v4's SpotLight).
-CANDELA_FN float spotFalloff(const PunctualLight& light, float cosAngle) {
-  if (cosAngle >= light.cosInner) return 1.0f;
-  if (cosAngle <= light.cosOuter) return 0.0f;
-  float t = (cosAngle - light.cosOuter) / (light.cosInner - light.cosOuter);
-  return t * t * (3.0f - 2.0f * t);
-}
-
-// Picks one punctual light uniformly and returns the light it sends to `from`: `radiance` is the irradiance it
-// gives a surface facing it, `pdf` the probability of the pick (no density: the direction is fixed).
-CANDELA_FN LightSample samplePunctualLight(const SceneView& scene, Vec3 from, float uSelect) {
-  LightSample ls;
-  if (scene.punctualLightCount == 0) return ls;
-  uint32_t index = uint32_t(uSelect * float(scene.punctualLightCount));
-  if (index >= scene.punctualLightCount) index = scene.punctualLightCount - 1;
-  const PunctualLight& light = scene.punctualLights[index];
-  ls.lightIndex = index;
-  ls.pdf = 1.0f / float(scene.punctualLightCount);
-  if (light.type == PunctualLightType::Directional) {
-    ls.wi = -light.direction;
-    ls.radiance = light.intensity;
-    ls.valid = !isBlack(ls.radiance);
-    return ls;
-  }
-  Vec3 toLight = light.position - from;
-  float dist2 = dot(toLight, toLight);
-  if (!(dist2 > 0.0f)) return ls;
-  ls.distance = sqrtf(dist2);
-  ls.wi = toLight / ls.distance;
-  float falloff = light.type == PunctualLightType::Spot ? spotFalloff(light, -dot(ls.wi, light.direction)) : 1.0f;
-  ls.radiance = light.intensity * (falloff / dist2);
-  ls.valid = !isBlack(ls.radiance);
   return ls;
 }
 

@@ -35,13 +35,14 @@ struct LightTriangle {
   uint32_t instanceId = 0;  // where it came from, for textured emission
   uint32_t primitiveId = 0;
   float frontSign = 1.0f;  // -1 under a mirroring instance: the front is then opposite cross(edge1, edge2)
-  // What light sampling weighs it by: area x luminance of the radiance it emits on average, its emission
+  // What light sampling weighs it by: pi x area x luminance of the radiance it emits on average, its emission
   // texture's mean over the triangle included. Triangles that emit nothing on average are left out of the table.
   float power = 0.0f;
 };
 
 // One node of the light BVH (pbrt-v4's BVHLightSampler), flat in depth-first order: an interior node's first
-// child follows it and its second is at childOrLight; a leaf holds the one light at childOrLight in `lights`.
+// child follows it and its second is at childOrLight; a leaf holds the one bounded light at childOrLight (see
+// SceneView: a triangle below lightCount, a point or spot light above).
 struct LightBvhNode {
   CompactLightBounds bounds;
   uint32_t childOrLight = 0;
@@ -49,9 +50,9 @@ struct LightBvhNode {
 };
 
 // A light at a point or infinitely far away in one direction, sampled by next-event estimation only: no ray
-// can hit it. Point and spot lights emit `intensity` (radiant intensity, per steradian) from `position`, a spot
-// only within its cone about `direction` with a smooth falloff between cosInner and cosOuter; a directional
-// light gives irradiance `intensity` to a surface facing it, arriving along `direction`.
+// can hit it, so its samples take no MIS weight. Point and spot lights emit `intensity` (radiant intensity, per
+// steradian) from `position`, a spot only within its cone about `direction` with a smooth falloff between cosInner and
+// cosOuter; a directional light gives irradiance `intensity` to a surface facing it, arriving along `direction`.
 enum class PunctualLightType : uint32_t { Point, Spot, Directional };
 
 struct PunctualLight {
@@ -78,18 +79,31 @@ struct SceneView {
   TexelArrays texels;
   uint32_t hasCutouts = 0;  // some material is alpha-tested, alpha-blended or back-face culled
 
+  // Next-event estimation picks one light among the infinite ones (the environment, each directional light) and
+  // the bounded ones (emissive triangles, point and spot lights) as pbrt-v4's BVHLightSampler does: each infinite
+  // light with one fixed probability, the bounded lights together with the rest, and one of them by the light BVH
+  // or by power. Bounded light i is the triangle lights[i] below lightCount, else punctualLights[i - lightCount].
   const LightTriangle* lights = nullptr;
-  const float* lightCdf = nullptr;  // lightCount + 1 entries, by emitted power
   uint32_t lightCount = 0;
-  float inverseLightPower = 0.0f;  // 1 / the sum of the lights' `power`
-  // The light BVH over `lights` (2 lightCount - 1 nodes), and per light the path from the root to its leaf: bit
-  // i is 1 where the path takes the second child at depth i.
+  // The point and spot lights come first in punctualLights, boundedPunctualLightCount of them, then the
+  // directional lights.
+  const PunctualLight* punctualLights = nullptr;
+  uint32_t punctualLightCount = 0;
+  uint32_t boundedPunctualLightCount = 0;
+  const float* lightCdf = nullptr;  // one entry per bounded light and one more, by emitted power
+  float inverseLightPower = 0.0f;   // 1 / the bounded lights' total power (kernel/lights.h)
+  // The light BVH over the bounded lights (2n - 1 nodes for n of them), and per light the path from the root to
+  // its leaf: bit i is 1 where the path takes the second child at depth i.
   const LightBvhNode* lightBvh = nullptr;
   const uint64_t* lightBitTrails = nullptr;
   float environmentSelectProbability = 0.0f;
+  float directionalSelectProbability = 0.0f;  // of each directional light
+  float boundedSelectProbability = 0.0f;      // of the bounded lights together
   EnvironmentView environment;
-  const PunctualLight* punctualLights = nullptr;
-  uint32_t punctualLightCount = 0;
 };
+
+CANDELA_FN uint32_t boundedLightCount(const SceneView& scene) {
+  return scene.lightCount + scene.boundedPunctualLightCount;
+}
 
 }  // namespace candela

@@ -5,6 +5,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "kernel/lights.h"
 #include "kernel/pass_through.h"
 #include "scene/emission_average.h"
 #include "scene/light_bvh.h"
@@ -16,17 +17,25 @@ namespace candela {
 
 namespace {
 
-// How often next-event estimation samples the environment rather than an emissive triangle.
-float environmentSamplingProbability(const FlatScene& flat) {
+// How often next-event estimation picks each kind of light, as pbrt-v4's BVHLightSampler: each infinite light (an
+// emitting environment, each directional light) and the bounded lights together alike.
+void setLightSelectProbabilities(FlatScene& flat) {
   bool environmentEmits = flat.environmentTexels.empty()
                               ? !isBlack(flat.environment.scale)
                               : flat.environmentDistribution.funcAverage > 0.0f && !isBlack(flat.environment.scale);
-  return environmentEmits ? (flat.lights.empty() ? 1.0f : 0.5f) : 0.0f;
+  const size_t directional = flat.punctualLights.size() - flat.boundedPunctualLightCount;
+  const size_t infinite = (environmentEmits ? 1 : 0) + directional;
+  const bool bounded = !flat.lights.empty() || flat.boundedPunctualLightCount > 0;
+  const float each = infinite + (bounded ? 1 : 0) > 0 ? 1.0f / float(infinite + (bounded ? 1 : 0)) : 0.0f;
+  flat.environmentSelectProbability = environmentEmits ? each : 0.0f;
+  flat.directionalSelectProbability = directional > 0 ? each : 0.0f;
+  flat.boundedSelectProbability = bounded ? 1.0f - float(infinite) * each : 0.0f;
 }
 
-// The emissive triangles of every instance, each weighed by what it emits on average (its material's emission
-// times the mean of its emission texture over it); those that emit nothing there are left out. The textures
-// must be packed already.
+// The power table and the light BVH over the bounded lights: the emissive triangles, which this collects, then
+// the point and spot lights at the front of flat.punctualLights. Each triangle is weighed by what it emits on
+// average (its material's emission times the mean of its emission texture over it); those that emit nothing
+// there are left out. The textures must be packed already.
 void buildLightTable(const Scene& scene, FlatScene& flat) {
   struct Candidate {
     const Mesh* mesh;
@@ -66,28 +75,50 @@ void buildLightTable(const Scene& scene, FlatScene& flat) {
         for (int k = 0; k < 3; ++k) uv[k] = mesh.uvs[mesh.indices[3 * t + k]];
       mean *= meanTextureOverTriangle(texels, m.emissionTexture, uv[0], uv[1], uv[2]);
     }
-    lights[i].power = lights[i].area * luminance(mean);
+    lights[i].power = trianglePower(mean, lights[i].area);
   });
   double totalPower = 0.0;
+  std::vector<double> powers;
   for (const LightTriangle& light : lights) {
     if (!(light.power > 0.0f)) continue;
     flat.lights.push_back(light);
+    powers.push_back(light.power);
     totalPower += light.power;
+  }
+  const std::vector<PunctualLight> bounded(flat.punctualLights.begin(),
+                                           flat.punctualLights.begin() + long(flat.boundedPunctualLightCount));
+  for (const PunctualLight& light : bounded) {
+    powers.push_back(punctualLightPower(light));
+    totalPower += powers.back();
   }
   flat.lightCdf.assign(1, 0.0f);
   double running = 0.0;
-  for (const LightTriangle& light : flat.lights) {
-    running += light.power;
+  for (double p : powers) {
+    running += p;
     flat.lightCdf.push_back(float(running / totalPower));
   }
-  if (!flat.lights.empty()) {
+  flat.inverseLightPower = 0.0f;
+  if (!powers.empty()) {
     flat.lightCdf.back() = 1.0f;
     flat.inverseLightPower = float(1.0 / totalPower);
   }
-  LightBvh bvh = buildLightBvh(flat.lights);
+  LightBvh bvh = buildLightBvh(flat.lights, bounded);
   flat.lightBvh = std::move(bvh.nodes);
   flat.lightBitTrails = std::move(bvh.bitTrails);
-  flat.environmentSelectProbability = environmentSamplingProbability(flat);
+  setLightSelectProbabilities(flat);
+}
+
+// The scene's punctual lights that emit, the point and spot lights first (in their order), then the directional
+// ones, as SceneView orders them.
+void collectPunctualLights(const Scene& scene, FlatScene& flat) {
+  flat.punctualLights.clear();
+  for (const PunctualLight& light : scene.punctualLights)
+    if (light.type != PunctualLightType::Directional && punctualLightPower(light) > 0.0f)
+      flat.punctualLights.push_back(light);
+  flat.boundedPunctualLightCount = uint32_t(flat.punctualLights.size());
+  for (const PunctualLight& light : scene.punctualLights)
+    if (light.type == PunctualLightType::Directional && luminance(light.intensity) > 0.0f)
+      flat.punctualLights.push_back(light);
 }
 
 // Tangents are needed where a normal map or an anisotropic lobe must be oriented on the surface.
@@ -229,9 +260,9 @@ FlatScene FlatScene::build(const Scene& scene) {
   }
   for (const Instance& inst : scene.instances)
     flat.instances.push_back({inst.meshId, inst.objectToWorld, normalTransform(inst.objectToWorld)});
+  collectPunctualLights(scene, flat);
   packTextures(scene, flat);
   buildLightTable(scene, flat);
-  flat.punctualLights = scene.punctualLights;
   flat.hasCutouts = anyCutouts(flat.materials);
   return flat;
 }
@@ -259,7 +290,6 @@ bool FlatScene::replaceInstanceTransforms(const Scene& scene) {
   }
   lights.clear();
   lightCdf.clear();
-  inverseLightPower = 0.0f;
   buildLightTable(scene, *this);
   return true;
 }
@@ -269,7 +299,7 @@ void FlatScene::replaceEnvironment(const Environment& replacement) {
   environmentTexels.clear();
   environmentDistribution = EnvironmentDistribution{};
   buildEnvironment(replacement, *this);
-  environmentSelectProbability = environmentSamplingProbability(*this);
+  setLightSelectProbabilities(*this);
 }
 
 SceneView FlatScene::hostView() const {
@@ -287,14 +317,17 @@ SceneView FlatScene::hostView() const {
   v.texels = {textures.data(), uint32_t(textures.size()), texelBytes.data(), texelFloats.data()};
   v.hasCutouts = hasCutouts ? 1u : 0u;
   v.lights = lights.data();
-  v.lightCdf = lightCdf.data();
   v.lightCount = uint32_t(lights.size());
+  v.punctualLights = punctualLights.data();
+  v.punctualLightCount = uint32_t(punctualLights.size());
+  v.boundedPunctualLightCount = boundedPunctualLightCount;
+  v.lightCdf = lightCdf.data();
   v.inverseLightPower = inverseLightPower;
   v.lightBvh = lightBvh.data();
   v.lightBitTrails = lightBitTrails.data();
   v.environmentSelectProbability = environmentSelectProbability;
-  v.punctualLights = punctualLights.data();
-  v.punctualLightCount = uint32_t(punctualLights.size());
+  v.directionalSelectProbability = directionalSelectProbability;
+  v.boundedSelectProbability = boundedSelectProbability;
   v.environment = environment;
   if (!environmentTexels.empty()) {
     v.environment.texels = environmentTexels.data();

@@ -24,13 +24,18 @@ struct FlatScene {
   std::vector<uint8_t> texelBytes;  // every 8-bit texture back to back, each with its mip levels
   std::vector<float> texelFloats;   // every float texture back to back, each with its mip levels
   bool hasCutouts = false;
+  // The lights as SceneView describes them: the point and spot lights first in punctualLights, lights that emit
+  // nothing left out.
   std::vector<LightTriangle> lights;
+  std::vector<PunctualLight> punctualLights;
+  uint32_t boundedPunctualLightCount = 0;
   std::vector<float> lightCdf;
   float inverseLightPower = 0.0f;
   std::vector<LightBvhNode> lightBvh;
   std::vector<uint64_t> lightBitTrails;
   float environmentSelectProbability = 0.0f;
-  std::vector<PunctualLight> punctualLights;
+  float directionalSelectProbability = 0.0f;
+  float boundedSelectProbability = 0.0f;
   // The environment's parameters; its pointers are set by hostView() (or by a backend, to device copies of
   // the arrays below).
   EnvironmentView environment;

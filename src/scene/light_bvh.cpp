@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include "kernel/lights.h"
+
 namespace candela {
 
 namespace {
@@ -174,6 +176,22 @@ LightBounds triangleLightBounds(const LightTriangle& light) {
   return b;
 }
 
+LightBounds punctualLightBounds(const PunctualLight& light) {
+  LightBounds b;
+  b.lo = b.hi = light.position;
+  b.phi = 4.0f * kPi * luminance(light.intensity);
+  b.twoSided = 0;
+  if (light.type == PunctualLightType::Spot) {
+    b.w = light.direction;
+    b.cosThetaO = light.cosInner;
+    b.cosThetaE = std::cos(std::max(0.0f, safeAcos(light.cosOuter) - safeAcos(light.cosInner)));
+  } else {
+    b.cosThetaO = -1.0f;  // every direction
+    b.cosThetaE = 0.0f;
+  }
+  return b;
+}
+
 LightBounds unite(const LightBounds& a, const LightBounds& b) {
   if (a.phi == 0.0f) return b;
   if (b.phi == 0.0f) return a;
@@ -189,17 +207,19 @@ LightBounds unite(const LightBounds& a, const LightBounds& b) {
   return u;
 }
 
-LightBvh buildLightBvh(const std::vector<LightTriangle>& lights) {
+LightBvh buildLightBvh(const std::vector<LightTriangle>& lights, const std::vector<PunctualLight>& punctual) {
   LightBvh bvh;
-  if (lights.empty()) return bvh;
+  const size_t count = lights.size() + punctual.size();
+  if (count == 0) return bvh;
   std::vector<BuildLight> work;
-  work.reserve(lights.size());
-  for (uint32_t i = 0; i < lights.size(); ++i) {
-    LightBounds b = triangleLightBounds(lights[i]);
+  work.reserve(count);
+  for (uint32_t i = 0; i < count; ++i) {
+    LightBounds b =
+        i < lights.size() ? triangleLightBounds(lights[i]) : punctualLightBounds(punctual[i - lights.size()]);
     work.push_back({b, (b.lo + b.hi) * 0.5f, i});
   }
-  bvh.bitTrails.assign(lights.size(), 0);
-  bvh.nodes.reserve(2 * lights.size() - 1);
+  bvh.bitTrails.assign(count, 0);
+  bvh.nodes.reserve(2 * count - 1);
   Builder(bvh).build(work, 0, work.size(), 0, 0);
   return bvh;
 }

@@ -13,15 +13,19 @@ struct BsdfCase {
   std::string name;
   std::function<Vec3(Vec3, Vec3)> eval;
   std::function<float(Vec3, Vec3)> pdf;
+  std::function<BsdfEval(Vec3, Vec3)> evalPdf;
   std::function<BsdfSample(Vec3, float, Vec2)> sample;
   bool reciprocal = true;  // f(wo, wi) == f(wi, wo) for wi on wo's side
 };
 
 template <class Model>
 BsdfCase makeCase(std::string name, const Model& model, bool reciprocal = true) {
-  return {std::move(name), [model](Vec3 wo, Vec3 wi) { return model.eval(wo, wi); },
+  return {std::move(name),
+          [model](Vec3 wo, Vec3 wi) { return model.eval(wo, wi); },
           [model](Vec3 wo, Vec3 wi) { return model.pdf(wo, wi); },
-          [model](Vec3 wo, float uc, Vec2 u) { return model.sample(wo, uc, u); }, reciprocal};
+          [model](Vec3 wo, Vec3 wi) { return model.evalPdf(wo, wi); },
+          [model](Vec3 wo, float uc, Vec2 u) { return model.sample(wo, uc, u); },
+          reciprocal};
 }
 
 inline Vec3 directionAt(float thetaDegrees, float phiDegrees = 0.0f) {

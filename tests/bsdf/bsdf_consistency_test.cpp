@@ -1,4 +1,4 @@
-// sample() agrees with eval() and pdf(); densities integrate to the probability that sampling succeeds;
+// sample() and evalPdf() agree with eval() and pdf(); densities integrate to the probability that sampling succeeds;
 // reflection models are reciprocal; the delta lobes reflect and refract where optics says.
 #include <gtest/gtest.h>
 
@@ -33,6 +33,73 @@ TEST(BsdfConsistency, SampleReturnsEvalAndPdf) {
         ASSERT_FALSE(s.isDelta);
         ASSERT_EQ(s.eta != 1.0f, s.wi.z < 0.0f) << c.name << ": eta belongs to transmitted samples only";
       }
+}
+
+// evalPdf() is eval() and pdf() in one call: the same numbers, to float round-off, for every lobe and model at
+// random pairs of directions over the whole sphere (wo below the surface too, where both are zero), and at
+// sampled ones, which find the narrow lobes' peaks.
+TEST(BsdfConsistency, EvalPdfIsEvalAndPdf) {
+  for (float r : kRoughnesses)
+    for (const BsdfCase& c : casesAtRoughness(r)) {
+      int nonZero = 0;
+      for (uint32_t i = 0; i < 4000; ++i) {
+        Vec3 wo = sampleUniformSphere({randomUniform(i, 2, 0, 11), randomUniform(i, 2, 1, 11)});
+        Vec3 wi = sampleUniformSphere({randomUniform(i, 2, 2, 11), randomUniform(i, 2, 3, 11)});
+        if (i % 2 == 0) wo.z = std::fabs(wo.z);
+        if (i % 4 == 0) {
+          BsdfSample s =
+              c.sample(wo, randomUniform(i, 2, 4, 11), {randomUniform(i, 2, 5, 11), randomUniform(i, 2, 6, 11)});
+          if (s.valid) wi = s.wi;
+        }
+        BsdfEval e = c.evalPdf(wo, wi);
+        Vec3 f = c.eval(wo, wi);
+        float pdf = c.pdf(wo, wi);
+        ASSERT_LT(relativeDifference(e.pdf, pdf), 1e-5f) << c.name << " r=" << r << " pdf " << e.pdf << " vs " << pdf;
+        for (int k = 0; k < 3; ++k)
+          ASSERT_LT(relativeDifference(e.f[k], f[k]), 1e-5f)
+              << c.name << " r=" << r << " f " << e.f[k] << " vs " << f[k];
+        nonZero += pdf > 0.0f && !isBlack(f);
+      }
+      EXPECT_GT(nonZero, 500) << c.name << " r=" << r;
+    }
+}
+
+// The same through Bsdf, which builds the model of each material type once and dispatches to it, in a frame
+// with a tangent and a shading normal apart from the geometric one.
+TEST(BsdfConsistency, BsdfEvalPdfIsEvalAndPdfForEveryMaterialType) {
+  Material materials[4];
+  materials[0].type = MaterialType::Diffuse;
+  materials[1].type = MaterialType::BlinnPhong;
+  materials[1].specularColor = {0.3f, 0.3f, 0.3f};
+  materials[1].shininess = 80.0f;
+  materials[2].type = MaterialType::Pbr;
+  materials[2].metallic = 0.4f;
+  materials[2].roughness = 0.3f;
+  materials[3] = disneyMaterial(0.4f);
+  materials[3].metallic = 0.2f;
+  materials[3].anisotropic = 0.5f;
+  materials[3].clearcoat = 0.7f;
+  materials[3].sheen = 0.5f;
+  materials[3].specTrans = 0.3f;
+  SurfaceInteraction si;
+  si.geometricNormal = normalize(Vec3{0.1f, 0.2f, 1.0f});
+  si.shadingNormal = normalize(Vec3{0.2f, 0.1f, 1.0f});
+  si.tangent = normalize(Vec3{1.0f, -0.3f, 0.0f});
+  for (const Material& m : materials) {
+    int nonZero = 0;
+    for (uint32_t i = 0; i < 4000; ++i) {
+      Vec3 wo = sampleUniformSphere({randomUniform(i, 3, 0, 13), randomUniform(i, 3, 1, 13)});
+      Vec3 wi = sampleUniformSphere({randomUniform(i, 3, 2, 13), randomUniform(i, 3, 3, 13)});
+      Bsdf bsdf(m, si, wo);
+      BsdfEval e = bsdf.evalPdf(wo, wi);
+      Vec3 f = bsdf.eval(wo, wi);
+      float pdf = bsdf.pdf(wo, wi);
+      ASSERT_LT(relativeDifference(e.pdf, pdf), 1e-5f) << int(m.type);
+      for (int k = 0; k < 3; ++k) ASSERT_LT(relativeDifference(e.f[k], f[k]), 1e-5f) << int(m.type);
+      nonZero += pdf > 0.0f && !isBlack(f);
+    }
+    EXPECT_GT(nonZero, 500) << int(m.type);
+  }
 }
 
 // The density integrated over the sphere equals the fraction of sample() calls that succeed: 1 for lobes that

@@ -137,6 +137,27 @@ TEST(GpuNightTown, AgreesWithTheCpuBackendWithEitherLightSampler) {
   expectBackendsAgree(town, 121, LightSamplerKind::Power);
 }
 
+// Point lights in the light BVH and in the power table (bench/many_lights_scene.h: 200 of them over a field of
+// pillars), with a directional light and a spot light picked beside and among them.
+TEST(GpuPointField, AgreesWithTheCpuBackendWithEitherLightSampler) {
+  Scene field = makePointLitField(200, 1);
+  PunctualLight sun;
+  sun.type = PunctualLightType::Directional;
+  sun.direction = normalize(Vec3{0.3f, -1.0f, 0.2f});
+  sun.intensity = {0.5f, 0.5f, 0.5f};
+  field.punctualLights.push_back(sun);
+  PunctualLight spot;
+  spot.type = PunctualLightType::Spot;
+  spot.position = {0.0f, 8.0f, 0.0f};
+  spot.direction = {0.0f, -1.0f, 0.0f};
+  spot.intensity = {40.0f, 40.0f, 40.0f};
+  spot.cosInner = 0.9f;
+  spot.cosOuter = 0.7f;
+  field.punctualLights.push_back(spot);
+  expectBackendsAgree(field, 131, LightSamplerKind::Bvh);
+  expectBackendsAgree(field, 141, LightSamplerKind::Power);
+}
+
 // Textured glTF materials with a normal map, lit by an importance-sampled environment map.
 TEST(GpuDamagedHelmet, AgreesWithTheCpuBackendUnderAnEnvironmentMap) {
   std::filesystem::path shared = CANDELA_SHARED_SCENES;

@@ -1,5 +1,6 @@
-// Punctual lights as next-event estimation sees them: the irradiance each kind sends to a point, and a spot's
-// falloff between its cones.
+// Punctual lights as next-event estimation sees them: the irradiance each kind sends to a point, a spot's
+// falloff between its cones, and the power the power table weighs them by. How they are picked among the other
+// lights: tests/scene/light_bvh_test.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,25 +10,19 @@
 namespace candela {
 namespace {
 
-SceneView viewOf(const std::vector<PunctualLight>& lights) {
-  SceneView view;
-  view.punctualLights = lights.data();
-  view.punctualLightCount = uint32_t(lights.size());
-  return view;
-}
-
 TEST(PunctualLight, PointFallsOffWithTheSquareOfTheDistance) {
   PunctualLight light;
   light.position = {0, 4, 0};
   light.intensity = {8, 4, 2};
-  std::vector<PunctualLight> lights{light};
-  LightSample ls = samplePunctualLight(viewOf(lights), {0, 0, 0}, 0.3f);
+  LightSample ls = samplePunctualLight(light, {0, 0, 0}, 0.25f);
   ASSERT_TRUE(ls.valid);
+  EXPECT_TRUE(ls.isDelta);
   EXPECT_FLOAT_EQ(ls.distance, 4.0f);
   EXPECT_FLOAT_EQ(ls.wi.y, 1.0f);
   EXPECT_FLOAT_EQ(ls.radiance.x, 0.5f);
   EXPECT_FLOAT_EQ(ls.radiance.z, 0.125f);
-  EXPECT_FLOAT_EQ(ls.pdf, 1.0f);
+  EXPECT_FLOAT_EQ(ls.pdf, 0.25f);
+  EXPECT_FALSE(samplePunctualLight(light, {0, 0, 0}, 0.0f).valid);
 }
 
 TEST(PunctualLight, DirectionalArrivesFromAgainstItsDirectionFromInfinitelyFar) {
@@ -35,9 +30,9 @@ TEST(PunctualLight, DirectionalArrivesFromAgainstItsDirectionFromInfinitelyFar) 
   light.type = PunctualLightType::Directional;
   light.direction = {0, -1, 0};
   light.intensity = {3, 3, 3};
-  std::vector<PunctualLight> lights{light};
-  LightSample ls = samplePunctualLight(viewOf(lights), {5, 0, -7}, 0.9f);
+  LightSample ls = samplePunctualLight(light, {5, 0, -7}, 1.0f);
   ASSERT_TRUE(ls.valid);
+  EXPECT_TRUE(ls.isDelta);
   EXPECT_GE(ls.distance, kInf);
   EXPECT_FLOAT_EQ(ls.wi.y, 1.0f);
   EXPECT_FLOAT_EQ(ls.radiance.x, 3.0f);
@@ -51,10 +46,9 @@ TEST(PunctualLight, SpotIsFullInsideItsInnerConeDarkOutsideItsOuterAndSmoothBetw
   spot.intensity = {1, 1, 1};
   spot.cosInner = std::cos(20.0f * kPi / 180.0f);
   spot.cosOuter = std::cos(40.0f * kPi / 180.0f);
-  std::vector<PunctualLight> lights{spot};
   auto irradianceAtAngle = [&](float degrees) {
     float t = std::tan(degrees * kPi / 180.0f);
-    LightSample ls = samplePunctualLight(viewOf(lights), {t, 0, 0}, 0.0f);
+    LightSample ls = samplePunctualLight(spot, {t, 0, 0}, 1.0f);
     return ls.valid ? ls.radiance.x * ls.distance * ls.distance : 0.0f;  // the falloff alone
   };
   EXPECT_FLOAT_EQ(irradianceAtAngle(0.0f), 1.0f);
@@ -70,17 +64,23 @@ TEST(PunctualLight, SpotIsFullInsideItsInnerConeDarkOutsideItsOuterAndSmoothBetw
   EXPECT_NEAR(spotFalloff(spot, 0.5f * (spot.cosInner + spot.cosOuter)), 0.5f, 1e-6f);
 }
 
-TEST(PunctualLight, EachOfSeveralIsPickedWithEqualProbability) {
-  std::vector<PunctualLight> lights(4);
-  for (size_t i = 0; i < lights.size(); ++i) lights[i].position = {float(i), 10, 0};
-  int picks[4] = {};
-  for (int k = 0; k < 4000; ++k) {
-    LightSample ls = samplePunctualLight(viewOf(lights), {0, 0, 0}, (float(k) + 0.5f) / 4000.0f);
-    ASSERT_FLOAT_EQ(ls.pdf, 0.25f);
-    ++picks[ls.lightIndex];
+// The power table weighs a point light by 4 pi I and a spot by what its cone and falloff let out: the
+// integral of I falloff over the sphere, here by quadrature in cos(theta).
+TEST(PunctualLight, PowerIsTheIntensityIntegratedOverTheSphere) {
+  PunctualLight point;
+  point.intensity = {2, 2, 2};
+  EXPECT_NEAR(punctualLightPower(point), 4.0 * kPi * 2.0, 1e-4);
+  PunctualLight spot = point;
+  spot.type = PunctualLightType::Spot;
+  spot.cosInner = std::cos(15.0f * kPi / 180.0f);
+  spot.cosOuter = std::cos(50.0f * kPi / 180.0f);
+  const int kSteps = 200000;
+  double integral = 0.0;
+  for (int i = 0; i < kSteps; ++i) {
+    float cosTheta = -1.0f + 2.0f * (float(i) + 0.5f) / float(kSteps);
+    integral += 2.0 * spotFalloff(spot, cosTheta) * (2.0 * kPi) * (2.0 / kSteps);  // I falloff dOmega
   }
-  for (int p : picks) EXPECT_EQ(p, 1000);
-  EXPECT_EQ(samplePunctualLight(viewOf(lights), {0, 0, 0}, 0.99999994f).lightIndex, 3u);
+  EXPECT_NEAR(punctualLightPower(spot), integral, 1e-3 * integral);
 }
 
 }  // namespace

@@ -72,7 +72,7 @@ TEST(EmissionLightTable, LightsAreWeighedByTheirTexturesAndDarkOnesLeftOut) {
   std::vector<uint32_t> primitives;
   for (const LightTriangle& l : flat.lights) primitives.push_back(l.primitiveId);
   EXPECT_EQ(primitives, (std::vector<uint32_t>{0, 1, 4, 5}));
-  const float fullPower = 0.5f * luminance(Vec3{2, 2, 2});  // area 0.5, the texture white all over it
+  const float fullPower = trianglePower({2, 2, 2}, 0.5f);  // area 0.5, the texture white all over it
   EXPECT_NEAR(flat.lights[0].power, fullPower, 1e-4f);
   EXPECT_NEAR(flat.lights[1].power, fullPower, 1e-4f);
   EXPECT_NEAR(flat.lights[2].power, 0.25f * fullPower, 0.03f * fullPower);

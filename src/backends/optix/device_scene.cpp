@@ -42,6 +42,8 @@ void DeviceScene::updateMaterials(const FlatScene& flat) {
 void DeviceScene::updateEnvironment(const FlatScene& flat) {
   environment_.clear();
   view_.environmentSelectProbability = flat.environmentSelectProbability;
+  view_.directionalSelectProbability = flat.directionalSelectProbability;
+  view_.boundedSelectProbability = flat.boundedSelectProbability;
   view_.environment = flat.environment;
   view_.environment.texels = copy(environment_, flat.environmentTexels, "the environment map");
   view_.environment.func = copy(environment_, flat.environmentDistribution.func, "the environment's sampling density");

@@ -33,6 +33,13 @@ struct BlinnPhongSpecular {
     Vec3 h = normalize(wo + wi);
     return halfVectorPdf(h) / (4.0f * dot(wo, h));
   }
+  // f is the density over max(cos theta_o, cos theta_i), times ks.
+  CANDELA_FN BsdfEval evalPdf(Vec3 wo, Vec3 wi) const {
+    if (wo.z <= 0.0f || wi.z <= 0.0f) return {};
+    Vec3 h = normalize(wo + wi);
+    float pdf = halfVectorPdf(h) / (4.0f * dot(wo, h));
+    return {ks * (pdf / fmaxf(wo.z, wi.z)), pdf};
+  }
   CANDELA_FN BsdfSample sample(Vec3 wo, float /*uChoice*/, Vec2 u) const {
     if (wo.z <= 0.0f) return {};
     // cos(theta_h) = u^(1 / (n + 1)), through sin^2 for precision.
@@ -61,10 +68,16 @@ struct BlinnPhongBsdf {
     LobeChoice<2> c = choice();
     return c.p[0] * diffuse.pdf(wo, wi) + c.p[1] * specular.pdf(wo, wi);
   }
+  CANDELA_FN BsdfEval evalPdf(Vec3 wo, Vec3 wi, const LobeChoice<2>& c) const {
+    BsdfEval d = diffuse.evalPdf(wo, wi), s = specular.evalPdf(wo, wi);
+    return {d.f + s.f, c.p[0] * d.pdf + c.p[1] * s.pdf};
+  }
+  CANDELA_FN BsdfEval evalPdf(Vec3 wo, Vec3 wi) const { return evalPdf(wo, wi, choice()); }
   CANDELA_FN BsdfSample sample(Vec3 wo, float uChoice, Vec2 u) const {
-    BsdfSample proposal = choice().choose(uChoice) == 0 ? diffuse.sample(wo, 0.0f, u) : specular.sample(wo, 0.0f, u);
+    LobeChoice<2> c = choice();
+    BsdfSample proposal = c.choose(uChoice) == 0 ? diffuse.sample(wo, 0.0f, u) : specular.sample(wo, 0.0f, u);
     if (!proposal.valid) return proposal;
-    return mixtureSample(*this, wo, proposal.wi, 1.0f);
+    return mixtureSample(*this, wo, proposal.wi, 1.0f, c);
   }
 };
 

@@ -14,4 +14,13 @@ struct BsdfSample {
   bool valid = false;
 };
 
+// A BSDF's value and density for one pair of directions, computed together (as Mitsuba 3's eval_pdf, Falcor's
+// evalPdf): next-event estimation needs both, for the contribution and its MIS weight, and so does a mixture
+// sample. Each model's evalPdf() shares the work its separate eval() and pdf() would each do, and returns the
+// same numbers.
+struct BsdfEval {
+  Vec3 f;
+  float pdf = 0.0f;
+};
+
 }  // namespace candela

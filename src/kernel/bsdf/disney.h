@@ -19,7 +19,6 @@ struct DisneyBsdf {
   RoughDielectric glass;
   DisneyClearcoat clearcoat;
   float diffuseWeight = 0.0f, specularWeight = 0.0f, glassWeight = 0.0f;
-  float clearcoatAmount = 0.0f;
 
   // `eta` is the relative index across the surface seen from wo (ior entering, 1 / ior leaving).
   CANDELA_FN DisneyBsdf(const Material& m, float eta) {
@@ -36,8 +35,7 @@ struct DisneyBsdf {
     specular = {lobe, lerp(metallic, dielectricF0, base)};
     Vec3 sqrtBase{sqrtf(fmaxf(0.0f, base.x)), sqrtf(fmaxf(0.0f, base.y)), sqrtf(fmaxf(0.0f, base.z))};
     glass = {lobe, eta, sqrtBase};
-    clearcoatAmount = clampf(m.clearcoat, 0.0f, 1.0f);
-    clearcoat = {0.25f * clearcoatAmount, lerp(clampf(m.clearcoatGloss, 0.0f, 1.0f), 0.1f, 0.001f)};
+    clearcoat = {0.25f * clampf(m.clearcoat, 0.0f, 1.0f), lerp(clampf(m.clearcoatGloss, 0.0f, 1.0f), 0.1f, 0.001f)};
 
     diffuseWeight = (1.0f - metallic) * (1.0f - specTrans);
     glassWeight = (1.0f - metallic) * specTrans;
@@ -74,6 +72,21 @@ struct DisneyBsdf {
     if (c.p[3] > 0.0f) p += c.p[3] * clearcoat.pdf(wo, wi);
     return p;
   }
+  // eval() and pdf() in one, each lobe evaluated once, with the lobe choice for wo given.
+  CANDELA_FN BsdfEval evalPdf(Vec3 wo, Vec3 wi, const LobeChoice<4>& c) const {
+    BsdfEval sum;
+    auto add = [&](const BsdfEval& lobe, float weight, float p) {
+      if (weight > 0.0f) sum.f += lobe.f * weight;
+      if (p > 0.0f) sum.pdf += p * lobe.pdf;
+    };
+    if (diffuseWeight > 0.0f || c.p[0] > 0.0f) add(diffuse.evalPdf(wo, wi), diffuseWeight, c.p[0]);
+    if (specularWeight > 0.0f || c.p[1] > 0.0f) add(specular.evalPdf(wo, wi), specularWeight, c.p[1]);
+    if (glassWeight > 0.0f || c.p[2] > 0.0f) add(glass.evalPdf(wo, wi), glassWeight, c.p[2]);
+    if (clearcoat.weight > 0.0f || c.p[3] > 0.0f)
+      add(clearcoat.evalPdf(wo, wi), clearcoat.weight > 0.0f ? 1.0f : 0.0f, c.p[3]);
+    return sum;
+  }
+  CANDELA_FN BsdfEval evalPdf(Vec3 wo, Vec3 wi) const { return evalPdf(wo, wi, choice(wo)); }
   CANDELA_FN BsdfSample sample(Vec3 wo, float uChoice, Vec2 u) const {
     LobeChoice<4> c = choice(wo);
     int lobe = c.choose(uChoice);
@@ -95,7 +108,7 @@ struct DisneyBsdf {
       proposal.pdf *= c.p[lobe];
       return proposal;
     }
-    return mixtureSample(*this, wo, proposal.wi, glass.eta);
+    return mixtureSample(*this, wo, proposal.wi, glass.eta, c);
   }
 };
 

@@ -30,12 +30,14 @@ struct DisneyDiffuse {
     return baseColor * (kInvPi * lerp(subsurface, fd, ss)) + sheenColor * schlickWeight(cosThetaD);
   }
   CANDELA_FN float pdf(Vec3 wo, Vec3 wi) const { return wo.z > 0.0f ? cosineHemispherePdf(wi.z) : 0.0f; }
+  CANDELA_FN BsdfEval evalPdf(Vec3 wo, Vec3 wi) const { return {eval(wo, wi), pdf(wo, wi)}; }
   CANDELA_FN BsdfSample sample(Vec3 wo, float /*uChoice*/, Vec2 u) const {
     BsdfSample s;
     if (wo.z <= 0.0f) return s;
     s.wi = sampleCosineHemisphere(u);
-    s.pdf = pdf(wo, s.wi);
-    s.f = eval(wo, s.wi);
+    BsdfEval e = evalPdf(wo, s.wi);
+    s.f = e.f;
+    s.pdf = e.pdf;
     s.valid = s.pdf > 0.0f;
     return s;
   }
@@ -67,6 +69,14 @@ struct DisneyClearcoat {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
     Vec3 h = normalize(wo + wi);
     return d(h.z) * h.z / (4.0f * dot(wo, h));
+  }
+  CANDELA_FN BsdfEval evalPdf(Vec3 wo, Vec3 wi) const {
+    if (wo.z <= 0.0f || wi.z <= 0.0f) return {};
+    Vec3 h = normalize(wo + wi);
+    float dh = d(h.z);
+    float value =
+        weight * fresnelSchlick(0.04f, dot(wi, h)) * dh * smithG1(wo.z) * smithG1(wi.z) / (4.0f * wo.z * wi.z);
+    return {{value, value, value}, dh * h.z / (4.0f * dot(wo, h))};
   }
   CANDELA_FN BsdfSample sample(Vec3 wo, float /*uChoice*/, Vec2 u) const {
     if (wo.z <= 0.0f) return {};

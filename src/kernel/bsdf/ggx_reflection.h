@@ -27,6 +27,17 @@ struct GgxReflection {
     h = normalize(h);
     return distribution.visibleNormalPdf(wo, h) / (4.0f * dot(wo, h));
   }
+  // D, and Lambda(wo) of G2 and of G1 in the visible-normal density, once: pdf = D G1(wo) / (4 cos_o).
+  CANDELA_FN BsdfEval evalPdf(Vec3 wo, Vec3 wi) const {
+    if (wo.z <= 0.0f || wi.z <= 0.0f) return {};
+    Vec3 h = wo + wi;
+    if (dot(h, h) == 0.0f) return {};
+    h = normalize(h);
+    float d = distribution.d(h), lambdaO = distribution.lambda(wo);
+    float value = d / ((1.0f + lambdaO + distribution.lambda(wi)) * 4.0f * wo.z * wi.z);
+    float pdf = dot(wo, h) > 0.0f ? d / ((1.0f + lambdaO) * 4.0f * wo.z) : 0.0f;
+    return {fresnelSchlick(f0, dot(wi, h)) * value, pdf};
+  }
   CANDELA_FN BsdfSample sample(Vec3 wo, float /*uChoice*/, Vec2 u) const {
     if (wo.z <= 0.0f) return {};
     return reflectAboutHalfVector(*this, wo, distribution.sampleVisibleNormal(wo, u));

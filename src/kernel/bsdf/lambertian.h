@@ -12,6 +12,7 @@ struct LambertianBsdf {
     return (wo.z > 0.0f && wi.z > 0.0f) ? albedo * kInvPi : Vec3{0, 0, 0};
   }
   CANDELA_FN float pdf(Vec3 wo, Vec3 wi) const { return wo.z > 0.0f ? cosineHemispherePdf(wi.z) : 0.0f; }
+  CANDELA_FN BsdfEval evalPdf(Vec3 wo, Vec3 wi) const { return {eval(wo, wi), pdf(wo, wi)}; }
   CANDELA_FN BsdfSample sample(Vec3 wo, float /*uChoice*/, Vec2 u) const {
     BsdfSample s;
     if (wo.z <= 0.0f) return s;

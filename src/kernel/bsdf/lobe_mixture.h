@@ -40,14 +40,15 @@ struct LobeChoice {
   }
 };
 
-// Completes a mixture sample once a lobe proposed wi: value and density of the whole model.
-template <class Model>
-CANDELA_FN BsdfSample mixtureSample(const Model& model, Vec3 wo, Vec3 wi, float eta) {
+// Completes a mixture sample once a lobe chosen by `choice` proposed wi: value and density of the whole model.
+template <class Model, int N>
+CANDELA_FN BsdfSample mixtureSample(const Model& model, Vec3 wo, Vec3 wi, float eta, const LobeChoice<N>& choice) {
   BsdfSample s;
   s.wi = wi;
-  s.pdf = model.pdf(wo, wi);
+  BsdfEval e = model.evalPdf(wo, wi, choice);
+  s.pdf = e.pdf;
   if (!(s.pdf > 0.0f)) return s;
-  s.f = model.eval(wo, wi);
+  s.f = e.f;
   s.eta = wi.z < 0.0f ? eta : 1.0f;
   s.valid = true;
   return s;

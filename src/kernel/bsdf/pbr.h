@@ -43,17 +43,27 @@ struct PbrBsdf {
     LobeChoice<2> c = choice(wo);
     return c.p[0] * cosineHemispherePdf(wi.z) + c.p[1] * specular.pdf(wo, wi);
   }
+  // With the lobe choice for wo (wo.z > 0) given.
+  CANDELA_FN BsdfEval evalPdf(Vec3 wo, Vec3 wi, const LobeChoice<2>& c) const {
+    BsdfEval s = specular.evalPdf(wo, wi);
+    return {evalDiffuse(wo, wi) + s.f, c.p[0] * cosineHemispherePdf(wi.z) + c.p[1] * s.pdf};
+  }
+  CANDELA_FN BsdfEval evalPdf(Vec3 wo, Vec3 wi) const {
+    if (wo.z <= 0.0f) return {};
+    return evalPdf(wo, wi, choice(wo));
+  }
   CANDELA_FN BsdfSample sample(Vec3 wo, float uChoice, Vec2 u) const {
     if (wo.z <= 0.0f) return {};
+    LobeChoice<2> c = choice(wo);
     Vec3 wi;
-    if (choice(wo).choose(uChoice) == 0) {
+    if (c.choose(uChoice) == 0) {
       wi = sampleCosineHemisphere(u);
     } else {
       BsdfSample s = specular.sample(wo, 0.0f, u);
       if (!s.valid) return s;
       wi = s.wi;
     }
-    return mixtureSample(*this, wo, wi, 1.0f);
+    return mixtureSample(*this, wo, wi, 1.0f, c);
   }
 };
 

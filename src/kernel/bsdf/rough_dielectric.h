@@ -55,6 +55,24 @@ struct RoughDielectric {
     return visible * fabsf(dot(wi, h)) / denom * (1.0f - f);
   }
 
+  // The half vector, its Fresnel reflectance, D and Lambda(wo) once for both.
+  CANDELA_FN BsdfEval evalPdf(Vec3 wo, Vec3 wi) const {
+    Vec3 h;
+    if (!halfVector(wo, wi, h)) return {};
+    float woh = dot(wo, h), wih = dot(wi, h);
+    float f = fresnelDielectric(woh, eta);
+    float d = distribution.d(h), lambdaO = distribution.lambda(wo);
+    float dg = d / (1.0f + lambdaO + distribution.lambda(wi));
+    float visible = d * woh / ((1.0f + lambdaO) * wo.z);  // halfVector() made wo.z and wo.h positive
+    if (wi.z > 0.0f) {
+      float r = dg * f / (4.0f * wi.z * wo.z);
+      return {{r, r, r}, visible / (4.0f * woh) * f};
+    }
+    float denom = sqr(wih + woh / eta);
+    float t = dg * (1.0f - f) * fabsf(wih * woh / (wi.z * wo.z * denom)) / (eta * eta);
+    return {transmissionTint * t, visible * fabsf(wih) / denom * (1.0f - f)};
+  }
+
   CANDELA_FN BsdfSample sample(Vec3 wo, float uChoice, Vec2 u) const {
     BsdfSample s;
     if (wo.z <= 0.0f) return s;
@@ -76,8 +94,9 @@ struct RoughDielectric {
       if (!refract(wo, h, eta, s.wi) || s.wi.z >= 0.0f) return s;
       s.eta = eta;
     }
-    s.pdf = pdf(wo, s.wi);
-    s.f = eval(wo, s.wi);
+    BsdfEval e = evalPdf(wo, s.wi);
+    s.f = e.f;
+    s.pdf = e.pdf;
     s.valid = s.pdf > 0.0f;
     return s;
   }

@@ -14,6 +14,7 @@ struct MirrorBsdf {
 
   CANDELA_FN Vec3 eval(Vec3, Vec3) const { return {0, 0, 0}; }
   CANDELA_FN float pdf(Vec3, Vec3) const { return 0.0f; }
+  CANDELA_FN BsdfEval evalPdf(Vec3, Vec3) const { return {}; }
   CANDELA_FN BsdfSample sample(Vec3 wo, float /*uChoice*/, Vec2 /*u*/) const {
     BsdfSample s;
     if (wo.z <= 0.0f) return s;
@@ -35,6 +36,7 @@ struct SmoothDielectricBsdf {
 
   CANDELA_FN Vec3 eval(Vec3, Vec3) const { return {0, 0, 0}; }
   CANDELA_FN float pdf(Vec3, Vec3) const { return 0.0f; }
+  CANDELA_FN BsdfEval evalPdf(Vec3, Vec3) const { return {}; }
   CANDELA_FN BsdfSample sample(Vec3 wo, float uChoice, Vec2 /*u*/) const {
     BsdfSample s;
     if (wo.z <= 0.0f) return s;
