@@ -437,6 +437,37 @@ TEST(GltfLoader, UnlitMaterialsEmitTheirBaseColour) {
   EXPECT_TRUE(isBlack(s.materials[0].baseColor));
 }
 
+// KHR_materials_volume: the absorption coefficient is -ln(attenuationColor) / attenuationDistance; a thickness
+// of 0 (thin-walled) or no distance means none.
+TEST(GltfLoader, VolumeAttenuationBecomesTheAbsorptionCoefficient) {
+  json g = triangleGltf();
+  json volume = {{"thicknessFactor", 0.5}, {"attenuationDistance", 2.0}, {"attenuationColor", {0.5, 1.0, 0.25}}};
+  g["materials"] = {
+      {{"extensions",
+        {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}}, {"KHR_materials_volume", volume}}}}};
+  g["meshes"][0]["primitives"][0]["material"] = 0;
+  g["extensionsUsed"] = {"KHR_materials_transmission", "KHR_materials_volume"};
+  LoadWarnings warnings;
+  Scene s = load(g, warnings);
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages[0];
+  EXPECT_FLOAT_EQ(s.materials[0].absorption.x, std::log(2.0f) / 2.0f);
+  EXPECT_FLOAT_EQ(s.materials[0].absorption.y, 0.0f);
+  EXPECT_FLOAT_EQ(s.materials[0].absorption.z, std::log(4.0f) / 2.0f);
+
+  g["materials"][0]["extensions"]["KHR_materials_volume"].erase("thicknessFactor");
+  EXPECT_EQ(load(g).materials[0].absorption.x, 0.0f);
+  g["materials"][0]["extensions"]["KHR_materials_volume"] = {{"thicknessFactor", 1.0},
+                                                             {"attenuationColor", {0.5, 0.5, 0.5}}};
+  EXPECT_EQ(load(g).materials[0].absorption.x, 0.0f);
+  g["materials"][0]["extensions"]["KHR_materials_volume"] = {{"thicknessFactor", 1.0},
+                                                             {"attenuationDistance", 1.0},
+                                                             {"attenuationColor", {0.0, -1.0, 1e300}}};
+  const Vec3 black = load(g).materials[0].absorption;
+  EXPECT_FLOAT_EQ(black.x, -std::log(1e-6f));
+  EXPECT_FLOAT_EQ(black.y, -std::log(1e-6f));
+  EXPECT_EQ(black.z, 0.0f);
+}
+
 TEST(SpecularGlossiness, DielectricsAndMetalsConvertExactly) {
   // A 4% specular over a diffuse colour is a dielectric of that base colour.
   const MetallicRoughness plastic =

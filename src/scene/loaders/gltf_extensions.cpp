@@ -14,7 +14,7 @@ namespace candela {
 namespace {
 
 // Read fully or in part; where in part, the loader warns about what it leaves out.
-constexpr std::array<std::string_view, 13> kSupported = {"EXT_mesh_gpu_instancing",
+constexpr std::array<std::string_view, 14> kSupported = {"EXT_mesh_gpu_instancing",
                                                          "KHR_lights_punctual",
                                                          "KHR_materials_anisotropy",
                                                          "KHR_materials_clearcoat",
@@ -25,6 +25,7 @@ constexpr std::array<std::string_view, 13> kSupported = {"EXT_mesh_gpu_instancin
                                                          "KHR_materials_specular",
                                                          "KHR_materials_transmission",
                                                          "KHR_materials_unlit",
+                                                         "KHR_materials_volume",
                                                          "KHR_mesh_quantization",
                                                          "KHR_texture_transform"};
 
