@@ -23,6 +23,17 @@ pkg_check_modules(XXHASH REQUIRED IMPORTED_TARGET libxxhash)
 find_path(TINYOBJLOADER_INCLUDE_DIR tiny_obj_loader.h REQUIRED)
 find_path(TINYGLTF_INCLUDE_DIR tiny_gltf.h REQUIRED)
 
+# glTF's KHR_draco_mesh_compression through Google's Draco library (libdraco-dev). Without it candela still builds;
+# a glTF file that requires the extension is then refused with a line naming it. CANDELA_DRACO_ENABLED says whether.
+find_package(draco QUIET CONFIG)
+if(TARGET draco::draco)
+  set(CANDELA_DRACO_ENABLED ON)
+  message(STATUS "draco: on (Draco ${draco_VERSION}): glTF files compressed with KHR_draco_mesh_compression load")
+else()
+  set(CANDELA_DRACO_ENABLED OFF)
+  message(STATUS "draco: off (needs libdraco-dev): glTF files that require KHR_draco_mesh_compression are refused")
+endif()
+
 # candela serve, the viewer in a web browser: Boost.Beast (headers only) for HTTP and WebSocket, libjpeg-turbo for
 # the frames. It is built when both are found; CANDELA_SERVE_ENABLED says whether.
 set(CANDELA_SERVE_ENABLED OFF)

@@ -25,6 +25,9 @@ packages=(
 # saying why. npm comes with NodeSource's nodejs; Debian ships it as a package of its own.
 browser_packages=(chromium nodejs)
 command -v npm >/dev/null || browser_packages+=(npm)
+# glTF's KHR_draco_mesh_compression. Installed where the archive has it (Debian 12: bookworm/main); candela builds
+# without it and then refuses glTF files that require the extension, naming it.
+draco_packages=(libdraco-dev)
 
 missing_among() {
   local p
@@ -34,7 +37,8 @@ missing_among() {
 }
 mapfile -t missing < <(missing_among "${packages[@]}")
 mapfile -t missing_browser < <(missing_among "${browser_packages[@]}")
-if [ ${#missing[@]} -eq 0 ] && [ ${#missing_browser[@]} -eq 0 ]; then
+mapfile -t missing_draco < <(missing_among "${draco_packages[@]}")
+if [ ${#missing[@]} -eq 0 ] && [ ${#missing_browser[@]} -eq 0 ] && [ ${#missing_draco[@]} -eq 0 ]; then
   echo "dependencies: all present"
   exit 0
 fi
@@ -46,6 +50,11 @@ install() { DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-ins
 if [ ${#missing[@]} -gt 0 ]; then
   echo "dependencies: installing ${missing[*]}"
   install "${missing[@]}"
+fi
+if [ ${#missing_draco[@]} -gt 0 ]; then
+  echo "dependencies: installing ${missing_draco[*]} (for Draco-compressed glTF)"
+  install "${missing_draco[@]}" ||
+    echo "dependencies: could not install ${missing_draco[*]}; glTF files that require Draco will be refused"
 fi
 if [ ${#missing_browser[@]} -gt 0 ]; then
   echo "dependencies: installing ${missing_browser[*]} (for the browser tests)"

@@ -10,6 +10,7 @@
 #include "kernel/render_settings.h"
 #include "kernel/shading_normal.h"
 #include "kernel/textured_material.h"
+#include "kernel/volume_absorption.h"
 
 namespace candela {
 
@@ -81,7 +82,10 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
     }
     if (kWithAovs && aovsPending) pathLength += hit.t;
     SurfaceInteraction si = makeInteraction(scene, hit);
-    if (hasTextures(scene.materials[si.materialId]))
+    const Material& stored = scene.materials[si.materialId];
+    // A segment that ends on a surface's inner side ran inside its material, which may absorb.
+    if (absorbs(stored) && dot(ray.direction, si.geometricNormal) > 0.0f) beta *= volumeTransmittance(stored, hit.t);
+    if (hasTextures(stored))
       si.footprint = textureFootprint(scene, hit, ray.direction, cone.widthAt(hit.t), settings.textureFilter);
     Vec3 wo = -ray.direction;
     Material material = evaluateSurfaceMaterial(scene, si, wo);

@@ -48,6 +48,10 @@ struct Material {
   float clearcoatGloss = 1.0f;
   float specTrans = 0.0f;
   float ior = 1.5f;
+  // Inside a transmissive material: the absorption coefficient per unit of world length, per channel, by which
+  // light decays between entering and leaving a closed object (Beer-Lambert; kernel/volume_absorption.h). Zero:
+  // none, as for a thin-walled surface.
+  Vec3 absorption{0.0f, 0.0f, 0.0f};
 
   // Coverage.
   AlphaMode alphaMode = AlphaMode::Opaque;

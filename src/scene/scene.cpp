@@ -71,6 +71,8 @@ void validateScene(const Scene& scene) {
   bool anyMix = false;
   for (const Material& m : scene.materials) {
     if (!finite(m.baseColor) || !finite(m.emission)) fail("a material has non-finite parameters");
+    if (!finite(m.absorption) || m.absorption.x < 0.0f || m.absorption.y < 0.0f || m.absorption.z < 0.0f)
+      fail("a material has an invalid absorption");
     for (int32_t t : {m.baseColorTexture, m.metallicRoughnessTexture, m.roughnessTexture, m.metallicTexture,
                       m.emissionTexture, m.normalTexture, m.opacityTexture, m.mixAmountTexture})
       if (t != kNoTexture && (t < 0 || size_t(t) >= scene.textures.size())) fail("a material uses a missing texture");

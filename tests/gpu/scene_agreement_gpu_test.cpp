@@ -181,6 +181,19 @@ TEST(GpuVertexColours, AgreeWithTheCpuBackend) {
   expectBackendsAgree(scene, 101);
 }
 
+// Absorbing volumes (glTF's KHR_materials_volume): the gallery's transmissive spheres absorb inside, red least.
+TEST(GpuAbsorbingVolumes, AgreeWithTheCpuBackend) {
+  Scene scene = makeMaterialGallery();
+  size_t absorbing = 0;
+  for (Material& m : scene.materials)
+    if (m.specTrans > 0.0f || m.type == MaterialType::Glass) {
+      m.absorption = {0.3f, 1.0f, 2.5f};
+      ++absorbing;
+    }
+  ASSERT_GT(absorbing, 0u);
+  expectBackendsAgree(scene, 121);
+}
+
 // Khronos sample models for what the kernel does beyond the core model: normal maps steep enough that
 // reflections are kept above the surface (NormalTangentMirrorTest), transmission of every roughness including
 // the index-matched ior 1 row (TransmissionRoughnessTest), and sampler wrap modes per axis

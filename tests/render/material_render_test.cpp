@@ -2,6 +2,7 @@
 // albedo for the others, the mirror corridor at 100 bounces, and cut-outs.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "bsdf/bsdf_cases.h"
@@ -50,6 +51,51 @@ TEST(MaterialRender, IndexMatchedTransmissionPassesLightStraightThrough) {
     PixelStatistics s = luminanceStatistics(renderCpu(furnaceSphere(air), settings, 16));
     EXPECT_NEAR(s.min, 1.0, 1e-4) << "roughness " << roughness;
     EXPECT_NEAR(s.max, 1.0, 1e-4) << "roughness " << roughness;
+  }
+}
+
+// KHR_materials_volume's Beer-Lambert absorption. The furnace sphere is seen head-on: every camera ray crosses
+// it along a chord between 1.997 and 2 (its diameter). Index-matched, the ray goes straight through and keeps
+// exp(-absorption * chord) of the sky's radiance 1. Smooth glass of ior 1.5 reflects F = 0.04 at normal
+// incidence; what enters leaves after k internal reflections with (1 - F)^2 F^k T^(k+1), T = exp(-2 absorption),
+// so the pixel sees F + (1 - F)^2 T / (1 - F T).
+TEST(MaterialRender, AbsorbingVolumesKeepBeerLambertsTransmittance) {
+  const float absorption[3] = {0.1f, 0.5f, 1.5f};
+  RenderSettings settings;
+  settings.width = settings.height = 16;
+  settings.maxDepth = 64;
+  settings.rouletteDepth = 1000;
+
+  Material air;
+  air.type = MaterialType::Disney;
+  air.baseColor = {1, 1, 1};
+  air.specTrans = 1.0f;
+  air.ior = 1.0f;
+  air.absorption = {absorption[0], absorption[1], absorption[2]};
+  const Image straight = renderCpu(furnaceSphere(air), settings, 2);
+  for (int c = 0; c < 3; ++c) {
+    float lowest = 1e30f, highest = -1e30f;
+    for (const Vec3& p : straight.pixels) {
+      const float value = c == 0 ? p.x : c == 1 ? p.y : p.z;
+      lowest = std::min(lowest, value);
+      highest = std::max(highest, value);
+    }
+    EXPECT_GE(lowest, std::exp(-absorption[c] * 2.0f) - 1e-4f) << "channel " << c;
+    EXPECT_LE(highest, std::exp(-absorption[c] * 1.997f) + 1e-4f) << "channel " << c;
+  }
+
+  Material glass;
+  glass.type = MaterialType::Glass;
+  glass.baseColor = {1, 1, 1};
+  glass.ior = 1.5f;
+  glass.absorption = air.absorption;
+  const Image refracted = renderCpu(furnaceSphere(glass), settings, 256);
+  for (int c = 0; c < 3; ++c) {
+    double sum = 0.0;
+    for (const Vec3& p : refracted.pixels) sum += c == 0 ? p.x : c == 1 ? p.y : p.z;
+    const double mean = sum / double(refracted.pixels.size());
+    const double f = 0.04, t = std::exp(-2.0 * absorption[c]);
+    EXPECT_NEAR(mean, f + (1 - f) * (1 - f) * t / (1 - f * t), 4e-3) << "channel " << c;
   }
 }
 

@@ -7,12 +7,14 @@
 #include <string_view>
 #include <vector>
 
+#include "scene/loaders/gltf_draco.h"
+
 namespace candela {
 
 namespace {
 
 // Read fully or in part; where in part, the loader warns about what it leaves out.
-constexpr std::array<std::string_view, 13> kSupported = {"EXT_mesh_gpu_instancing",
+constexpr std::array<std::string_view, 14> kSupported = {"EXT_mesh_gpu_instancing",
                                                          "KHR_lights_punctual",
                                                          "KHR_materials_anisotropy",
                                                          "KHR_materials_clearcoat",
@@ -23,18 +25,30 @@ constexpr std::array<std::string_view, 13> kSupported = {"EXT_mesh_gpu_instancin
                                                          "KHR_materials_specular",
                                                          "KHR_materials_transmission",
                                                          "KHR_materials_unlit",
+                                                         "KHR_materials_volume",
                                                          "KHR_mesh_quantization",
                                                          "KHR_texture_transform"};
 
+constexpr std::string_view kDraco = "KHR_draco_mesh_compression";  // where candela is built with Draco
+
 bool contains(auto& list, const std::string& name) { return std::find(list.begin(), list.end(), name) != list.end(); }
+
+bool supported(const std::string& name) {
+  return contains(kSupported, name) || (name == kDraco && gltfDracoAvailable());
+}
 
 void refuseUnsupported(const std::vector<std::string>& required, const std::string& file) {
   std::string refused;
   for (const std::string& name : required)
-    if (!contains(kSupported, name)) refused += (refused.empty() ? "" : ", ") + name;
-  if (!refused.empty())
-    failLoad(file, "requires the glTF extension" + std::string(refused.find(',') == std::string::npos ? " " : "s ") +
-                       refused + ", which candela does not support");
+    if (!supported(name)) refused += (refused.empty() ? "" : ", ") + name;
+  if (refused.empty()) return;
+  const bool many = refused.find(',') != std::string::npos;
+  if (refused == kDraco)
+    failLoad(file, "requires the glTF extension " + refused +
+                       ", which this build of candela does not support: it was built without Draco (install "
+                       "libdraco-dev and configure again)");
+  failLoad(file, "requires the glTF extension" + std::string(many ? "s " : " ") + refused +
+                     ", which candela does not support");
 }
 
 }  // namespace
@@ -51,7 +65,7 @@ void refuseUnsupportedRequiredExtensions(const char* json, size_t size, const st
 void checkGltfExtensions(const tinygltf::Model& model, const std::string& file, LoadWarnings& warnings) {
   refuseUnsupported(model.extensionsRequired, file);
   for (const std::string& name : model.extensionsUsed)
-    if (!contains(kSupported, name))
+    if (!supported(name))
       warnings.add(file, "uses the glTF extension " + name + ", which candela does not support; it is ignored");
 }
 

@@ -12,13 +12,16 @@
 #include <cstring>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <sstream>
+#include <tuple>
 
 #include "scene/animation_player.h"
 #include "scene/loaders/file_bytes.h"
 #include "scene/loaders/gltf_accessors.h"
 #include "scene/loaders/gltf_animation.h"
 #include "scene/loaders/gltf_buffer_uris.h"
+#include "scene/loaders/gltf_draco.h"
 #include "scene/loaders/gltf_extensions.h"
 #include "scene/loaders/gltf_materials.h"
 #include "scene/loaders/image_decoding.h"
@@ -166,7 +169,6 @@ class GltfSceneBuilder {
         sharesTextures_(sharedTextures != nullptr) {}
 
   Scene build() {
-    checkGltfExtensions(model_, file_, warnings_);
     scene_.name = fs::path(file_).stem().string();
     for (size_t i = 0; i < model_.materials.size(); ++i) {
       GltfMaterial m = materialFromGltf(
@@ -706,6 +708,13 @@ Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, c
   auto [json, jsonSize] = binary ? glbJson(data, size) : std::pair{reinterpret_cast<const char*>(data), size};
   if (json && jsonDepth(json, jsonSize) > kMaxJsonDepth)
     failLoad(name, "JSON nests deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+  // Draco primitives as tinygltf accepts them (gltf_draco.h); decodeDracoPrimitives fills them in after parsing.
+  const std::optional<std::vector<uint8_t>> forTinygltf = withoutDracoIndices(data, size);
+  if (forTinygltf) {
+    data = forTinygltf->data();
+    size = forTinygltf->size();
+    std::tie(json, jsonSize) = binary ? glbJson(data, size) : std::pair{reinterpret_cast<const char*>(data), size};
+  }
 
   tinygltf::TinyGLTF loader;
   FileAccess access{baseDir, files, json ? std::string_view(json, jsonSize) : std::string_view(), {}, {}, {}};
@@ -726,6 +735,8 @@ Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, c
   std::string line;
   while (std::getline(lines, line))
     if (!firstLine(line).empty()) warnings.add(name, firstLine(line));
+  checkGltfExtensions(model, name, warnings);
+  decodeDracoPrimitives(model, name);
   Scene scene = GltfSceneBuilder(model, name, files, warnings, sharedTextures).build();
   scene.inputFiles.insert(scene.inputFiles.begin(), access.filesRead.begin(), access.filesRead.end());
   return scene;

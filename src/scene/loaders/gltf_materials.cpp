@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "scene/loaders/gltf_specular_glossiness.h"
@@ -52,6 +53,24 @@ UvTransform transformOf(const tinygltf::Value& t) {
   u.m[4] = c * sy;
   u.m[5] = finiteOr(offset[1], 0);
   return u;
+}
+
+// KHR_materials_volume: light keeps attenuationColor after attenuationDistance inside the material, so the
+// absorption coefficient is -ln(colour) / distance per channel. A thickness of 0 (the default) makes the surface
+// thin-walled, without a volume. The thickness itself, and its texture, are for renderers that cannot trace the
+// volume's far side; a path tracer measures the distance each ray travels inside. The coefficient has effect
+// only where light enters the material: with KHR_materials_transmission.
+Vec3 absorptionOf(const tinygltf::Value& e) {
+  const float thickness = finiteOr(number(e, "thicknessFactor", 0), 0);
+  const double distance = number(e, "attenuationDistance", std::numeric_limits<double>::infinity());
+  if (!(thickness > 0.0f) || !(distance > 0.0) || !std::isfinite(distance)) return {0, 0, 0};
+  const std::vector<double> c = numbers(e, "attenuationColor", {1, 1, 1});
+  // A colour of 0 would absorb infinitely (and make 0 * infinity at a zero distance): 1e-6 is black enough.
+  auto channel = [&](double colour) {
+    const double coefficient = -std::log(std::clamp(std::isfinite(colour) ? colour : 1.0, 1e-6, 1.0)) / distance;
+    return float(std::min(coefficient, double(std::numeric_limits<float>::max())));
+  };
+  return {channel(c[0]), channel(c[1]), channel(c[2])};
 }
 
 class TextureRefs {
@@ -221,6 +240,7 @@ GltfMaterial materialFromGltf(const tinygltf::Model& model, int index, const std
     m.specTrans = std::clamp(finiteOr(number(*e, "transmissionFactor", 0), 0), 0.0f, 1.0f);
   if (const tinygltf::Value* e = disneyOnly("KHR_materials_ior", {}))
     m.ior = std::max(finiteOr(number(*e, "ior", 1.5), 1.5f), 1.0f);
+  if (const tinygltf::Value* e = extension(g.extensions, "KHR_materials_volume")) m.absorption = absorptionOf(*e);
   if (const tinygltf::Value* e = disneyOnly("KHR_materials_clearcoat", {"clearcoatTexture", "clearcoatRoughnessTexture",
                                                                         "clearcoatNormalTexture"})) {
     m.clearcoat = std::clamp(finiteOr(number(*e, "clearcoatFactor", 0), 0), 0.0f, 1.0f);
