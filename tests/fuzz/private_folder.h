@@ -1,9 +1,9 @@
 #pragma once
 // A folder of the fuzz process's own, removed at exit, for targets whose loaders read files by path.
 //
-// The folder is made in memory (/dev/shm) where there is one: writing every input to a disk file cost more than
-// the loader itself (an ext4 file truncated and rewritten is flushed on close), and kept scene_file at a few hundred
-// executions a second. The loader still opens, checks and reads a real file by its path, as it does in candela.
+// The folder is made in memory (/dev/shm) where there is one, unless TMPDIR names another: on a disk-backed /tmp,
+// scene_file spent most of its time waiting for the file system (20,000 inputs: 109 s, of which 6 s on the CPU;
+// in /dev/shm: 11 s, 2 s on the CPU). The loader still opens, checks and reads a real file by its path.
 #include <fcntl.h>
 #include <stdlib.h>
 #include <sys/stat.h>
@@ -18,7 +18,9 @@
 
 namespace candela::fuzz {
 
-inline std::filesystem::path memoryBackedTempFolder() {
+// TMPDIR where it is set (the tests set it), otherwise /dev/shm where it can be written, otherwise the system's.
+inline std::filesystem::path tempFolderRoot() {
+  if (const char* chosen = std::getenv("TMPDIR"); chosen && *chosen) return chosen;
   std::error_code error;
   if (std::filesystem::is_directory("/dev/shm", error) && ::access("/dev/shm", W_OK | X_OK) == 0) return "/dev/shm";
   return std::filesystem::temp_directory_path();
@@ -26,14 +28,21 @@ inline std::filesystem::path memoryBackedTempFolder() {
 
 inline const std::filesystem::path& privateFolder() {
   static const std::filesystem::path folder = [] {
-    std::string pattern = (memoryBackedTempFolder() / "candela-fuzz-XXXXXX").string();
+    std::string pattern = (tempFolderRoot() / "candela-fuzz-XXXXXX").string();
     if (!mkdtemp(pattern.data())) {
       std::perror("mkdtemp");
       std::abort();
     }
-    std::atexit([] { std::filesystem::remove_all(privateFolder()); });
     return std::filesystem::path(pattern);
   }();
+  // Registered once `folder` is complete, so that it runs before `folder` is destroyed: exit handlers and static
+  // destructors run in the reverse order of their registration. (Registered inside the initialiser, it ran after,
+  // on a destroyed path, and every folder was left behind.)
+  static const bool removedAtExit = std::atexit([] {
+    std::error_code ignored;  // an exit handler must not throw
+    std::filesystem::remove_all(folder, ignored);
+  }) == 0;
+  (void)removedAtExit;
   return folder;
 }
 
