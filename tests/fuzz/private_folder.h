@@ -26,6 +26,8 @@ inline std::filesystem::path tempFolderRoot() {
   return std::filesystem::temp_directory_path();
 }
 
+inline void removePrivateFolder();
+
 inline const std::filesystem::path& privateFolder() {
   static const std::filesystem::path folder = [] {
     std::string pattern = (tempFolderRoot() / "candela-fuzz-XXXXXX").string();
@@ -38,12 +40,14 @@ inline const std::filesystem::path& privateFolder() {
   // Registered once `folder` is complete, so that it runs before `folder` is destroyed: exit handlers and static
   // destructors run in the reverse order of their registration. (Registered inside the initialiser, it ran after,
   // on a destroyed path, and every folder was left behind.)
-  static const bool removedAtExit = std::atexit([] {
-    std::error_code ignored;  // an exit handler must not throw
-    std::filesystem::remove_all(folder, ignored);
-  }) == 0;
+  static const bool removedAtExit = std::atexit(removePrivateFolder) == 0;
   (void)removedAtExit;
   return folder;
+}
+
+inline void removePrivateFolder() {
+  std::error_code ignored;  // an exit handler must not throw
+  std::filesystem::remove_all(privateFolder(), ignored);
 }
 
 // Writes `bytes` to `name` in the private folder, replacing what was there, and returns its path. The same file

@@ -4,10 +4,10 @@
 
 #include <OpenEXR/ImfRgbaFile.h>
 #include <png.h>
+#include <stb/stb_image_write.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
-#include <stb/stb_image_write.h>
 
 #include <jpeglib.h>
 #include <cstdio>
@@ -180,7 +180,10 @@ TEST(PngDecoding, CompressedTextLargerThanTheFileDoesNotStopTheImage) {
   TempFolder dir;
   const std::string text(1 << 20, 'a');  // some 1 KB compressed
   writePngWithLibpng(
-      dir.file("z.png"), 2, 1, 8, PNG_COLOR_TYPE_GRAY, false, [](uint32_t, std::vector<uint8_t>& s) { s = {7, 9}; },
+      dir.file("z.png"), 2, 1, 8, PNG_COLOR_TYPE_GRAY, false,
+      [](uint32_t, std::vector<uint8_t>& s) {
+        s = {7, 9};
+      },
       [&](png_structp png, png_infop info) {
         png_text entry{};
         entry.compression = PNG_TEXT_COMPRESSION_zTXt;
