@@ -5,6 +5,9 @@
 #include <OpenEXR/ImfRgbaFile.h>
 #include <png.h>
 #include <stb/stb_image_write.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <jpeglib.h>
 #include <cstdio>
@@ -132,6 +135,66 @@ TEST(PngDecoding, DamagedFilesAreLoadErrorsNamingTheFile) {
       EXPECT_EQ(std::string(e.what()).rfind("cut.png: not a readable PNG image (", 0), 0u) << e.what();
     }
   }
+}
+
+// The growth of the peak memory of a child process that calls `work`, in MB.
+long peakMemoryGrowthMb(const std::function<void()>& work) {
+  const pid_t child = fork();
+  if (child == 0) {
+    rusage before{}, after{};
+    getrusage(RUSAGE_SELF, &before);
+    work();
+    getrusage(RUSAGE_SELF, &after);
+    _exit(int(std::min<long>((after.ru_maxrss - before.ru_maxrss) / 1024, 255)));
+  }
+  int status = 0;
+  waitpid(child, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 255;
+}
+
+TEST(PngDecoding, ChunksClaimingMoreThanTheFileHoldsAreNotAllocated) {
+  TempFolder dir;
+  const uint8_t rgb[3 * 4 * 4] = {};
+  ASSERT_TRUE(stbi_write_png(dir.file("ok.png").c_str(), 4, 4, 3, rgb, 4 * 3));
+  std::vector<uint8_t> bytes = readAll(dir.file("ok.png"));
+  // After the signature and IHDR (33 bytes): an iTXt chunk that claims 0x6b6b6b6b bytes (1.8 GB), which libpng
+  // allocated and cleared before it found the file too short (found by the png fuzz target).
+  const uint8_t claim[] = {0x6b, 0x6b, 0x6b, 0x6b, 'i', 'T', 'X', 't', 'k', 'k', 'k', 'k'};
+  bytes.insert(bytes.begin() + 33, std::begin(claim), std::end(claim));
+  const long growth = peakMemoryGrowthMb([&] {
+    try {
+      decodeImage("claim.png", bytes.data(), bytes.size(), false);
+    } catch (const LoadError&) {
+    }
+  });
+  EXPECT_LT(growth, 64);
+  try {
+    decodeImage("claim.png", bytes.data(), bytes.size(), false);
+    ADD_FAILURE() << "a PNG with a chunk longer than the file decoded";
+  } catch (const LoadError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("claim.png: not a readable PNG image (", 0), 0u) << e.what();
+  }
+}
+
+TEST(PngDecoding, CompressedTextLargerThanTheFileDoesNotStopTheImage) {
+  TempFolder dir;
+  const std::string text(1 << 20, 'a');  // some 1 KB compressed
+  writePngWithLibpng(
+      dir.file("z.png"), 2, 1, 8, PNG_COLOR_TYPE_GRAY, false,
+      [](uint32_t, std::vector<uint8_t>& s) {
+        s = {7, 9};
+      },
+      [&](png_structp png, png_infop info) {
+        png_text entry{};
+        entry.compression = PNG_TEXT_COMPRESSION_zTXt;
+        entry.key = const_cast<char*>("Comment");
+        entry.text = const_cast<char*>(text.c_str());
+        entry.text_length = text.size();
+        png_set_text(png, info, &entry, 1);
+      });
+  ASSERT_LT(readAll(dir.file("z.png")).size(), size_t(1) << 16);
+  Texture z = decodeFile(dir.file("z.png"));
+  EXPECT_EQ(z.bytes, (std::vector<uint8_t>{7, 9}));
 }
 
 // Writes a JPEG through libjpeg: grey when `components` is 1, else RGB.
