@@ -16,7 +16,7 @@ namespace {
 // Bumped whenever the layout of a cache file changes.
 // 2: textures wrap per axis, cameras, vertex colours; 3: file states; 4: orthographic cameras, image shift;
 // 5: animations
-constexpr uint32_t kCacheFormatVersion = 5;
+constexpr uint32_t kCacheFormatVersion = 6;
 
 std::string absolutePath(const std::string& path) {
   std::error_code ec;
