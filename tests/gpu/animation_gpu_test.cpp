@@ -90,7 +90,7 @@ TEST(GpuAnimation, BatchedMeshesAreBuiltAgainWithTheirInstances) {
   constexpr int kSide = 18;  // 324 meshes
   for (int i = 0; i < kSide * kSide; ++i) {
     Mesh mesh;
-    const float x = float(i % kSide) - kSide / 2.0f, y = float(i / kSide) - kSide / 2.0f, h = 0.3f + 0.001f * i;
+    const float x = float(i % kSide) - kSide / 2.0f, y = float(i / kSide) - kSide / 2.0f, h = 0.3f + 0.001f * float(i);
     appendQuad(mesh, {x, y, 0}, {x + h, y, 0}, {x + h, y + h, 0}, {x, y + h, 0}, {0, 0, 1}, i % 7 == 0 ? 1 : 0);
     scene.meshes.push_back(std::move(mesh));
     scene.instances.push_back({uint32_t(i), Affine3x4{}});
