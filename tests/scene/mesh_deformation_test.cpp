@@ -124,6 +124,23 @@ TEST(GltfSkins, TwoJointQuadDeformsAsLinearBlendSkinningSays) {
   expectNear(worldVertex(scene, 3), {0, 2, 0});
 }
 
+TEST(GltfSkins, ASceneFilePlacingASkinnedModelTwiceDeformsEachPlacement) {
+  TempFolder folder;
+  skinnedQuad().write(folder);
+  const std::string path = folder.write("scene.json", R"({"models": [{"file": "deformed.gltf"},
+      {"file": "deformed.gltf", "transform": {"translate": [0, 0, -3]}}]})");
+  Scene scene = loadScene(path, SceneLoadOptions{});
+  ASSERT_EQ(scene.animation.deformations.size(), 2u);
+  ASSERT_EQ(scene.instances.size(), 2u);
+  EXPECT_NE(scene.instances[0].meshId, scene.instances[1].meshId);  // loaded again: meshes of its own
+  AnimationPlayer(scene).pose(scene, 0, 1.0f);
+  for (size_t i = 0; i < 2; ++i) {
+    const Instance& instance = scene.instances[i];
+    expectNear(instance.objectToWorld.point(scene.meshes[instance.meshId].positions[2]),
+               {-1, 2, i == 0 ? 0.0f : -3.0f});
+  }
+}
+
 TEST(GltfSkins, HostileSkinDataIsOneLineNamingThePlace) {
   auto loadError = [](GltfFile file) {
     TempFolder folder;
