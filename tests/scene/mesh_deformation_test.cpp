@@ -231,6 +231,40 @@ TEST(GltfMorphTargets, StaticNodeWeightsShapeTheMeshWithoutAnimation) {
   expectNear(worldVertex(scene, 2), {1, 1, -1.5f});
 }
 
+// Morph targets without accessors, or nodes that each deform a copy of one mesh, cost little in the file but a
+// vertex each here: past 2^24 such vertices the load stops with one line.
+TEST(GltfMorphTargets, TooManyDeformedVerticesAreRefusedWithOneLine) {
+  auto loadError = [](GltfFile file) {
+    TempFolder folder;
+    LoadWarnings warnings;
+    try {
+      loadGltf(file.write(folder), warnings);
+    } catch (const LoadError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(loaded)");
+  };
+  auto bigMesh = [](json targets) {
+    GltfFile f;
+    const int positions = f.floats(std::vector<float>(3 * 16384, 0.0f), "VEC3");
+    f.gltf["meshes"] = {{{"primitives", {{{"attributes", {{"POSITION", positions}}}, {"targets", targets}}}}}};
+    f.gltf["nodes"] = {{{"mesh", 0}}};
+    f.gltf["scenes"] = {{{"nodes", {0}}}};
+    return f;
+  };
+  const std::string limit = "skinned and morphed meshes of more than 16777216 vertices in all";
+  GltfFile emptyTargets = bigMesh(json::array());
+  for (int t = 0; t < 1024; ++t) emptyTargets.gltf["meshes"][0]["primitives"][0]["targets"].push_back(json::object());
+  EXPECT_NE(loadError(emptyTargets).find("nodes[0]: " + limit), std::string::npos) << loadError(emptyTargets);
+
+  GltfFile copies = bigMesh(json::array({json::object()}));
+  for (int n = 1; n < 600; ++n) {
+    copies.gltf["nodes"].push_back({{"mesh", 0}});
+    copies.gltf["scenes"][0]["nodes"].push_back(n);
+  }
+  EXPECT_NE(loadError(copies).find(limit), std::string::npos) << loadError(copies);
+}
+
 TEST(GltfMorphTargets, TheSceneCacheKeepsDeformations) {
   TempFolder folder;
   const std::string path = skinnedQuad().write(folder);

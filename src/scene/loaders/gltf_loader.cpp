@@ -36,6 +36,10 @@ namespace fs = std::filesystem;
 
 constexpr int kMaxJsonDepth = 128;   // deeper JSON is not a plausible glTF and would exhaust the stack
 constexpr int kMaxNodeDepth = 1024;  // deeper node hierarchies would exhaust the stack
+// Vertices of skinned and morphed meshes in all, each counted once and once more per morph target: each node
+// that uses such a mesh deforms a copy of its own, and a target without accessors costs nothing in the file but
+// a delta per vertex here, so a small file could otherwise ask for any amount of memory.
+constexpr size_t kMaxDeformedVertices = size_t(1) << 24;
 
 // The deepest nesting of arrays and objects in JSON text (strings skipped).
 int jsonDepth(const char* p, size_t n) {
@@ -440,6 +444,13 @@ class GltfSceneBuilder {
     std::vector<GltfVertexOrigin> origins;
     Mesh mesh = convertMesh(node.mesh, &origins);
     if (mesh.triangleCount() == 0) return std::nullopt;
+    const size_t targets = morphTargetCount(model_, index);
+    deformedVertices_ += mesh.positions.size() * (1 + targets);
+    if (deformedVertices_ > kMaxDeformedVertices)
+      failLoad(file_, "nodes[" + std::to_string(index) + "]: skinned and morphed meshes of more than " +
+                          std::to_string(kMaxDeformedVertices) +
+                          " vertices in all, counted once per morph target too (each node deforms a copy of its "
+                          "mesh of its own)");
     MeshDeformation d;
     d.mesh = uint32_t(scene_.meshes.size());
     d.node = uint32_t(animationNode);
@@ -774,6 +785,7 @@ class GltfSceneBuilder {
   size_t lightRangesIgnored_ = 0;
   std::vector<bool> animated_;           // per node of the file: a channel moves it
   std::vector<bool> posed_;              // per node of the file: it has an entry in scene_.animation.nodes
+  size_t deformedVertices_ = 0;          // of the meshes deformedMeshFor made
   std::vector<int32_t> animationNodes_;  // per node of the file: its entry in scene_.animation.nodes, or -1
   enum class NodeState : uint8_t { Unvisited, OnPath, Done };
   std::vector<NodeState> nodeStates_;  // by node index, for the traversal
