@@ -10,7 +10,8 @@ glTF-pbrSpecularGlossiness, ...); the first of glTF, glTF-Binary and glTF-Embedd
 with --all-variants. Each render is small (--spp, --width, --height) and lit by --env when given, so that what
 is seen depends on the model. The table lists per model whether it rendered or was refused, candela's warnings
 and the seconds the command took; renders go to --images, with a contact sheet of them all (contact-sheet.png, in
-the table's order, eight to a row). Stdlib only.
+the table's order, eight to a row). Animated models render in their rest pose, or at --time seconds of their
+first animation. Stdlib only.
 """
 import argparse
 import html
@@ -80,11 +81,13 @@ def strip_path(line: str, model_file: Path):
     return line.replace(str(model_file) + ": ", "").replace(str(model_file.parent) + "/", "")
 
 
-def render(candela, model_file: Path, image: Path, args):
+def render(candela, model_file: Path, image: Path, animated: bool, args):
     command = [candela, "render", str(model_file), "--no-cache", "--backend", args.backend, "--spp", str(args.spp),
                "--width", str(args.width), "--height", str(args.height), "-o", str(image)]
     if args.env:
         command += ["--env", args.env]
+    if animated and args.time is not None:
+        command += ["--time", str(args.time)]
     start = time.monotonic()
     try:
         done = subprocess.run(command, capture_output=True, text=True, timeout=args.timeout)
@@ -182,6 +185,7 @@ def main():
     parser.add_argument("--width", type=int, default=160)
     parser.add_argument("--height", type=int, default=120)
     parser.add_argument("--timeout", type=int, default=300, help="seconds per model")
+    parser.add_argument("--time", type=float, help="render animated models at this time (seconds), not at rest")
     parser.add_argument("--all-variants", action="store_true", help="render every variant of each model")
     parser.add_argument("--only", help="a regular expression: render only models whose name matches")
     args = parser.parse_args()
@@ -196,10 +200,11 @@ def main():
             continue
         for variant, model_file in variants(model, args.all_variants):
             image = args.images / f"{model.name}.{variant}.png"
-            result = render(args.candela, model_file, image, args)
+            doc = gltf_json(model_file)
+            result = render(args.candela, model_file, image, bool(doc and doc.get("animations")), args)
             if result["status"] == "rendered":
                 images.append(image)
-            rows.append((model.name, variant, features(gltf_json(model_file)), result))
+            rows.append((model.name, variant, features(doc), result))
             print(f"{model.name:32} {variant:28} {result['status']:10} {result['seconds']:7.2f} s "
                   f"{len(result['warnings'])} warnings {result['error']}", flush=True)
 

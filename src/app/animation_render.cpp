@@ -118,6 +118,8 @@ int runAnimatedRender(const RenderJob& job, const AnimationRequest& request, con
                    seconds, hidden);
     if (first)
       backend->setScene(scene);
+    else if (!player.deformedMeshes().empty())
+      backend->setDeformedMeshes(scene, player.deformedMeshes());
     else
       backend->setInstanceTransforms(scene);
     const RenderOutcome outcome = renderLoadedScene(hinted, scene, /*showProgress=*/writes, backend.get());

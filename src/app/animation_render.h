@@ -36,11 +36,12 @@ std::string frameFileName(const std::string& output, int64_t frame);
 
 // Renders the job's scene posed by its animation at request.time into `output`, or every frame of
 // request.frames (frame f at f / request.framesPerSecond seconds) into frameFileName(output, f). The scene is
-// loaded and handed to the backend once; each frame only poses the animated instances again
-// (Backend::setInstanceTransforms). Every file is written atomically, and the paths written are printed on
-// stdout as they are done. A scene without an animation renders the same image at every time, with a warning.
-// With `job.team`, every process of the team calls it: each frame's sample indices are shared among them, and the
-// writer writes the frames. Throws std::runtime_error on failure.
+// loaded and handed to the backend once; each frame only poses the animated instances, cameras and lights again
+// (Backend::setInstanceTransforms) and deforms skinned and morphed meshes (Backend::setDeformedMeshes). Every file is
+// written atomically, and the paths written are printed on stdout as they are done. A scene without an animation
+// renders the same image at every time, with a warning. With `job.team`, every process of the team calls it: each
+// frame's sample indices are shared among them, and the writer writes the frames. Throws std::runtime_error on
+// failure.
 int runAnimatedRender(const RenderJob& job, const AnimationRequest& request, const std::string& output,
                       const DisplaySettings& display);
 

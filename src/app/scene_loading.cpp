@@ -110,6 +110,7 @@ void chooseCamera(Scene& scene, const std::string& spec, const std::string& choi
   for (size_t i = 0; i < scene.cameras.size(); ++i)
     if (scene.cameras[i].name == choice || std::to_string(i) == choice) {
       scene.camera = scene.cameras[i].description;
+      scene.cameraIndex = int32_t(i);
       scene.cameraMissing = false;
       return;
     }
@@ -133,6 +134,7 @@ void frameSceneBounds(Scene& scene) {
   c.up = {0, 1, 0};
   c.apertureRadius = 0.0f;
   c.focusDistance = 0.0f;
+  scene.cameraIndex = -1;
   scene.cameraMissing = false;
 }
 

@@ -62,9 +62,14 @@ class Backend {
   // FlatScene::replaceMaterials: a different count, emission, or a material newly needing tangents).
   virtual bool setMaterials(const std::vector<Material>& materials) = 0;
   virtual void setEnvironment(const Environment& environment) = 0;
-  // The scene last set again, with only the transforms of its instances changed (an animation posed at another
-  // time): a backend that can rebuilds only what depends on them. By default the whole scene is set again.
+  // The scene last set again, with only the transforms of its instances and its punctual lights changed (an
+  // animation posed at another time): a backend that can rebuilds only what depends on them. By default the
+  // whole scene is set again.
   virtual void setInstanceTransforms(const Scene& scene) { setScene(scene); }
+  // The same, with also the vertices (positions, normals, tangents; their counts unchanged) of the meshes
+  // `deformed` changed (skinned or morphed meshes posed at another time): a backend that can rebuilds only the
+  // structures of those meshes and what depends on the transforms. By default the whole scene is set again.
+  virtual void setDeformedMeshes(const Scene& scene, const std::vector<uint32_t>& /*deformed*/) { setScene(scene); }
   virtual void setCamera(const Camera& camera) = 0;
   virtual void setSettings(const RenderSettings& settings) = 0;
 

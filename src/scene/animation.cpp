@@ -7,6 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "scene/scene.h"
 #include "scene/transform.h"
 
 namespace candela {
@@ -64,8 +65,35 @@ void SceneAnimation::renumberInstances(const std::vector<uint32_t>& newIndex) {
   instances.resize(out);
 }
 
-void appendAnimation(SceneAnimation& into, const SceneAnimation& part, const Affine3x4& transform,
-                     uint32_t instanceBase) {
+void SceneAnimation::renumberLights(const std::vector<uint32_t>& newIndex) {
+  size_t out = 0;
+  for (const AnimatedLight& a : lights) {
+    if (a.light >= newIndex.size() || newIndex[a.light] == ~0u) continue;
+    lights[out] = a;
+    lights[out++].light = newIndex[a.light];
+  }
+  lights.resize(out);
+}
+
+size_t SceneAnimation::renumberMeshes(const std::vector<uint32_t>& newIndex, const std::vector<size_t>& vertexCounts) {
+  size_t out = 0, dropped = 0;
+  for (size_t i = 0; i < deformations.size(); ++i) {
+    MeshDeformation& d = deformations[i];
+    const uint32_t mesh = d.mesh < newIndex.size() ? newIndex[d.mesh] : ~0u;
+    if (mesh == ~0u) continue;  // its mesh went with all its triangles: nothing to deform
+    if (mesh >= vertexCounts.size() || vertexCounts[mesh] != d.vertexCount()) {
+      ++dropped;
+      continue;
+    }
+    d.mesh = mesh;
+    if (out != i) deformations[out] = std::move(d);  // a vector moved onto itself would be emptied
+    ++out;
+  }
+  deformations.resize(out);
+  return dropped;
+}
+
+void appendAnimation(SceneAnimation& into, const SceneAnimation& part, const Affine3x4& transform, AppendedAt at) {
   if (part.empty()) return;
   const uint32_t nodeBase = uint32_t(into.nodes.size());
   const glm::mat4 outer = toMat4(transform);
@@ -77,9 +105,30 @@ void appendAnimation(SceneAnimation& into, const SceneAnimation& part, const Aff
     into.nodes.push_back(node);
   }
   for (AnimatedInstance a : part.instances) {
-    a.instance += instanceBase;
+    a.instance += at.instance;
     a.node += nodeBase;
     into.instances.push_back(a);
+  }
+  for (AnimatedCamera a : part.cameras) {
+    a.camera += at.camera;
+    a.node += nodeBase;
+    into.cameras.push_back(a);
+  }
+  for (AnimatedLight a : part.lights) {
+    a.light += at.light;
+    a.node += nodeBase;
+    into.lights.push_back(a);
+  }
+  const int32_t skinBase = int32_t(into.skins.size());
+  for (Skin skin : part.skins) {
+    for (uint32_t& joint : skin.joints) joint += nodeBase;
+    into.skins.push_back(std::move(skin));
+  }
+  for (MeshDeformation d : part.deformations) {
+    d.mesh += at.mesh;
+    d.node += nodeBase;
+    if (d.skin >= 0) d.skin += skinBase;
+    into.deformations.push_back(std::move(d));
   }
   if (into.clips.size() < part.clips.size()) into.clips.resize(part.clips.size());
   for (size_t c = 0; c < part.clips.size(); ++c) {
@@ -96,11 +145,16 @@ void appendAnimation(SceneAnimation& into, const SceneAnimation& part, const Aff
   }
 }
 
-Vec4 sampleChannel(const AnimationChannel& channel, float time) {
+namespace {
+
+// Vec4 `part` (of vec4sPerValue()) of the channel's value at `time`.
+Vec4 samplePart(const AnimationChannel& channel, float time, size_t part) {
   const std::vector<float>& times = channel.times;
   const bool cubic = channel.interpolation == AnimationInterpolation::CubicSpline;
   const bool rotation = channel.property == AnimatedProperty::Rotation;
-  auto value = [&](size_t key) { return channel.values[cubic ? 3 * key + 1 : key]; };
+  const size_t stride = channel.vec4sPerValue();
+  auto element = [&](size_t e) { return channel.values[e * stride + part]; };
+  auto value = [&](size_t key) { return element(cubic ? 3 * key + 1 : key); };
   auto finish = [&](Vec4 v) { return rotation ? normalizedQuaternion(v) : v; };
   if (!(time > times.front())) return finish(value(0));  // a NaN time too
   if (time >= times.back()) return finish(value(times.size() - 1));
@@ -115,14 +169,28 @@ Vec4 sampleChannel(const AnimationChannel& channel, float time) {
                       : value(k) * (1.0f - s) + value(k + 1) * s;
     case AnimationInterpolation::CubicSpline: {
       // glTF's cubic Hermite spline: the tangents are per second, so they scale with the key interval.
-      const Vec4 outTangent = channel.values[3 * k + 2] * interval;
-      const Vec4 inTangent = channel.values[3 * (k + 1)] * interval;
+      const Vec4 outTangent = element(3 * k + 2) * interval;
+      const Vec4 inTangent = element(3 * (k + 1)) * interval;
       const float s2 = s * s, s3 = s2 * s;
       return finish(value(k) * (2 * s3 - 3 * s2 + 1) + outTangent * (s3 - 2 * s2 + s) +
                     value(k + 1) * (-2 * s3 + 3 * s2) + inTangent * (s3 - s2));
     }
   }
   return finish(value(k));
+}
+
+}  // namespace
+
+Vec4 sampleChannel(const AnimationChannel& channel, float time) { return samplePart(channel, time, 0); }
+
+std::vector<float> sampleWeights(const AnimationChannel& channel, float time) {
+  std::vector<float> weights(channel.weightCount);
+  for (size_t part = 0; part < channel.vec4sPerValue(); ++part) {
+    const Vec4 v = samplePart(channel, time, part);
+    const float four[4] = {v.x, v.y, v.z, v.w};
+    for (size_t i = 0; i < 4 && 4 * part + i < weights.size(); ++i) weights[4 * part + i] = four[i];
+  }
+  return weights;
 }
 
 std::vector<Affine3x4> nodeWorldTransforms(const SceneAnimation& animation, int clip, float time) {
@@ -140,6 +208,7 @@ std::vector<Affine3x4> nodeWorldTransforms(const SceneAnimation& animation, int 
         case AnimatedProperty::Translation: translations[channel.node] = {v.x, v.y, v.z}; break;
         case AnimatedProperty::Rotation: rotations[channel.node] = v; break;
         case AnimatedProperty::Scale: scales[channel.node] = {v.x, v.y, v.z}; break;
+        case AnimatedProperty::Weights: break;  // the player's (morph targets)
       }
     }
   std::vector<glm::mat4> world(animation.nodes.size());
@@ -153,7 +222,58 @@ std::vector<Affine3x4> nodeWorldTransforms(const SceneAnimation& animation, int 
   return out;
 }
 
-void validateAnimation(const SceneAnimation& animation, size_t instanceCount) {
+namespace {
+
+bool finite(Vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+template <class T>
+bool allFinite(const std::vector<T>& values) {
+  return std::all_of(values.begin(), values.end(), [](const T& v) { return finite(v); });
+}
+
+void validateDeformations(const Scene& scene) {
+  const SceneAnimation& animation = scene.animation;
+  for (const Skin& skin : animation.skins) {
+    if (skin.inverseBinds.size() != skin.joints.size()) fail("a skin has not one inverse bind matrix per joint");
+    for (uint32_t joint : skin.joints)
+      if (joint >= animation.nodes.size()) fail("a skin's joint is a missing node");
+    for (const Affine3x4& m : skin.inverseBinds)
+      for (float x : m.m)
+        if (!std::isfinite(x)) fail("a skin has a non-finite inverse bind matrix");
+  }
+  for (const MeshDeformation& d : animation.deformations) {
+    if (d.mesh >= scene.meshes.size() || d.node >= animation.nodes.size())
+      fail("a mesh deformation refers to a missing mesh or node");
+    const Mesh& mesh = scene.meshes[d.mesh];
+    const size_t n = d.vertexCount(), targets = d.targetCount;
+    if (n != mesh.positions.size() || d.normals.size() != mesh.normals.size() ||
+        d.tangents.size() != mesh.tangents.size())
+      fail("a mesh deformation does not match its mesh's vertices");
+    if (d.positionDeltas.size() != targets * n || (!d.normalDeltas.empty() && d.normalDeltas.size() != targets * n) ||
+        d.weights.size() != targets)
+      fail("a mesh deformation has the wrong number of morph target values");
+    if (d.skin >= int32_t(animation.skins.size()) || d.skin < -1) fail("a mesh deformation refers to a missing skin");
+    if (d.skin >= 0) {
+      if (d.joints.size() != 4 * n || d.jointWeights.size() != n)
+        fail("a mesh deformation has not four joints and weights per vertex");
+      for (uint32_t j : d.joints)
+        if (j >= animation.skins[size_t(d.skin)].joints.size()) fail("a mesh deformation refers to a missing joint");
+    } else if (!d.joints.empty() || !d.jointWeights.empty()) {
+      fail("a mesh deformation has joints but no skin");
+    }
+    if (!allFinite(d.positions) || !allFinite(d.normals) || !allFinite(d.tangents) || !allFinite(d.positionDeltas) ||
+        !allFinite(d.normalDeltas) || !allFinite(d.jointWeights) ||
+        !std::all_of(d.weights.begin(), d.weights.end(), [](float w) { return std::isfinite(w); }))
+      fail("a mesh deformation has non-finite values");
+  }
+}
+
+}  // namespace
+
+void validateAnimation(const Scene& scene) {
+  const SceneAnimation& animation = scene.animation;
+  const size_t instanceCount = scene.instances.size(), cameraCount = scene.cameras.size(),
+               lightCount = scene.punctualLights.size();
   for (size_t n = 0; n < animation.nodes.size(); ++n) {
     const AnimationNode& node = animation.nodes[n];
     if (node.parent < -1 || node.parent >= int32_t(n))
@@ -171,6 +291,12 @@ void validateAnimation(const SceneAnimation& animation, size_t instanceCount) {
   for (const AnimatedInstance& a : animation.instances)
     if (a.instance >= instanceCount || a.node >= animation.nodes.size())
       fail("an animated instance refers to a missing instance or node");
+  for (const AnimatedCamera& a : animation.cameras)
+    if (a.camera >= cameraCount || a.node >= animation.nodes.size())
+      fail("an animated camera refers to a missing camera or node");
+  for (const AnimatedLight& a : animation.lights)
+    if (a.light >= lightCount || a.node >= animation.nodes.size())
+      fail("an animated light refers to a missing light or node");
   for (const AnimationClip& clip : animation.clips) {
     const std::string name = "animation '" + clip.name + "'";
     if (!std::isfinite(clip.start) || !std::isfinite(clip.end) || clip.start > clip.end)
@@ -178,18 +304,21 @@ void validateAnimation(const SceneAnimation& animation, size_t instanceCount) {
     for (const AnimationChannel& c : clip.channels) {
       if (c.node >= animation.nodes.size()) fail(name + " animates a missing node");
       if (uint8_t(c.interpolation) > uint8_t(AnimationInterpolation::CubicSpline) ||
-          uint8_t(c.property) > uint8_t(AnimatedProperty::Scale))
+          uint8_t(c.property) > uint8_t(AnimatedProperty::Weights))
         fail(name + " has an unknown interpolation or property");
       if (c.times.empty()) fail(name + " has a channel without keys");
       for (size_t k = 0; k < c.times.size(); ++k)
         if (!std::isfinite(c.times[k]) || (k > 0 && !(c.times[k] > c.times[k - 1])))
           fail(name + " has key times that are not finite and increasing");
       const size_t perKey = c.interpolation == AnimationInterpolation::CubicSpline ? 3 : 1;
-      if (c.values.size() != perKey * c.times.size()) fail(name + " has a channel with the wrong number of values");
+      if ((c.property == AnimatedProperty::Weights) != (c.weightCount > 0) ||
+          c.values.size() != perKey * c.times.size() * c.vec4sPerValue())
+        fail(name + " has a channel with the wrong number of values");
       for (Vec4 v : c.values)
         if (!finite(v)) fail(name + " has non-finite key values");
     }
   }
+  validateDeformations(scene);
 }
 
 size_t findClip(const SceneAnimation& animation, const std::string& choice) {

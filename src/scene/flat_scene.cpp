@@ -281,16 +281,37 @@ bool FlatScene::replaceMaterials(const std::vector<Material>& replacement) {
 }
 
 bool FlatScene::replaceInstanceTransforms(const Scene& scene) {
-  if (scene.instances.size() != instances.size()) return false;
+  if (scene.instances.size() != instances.size() || scene.punctualLights.size() != punctualLights.size()) return false;
   for (size_t i = 0; i < instances.size(); ++i)
     if (scene.instances[i].meshId != instances[i].meshId) return false;
   for (size_t i = 0; i < instances.size(); ++i) {
     instances[i].objectToWorld = scene.instances[i].objectToWorld;
     instances[i].normalToWorld = normalTransform(scene.instances[i].objectToWorld);
   }
+  punctualLights = scene.punctualLights;
   lights.clear();
   lightCdf.clear();
   buildLightTable(scene, *this);
+  return true;
+}
+
+bool FlatScene::replaceMeshVertices(const Scene& scene, const std::vector<uint32_t>& deformed) {
+  if (scene.meshes.size() != meshes.size()) return false;
+  for (uint32_t m : deformed)
+    if (m >= meshes.size() || scene.meshes[m].positions.size() != meshes[m].vertexCount ||
+        scene.meshes[m].triangleCount() != meshes[m].triangleCount ||
+        scene.meshes[m].normals.empty() == bool(meshes[m].hasNormals))
+      return false;
+  for (uint32_t m : deformed) {
+    const Mesh& mesh = scene.meshes[m];
+    const MeshRecord& record = meshes[m];
+    std::copy(mesh.positions.begin(), mesh.positions.end(), positions.begin() + record.firstVertex);
+    std::copy(mesh.normals.begin(), mesh.normals.end(), normals.begin() + record.firstVertex);
+    if (!record.hasTangents) continue;
+    const std::vector<Vec4> generated = mesh.tangents.empty() ? generateTangents(mesh) : std::vector<Vec4>{};
+    const std::vector<Vec4>& meshTangents = mesh.tangents.empty() ? generated : mesh.tangents;
+    std::copy(meshTangents.begin(), meshTangents.end(), tangents.begin() + record.firstVertex);
+  }
   return true;
 }
 

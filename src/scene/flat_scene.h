@@ -48,9 +48,15 @@ struct FlatScene {
   // what changed: the same count, the same emission (the light table) and no material newly needing tangents.
   // Returns false, changing nothing, when the scene must be built again instead.
   bool replaceMaterials(const std::vector<Material>& replacement);
-  // Takes the instance transforms of `scene`, the scene this was built from with only those changed, and builds
-  // the light table again. Returns false, changing nothing, when the instances differ in number or meshes.
+  // Takes the instance transforms and punctual lights of `scene`, the scene this was built from with only those
+  // changed, and builds the light table again. Returns false, changing nothing, when the instances differ in
+  // number or meshes, or the punctual lights in number.
   bool replaceInstanceTransforms(const Scene& scene);
+  // Takes the vertices (positions, normals and tangents) of the meshes `deformed` of `scene`, the scene this was
+  // built from with only those (and what replaceInstanceTransforms takes) changed; tangents this built are built
+  // again. Returns false, changing nothing, when a mesh's vertex or triangle count differs. Call
+  // replaceInstanceTransforms afterwards: the light table depends on the vertices.
+  bool replaceMeshVertices(const Scene& scene, const std::vector<uint32_t>& deformed);
   // Rebuilds the environment's parameters, texels and sampling distribution, and how often light sampling
   // picks it; the geometry and the light table stay.
   void replaceEnvironment(const Environment& replacement);

@@ -116,8 +116,10 @@ struct Scene {
   CameraDescription camera;
   RenderHints renderHints;
   bool cameraMissing = false;        // the input had no camera: `camera` is to be framed around the scene's bounds
-  std::vector<NamedCamera> cameras;  // every camera the input defines, in order; `camera` is the first
-  // Keyframed node transforms (glTF animations); `instances` hold the rest pose. See animation_player.h.
+  std::vector<NamedCamera> cameras;  // every camera the input defines, in order
+  int32_t cameraIndex = -1;          // the entry of `cameras` that `camera` is (and moves with), or -1
+  // Keyframed node transforms (glTF animations); `instances`, `cameras` and `punctualLights` hold the rest pose.
+  // See animation_player.h.
   SceneAnimation animation;
   // The files the scene was read from: the model, its material libraries, buffers and images (what the scene
   // cache checks for changes).

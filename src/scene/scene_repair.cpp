@@ -315,6 +315,14 @@ void repairInstances(Scene& scene, const std::vector<MeshRepair>& repairs, const
   }
   scene.instances.resize(out);
   if (!newInstanceIndex.empty()) scene.animation.renumberInstances(newInstanceIndex);
+  if (!scene.animation.deformations.empty()) {
+    std::vector<size_t> vertexCounts;
+    for (const Mesh& mesh : scene.meshes) vertexCounts.push_back(mesh.positions.size());
+    if (const size_t dropped = scene.animation.renumberMeshes(newMeshId, vertexCounts); dropped > 0)
+      warnings.add(file, std::to_string(dropped) +
+                             " skinned or morphed meshes keep their rest shape: vertices beyond the coordinate "
+                             "range were dropped from them");
+  }
   if (unusable > 0)
     warnings.add(file, std::to_string(unusable) +
                            " instances dropped: their transform is not finite, is singular, or shrinks some "
@@ -386,7 +394,10 @@ void clampEmittedRadiance(Scene& scene, const std::string& file, LoadWarnings& w
 void repairPunctualLights(Scene& scene, const std::string& file, LoadWarnings& warnings) {
   size_t dropped = 0, clamped = 0;
   std::vector<PunctualLight> kept;
-  for (PunctualLight light : scene.punctualLights) {
+  // The animation refers to lights by index: each light's new one, or ~0u where it was dropped.
+  std::vector<uint32_t> newLightIndex(scene.punctualLights.size(), ~0u);
+  for (size_t i = 0; i < scene.punctualLights.size(); ++i) {
+    PunctualLight light = scene.punctualLights[i];
     const bool usable = withinRange(light.position, kMaxSceneCoordinate) && withinRange(light.direction, 2.0f) &&
                         length(light.direction) > 0.5f && std::isfinite(light.cosInner) &&
                         std::isfinite(light.cosOuter);
@@ -398,9 +409,11 @@ void repairPunctualLights(Scene& scene, const std::string& file, LoadWarnings& w
     light.cosOuter = std::clamp(light.cosOuter, -1.0f, 1.0f);
     light.cosInner = std::clamp(light.cosInner, light.cosOuter, 1.0f);
     if (clampValues(light.intensity, kMaxRadiance) > 0) ++clamped;
+    newLightIndex[i] = uint32_t(kept.size());
     kept.push_back(light);
   }
   scene.punctualLights = std::move(kept);
+  scene.animation.renumberLights(newLightIndex);
   if (dropped > 0)
     warnings.add(file, std::to_string(dropped) + " punctual lights dropped: a position not finite or beyond +-" +
                            compact(kMaxSceneCoordinate) + ", or no direction");

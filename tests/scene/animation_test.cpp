@@ -11,6 +11,7 @@
 #include "app/animation_render.h"
 #include "app/scene_loading.h"
 #include "backends/cpu/cpu_backend.h"
+#include "scene/animated_gltf.h"
 #include "scene/animation_player.h"
 #include "scene/cache/scene_cache.h"
 #include "scene/loaders/gltf_loader.h"
@@ -211,7 +212,7 @@ TEST(GltfAnimation, HostileKeysAreOneLineNamingTheSampler) {
   }
 }
 
-TEST(GltfAnimation, MorphWeightChannelsAreIgnoredWithOneWarning) {
+TEST(GltfAnimation, MorphWeightChannelsOfNodesWithoutTargetsAreIgnoredWithOneWarning) {
   TempFolder folder;
   AnimatedFile file;
   const int weights = file.add({0, 1}, "SCALAR");
@@ -221,7 +222,9 @@ TEST(GltfAnimation, MorphWeightChannelsAreIgnoredWithOneWarning) {
   LoadWarnings warnings;
   const Scene scene = loadGltf(file.write(folder.path()), warnings);
   ASSERT_EQ(warnings.messages.size(), 1u);
-  EXPECT_NE(warnings.messages[0].find("2 animation channels of morph target weights are ignored"), std::string::npos);
+  EXPECT_NE(warnings.messages[0].find("2 animation channels of morph target weights are ignored: their nodes have no "
+                                      "morph targets"),
+            std::string::npos);
   EXPECT_EQ(scene.animation.clips[0].channels.size(), 3u);
 }
 

@@ -84,7 +84,12 @@ FrameStats RenderSession::renderFrame(const Camera& camera, const RenderSettings
   bool restart = !haveFrame_ || !accumulate;
   if (!sceneChanged_ && materialsChanged_ && !backend_->setMaterials(scene_.materials)) sceneChanged_ = true;
   if (!sceneChanged_ && environmentChanged_) backend_->setEnvironment(scene_.environment);
-  if (!sceneChanged_ && instancesChanged_) backend_->setInstanceTransforms(scene_);
+  if (!sceneChanged_ && instancesChanged_) {
+    if (!player_->deformedMeshes().empty())
+      backend_->setDeformedMeshes(scene_, player_->deformedMeshes());
+    else
+      backend_->setInstanceTransforms(scene_);
+  }
   if (sceneChanged_) backend_->setScene(scene_);
   if (sceneChanged_ || materialsChanged_ || environmentChanged_ || instancesChanged_) restart = true;
   sceneChanged_ = materialsChanged_ = environmentChanged_ = instancesChanged_ = false;

@@ -29,8 +29,9 @@ class RenderSession {
   // (Backend::setMaterials), or the whole scene again where it cannot take them so.
   void setMaterialOverrides(const MaterialOverrides& overrides);
 
-  // Poses the scene's animated instances for `clip` at `time` (AnimationPlayer); the backend gets the new
-  // transforms (Backend::setInstanceTransforms) with the next frame, only when the pose is another one.
+  // Poses the scene's animated instances, cameras, lights and deformed meshes for `clip` at `time`
+  // (AnimationPlayer); the backend gets them (Backend::setInstanceTransforms, or setDeformedMeshes) with the next
+  // frame, only when the pose is another one.
   // Returns whether it is.
   bool poseAnimation(int clip, float time);
 

@@ -79,6 +79,7 @@ class Viewer {
   Vec2 openSceneField_;
   bool openSceneFieldActive_ = false;
   bool sceneJustShown_ = true;
+  bool followsSceneCamera_ = false;  // the view is the scene's animated camera, moved with each pose
   int framebufferWidth_ = 0;
   int framebufferHeight_ = 0;
 };
@@ -196,8 +197,15 @@ void Viewer::handleKey(const WindowEvent& e) {
   if (e.code == GLFW_KEY_F12) stateRequested_ = true;
   if (ImGui::GetIO().WantCaptureKeyboard) return;
   if (fly) *fly = true;
-  if (e.code == GLFW_KEY_F) camera_->frameScene();
-  if (e.code == GLFW_KEY_R) camera_->reset();
+  if (e.code == GLFW_KEY_F) {
+    camera_->frameScene();
+    followsSceneCamera_ = false;
+  }
+  if (e.code == GLFW_KEY_R) {
+    // Back to the scene's camera, where the animation has it now; an animated one is followed again.
+    camera_ = std::make_unique<OrbitCamera>(session_.scene().camera, session_.summary().bounds);
+    followsSceneCamera_ = sceneCameraAnimated(session_.scene());
+  }
   if (e.code == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(window_.handle(), GLFW_TRUE);
 }
 
@@ -207,6 +215,7 @@ void Viewer::showScene(Scene scene, const std::string& spec) {
   validateScene(scene);
   SceneSummary summary = summarizeScene(scene);
   camera_ = std::make_unique<OrbitCamera>(scene.camera, summary.bounds);
+  followsSceneCamera_ = sceneCameraAnimated(scene);
   status_.sceneName = scene.name;
   status_.animationClips.clear();
   status_.animationRanges.clear();
@@ -270,10 +279,16 @@ void Viewer::frame(double now, double seconds) {
     advanceAnimation(controls_.animation, animation, seconds);
     posed = session_.poseAnimation(controls_.animation.clip, controls_.animation.time);
   }
+  // The view follows an animated scene camera until the user moves it (R goes back to it).
+  if (posed && followsSceneCamera_)
+    camera_ = std::make_unique<OrbitCamera>(session_.scene().camera, session_.summary().bounds);
   // ImGui takes this frame's share of the queued input first; the camera takes what ImGui does not want.
   handleInput(imgui_.beginFrame());
+  const float aspect = float(imageWidth) / float(imageHeight);
+  const Camera beforeInput = camera_->camera(aspect);
   input_.apply(*camera_, heldFlyKeys(), float(std::min(seconds, kMaxFlyStep)), float(imageHeight));
-  const Camera camera = camera_->camera(float(imageWidth) / float(imageHeight));
+  const Camera camera = camera_->camera(aspect);
+  if (!sameCamera(camera, beforeInput)) followsSceneCamera_ = false;
   // A scene's first camera is where the view starts, not a motion.
   const bool moved = (!sceneJustShown_ && !sameCamera(camera, lastCamera_)) || (posed && controls_.animation.playing);
   lastCamera_ = camera;

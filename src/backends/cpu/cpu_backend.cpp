@@ -60,6 +60,13 @@ void CpuBackend::setInstanceTransforms(const Scene& scene) {
   restart();
 }
 
+void CpuBackend::setDeformedMeshes(const Scene& scene, const std::vector<uint32_t>& deformed) {
+  if (!flat_.replaceMeshVertices(scene, deformed) || !flat_.replaceInstanceTransforms(scene)) return setScene(scene);
+  embree_.updateMeshVertices(flat_, deformed);
+  embree_.updateInstanceTransforms(flat_);
+  restart();
+}
+
 void CpuBackend::setCamera(const Camera& camera) {
   camera_ = camera;
   restart();

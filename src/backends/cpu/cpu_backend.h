@@ -20,6 +20,8 @@ class CpuBackend final : public Backend {
   bool setMaterials(const std::vector<Material>& materials) override;
   void setEnvironment(const Environment& environment) override;
   void setInstanceTransforms(const Scene& scene) override;
+  // Rebuilds the BVHs of the deformed meshes and the top-level BVH; the others stay.
+  void setDeformedMeshes(const Scene& scene, const std::vector<uint32_t>& deformed) override;
   void setCamera(const Camera& camera) override;
   void setSettings(const RenderSettings& settings) override;
 

@@ -103,6 +103,20 @@ void EmbreeScene::updateInstanceTransforms(const FlatScene& flat) {
   check(device_, "building the instance BVH");
 }
 
+void EmbreeScene::updateMeshVertices(const FlatScene& flat, const std::vector<uint32_t>& deformed) {
+  for (uint32_t m : deformed) {
+    const MeshRecord& mesh = flat.meshes[m];
+    RTCGeometry geometry = rtcGetGeometry(meshScenes_[m], 0);
+    auto* vertices = static_cast<float*>(rtcGetGeometryBufferData(geometry, RTC_BUFFER_TYPE_VERTEX, 0));
+    if (mesh.vertexCount > 0)
+      std::memcpy(vertices, flat.positions.data() + mesh.firstVertex, mesh.vertexCount * sizeof(Vec3));
+    rtcUpdateGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0);
+    rtcCommitGeometry(geometry);
+    rtcCommitScene(meshScenes_[m]);
+    check(device_, "building a deformed mesh's BVH");
+  }
+}
+
 bool EmbreeScene::filtersMatch(const FlatScene& flat) const { return filtered_ == meshesThatCanPassRays(flat); }
 
 }  // namespace candela

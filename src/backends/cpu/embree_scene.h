@@ -21,6 +21,9 @@ class EmbreeScene {
   // After FlatScene::replaceInstanceTransforms: the instances take their new transforms and only the top-level
   // BVH is built again.
   void updateInstanceTransforms(const FlatScene& flat);
+  // After FlatScene::replaceMeshVertices: the meshes `deformed` take their new positions and their BVHs are
+  // built again; call updateInstanceTransforms afterwards, which commits the top level again.
+  void updateMeshVertices(const FlatScene& flat, const std::vector<uint32_t>& deformed);
   RTCScene topLevel() const { return top_; }
   // Whether the meshes that carry filter functions are still those that need them after a material edit.
   bool filtersMatch(const FlatScene& flat) const;

@@ -190,6 +190,17 @@ void AccelerationStructures::update(OptixDeviceContext context, cudaStream_t str
   if (instancesChanged) ++statistics_.instanceBuilds;
 }
 
+void AccelerationStructures::updateInstanceTransforms(OptixDeviceContext context, cudaStream_t stream,
+                                                      const FlatScene& flat, const SceneView& device) {
+  const bool batched = std::any_of(meshes_.begin(), meshes_.end(), [](const MeshStructure& m) { return m.batch >= 0; });
+  if (batched || meshes_.size() != flat.meshes.size()) return update(context, stream, &flat, flat, device);
+  // Without batches every IAS instance is one of the scene's, its instanceId the index of its record.
+  for (OptixInstance& instance : instanceList_)
+    std::memcpy(instance.transform, flat.instances[instance.instanceId].objectToWorld.m, sizeof instance.transform);
+  buildInstances(context, stream, instanceList_);
+  ++statistics_.instanceBuilds;
+}
+
 std::vector<AccelerationStructures::BuildGroup> AccelerationStructures::groupForBuilding(
     const FlatScene& flat, const std::vector<MeshStructure>& meshes, const std::vector<uint32_t>& toBuild,
     const std::vector<std::pair<uint32_t, uint32_t>>& sharing) const {

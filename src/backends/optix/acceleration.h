@@ -33,6 +33,12 @@ class AccelerationStructures {
   void update(OptixDeviceContext context, cudaStream_t stream, const FlatScene* previous, const FlatScene& flat,
               const SceneView& device);
 
+  // After FlatScene::replaceInstanceTransforms on the scene of the last update: builds the IAS again over the
+  // same GASes with the new transforms. Where meshes are batched (built in world space), the batches are built
+  // again too, as update() does; every other GAS is kept either way.
+  void updateInstanceTransforms(OptixDeviceContext context, cudaStream_t stream, const FlatScene& flat,
+                                const SceneView& device);
+
   OptixTraversableHandle topLevel() const { return topLevel_; }
   // For the launch parameters: the instance ids of the batches' build inputs, and the first IAS instance id
   // that is a batch.

@@ -16,7 +16,6 @@ void DeviceScene::upload(const FlatScene& flat) {
   view_.indices = copy(buffers_, flat.indices, "triangle indices");
   view_.triangleMaterials = copy(buffers_, flat.triangleMaterials, "triangle materials");
   view_.meshes = copy(buffers_, flat.meshes, "mesh records");
-  view_.instances = copy(buffers_, flat.instances, "instance records");
   materials_ = DeviceBuffer::fromVector(flat.materials, "materials");
   view_.materials = materials_.as<const Material>();
   // Every texture with texels is sampled through a texture object, so the texel arrays stay on the host.
@@ -24,12 +23,22 @@ void DeviceScene::upload(const FlatScene& flat) {
   view_.texels.textures = copy(buffers_, textures_.views(), "texture descriptions");
   view_.texels.texelBytes = nullptr;
   view_.texels.texelFloats = nullptr;
-  view_.lights = copy(buffers_, flat.lights, "the light table");
-  view_.lightCdf = copy(buffers_, flat.lightCdf, "the light distribution");
-  view_.lightBvh = copy(buffers_, flat.lightBvh, "the light BVH");
-  view_.lightBitTrails = copy(buffers_, flat.lightBitTrails, "the light BVH's bit trails");
-  view_.punctualLights = copy(buffers_, flat.punctualLights, "the punctual lights");
+  updateInstances(flat);
   updateEnvironment(flat);
+}
+
+void DeviceScene::updateInstances(const FlatScene& flat) {
+  posed_.clear();
+  view_.instances = copy(posed_, flat.instances, "instance records");
+  view_.lights = copy(posed_, flat.lights, "the light table");
+  view_.lightCount = uint32_t(flat.lights.size());
+  view_.lightCdf = copy(posed_, flat.lightCdf, "the light distribution");
+  view_.lightAreaPdfScale = flat.lightAreaPdfScale;
+  view_.lightBvh = copy(posed_, flat.lightBvh, "the light BVH");
+  view_.lightBitTrails = copy(posed_, flat.lightBitTrails, "the light BVH's bit trails");
+  view_.environmentSelectProbability = flat.environmentSelectProbability;
+  view_.punctualLights = copy(posed_, flat.punctualLights, "the punctual lights");
+  view_.punctualLightCount = uint32_t(flat.punctualLights.size());
 }
 
 void DeviceScene::updateMaterials(const FlatScene& flat) {
@@ -57,6 +66,7 @@ size_t DeviceScene::deviceBytes() const {
   size_t total = materials_.size() + textures_.deviceBytes();
   for (const DeviceBuffer& b : buffers_) total += b.size();
   for (const DeviceBuffer& b : environment_) total += b.size();
+  for (const DeviceBuffer& b : posed_) total += b.size();
   return total;
 }
 

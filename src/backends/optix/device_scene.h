@@ -17,6 +17,10 @@ class DeviceScene {
   void updateMaterials(const FlatScene& flat);
   // After FlatScene::replaceEnvironment: uploads the environment's arrays and parameters again.
   void updateEnvironment(const FlatScene& flat);
+  // After FlatScene::replaceInstanceTransforms: uploads what depends on the instances' transforms and the
+  // punctual lights again: the instance records (with their normal transforms), the light table, its
+  // distribution and BVH, and the punctual lights. Call only while no launch reads them.
+  void updateInstances(const FlatScene& flat);
 
   // Same counts and constants as the host view; every pointer refers to device memory.
   const SceneView& view() const { return view_; }
@@ -32,6 +36,7 @@ class DeviceScene {
   std::vector<DeviceBuffer> buffers_;
   DeviceBuffer materials_;
   std::vector<DeviceBuffer> environment_;
+  std::vector<DeviceBuffer> posed_;  // the arrays updateInstances replaces
   DeviceTextures textures_;
   SceneView view_;
 };

@@ -119,6 +119,11 @@ void MultiGpuBackend::setScene(const Scene& scene) {
   restart();
 }
 
+void MultiGpuBackend::setInstanceTransforms(const Scene& scene) {
+  onEveryDevice([&](OptixBackend& d) { d.setInstanceTransforms(scene); });
+  restart();
+}
+
 bool MultiGpuBackend::setMaterials(const std::vector<Material>& materials) {
   std::vector<char> taken(devices_.size());
   threads_.run([&](size_t i) {

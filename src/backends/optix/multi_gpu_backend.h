@@ -36,6 +36,7 @@ class MultiGpuBackend final : public Backend, public DeviceImage {
   std::string deviceName() const override;
 
   void setScene(const Scene& scene) override;
+  void setInstanceTransforms(const Scene& scene) override;
   bool setMaterials(const std::vector<Material>& materials) override;
   void setEnvironment(const Environment& environment) override;
   void setCamera(const Camera& camera) override;

@@ -212,6 +212,16 @@ void OptixBackend::setEnvironment(const Environment& environment) {
   s.restart();
 }
 
+void OptixBackend::setInstanceTransforms(const Scene& scene) {
+  State& s = *state_;
+  if (!s.hasScene || !s.flat.replaceInstanceTransforms(scene)) return setScene(scene);
+  s.hasScene = false;  // until the structures match the new transforms
+  s.scene.updateInstances(s.flat);
+  s.acceleration.updateInstanceTransforms(s.context.get(), s.context.stream(), s.flat, s.scene.view());
+  s.hasScene = true;
+  s.restart();
+}
+
 void OptixBackend::setCamera(const Camera& camera) {
   state_->camera = camera;
   state_->restart();

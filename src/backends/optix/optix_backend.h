@@ -27,6 +27,9 @@ class OptixBackend final : public Backend, public DeviceImage {
   void setScene(const Scene& scene) override;
   bool setMaterials(const std::vector<Material>& materials) override;
   void setEnvironment(const Environment& environment) override;
+  // Keeps every GAS and the device copy of the scene: uploads the instance records and light tables again and
+  // builds the IAS over the new transforms (AccelerationStructures::updateInstanceTransforms).
+  void setInstanceTransforms(const Scene& scene) override;
   void setCamera(const Camera& camera) override;
   void setSettings(const RenderSettings& settings) override;
 

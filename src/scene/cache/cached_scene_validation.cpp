@@ -134,7 +134,9 @@ void validateCachedScene(const Scene& scene) {
   for (const NamedCamera& c : scene.cameras) checkCamera(c.description);
   checkPunctualLights(scene.punctualLights);
   checkRenderHints(scene.renderHints);
-  validateAnimation(scene.animation, scene.instances.size());
+  if (scene.cameraIndex < -1 || scene.cameraIndex >= int64_t(scene.cameras.size()))
+    fail("the scene's camera is not one of its cameras");
+  validateAnimation(scene);
 }
 
 }  // namespace candela

@@ -6,7 +6,8 @@ namespace {
 
 static_assert(std::is_trivially_copyable_v<Material> && std::is_trivially_copyable_v<Instance> &&
               std::is_trivially_copyable_v<CameraDescription> && std::is_trivially_copyable_v<AnimationNode> &&
-              std::is_trivially_copyable_v<AnimatedInstance>);
+              std::is_trivially_copyable_v<AnimatedInstance> && std::is_trivially_copyable_v<AnimatedCamera> &&
+              std::is_trivially_copyable_v<AnimatedLight>);
 
 void writeTexture(BinaryWriter& out, const Texture& t) {
   out.string(t.name);
@@ -52,17 +53,41 @@ void readOptional(BinaryReader& in, std::optional<T>& v) {
   }
 }
 
-// The least a mesh, a texture, a string, an animation clip or channel takes in the file, for checking counts
-// before allocating.
+// The least a mesh, a texture, a string, an animation clip, channel, skin or mesh deformation takes in the file,
+// for checking counts before allocating.
 constexpr uint64_t kMeshBytes = 8 * sizeof(uint64_t);
 constexpr uint64_t kTextureBytes = 3 * sizeof(uint64_t);
 constexpr uint64_t kStringBytes = sizeof(uint64_t);
 constexpr uint64_t kClipBytes = 2 * sizeof(uint64_t) + 2 * sizeof(float);
-constexpr uint64_t kChannelBytes = sizeof(uint32_t) + 2 + 2 * sizeof(uint64_t);
+constexpr uint64_t kChannelBytes = 2 * sizeof(uint32_t) + 2 + 2 * sizeof(uint64_t);
+constexpr uint64_t kSkinBytes = 2 * sizeof(uint64_t);
+constexpr uint64_t kDeformationBytes = 4 * sizeof(uint32_t) + 8 * sizeof(uint64_t);
 
 void writeAnimation(BinaryWriter& out, const SceneAnimation& a) {
   out.array(a.nodes);
   out.array(a.instances);
+  out.array(a.cameras);
+  out.array(a.lights);
+  out.value(uint64_t(a.skins.size()));
+  for (const Skin& s : a.skins) {
+    out.array(s.joints);
+    out.array(s.inverseBinds);
+  }
+  out.value(uint64_t(a.deformations.size()));
+  for (const MeshDeformation& d : a.deformations) {
+    out.value(d.mesh);
+    out.value(d.node);
+    out.array(d.positions);
+    out.array(d.normals);
+    out.array(d.tangents);
+    out.value(d.targetCount);
+    out.array(d.positionDeltas);
+    out.array(d.normalDeltas);
+    out.array(d.weights);
+    out.value(d.skin);
+    out.array(d.joints);
+    out.array(d.jointWeights);
+  }
   out.value(uint64_t(a.clips.size()));
   for (const AnimationClip& clip : a.clips) {
     out.string(clip.name);
@@ -73,6 +98,7 @@ void writeAnimation(BinaryWriter& out, const SceneAnimation& a) {
       out.value(c.node);
       out.value(c.property);
       out.value(c.interpolation);
+      out.value(c.weightCount);
       out.array(c.times);
       out.array(c.values);
     }
@@ -82,6 +108,28 @@ void writeAnimation(BinaryWriter& out, const SceneAnimation& a) {
 void readAnimation(BinaryReader& in, SceneAnimation& a) {
   in.array(a.nodes);
   in.array(a.instances);
+  in.array(a.cameras);
+  in.array(a.lights);
+  a.skins.resize(size_t(in.count(kSkinBytes)));
+  for (Skin& s : a.skins) {
+    in.array(s.joints);
+    in.array(s.inverseBinds);
+  }
+  a.deformations.resize(size_t(in.count(kDeformationBytes)));
+  for (MeshDeformation& d : a.deformations) {
+    in.value(d.mesh);
+    in.value(d.node);
+    in.array(d.positions);
+    in.array(d.normals);
+    in.array(d.tangents);
+    in.value(d.targetCount);
+    in.array(d.positionDeltas);
+    in.array(d.normalDeltas);
+    in.array(d.weights);
+    in.value(d.skin);
+    in.array(d.joints);
+    in.array(d.jointWeights);
+  }
   a.clips.resize(size_t(in.count(kClipBytes)));
   for (AnimationClip& clip : a.clips) {
     in.string(clip.name);
@@ -92,6 +140,7 @@ void readAnimation(BinaryReader& in, SceneAnimation& a) {
       in.value(c.node);
       in.value(c.property);
       in.value(c.interpolation);
+      in.value(c.weightCount);
       in.array(c.times);
       in.array(c.values);
     }
@@ -136,6 +185,7 @@ void writeScene(BinaryWriter& out, const Scene& s) {
     out.string(c.name);
     out.value(c.description);
   }
+  out.value(s.cameraIndex);
   out.value(uint64_t(s.inputFiles.size()));
   for (const std::string& f : s.inputFiles) out.string(f);
   writeAnimation(out, s.animation);
@@ -180,6 +230,7 @@ bool readScene(BinaryReader& in, Scene& s) {
     in.string(c.name);
     in.value(c.description);
   }
+  in.value(s.cameraIndex);
   s.inputFiles.resize(size_t(in.count(kStringBytes)));
   for (std::string& f : s.inputFiles) in.string(f);
   readAnimation(in, s.animation);

@@ -70,6 +70,7 @@ const char* typeName(int type) {
     case TINYGLTF_TYPE_VEC2: return "VEC2";
     case TINYGLTF_TYPE_VEC3: return "VEC3";
     case TINYGLTF_TYPE_VEC4: return "VEC4";
+    case TINYGLTF_TYPE_MAT4: return "MAT4";
     default: return "another type";
   }
 }
@@ -166,6 +167,12 @@ std::vector<Vec3> GltfAccessorReader::readVec3(int accessor, const std::string& 
   std::vector<Vec3> out(f.size() / 3);
   for (size_t i = 0; i < out.size(); ++i) out[i] = {f[3 * i], f[3 * i + 1], f[3 * i + 2]};
   return out;
+}
+
+std::vector<float> GltfAccessorReader::readMatrices(int index, const std::string& where) const {
+  if (accessor(index, where).componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
+    fail(where + " (accessors[" + std::to_string(index) + "])", "expected float matrices");
+  return readFloats(index, TINYGLTF_TYPE_MAT4, where);
 }
 
 std::vector<Vec4> GltfAccessorReader::readVec4(int accessor, const std::string& where) const {

@@ -26,6 +26,8 @@ class GltfAccessorReader {
   std::vector<Vec4> readVec4(int accessor, const std::string& where) const;
   std::vector<Vec2> readVec2(int accessor, const std::string& where) const;
   std::vector<float> readScalars(int accessor, const std::string& where) const;
+  // MAT4 elements, 16 column-major floats each; only float components (glTF pads the columns of smaller ones).
+  std::vector<float> readMatrices(int accessor, const std::string& where) const;
   // VEC3 or VEC4 colours; a VEC3 accessor gets alpha 1.
   std::vector<Vec4> readColours(int accessor, const std::string& where) const;
   std::vector<uint32_t> readIndices(int accessor, const std::string& where) const;

@@ -21,6 +21,7 @@
 #include "scene/loaders/gltf_accessors.h"
 #include "scene/loaders/gltf_animation.h"
 #include "scene/loaders/gltf_buffer_uris.h"
+#include "scene/loaders/gltf_deformation.h"
 #include "scene/loaders/gltf_draco.h"
 #include "scene/loaders/gltf_extensions.h"
 #include "scene/loaders/gltf_materials.h"
@@ -38,6 +39,10 @@ namespace fs = std::filesystem;
 
 constexpr int kMaxJsonDepth = 128;   // deeper JSON is not a plausible glTF and would exhaust the stack
 constexpr int kMaxNodeDepth = 1024;  // deeper node hierarchies would exhaust the stack
+// Vertices of skinned and morphed meshes in all, each counted once and once more per morph target: each node
+// that uses such a mesh deforms a copy of its own, and a target without accessors costs nothing in the file but
+// a delta per vertex here, so a small file could otherwise ask for any amount of memory.
+constexpr size_t kMaxDeformedVertices = size_t(1) << 24;
 
 // The deepest nesting of arrays and objects in JSON text (strings skipped).
 int jsonDepth(const char* p, size_t n) {
@@ -193,19 +198,17 @@ class GltfSceneBuilder {
         if (!isChild[i]) roots.push_back(int(i));
     }
     animated_ = animatedGltfNodes(model_);
+    posed_ = posedNodes();
     animationNodes_.assign(model_.nodes.size(), -1);
     for (int r : roots)
       visit(r, glm::mat4(1.0f), 0, "scenes[" + std::to_string(std::max(sceneIndex, 0)) + "].nodes", -1);
     if (scene_.instances.empty()) failLoad(file_, "has no meshes to render");
+    resolveSkins();
     readAnimations();
     if (lightRangesIgnored_ > 0)
       warnings_.add(file_, std::to_string(lightRangesIgnored_) +
                                " KHR_lights_punctual lights have a range, which is ignored: their light falls off "
                                "with the square of the distance everywhere");
-    if (skinned_) warnings_.add(file_, "skins are ignored; meshes are loaded in their bind pose");
-    if (morphedPrimitives_ > 0)
-      warnings_.add(file_, std::to_string(morphedPrimitives_) +
-                               " primitives have morph targets, which are ignored; they keep their base shape");
     if (!sharesTextures_) textures_.finish(scene_, 0, warnings_);
     scene_.cameraMissing = !cameraFound_;
     return std::move(scene_);
@@ -232,18 +235,16 @@ class GltfSceneBuilder {
     for (int i = 0; i < 16; ++i)
       if (!std::isfinite(glm::value_ptr(world)[i])) failLoad(file_, where + ": transform is not finite");
     const int32_t animationNode =
-        animated_[size_t(index)] || parentNode >= 0 ? addAnimationNode(index, parent, parentNode) : -1;
+        posed_[size_t(index)] || parentNode >= 0 ? addAnimationNode(index, parent, parentNode) : -1;
     if (node.mesh >= 0) {
       if (size_t(node.mesh) >= model_.meshes.size())
         failLoad(file_, where + ".mesh: mesh " + std::to_string(node.mesh) + " does not exist");
-      if (std::optional<uint32_t> mesh = meshFor(node.mesh)) addInstances(*mesh, node, world, where, animationNode);
+      const std::optional<uint32_t> mesh = deforms(node) ? deformedMeshFor(index, animationNode) : meshFor(node.mesh);
+      if (mesh) addInstances(*mesh, node, world, where, animationNode);
     }
-    if (node.camera >= 0) takeCamera(node.camera, world, where);
+    if (node.camera >= 0) takeCamera(node.camera, world, where, animationNode);
     if (auto light = node.extensions.find("KHR_lights_punctual"); light != node.extensions.end())
-      addLight(light->second, world, where);
-    if (animationNode >= 0 && (node.camera >= 0 || node.extensions.count("KHR_lights_punctual")))
-      staticUnderAnimation_ = true;
-    if (node.skin >= 0) skinned_ = true;
+      addLight(light->second, world, where, animationNode);
     for (size_t c = 0; c < node.children.size(); ++c)
       visit(node.children[c], world, depth + 1, where + ".children", animationNode);
     nodeStates_[size_t(index)] = NodeState::Done;
@@ -296,15 +297,12 @@ class GltfSceneBuilder {
 
   void readAnimations() {
     scene_.animation.clips = readGltfAnimations(model_, accessors_, animationNodes_, file_, warnings_);
-    if (scene_.animation.empty()) {
-      scene_.animation = {};
-      return;
-    }
-    if (staticUnderAnimation_)
-      warnings_.add(file_, "cameras and lights below animated nodes stay where the file places them at rest");
     // The rest pose through the player, so that animated instances scaled to nothing at rest are hidden
-    // rather than dropped by the scene's repair: they may grow later.
-    AnimationPlayer(scene_).pose(scene_, -1, 0.0f);
+    // rather than dropped by the scene's repair (they may grow later), and skinned and morphed meshes take the
+    // shape their joints and weights give them at rest.
+    if (!scene_.animation.empty() || !scene_.animation.deformations.empty())
+      AnimationPlayer(scene_).pose(scene_, -1, 0.0f);
+    if (scene_.animation.empty()) scene_.animation = {};
   }
 
   // One instance of `mesh` at the node's transform, or, with EXT_mesh_gpu_instancing, one per element of its
@@ -353,7 +351,8 @@ class GltfSceneBuilder {
   // A node's KHR_lights_punctual light, at the node's origin and shining along its -Z. The intensity is taken as
   // radiant (candela for point and spot lights as W/sr, lux for directional ones as W/m^2), as glTF viewers use
   // it.
-  void addLight(const tinygltf::Value& extension, const glm::mat4& world, const std::string& where) {
+  void addLight(const tinygltf::Value& extension, const glm::mat4& world, const std::string& where,
+                int32_t animationNode) {
     const std::string at = where + ".extensions.KHR_lights_punctual.light";
     if (!extension.Has("light") || !extension.Get("light").IsInt()) failLoad(file_, at + ": expected a light index");
     const int index = extension.Get("light").GetNumberAsInt();
@@ -385,10 +384,12 @@ class GltfSceneBuilder {
     light.position = {position.x, position.y, position.z};
     light.direction = {direction.x, direction.y, direction.z};  // normalised (or the light dropped) by the repair
     if (source.range > 0.0) ++lightRangesIgnored_;
+    if (animationNode >= 0)
+      scene_.animation.lights.push_back({uint32_t(scene_.punctualLights.size()), uint32_t(animationNode)});
     scene_.punctualLights.push_back(light);
   }
 
-  void takeCamera(int index, const glm::mat4& world, const std::string& where) {
+  void takeCamera(int index, const glm::mat4& world, const std::string& where, int32_t animationNode) {
     if (size_t(index) >= model_.cameras.size())
       failLoad(file_, where + ".camera: camera " + std::to_string(index) + " does not exist");
     const tinygltf::Camera& c = model_.cameras[size_t(index)];
@@ -407,9 +408,91 @@ class GltfSceneBuilder {
     d.up = {up.x, up.y, up.z};
     d.verticalFovDegrees = std::isfinite(yfov) && yfov > 0.0f && yfov < 180.0f ? yfov : 40.0f;
     if (!isFinite(d.eye) || !isFinite(d.target) || !isFinite(d.up)) return;
-    if (!cameraFound_) scene_.camera = d;
+    if (!cameraFound_) {
+      scene_.camera = d;
+      scene_.cameraIndex = int32_t(scene_.cameras.size());
+    }
     cameraFound_ = true;
+    if (animationNode >= 0)
+      scene_.animation.cameras.push_back({uint32_t(scene_.cameras.size()), uint32_t(animationNode)});
     scene_.cameras.push_back({c.name.empty() ? "cameras[" + std::to_string(index) + "] at " + where : c.name, d});
+  }
+
+  // Whether the node's mesh is skinned or morphed: the node then gets a mesh of its own to deform.
+  bool deforms(const tinygltf::Node& node) const {
+    const bool skinned = node.skin >= 0 && size_t(node.skin) < model_.skins.size();
+    return node.mesh >= 0 && size_t(node.mesh) < model_.meshes.size() &&
+           (skinned || morphTargetCount(model_, int(&node - model_.nodes.data())) > 0);
+  }
+
+  // Per node of the file: whether it needs an entry in the animation's nodes of its own: an animated node, a
+  // skin's joint, or a node with a skinned or morphed mesh.
+  std::vector<bool> posedNodes() const {
+    std::vector<bool> posed = animated_;
+    for (size_t n = 0; n < model_.nodes.size(); ++n) {
+      const tinygltf::Node& node = model_.nodes[n];
+      if (!deforms(node)) continue;
+      posed[n] = true;
+      if (node.skin >= 0 && size_t(node.skin) < model_.skins.size())
+        for (int joint : model_.skins[size_t(node.skin)].joints)
+          if (joint >= 0 && size_t(joint) < posed.size()) posed[size_t(joint)] = true;
+    }
+    return posed;
+  }
+
+  // A mesh of its own for node `index`, whose skin or morph targets deform it (SceneAnimation::deformations).
+  std::optional<uint32_t> deformedMeshFor(int index, int32_t animationNode) {
+    const tinygltf::Node& node = model_.nodes[size_t(index)];
+    std::vector<GltfVertexOrigin> origins;
+    Mesh mesh = convertMesh(node.mesh, &origins);
+    if (mesh.triangleCount() == 0) return std::nullopt;
+    const size_t targets = morphTargetCount(model_, index);
+    deformedVertices_ += mesh.positions.size() * (1 + targets);
+    if (deformedVertices_ > kMaxDeformedVertices)
+      failLoad(file_, "nodes[" + std::to_string(index) + "]: skinned and morphed meshes of more than " +
+                          std::to_string(kMaxDeformedVertices) +
+                          " vertices in all, counted once per morph target too (each node deforms a copy of its "
+                          "mesh of its own)");
+    MeshDeformation d;
+    d.mesh = uint32_t(scene_.meshes.size());
+    d.node = uint32_t(animationNode);
+    d.positions = mesh.positions;
+    d.normals = mesh.normals;
+    d.tangents = mesh.tangents;
+    readGltfMorphTargets(model_, accessors_, node.mesh, index, origins, file_, warnings_, d);
+    if (node.skin >= 0 && size_t(node.skin) < model_.skins.size() &&
+        readGltfSkinWeights(model_, accessors_, node.mesh, node.skin, origins, file_, warnings_, d)) {
+      d.skin = node.skin;  // the file's skin until resolveSkins
+    }
+    if (d.targetCount > 0 || d.skin >= 0) scene_.animation.deformations.push_back(std::move(d));
+    scene_.meshes.push_back(std::move(mesh));
+    return uint32_t(scene_.meshes.size() - 1);
+  }
+
+  // Replaces the file's skin indices of the deformations by indices into the animation's skins, read once each;
+  // a deformation whose skin has joints outside the scene keeps only its morph targets.
+  void resolveSkins() {
+    std::map<int, std::optional<uint32_t>> skins;
+    auto& deformations = scene_.animation.deformations;
+    for (MeshDeformation& d : deformations) {
+      if (d.skin < 0) continue;
+      auto it = skins.find(d.skin);
+      if (it == skins.end()) {
+        std::optional<Skin> skin = readGltfSkin(model_, accessors_, d.skin, animationNodes_, file_, warnings_);
+        std::optional<uint32_t> id;
+        if (skin) {
+          id = uint32_t(scene_.animation.skins.size());
+          scene_.animation.skins.push_back(std::move(*skin));
+        }
+        it = skins.emplace(d.skin, id).first;
+      }
+      d.skin = it->second ? int32_t(*it->second) : -1;
+      if (d.skin < 0) {
+        d.joints.clear();
+        d.jointWeights.clear();
+      }
+    }
+    std::erase_if(deformations, [](const MeshDeformation& d) { return d.skin < 0 && d.targetCount == 0; });
   }
 
   std::optional<uint32_t> meshFor(int gltfMesh) {
@@ -440,7 +523,8 @@ class GltfSceneBuilder {
     return *defaultMaterial_;
   }
 
-  Mesh convertMesh(int meshIndex) {
+  // With `origins`, also where each vertex of the mesh came from (for its morph targets and skin weights).
+  Mesh convertMesh(int meshIndex, std::vector<GltfVertexOrigin>* origins = nullptr) {
     const tinygltf::Mesh& gm = model_.meshes[size_t(meshIndex)];
     struct Part {
       std::vector<Vec3> positions, normals;
@@ -451,6 +535,7 @@ class GltfSceneBuilder {
       uint32_t material;
     };
     std::vector<Part> parts;
+    std::vector<uint32_t> partPrimitives;  // per part, its index in gm.primitives
     for (size_t p = 0; p < gm.primitives.size(); ++p) {
       const tinygltf::Primitive& prim = gm.primitives[p];
       std::string where = "meshes[" + std::to_string(meshIndex) + "].primitives[" + std::to_string(p) + "]";
@@ -460,7 +545,6 @@ class GltfSceneBuilder {
       }
       if (prim.mode > TINYGLTF_MODE_TRIANGLE_FAN)
         failLoad(file_, where + ".mode: unknown mode " + std::to_string(prim.mode));
-      if (!prim.targets.empty()) ++morphedPrimitives_;
       auto attribute = [&](const char* name) {
         auto it = prim.attributes.find(name);
         return it == prim.attributes.end() ? -1 : it->second;
@@ -518,7 +602,10 @@ class GltfSceneBuilder {
       part.material = prim.material >= 0 ? uint32_t(prim.material) : defaultMaterial();
       if (prim.material >= 0 && uvTransforms_[size_t(prim.material)])
         for (Vec2& uv : part.uvs) uv = uvTransforms_[size_t(prim.material)]->apply(uv);
-      if (!part.indices.empty()) parts.push_back(std::move(part));
+      if (!part.indices.empty()) {
+        parts.push_back(std::move(part));
+        partPrimitives.push_back(uint32_t(p));
+      }
     }
 
     Mesh mesh;
@@ -531,10 +618,17 @@ class GltfSceneBuilder {
       anyColors |= !p.colors.empty();
       allTangents &= !p.tangents.empty();
     }
-    for (Part& p : parts) {
+    for (size_t part = 0; part < parts.size(); ++part) {
+      Part& p = parts[part];
       // glTF asks for flat shading where normals are missing; when other primitives of the mesh have normals,
       // this primitive's triangles get their own vertices with the face normal.
-      if (anyNormals && !allNormals && p.normals.empty()) unweldWithFaceNormals(p);
+      const bool unwelded = anyNormals && !allNormals && p.normals.empty();
+      if (origins) {
+        const size_t n = unwelded ? p.indices.size() : p.positions.size();
+        for (size_t v = 0; v < n; ++v)
+          origins->push_back({partPrimitives[part], unwelded ? p.indices[v] : uint32_t(v)});
+      }
+      if (unwelded) unweldWithFaceNormals(p);
       if (mesh.positions.size() + p.positions.size() > uint64_t(UINT32_MAX))
         failLoad(file_, "meshes[" + std::to_string(meshIndex) + "]: too many vertices");
       uint32_t base = uint32_t(mesh.positions.size());
@@ -691,11 +785,10 @@ class GltfSceneBuilder {
   std::optional<uint32_t> defaultMaterial_;
   bool cameraFound_ = false;
   size_t lightRangesIgnored_ = 0;
-  bool skinned_ = false;
-  size_t morphedPrimitives_ = 0;
   std::vector<bool> animated_;           // per node of the file: a channel moves it
+  std::vector<bool> posed_;              // per node of the file: it has an entry in scene_.animation.nodes
+  size_t deformedVertices_ = 0;          // of the meshes deformedMeshFor made
   std::vector<int32_t> animationNodes_;  // per node of the file: its entry in scene_.animation.nodes, or -1
-  bool staticUnderAnimation_ = false;    // a camera or light lies below an animated node
   enum class NodeState : uint8_t { Unvisited, OnPath, Done };
   std::vector<NodeState> nodeStates_;  // by node index, for the traversal
 };

@@ -14,11 +14,12 @@ namespace candela {
 // uses it an Instance with the node's world transform, so shared meshes are not copied. Under a mirroring
 // transform (negative determinant) glTF keeps the object-space front, which is what kernel code does: the
 // normal transform carries it. The first camera met in the node hierarchy becomes the scene's camera.
-// KHR_lights_punctual lights become punctual lights placed by their nodes. Skins and morph targets are ignored
-// with a warning (the static pose is loaded). Materials: see gltf_materials.h. Invalid input throws
-// LoadError naming the file and the JSON path of the problem. External buffers and images must lie in the glTF
-// file's folder unless `outside` allows others (path_confinement.h): a buffer elsewhere is an error, an image a
-// warning. With `shared`, textures are left for shared->textures.finish() (shared_model_assets.h).
+// KHR_lights_punctual lights become punctual lights placed by their nodes. Node animations, skins and morph targets
+// become Scene::animation (animation.h); a skinned or morphed mesh is loaded posed at rest. Materials: see
+// gltf_materials.h. Invalid input throws LoadError naming the file and the JSON path of the problem. External buffers
+// and images must lie in the glTF file's folder unless `outside` allows others (path_confinement.h): a buffer elsewhere
+// is an error, an image a warning. With `shared`, textures are left for shared->textures.finish()
+// (shared_model_assets.h).
 Scene loadGltf(const std::string& path, LoadWarnings& warnings, OutsidePaths outside = OutsidePaths::Refused,
                SharedModelAssets* shared = nullptr);
 

@@ -199,7 +199,7 @@ json parseJson(const std::string& path, const std::string& text) {
 
 }  // namespace
 
-void appendScene(Scene& scene, Scene&& part, const Affine3x4& transform) {
+void appendScene(Scene& scene, Scene&& part, const Affine3x4& transform, const std::string& cameraPrefix) {
   uint32_t meshBase = uint32_t(scene.meshes.size()), materialBase = uint32_t(scene.materials.size());
   for (Mesh& m : part.meshes) {
     for (uint32_t& id : m.triangleMaterials) id += materialBase;
@@ -226,7 +226,15 @@ void appendScene(Scene& scene, Scene&& part, const Affine3x4& transform) {
     scene.materialNames.push_back(part.materialNames[i]);
   }
   scene.inputFiles.insert(scene.inputFiles.end(), part.inputFiles.begin(), part.inputFiles.end());
-  appendAnimation(scene.animation, part.animation, transform, uint32_t(scene.instances.size()));
+  appendAnimation(scene.animation, part.animation, transform,
+                  {uint32_t(scene.instances.size()), uint32_t(scene.cameras.size()),
+                   uint32_t(scene.punctualLights.size()), meshBase});
+  for (NamedCamera c : part.cameras) {
+    c.description.eye = transform.point(c.description.eye);
+    c.description.target = transform.point(c.description.target);
+    c.description.up = normalize(transform.vector(c.description.up));
+    scene.cameras.push_back({cameraPrefix + c.name, c.description});
+  }
   glm::mat4 outer = toMat4(transform);
   for (const Instance& inst : part.instances)
     scene.instances.push_back({inst.meshId + meshBase, toAffine(outer * toMat4(inst.objectToWorld))});
@@ -288,6 +296,7 @@ Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadW
   Scene scene;
   scene.name = fs::path(path).stem().string();
   std::optional<CameraDescription> modelCamera;
+  int32_t modelCameraIndex = -1;  // modelCamera's entry in scene.cameras, or -1
   SharedModelAssets shared;
   // A model file loaded before with the same material overrides: its instances, relative to its transform, and
   // its animation.
@@ -308,8 +317,11 @@ Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadW
       model["file"].fail("models must be .obj, .gltf or .glb files");
     glm::mat4 transform = model.has("transform") ? transformOf(model["transform"], warnings) : glm::mat4(1.0f);
     std::pair<std::string, std::string> key{file, model.has("materials") ? doc["models"][i]["materials"].dump() : ""};
-    if (auto it = loaded.find(key); it != loaded.end()) {
-      appendAnimation(scene.animation, it->second.animation, toAffine(transform), uint32_t(scene.instances.size()));
+    // A model with skinned or morphed meshes is loaded again: each placement deforms meshes of its own.
+    if (auto it = loaded.find(key); it != loaded.end() && it->second.animation.deformations.empty()) {
+      // Only the instances are placed again (a model's cameras and lights come with its first placement).
+      appendAnimation(scene.animation, it->second.animation, toAffine(transform),
+                      {uint32_t(scene.instances.size()), 0, 0});
       for (const Instance& inst : it->second.instances)
         scene.instances.push_back({inst.meshId, toAffine(transform * toMat4(inst.objectToWorld))});
       if (scene.instances.size() > kMaxInstances)
@@ -321,6 +333,8 @@ Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadW
     for (const Instance& inst : part.instances)
       first.instances.push_back({inst.meshId + uint32_t(scene.meshes.size()), inst.objectToWorld});
     first.animation = part.animation;
+    first.animation.cameras.clear();
+    first.animation.lights.clear();
     if (model.has("materials")) {
       if (!model["materials"].isObject()) model["materials"].fail("expected an object of material names");
       const json& overrides = doc["models"][i]["materials"];
@@ -337,16 +351,14 @@ Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadW
                        "models[" + std::to_string(i) + "].materials." + name + ": no material of that name in " + file);
       }
     }
-    auto placed = [&](CameraDescription c) {
-      c.eye = toAffine(transform).point(c.eye);
-      c.target = toAffine(transform).point(c.target);
-      c.up = normalize(toAffine(transform).vector(c.up));
-      return c;
-    };
-    if (!part.cameraMissing && !modelCamera) modelCamera = placed(part.camera);
-    for (const NamedCamera& c : part.cameras)
-      scene.cameras.push_back({"models[" + std::to_string(i) + "]: " + c.name, placed(c.description)});
-    appendScene(scene, std::move(part), toAffine(transform));
+    if (!part.cameraMissing && !modelCamera) {
+      modelCamera = part.camera;
+      modelCamera->eye = toAffine(transform).point(part.camera.eye);
+      modelCamera->target = toAffine(transform).point(part.camera.target);
+      modelCamera->up = normalize(toAffine(transform).vector(part.camera.up));
+      if (part.cameraIndex >= 0) modelCameraIndex = int32_t(scene.cameras.size()) + part.cameraIndex;
+    }
+    appendScene(scene, std::move(part), toAffine(transform), "models[" + std::to_string(i) + "]: ");
     if (scene.instances.size() > kMaxInstances)
       model.fail("the models hold more than " + std::to_string(kMaxInstances) + " mesh instances in all");
   }
@@ -355,6 +367,7 @@ Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadW
   scene.cameraMissing = true;
   if (modelCamera) {
     scene.camera = *modelCamera;
+    scene.cameraIndex = modelCameraIndex;
     scene.cameraMissing = false;
   }
   if (root.has("camera")) {
@@ -373,6 +386,8 @@ Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadW
     if (length(cross(forward, cam.up)) == 0.0f) c["up"].fail("up is parallel to the viewing direction");
     scene.cameraMissing = false;
     scene.cameras.insert(scene.cameras.begin(), {"camera", cam});
+    scene.cameraIndex = 0;
+    for (AnimatedCamera& a : scene.animation.cameras) ++a.camera;
   }
   if (root.has("environment")) {
     Node e = root["environment"];

@@ -23,8 +23,8 @@ Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadW
                     OutsidePaths outside = OutsidePaths::Refused);
 
 // Appends `part` to `scene` under `transform`: meshes, materials and textures are renumbered; a texture `scene`
-// already has (same source, encoding and wrap modes) is not added again; its animation joins the scene's
-// (appendAnimation).
-void appendScene(Scene& scene, Scene&& part, const Affine3x4& transform);
+// already has (same source, encoding and wrap modes) is not added again; its cameras are added with their names
+// after `cameraPrefix`; its animation joins the scene's (appendAnimation).
+void appendScene(Scene& scene, Scene&& part, const Affine3x4& transform, const std::string& cameraPrefix);
 
 }  // namespace candela

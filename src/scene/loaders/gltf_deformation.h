@@ -1,0 +1,44 @@
+#pragma once
+#include <tiny_gltf.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scene/loaders/gltf_accessors.h"
+#include "scene/loaders/load_diagnostics.h"
+#include "scene/mesh_deformation.h"
+
+namespace candela {
+
+// Where a vertex of a converted glTF mesh came from: a primitive of the mesh and a vertex of its attributes.
+struct GltfVertexOrigin {
+  uint32_t primitive = 0;
+  uint32_t vertex = 0;
+};
+
+// Reads into `deformation` (whose positions, normals and tangents are the converted mesh's, one per entry of
+// `origins`) the morph targets of mesh `mesh` (POSITION and NORMAL deltas; TANGENT deltas are ignored with a
+// warning) and their weights at rest (node `node`'s, else the mesh's, else zeros). A primitive with another number
+// of targets than the first, or target accessors of the wrong size, throw LoadError naming the file and the JSON
+// path.
+void readGltfMorphTargets(const tinygltf::Model& model, const GltfAccessorReader& accessors, int mesh, int node,
+                          const std::vector<GltfVertexOrigin>& origins, const std::string& file, LoadWarnings& warnings,
+                          MeshDeformation& deformation);
+
+// Reads JOINTS_0 and WEIGHTS_0 of mesh `mesh` into deformation.joints and jointWeights for skin `skin` of the
+// file (weights normalised to sum to one). Returns false, with a warning, where a primitive lacks them (the mesh
+// is then not skinned); a joint beyond the skin's joints throws LoadError. More influences (JOINTS_1) are
+// ignored with a warning.
+bool readGltfSkinWeights(const tinygltf::Model& model, const GltfAccessorReader& accessors, int mesh, int skin,
+                         const std::vector<GltfVertexOrigin>& origins, const std::string& file, LoadWarnings& warnings,
+                         MeshDeformation& deformation);
+
+// Skin `skin` of the file with its joints as entries of SceneAnimation::nodes (`animationNodes` maps a file's
+// node to one, or -1); nothing, with a warning, where a joint is not in the scene. Inverse bind matrices default
+// to the identity; too few of them, or ones that are not finite, throw LoadError.
+std::optional<Skin> readGltfSkin(const tinygltf::Model& model, const GltfAccessorReader& accessors, int skin,
+                                 const std::vector<int32_t>& animationNodes, const std::string& file,
+                                 LoadWarnings& warnings);
+
+}  // namespace candela

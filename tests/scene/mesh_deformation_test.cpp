@@ -1,0 +1,326 @@
+// Skins and morph targets of glTF files: deformed vertices at given times against hand-computed ones, the
+// scene cache, hostile skin data, and renders at two times through Backend::setDeformedMeshes.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstring>
+
+#include "app/scene_loading.h"
+#include "backends/cpu/cpu_backend.h"
+#include "scene/animation_player.h"
+#include "scene/cache/scene_cache.h"
+#include "scene/loaders/gltf_loader.h"
+#include "scene/scene_test_files.h"
+
+namespace candela {
+namespace {
+
+using nlohmann::json;
+using test::TempFolder;
+
+constexpr float kSqrtHalf = 0.70710678f;
+
+void expectNear(Vec3 a, Vec3 b, float tolerance = 1e-5f) {
+  EXPECT_NEAR(a.x, b.x, tolerance);
+  EXPECT_NEAR(a.y, b.y, tolerance);
+  EXPECT_NEAR(a.z, b.z, tolerance);
+}
+
+// A glTF built in memory: accessors of any component type over one buffer.
+struct GltfFile {
+  json gltf = {{"asset", {{"version", "2.0"}}}, {"bufferViews", json::array()}, {"accessors", json::array()}};
+  std::vector<uint8_t> buffer;
+
+  template <class T>
+  int add(const std::vector<T>& values, const char* type, int componentType, size_t components) {
+    while (buffer.size() % 4 != 0) buffer.push_back(0);
+    const size_t offset = buffer.size();
+    buffer.resize(offset + values.size() * sizeof(T));
+    std::memcpy(buffer.data() + offset, values.data(), values.size() * sizeof(T));
+    gltf["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", values.size() * sizeof(T)}});
+    gltf["accessors"].push_back({{"bufferView", gltf["bufferViews"].size() - 1},
+                                 {"componentType", componentType},
+                                 {"count", values.size() / components},
+                                 {"type", type}});
+    return int(gltf["accessors"].size() - 1);
+  }
+  int floats(const std::vector<float>& values, const char* type) {
+    const size_t components = std::string(type) == "SCALAR" ? 1
+                              : std::string(type) == "VEC3" ? 3
+                              : std::string(type) == "MAT4" ? 16
+                                                            : 4;
+    return add(values, type, 5126, components);
+  }
+
+  std::string write(const TempFolder& folder) {
+    gltf["buffers"] = {{{"byteLength", buffer.size()}, {"uri", "deformed.bin"}}};
+    folder.write("deformed.bin", std::string(buffer.begin(), buffer.end()));
+    return folder.write("deformed.gltf", gltf.dump());
+  }
+};
+
+// A quad of height 2 skinned to two joints: node 1 (at the origin) and its child node 2 (at (0, 1, 0)), which
+// "Bend" turns from 0 to 90 degrees about z over 1 s. Vertices 0 (0,0,0) and 1 (1,0,0) follow joint 0, vertex 2
+// (1,2,0) joint 1, vertex 3 (0,2,0) both by half. The skinned node 0 is moved to (5, 0, 0), which glTF ignores for
+// skinned vertices. The quad faces +z, emissive, before a camera at z = 8.
+GltfFile skinnedQuad() {
+  GltfFile f;
+  const int positions = f.floats({0, 0, 0, 1, 0, 0, 1, 2, 0, 0, 2, 0}, "VEC3");
+  const int indices = f.add(std::vector<uint16_t>{0, 1, 2, 0, 2, 3}, "SCALAR", 5123, 1);
+  const int joints = f.add(std::vector<uint8_t>{0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0}, "VEC4", 5121, 4);
+  const int weights = f.floats({1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 0.5f, 0.5f, 0, 0}, "VEC4");
+  const int inverseBinds =
+      f.floats({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -1, 0, 1},
+               "MAT4");
+  f.gltf["meshes"] = {{{"primitives",
+                        {{{"attributes", {{"POSITION", positions}, {"JOINTS_0", joints}, {"WEIGHTS_0", weights}}},
+                          {"indices", indices},
+                          {"material", 0}}}}}};
+  f.gltf["materials"] = {
+      {{"emissiveFactor", {1, 1, 1}}, {"pbrMetallicRoughness", {{"baseColorFactor", {0, 0, 0, 1}}}}}};
+  f.gltf["skins"] = {{{"joints", {1, 2}}, {"inverseBindMatrices", inverseBinds}}};
+  f.gltf["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"znear", 0.1}}}}};
+  f.gltf["nodes"] = {{{"mesh", 0}, {"skin", 0}, {"translation", {5, 0, 0}}},
+                     {{"children", {2}}},
+                     {{"translation", {0, 1, 0}}},
+                     {{"camera", 0}, {"translation", {0, 1, 8}}}};
+  f.gltf["scenes"] = {{{"nodes", {0, 1, 3}}}};
+  const int times = f.floats({0, 1}, "SCALAR");
+  const int turns = f.floats({0, 0, 0, 1, 0, 0, kSqrtHalf, kSqrtHalf}, "VEC4");
+  f.gltf["animations"] = {{{"name", "Bend"},
+                           {"samplers", {{{"input", times}, {"output", turns}}}},
+                           {"channels", {{{"sampler", 0}, {"target", {{"node", 2}, {"path", "rotation"}}}}}}}};
+  return f;
+}
+
+// The world position of vertex `v` of the scene's only instance.
+Vec3 worldVertex(const Scene& scene, size_t v) {
+  const Instance& instance = scene.instances.at(0);
+  return instance.objectToWorld.point(scene.meshes.at(instance.meshId).positions.at(v));
+}
+
+TEST(GltfSkins, TwoJointQuadDeformsAsLinearBlendSkinningSays) {
+  TempFolder folder;
+  Scene scene = loadScene(skinnedQuad().write(folder), SceneLoadOptions{});
+  ASSERT_EQ(scene.animation.deformations.size(), 1u);
+  ASSERT_EQ(scene.animation.skins.size(), 1u);
+  // At rest the joints are where the inverse bind matrices expect them: the bind pose, in world space.
+  expectNear(worldVertex(scene, 2), {1, 2, 0});
+  const AnimationPlayer player(scene);
+  ASSERT_EQ(player.deformedMeshes().size(), 1u);
+  player.pose(scene, 0, 1.0f);
+  // Joint 1's matrix is T(0,1,0) R90 T(0,-1,0): (1,2,0) -> (-1,2,0); (0,2,0) -> (-1,1,0), blended half with
+  // joint 0's identity: (-0.5,1.5,0). Vertices 0 and 1 stay.
+  expectNear(worldVertex(scene, 0), {0, 0, 0});
+  expectNear(worldVertex(scene, 1), {1, 0, 0});
+  expectNear(worldVertex(scene, 2), {-1, 2, 0});
+  expectNear(worldVertex(scene, 3), {-0.5f, 1.5f, 0});
+  // Halfway: 45 degrees.
+  player.pose(scene, 0, 0.5f);
+  expectNear(worldVertex(scene, 2), {kSqrtHalf - kSqrtHalf, 1 + kSqrtHalf + kSqrtHalf, 0});
+  player.pose(scene, -1, 0.0f);
+  expectNear(worldVertex(scene, 3), {0, 2, 0});
+}
+
+TEST(GltfSkins, ASceneFilePlacingASkinnedModelTwiceDeformsEachPlacement) {
+  TempFolder folder;
+  skinnedQuad().write(folder);
+  const std::string path = folder.write("scene.json", R"({"models": [{"file": "deformed.gltf"},
+      {"file": "deformed.gltf", "transform": {"translate": [0, 0, -3]}}]})");
+  Scene scene = loadScene(path, SceneLoadOptions{});
+  ASSERT_EQ(scene.animation.deformations.size(), 2u);
+  ASSERT_EQ(scene.instances.size(), 2u);
+  EXPECT_NE(scene.instances[0].meshId, scene.instances[1].meshId);  // loaded again: meshes of its own
+  AnimationPlayer(scene).pose(scene, 0, 1.0f);
+  for (size_t i = 0; i < 2; ++i) {
+    const Instance& instance = scene.instances[i];
+    expectNear(instance.objectToWorld.point(scene.meshes[instance.meshId].positions[2]),
+               {-1, 2, i == 0 ? 0.0f : -3.0f});
+  }
+}
+
+TEST(GltfSkins, HostileSkinDataIsOneLineNamingThePlace) {
+  auto loadError = [](GltfFile file) {
+    TempFolder folder;
+    LoadWarnings warnings;
+    try {
+      loadGltf(file.write(folder), warnings);
+    } catch (const LoadError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(loaded)");
+  };
+  {
+    GltfFile file = skinnedQuad();
+    file.gltf["skins"][0]["joints"] = {1};  // vertex 2 names joint 1 of a skin with one
+    EXPECT_NE(loadError(file).find("meshes[0].primitives[0].attributes.JOINTS_0: vertex 2 names joint 1"),
+              std::string::npos)
+        << loadError(file);
+  }
+  {
+    GltfFile file = skinnedQuad();
+    file.gltf["skins"][0]["inverseBindMatrices"] =
+        file.floats({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}, "MAT4");
+    EXPECT_NE(loadError(file).find("skins[0].inverseBindMatrices: 1 matrices for 2 joints"), std::string::npos)
+        << loadError(file);
+  }
+  {
+    GltfFile file = skinnedQuad();
+    file.gltf["skins"][0]["joints"] = {1, 7};
+    TempFolder folder;
+    LoadWarnings warnings;
+    const Scene scene = loadGltf(file.write(folder), warnings);  // a joint that is no node: a warning
+    EXPECT_TRUE(scene.animation.deformations.empty());
+    ASSERT_FALSE(warnings.messages.empty());
+    EXPECT_NE(warnings.messages[0].find("skins[0].joints: node 7 is not in the scene"), std::string::npos);
+  }
+}
+
+// A quad (z = 0) with one morph target that lifts vertex 2 by 1 in z and tilts its normal, whose weight "Lift"
+// animates from 0 to 1 over 1 s.
+GltfFile morphedQuad() {
+  GltfFile f;
+  const int positions = f.floats({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}, "VEC3");
+  const int normals = f.floats({0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1}, "VEC3");
+  const int lift = f.floats({0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0}, "VEC3");
+  const int tilt = f.floats({0, 0, 0, 0, 0, 0, 1, 0, -1, 0, 0, 0}, "VEC3");
+  const int indices = f.add(std::vector<uint16_t>{0, 1, 2, 0, 2, 3}, "SCALAR", 5123, 1);
+  f.gltf["meshes"] = {{{"primitives",
+                        {{{"attributes", {{"POSITION", positions}, {"NORMAL", normals}}},
+                          {"targets", {{{"POSITION", lift}, {"NORMAL", tilt}}}},
+                          {"indices", indices}}}},
+                       {"weights", {0}}}};
+  f.gltf["nodes"] = {{{"mesh", 0}, {"translation", {0, 0, -2}}}};
+  f.gltf["scenes"] = {{{"nodes", {0}}}};
+  const int times = f.floats({0, 1}, "SCALAR");
+  const int weights = f.floats({0, 1}, "SCALAR");
+  f.gltf["animations"] = {{{"name", "Lift"},
+                           {"samplers", {{{"input", times}, {"output", weights}}}},
+                           {"channels", {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "weights"}}}}}}}};
+  return f;
+}
+
+TEST(GltfMorphTargets, OneTargetBlendsByItsAnimatedWeight) {
+  TempFolder folder;
+  Scene scene = loadScene(morphedQuad().write(folder), SceneLoadOptions{});
+  ASSERT_EQ(scene.animation.deformations.size(), 1u);
+  EXPECT_EQ(scene.animation.deformations[0].targetCount, 1u);
+  expectNear(worldVertex(scene, 2), {1, 1, -2});
+  const AnimationPlayer player(scene);
+  player.pose(scene, 0, 0.25f);
+  expectNear(worldVertex(scene, 2), {1, 1, -1.75f});
+  const Vec3 tilted = normalize(Vec3{0.25f, 0, 0.75f});
+  expectNear(scene.meshes[0].normals[2], tilted);
+  expectNear(scene.meshes[0].normals[0], {0, 0, 1});
+  player.pose(scene, 0, 1.0f);
+  expectNear(worldVertex(scene, 2), {1, 1, -1});
+  expectNear(worldVertex(scene, 1), {1, 0, -2});
+}
+
+TEST(GltfMorphTargets, StaticNodeWeightsShapeTheMeshWithoutAnimation) {
+  TempFolder folder;
+  GltfFile file = morphedQuad();
+  file.gltf.erase("animations");
+  file.gltf["nodes"][0]["weights"] = {0.5};  // the node's weights win over the mesh's
+  LoadWarnings warnings;
+  const Scene scene = loadGltf(file.write(folder), warnings);
+  EXPECT_TRUE(scene.animation.empty());
+  EXPECT_TRUE(scene.animation.deformations.empty());  // applied once, nothing left to animate
+  expectNear(worldVertex(scene, 2), {1, 1, -1.5f});
+}
+
+// Morph targets without accessors, or nodes that each deform a copy of one mesh, cost little in the file but a
+// vertex each here: past 2^24 such vertices the load stops with one line.
+TEST(GltfMorphTargets, TooManyDeformedVerticesAreRefusedWithOneLine) {
+  auto loadError = [](GltfFile file) {
+    TempFolder folder;
+    LoadWarnings warnings;
+    try {
+      loadGltf(file.write(folder), warnings);
+    } catch (const LoadError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(loaded)");
+  };
+  auto bigMesh = [](json targets) {
+    GltfFile f;
+    const int positions = f.floats(std::vector<float>(3 * 16384, 0.0f), "VEC3");
+    f.gltf["meshes"] = {{{"primitives", {{{"attributes", {{"POSITION", positions}}}, {"targets", targets}}}}}};
+    f.gltf["nodes"] = {{{"mesh", 0}}};
+    f.gltf["scenes"] = {{{"nodes", {0}}}};
+    return f;
+  };
+  const std::string limit = "skinned and morphed meshes of more than 16777216 vertices in all";
+  GltfFile emptyTargets = bigMesh(json::array());
+  for (int t = 0; t < 1024; ++t) emptyTargets.gltf["meshes"][0]["primitives"][0]["targets"].push_back(json::object());
+  EXPECT_NE(loadError(emptyTargets).find("nodes[0]: " + limit), std::string::npos) << loadError(emptyTargets);
+
+  GltfFile copies = bigMesh(json::array({json::object()}));
+  for (int n = 1; n < 600; ++n) {
+    copies.gltf["nodes"].push_back({{"mesh", 0}});
+    copies.gltf["scenes"][0]["nodes"].push_back(n);
+  }
+  EXPECT_NE(loadError(copies).find(limit), std::string::npos) << loadError(copies);
+}
+
+TEST(GltfMorphTargets, TheSceneCacheKeepsDeformations) {
+  TempFolder folder;
+  const std::string path = skinnedQuad().write(folder);
+  LoadWarnings warnings;
+  const Scene scene = loadGltf(path, warnings);
+  const std::string cache = sceneCacheFile(folder.file("cache"), path);
+  writeSceneCache(cache, path, scene, {});
+  CachedScene read;
+  ASSERT_EQ(readSceneCache(cache, path, read), SceneCacheRead::Hit);
+  ASSERT_EQ(read.scene.animation.deformations.size(), 1u);
+  Scene posed = read.scene;
+  AnimationPlayer(posed).pose(posed, 0, 1.0f);
+  expectNear(worldVertex(posed, 2), {-1, 2, 0});
+
+  Scene broken = scene;
+  broken.animation.deformations[0].joints[9] = 5;
+  writeSceneCache(cache, path, broken, {});
+  std::string problem;
+  EXPECT_EQ(readSceneCache(cache, path, read, &problem), SceneCacheRead::Invalid);
+  EXPECT_EQ(problem, "a mesh deformation refers to a missing joint");
+}
+
+// Renders of the bending quad: setDeformedMeshes gives the image of a full setScene of the posed scene, and the
+// image changes between the times.
+TEST(GltfSkins, RendersAtTwoTimesDifferAndMatchAFullRebuild) {
+  TempFolder folder;
+  Scene scene = loadScene(skinnedQuad().write(folder), SceneLoadOptions{});
+  const AnimationPlayer player(scene);
+  RenderSettings settings;
+  settings.width = 40;
+  settings.height = 30;
+  settings.seed = 9;
+  const Camera camera = scene.camera.toCamera(40.0f / 30.0f);
+  auto render = [&](CpuBackend& backend) {
+    backend.setSettings(settings);
+    backend.setCamera(camera);
+    backend.render(1);
+    return backend.readImage();
+  };
+  CpuBackend animated;
+  animated.setScene(scene);
+  const Image atRest = render(animated);
+  player.pose(scene, 0, 1.0f);
+  animated.setDeformedMeshes(scene, player.deformedMeshes());
+  const Image bent = render(animated);
+  CpuBackend rebuilt;
+  rebuilt.setScene(scene);
+  const Image expected = render(rebuilt);
+  double difference = 0;
+  for (uint32_t y = 0; y < bent.height; ++y)
+    for (uint32_t x = 0; x < bent.width; ++x) {
+      ASSERT_EQ(bent.at(x, y).x, expected.at(x, y).x) << x << " " << y;
+      difference += std::fabs(bent.at(x, y).x - atRest.at(x, y).x);
+    }
+  EXPECT_GT(difference, 5.0);
+}
+
+}  // namespace
+}  // namespace candela
