@@ -74,7 +74,7 @@ Scene makePointLitField(uint32_t lights, uint32_t seed) {
   enum : uint32_t { kGround, kPillarMaterial };
   Scene scene;
   scene.name = "point-field";
-  scene.materials = {diffuse({0.4f, 0.4f, 0.4f}), diffuse({0.6f, 0.55f, 0.5f})};
+  scene.materials = {diffuseMaterial({0.4f, 0.4f, 0.4f}), diffuseMaterial({0.6f, 0.55f, 0.5f})};
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   Mesh mesh;
@@ -84,8 +84,9 @@ Scene makePointLitField(uint32_t lights, uint32_t seed) {
   for (int i = -4; i <= 4; ++i)
     for (int j = -4; j <= 4; ++j) {
       Vec3 c{10.0f * float(i), 0.0f, 10.0f * float(j)};
-      appendBox(mesh, c - Vec3{kPillar, 0, kPillar}, c + Vec3{kPillar, 2.0f + 4.0f * unit(rng), kPillar},
-                kPillarMaterial);
+      const Vec3 floor[4] = {c + Vec3{-kPillar, 0, -kPillar}, c + Vec3{kPillar, 0, -kPillar},
+                             c + Vec3{kPillar, 0, kPillar}, c + Vec3{-kPillar, 0, kPillar}};
+      appendBlock(mesh, floor, 2.0f + 4.0f * unit(rng), kPillarMaterial);
     }
   scene.meshes.push_back(std::move(mesh));
   scene.instances.push_back({0, Affine3x4{}});

@@ -6,10 +6,11 @@
 #include <cstring>
 
 #include "gpu_render.h"
-#include "scene/animated_gltf.h"
 #include "scene/animation_player.h"
 #include "scene/loaders/gltf_loader.h"
 #include "scene/mesh_builders.h"
+#include "scene/scene_test_files.h"
+#include "support/animated_gltf.h"
 #include "support/scene_edits.h"
 
 namespace candela {
@@ -36,7 +37,7 @@ bool sameImage(const Image& a, const Image& b) {
          std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(Vec3)) == 0;
 }
 
-// The animation tests' glTF (tests/scene/animated_gltf.h): its emissive quad moved and turned by "Move", over a
+// The animation tests' glTF (tests/support/animated_gltf.h): its emissive quad moved and turned by "Move", over a
 // grey floor, with a point light that node 0 carries too.
 Scene animatedScene(const test::TempFolder& folder) {
   test::AnimatedFile file;
@@ -51,7 +52,7 @@ Scene animatedScene(const test::TempFolder& folder) {
   file.gltf["extensionsUsed"] = {"KHR_lights_punctual"};
   file.gltf["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "point"}, {"intensity", 30}}};
   LoadWarnings warnings;
-  return loadGltf(file.write(folder), warnings);
+  return loadGltf(file.write(folder.path()), warnings);
 }
 
 TEST(GpuAnimation, FramesThroughSetInstanceTransformsEqualFullRebuilds) {

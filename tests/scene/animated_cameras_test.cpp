@@ -7,11 +7,11 @@
 
 #include "app/scene_loading.h"
 #include "backends/cpu/cpu_backend.h"
-#include "scene/animated_gltf.h"
 #include "scene/animation_player.h"
 #include "scene/cache/scene_cache.h"
 #include "scene/loaders/gltf_loader.h"
 #include "scene/scene_test_files.h"
+#include "support/animated_gltf.h"
 
 namespace candela {
 namespace {
@@ -46,7 +46,7 @@ AnimatedFile cameraAndLightBelowTheMovingNode() {
 
 TEST(AnimatedCameras, ACameraBelowAnAnimatedNodeFollowsIt) {
   TempFolder folder;
-  Scene scene = loadScene(cameraAndLightBelowTheMovingNode().write(folder), SceneLoadOptions{});
+  Scene scene = loadScene(cameraAndLightBelowTheMovingNode().write(folder.path()), SceneLoadOptions{});
   ASSERT_EQ(scene.cameras.size(), 1u);
   ASSERT_EQ(scene.animation.cameras.size(), 1u);
   EXPECT_EQ(scene.cameraIndex, 0);
@@ -72,7 +72,7 @@ TEST(AnimatedCameras, ACameraBelowAnAnimatedNodeFollowsIt) {
 
 TEST(AnimatedCameras, ALightBelowAnAnimatedNodeFollowsItAfterTheRepairDroppedAnother) {
   TempFolder folder;
-  Scene scene = loadScene(cameraAndLightBelowTheMovingNode().write(folder), SceneLoadOptions{});
+  Scene scene = loadScene(cameraAndLightBelowTheMovingNode().write(folder.path()), SceneLoadOptions{});
   ASSERT_EQ(scene.punctualLights.size(), 1u);  // the light beyond the range is gone
   ASSERT_EQ(scene.animation.lights.size(), 1u);
   EXPECT_EQ(scene.animation.lights[0].light, 0u);
@@ -91,7 +91,7 @@ TEST(AnimatedCameras, ALightPosedOutOfRangeIsSwitchedOffAndComesBack) {
   TempFolder folder;
   AnimatedFile file = cameraAndLightBelowTheMovingNode();
   file.gltf["animations"][0]["samplers"][0]["output"] = file.add({0, 0, 0, 2e8f, 0, 0, 0, 0, 0}, "VEC3");
-  Scene scene = loadScene(file.write(folder), SceneLoadOptions{});
+  Scene scene = loadScene(file.write(folder.path()), SceneLoadOptions{});
   const AnimationPlayer player(scene);
   player.pose(scene, 0, 1.0f);
   expectNear(scene.punctualLights[0].intensity, {0, 0, 0});
@@ -103,7 +103,7 @@ TEST(AnimatedCameras, ALightPosedOutOfRangeIsSwitchedOffAndComesBack) {
 
 TEST(AnimatedCameras, SceneFileCamerasAreRenumberedAndTheChosenOneFollows) {
   TempFolder folder;
-  cameraAndLightBelowTheMovingNode().write(folder);
+  cameraAndLightBelowTheMovingNode().write(folder.path());
   const std::string path = folder.write("scene.json", R"({"camera": {"position": [0, 0, 30], "target": [0, 0, 0]},
       "models": [{"file": "animated.gltf", "transform": {"translate": [0, 0, -5]}},
                  {"file": "animated.gltf"}]})");
@@ -131,7 +131,7 @@ TEST(AnimatedCameras, SceneFileCamerasAreRenumberedAndTheChosenOneFollows) {
 
 TEST(AnimatedCameras, TheSceneCacheKeepsAnimatedCamerasAndLights) {
   TempFolder folder;
-  const std::string path = cameraAndLightBelowTheMovingNode().write(folder);
+  const std::string path = cameraAndLightBelowTheMovingNode().write(folder.path());
   LoadWarnings warnings;
   const Scene scene = loadGltf(path, warnings);
   const std::string cache = sceneCacheFile(folder.file("cache"), path);
@@ -173,7 +173,7 @@ TEST(AnimatedCameras, AMovingLightRendersAsAFullSceneRebuildDoes) {
   file.gltf["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "point"}, {"intensity", 20}}};
   file.gltf["animations"][0]["samplers"][0]["output"] = file.add({0, 0, 0, 4, 0, 0, 4, 0, 0}, "VEC3");
   file.gltf["animations"][0]["channels"] = {file.gltf["animations"][0]["channels"][0]};
-  Scene scene = loadScene(file.write(folder), SceneLoadOptions{});
+  Scene scene = loadScene(file.write(folder.path()), SceneLoadOptions{});
   ASSERT_EQ(scene.animation.lights.size(), 1u);
   const AnimationPlayer player(scene);
   RenderSettings settings;

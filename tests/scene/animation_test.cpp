@@ -11,7 +11,6 @@
 #include "app/animation_render.h"
 #include "app/scene_loading.h"
 #include "backends/cpu/cpu_backend.h"
-#include "scene/animated_gltf.h"
 #include "scene/animation_player.h"
 #include "scene/cache/scene_cache.h"
 #include "scene/loaders/gltf_loader.h"
