@@ -106,7 +106,8 @@ int runAnimatedRender(const RenderJob& job, const AnimationRequest& request, con
   std::unique_ptr<Backend> backend = agreedStep(team, [&] {
     if (team && hinted.devices.given)
       throw std::runtime_error("--devices does not apply under mpirun: each rank renders on the GPU of its local rank");
-    return team ? createBackend(hinted.backend, why, team->localIndex()) : createBackend(hinted.backend, why, hinted.devices);
+    return team ? createBackend(hinted.backend, why, team->localIndex())
+                : createBackend(hinted.backend, why, hinted.devices);
   });
   if (writes) std::fprintf(stderr, "%s\n", why.c_str());
   // With a team, every process poses the scene and takes its share of each frame's samples; the film, added up

@@ -87,8 +87,7 @@ CANDELA_FN float triangleLightPdf(const SceneView& scene, LightSamplerKind kind,
   uint32_t index = findLightIndex(scene, hit.instanceId, hit.primitiveId);
   if (index == scene.lightCount) return 0.0f;
   const LightTriangle& light = scene.lights[index];
-  float selectPmf = kind == LightSamplerKind::Power ? powerTablePmf(scene, light)
-                                                    : lightBvhPmf(scene, ctx, index);
+  float selectPmf = kind == LightSamplerKind::Power ? powerTablePmf(scene, light) : lightBvhPmf(scene, ctx, index);
   return scene.boundedSelectProbability *
          trianglePointPdf(light, selectPmf, sphericalSamplingSolidAngle(light, ctx.p), distance, cosAtLight);
 }

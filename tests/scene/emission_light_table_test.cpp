@@ -142,7 +142,8 @@ TEST(EmissionLightTable, TexturedEmittersRenderAsTheirUntexturedEquivalent) {
   double n = double(a.pixels.size()), meanDifference = difference / n;
   double standardError = std::sqrt(std::fmax(0.0, squares / n - meanDifference * meanDifference) / n);
   EXPECT_LT(std::fabs(meanDifference), 4.0 * standardError + 1e-6) << sa.mean << " vs " << sb.mean;
-  std::printf("textured %.5f, untextured %.5f, difference %.2e, standard error %.2e\n", sa.mean, sb.mean, meanDifference, standardError);
+  std::printf("textured %.5f, untextured %.5f, difference %.2e, standard error %.2e\n", sa.mean, sb.mean,
+              meanDifference, standardError);
 }
 
 }  // namespace

@@ -248,8 +248,8 @@ Image MultiGpuBackend::readBilateralFiltered(const BilateralParams& params) cons
 
 std::unique_ptr<TemporalDenoiser> MultiGpuBackend::makeTemporalDenoiser(const TemporalParams& params) const {
   CurrentDevice device(ordinals_[0]);
-  return std::make_unique<CombiningTemporalDenoiser>(devices_[0]->makeTemporalDenoiser(params),
-                                                     [this] { mergeFilms(); }, ordinals_[0]);
+  return std::make_unique<CombiningTemporalDenoiser>(
+      devices_[0]->makeTemporalDenoiser(params), [this] { mergeFilms(); }, ordinals_[0]);
 }
 
 std::array<unsigned char, 16> MultiGpuBackend::deviceUuid() const { return devices_[0]->deviceUuid(); }
