@@ -281,14 +281,14 @@ bool FlatScene::replaceMaterials(const std::vector<Material>& replacement) {
 }
 
 bool FlatScene::replaceInstanceTransforms(const Scene& scene) {
-  if (scene.instances.size() != instances.size() || scene.punctualLights.size() != punctualLights.size()) return false;
+  if (scene.instances.size() != instances.size()) return false;
   for (size_t i = 0; i < instances.size(); ++i)
     if (scene.instances[i].meshId != instances[i].meshId) return false;
   for (size_t i = 0; i < instances.size(); ++i) {
     instances[i].objectToWorld = scene.instances[i].objectToWorld;
     instances[i].normalToWorld = normalTransform(scene.instances[i].objectToWorld);
   }
-  punctualLights = scene.punctualLights;
+  collectPunctualLights(scene, *this);
   lights.clear();
   lightCdf.clear();
   buildLightTable(scene, *this);

@@ -50,7 +50,7 @@ struct FlatScene {
   bool replaceMaterials(const std::vector<Material>& replacement);
   // Takes the instance transforms and punctual lights of `scene`, the scene this was built from with only those
   // changed, and builds the light table again. Returns false, changing nothing, when the instances differ in
-  // number or meshes, or the punctual lights in number.
+  // number or meshes.
   bool replaceInstanceTransforms(const Scene& scene);
   // Takes the vertices (positions, normals and tangents) of the meshes `deformed` of `scene`, the scene this was
   // built from with only those (and what replaceInstanceTransforms takes) changed; tangents this built are built

@@ -34,6 +34,36 @@ TEST(FlatScene, LightTableAndInteractionAgreeOnTheFrontUnderMirroring) {
   }
 }
 
+// Posing the scene again keeps the punctual lights in the order kernel code reads them: the point and spot lights
+// first (inside the light BVH), then the directional ones, whatever order the scene lists them in.
+TEST(FlatScene, PosedAgainThePunctualLightsKeepTheirOrder) {
+  Scene scene;
+  scene.materials = {Material{}};
+  Mesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  m.indices = {0, 1, 2};
+  m.triangleMaterials = {0};
+  scene.meshes = {m};
+  scene.instances = {{0, Affine3x4{}}};
+  PunctualLight sun, lamp;
+  sun.type = PunctualLightType::Directional;
+  sun.direction = {0, -1, 0};
+  sun.intensity = {1, 1, 1};
+  lamp.type = PunctualLightType::Point;
+  lamp.position = {0, 2, 0};
+  lamp.intensity = {1, 1, 1};
+  scene.punctualLights = {sun, lamp};
+  FlatScene flat = FlatScene::build(scene);
+  ASSERT_EQ(flat.boundedPunctualLightCount, 1u);
+  scene.instances[0].objectToWorld.m[3] = 1.0f;
+  ASSERT_TRUE(flat.replaceInstanceTransforms(scene));
+  ASSERT_EQ(flat.punctualLights.size(), 2u);
+  EXPECT_EQ(flat.boundedPunctualLightCount, 1u);
+  EXPECT_EQ(flat.punctualLights[0].type, PunctualLightType::Point);
+  EXPECT_EQ(flat.punctualLights[1].type, PunctualLightType::Directional);
+  EXPECT_EQ(flat.lightBvh.size(), 1u);  // the point light alone: the triangle does not emit
+}
+
 TEST(FlatScene, ConstantAndMapEnvironments) {
   Scene scene;
   scene.environment.radiance = {2, 2, 2};

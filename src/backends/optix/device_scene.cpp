@@ -33,12 +33,15 @@ void DeviceScene::updateInstances(const FlatScene& flat) {
   view_.lights = copy(posed_, flat.lights, "the light table");
   view_.lightCount = uint32_t(flat.lights.size());
   view_.lightCdf = copy(posed_, flat.lightCdf, "the light distribution");
-  view_.lightAreaPdfScale = flat.lightAreaPdfScale;
+  view_.inverseLightPower = flat.inverseLightPower;
   view_.lightBvh = copy(posed_, flat.lightBvh, "the light BVH");
   view_.lightBitTrails = copy(posed_, flat.lightBitTrails, "the light BVH's bit trails");
   view_.environmentSelectProbability = flat.environmentSelectProbability;
+  view_.directionalSelectProbability = flat.directionalSelectProbability;
+  view_.boundedSelectProbability = flat.boundedSelectProbability;
   view_.punctualLights = copy(posed_, flat.punctualLights, "the punctual lights");
   view_.punctualLightCount = uint32_t(flat.punctualLights.size());
+  view_.boundedPunctualLightCount = flat.boundedPunctualLightCount;
 }
 
 void DeviceScene::updateMaterials(const FlatScene& flat) {
