@@ -1,5 +1,8 @@
 #include "scene/loaders/pbrt_textures.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/file_extension.h"
 #include "scene/loaders/file_bytes.h"
 #include "scene/loaders/image_decoding.h"
@@ -12,7 +15,63 @@ namespace {
 
 Vec3 meanOf(const PbrtTexture& t) { return t.factor * (t.image == kNoTexture ? 1.0f : 0.5f); }
 
+// The texel of `image` nearest to (s, t) in pbrt's texture space (t runs up, the image's rows down), as linear
+// colour, wrapped as the image says.
+Vec3 texelAt(const Texture& image, float s, float t) {
+  auto index = [](float coordinate, uint32_t size, TextureWrap wrap) {
+    float x = std::floor(coordinate * float(size));
+    if (!std::isfinite(x)) return 0u;
+    if (wrap == TextureWrap::Clamp) return uint32_t(std::clamp(x, 0.0f, float(size - 1)));
+    const double period = double(size);
+    return uint32_t(std::clamp(double(x) - period * std::floor(double(x) / period), 0.0, period - 1.0));
+  };
+  const uint32_t x = index(s, image.width, image.wrapU), y = index(1.0f - t, image.height, image.wrapV);
+  const size_t at = (size_t(y) * image.width + x) * image.channels;
+  float c[3];
+  for (uint32_t k = 0; k < 3; ++k) {
+    const uint32_t channel = image.channels >= 3 ? k : 0;
+    float v = image.floats.empty() ? float(image.bytes[at + channel]) / 255.0f : image.floats[at + channel];
+    c[k] = image.floats.empty() && image.srgb ? srgbToLinear(v) : v;
+  }
+  return {c[0], c[1], c[2]};
+}
+
 }  // namespace
+
+Vec3 PbrtTextures::colourAt(const PbrtTexture& t, float u, float v) const {
+  if (t.image == kNoTexture) return t.factor;
+  const Texture& image = context_.scene.textures[size_t(t.image)];
+  return t.factor * texelAt(image, t.uvScale.x * u + t.uvOffset.x, t.uvScale.y * v + t.uvOffset.y);
+}
+
+int32_t PbrtTextures::mixedImage(const PbrtTexture& first, const PbrtTexture& second, const PbrtTexture& amount) {
+  // As fine as the finest input over pbrt's unit square, each input's repetitions counted.
+  uint32_t width = 1, height = 1;
+  for (const PbrtTexture* t : {&first, &second, &amount}) {
+    if (t->image == kNoTexture) continue;
+    const Texture& image = context_.scene.textures[size_t(t->image)];
+    width = std::max(width, uint32_t(std::min(4096.0f, std::ceil(float(image.width) * std::fabs(t->uvScale.x)))));
+    height = std::max(height, uint32_t(std::min(4096.0f, std::ceil(float(image.height) * std::fabs(t->uvScale.y)))));
+  }
+  Texture out;
+  out.name = "mix texture";
+  out.width = width;
+  out.height = height;
+  out.channels = 3;
+  out.floats.resize(size_t(width) * height * 3);
+  for (uint32_t y = 0; y < height; ++y)
+    for (uint32_t x = 0; x < width; ++x) {
+      const float u = (float(x) + 0.5f) / float(width), v = 1.0f - (float(y) + 0.5f) / float(height);
+      const Vec3 c = lerp(colourAt(amount, u, v).x, colourAt(first, u, v), colourAt(second, u, v));
+      float* texel = out.floats.data() + (size_t(y) * width + x) * 3;
+      texel[0] = c.x;
+      texel[1] = c.y;
+      texel[2] = c.z;
+    }
+  const int32_t index = int32_t(context_.scene.textures.size());
+  context_.scene.textures.push_back(std::move(out));
+  return index;
+}
 
 int32_t PbrtTextures::loadImage(const std::string& path, bool srgb, const std::string& file, size_t line) {
   auto key = std::make_pair(path, srgb);
@@ -180,11 +239,19 @@ void PbrtTextures::define(const std::string& name, const std::string& valueType,
       context_.warn("checkerboard of images", "checkerboards of image textures use the images' mean colours");
     t.image = checkerboardImage(meanOf(a), meanOf(b));
     if (t.image == kNoTexture) t.factor = 0.5f * (meanOf(a) + meanOf(b));
-  } else if (className == "mix" || className == "checkerboard") {
+  } else if (className == "mix") {
+    // (1 - amount) tex1 + amount tex2: exact for constants; of images, an image of the mix over pbrt's unit
+    // square, each input through its own uv mapping.
     PbrtTexture a = value(params, "tex1", {1, 1, 1}), b = value(params, "tex2", {0, 0, 0});
-    float amount = className == "mix" ? params.getFloat("amount", 0.5f) : 0.5f;
-    t.factor = lerp(amount, meanOf(a), meanOf(b));
-    context_.warn("texture " + className, "'" + className + "' textures are replaced by the mean of their inputs");
+    PbrtTexture amount = value(params, "amount", {0.5f, 0.5f, 0.5f});
+    if (a.image == kNoTexture && b.image == kNoTexture && amount.image == kNoTexture)
+      t.factor = lerp(amount.factor.x, a.factor, b.factor);
+    else
+      t.image = mixedImage(a, b, amount);
+  } else if (className == "checkerboard") {
+    PbrtTexture a = value(params, "tex1", {1, 1, 1}), b = value(params, "tex2", {0, 0, 0});
+    t.factor = 0.5f * (meanOf(a) + meanOf(b));
+    context_.warn("texture " + className, "3D checkerboard textures are replaced by the mean of their inputs");
   } else {
     params.markAllUsed();
     t.factor = {0.5f, 0.5f, 0.5f};

@@ -19,8 +19,9 @@ struct PbrtTexture {
 };
 
 // The named textures of a scene (`Texture "name" "spectrum"|"float" "class" ...`): imagemap (PNG, JPEG, TGA, BMP,
-// HDR, EXR, PFM; invert), constant, scale and 2D checkerboards (as an image of one period) are honoured; mix and 3D
-// checkerboards become the mean of their two inputs, other classes a constant grey, each with a warning.
+// HDR, EXR, PFM; invert), constant, scale, mix (of images: as an image of the mix) and 2D checkerboards (as an
+// image of one period) are honoured; 3D checkerboards become the mean of their two inputs, other classes a
+// constant grey, each with a warning.
 class PbrtTextures {
  public:
   explicit PbrtTextures(PbrtContext& context) : context_(context) {}
@@ -37,8 +38,13 @@ class PbrtTextures {
   // A 64 x 64 image of one period of a 2D checkerboard of two colours (the first where pbrt's tex1 goes), shared
   // by every checkerboard of the same colours; kNoTexture (after a warning) beyond kMaxCheckerboardImages.
   int32_t checkerboardImage(Vec3 first, Vec3 second);
+  // An image of (1 - amount) first + amount second over pbrt's unit (u, v) square, each input looked up (nearest
+  // texel) through its own uv mapping, as fine as the finest input there (at most 4096 texels a side).
+  int32_t mixedImage(const PbrtTexture& first, const PbrtTexture& second, const PbrtTexture& amount);
 
  private:
+  // The linear colour of `t` at pbrt's (u, v): its factor, times its image's nearest texel through its uv mapping.
+  Vec3 colourAt(const PbrtTexture& t, float u, float v) const;
   // A float copy of an image with its colour channels (as linear values) turned into 1 - value, for `invert`.
   int32_t invertedImage(int32_t image);
 
