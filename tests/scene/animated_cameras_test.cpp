@@ -12,6 +12,7 @@
 #include "scene/loaders/gltf_loader.h"
 #include "scene/scene_test_files.h"
 #include "support/animated_gltf.h"
+#include "support/vector_expectations.h"
 
 namespace candela {
 namespace {
@@ -20,11 +21,7 @@ using test::AnimatedFile;
 using test::kSqrtHalf;
 using test::TempFolder;
 
-void expectNear(Vec3 a, Vec3 b, float tolerance = 1e-5f) {
-  EXPECT_NEAR(a.x, b.x, tolerance);
-  EXPECT_NEAR(a.y, b.y, tolerance);
-  EXPECT_NEAR(a.z, b.z, tolerance);
-}
+using test::expectNear;
 
 // AnimatedFile with its camera (node 2, at (0, 0, 10)) moved below node 0, which "Move" translates and turns, and a
 // spot light (node 3) below node 0 too: at (0, 0, 3), turned 90 degrees about x so that it shines along +y at rest.

@@ -17,6 +17,7 @@
 #include "scene/loaders/scene_file.h"
 #include "scene/scene_test_files.h"
 #include "support/animated_gltf.h"
+#include "support/vector_expectations.h"
 
 namespace candela {
 namespace {
@@ -26,11 +27,7 @@ using test::AnimatedFile;
 using test::kSqrtHalf;
 using test::TempFolder;
 
-void expectNear(Vec3 a, Vec3 b, float tolerance = 1e-5f) {
-  EXPECT_NEAR(a.x, b.x, tolerance);
-  EXPECT_NEAR(a.y, b.y, tolerance);
-  EXPECT_NEAR(a.z, b.z, tolerance);
-}
+using test::expectNear;
 
 AnimationChannel channel(AnimatedProperty property, AnimationInterpolation interpolation, std::vector<float> times,
                          std::vector<Vec4> values) {

@@ -13,6 +13,7 @@
 #include "scene/cache/scene_cache.h"
 #include "scene/loaders/gltf_loader.h"
 #include "scene/scene_test_files.h"
+#include "support/vector_expectations.h"
 
 namespace candela {
 namespace {
@@ -22,11 +23,7 @@ using test::TempFolder;
 
 constexpr float kSqrtHalf = 0.70710678f;
 
-void expectNear(Vec3 a, Vec3 b, float tolerance = 1e-5f) {
-  EXPECT_NEAR(a.x, b.x, tolerance);
-  EXPECT_NEAR(a.y, b.y, tolerance);
-  EXPECT_NEAR(a.z, b.z, tolerance);
-}
+using test::expectNear;
 
 // A glTF built in memory: accessors of any component type over one buffer.
 struct GltfFile {
