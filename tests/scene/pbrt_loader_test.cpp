@@ -685,6 +685,28 @@ TEST(PbrtLoader, MixTexturesOfImagesBecomeAnImageOfTheMix) {
   EXPECT_FLOAT_EQ(scene.meshes[0].uvs[1].x, 1.0f);
 }
 
+// A mix of an image repeated without bound stays within the texture size limit.
+TEST(PbrtLoader, MixTextureImagesKeepToTheTextureSizeLimit) {
+  TempFolder folder;
+  folder.write("grey.pfm", std::string("Pf\n2 1\n-1.0\n") + std::string("\0\0\0\x3f\0\0\x80\x3f", 8));
+  std::string path =
+      folder.write("scene.pbrt",
+                   std::string(kMirroredCamera) +
+                       "Texture \"g\" \"spectrum\" \"imagemap\" \"string filename\" \"grey.pfm\" "
+                       "\"float uscale\" 1e30 \"float vscale\" -1e30\n"
+                       "Texture \"m\" \"spectrum\" \"mix\" \"texture tex1\" \"g\" \"rgb tex2\" [0 0 0]\n"
+                       "Material \"diffuse\" \"texture reflectance\" \"m\"\n"
+                       "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"point2 uv\" [0 0 1 0 0 1]\n");
+  setTextureLimits({64, 1u << 20});
+  LoadWarnings warnings;
+  Scene scene = loadPbrt(path, warnings);
+  setTextureLimits({});
+  const Material& m = scene.materials[scene.meshes[0].triangleMaterials[0]];
+  ASSERT_NE(m.baseColorTexture, kNoTexture);
+  EXPECT_EQ(scene.textures[size_t(m.baseColorTexture)].width, 64u);
+  EXPECT_EQ(scene.textures[size_t(m.baseColorTexture)].height, 64u);
+}
+
 TEST(PbrtLoader, RoughnessTexturesBecomeCandelasRoughness) {
   TempFolder folder;
   folder.write("grey.pfm", std::string("Pf\n2 1\n-1.0\n") + std::string("\0\0\0\x3f\0\0\x80\x3f", 8));

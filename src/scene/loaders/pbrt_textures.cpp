@@ -45,13 +45,15 @@ Vec3 PbrtTextures::colourAt(const PbrtTexture& t, float u, float v) const {
 }
 
 int32_t PbrtTextures::mixedImage(const PbrtTexture& first, const PbrtTexture& second, const PbrtTexture& amount) {
-  // As fine as the finest input over pbrt's unit square, each input's repetitions counted.
+  // As fine as the finest input over pbrt's unit square, each input's repetitions counted, within the texture
+  // size limit (--max-texture-size) and 4096 texels a side.
+  const float side = float(std::min<uint32_t>(4096, textureLimits().maxSize));
   uint32_t width = 1, height = 1;
   for (const PbrtTexture* t : {&first, &second, &amount}) {
     if (t->image == kNoTexture) continue;
     const Texture& image = context_.scene.textures[size_t(t->image)];
-    width = std::max(width, uint32_t(std::min(4096.0f, std::ceil(float(image.width) * std::fabs(t->uvScale.x)))));
-    height = std::max(height, uint32_t(std::min(4096.0f, std::ceil(float(image.height) * std::fabs(t->uvScale.y)))));
+    width = std::max(width, uint32_t(std::min(side, std::ceil(float(image.width) * std::fabs(t->uvScale.x)))));
+    height = std::max(height, uint32_t(std::min(side, std::ceil(float(image.height) * std::fabs(t->uvScale.y)))));
   }
   Texture out;
   out.name = "mix texture";

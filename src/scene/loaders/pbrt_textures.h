@@ -39,7 +39,8 @@ class PbrtTextures {
   // by every checkerboard of the same colours; kNoTexture (after a warning) beyond kMaxCheckerboardImages.
   int32_t checkerboardImage(Vec3 first, Vec3 second);
   // An image of (1 - amount) first + amount second over pbrt's unit (u, v) square, each input looked up (nearest
-  // texel) through its own uv mapping, as fine as the finest input there (at most 4096 texels a side).
+  // texel) through its own uv mapping, as fine as the finest input there (at most 4096 texels a side, and
+  // within --max-texture-size).
   int32_t mixedImage(const PbrtTexture& first, const PbrtTexture& second, const PbrtTexture& amount);
 
  private:
