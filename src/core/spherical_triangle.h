@@ -27,13 +27,29 @@ struct SphericalTriangleSample {
   float pdf = 0.0f;   // with respect to solid angle: 1 / the triangle's solid angle; 0 where sampling failed
 };
 
-// A direction from p distributed uniformly over the solid angle of the triangle (p0, p1, p2), as the point it
-// reaches on the triangle (Arvo 1995, as pbrt-v4's SampleSphericalTriangle). Fails for triangles that are
-// too small or too large seen from p for single precision: callers sample those by area.
-CANDELA_FN SphericalTriangleSample sampleSphericalTriangle(Vec3 p0, Vec3 p1, Vec3 p2, Vec3 p, Vec2 u) {
+// The triangle (p0, p1, p2) as seen from p: the unit directions towards its corners and the solid angle they span.
+struct SphericalTriangle {
+  Vec3 a, b, c;
+  float area = 0.0f;
+};
+
+CANDELA_FN SphericalTriangle sphericalTriangle(Vec3 p0, Vec3 p1, Vec3 p2, Vec3 p) {
+  SphericalTriangle t;
+  t.a = normalize(p0 - p);
+  t.b = normalize(p1 - p);
+  t.c = normalize(p2 - p);
+  t.area = sphericalTriangleArea(t.a, t.b, t.c);
+  return t;
+}
+
+// A direction from p distributed uniformly over the solid angle of the triangle (p0, p1, p2), whose view from p
+// is `seen`, as the point it reaches on the triangle (Arvo 1995, as pbrt-v4's SampleSphericalTriangle). Fails for
+// triangles that are too small or too large seen from p for single precision: callers sample those by area.
+CANDELA_FN SphericalTriangleSample sampleSphericalTriangle(const SphericalTriangle& seen, Vec3 p0, Vec3 p1, Vec3 p2,
+                                                           Vec3 p, Vec2 u) {
   using namespace detail;
   SphericalTriangleSample s;
-  Vec3 a = normalize(p0 - p), b = normalize(p1 - p), c = normalize(p2 - p);
+  const Vec3 a = seen.a, b = seen.b, c = seen.c;
   Vec3 nab = cross(a, b), nbc = cross(b, c), nca = cross(c, a);
   if (dot(nab, nab) == 0.0f || dot(nbc, nbc) == 0.0f || dot(nca, nca) == 0.0f) return s;
   nab = normalize(nab);
@@ -81,8 +97,12 @@ CANDELA_FN SphericalTriangleSample sampleSphericalTriangle(Vec3 p0, Vec3 p1, Vec
   s.barycentrics = {b1, b2};
   // The area from the corners' angles loses precision to cancellation for small triangles; the pdf comes from
   // the accurate formula, the one a caller evaluating the density of a direction uses too.
-  s.pdf = 1.0f / sphericalTriangleArea(a, b, c);
+  s.pdf = 1.0f / seen.area;
   return s;
+}
+
+CANDELA_FN SphericalTriangleSample sampleSphericalTriangle(Vec3 p0, Vec3 p1, Vec3 p2, Vec3 p, Vec2 u) {
+  return sampleSphericalTriangle(sphericalTriangle(p0, p1, p2, p), p0, p1, p2, p, u);
 }
 
 }  // namespace candela

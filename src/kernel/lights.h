@@ -59,14 +59,34 @@ CANDELA_FN float powerTablePmf(const SceneView& scene, const LightTriangle& ligh
 // becomes unstable.
 constexpr float kMinSphericalSampleSolidAngle = 3e-4f;
 constexpr float kMaxSphericalSampleSolidAngle = 6.22f;
+// Below this estimated solid angle a triangle is sampled by area, without the exact construction. Measured on the
+// H200: the construction for every light sample cost the Cornell box 10% of its frame time for 3% less variance,
+// while beside a large light (a panel over a floor) it lowers the variance by 40%; above 0.1 sr it keeps that gain and
+// costs the box 4% (docs/performance.md, 'Solid-angle sampling where it pays').
+constexpr float kSphericalSamplingWorthwhile = 0.1f;
+
+// Whether `light`, seen from p as a small patch at its centroid (area x |cos| / distance^2: cheap, and exact in the
+// limit of small triangles), subtends kSphericalSamplingWorthwhile or more: only then is the exact construction tried.
+CANDELA_FN bool sphericalSamplingWorthwhile(const LightTriangle& light, Vec3 p) {
+  Vec3 toCentroid = light.p0 + (light.edge1 + light.edge2) * (1.0f / 3.0f) - p;
+  float d2 = dot(toCentroid, toCentroid);
+  float twiceAreaCosDistance = fabsf(dot(cross(light.edge1, light.edge2), toCentroid));
+  return twiceAreaCosDistance >= kSphericalSamplingWorthwhile * 2.0f * d2 * sqrtf(d2);
+}
+
+// `light` seen from p where next-event estimation samples it by solid angle; a zero area where it samples it by
+// area. Sampling and the density for MIS both decide through this one function.
+CANDELA_FN SphericalTriangle sphericalSampling(const LightTriangle& light, Vec3 p) {
+  if (!sphericalSamplingWorthwhile(light, p)) return {};
+  SphericalTriangle seen = sphericalTriangle(light.p0, light.p0 + light.edge1, light.p0 + light.edge2, p);
+  if (!(seen.area >= kMinSphericalSampleSolidAngle && seen.area <= kMaxSphericalSampleSolidAngle)) seen.area = 0.0f;
+  return seen;
+}
 
 // The solid angle `light` subtends from p where next-event estimation samples it by solid angle; 0 where it
-// samples it by area. Sampling and the density for MIS both decide through this one function.
+// samples it by area.
 CANDELA_FN float sphericalSamplingSolidAngle(const LightTriangle& light, Vec3 p) {
-  Vec3 a = normalize(light.p0 - p), b = normalize(light.p0 + light.edge1 - p);
-  Vec3 c = normalize(light.p0 + light.edge2 - p);
-  float solidAngle = sphericalTriangleArea(a, b, c);
-  return solidAngle >= kMinSphericalSampleSolidAngle && solidAngle <= kMaxSphericalSampleSolidAngle ? solidAngle : 0.0f;
+  return sphericalSampling(light, p).area;
 }
 
 // Solid-angle density of a point on `light`, chosen with probability selectPmf, at `distance` and seen at
@@ -172,10 +192,11 @@ CANDELA_FN LightSample sampleLight(const SceneView& scene, LightSamplerKind kind
   }
   ls.lightIndex = index;
   const LightTriangle& light = scene.lights[ls.lightIndex];
-  float solidAngle = sphericalSamplingSolidAngle(light, ctx.p);
+  SphericalTriangle seen = sphericalSampling(light, ctx.p);
+  float solidAngle = seen.area;
   if (solidAngle > 0.0f) {
     SphericalTriangleSample st =
-        sampleSphericalTriangle(light.p0, light.p0 + light.edge1, light.p0 + light.edge2, ctx.p, u);
+        sampleSphericalTriangle(seen, light.p0, light.p0 + light.edge1, light.p0 + light.edge2, ctx.p, u);
     if (st.pdf == 0.0f) return ls;
     ls.barycentrics = st.barycentrics;
   } else {

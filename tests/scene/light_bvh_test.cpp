@@ -310,8 +310,20 @@ TEST_P(LightBvhTest, LightSamplePdfIsTheDensityOfHittingThatPoint) {
   std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
   for (LightSamplerKind kind : {LightSamplerKind::Bvh, LightSamplerKind::Power}) {
     int checked = 0, bySolidAngle = 0, punctual = 0;
-    for (const LightSampleContext& ctx : randomContexts(100, 7)) {
-      for (int i = 0; i < 40; ++i) {
+    // Random points see most triangles too small for solid-angle sampling; points just in front of lights see
+    // them large.
+    std::vector<LightSampleContext> contexts = randomContexts(100, 7);
+    for (uint32_t i = 0; i < 100 && view_.lightCount > 0; ++i) {
+      const LightTriangle& light = flat_.lights[(i * 7919u) % view_.lightCount];
+      Vec3 n = normalize(cross(light.edge1, light.edge2)) * light.frontSign;
+      float size = sqrtf(light.area);
+      Vec3 centroid = light.p0 + (light.edge1 + light.edge2) * (1.0f / 3.0f);
+      contexts.push_back({centroid + n * (size * (0.05f + 2.0f * uniform(rng))), i % 4 == 3 ? Vec3{} : -n});
+    }
+    for (size_t c = 0; c < contexts.size(); ++c) {
+      const LightSampleContext& ctx = contexts[c];
+      // The power table picks the light in front of a near point among all the others: more samples there.
+      for (int i = 0; i < (c < 100 ? 40 : 2000); ++i) {
         LightSample ls = sampleLight(view_, kind, ctx, uniform(rng), {uniform(rng), uniform(rng)});
         if (!ls.valid) continue;
         if (ls.isDelta) {
