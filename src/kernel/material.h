@@ -48,6 +48,13 @@ struct Material {
   float clearcoatGloss = 1.0f;
   float specTrans = 0.0f;
   float ior = 1.5f;
+  // KHR_materials_iridescence: a thin dielectric film over the specular lobe (kernel/bsdf/thin_film.h), of
+  // strength `iridescence` (0: none), index iridescenceIor and a thickness in nanometres: iridescenceThickness
+  // without a thickness texture, else mix(iridescenceThicknessMinimum, iridescenceThickness, texel's G).
+  float iridescence = 0.0f;
+  float iridescenceIor = 1.3f;
+  float iridescenceThickness = 400.0f;
+  float iridescenceThicknessMinimum = 100.0f;
   // Inside a transmissive material: the absorption coefficient per unit of world length, per channel, by which
   // light decays between entering and leaving a closed object (Beer-Lambert; kernel/volume_absorption.h). Zero:
   // none, as for a thin-walled surface.
@@ -67,6 +74,8 @@ struct Material {
   int32_t emissionTexture = kNoTexture;           // sRGB, multiplies emission
   int32_t normalTexture = kNoTexture;             // tangent space
   int32_t opacityTexture = kNoTexture;            // R
+  int32_t iridescenceTexture = kNoTexture;        // R, multiplies iridescence
+  int32_t iridescenceThicknessTexture = kNoTexture;  // G, between the minimum and maximum thickness
 
   // Mix: a shading point scatters as mixedMaterials[1] with probability mixAmount (times the R channel of
   // mixAmountTexture), else as mixedMaterials[0], pbrt-v4's convention. Emission and coverage (alpha, culling)

@@ -25,7 +25,8 @@ CANDELA_FN Vec4 lookup(const SceneView& scene, int32_t texture, const SurfaceInt
 CANDELA_FN bool hasTextures(const Material& m) {
   return m.type == MaterialType::Mix || m.baseColorTexture != kNoTexture || m.metallicRoughnessTexture != kNoTexture ||
          m.roughnessTexture != kNoTexture || m.metallicTexture != kNoTexture || m.emissionTexture != kNoTexture ||
-         m.normalTexture != kNoTexture;
+         m.normalTexture != kNoTexture || m.iridescenceTexture != kNoTexture ||
+         m.iridescenceThicknessTexture != kNoTexture;
 }
 
 // Coverage at uv: opacity times the base colour texture's alpha times the opacity texture.
@@ -59,6 +60,12 @@ CANDELA_FN Material evaluateMaterial(const SceneView& scene, const Material& sto
   }
   if (m.roughnessTexture != kNoTexture) m.roughness *= lookup(scene, m.roughnessTexture, si).x;
   if (m.metallicTexture != kNoTexture) m.metallic *= lookup(scene, m.metallicTexture, si).x;
+  // The film's textures are read only where there is a film.
+  if (m.iridescence > 0.0f && m.iridescenceTexture != kNoTexture)
+    m.iridescence *= lookup(scene, m.iridescenceTexture, si).x;
+  if (m.iridescence > 0.0f && m.iridescenceThicknessTexture != kNoTexture)
+    m.iridescenceThickness =
+        lerp(lookup(scene, m.iridescenceThicknessTexture, si).y, m.iridescenceThicknessMinimum, m.iridescenceThickness);
   m.emission = emittedRadiance(scene, stored, si);
   return m;
 }

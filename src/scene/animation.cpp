@@ -225,6 +225,7 @@ std::vector<Affine3x4> nodeWorldTransforms(const SceneAnimation& animation, int 
 namespace {
 
 bool finite(Vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(float x) { return std::isfinite(x); }
 
 template <class T>
 bool allFinite(const std::vector<T>& values) {
@@ -250,19 +251,20 @@ void validateDeformations(const Scene& scene) {
         d.tangents.size() != mesh.tangents.size())
       fail("a mesh deformation does not match its mesh's vertices");
     if (d.positionDeltas.size() != targets * n || (!d.normalDeltas.empty() && d.normalDeltas.size() != targets * n) ||
-        d.weights.size() != targets)
+        (!d.tangentDeltas.empty() && d.tangentDeltas.size() != targets * n) || d.weights.size() != targets)
       fail("a mesh deformation has the wrong number of morph target values");
     if (d.skin >= int32_t(animation.skins.size()) || d.skin < -1) fail("a mesh deformation refers to a missing skin");
     if (d.skin >= 0) {
-      if (d.joints.size() != 4 * n || d.jointWeights.size() != n)
-        fail("a mesh deformation has not four joints and weights per vertex");
+      if ((d.influences != 4 && d.influences != 8) || d.joints.size() != d.influences * n ||
+          d.jointWeights.size() != d.influences * n)
+        fail("a mesh deformation has not four or eight joints and weights per vertex");
       for (uint32_t j : d.joints)
         if (j >= animation.skins[size_t(d.skin)].joints.size()) fail("a mesh deformation refers to a missing joint");
     } else if (!d.joints.empty() || !d.jointWeights.empty()) {
       fail("a mesh deformation has joints but no skin");
     }
     if (!allFinite(d.positions) || !allFinite(d.normals) || !allFinite(d.tangents) || !allFinite(d.positionDeltas) ||
-        !allFinite(d.normalDeltas) || !allFinite(d.jointWeights) ||
+        !allFinite(d.normalDeltas) || !allFinite(d.tangentDeltas) || !allFinite(d.jointWeights) ||
         !std::all_of(d.weights.begin(), d.weights.end(), [](float w) { return std::isfinite(w); }))
       fail("a mesh deformation has non-finite values");
   }

@@ -45,15 +45,18 @@ bool deformMesh(const MeshDeformation& d, const std::vector<float>& weights,
     for (size_t v = 0; v < n; ++v) positions[v] = positions[v] + d.positionDeltas[t * n + v] * w;
     if (!d.normalDeltas.empty() && !normals.empty())
       for (size_t v = 0; v < n; ++v) normals[v] = normals[v] + d.normalDeltas[t * n + v] * w;
+    if (!d.tangentDeltas.empty() && !tangents.empty())
+      for (size_t v = 0; v < n; ++v) {
+        const Vec3 delta = d.tangentDeltas[t * n + v] * w;
+        tangents[v] = {tangents[v].x + delta.x, tangents[v].y + delta.y, tangents[v].z + delta.z, tangents[v].w};
+      }
   }
   if (d.skin >= 0) {
     for (size_t v = 0; v < n; ++v) {
       // glTF's linear blend skinning: the weighted sum of the joint matrices, applied to the morphed vertex.
-      const Vec4 w = d.jointWeights[v];
-      const float ws[4] = {w.x, w.y, w.z, w.w};
       Affine3x4 blend = weighted(Affine3x4{}, 0.0f);
-      for (int k = 0; k < 4; ++k)
-        if (ws[k] != 0.0f) add(blend, weighted(jointMatrices[d.joints[4 * v + size_t(k)]], ws[k]));
+      for (size_t k = d.influences * v; k < d.influences * (v + 1); ++k)
+        if (d.jointWeights[k] != 0.0f) add(blend, weighted(jointMatrices[d.joints[k]], d.jointWeights[k]));
       const Affine3x4 toNode = multiply(worldToNode, blend);
       positions[v] = toNode.point(positions[v]);
       if (!normals.empty()) normals[v] = normalTransform(toNode).vector(normals[v]);

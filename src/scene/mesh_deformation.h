@@ -16,7 +16,7 @@ struct Skin {
 };
 
 // A mesh whose vertices an animation moves, as glTF 2.0 defines it: first its morph targets, blended by weights
-// (the node's, which a channel may animate), then linear blend skinning by up to four joints per vertex. The mesh
+// (the node's, which a channel may animate), then linear blend skinning by up to eight joints per vertex. The mesh
 // belongs to one node (the loader gives such a node a mesh of its own) and stays in that node's space: a skinned
 // vertex goes to the world through the joints and comes back through the inverse of the node's world transform, so
 // that the instance keeps the node's transform and whatever places the model (a scene file's transform) applies
@@ -28,16 +28,20 @@ struct MeshDeformation {
   std::vector<Vec3> positions;
   std::vector<Vec3> normals;   // empty where the mesh has none
   std::vector<Vec4> tangents;  // empty where the mesh has none
-  // Morph targets: per target a position delta for every vertex, target after target; normal deltas likewise,
-  // or none. `weights` are the targets' weights at rest.
+  // Morph targets: per target a position delta for every vertex, target after target; normal and tangent deltas
+  // likewise, or none (tangent deltas move a tangent's direction; its handedness w stays). `weights` are the
+  // targets' weights at rest.
   uint32_t targetCount = 0;
   std::vector<Vec3> positionDeltas;
   std::vector<Vec3> normalDeltas;
+  std::vector<Vec3> tangentDeltas;
   std::vector<float> weights;
-  // Skinning, where skin >= 0: per vertex four indices into the skin's joints and their weights.
+  // Skinning, where skin >= 0: per vertex `influences` (4 or 8: glTF's JOINTS_0, and JOINTS_1 where the mesh has
+  // it) indices into the skin's joints and as many weights, vertex after vertex.
   int32_t skin = -1;  // in SceneAnimation::skins
+  uint32_t influences = 4;
   std::vector<uint32_t> joints;
-  std::vector<Vec4> jointWeights;
+  std::vector<float> jointWeights;
 
   size_t vertexCount() const { return positions.size(); }
 };

@@ -73,8 +73,9 @@ void validateScene(const Scene& scene) {
     if (!finite(m.baseColor) || !finite(m.emission)) fail("a material has non-finite parameters");
     if (!finite(m.absorption) || m.absorption.x < 0.0f || m.absorption.y < 0.0f || m.absorption.z < 0.0f)
       fail("a material has an invalid absorption");
-    for (int32_t t : {m.baseColorTexture, m.metallicRoughnessTexture, m.roughnessTexture, m.metallicTexture,
-                      m.emissionTexture, m.normalTexture, m.opacityTexture, m.mixAmountTexture})
+    for (int32_t t :
+         {m.baseColorTexture, m.metallicRoughnessTexture, m.roughnessTexture, m.metallicTexture, m.emissionTexture,
+          m.normalTexture, m.opacityTexture, m.mixAmountTexture, m.iridescenceTexture, m.iridescenceThicknessTexture})
       if (t != kNoTexture && (t < 0 || size_t(t) >= scene.textures.size())) fail("a material uses a missing texture");
     if (m.type != MaterialType::Mix) continue;
     anyMix = true;

@@ -78,7 +78,17 @@ inline std::vector<BsdfCase> casesAtRoughness(float r) {
   cases.push_back(makeCase("PbrDielectric", PbrBsdf(color, 0.0f, r, 0.5f)));
   cases.push_back(makeCase("PbrHalfMetal", PbrBsdf(color, 0.5f, r, 0.5f)));
   cases.push_back(makeCase("PbrMetal", PbrBsdf(color, 1.0f, r, 0.5f)));
+  // KHR_materials_iridescence's film, strong (index 1.8) and of a thickness whose colours vary with the angle.
+  cases.push_back(makeCase("PbrIridescent", PbrBsdf(color, 0.0f, r, 0.5f, 1.0f, 1.8f, 350.0f)));
+  cases.push_back(makeCase("PbrIridescentHalfMetal", PbrBsdf(color, 0.5f, r, 0.5f, 0.7f, 1.3f, 500.0f)));
   cases.push_back(makeCase("Disney", DisneyBsdf(disneyMaterial(r), 1.5f)));
+  Material iridescent = disneyMaterial(r);
+  iridescent.metallic = 0.4f;
+  iridescent.clearcoat = 0.5f;
+  iridescent.iridescence = 1.0f;
+  iridescent.iridescenceIor = 1.8f;
+  iridescent.iridescenceThickness = 350.0f;
+  cases.push_back(makeCase("DisneyIridescent", DisneyBsdf(iridescent, 1.5f)));
   Material all = disneyMaterial(r);
   all.metallic = 0.3f;
   all.anisotropic = 0.6f;

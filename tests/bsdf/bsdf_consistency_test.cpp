@@ -67,7 +67,7 @@ TEST(BsdfConsistency, EvalPdfIsEvalAndPdf) {
 // The same through Bsdf, which builds the model of each material type once and dispatches to it, in a frame
 // with a tangent and a shading normal apart from the geometric one.
 TEST(BsdfConsistency, BsdfEvalPdfIsEvalAndPdfForEveryMaterialType) {
-  Material materials[4];
+  Material materials[6];
   materials[0].type = MaterialType::Diffuse;
   materials[1].type = MaterialType::BlinnPhong;
   materials[1].specularColor = {0.3f, 0.3f, 0.3f};
@@ -81,6 +81,14 @@ TEST(BsdfConsistency, BsdfEvalPdfIsEvalAndPdfForEveryMaterialType) {
   materials[3].clearcoat = 0.7f;
   materials[3].sheen = 0.5f;
   materials[3].specTrans = 0.3f;
+  // KHR_materials_iridescence's film on either model.
+  materials[4] = materials[2];
+  materials[5] = materials[3];
+  for (Material* iridescent : {&materials[4], &materials[5]}) {
+    iridescent->iridescence = 0.8f;
+    iridescent->iridescenceIor = 1.6f;
+    iridescent->iridescenceThickness = 420.0f;
+  }
   SurfaceInteraction si;
   si.geometricNormal = normalize(Vec3{0.1f, 0.2f, 1.0f});
   si.shadingNormal = normalize(Vec3{0.2f, 0.1f, 1.0f});

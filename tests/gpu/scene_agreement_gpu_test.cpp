@@ -194,6 +194,33 @@ TEST(GpuAbsorbingVolumes, AgreeWithTheCpuBackend) {
   expectBackendsAgree(scene, 121);
 }
 
+// Iridescent films (glTF's KHR_materials_iridescence, kernel/bsdf/thin_film.h): every sphere of the gallery but
+// the transmissive ones gets a film, half of them as the metallic-roughness model, the others kept Disney; the
+// first sphere's film takes its strength (R) and thickness (G) from a texture.
+TEST(GpuIridescentFilms, AgreeWithTheCpuBackend) {
+  Scene scene = makeMaterialGallery();
+  Texture film;
+  film.width = film.height = 2;
+  film.channels = 3;
+  film.bytes = {255, 0, 0, 128, 255, 0, 200, 100, 0, 60, 200, 0};
+  scene.textures.push_back(film);
+  size_t iridescent = 0;
+  for (size_t i = 0; i < scene.materials.size(); ++i) {
+    Material& m = scene.materials[i];
+    if (m.type != MaterialType::Disney || m.specTrans > 0.0f) continue;
+    if (i % 2 == 1) m.type = MaterialType::Pbr;
+    m.iridescence = 1.0f;
+    m.iridescenceIor = i % 3 == 0 ? 1.3f : 1.8f;
+    m.iridescenceThickness = 250.0f + 50.0f * float(i % 5);
+    ++iridescent;
+  }
+  ASSERT_GT(iridescent, 2u);
+  Material& textured = scene.materials[0];
+  textured.iridescenceTexture = textured.iridescenceThicknessTexture = int32_t(scene.textures.size() - 1);
+  textured.iridescenceThicknessMinimum = 100.0f;
+  expectBackendsAgree(scene, 141);
+}
+
 // Khronos sample models for what the kernel does beyond the core model: normal maps steep enough that
 // reflections are kept above the surface (NormalTangentMirrorTest), transmission of every roughness including
 // the index-matched ior 1 row (TransmissionRoughnessTest), and sampler wrap modes per axis

@@ -555,6 +555,71 @@ TEST(GltfLoader, AnisotropyStretchesTheLobeAlongTheTangentAsGltfDoes) {
             std::string::npos);
 }
 
+// KHR_materials_iridescence: factor, film index, thickness range and both textures (with the textures' texCoord
+// and transform, which the material's other textures share), on the metallic-roughness model or on Disney where
+// another extension maps there; defaults where the file gives none; no warning naming the extension.
+TEST(GltfLoader, IridescenceIsReadWithItsTextures) {
+  json g = triangleGltf();
+  std::vector<uint8_t> png = readFileBytes(std::string(CANDELA_SOURCE_DIR) + "/tests/scene/data/checker.png");
+  g["images"] = {{{"uri", "data:image/png;base64," + base64(png)}}};
+  g["textures"] = {{{"source", 0}}, {{"source", 0}, {"sampler", 0}}};
+  g["samplers"] = {{{"wrapS", 33071}}};
+  const json transform = {{"KHR_texture_transform", {{"scale", {2, 2}}}}};
+  json full = {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}, {"extensions", transform}}}}}};
+  full["extensions"]["KHR_materials_iridescence"] = {{"iridescenceFactor", 0.8},
+                                                     {"iridescenceIor", 1.6},
+                                                     {"iridescenceThicknessMinimum", 250},
+                                                     {"iridescenceThicknessMaximum", 650},
+                                                     {"iridescenceTexture", {{"index", 0}, {"extensions", transform}}},
+                                                     {"iridescenceThicknessTexture",
+                                                      {{"index", 1}, {"extensions", transform}}}};
+  json defaults = {{"extensions", {{"KHR_materials_iridescence", {{"iridescenceFactor", 1}}}}}};
+  json onDisney = {{"extensions",
+                    {{"KHR_materials_iridescence", {{"iridescenceFactor", 0.5}, {"iridescenceIor", -3}}},
+                     {"KHR_materials_clearcoat", {{"clearcoatFactor", 1}}}}}};
+  json hostile = {{"extensions",
+                   {{"KHR_materials_iridescence",
+                     {{"iridescenceFactor", 7}, {"iridescenceThicknessMaximum", 1e300}, {"iridescenceTexture", 3}}}}}};
+  g["materials"] = {full, defaults, onDisney, hostile};
+  g["meshes"][0]["primitives"][0]["material"] = 0;
+  g["extensionsUsed"] = {"KHR_materials_iridescence", "KHR_texture_transform", "KHR_materials_clearcoat"};
+  LoadWarnings warnings;
+  const Scene s = load(g, warnings);
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages[0];
+  ASSERT_EQ(s.materials.size(), 4u);
+  const Material& m = s.materials[0];
+  EXPECT_EQ(m.type, MaterialType::Pbr);
+  EXPECT_FLOAT_EQ(m.iridescence, 0.8f);
+  EXPECT_FLOAT_EQ(m.iridescenceIor, 1.6f);
+  EXPECT_FLOAT_EQ(m.iridescenceThicknessMinimum, 250.0f);
+  EXPECT_FLOAT_EQ(m.iridescenceThickness, 650.0f);
+  ASSERT_NE(m.iridescenceTexture, kNoTexture);
+  ASSERT_NE(m.iridescenceThicknessTexture, kNoTexture);
+  // Single channels in linear space: the base colour's image is another texture for them.
+  EXPECT_NE(m.iridescenceTexture, m.baseColorTexture);
+  EXPECT_FALSE(s.textures[size_t(m.iridescenceTexture)].srgb);
+  EXPECT_FALSE(s.textures[size_t(m.iridescenceThicknessTexture)].srgb);
+  EXPECT_EQ(s.textures[size_t(m.iridescenceThicknessTexture)].wrapU, TextureWrap::Clamp);
+  // The shared transform is baked into the uvs: (1, 0) becomes (2, 0).
+  EXPECT_FLOAT_EQ(s.meshes[0].uvs[1].x, 2.0f);
+
+  const Material& d = s.materials[1];
+  EXPECT_FLOAT_EQ(d.iridescence, 1.0f);
+  EXPECT_FLOAT_EQ(d.iridescenceIor, 1.3f);
+  EXPECT_FLOAT_EQ(d.iridescenceThicknessMinimum, 100.0f);
+  EXPECT_FLOAT_EQ(d.iridescenceThickness, 400.0f);
+  EXPECT_EQ(d.iridescenceTexture, kNoTexture);
+  EXPECT_EQ(d.iridescenceThicknessTexture, kNoTexture);
+
+  EXPECT_EQ(s.materials[2].type, MaterialType::Disney);
+  EXPECT_FLOAT_EQ(s.materials[2].iridescence, 0.5f);
+  EXPECT_FLOAT_EQ(s.materials[2].iridescenceIor, 1.0f);  // an index below the outside's is taken as 1
+
+  EXPECT_FLOAT_EQ(s.materials[3].iridescence, 1.0f);
+  EXPECT_FLOAT_EQ(s.materials[3].iridescenceThickness, 1e5f);
+  EXPECT_EQ(s.materials[3].iridescenceTexture, kNoTexture);  // not a textureInfo
+}
+
 TEST(GltfLoader, NonFiniteNormalsDoNotRejectTheFile) {
   json g = triangleGltf();
   std::vector<uint8_t> buffer;

@@ -139,6 +139,41 @@ TEST(GltfSkins, ASceneFilePlacingASkinnedModelTwiceDeformsEachPlacement) {
   }
 }
 
+// A unit quad skinned with eight influences per vertex (JOINTS_0 / WEIGHTS_0 and JOINTS_1 / WEIGHTS_1) to eight
+// joints: nodes 1-4 at the origin and nodes 5-8 at z = 1, 2, 3 and 4, all with identity inverse bind matrices, so
+// a vertex moves by the weighted sum of its joints' heights. Vertex 0 follows joint 0; vertex 1 weighs each joint
+// by 0.1 in the first set and 0.15 in the second (z += 1.5); vertex 2 by twice that, which normalisation over all
+// eight brings back to vertex 1's weights; vertex 3 follows the eighth joint alone (z += 4). "Raise" moves the
+// eighth joint from z = 4 to z = 6 over 1 s.
+GltfFile eightInfluenceQuad() {
+  GltfFile f;
+  const int positions = f.floats({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}, "VEC3");
+  const int indices = f.add(std::vector<uint16_t>{0, 1, 2, 0, 2, 3}, "SCALAR", 5123, 1);
+  const int joints0 = f.add(std::vector<uint8_t>{0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3}, "VEC4", 5121, 4);
+  const int weights0 = f.floats({1, 0, 0, 0, 0.1f, 0.1f, 0.1f, 0.1f, 0.2f, 0.2f, 0.2f, 0.2f, 0, 0, 0, 0}, "VEC4");
+  const int joints1 = f.add(std::vector<uint8_t>{4, 5, 6, 7, 4, 5, 6, 7, 4, 5, 6, 7, 4, 5, 6, 7}, "VEC4", 5121, 4);
+  const int weights1 = f.floats({0, 0, 0, 0, 0.15f, 0.15f, 0.15f, 0.15f, 0.3f, 0.3f, 0.3f, 0.3f, 0, 0, 0, 1}, "VEC4");
+  f.gltf["meshes"] = {{{"primitives",
+                        {{{"attributes",
+                           {{"POSITION", positions},
+                            {"JOINTS_0", joints0},
+                            {"WEIGHTS_0", weights0},
+                            {"JOINTS_1", joints1},
+                            {"WEIGHTS_1", weights1}}},
+                          {"indices", indices}}}}}};
+  f.gltf["skins"] = {{{"joints", {1, 2, 3, 4, 5, 6, 7, 8}}}};
+  f.gltf["nodes"] = {{{"mesh", 0}, {"skin", 0}}};
+  for (int joint = 0; joint < 8; ++joint)
+    f.gltf["nodes"].push_back({{"translation", {0, 0, joint < 4 ? 0 : joint - 3}}});
+  f.gltf["scenes"] = {{{"nodes", {0, 1, 2, 3, 4, 5, 6, 7, 8}}}};
+  const int times = f.floats({0, 1}, "SCALAR");
+  const int heights = f.floats({0, 0, 4, 0, 0, 6}, "VEC3");
+  f.gltf["animations"] = {{{"name", "Raise"},
+                           {"samplers", {{{"input", times}, {"output", heights}}}},
+                           {"channels", {{{"sampler", 0}, {"target", {{"node", 8}, {"path", "translation"}}}}}}}};
+  return f;
+}
+
 TEST(GltfSkins, HostileSkinDataIsOneLineNamingThePlace) {
   auto loadError = [](GltfFile file) {
     TempFolder folder;
@@ -165,6 +200,13 @@ TEST(GltfSkins, HostileSkinDataIsOneLineNamingThePlace) {
         << loadError(file);
   }
   {
+    GltfFile file = eightInfluenceQuad();
+    file.gltf["skins"][0]["joints"] = {1, 2, 3, 4, 5, 6, 7};  // vertex 1 weighs joint 7 in its second set
+    EXPECT_NE(loadError(file).find("meshes[0].primitives[0].attributes.JOINTS_1: vertex 1 names joint 7"),
+              std::string::npos)
+        << loadError(file);
+  }
+  {
     GltfFile file = skinnedQuad();
     file.gltf["skins"][0]["joints"] = {1, 7};
     TempFolder folder;
@@ -174,6 +216,56 @@ TEST(GltfSkins, HostileSkinDataIsOneLineNamingThePlace) {
     ASSERT_FALSE(warnings.messages.empty());
     EXPECT_NE(warnings.messages[0].find("skins[0].joints: node 7 is not in the scene"), std::string::npos);
   }
+}
+
+TEST(GltfSkins, TheFifthToEighthInfluencesCountAndAllEightAreNormalisedTogether) {
+  TempFolder folder;
+  LoadWarnings warnings;
+  Scene scene = loadGltf(eightInfluenceQuad().write(folder), warnings);
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages[0];
+  ASSERT_EQ(scene.animation.deformations.size(), 1u);
+  EXPECT_EQ(scene.animation.deformations[0].influences, 8u);
+  // The rest pose, as loaded.
+  expectNear(worldVertex(scene, 0), {0, 0, 0});
+  expectNear(worldVertex(scene, 1), {1, 0, 1.5f});
+  expectNear(worldVertex(scene, 2), {1, 1, 1.5f});
+  expectNear(worldVertex(scene, 3), {0, 1, 4});
+  // The eighth joint raised by 2: vertex 1 and 2 follow it by their weight 0.15, vertex 3 wholly.
+  AnimationPlayer(scene).pose(scene, 0, 1.0f);
+  expectNear(worldVertex(scene, 0), {0, 0, 0});
+  expectNear(worldVertex(scene, 1), {1, 0, 1.8f});
+  expectNear(worldVertex(scene, 2), {1, 1, 1.8f});
+  expectNear(worldVertex(scene, 3), {0, 1, 6});
+}
+
+TEST(GltfSkins, AMeshWithoutASecondSetKeepsFourInfluences) {
+  TempFolder folder;
+  Scene scene = loadScene(skinnedQuad().write(folder), SceneLoadOptions{});
+  ASSERT_EQ(scene.animation.deformations.size(), 1u);
+  EXPECT_EQ(scene.animation.deformations[0].influences, 4u);
+  EXPECT_EQ(scene.animation.deformations[0].jointWeights.size(), 16u);
+}
+
+TEST(GltfSkins, TheSceneCacheKeepsEightInfluences) {
+  TempFolder folder;
+  const std::string path = eightInfluenceQuad().write(folder);
+  LoadWarnings warnings;
+  const Scene scene = loadGltf(path, warnings);
+  const std::string cache = sceneCacheFile(folder.file("cache"), path);
+  writeSceneCache(cache, path, scene, {});
+  CachedScene read;
+  ASSERT_EQ(readSceneCache(cache, path, read), SceneCacheRead::Hit);
+  Scene posed = read.scene;
+  AnimationPlayer(posed).pose(posed, 0, 1.0f);
+  expectNear(worldVertex(posed, 3), {0, 1, 6});
+  expectNear(worldVertex(posed, 2), {1, 1, 1.8f});
+
+  Scene broken = scene;
+  broken.animation.deformations[0].influences = 4;  // twice the joints and weights it claims
+  writeSceneCache(cache, path, broken, {});
+  std::string problem;
+  EXPECT_EQ(readSceneCache(cache, path, read, &problem), SceneCacheRead::Invalid);
+  EXPECT_EQ(problem, "a mesh deformation has not four or eight joints and weights per vertex");
 }
 
 // A quad (z = 0) with one morph target that lifts vertex 2 by 1 in z and tilts its normal, whose weight "Lift"
@@ -227,6 +319,30 @@ TEST(GltfMorphTargets, StaticNodeWeightsShapeTheMeshWithoutAnimation) {
   EXPECT_TRUE(scene.animation.empty());
   EXPECT_TRUE(scene.animation.deformations.empty());  // applied once, nothing left to animate
   expectNear(worldVertex(scene, 2), {1, 1, -1.5f});
+}
+
+// A morph target's TANGENT deltas turn the tangents' directions and keep their handedness.
+TEST(GltfMorphTargets, TangentDeltasTurnTangentsAndKeepTheirHandedness) {
+  TempFolder folder;
+  GltfFile file = morphedQuad();
+  auto& primitive = file.gltf["meshes"][0]["primitives"][0];
+  primitive["attributes"]["TANGENT"] = file.floats({1, 0, 0, -1, 1, 0, 0, -1, 1, 0, 0, -1, 1, 0, 0, -1}, "VEC4");
+  primitive["targets"][0]["TANGENT"] = file.floats({0, 0, 0, 0, 0, 0, -1, 1, 0, 0, 0, 0}, "VEC3");
+  LoadWarnings warnings;
+  Scene scene = loadGltf(file.write(folder), warnings);
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages[0];
+  ASSERT_EQ(scene.animation.deformations.size(), 1u);
+  ASSERT_EQ(scene.meshes[0].tangents.size(), 4u);
+  const AnimationPlayer player(scene);
+  player.pose(scene, 0, 0.5f);
+  const Vec4 turned = scene.meshes[0].tangents[2];
+  expectNear(Vec3{turned.x, turned.y, turned.z}, {kSqrtHalf, kSqrtHalf, 0});
+  EXPECT_EQ(turned.w, -1.0f);
+  const Vec4 kept = scene.meshes[0].tangents[0];
+  expectNear(Vec3{kept.x, kept.y, kept.z}, {1, 0, 0});
+  player.pose(scene, 0, 1.0f);
+  expectNear(Vec3{scene.meshes[0].tangents[2].x, scene.meshes[0].tangents[2].y, scene.meshes[0].tangents[2].z},
+             {0, 1, 0});
 }
 
 // Morph targets without accessors, or nodes that each deform a copy of one mesh, cost little in the file but a

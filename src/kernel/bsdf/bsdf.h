@@ -29,7 +29,10 @@ class Bsdf {
       case MaterialType::BlinnPhong:
         model_.blinnPhong = BlinnPhongBsdf(m.baseColor, m.specularColor, m.shininess);
         break;
-      case MaterialType::Pbr: model_.pbr = PbrBsdf(m.baseColor, m.metallic, m.roughness, m.specular); break;
+      case MaterialType::Pbr:
+        model_.pbr = PbrBsdf(m.baseColor, m.metallic, m.roughness, m.specular, m.iridescence, m.iridescenceIor,
+                             m.iridescenceThickness);
+        break;
       case MaterialType::Disney: model_.disney = DisneyBsdf(m, eta); break;
       case MaterialType::Mirror: model_.mirror = MirrorBsdf{m.specularColor}; break;
       case MaterialType::Glass: model_.glass = SmoothDielectricBsdf{eta, sqrtColor(m.baseColor)}; break;

@@ -12,7 +12,9 @@ namespace candela {
 //   f = (1 - metallic)(1 - specTrans) diffuse_and_sheen + (1 - T) specular + T glass + clearcoat.
 // The specular lobe's normal-incidence reflectance comes from `specular` (0.08 specular, tinted towards the base
 // hue by specularTint, towards the base colour by metallic); the glass lobe uses `ior` and is tinted by the
-// square root of the base colour per crossing, so a closed object transmits the base colour.
+// square root of the base colour per crossing, so a closed object transmits the base colour. An iridescent film
+// (KHR_materials_iridescence, thin_film.h) changes the specular lobe's Fresnel term only: the extension ignores
+// the interface to a clearcoat above it, and the glass lobe keeps the dielectric's Fresnel.
 struct DisneyBsdf {
   DisneyDiffuse diffuse;
   GgxReflection specular;
@@ -33,6 +35,9 @@ struct DisneyBsdf {
     Vec3 dielectricF0 =
         lerp(clampf(m.specularTint, 0.0f, 1.0f), Vec3{1, 1, 1}, tint) * (0.08f * fmaxf(0.0f, m.specular));
     specular = {lobe, lerp(metallic, dielectricF0, base)};
+    if (m.iridescence > 0.0f)
+      specular.film =
+          ThinFilm::over(m.iridescence, m.iridescenceIor, m.iridescenceThickness, metallic, dielectricF0, base);
     Vec3 sqrtBase{sqrtf(fmaxf(0.0f, base.x)), sqrtf(fmaxf(0.0f, base.y)), sqrtf(fmaxf(0.0f, base.z))};
     glass = {lobe, eta, sqrtBase};
     clearcoat = {0.25f * clampf(m.clearcoat, 0.0f, 1.0f), lerp(clampf(m.clearcoatGloss, 0.0f, 1.0f), 0.1f, 0.001f)};

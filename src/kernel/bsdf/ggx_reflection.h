@@ -3,14 +3,19 @@
 #include "kernel/bsdf/fresnel.h"
 #include "kernel/bsdf/ggx.h"
 #include "kernel/bsdf/half_vector_reflection.h"
+#include "kernel/bsdf/thin_film.h"
 
 namespace candela {
 
 // Microfacet reflection: GGX normals, height-correlated Smith masking-shadowing, Schlick's Fresnel with a
-// coloured normal-incidence reflectance f0. Sampled by visible normals, so f cos / pdf = F G2 / G1(wo) <= 1.
+// coloured normal-incidence reflectance f0, or its mix with an iridescent film's where there is one. Sampled by
+// visible normals, so f cos / pdf = F G2 / G1(wo) <= 1.
 struct GgxReflection {
   GgxDistribution distribution;
   Vec3 f0;
+  ThinFilm film = {};
+
+  CANDELA_FN Vec3 fresnel(float cosTheta) const { return film.fresnel(fresnelSchlick(f0, cosTheta), cosTheta); }
 
   CANDELA_FN Vec3 eval(Vec3 wo, Vec3 wi) const {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return {0, 0, 0};
@@ -18,7 +23,7 @@ struct GgxReflection {
     if (dot(h, h) == 0.0f) return {0, 0, 0};
     h = normalize(h);
     float value = distribution.d(h) * distribution.g2(wo, wi) / (4.0f * wo.z * wi.z);
-    return fresnelSchlick(f0, dot(wi, h)) * value;
+    return fresnel(dot(wi, h)) * value;
   }
   CANDELA_FN float pdf(Vec3 wo, Vec3 wi) const {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
@@ -36,7 +41,7 @@ struct GgxReflection {
     float d = distribution.d(h), lambdaO = distribution.lambda(wo);
     float value = d / ((1.0f + lambdaO + distribution.lambda(wi)) * 4.0f * wo.z * wi.z);
     float pdf = dot(wo, h) > 0.0f ? d / ((1.0f + lambdaO) * 4.0f * wo.z) : 0.0f;
-    return {fresnelSchlick(f0, dot(wi, h)) * value, pdf};
+    return {fresnel(dot(wi, h)) * value, pdf};
   }
   CANDELA_FN BsdfSample sample(Vec3 wo, float /*uChoice*/, Vec2 u) const {
     if (wo.z <= 0.0f) return {};

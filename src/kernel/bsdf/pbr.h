@@ -15,23 +15,37 @@ namespace candela {
 // into and out of the surface (as Shirley et al. 1997 and Ashikhmin-Shirley 2000 do) keeps the albedo below 1
 // and the BRDF reciprocal. The diffuse term is sampled by the cosine, the specular by GGX visible normals,
 // combined as a mixture (see lobe_mixture.h).
+//
+// KHR_materials_iridescence's film (iridescence > 0; thin_film.h) replaces the specular lobe's Fresnel term by its
+// mix with the film's, and F_d by its mix with the brightest channel of the film's reflectance over the dielectric
+// base, as the extension's rgb_mix weights the base by 1 - max(F): the diffuse term never gains from a colour the
+// film reflects less of.
 struct PbrBsdf {
   Vec3 diffuseColor;  // (1 - metallic) baseColor
   float dielectricF0 = 0.04f;
   GgxReflection specular;
 
-  CANDELA_FN PbrBsdf(Vec3 baseColor, float metallic, float roughness, float specularLevel) {
+  CANDELA_FN PbrBsdf(Vec3 baseColor, float metallic, float roughness, float specularLevel, float iridescence = 0.0f,
+                     float iridescenceIor = 1.3f, float iridescenceThickness = 0.0f) {
     metallic = clampf(metallic, 0.0f, 1.0f);
     diffuseColor = baseColor * (1.0f - metallic);
     dielectricF0 = 0.08f * clampf(specularLevel, 0.0f, 1.0f);
-    specular = {GgxDistribution::isotropic(roughness),
-                lerp(metallic, Vec3{dielectricF0, dielectricF0, dielectricF0}, baseColor)};
+    const Vec3 dielectric{dielectricF0, dielectricF0, dielectricF0};
+    specular = {GgxDistribution::isotropic(roughness), lerp(metallic, dielectric, baseColor)};
+    if (iridescence > 0.0f)
+      specular.film =
+          ThinFilm::over(iridescence, iridescenceIor, iridescenceThickness, metallic, dielectric, baseColor);
   }
 
+  // The dielectric base's reflectance F_d at cosTheta, which the diffuse term does not see.
+  CANDELA_FN float dielectricFresnel(float cosTheta) const {
+    const float schlick = fresnelSchlick(dielectricF0, cosTheta);
+    const ThinFilm& film = specular.film;
+    return film.present() ? lerp(film.weight, schlick, maxComponent(film.overDielectric(cosTheta))) : schlick;
+  }
   CANDELA_FN Vec3 evalDiffuse(Vec3 wo, Vec3 wi) const {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return {0, 0, 0};
-    return diffuseColor *
-           ((1.0f - fresnelSchlick(dielectricF0, wo.z)) * (1.0f - fresnelSchlick(dielectricF0, wi.z)) * kInvPi);
+    return diffuseColor * ((1.0f - dielectricFresnel(wo.z)) * (1.0f - dielectricFresnel(wi.z)) * kInvPi);
   }
   CANDELA_FN LobeChoice<2> choice(Vec3 wo) const {
     return LobeChoice<2>::fromEstimates({luminance(diffuseColor) * (1.0f - fresnelSchlick(dielectricF0, wo.z)),

@@ -68,7 +68,8 @@ void checkMaterials(const Scene& scene) {
     if (!finite(m.baseColor) || !finite(m.emission) || !finite(m.specularColor))
       fail("a material has non-finite colours");
     for (float x : {m.shininess, m.metallic, m.roughness, m.anisotropic, m.specular, m.specularTint, m.subsurface,
-                    m.sheen, m.sheenTint, m.clearcoat, m.clearcoatGloss, m.specTrans, m.ior, m.opacity, m.alphaCutoff})
+                    m.sheen, m.sheenTint, m.clearcoat, m.clearcoatGloss, m.specTrans, m.ior, m.opacity, m.alphaCutoff,
+                    m.iridescence, m.iridescenceIor, m.iridescenceThickness, m.iridescenceThicknessMinimum})
       if (!finite(x)) fail("a material has non-finite parameters");
   }
   if (!scene.materialNames.empty() && scene.materialNames.size() != scene.materials.size())

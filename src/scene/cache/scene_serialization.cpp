@@ -61,7 +61,7 @@ constexpr uint64_t kStringBytes = sizeof(uint64_t);
 constexpr uint64_t kClipBytes = 2 * sizeof(uint64_t) + 2 * sizeof(float);
 constexpr uint64_t kChannelBytes = 2 * sizeof(uint32_t) + 2 + 2 * sizeof(uint64_t);
 constexpr uint64_t kSkinBytes = 2 * sizeof(uint64_t);
-constexpr uint64_t kDeformationBytes = 4 * sizeof(uint32_t) + 8 * sizeof(uint64_t);
+constexpr uint64_t kDeformationBytes = 5 * sizeof(uint32_t) + 9 * sizeof(uint64_t);
 
 void writeAnimation(BinaryWriter& out, const SceneAnimation& a) {
   out.array(a.nodes);
@@ -83,8 +83,10 @@ void writeAnimation(BinaryWriter& out, const SceneAnimation& a) {
     out.value(d.targetCount);
     out.array(d.positionDeltas);
     out.array(d.normalDeltas);
+    out.array(d.tangentDeltas);
     out.array(d.weights);
     out.value(d.skin);
+    out.value(d.influences);
     out.array(d.joints);
     out.array(d.jointWeights);
   }
@@ -125,8 +127,10 @@ void readAnimation(BinaryReader& in, SceneAnimation& a) {
     in.value(d.targetCount);
     in.array(d.positionDeltas);
     in.array(d.normalDeltas);
+    in.array(d.tangentDeltas);
     in.array(d.weights);
     in.value(d.skin);
+    in.value(d.influences);
     in.array(d.joints);
     in.array(d.jointWeights);
   }

@@ -47,24 +47,25 @@ size_t vertexCount(const tinygltf::Model& model, const GltfAccessorReader& acces
 }  // namespace
 
 void readGltfMorphTargets(const tinygltf::Model& model, const GltfAccessorReader& accessors, int mesh, int node,
-                          const std::vector<GltfVertexOrigin>& origins, const std::string& file, LoadWarnings& warnings,
+                          const std::vector<GltfVertexOrigin>& origins, const std::string& file,
                           MeshDeformation& deformation) {
   const tinygltf::Mesh& source = model.meshes[size_t(mesh)];
   const size_t targets = source.primitives.empty() ? 0 : source.primitives[0].targets.size();
-  bool tangentDeltas = false;
+  bool anyNormalDeltas = false, anyTangentDeltas = false;
   for (size_t p = 0; p < source.primitives.size(); ++p) {
     if (source.primitives[p].targets.size() != targets)
       failLoad(file, primitiveWhere(mesh, p) + ".targets: " + std::to_string(source.primitives[p].targets.size()) +
                          " morph targets, but the mesh's first primitive has " + std::to_string(targets));
-    for (const auto& target : source.primitives[p].targets) tangentDeltas |= target.count("TANGENT") > 0;
+    for (const auto& target : source.primitives[p].targets) {
+      anyNormalDeltas |= target.count("NORMAL") > 0;
+      anyTangentDeltas |= target.count("TANGENT") > 0;
+    }
   }
   const size_t n = origins.size();
   deformation.targetCount = uint32_t(targets);
   deformation.positionDeltas.assign(targets * n, Vec3{0, 0, 0});
-  bool anyNormalDeltas = false;
-  for (const tinygltf::Primitive& p : source.primitives)
-    for (const auto& target : p.targets) anyNormalDeltas |= target.count("NORMAL") > 0;
   if (anyNormalDeltas && !deformation.normals.empty()) deformation.normalDeltas.assign(targets * n, Vec3{0, 0, 0});
+  if (anyTangentDeltas && !deformation.tangents.empty()) deformation.tangentDeltas.assign(targets * n, Vec3{0, 0, 0});
   for (size_t t = 0; t < targets; ++t) {
     auto deltas = [&](const char* name) {
       return perPrimitive<Vec3>([&, name](uint32_t primitive) {
@@ -82,14 +83,14 @@ void readGltfMorphTargets(const tinygltf::Model& model, const GltfAccessorReader
     };
     auto positions = deltas("POSITION");
     auto normals = deltas("NORMAL");
+    auto tangents = deltas("TANGENT");
     for (size_t v = 0; v < n; ++v) {
       const GltfVertexOrigin o = origins[v];
       deformation.positionDeltas[t * n + v] = positions.of(o.primitive)[o.vertex];
       if (!deformation.normalDeltas.empty()) deformation.normalDeltas[t * n + v] = normals.of(o.primitive)[o.vertex];
+      if (!deformation.tangentDeltas.empty()) deformation.tangentDeltas[t * n + v] = tangents.of(o.primitive)[o.vertex];
     }
   }
-  if (tangentDeltas)
-    warnings.add(file, "meshes[" + std::to_string(mesh) + "]: the TANGENT deltas of morph targets are ignored");
   const std::vector<double>& nodeWeights = model.nodes[size_t(node)].weights;
   const std::vector<double>& weights = nodeWeights.size() == targets ? nodeWeights : source.weights;
   deformation.weights.assign(targets, 0.0f);
@@ -102,63 +103,83 @@ bool readGltfSkinWeights(const tinygltf::Model& model, const GltfAccessorReader&
                          MeshDeformation& deformation) {
   const tinygltf::Mesh& source = model.meshes[size_t(mesh)];
   const size_t jointCount = model.skins[size_t(skin)].joints.size();
-  bool moreInfluences = false;
+  auto hasSet = [](const std::map<std::string, int>& attributes, int set) {
+    const std::string suffix = std::to_string(set);
+    return attributeOf(attributes, ("JOINTS_" + suffix).c_str()) >= 0 &&
+           attributeOf(attributes, ("WEIGHTS_" + suffix).c_str()) >= 0;
+  };
+  bool secondSet = false, moreSets = false;
   for (size_t p = 0; p < source.primitives.size(); ++p) {
     const auto& attributes = source.primitives[p].attributes;
-    if (attributeOf(attributes, "JOINTS_0") < 0 || attributeOf(attributes, "WEIGHTS_0") < 0) {
+    if (!hasSet(attributes, 0)) {
       warnings.add(file,
                    primitiveWhere(mesh, p) + " lacks JOINTS_0 or WEIGHTS_0; the skinned mesh is left in its bind pose");
       return false;
     }
-    moreInfluences |= attributeOf(attributes, "JOINTS_1") >= 0;
+    secondSet |= hasSet(attributes, 1);
+    moreSets |= attributeOf(attributes, "JOINTS_2") >= 0;
   }
-  auto read = [&](const char* name) {
+  // One set of four influences per vertex, or two where any primitive has JOINTS_1 and WEIGHTS_1 (the others' second
+  // set is then unused).
+  const uint32_t sets = secondSet ? 2 : 1;
+  auto read = [&](const std::string& name) {
     return perPrimitive<Vec4>([&, name](uint32_t primitive) {
-      const std::string where = primitiveWhere(mesh, primitive) + ".attributes." + name;
-      std::vector<Vec4> values = accessors.readVec4(attributeOf(source.primitives[primitive].attributes, name), where);
       const size_t count = vertexCount(model, accessors, mesh, primitive);
+      const int accessor = attributeOf(source.primitives[primitive].attributes, name.c_str());
+      if (accessor < 0) return std::vector<Vec4>(count, Vec4{0, 0, 0, 0});
+      const std::string where = primitiveWhere(mesh, primitive) + ".attributes." + name;
+      std::vector<Vec4> values = accessors.readVec4(accessor, where);
       if (values.size() != count)
         failLoad(file, where + ": " + std::to_string(values.size()) + " elements for " + std::to_string(count) +
                            " positions");
       return values;
     });
   };
-  auto joints = read("JOINTS_0");
-  auto weights = read("WEIGHTS_0");
-  const size_t n = origins.size();
-  deformation.joints.resize(4 * n);
-  deformation.jointWeights.resize(n);
+  auto joints0 = read("JOINTS_0"), weights0 = read("WEIGHTS_0");
+  auto joints1 = read("JOINTS_1"), weights1 = read("WEIGHTS_1");
+  const size_t n = origins.size(), influences = 4 * sets;
+  deformation.influences = uint32_t(influences);
+  deformation.joints.resize(influences * n);
+  deformation.jointWeights.resize(influences * n);
   for (size_t v = 0; v < n; ++v) {
     const GltfVertexOrigin o = origins[v];
-    const Vec4 j = joints.of(o.primitive)[o.vertex];
-    const float js[4] = {j.x, j.y, j.z, j.w};
-    Vec4 w = weights.of(o.primitive)[o.vertex];
-    const float ws[4] = {w.x, w.y, w.z, w.w};
+    float js[8], ws[8];
+    for (uint32_t set = 0; set < sets; ++set) {
+      const bool secondOfPrimitive = set == 1 && hasSet(source.primitives[o.primitive].attributes, 1);
+      const Vec4 j = set == 0            ? joints0.of(o.primitive)[o.vertex]
+                     : secondOfPrimitive ? joints1.of(o.primitive)[o.vertex]
+                                         : Vec4{0, 0, 0, 0};
+      const Vec4 w = set == 0            ? weights0.of(o.primitive)[o.vertex]
+                     : secondOfPrimitive ? weights1.of(o.primitive)[o.vertex]
+                                         : Vec4{0, 0, 0, 0};
+      const float jv[4] = {j.x, j.y, j.z, j.w}, wv[4] = {w.x, w.y, w.z, w.w};
+      for (int k = 0; k < 4; ++k) {
+        js[4 * set + k] = jv[k];
+        ws[4 * set + k] = wv[k];
+      }
+    }
     float sum = 0.0f;
-    for (int k = 0; k < 4; ++k) {
+    auto used = [&](size_t k) {
+      return js[k] >= 0.0f && js[k] < float(jointCount) && std::isfinite(ws[k]) && ws[k] > 0.0f;
+    };
+    for (size_t k = 0; k < influences; ++k) {
       // An unused slot may name any joint; only those with weight must exist.
       if (!(js[k] >= 0.0f && js[k] < float(jointCount)) && ws[k] != 0.0f)
-        failLoad(file, primitiveWhere(mesh, o.primitive) + ".attributes.JOINTS_0: vertex " + std::to_string(o.vertex) +
-                           " names joint " + std::to_string(js[k]) + " of a skin with " + std::to_string(jointCount) +
-                           " joints");
-      const bool used = js[k] >= 0.0f && js[k] < float(jointCount) && std::isfinite(ws[k]) && ws[k] > 0.0f;
-      deformation.joints[4 * v + size_t(k)] = used ? uint32_t(js[k]) : 0u;
-      sum += used ? ws[k] : 0.0f;
+        failLoad(file, primitiveWhere(mesh, o.primitive) + ".attributes.JOINTS_" + std::to_string(k / 4) + ": vertex " +
+                           std::to_string(o.vertex) + " names joint " + std::to_string(js[k]) + " of a skin with " +
+                           std::to_string(jointCount) + " joints");
+      deformation.joints[influences * v + k] = used(k) ? uint32_t(js[k]) : 0u;
+      sum += used(k) ? ws[k] : 0.0f;
     }
-    // glTF's weights sum to one; others are normalised, and a vertex without weight follows the first joint.
-    if (!(sum > 0.0f) || !std::isfinite(sum)) {
-      deformation.jointWeights[v] = {1, 0, 0, 0};
-      continue;
-    }
-    for (int k = 0; k < 4; ++k) {
-      const bool used = js[k] >= 0.0f && js[k] < float(jointCount) && std::isfinite(ws[k]) && ws[k] > 0.0f;
-      (k == 0 ? w.x : k == 1 ? w.y : k == 2 ? w.z : w.w) = used ? ws[k] / sum : 0.0f;
-    }
-    deformation.jointWeights[v] = w;
+    // glTF's weights sum to one over all the vertex's influences; others are normalised, and a vertex without
+    // weight follows the first joint.
+    const bool weightless = !(sum > 0.0f) || !std::isfinite(sum);
+    for (size_t k = 0; k < influences; ++k)
+      deformation.jointWeights[influences * v + k] = weightless ? (k == 0 ? 1.0f : 0.0f) : used(k) ? ws[k] / sum : 0.0f;
   }
-  if (moreInfluences)
+  if (moreSets)
     warnings.add(file, "meshes[" + std::to_string(mesh) +
-                           "]: joints beyond the first four per vertex (JOINTS_1) are ignored");
+                           "]: joints beyond the first eight per vertex (JOINTS_2 and later) are ignored");
   return true;
 }
 

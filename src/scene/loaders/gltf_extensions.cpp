@@ -14,12 +14,13 @@ namespace candela {
 namespace {
 
 // Read fully or in part; where in part, the loader warns about what it leaves out.
-constexpr std::array<std::string_view, 14> kSupported = {"EXT_mesh_gpu_instancing",
+constexpr std::array<std::string_view, 15> kSupported = {"EXT_mesh_gpu_instancing",
                                                          "KHR_lights_punctual",
                                                          "KHR_materials_anisotropy",
                                                          "KHR_materials_clearcoat",
                                                          "KHR_materials_emissive_strength",
                                                          "KHR_materials_ior",
+                                                         "KHR_materials_iridescence",
                                                          "KHR_materials_pbrSpecularGlossiness",
                                                          "KHR_materials_sheen",
                                                          "KHR_materials_specular",

@@ -459,7 +459,7 @@ class GltfSceneBuilder {
     d.positions = mesh.positions;
     d.normals = mesh.normals;
     d.tangents = mesh.tangents;
-    readGltfMorphTargets(model_, accessors_, node.mesh, index, origins, file_, warnings_, d);
+    readGltfMorphTargets(model_, accessors_, node.mesh, index, origins, file_, d);
     if (node.skin >= 0 && size_t(node.skin) < model_.skins.size() &&
         readGltfSkinWeights(model_, accessors_, node.mesh, node.skin, origins, file_, warnings_, d)) {
       d.skin = node.skin;  // the file's skin until resolveSkins

@@ -122,6 +122,33 @@ class TextureRefs {
   std::vector<int> texCoords_;
 };
 
+// The texture an extension's textureInfo `key` names (with its texCoord and KHR_texture_transform), or
+// kNoTexture where it names none.
+int32_t extensionTexture(const tinygltf::Value& e, const char* key, bool srgb, TextureRefs& refs) {
+  if (!hasTexture(e, key)) return kNoTexture;
+  const tinygltf::Value& info = e.Get(key);
+  if (!info.Has("index") || !info.Get("index").IsInt()) return kNoTexture;
+  tinygltf::ExtensionMap extensions;
+  if (info.Has("extensions") && info.Get("extensions").IsObject())
+    for (const std::string& name : info.Get("extensions").Keys()) extensions[name] = info.Get("extensions").Get(name);
+  return refs.use(info.Get("index").GetNumberAsInt(), int(std::clamp(number(info, "texCoord", 0), 0.0, 255.0)),
+                  extensions, srgb);
+}
+
+// KHR_materials_iridescence on `m`: a thin film over the specular lobe of either model (kernel/bsdf/thin_film.h).
+void readIridescence(const tinygltf::Value& e, Material& m, TextureRefs& refs) {
+  m.iridescence = std::clamp(finiteOr(number(e, "iridescenceFactor", 0), 0), 0.0f, 1.0f);
+  m.iridescenceIor = std::max(finiteOr(number(e, "iridescenceIor", 1.3), 1.3f), 1.0f);
+  // Thicknesses beyond 1e5 nm interfere at no visible wavelength: the film then reflects as its incoherent sum.
+  auto thickness = [&](const char* key, float fallback) {
+    return std::clamp(finiteOr(number(e, key, fallback), fallback), 0.0f, 1e5f);
+  };
+  m.iridescenceThicknessMinimum = thickness("iridescenceThicknessMinimum", 100.0f);
+  m.iridescenceThickness = thickness("iridescenceThicknessMaximum", 400.0f);
+  m.iridescenceTexture = extensionTexture(e, "iridescenceTexture", false, refs);
+  m.iridescenceThicknessTexture = extensionTexture(e, "iridescenceThicknessTexture", false, refs);
+}
+
 // KHR_materials_pbrSpecularGlossiness on `m`, which holds the core model's reading of the material.
 void convertSpecularGlossiness(const tinygltf::Value& e, Material& m, TextureRefs& refs,
                                const GltfTextureMean& textureMean) {
@@ -277,6 +304,7 @@ GltfMaterial materialFromGltf(const tinygltf::Model& model, int index, const std
     if (finiteOr(number(*e, "anisotropyRotation", 0), 0) != 0.0f)
       refs.warn("KHR_materials_anisotropy.anisotropyRotation is ignored: the lobe is stretched along the tangent");
   }
+  if (const tinygltf::Value* e = extension(g.extensions, "KHR_materials_iridescence")) readIridescence(*e, m, refs);
   if (extension(g.extensions, "KHR_materials_unlit")) {
     // Unlit: the base colour is what the camera sees, whatever the lighting. Rendered as a black surface that
     // emits its base colour (texture included), so it also lights its surroundings a little.
@@ -285,6 +313,8 @@ GltfMaterial materialFromGltf(const tinygltf::Model& model, int index, const std
     m.emissionTexture = m.baseColorTexture;
     m.baseColor = {0, 0, 0};
     m.metallicRoughnessTexture = m.normalTexture = kNoTexture;
+    m.iridescence = 0.0f;
+    m.iridescenceTexture = m.iridescenceThicknessTexture = kNoTexture;
   }
   out.uvTransform = refs.commonTransform();
   out.texCoord = refs.commonTexCoord();

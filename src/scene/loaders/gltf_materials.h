@@ -38,11 +38,12 @@ using GltfTextureMean = std::function<std::optional<Vec4>(int index, bool srgb)>
 //   with KHR_materials_transmission, _ior, _clearcoat, _sheen, _specular or _anisotropy -> Disney
 // (anisotropy: the strength stretches the lobe along the tangent as glTF's does, up to Disney's widest stretch;
 // its rotation and texture are ignored with a warning)
+// KHR_materials_iridescence puts a thin film over the specular lobe of either model, with its textures.
 // emissiveFactor times KHR_materials_emissive_strength is the emitted radiance; alphaMode, alphaCutoff and
 // doubleSided are kept. The base colour, metallic-roughness, normal and emissive textures are used; occlusion
-// maps are left out on purpose (a path tracer computes occlusion), and extension textures (transmission,
-// clearcoat, sheen, specular) have no slot: each of those gives a warning. A texture transform is returned for
-// baking when all textures of the material share it, and ignored with a warning otherwise; likewise the
+// maps are left out on purpose (a path tracer computes occlusion), and the other extension textures
+// (transmission, clearcoat, sheen, specular) have no slot: each of those gives a warning. A texture transform is
+// returned for baking when all textures of the material share it, and ignored with a warning otherwise; likewise the
 // TEXCOORD set. KHR_materials_unlit becomes a black surface emitting the base colour.
 // KHR_materials_pbrSpecularGlossiness becomes Pbr (gltf_specular_glossiness.h): the diffuse texture is the base
 // colour texture, scaled so that its mean converts as the factors do; the specular-glossiness texture cannot be

@@ -218,8 +218,9 @@ void appendScene(Scene& scene, Scene&& part, const Affine3x4& transform, const s
   part.materialNames.resize(part.materials.size());
   for (size_t i = 0; i < part.materials.size(); ++i) {
     Material m = part.materials[i];
-    for (int32_t* t : {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.roughnessTexture, &m.metallicTexture,
-                       &m.emissionTexture, &m.normalTexture, &m.opacityTexture})
+    for (int32_t* t :
+         {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.roughnessTexture, &m.metallicTexture, &m.emissionTexture,
+          &m.normalTexture, &m.opacityTexture, &m.iridescenceTexture, &m.iridescenceThicknessTexture})
       // A part loaded with SharedModelAssets has no textures of its own: its ids point into the shared table.
       if (*t != kNoTexture && !part.textures.empty()) *t = textureId[size_t(*t)];
     scene.materials.push_back(m);

@@ -101,7 +101,8 @@ void TextureTable::finish(Scene& scene, size_t firstMaterial, LoadWarnings& warn
   for (size_t m = firstMaterial; m < scene.materials.size(); ++m) {
     Material& mat = scene.materials[m];
     for (int32_t* t : {&mat.baseColorTexture, &mat.metallicRoughnessTexture, &mat.roughnessTexture,
-                       &mat.metallicTexture, &mat.emissionTexture, &mat.normalTexture, &mat.opacityTexture})
+                       &mat.metallicTexture, &mat.emissionTexture, &mat.normalTexture, &mat.opacityTexture,
+                       &mat.iridescenceTexture, &mat.iridescenceThicknessTexture})
       remap(*t);
   }
   requests_.clear();
