@@ -7,31 +7,16 @@ set -uo pipefail
 candela=$(realpath "${1:-build/src/candela}")
 work=$(mktemp -d)
 tiny=(--spp 1 --width 16 --height 16)
-failures=0
+source "$(dirname "$0")/checks_common.sh"
 
-# check <name> <expected status> <pattern> <command...>
-check() {
-  local name=$1 expected=$2 pattern=$3
-  shift 3
-  local output status
-  output=$("$@" 2>&1)
-  status=$?
-  if [ "$status" -eq "$expected" ] && grep -Eq -- "$pattern" <<<"$output"; then
-    printf 'PASS %s: %s\n' "$name" "$(grep -E -- "$pattern" <<<"$output" | head -1)"
-  else
-    printf 'FAIL %s: status %s (expected %s), output:\n%s\n' "$name" "$status" "$expected" "$output"
-    failures=$((failures + 1))
-  fi
-}
-
-check startup_line 0 "^optix: .+ driver [0-9.]+ \(CUDA [0-9.]+\), OptiX ABI [0-9]+ .*RT cores: " \
+expect startup_line 0 "^optix: .+ driver [0-9.]+ \(CUDA [0-9.]+\), OptiX ABI [0-9]+ .*RT cores: " \
   "$candela" render --backend optix "${tiny[@]}" -o "$work/a.png"
-check auto_picks_optix 0 "^backend: optix \(auto: found " "$candela" render "${tiny[@]}" -o "$work/b.png"
-check no_cuda_device 1 "^candela: no CUDA device found" \
+expect auto_picks_optix 0 "^backend: optix \(auto: found " "$candela" render "${tiny[@]}" -o "$work/b.png"
+expect no_cuda_device 1 "^candela: no CUDA device found" \
   env CUDA_VISIBLE_DEVICES= "$candela" render --backend optix "${tiny[@]}" -o "$work/c.png"
-check auto_without_device_is_cpu 0 "^backend: cpu \(auto: no usable GPU: no CUDA device found" \
+expect auto_without_device_is_cpu 0 "^backend: cpu \(auto: no usable GPU: no CUDA device found" \
   env CUDA_VISIBLE_DEVICES= "$candela" render "${tiny[@]}" -o "$work/d.png"
-check denoiser_without_weights_continues 0 "candela: .*(OptiX error 7990).*kept without denoising|^$work/e.png" \
+expect denoiser_without_weights_continues 0 "candela: .*(OptiX error 7990).*kept without denoising|^$work/e.png" \
   "$candela" render --backend optix --denoise optix "${tiny[@]}" -o "$work/e.png"
 
 # libnvoptix missing: /dev/null mounted over the library, in a mount namespace of this check alone.
@@ -39,7 +24,7 @@ library=$(ldconfig -p | awk '/libnvoptix\.so\.1 /{print $NF; exit}')
 [ -n "$library" ] || library=$(find / -xdev -name 'libnvoptix.so.1' 2>/dev/null | head -1)
 if [ -n "$library" ] && unshare -m true 2>/dev/null; then
   hide="mount --bind /dev/null '$(realpath "$library")'"
-  check libnvoptix_missing 1 "^candela: the NVIDIA driver's OptiX library libnvoptix.so.1 was not found \(OptiX error 7804\)" \
+  expect libnvoptix_missing 1 "^candela: the NVIDIA driver's OptiX library libnvoptix.so.1 was not found \(OptiX error 7804\)" \
     unshare -m sh -c "$hide && exec '$candela' render --backend optix ${tiny[*]} -o '$work/f.png'"
 else
   echo "SKIP libnvoptix_missing: no libnvoptix.so.1 found or no mount namespaces here"
@@ -56,7 +41,7 @@ time.sleep(300)
 PY
   hog=$!
   for _ in $(seq 120); do [ -e "$work/hog_ready" ] && break; sleep 0.5; done
-  check out_of_memory 1 "^candela: out of device memory: asked for 3.00 GiB for the film's radiance sums" \
+  expect out_of_memory 1 "^candela: out of device memory: asked for 3.00 GiB for the film's radiance sums" \
     "$candela" render --backend optix --spp 1 --width 16384 --height 16384 -o "$work/g.exr"
   kill "$hog"
   wait "$hog" 2>/dev/null

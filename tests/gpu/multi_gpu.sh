@@ -18,26 +18,7 @@ candela=$(realpath "$1") compare=$(realpath "$2") out=$3
 devices=${DEVICES:-0,0}
 first=${devices%%,*}
 mkdir -p "$out"
-failures=0
-
-# check <name> <status> <what it saw>
-check() {
-  if [ "$2" -eq 0 ]; then echo "PASS $1: $3"; else echo "FAIL $1: $3"; failures=$((failures + 1)); fi
-}
-
-# expect <name> <status> <pattern> <command...>: the command's status and a line of its output.
-expect() {
-  local name=$1 expected=$2 pattern=$3
-  shift 3
-  local output status
-  output=$("$@" 2>&1)
-  status=$?
-  if [ "$status" -eq "$expected" ] && grep -Eq -- "$pattern" <<<"$output"; then
-    check "$name" 0 "$(grep -E -- "$pattern" <<<"$output" | head -1)"
-  else
-    check "$name" 1 "status $status (expected $expected): $output"
-  fi
-}
+source "$(dirname "$0")/checks_common.sh"
 
 args=(cornell-box --backend optix --width 320 --height 240 --spp 48 --seed 3 --aov albedo,normal,depth)
 "$candela" render "${args[@]}" --devices "$first" --checkpoint "$out/one.exr" -o "$out/one-image.exr" \

@@ -46,6 +46,19 @@ void start(Backend& backend, const Scene& scene, const RenderSettings& s, bool a
   backend.setCamera(scene.camera.toCamera(float(s.width) / float(s.height)));
 }
 
+// The group and one device, created in that order and started on the same scene and settings.
+struct GroupAndOne {
+  std::unique_ptr<MultiGpuBackend> group;
+  std::unique_ptr<OptixBackend> one;
+};
+
+GroupAndOne startGroupAndOne(const Scene& scene, const RenderSettings& s, bool aovs = false) {
+  GroupAndOne backends{makeGroup(), makeOne()};
+  start(*backends.group, scene, s, aovs);
+  start(*backends.one, scene, s, aovs);
+  return backends;
+}
+
 // Equal counts; sums within kRelative of the larger magnitude (or of the pixel's sample count, for sums such as
 // the normals' that can cancel to near zero).
 template <class T>
@@ -93,10 +106,7 @@ void expectFilmsDiffer(const FilmSums& film, const FilmSums& other) {
 void expectProgressiveRenderEqualsOneDevice(bool aovs) {
   const Scene scene = makeCornellBox();
   const RenderSettings s = settings(96, 64, 11);
-  auto group = makeGroup();
-  auto one = makeOne();
-  start(*group, scene, s, aovs);
-  start(*one, scene, s, aovs);
+  auto [group, one] = startGroupAndOne(scene, s, aovs);
   FrameStats groupStats, oneStats;
   for (int call = 0; call < 3; ++call) {
     const uint32_t samples = 8 + uint32_t(call);  // uneven counts: the split moves the later devices' first index
@@ -125,10 +135,7 @@ TEST(MultiGpu, ProgressiveRenderWithAovsEqualsOneDeviceInEverySum) { expectProgr
 TEST(MultiGpu, InteractiveFramesSplitRowsFollowTheTimesAndEqualOneDevice) {
   const Scene scene = makeCornellBox();
   const RenderSettings s = settings(32, 1080, 12);
-  auto group = makeGroup();
-  auto one = makeOne();
-  start(*group, scene, s);
-  start(*one, scene, s);
+  auto [group, one] = startGroupAndOne(scene, s);
   std::set<std::vector<uint32_t>> splits;
   for (int frame = 0; frame < 24; ++frame) {
     group->render(1);
@@ -157,10 +164,7 @@ TEST(MultiGpu, InteractiveFramesSplitRowsFollowTheTimesAndEqualOneDevice) {
 TEST(MultiGpu, DeviceImageIsTheCombinedImage) {
   const Scene scene = makeCornellBox();
   const RenderSettings s = settings(64, 48, 13);
-  auto group = makeGroup();
-  auto one = makeOne();
-  start(*group, scene, s);
-  start(*one, scene, s);
+  auto [group, one] = startGroupAndOne(scene, s);
   for (int frame = 0; frame < 6; ++frame) {
     group->render(1);
     one->render(1);

@@ -31,12 +31,7 @@ if [ -z "${DISPLAY:-}" ]; then
 fi
 mkdir -p "$out"
 common=(cornell-box --backend optix --width "$width" --height "$height")
-failures=0
-
-# check <name> <status> <what it saw>
-check() {
-  if [ "$2" -eq 0 ]; then echo "PASS $1: $3"; else echo "FAIL $1: $3"; failures=$((failures + 1)); fi
-}
+source "$(dirname "$0")/checks_common.sh"
 
 # view <name> [options]: one viewer run; its log is <name>.log.
 view() {

@@ -174,17 +174,19 @@ GltfFile eightInfluenceQuad() {
   return f;
 }
 
+// The line loadGltf fails `file` with, or "(loaded)".
+std::string loadError(GltfFile file) {
+  TempFolder folder;
+  LoadWarnings warnings;
+  try {
+    loadGltf(file.write(folder), warnings);
+  } catch (const LoadError& e) {
+    return e.what();
+  }
+  return "(loaded)";
+}
+
 TEST(GltfSkins, HostileSkinDataIsOneLineNamingThePlace) {
-  auto loadError = [](GltfFile file) {
-    TempFolder folder;
-    LoadWarnings warnings;
-    try {
-      loadGltf(file.write(folder), warnings);
-    } catch (const LoadError& e) {
-      return std::string(e.what());
-    }
-    return std::string("(loaded)");
-  };
   {
     GltfFile file = skinnedQuad();
     file.gltf["skins"][0]["joints"] = {1};  // vertex 2 names joint 1 of a skin with one
@@ -348,16 +350,6 @@ TEST(GltfMorphTargets, TangentDeltasTurnTangentsAndKeepTheirHandedness) {
 // Morph targets without accessors, or nodes that each deform a copy of one mesh, cost little in the file but a
 // vertex each here: past 2^24 such vertices the load stops with one line.
 TEST(GltfMorphTargets, TooManyDeformedVerticesAreRefusedWithOneLine) {
-  auto loadError = [](GltfFile file) {
-    TempFolder folder;
-    LoadWarnings warnings;
-    try {
-      loadGltf(file.write(folder), warnings);
-    } catch (const LoadError& e) {
-      return std::string(e.what());
-    }
-    return std::string("(loaded)");
-  };
   auto bigMesh = [](json targets) {
     GltfFile f;
     const int positions = f.floats(std::vector<float>(3 * 16384, 0.0f), "VEC3");

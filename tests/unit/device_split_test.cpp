@@ -54,17 +54,24 @@ void expectCovers(const std::vector<DeviceShare>& shares, uint32_t samplesPerPix
   for (int c : covered) ASSERT_EQ(c, 1);
 }
 
+// planShares(samplesPerPixel, height, weights) gives `expected`, share for share, and covers the call.
+void expectPlan(uint32_t samplesPerPixel, uint32_t height, const std::vector<double>& weights,
+                const std::vector<DeviceShare>& expected) {
+  const std::vector<DeviceShare> shares = planShares(samplesPerPixel, height, weights);
+  ASSERT_EQ(shares.size(), expected.size());
+  for (size_t d = 0; d < shares.size(); ++d) {
+    EXPECT_EQ(shares[d].firstRow, expected[d].firstRow) << "device " << d;
+    EXPECT_EQ(shares[d].rows, expected[d].rows) << "device " << d;
+    EXPECT_EQ(shares[d].firstSample, expected[d].firstSample) << "device " << d;
+    EXPECT_EQ(shares[d].samples, expected[d].samples) << "device " << d;
+  }
+  expectCovers(shares, samplesPerPixel, height);
+}
+
 TEST(PlanShares, ACallOfAtLeastOneSamplePerDeviceSplitsTheSampleIndices) {
-  const std::vector<DeviceShare> shares = planShares(16, 720, {0.25, 0.75});
-  ASSERT_EQ(shares.size(), 2u);
-  EXPECT_EQ(shares[0].firstRow, 0u);
-  EXPECT_EQ(shares[0].rows, 720u);
-  EXPECT_EQ(shares[1].rows, 720u);
-  EXPECT_EQ(shares[0].firstSample, 0u);
-  EXPECT_EQ(shares[0].samples, 4u);
-  EXPECT_EQ(shares[1].firstSample, 4u);
-  EXPECT_EQ(shares[1].samples, 12u);
-  expectCovers(shares, 16, 720);
+  expectPlan(16, 720, {0.25, 0.75},
+             {{.firstRow = 0, .rows = 720, .firstSample = 0, .samples = 4},
+              {.firstRow = 0, .rows = 720, .firstSample = 4, .samples = 12}});
   // Two samples on two devices: one each, whatever the weights.
   const std::vector<DeviceShare> two = planShares(2, 8, {0.99, 0.01});
   EXPECT_EQ(two[0].samples, 1u);
@@ -72,15 +79,9 @@ TEST(PlanShares, ACallOfAtLeastOneSamplePerDeviceSplitsTheSampleIndices) {
 }
 
 TEST(PlanShares, AFrameOfFewerSamplesThanDevicesSplitsTheRowsIntoBands) {
-  const std::vector<DeviceShare> shares = planShares(1, 1080, {0.5, 0.5});
-  ASSERT_EQ(shares.size(), 2u);
-  EXPECT_EQ(shares[0].firstRow, 0u);
-  EXPECT_EQ(shares[0].rows, 540u);
-  EXPECT_EQ(shares[1].firstRow, 540u);
-  EXPECT_EQ(shares[1].rows, 540u);
-  EXPECT_EQ(shares[0].samples, 1u);
-  EXPECT_EQ(shares[1].firstSample, 0u);
-  expectCovers(shares, 1, 1080);
+  expectPlan(1, 1080, {0.5, 0.5},
+             {{.firstRow = 0, .rows = 540, .firstSample = 0, .samples = 1},
+              {.firstRow = 540, .rows = 540, .firstSample = 0, .samples = 1}});
   expectCovers(planShares(3, 97, {0.1, 0.2, 0.3, 0.4}), 3, 97);
 }
 
