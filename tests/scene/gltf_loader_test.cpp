@@ -172,6 +172,30 @@ TEST(GltfLoader, CameraLightsAndMaterials) {
   EXPECT_FLOAT_EQ(s.punctualLights[0].intensity.y, 1.0f);  // glTF's default colour and intensity
 }
 
+// An orthographic camera views ymag to either side of its axis vertically; one without a usable ymag, or of another
+// type, is skipped with a warning that names it, and the next camera is taken.
+TEST(GltfLoader, OrthographicCameras) {
+  json g = triangleGltf();
+  g["cameras"] = {{{"type", "orthographic"}, {"orthographic", {{"xmag", 3}, {"ymag", 0}, {"znear", 0}, {"zfar", 9}}}},
+                  {{"type", "orthographic"}, {"orthographic", {{"xmag", 3}, {"ymag", 2}, {"znear", 0}, {"zfar", 9}}}}};
+  g["nodes"] = {{{"mesh", 0}}, {{"camera", 0}}, {{"camera", 1}, {"translation", {0, 0, 5}}}};
+  g["scenes"] = {{{"nodes", {0, 1, 2}}}};
+  LoadWarnings warnings;
+  Scene s = load(g, warnings);
+  EXPECT_EQ(s.camera.projection, Projection::Orthographic);
+  EXPECT_FLOAT_EQ(s.camera.orthographicHalfHeight, 2.0f);
+  EXPECT_FLOAT_EQ(s.camera.eye.z, 5.0f);
+  ASSERT_EQ(s.cameras.size(), 1u);
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_NE(warnings.messages[0].find("cameras[0]: orthographic ymag must be positive"), std::string::npos)
+      << warnings.messages[0];
+  // Rays leave the image rectangle in parallel: 2 x (2 x aspect) world units at the camera.
+  const Camera camera = s.camera.toCamera(1.5f);
+  EXPECT_TRUE(camera.orthographic);
+  EXPECT_NEAR(length(camera.up), 2.0f, 1e-5f);
+  EXPECT_NEAR(length(camera.right), 3.0f, 1e-5f);
+}
+
 // KHR_lights_punctual: each kind, placed by its node (at the origin, shining along -Z), with its colour,
 // intensity and cone; a range is ignored with a warning.
 TEST(GltfLoader, PunctualLightsArePlacedByTheirNodes) {

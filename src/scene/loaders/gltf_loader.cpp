@@ -393,9 +393,10 @@ class GltfSceneBuilder {
     if (size_t(index) >= model_.cameras.size())
       failLoad(file_, where + ".camera: camera " + std::to_string(index) + " does not exist");
     const tinygltf::Camera& c = model_.cameras[size_t(index)];
-    if (c.type != "perspective") {
-      warnings_.add(file_,
-                    "cameras[" + std::to_string(index) + "] is " + c.type + "; only perspective cameras are used");
+    const bool orthographic = c.type == "orthographic";
+    if (c.type != "perspective" && !orthographic) {
+      warnings_.add(file_, "cameras[" + std::to_string(index) + "] is of type '" + c.type +
+                               "'; only perspective and orthographic cameras are used");
       return;
     }
     glm::vec3 eye = world * glm::vec4(0, 0, 0, 1);
@@ -407,6 +408,18 @@ class GltfSceneBuilder {
     d.target = {eye.x + forward.x, eye.y + forward.y, eye.z + forward.z};
     d.up = {up.x, up.y, up.z};
     d.verticalFovDegrees = std::isfinite(yfov) && yfov > 0.0f && yfov < 180.0f ? yfov : 40.0f;
+    if (orthographic) {
+      // ymag is half the view's height; its width follows the image's aspect ratio, as a perspective camera's
+      // yfov does (xmag, like aspectRatio, is not used).
+      const float halfHeight = float(c.orthographic.ymag);
+      if (!(std::isfinite(halfHeight) && halfHeight > 0.0f && halfHeight <= kMaxCameraCoordinate)) {
+        warnings_.add(file_, "cameras[" + std::to_string(index) +
+                                 "]: orthographic ymag must be positive and at most 1e9; the camera is not used");
+        return;
+      }
+      d.projection = Projection::Orthographic;
+      d.orthographicHalfHeight = halfHeight;
+    }
     if (!isFinite(d.eye) || !isFinite(d.target) || !isFinite(d.up)) return;
     if (!cameraFound_) {
       scene_.camera = d;
