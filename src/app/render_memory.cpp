@@ -16,8 +16,9 @@ namespace {
 
 constexpr uint64_t kUnlimited = std::numeric_limits<uint64_t>::max();
 
-// Bytes per pixel of the buffers: Vec3 images, a float depth, the a-trous denoiser's 14 float planes.
-constexpr uint64_t kImage = 12, kAovs = 12 + 12 + 4, kAtrousPlanes = 14 * 4, kBilateralPlanes = 3 * 4;
+// Bytes per pixel of the buffers: Vec3 images, a float depth, the a-trous denoiser's 22 float planes (six guides, and
+// eight for each of its two signals).
+constexpr uint64_t kImage = 12, kAovs = 12 + 12 + 4, kAtrousPlanes = 22 * 4, kBilateralPlanes = 3 * 4;
 // An encoded 8-bit RGB output (stb builds the PNG in memory) or the rows OpenEXR and PFM write from.
 constexpr uint64_t kEncoded = 10;
 

@@ -178,6 +178,62 @@ TEST(AtrousHdr, AGlintDoesNotSmearIntoAHalo) {
   }
 }
 
+// Two signals filtered together (their guide terms computed once for both) come out as each filtered alone: where
+// both are non-zero, where one is zero in whole rows or columns (it skips them alone), and with the first pass's
+// variance and the first level given for the first signal only.
+TEST(AtrousWorkspace, TwoSignalsFilterAsEachAlone) {
+  const uint32_t w = 61, h = 47;
+  const NoisyInput in = randomInput(w, h, 9);
+  std::mt19937 rng(10);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  std::vector<Vec3> first(size_t(w) * h), second(size_t(w) * h);
+  std::vector<float> variance(size_t(w) * h);
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x) {
+      const size_t i = size_t(y) * w + x;
+      first[i] = y < 30 ? Vec3{u(rng), 2.0f * u(rng), u(rng)} : Vec3{};
+      second[i] = y > 40 && x > 20 && x < 40 ? Vec3{5.0f * u(rng), u(rng), 3.0f * u(rng)} : Vec3{};
+      variance[i] = u(rng) < 0.3f ? -1.0f : u(rng);
+    }
+  AtrousParams params;
+  params.passes = 4;
+  auto read = [&](const RgbPlanes& planes) {
+    std::vector<Vec3> out(first.size());
+    for (size_t i = 0; i < out.size(); ++i) out[i] = planes.get(i);
+    return out;
+  };
+  auto filterAlone = [&](const std::vector<Vec3>& signal, const float* firstPassVariance,
+                         std::vector<Vec3>* firstLevel) {
+    AtrousWorkspace workspace;
+    workspace.setGuides(in.aovs);
+    for (size_t i = 0; i < signal.size(); ++i) workspace.signal(0).set(i, signal[i]);
+    const auto out = workspace.runPasses(
+        params, 1, [&](const RgbPlanes& level) { *firstLevel = read(level); }, firstPassVariance);
+    return read(out[0]);
+  };
+  std::vector<Vec3> firstLevelAlone, secondLevel, firstLevelTogether;
+  const std::vector<Vec3> firstAlone = filterAlone(first, variance.data(), &firstLevelAlone);
+  const std::vector<Vec3> secondAlone = filterAlone(second, nullptr, &secondLevel);
+  AtrousWorkspace workspace;
+  workspace.setGuides(in.aovs);
+  for (size_t i = 0; i < first.size(); ++i) {
+    workspace.signal(0).set(i, first[i]);
+    workspace.signal(1).set(i, second[i]);
+  }
+  const auto together = workspace.runPasses(
+      params, 2, [&](const RgbPlanes& level) { firstLevelTogether = read(level); }, variance.data());
+  const std::vector<Vec3> firstTogether = read(together[0]), secondTogether = read(together[1]);
+  int zeroRowsOfTheSecond = 0;
+  for (size_t i = 0; i < first.size(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(firstTogether[i][c], firstAlone[i][c], 1e-5f * std::fabs(firstAlone[i][c])) << i;
+      EXPECT_NEAR(secondTogether[i][c], secondAlone[i][c], 1e-5f * std::fabs(secondAlone[i][c])) << i;
+      EXPECT_NEAR(firstLevelTogether[i][c], firstLevelAlone[i][c], 1e-5f * std::fabs(firstLevelAlone[i][c])) << i;
+      if (c == 0 && i < 5 * w && secondAlone[i][c] == 0.0f && secondTogether[i][c] == 0.0f) ++zeroRowsOfTheSecond;
+    }
+  EXPECT_EQ(zeroRowsOfTheSecond, 5 * int(w));  // beyond the four passes' reach (30 rows) of its first non-zero one
+}
+
 TEST(Atrous, InteriorVarianceIsTheGeneralOne) {
   constexpr int w = 7, h = 5;
   std::mt19937 rng(3);

@@ -17,28 +17,23 @@ namespace candela {
 
 namespace {
 
-// The planes one call works on.
-enum Plane : size_t {
-  kNx,
-  kNy,
-  kNz,
-  kDepth,
-  kSlopeX,
-  kSlopeY,
-  kLuminance,
-  kInverseWidth,
-  kColour,
-  kPlaneCount = kColour + 6
-};
+// The planes one call works on: the guides, then per signal its luminance, its colour widths and its colour in the
+// two buffers the passes alternate between.
+constexpr size_t kGuidePlanes = 6;
+constexpr size_t kPlanesPerSignal = 8;
+constexpr size_t kPlaneCount = kGuidePlanes + 2 * kPlanesPerSignal;
+enum GuidePlane : size_t { kNx, kNy, kNz, kDepth, kSlopeX, kSlopeY };
+enum SignalPlane : size_t { kLuminance, kInverseWidth, kColour };
 
 // The workspace's planes by name.
 struct Planes {
   PlaneStack& stack;
-  const float* operator[](Plane p) const { return stack[p]; }
-  float* operator[](Plane p) { return stack[p]; }
-  // The demodulated colour in the two buffers the passes alternate between.
-  RgbPlanes colour(int buffer) {
-    const size_t first = kColour + 3 * size_t(buffer);
+  const float* operator[](GuidePlane p) const { return stack[p]; }
+  float* operator[](GuidePlane p) { return stack[p]; }
+  float* of(int signal, SignalPlane p) { return stack[kGuidePlanes + kPlanesPerSignal * size_t(signal) + p]; }
+  // A signal's colour in one of its two buffers.
+  RgbPlanes colour(int signal, int buffer) {
+    const size_t first = kGuidePlanes + kPlanesPerSignal * size_t(signal) + kColour + 3 * size_t(buffer);
     return {stack[first], stack[first + 1], stack[first + 2]};
   }
 };
@@ -90,6 +85,13 @@ struct CentreRow {
 struct TapRow {
   const float *r, *g, *b, *lum, *nx, *ny, *nz, *z;
 };
+// The second signal's planes beside a CentreRow and a TapRow, which hold the first's and the guides.
+struct SecondCentreRow {
+  const float *lum, *inverseWidth;
+};
+struct SecondTapRow {
+  const float *r, *g, *b, *lum;
+};
 
 // Adds the tap (dx, dy) to the sums of pixels [x0, x1) of a row. Compiled for x86-64-v4 (AVX-512) and -v3 (AVX2, FMA)
 // as well as the baseline instruction set, chosen at run time.
@@ -110,6 +112,36 @@ __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"))) vo
     sg[x] += qg[q] * weight;
     sb[x] += qb[q] * weight;
     sw[x] += weight;
+  }
+}
+
+// accumulateTap for two signals at once: the guides are read and their terms computed once for both.
+__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"))) void accumulateTapOfTwo(
+    const CentreRow& c, const SecondCentreRow& c1, const TapRow& t, const SecondTapRow& t1, RowSums& sums,
+    RowSums& sums1, int x0, int x1, int dx, int dy, AtrousPassConstants k) {
+  const float kernelWeight = b3Weight(dx) * b3Weight(dy);
+  const int ox = dx * k.step;
+  const float *pl = c.lum, *pw = c.inverseWidth, *pnx = c.nx, *pny = c.ny, *pnz = c.nz, *pz = c.z, *pgx = c.gx,
+              *pgy = c.gy, *pl1 = c1.lum, *pw1 = c1.inverseWidth;
+  const float *qr = t.r, *qg = t.g, *qb = t.b, *ql = t.lum, *qnx = t.nx, *qny = t.ny, *qnz = t.nz, *qz = t.z;
+  const float *qr1 = t1.r, *qg1 = t1.g, *qb1 = t1.b, *ql1 = t1.lum;
+  float *sr = sums.r.data(), *sg = sums.g.data(), *sb = sums.b.data(), *sw = sums.weight.data();
+  float *sr1 = sums1.r.data(), *sg1 = sums1.g.data(), *sb1 = sums1.b.data(), *sw1 = sums1.weight.data();
+#pragma GCC ivdep  // the sums and the planes never overlap
+  for (int x = x0; x < x1; ++x) {
+    const int q = x + ox;
+    const AtrousCentre p{pl[x], pw[x], pnx[x], pny[x], pnz[x], pz[x], pgx[x], pgy[x]};
+    const AtrousGuideTerms guides = atrousGuideTerms(dx, dy, k, p, qnx[q], qny[q], qnz[q], qz[q]);
+    const float weight = atrousWeight(kernelWeight, pl[x], pw[x], ql[q], guides);
+    const float weight1 = atrousWeight(kernelWeight, pl1[x], pw1[x], ql1[q], guides);
+    sr[x] += qr[q] * weight;
+    sg[x] += qg[q] * weight;
+    sb[x] += qb[q] * weight;
+    sw[x] += weight;
+    sr1[x] += qr1[q] * weight1;
+    sg1[x] += qg1[q] * weight1;
+    sb1[x] += qb1[q] * weight1;
+    sw1[x] += weight1;
   }
 }
 
@@ -179,61 +211,109 @@ NonZeroColumns outputColumns(const std::vector<NonZeroColumns>& columns, int y, 
   return first < last ? NonZeroColumns{first, last} : NonZeroColumns{};
 }
 
-// One pass, tap by tap over whole rows so that the inner loop vectorises over contiguous pixels; every pixel
-// still sums its taps in the (dy, dx) order of the CUDA version.
-// `variance`, unless null, replaces the neighbourhood's luminance variance where it is not negative.
-void atrousPass(Planes& planes, int from, int w, int h, const AtrousPassConstants& k, float colorSigma, float mean,
-                const float* variance) {
-  const RgbPlanes in = planes.colour(from), out = planes.colour(1 - from);
-  float *lum = planes[kLuminance], *inverseWidth = planes[kInverseWidth];
-  std::vector<NonZeroColumns> columns(static_cast<size_t>(h));
+// What a pass needs of one signal.
+struct PassSignal {
+  RgbPlanes in, out;
+  float *lum = nullptr, *inverseWidth = nullptr;
+  float mean = 0.0f;                // of the luminance of the passes' input
+  const float* variance = nullptr;  // unless null, replaces the neighbourhood's luminance variance where not negative
+  std::vector<NonZeroColumns> columns;  // per row, where `in` is not zero
+};
+
+// One pass over one signal or two, tap by tap over whole rows so that the inner loop vectorises over contiguous
+// pixels; every pixel still sums its taps in the (dy, dx) order of the CUDA version. In a row where both signals have
+// pixels to give, the taps over the union of their columns are summed for both at once: outside its own columns a
+// signal's taps are all zero, and so are its sums.
+void atrousPass(Planes& planes, PassSignal* signals, int count, int w, int h, const AtrousPassConstants& k,
+                float colorSigma) {
   tbb::parallel_for(0, h, [&](int y) {
     const size_t row = size_t(y) * w;
-    for (int x = 0; x < w; ++x) lum[row + x] = luminance(in.get(row + x));
-    columns[y] = nonZeroColumns(in, row, w);
+    for (int s = 0; s < count; ++s) {
+      PassSignal& signal = signals[s];
+      for (int x = 0; x < w; ++x) signal.lum[row + x] = luminance(signal.in.get(row + x));
+      signal.columns[y] = nonZeroColumns(signal.in, row, w);
+    }
   });
   tbb::parallel_for(0, h, [&](int y) {
-    const NonZeroColumns cols = outputColumns(columns, y, w, h, k.step);
-    if (cols.first == cols.last) return;  // the row's output is zero
-    float* row = inverseWidth + size_t(y) * w;
-    inverseColorWidthRow(lum, w, h, y, colorSigma, mean, row);
-    if (variance)
-      for (int x = 0; x < w; ++x)
-        if (variance[size_t(y) * w + x] >= 0.0f)
-          row[x] = atrousInverseColorWidth(variance[size_t(y) * w + x], colorSigma, mean);
+    for (int s = 0; s < count; ++s) {
+      const PassSignal& signal = signals[s];
+      const NonZeroColumns cols = outputColumns(signal.columns, y, w, h, k.step);
+      if (cols.first == cols.last) continue;  // the row's output is zero
+      const size_t row = size_t(y) * w;
+      float* widths = signal.inverseWidth + row;
+      inverseColorWidthRow(signal.lum, w, h, y, colorSigma, signal.mean, widths);
+      if (signal.variance)
+        for (int x = 0; x < w; ++x)
+          if (signal.variance[row + x] >= 0.0f)
+            widths[x] = atrousInverseColorWidth(signal.variance[row + x], colorSigma, signal.mean);
+    }
   });
   const float *nx = planes[kNx], *ny = planes[kNy], *nz = planes[kNz], *z = planes[kDepth];
   const float *slopeX = planes[kSlopeX], *slopeY = planes[kSlopeY];
   tbb::parallel_for(tbb::blocked_range<int>(0, h), [&](const tbb::blocked_range<int>& rows) {
-    RowSums sums{uint32_t(w)};
+    RowSums sums[2] = {RowSums{uint32_t(w)}, RowSums{uint32_t(w)}};
     for (int y = rows.begin(); y < rows.end(); ++y) {
       const size_t row = size_t(y) * w;
-      const NonZeroColumns cols = outputColumns(columns, y, w, h, k.step);
-      sums.clear();
-      const CentreRow centre{lum + row, inverseWidth + row, nx + row,    ny + row, nz + row,
-                             z + row,   slopeX + row,       slopeY + row};
-      // In spans short enough that the rows a span reads stay in the L1 cache over its 25 taps.
-      for (int start = cols.first; start < cols.last; start += kSpan) {
-        const int end = std::min(cols.last, start + kSpan);
-        for (int dy = -2; dy <= 2; ++dy) {
-          const int qy = y + dy * k.step;
-          if (qy < 0 || qy >= h) continue;
-          const size_t tapRow = size_t(qy) * w;
-          const TapRow tap{in.r + tapRow, in.g + tapRow, in.b + tapRow, lum + tapRow,
-                           nx + tapRow,   ny + tapRow,   nz + tapRow,   z + tapRow};
-          for (int dx = -2; dx <= 2; ++dx) {
-            const int ox = dx * k.step;
-            if (dx == 0 && dy == 0)
-              accumulateCentre(tap, sums, start, end);
-            else
-              accumulateTap(centre, tap, sums, std::max(start, -ox), std::min(end, w - ox), dx, dy, k);
+      NonZeroColumns cols[2];
+      for (int s = 0; s < count; ++s) {
+        cols[s] = outputColumns(signals[s].columns, y, w, h, k.step);
+        sums[s].clear();
+      }
+      auto centreOf = [&](int s) {
+        return CentreRow{
+            signals[s].lum + row, signals[s].inverseWidth + row, nx + row, ny + row, nz + row, z + row, slopeX + row,
+            slopeY + row};
+      };
+      auto tapsOf = [&](int s, size_t tapRow) {
+        const RgbPlanes& in = signals[s].in;
+        return TapRow{in.r + tapRow, in.g + tapRow, in.b + tapRow, signals[s].lum + tapRow,
+                      nx + tapRow,   ny + tapRow,   nz + tapRow,   z + tapRow};
+      };
+      // Sums the taps of pixels [first, last) for signal `only`, or for both where it is -1; in spans short enough
+      // that the rows a span reads stay in the L1 cache over its 25 taps.
+      auto sumTaps = [&](int first, int last, int only) {
+        const int s = only < 0 ? 0 : only;
+        const CentreRow centre = centreOf(s);
+        const SecondCentreRow centre1{signals[1].lum + row, signals[1].inverseWidth + row};
+        for (int start = first; start < last; start += kSpan) {
+          const int end = std::min(last, start + kSpan);
+          for (int dy = -2; dy <= 2; ++dy) {
+            const int qy = y + dy * k.step;
+            if (qy < 0 || qy >= h) continue;
+            const size_t tapRow = size_t(qy) * w;
+            const TapRow tap = tapsOf(s, tapRow);
+            for (int dx = -2; dx <= 2; ++dx) {
+              const int ox = dx * k.step;
+              if (dx == 0 && dy == 0) {
+                accumulateCentre(tap, sums[s], start, end);
+                if (only < 0) accumulateCentre(tapsOf(1, tapRow), sums[1], start, end);
+              } else if (only < 0) {
+                const RgbPlanes& in1 = signals[1].in;
+                const SecondTapRow tap1{in1.r + tapRow, in1.g + tapRow, in1.b + tapRow, signals[1].lum + tapRow};
+                accumulateTapOfTwo(centre, centre1, tap, tap1, sums[0], sums[1], std::max(start, -ox),
+                                   std::min(end, w - ox), dx, dy, k);
+              } else {
+                accumulateTap(centre, tap, sums[s], std::max(start, -ox), std::min(end, w - ox), dx, dy, k);
+              }
+            }
           }
         }
+      };
+      const bool both = count == 2 && cols[0].first < cols[0].last && cols[1].first < cols[1].last;
+      if (both) {
+        sumTaps(std::min(cols[0].first, cols[1].first), std::max(cols[0].last, cols[1].last), -1);
+      } else {
+        for (int s = 0; s < count; ++s)
+          if (cols[s].first < cols[s].last) sumTaps(cols[s].first, cols[s].last, s);
       }
       // The centre tap's weight is b3(0)^2 > 0: the sum of weights is never zero where taps were summed.
-      for (int x = 0; x < w; ++x)
-        out.set(row + x,
-                x >= cols.first && x < cols.last ? Vec3{sums.r[x], sums.g[x], sums.b[x]} / sums.weight[x] : Vec3{});
+      for (int s = 0; s < count; ++s) {
+        const RowSums& sum = sums[s];
+        for (int x = 0; x < w; ++x)
+          signals[s].out.set(row + x, x >= cols[s].first && x < cols[s].last
+                                          ? Vec3{sum.r[x], sum.g[x], sum.b[x]} / sum.weight[x]
+                                          : Vec3{});
+      }
     }
   });
 }
@@ -270,23 +350,33 @@ void AtrousWorkspace::setGuides(const AovImages& guides) {
   fillGuides(guides, planes);
 }
 
-RgbPlanes AtrousWorkspace::signal() { return Planes{*stack_}.colour(0); }
+RgbPlanes AtrousWorkspace::signal(int which) { return Planes{*stack_}.colour(which, 0); }
 
-float* AtrousWorkspace::scratch() { return (*stack_)[kInverseWidth]; }
+float* AtrousWorkspace::scratch() { return Planes{*stack_}.of(0, kInverseWidth); }
 
-RgbPlanes AtrousWorkspace::runPasses(const AtrousParams& params,
-                                     const std::function<void(const RgbPlanes&)>& afterFirstPass,
-                                     const float* firstPassVariance) {
+std::array<RgbPlanes, 2> AtrousWorkspace::runPasses(const AtrousParams& params, int signalCount,
+                                                    const std::function<void(const RgbPlanes&)>& afterFirstPass,
+                                                    const float* firstPassVariance) {
   Planes planes{*stack_};
   const int w = int(width_), h = int(height_);
-  const float mean = meanLuminance(planes.colour(0), size_t(w) * h);
-  if (params.passes == 0 && afterFirstPass) afterFirstPass(planes.colour(0));
-  for (int pass = 0; pass < params.passes; ++pass) {
-    atrousPass(planes, pass % 2, w, h, atrousPassConstants(params, pass), params.colorSigma, mean,
-               pass == 0 ? firstPassVariance : nullptr);
-    if (pass == 0 && afterFirstPass) afterFirstPass(planes.colour(1));
+  PassSignal signals[2];
+  for (int s = 0; s < signalCount; ++s) {
+    signals[s].mean = meanLuminance(planes.colour(s, 0), size_t(w) * h);
+    signals[s].lum = planes.of(s, kLuminance);
+    signals[s].inverseWidth = planes.of(s, kInverseWidth);
+    signals[s].columns.resize(size_t(h));
   }
-  return planes.colour(params.passes % 2);
+  if (params.passes == 0 && afterFirstPass) afterFirstPass(planes.colour(0, 0));
+  for (int pass = 0; pass < params.passes; ++pass) {
+    for (int s = 0; s < signalCount; ++s) {
+      signals[s].in = planes.colour(s, pass % 2);
+      signals[s].out = planes.colour(s, 1 - pass % 2);
+      signals[s].variance = s == 0 && pass == 0 ? firstPassVariance : nullptr;
+    }
+    atrousPass(planes, signals, signalCount, w, h, atrousPassConstants(params, pass), params.colorSigma);
+    if (pass == 0 && afterFirstPass) afterFirstPass(planes.colour(0, 1));
+  }
+  return {planes.colour(0, params.passes % 2), planes.colour(1, params.passes % 2)};
 }
 
 Image atrousDenoise(const Image& color, const AovImages& aovs, const AtrousParams& params) {
@@ -295,16 +385,19 @@ Image atrousDenoise(const Image& color, const AovImages& aovs, const AtrousParam
   const size_t pixels = color.pixels.size();
   AtrousWorkspace workspace;
   workspace.setGuides(aovs);
-  const RgbPlanes input = workspace.signal();
+  const RgbPlanes reflectedIn = workspace.signal(0);
   tbb::parallel_for(size_t(0), pixels, [&](size_t i) {
-    input.set(i, demodulate(color.pixels[i], aovs.emission.pixels[i], aovs.albedo.pixels[i]));
+    reflectedIn.set(i, demodulate(color.pixels[i], aovs.emission.pixels[i], aovs.albedo.pixels[i]));
   });
-  const RgbPlanes reflected = workspace.runPasses(params);
-  Image result(color.width, color.height);
-  tbb::parallel_for(size_t(0), pixels,
-                    [&](size_t i) { result.pixels[i] = remodulate(reflected.get(i), aovs.albedo.pixels[i]); });
-  tbb::parallel_for(size_t(0), pixels, [&](size_t i) { input.set(i, filterableEmission(aovs.emission.pixels[i])); });
-  const RgbPlanes emission = workspace.runPasses(params);
+  // Where the camera sees no emission the second signal's planes are left untouched (not even mapped).
+  const bool emission = std::any_of(aovs.emission.pixels.begin(), aovs.emission.pixels.end(),
+                                    [](Vec3 e) { return e.x != 0.0f || e.y != 0.0f || e.z != 0.0f; });
+  if (emission) {
+    const RgbPlanes emissionIn = workspace.signal(1);
+    tbb::parallel_for(size_t(0), pixels,
+                      [&](size_t i) { emissionIn.set(i, filterableEmission(aovs.emission.pixels[i])); });
+  }
+  const std::array<RgbPlanes, 2> filtered = workspace.runPasses(params, emission ? 2 : 1);
   // The variance of each pixel's mean (stratifiedVariance), in a plane the passes are done with.
   float* variance = workspace.scratch();
   auto boundAt = [&](int x, int y) { return aovs.variance[size_t(y) * w + x]; };
@@ -313,11 +406,13 @@ Image atrousDenoise(const Image& color, const AovImages& aovs, const AtrousParam
     for (int x = 0; x < w; ++x) variance[size_t(y) * w + x] = stratifiedVariance(boundAt, halvesAt, w, h, x, y);
   });
   auto varianceAt = [&](int x, int y) { return variance[size_t(y) * w + x]; };
+  Image result(color.width, color.height);
   tbb::parallel_for(0, h, [&](int y) {
     for (int x = 0; x < w; ++x) {
       const size_t i = size_t(y) * w + x;
-      result.pixels[i] =
-          blendWithRaw(color.pixels[i], result.pixels[i] + emission.get(i), blendVariance(varianceAt, w, h, x, y));
+      const Vec3 reflected = remodulate(filtered[0].get(i), aovs.albedo.pixels[i]);
+      const Vec3 filteredPixel = emission ? reflected + filtered[1].get(i) : reflected;
+      result.pixels[i] = blendWithRaw(color.pixels[i], filteredPixel, blendVariance(varianceAt, w, h, x, y));
     }
   });
   return result;

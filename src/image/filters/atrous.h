@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <functional>
 #include <memory>
 
@@ -41,9 +42,10 @@ void validateAtrousParams(const AtrousParams& params);
 void validateAtrousInput(const Image& color, const AovImages& aovs, const AtrousParams& params);
 Image atrousDenoise(const Image& color, const AovImages& aovs, const AtrousParams& params);
 
-// The a-trous passes on planes that outlive one image, for the temporal filter: it writes its accumulated signals
-// (already what the passes should smooth: no demodulation, no mix with raw pixels) straight into them frame after
-// frame, and fills the guides once for both of its signals.
+// The a-trous passes on planes that outlive one image, over one signal or two (the reflected light and the emission)
+// guided by the same normals and depths: each tap's guide terms are then computed once for both. The temporal filter
+// writes its accumulated signals (already what the passes should smooth: no demodulation, no mix with raw pixels)
+// straight into them frame after frame, and fills the guides once for both.
 class AtrousWorkspace {
  public:
   AtrousWorkspace();
@@ -51,15 +53,16 @@ class AtrousWorkspace {
   // The guide planes from the AOVs' normals and depths; the planes are made for their size, or kept from the last
   // call where it is the same.
   void setGuides(const AovImages& guides);
-  // Where runPasses starts: the caller writes the signal there (after setGuides).
-  RgbPlanes signal();
-  // The passes on signal(), guided by the guides set. `afterFirstPass`, unless null, receives the output of the first
-  // pass (SVGF's history; the signal itself for no passes). `firstPassVariance`, unless null, gives the first pass the
-  // variance of each pixel's luminance (negative: the neighbourhood's, as ever). Returns the planes that hold the
-  // result, valid until the next call or until the next signal is written (after an even number of passes they are
-  // signal()'s).
-  RgbPlanes runPasses(const AtrousParams& params, const std::function<void(const RgbPlanes&)>& afterFirstPass = nullptr,
-                      const float* firstPassVariance = nullptr);
+  // Where runPasses starts: the caller writes signal `which` (0 or 1) there (after setGuides).
+  RgbPlanes signal(int which);
+  // The passes on signals 0 to signalCount - 1 (1 or 2), guided by the guides set, each as if filtered alone.
+  // `afterFirstPass`, unless null, receives signal 0's output of the first pass (SVGF's history; the signal itself for
+  // no passes). `firstPassVariance`, unless null, gives signal 0's first pass the variance of each pixel's luminance
+  // (negative: the neighbourhood's, as ever). Returns the planes that hold each signal's result, valid until the next
+  // call or until the next signal is written (after an even number of passes they are signal()'s).
+  std::array<RgbPlanes, 2> runPasses(const AtrousParams& params, int signalCount,
+                                     const std::function<void(const RgbPlanes&)>& afterFirstPass = nullptr,
+                                     const float* firstPassVariance = nullptr);
   // A plane of the size free for the caller once runPasses is done, until the next call.
   float* scratch();
 

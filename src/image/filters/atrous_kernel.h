@@ -193,16 +193,34 @@ struct AtrousCentre {
   float z, gx, gy;          // depth and its slope per pixel along x and y
 };
 
+// The parts of a tap's weight that come from the guides (normal and depth), which signals filtered with the same
+// guides share.
+struct AtrousGuideTerms {
+  float normal, depth;
+};
+
+// The guide terms of the tap (dx, dy) in [-2, 2]^2 of a pass.
+CANDELA_FN AtrousGuideTerms atrousGuideTerms(int dx, int dy, const AtrousPassConstants& k, const AtrousCentre& p,
+                                             float qnx, float qny, float qnz, float qz) {
+  const float ox = float(dx * k.step), oy = float(dy * k.step);
+  const float nx = qnx - p.nx, ny = qny - p.ny, nz = qnz - p.nz;
+  const float expected = fabsf(p.gx * ox + p.gy * oy) + kAtrousDepthFloor * p.z * (fabsf(ox) + fabsf(oy));
+  return {(nx * nx + ny * ny + nz * nz) * k.normalScale, fabsf(qz - p.z) / (k.depthSigma * expected + 1e-30f)};
+}
+
+// The weight of a tap whose kernel weight is b3Weight(dx) * b3Weight(dy), from the luminances of the centre and the
+// tap and the guide terms.
+CANDELA_FN float atrousWeight(float kernelWeight, float centreLuminance, float inverseColorWidth, float qLuminance,
+                              AtrousGuideTerms guides) {
+  const float colorTerm = fabsf(qLuminance - centreLuminance) * inverseColorWidth;
+  return kernelWeight * fastExpNonPositive(-(colorTerm + guides.normal + guides.depth));
+}
+
 // The weight of the tap (dx, dy) in [-2, 2]^2 of a pass, whose kernel weight is b3Weight(dx) * b3Weight(dy).
 CANDELA_FN float atrousWeight(int dx, int dy, float kernelWeight, const AtrousPassConstants& k, AtrousCentre p,
                               float qLuminance, float qnx, float qny, float qnz, float qz) {
-  const float ox = float(dx * k.step), oy = float(dy * k.step);
-  const float colorTerm = fabsf(qLuminance - p.luminance) * p.inverseColorWidth;
-  const float nx = qnx - p.nx, ny = qny - p.ny, nz = qnz - p.nz;
-  const float expected = fabsf(p.gx * ox + p.gy * oy) + kAtrousDepthFloor * p.z * (fabsf(ox) + fabsf(oy));
-  const float depthTerm = fabsf(qz - p.z) / (k.depthSigma * expected + 1e-30f);
-  const float exponent = colorTerm + (nx * nx + ny * ny + nz * nz) * k.normalScale + depthTerm;
-  return kernelWeight * fastExpNonPositive(-exponent);
+  return atrousWeight(kernelWeight, p.luminance, p.inverseColorWidth, qLuminance,
+                      atrousGuideTerms(dx, dy, k, p, qnx, qny, qnz, qz));
 }
 
 CANDELA_FN AtrousPassConstants atrousPassConstants(const AtrousParams& params, int pass) {

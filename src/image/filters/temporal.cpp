@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <array>
 #include <stdexcept>
 
 #include "image/filters/atrous_kernel.h"
@@ -75,10 +76,10 @@ Image TemporalFilter::filter(const TemporalFrame& frame) {
     });
   }
 
-  // The film added to it, straight into the planes of the a-trous passes, which the reflected light goes through;
-  // the accumulated emission waits in the new history.
+  // The film added to it, straight into the planes of the a-trous passes: the reflected light and the accumulated
+  // emission (kept in the new history too).
   workspace_.setGuides(aovs);
-  const RgbPlanes signal = workspace_.signal();
+  const RgbPlanes signal = workspace_.signal(0), emissionSignal = workspace_.signal(1);
   variance_.resize(pixels);
   const float samples = float(frame.samples > 0 ? frame.samples : 1);
   tbb::parallel_for(size_t(0), pixels, [&](size_t i) {
@@ -88,6 +89,7 @@ Image TemporalFilter::filter(const TemporalFrame& frame) {
         accumulateTemporal(base, demodulate(frame.color.pixels[i], aovs.emission.pixels[i], aovs.albedo.pixels[i]),
                            filterableEmission(aovs.emission.pixels[i]), samples);
     signal.set(i, s.reflected);
+    emissionSignal.set(i, s.emission);
     variance_[i] = temporalVariance(s, samples);
     last_.emission[i] = s.emission;
     last_.length[i] = s.length;
@@ -97,22 +99,19 @@ Image TemporalFilter::filter(const TemporalFrame& frame) {
     last_.depth[i] = aovs.depth[i];
     last_.emissive[i] = isEmissive(s.emission);
   });
-  // The first level becomes the next frame's history.
-  const RgbPlanes reflected = workspace_.runPasses(
-      params_.atrous,
+  // The first level of the reflected light becomes the next frame's history.
+  const std::array<RgbPlanes, 2> filtered = workspace_.runPasses(
+      params_.atrous, 2,
       [&](const RgbPlanes& level) {
         tbb::parallel_for(size_t(0), pixels, [&](size_t i) { last_.reflected[i] = level.get(i); });
       },
       variance_.data());
   Image result(width_, height_);
-  tbb::parallel_for(size_t(0), pixels,
-                    [&](size_t i) { result.pixels[i] = remodulate(reflected.get(i), aovs.albedo.pixels[i]); });
+  tbb::parallel_for(size_t(0), pixels, [&](size_t i) {
+    result.pixels[i] = remodulate(filtered[0].get(i), aovs.albedo.pixels[i]) + filtered[1].get(i);
+  });
   camera_ = frame.camera;
   haveHistory_ = true;
-
-  tbb::parallel_for(size_t(0), pixels, [&](size_t i) { signal.set(i, last_.emission[i]); });
-  const RgbPlanes emission = workspace_.runPasses(params_.atrous);
-  tbb::parallel_for(size_t(0), pixels, [&](size_t i) { result.pixels[i] = result.pixels[i] + emission.get(i); });
   return result;
 }
 
