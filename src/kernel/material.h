@@ -67,14 +67,14 @@ struct Material {
   uint32_t doubleSided = 1;
 
   // Indices into the scene's textures, kNoTexture when absent.
-  int32_t baseColorTexture = kNoTexture;          // sRGB; alpha channel multiplies opacity
-  int32_t metallicRoughnessTexture = kNoTexture;  // glTF packing: G = roughness, B = metallic
-  int32_t roughnessTexture = kNoTexture;          // R
-  int32_t metallicTexture = kNoTexture;           // R
-  int32_t emissionTexture = kNoTexture;           // sRGB, multiplies emission
-  int32_t normalTexture = kNoTexture;             // tangent space
-  int32_t opacityTexture = kNoTexture;            // R
-  int32_t iridescenceTexture = kNoTexture;        // R, multiplies iridescence
+  int32_t baseColorTexture = kNoTexture;             // sRGB; alpha channel multiplies opacity
+  int32_t metallicRoughnessTexture = kNoTexture;     // glTF packing: G = roughness, B = metallic
+  int32_t roughnessTexture = kNoTexture;             // R
+  int32_t metallicTexture = kNoTexture;              // R
+  int32_t emissionTexture = kNoTexture;              // sRGB, multiplies emission
+  int32_t normalTexture = kNoTexture;                // tangent space
+  int32_t opacityTexture = kNoTexture;               // R
+  int32_t iridescenceTexture = kNoTexture;           // R, multiplies iridescence
   int32_t iridescenceThicknessTexture = kNoTexture;  // G, between the minimum and maximum thickness
 
   // Mix: a shading point scatters as mixedMaterials[1] with probability mixAmount (times the R channel of
