@@ -9,6 +9,7 @@
 #include "backends/cpu/cpu_backend.h"
 #include "scene/animation_player.h"
 #include "scene/cache/scene_cache.h"
+#include "scene/gltf_cache_round_trip.h"
 #include "scene/loaders/gltf_loader.h"
 #include "scene/scene_test_files.h"
 #include "support/animated_gltf.h"
@@ -129,13 +130,10 @@ TEST(AnimatedCameras, SceneFileCamerasAreRenumberedAndTheChosenOneFollows) {
 
 TEST(AnimatedCameras, TheSceneCacheKeepsAnimatedCamerasAndLights) {
   TempFolder folder;
-  const std::string path = cameraAndLightBelowTheMovingNode().write(folder.path());
-  LoadWarnings warnings;
-  const Scene scene = loadGltf(path, warnings);
-  const std::string cache = sceneCacheFile(folder.file("cache"), path);
-  writeSceneCache(cache, path, scene, {});
+  const test::GltfCacheRoundTrip cache(folder, cameraAndLightBelowTheMovingNode().write(folder.path()));
+  const Scene& scene = cache.loaded();
   CachedScene read;
-  ASSERT_EQ(readSceneCache(cache, path, read), SceneCacheRead::Hit);
+  ASSERT_EQ(cache.writeAndRead(scene, read), SceneCacheRead::Hit);
   EXPECT_EQ(read.scene.cameraIndex, 0);
   ASSERT_EQ(read.scene.animation.cameras.size(), 1u);
   ASSERT_EQ(read.scene.animation.lights.size(), 1u);
@@ -143,15 +141,10 @@ TEST(AnimatedCameras, TheSceneCacheKeepsAnimatedCamerasAndLights) {
 
   Scene broken = scene;
   broken.animation.lights[0].light = 9;
-  writeSceneCache(cache, path, broken, {});
-  std::string problem;
-  EXPECT_EQ(readSceneCache(cache, path, read, &problem), SceneCacheRead::Invalid);
-  EXPECT_EQ(problem, "an animated light refers to a missing light or node");
+  EXPECT_EQ(cache.refusal(broken), "an animated light refers to a missing light or node");
   broken = scene;
   broken.cameraIndex = 1;
-  writeSceneCache(cache, path, broken, {});
-  EXPECT_EQ(readSceneCache(cache, path, read, &problem), SceneCacheRead::Invalid);
-  EXPECT_EQ(problem, "the scene's camera is not one of its cameras");
+  EXPECT_EQ(cache.refusal(broken), "the scene's camera is not one of its cameras");
 }
 
 // A dark quad lit by a point light that "Move" carries: setInstanceTransforms must move the light as a full

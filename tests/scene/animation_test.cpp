@@ -13,6 +13,7 @@
 #include "backends/cpu/cpu_backend.h"
 #include "scene/animation_player.h"
 #include "scene/cache/scene_cache.h"
+#include "scene/gltf_cache_round_trip.h"
 #include "scene/loaders/gltf_loader.h"
 #include "scene/loaders/scene_file.h"
 #include "scene/scene_test_files.h"
@@ -282,13 +283,10 @@ TEST(GltfAnimation, ASceneFilePlacingAModelTwiceAnimatesBothPlacements) {
 TEST(GltfAnimation, TheSceneCacheKeepsTheAnimation) {
   TempFolder folder;
   AnimatedFile file;
-  const std::string path = file.write(folder.path());
-  LoadWarnings warnings;
-  const Scene scene = loadGltf(path, warnings);
-  const std::string cache = sceneCacheFile(folder.file("cache"), path);
-  writeSceneCache(cache, path, scene, {});
+  const test::GltfCacheRoundTrip cache(folder, file.write(folder.path()));
+  const Scene& scene = cache.loaded();
   CachedScene read;
-  ASSERT_EQ(readSceneCache(cache, path, read), SceneCacheRead::Hit);
+  ASSERT_EQ(cache.writeAndRead(scene, read), SceneCacheRead::Hit);
   ASSERT_EQ(read.scene.animation.clips.size(), 2u);
   ASSERT_EQ(read.scene.animation.nodes.size(), scene.animation.nodes.size());
   EXPECT_EQ(read.scene.animation.clips[1].name, "Bounce");
@@ -300,10 +298,7 @@ TEST(GltfAnimation, TheSceneCacheKeepsTheAnimation) {
   // A cache file whose animation refers to a missing instance is not trusted.
   Scene broken = scene;
   broken.animation.instances[0].instance = 5;
-  writeSceneCache(cache, path, broken, {});
-  std::string problem;
-  EXPECT_EQ(readSceneCache(cache, path, read, &problem), SceneCacheRead::Invalid);
-  EXPECT_EQ(problem, "an animated instance refers to a missing instance or node");
+  EXPECT_EQ(cache.refusal(broken), "an animated instance refers to a missing instance or node");
 }
 
 TEST(FrameSequence, FileNamesReplaceTheLastRunOfHashes) {

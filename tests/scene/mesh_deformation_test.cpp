@@ -11,6 +11,7 @@
 #include "backends/cpu/cpu_backend.h"
 #include "scene/animation_player.h"
 #include "scene/cache/scene_cache.h"
+#include "scene/gltf_cache_round_trip.h"
 #include "scene/loaders/gltf_loader.h"
 #include "scene/scene_test_files.h"
 #include "support/image_expectations.h"
@@ -250,13 +251,10 @@ TEST(GltfSkins, AMeshWithoutASecondSetKeepsFourInfluences) {
 
 TEST(GltfSkins, TheSceneCacheKeepsEightInfluences) {
   TempFolder folder;
-  const std::string path = eightInfluenceQuad().write(folder);
-  LoadWarnings warnings;
-  const Scene scene = loadGltf(path, warnings);
-  const std::string cache = sceneCacheFile(folder.file("cache"), path);
-  writeSceneCache(cache, path, scene, {});
+  const test::GltfCacheRoundTrip cache(folder, eightInfluenceQuad().write(folder));
+  const Scene& scene = cache.loaded();
   CachedScene read;
-  ASSERT_EQ(readSceneCache(cache, path, read), SceneCacheRead::Hit);
+  ASSERT_EQ(cache.writeAndRead(scene, read), SceneCacheRead::Hit);
   Scene posed = read.scene;
   AnimationPlayer(posed).pose(posed, 0, 1.0f);
   expectNear(worldVertex(posed, 3), {0, 1, 6});
@@ -264,10 +262,7 @@ TEST(GltfSkins, TheSceneCacheKeepsEightInfluences) {
 
   Scene broken = scene;
   broken.animation.deformations[0].influences = 4;  // twice the joints and weights it claims
-  writeSceneCache(cache, path, broken, {});
-  std::string problem;
-  EXPECT_EQ(readSceneCache(cache, path, read, &problem), SceneCacheRead::Invalid);
-  EXPECT_EQ(problem, "a mesh deformation has not four or eight joints and weights per vertex");
+  EXPECT_EQ(cache.refusal(broken), "a mesh deformation has not four or eight joints and weights per vertex");
 }
 
 // A quad (z = 0) with one morph target that lifts vertex 2 by 1 in z and tilts its normal, whose weight "Lift"
@@ -373,13 +368,10 @@ TEST(GltfMorphTargets, TooManyDeformedVerticesAreRefusedWithOneLine) {
 
 TEST(GltfMorphTargets, TheSceneCacheKeepsDeformations) {
   TempFolder folder;
-  const std::string path = skinnedQuad().write(folder);
-  LoadWarnings warnings;
-  const Scene scene = loadGltf(path, warnings);
-  const std::string cache = sceneCacheFile(folder.file("cache"), path);
-  writeSceneCache(cache, path, scene, {});
+  const test::GltfCacheRoundTrip cache(folder, skinnedQuad().write(folder));
+  const Scene& scene = cache.loaded();
   CachedScene read;
-  ASSERT_EQ(readSceneCache(cache, path, read), SceneCacheRead::Hit);
+  ASSERT_EQ(cache.writeAndRead(scene, read), SceneCacheRead::Hit);
   ASSERT_EQ(read.scene.animation.deformations.size(), 1u);
   Scene posed = read.scene;
   AnimationPlayer(posed).pose(posed, 0, 1.0f);
@@ -387,10 +379,7 @@ TEST(GltfMorphTargets, TheSceneCacheKeepsDeformations) {
 
   Scene broken = scene;
   broken.animation.deformations[0].joints[9] = 5;
-  writeSceneCache(cache, path, broken, {});
-  std::string problem;
-  EXPECT_EQ(readSceneCache(cache, path, read, &problem), SceneCacheRead::Invalid);
-  EXPECT_EQ(problem, "a mesh deformation refers to a missing joint");
+  EXPECT_EQ(cache.refusal(broken), "a mesh deformation refers to a missing joint");
 }
 
 // Renders of the bending quad: setDeformedMeshes gives the image of a full setScene of the posed scene, and the
