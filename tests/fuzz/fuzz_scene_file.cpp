@@ -4,8 +4,8 @@
 // camera, the camera, environment and render settings are all reached. A .glb name stands for an animated glTF
 // (the gltf seed skinned_morphed_animated.gltf: a skinned and a morphed mesh, an animated camera and light), so
 // that placing models' animations, cameras and lights, and placing a deformed model again, are reached too. Any
-// text must load or throw LoadError, never crash or hang, and give a valid scene whose animation poses validly
-// (posed_clips.h).
+// text must load or throw LoadError, never crash or hang, and give a scene that the repair every load ends with
+// makes valid, and whose animation then poses validly (posed_clips.h).
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -20,6 +20,7 @@
 #include "private_folder.h"
 #include "scene/loaders/gltf_loader.h"
 #include "scene/loaders/scene_file.h"
+#include "scene/scene_repair.h"
 
 namespace {
 
@@ -69,7 +70,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   candela::LoadWarnings warnings;
   try {
     candela::Scene scene = candela::loadSceneFile(path, standInModel, warnings);
-    candela::validateScene(scene);
+    candela::repairScene(scene, path, warnings);  // as every load does (app/scene_loading.cpp); ends with validateScene
     candela::fuzz::poseClips(scene);
   } catch (const candela::LoadError&) {
   }
