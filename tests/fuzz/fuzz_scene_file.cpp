@@ -1,19 +1,52 @@
 // libFuzzer entry point for JSON scene files. The loader reads the file by path, so each input is written to a
 // private folder; the models it names are not read but stand in as one small triangle scene with a material
 // named "paint" (from a .gltf name, with a camera too), so that transforms, material overrides, the model
-// camera, the camera, environment and render settings are all reached. Any text must load or throw LoadError,
-// never crash or hang, and give a valid scene.
+// camera, the camera, environment and render settings are all reached. A .glb name stands for an animated glTF
+// (the gltf seed skinned_morphed_animated.gltf: a skinned and a morphed mesh, an animated camera and light), so
+// that placing models' animations, cameras and lights, and placing a deformed model again, are reached too. Any
+// text must load or throw LoadError, never crash or hang, and give a scene that the repair every load ends with
+// makes valid, and whose animation then poses validly (posed_clips.h).
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <string_view>
 
+#include "posed_clips.h"
 #include "private_folder.h"
+#include "scene/loaders/gltf_loader.h"
 #include "scene/loaders/scene_file.h"
+#include "scene/scene_repair.h"
 
 namespace {
 
+// Loaded once: CANDELA_FUZZ_ANIMATED_MODEL is the seed's path in the source tree.
+const candela::Scene& animatedModel() {
+  static const candela::Scene model = [] {
+    try {
+      std::ifstream in(CANDELA_FUZZ_ANIMATED_MODEL, std::ios::binary);
+      const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+      candela::LoadWarnings ignored;
+      return candela::loadGltfBytes(CANDELA_FUZZ_ANIMATED_MODEL, reinterpret_cast<const uint8_t*>(bytes.data()),
+                                    bytes.size(), ignored);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "fuzz_scene_file: the animated stand-in model does not load: %s\n", e.what());
+      std::abort();
+    }
+  }();
+  return model;
+}
+
 candela::Scene standInModel(const std::string& path, candela::LoadWarnings&, candela::SharedModelAssets&) {
+  if (path.size() >= 4 && path.compare(path.size() - 4, 4, ".glb") == 0) {
+    candela::Scene s = animatedModel();
+    s.inputFiles = {path};
+    return s;
+  }
   candela::Scene s;
   s.name = "stand-in";
   candela::Mesh m;
@@ -37,7 +70,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   candela::LoadWarnings warnings;
   try {
     candela::Scene scene = candela::loadSceneFile(path, standInModel, warnings);
-    candela::validateScene(scene);
+    candela::repairScene(scene, path, warnings);  // as every load does (app/scene_loading.cpp); ends with validateScene
+    candela::fuzz::poseClips(scene);
   } catch (const candela::LoadError&) {
   }
   return 0;
