@@ -274,7 +274,8 @@ void atrousPass(Planes& planes, PassSignal* signals, int count, int w, int h, co
       auto sumTaps = [&](int first, int last, int only) {
         const int s = only < 0 ? 0 : only;
         const CentreRow centre = centreOf(s);
-        const SecondCentreRow centre1{signals[1].lum + row, signals[1].inverseWidth + row};
+        const SecondCentreRow centre1 =
+            only < 0 ? SecondCentreRow{signals[1].lum + row, signals[1].inverseWidth + row} : SecondCentreRow{};
         for (int start = first; start < last; start += kSpan) {
           const int end = std::min(last, start + kSpan);
           for (int dy = -2; dy <= 2; ++dy) {
