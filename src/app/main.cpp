@@ -27,6 +27,7 @@
 #include "core/atomic_file.h"
 #include "image/aov_io.h"
 #include "image/image_io.h"
+#include "image/visible_pixels.h"
 #include "scene/builtin_scenes.h"
 #include "scene/loaders/file_bytes.h"
 #include "scene/loaders/load_diagnostics.h"
@@ -318,6 +319,8 @@ int finishRender(const RenderJob& job, const RenderOutcome& outcome, const std::
                formatRate(samples / outcome.seconds).c_str(),
                formatRate(double(outcome.stats.rays) / outcome.seconds).c_str(),
                (unsigned long long)outcome.stats.invalidSamples);
+  if (outcome.sceneHasLightSource && looksUnlit(outcome.image, display))
+    std::fprintf(stderr, "%s\n", kUnlitImageWarning);
   for (const std::string& path : written) std::printf("%s\n", std::filesystem::absolute(path).string().c_str());
   return 0;
 }

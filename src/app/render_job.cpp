@@ -176,6 +176,7 @@ RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool s
   outcome.backendName = backend->name();
   outcome.deviceName = backend->deviceName();
   outcome.sceneName = scene.name;
+  outcome.sceneHasLightSource = hasLightSource(scene);
   if (!outcome.writes) return outcome;
   if (job.rawTrace) {
     RawTraceTiming timing = backend->timeRawTrace(job.warmupFrames, job.samplesPerPixel);

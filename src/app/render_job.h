@@ -61,6 +61,7 @@ struct RenderOutcome {
   std::string backendName;
   std::string deviceName;
   std::string sceneName;
+  bool sceneHasLightSource = true;              // hasLightSource of the scene rendered
   std::vector<double> frameMilliseconds;        // wall clock of each timed launch
   std::vector<double> deviceFrameMilliseconds;  // GPU time of each timed launch, where the backend measures it
   // On several devices: each one's GPU time for its share of each timed launch ([launch][device]), and the time

@@ -76,22 +76,6 @@ Scene loadFile(const std::string& path, const SceneLoadOptions& options, LoadWar
                            "' (use .obj, .gltf, .glb, .pbrt or .json, or a built-in scene: " + names + ")");
 }
 
-bool hasLightSource(const Scene& scene) {
-  const Environment& env = scene.environment;
-  if (env.intensity > 0.0f && (env.hasMap() || !isBlack(env.radiance))) return true;
-  for (const PunctualLight& light : scene.punctualLights)
-    if (!isBlack(light.intensity)) return true;
-  std::vector<bool> emissive(scene.materials.size());
-  for (size_t m = 0; m < scene.materials.size(); ++m) emissive[m] = !isBlack(scene.materials[m].emission);
-  std::vector<bool> instanced(scene.meshes.size());
-  for (const Instance& inst : scene.instances) instanced[inst.meshId] = true;
-  for (size_t i = 0; i < scene.meshes.size(); ++i)
-    if (instanced[i])
-      for (uint32_t m : scene.meshes[i].triangleMaterials)
-        if (m < emissive.size() && emissive[m]) return true;
-  return false;
-}
-
 // Takes the camera `choice` names (a name or an index into scene.cameras), or warns which one was taken when
 // the file has several.
 void chooseCamera(Scene& scene, const std::string& spec, const std::string& choice, LoadWarnings& warnings) {
@@ -118,6 +102,22 @@ void chooseCamera(Scene& scene, const std::string& spec, const std::string& choi
 }
 
 }  // namespace
+
+bool hasLightSource(const Scene& scene) {
+  const Environment& env = scene.environment;
+  if (env.intensity > 0.0f && (env.hasMap() || !isBlack(env.radiance))) return true;
+  for (const PunctualLight& light : scene.punctualLights)
+    if (!isBlack(light.intensity)) return true;
+  std::vector<bool> emissive(scene.materials.size());
+  for (size_t m = 0; m < scene.materials.size(); ++m) emissive[m] = !isBlack(scene.materials[m].emission);
+  std::vector<bool> instanced(scene.meshes.size());
+  for (const Instance& inst : scene.instances) instanced[inst.meshId] = true;
+  for (size_t i = 0; i < scene.meshes.size(); ++i)
+    if (instanced[i])
+      for (uint32_t m : scene.meshes[i].triangleMaterials)
+        if (m < emissive.size() && emissive[m]) return true;
+  return false;
+}
 
 void frameSceneBounds(Scene& scene) {
   Bounds3 bounds;

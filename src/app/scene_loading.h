@@ -27,6 +27,9 @@ struct SceneLoadOptions {
 // of memory included.
 Scene loadScene(const std::string& spec, const SceneLoadOptions& options = {});
 
+// Whether anything in the scene emits: an emissive material, a punctual light or the environment.
+bool hasLightSource(const Scene& scene);
+
 // Places the camera outside the scene's bounds, looking at their centre slightly from above, far enough back
 // that the bounding sphere fits the vertical field of view.
 void frameSceneBounds(Scene& scene);
