@@ -9,7 +9,6 @@
 #include "app/schedule/render_team.h"
 #include "core/atomic_file.h"
 #include "image/aov_io.h"
-#include "image/visible_pixels.h"
 #include "scene/animation_player.h"
 #include "scene/loaders/load_diagnostics.h"
 
@@ -130,8 +129,7 @@ int runAnimatedRender(const RenderJob& job, const AnimationRequest& request, con
     std::fprintf(stderr, "rendered %s at %g s: %ux%u at %u spp in %.2f s, %llu invalid samples dropped\n",
                  fs::path(path).filename().string().c_str(), seconds, outcome.settings.width, outcome.settings.height,
                  outcome.samplesPerPixel, outcome.seconds, (unsigned long long)outcome.stats.invalidSamples);
-    if (outcome.sceneHasLightSource && looksUnlit(outcome.image, display))
-      std::fprintf(stderr, "%s\n", kUnlitImageWarning);
+    warnWhereTheCameraSeesNoLight(outcome, display);
     for (const std::string& file : written) std::printf("%s\n", fs::absolute(file).string().c_str());
     std::fflush(stdout);
   };

@@ -27,7 +27,6 @@
 #include "core/atomic_file.h"
 #include "image/aov_io.h"
 #include "image/image_io.h"
-#include "image/visible_pixels.h"
 #include "scene/builtin_scenes.h"
 #include "scene/loaders/file_bytes.h"
 #include "scene/loaders/load_diagnostics.h"
@@ -319,8 +318,7 @@ int finishRender(const RenderJob& job, const RenderOutcome& outcome, const std::
                formatRate(samples / outcome.seconds).c_str(),
                formatRate(double(outcome.stats.rays) / outcome.seconds).c_str(),
                (unsigned long long)outcome.stats.invalidSamples);
-  if (outcome.sceneHasLightSource && looksUnlit(outcome.image, display))
-    std::fprintf(stderr, "%s\n", kUnlitImageWarning);
+  warnWhereTheCameraSeesNoLight(outcome, display);
   for (const std::string& path : written) std::printf("%s\n", std::filesystem::absolute(path).string().c_str());
   return 0;
 }

@@ -19,6 +19,7 @@
 #if CANDELA_HAS_OPTIX
 #include "backends/optix/optix_denoiser.h"
 #endif
+#include "image/visible_pixels.h"
 
 namespace candela {
 
@@ -105,6 +106,14 @@ RenderOutcome runRenderJob(const RenderJob& job, bool showProgress) {
   RenderOutcome outcome = renderLoadedScene(hinted, scene, showProgress);
   outcome.loadSeconds = loadSeconds;
   return outcome;
+}
+
+void warnWhereTheCameraSeesNoLight(const RenderOutcome& outcome, const DisplaySettings& display) {
+  if (outcome.sceneHasLightSource && looksUnlit(outcome.image, display))
+    std::fprintf(stderr,
+                 "candela: warning: the image is black in more than 99%% of its pixels: little of the scene's light "
+                 "reaches what the camera sees (is the camera inside a closed object? --camera chooses another, "
+                 "--exposure brightens the image)\n");
 }
 
 Scene loadSceneForJob(const RenderJob& job, RenderJob& hinted) {

@@ -86,5 +86,9 @@ RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool s
 // The first half of runRenderJob: the job's scene, loaded with the material overrides applied. `hinted` becomes
 // `job` with the scene file's render hints where the command line gave none.
 Scene loadSceneForJob(const RenderJob& job, RenderJob& hinted);
+// Warns in one line where the outcome's scene has light but its image, as `display` shows it, is almost all black
+// (looksUnlit): a camera inside a closed object, say, would otherwise give a black image without a word (a scene
+// without light is named when it loads).
+void warnWhereTheCameraSeesNoLight(const RenderOutcome& outcome, const DisplaySettings& display);
 
 }  // namespace candela

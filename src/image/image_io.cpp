@@ -46,9 +46,9 @@ void writeToneMappedPng(AtomicFile& file, const Image& image, const DisplaySetti
   std::vector<uint8_t> bytes(size_t(image.width) * image.height * 3);
   for (size_t i = 0; i < image.pixels.size(); ++i) {
     Vec3 c = toneMap(image.pixels[i], display.exposure, display.toneMapper);
-    bytes[3 * i + 0] = uint8_t(c.x * 255.0f + 0.5f);
-    bytes[3 * i + 1] = uint8_t(c.y * 255.0f + 0.5f);
-    bytes[3 * i + 2] = uint8_t(c.z * 255.0f + 0.5f);
+    bytes[3 * i + 0] = displayByte(c.x);
+    bytes[3 * i + 1] = displayByte(c.y);
+    bytes[3 * i + 2] = displayByte(c.z);
   }
   writePngTo(file, int(image.width), int(image.height), 3, bytes.data(), int(image.width) * 3);
 }

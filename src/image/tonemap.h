@@ -1,4 +1,6 @@
 #pragma once
+#include <cstdint>
+
 #include "core/math.h"
 
 namespace candela {
@@ -34,5 +36,8 @@ CANDELA_FN Vec3 toneMap(Vec3 radiance, float exposure, ToneMapper mapper) {
   if (mapper == ToneMapper::Reinhard) c = {reinhard(c.x), reinhard(c.y), reinhard(c.z)};
   return {linearToSrgb(c.x), linearToSrgb(c.y), linearToSrgb(c.z)};
 }
+
+// A toneMap channel in [0, 1] as the byte an 8-bit image stores.
+CANDELA_FN uint8_t displayByte(float channel) { return uint8_t(channel * 255.0f + 0.5f); }
 
 }  // namespace candela

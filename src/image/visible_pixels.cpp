@@ -9,8 +9,7 @@ double visiblePixelFraction(const Image& image, const DisplaySettings& display) 
   size_t visible = 0;
   for (const Vec3& pixel : image.pixels) {
     const Vec3 c = toneMap(pixel, display.exposure, display.toneMapper);
-    // As writeToneMappedPng quantises: a channel below half a step is 0.
-    if (c.x * 255.0f + 0.5f >= 1.0f || c.y * 255.0f + 0.5f >= 1.0f || c.z * 255.0f + 0.5f >= 1.0f) ++visible;
+    if (displayByte(c.x) > 0 || displayByte(c.y) > 0 || displayByte(c.z) > 0) ++visible;
   }
   return double(visible) / double(image.pixels.size());
 }

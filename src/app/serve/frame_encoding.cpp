@@ -17,9 +17,9 @@ DisplayImage displayImage(const Image& accumulated, const PostSettings& post) {
   DisplayImage out{image.width, image.height, std::vector<uint8_t>(image.pixels.size() * 3)};
   for (size_t i = 0; i < image.pixels.size(); ++i) {
     const Vec3 c = toneMap(image.pixels[i], post.display.exposure, post.display.toneMapper);
-    out.rgb[3 * i + 0] = uint8_t(c.x * 255.0f + 0.5f);
-    out.rgb[3 * i + 1] = uint8_t(c.y * 255.0f + 0.5f);
-    out.rgb[3 * i + 2] = uint8_t(c.z * 255.0f + 0.5f);
+    out.rgb[3 * i + 0] = displayByte(c.x);
+    out.rgb[3 * i + 1] = displayByte(c.y);
+    out.rgb[3 * i + 2] = displayByte(c.z);
   }
   return out;
 }
