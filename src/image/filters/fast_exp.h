@@ -22,17 +22,24 @@ CANDELA_FN float fastExpNonPositive(float x) {
   xBits = xBits < kMinusEightySeven ? xBits : kMinusEightySeven;
   std::memcpy(&x, &xBits, sizeof x);
 #endif
-  // x = n ln 2 + r with n = floor(x / ln 2), r in [0, ln 2); ln 2 in two parts keeps r exact (Cody and Waite).
-  const float t = x * 1.44269504f;
-  int32_t n = int32_t(t);
-  n -= float(n) > t ? 1 : 0;
+  // x = n ln 2 + r with n the integer nearest x / ln 2, so r in [-ln 2 / 2, ln 2 / 2]; ln 2 in two parts keeps r
+  // exact (Cody and Waite). Adding 1.5 * 2^23 rounds x / ln 2 to an integer, which lands in the sum's low bits.
+  constexpr float kRoundingShift = 12582912.0f;
+  constexpr int32_t kRoundingShiftBits = 0x4B400000;
+  const float shifted = x * 1.44269504f + kRoundingShift;
+#if defined(__CUDA_ARCH__)
+  const int32_t n = __float_as_int(shifted) - kRoundingShiftBits;
+#else
+  int32_t shiftedBits;
+  std::memcpy(&shiftedBits, &shifted, sizeof shiftedBits);
+  const int32_t n = shiftedBits - kRoundingShiftBits;
+#endif
   const float r = (x - float(n) * 0.693145751953125f) - float(n) * 1.42860677e-6f;
-  // e^r on [0, ln 2] = 1 + r + r^2 q(r), q through the Chebyshev nodes, relative error 6e-9. Estrin's scheme: its
-  // products are independent, so the chain of dependent operations is short and vectorised loops that call this keep
-  // more iterations in flight than Horner's scheme allows.
+  // e^r = 1 + r + r^2 q(r), q fitted to the relative error of e^r over r's interval (Lawson's algorithm), relative
+  // error 2e-7. Estrin's scheme: its products are independent, so the chain of dependent operations is short and
+  // vectorised loops that call this keep more iterations in flight than Horner's scheme allows.
   const float r2 = r * r;
-  const float q =
-      (5.0000143e-1f + 1.6664238e-1f * r) + r2 * (4.1814245e-2f + 7.9324702e-3f * r) + (r2 * r2) * 1.8770873e-3f;
+  const float q = (4.99992311e-1f + 1.66671142e-1f * r) + r2 * (4.18901481e-2f + 8.31254199e-3f * r);
   const float p = (1.0f + r) + r2 * q;
   const int32_t bits = (n + 127) << 23;
 #if defined(__CUDA_ARCH__)

@@ -1,14 +1,44 @@
 #include "image/filters/temporal.h"
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <array>
 #include <stdexcept>
+#include <vector>
 
 #include "image/filters/atrous_kernel.h"
 #include "image/filters/temporal_kernel.h"
 
 namespace candela {
+
+namespace {
+
+// previousFilmPoint of a row's pixels, field by field.
+struct PreviousFilmRow {
+  std::vector<float> px, py, expectedDepth;
+  std::vector<uint32_t> onFilm;  // 32 bits, as wide as the other fields: the loop vectorises
+  explicit PreviousFilmRow(size_t width) : px(width), py(width), expectedDepth(width), onFilm(width) {}
+  PreviousFilmPoint at(int x) const { return {px[x], py[x], expectedDepth[x], onFilm[x] != 0}; }
+};
+
+// previousFilmPoint of every pixel of row y, whose depths are `depth`, in a loop that vectorises. Compiled for
+// x86-64-v4 (AVX-512) and -v3 (AVX2, FMA) as well as the baseline instruction set, chosen at run time.
+__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"))) void previousFilmRow(
+    const Camera& current, const Camera& previous, int w, int h, int y, const float* depth, PreviousFilmRow& out) {
+  float *px = out.px.data(), *py = out.py.data(), *expectedDepth = out.expectedDepth.data();
+  uint32_t* onFilm = out.onFilm.data();
+  const Camera now = current, before = previous;  // copies, which the row's stores cannot alias
+  for (int x = 0; x < w; ++x) {
+    const PreviousFilmPoint p = previousFilmPoint(now, before, w, h, x, y, depth[x]);
+    px[x] = p.px;
+    py[x] = p.py;
+    expectedDepth[x] = p.expectedDepth;
+    onFilm[x] = uint32_t(p.onFilm);
+  }
+}
+
+}  // namespace
 
 void validateTemporalParams(const TemporalParams& params) {
   validateAtrousParams(params.atrous);
@@ -52,26 +82,31 @@ Image TemporalFilter::filter(const TemporalFrame& frame) {
 
   // The history this film starts from: the last frame's reprojected, unless the film goes on from that frame's.
   if (!frame.filmContinues) {
-    tbb::parallel_for(0, h, [&](int y) {
-      for (int x = 0; x < w; ++x) {
-        const size_t i = size_t(y) * w + x;
-        TemporalSample s;
-        if (haveHistory_) {
-          auto historyAt = [&](int qx, int qy, TemporalGuides& guides) {
-            const size_t q = size_t(qy) * w + qx;
-            guides = {last_.normal[q], last_.depth[q], last_.emissive[q] != 0};
-            return TemporalSample{last_.reflected[q], last_.emission[q], last_.length[q], last_.moment1[q],
-                                  last_.moment2[q]};
-          };
-          const TemporalGuides guides{unitOrZero(aovs.normal.pixels[i]), aovs.depth[i],
-                                      isEmissive(aovs.emission.pixels[i])};
-          s = reprojectHistory(frame.camera, camera_, w, h, x, y, guides, limits, historyAt);
+    tbb::parallel_for(tbb::blocked_range<int>(0, h), [&](const tbb::blocked_range<int>& rows) {
+      PreviousFilmRow points{size_t(w)};
+      for (int y = rows.begin(); y < rows.end(); ++y) {
+        const size_t row = size_t(y) * w;
+        if (haveHistory_) previousFilmRow(frame.camera, camera_, w, h, y, aovs.depth.data() + row, points);
+        for (int x = 0; x < w; ++x) {
+          const size_t i = row + x;
+          TemporalSample s;
+          if (haveHistory_) {
+            auto historyAt = [&](int qx, int qy, TemporalGuides& guides) {
+              const size_t q = size_t(qy) * w + qx;
+              guides = {last_.normal[q], last_.depth[q], last_.emissive[q] != 0};
+              return TemporalSample{last_.reflected[q], last_.emission[q], last_.length[q], last_.moment1[q],
+                                    last_.moment2[q]};
+            };
+            const TemporalGuides guides{unitOrZero(aovs.normal.pixels[i]), aovs.depth[i],
+                                        isEmissive(aovs.emission.pixels[i])};
+            s = gatherHistory(points.at(x), w, h, guides, limits, historyAt);
+          }
+          base_.reflected[i] = s.reflected;
+          base_.emission[i] = s.emission;
+          base_.length[i] = s.length;
+          base_.moment1[i] = s.moment1;
+          base_.moment2[i] = s.moment2;
         }
-        base_.reflected[i] = s.reflected;
-        base_.emission[i] = s.emission;
-        base_.length[i] = s.length;
-        base_.moment1[i] = s.moment1;
-        base_.moment2[i] = s.moment2;
       }
     });
   }

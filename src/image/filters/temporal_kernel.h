@@ -36,15 +36,22 @@ CANDELA_FN Vec3 cameraDirection(const Camera& camera, float px, float py, int w,
 }
 
 // Where `offset` (a point minus the camera's position, or a direction for a point at infinity) lands on the film of
-// `camera` (w x h pixels, (0, 0) the top-left corner); false where it lies behind the camera.
-CANDELA_FN bool projectToFilm(const Camera& camera, Vec3 offset, int w, int h, float& px, float& py) {
+// `camera` (w x h pixels, (0, 0) the top-left corner), and a number that is positive where it lies in front of the
+// camera (px, py are then finite or infinite; otherwise they mean nothing). Without branches, so that loops over
+// pixels vectorise.
+CANDELA_FN float filmPosition(const Camera& camera, Vec3 offset, int w, int h, float& px, float& py) {
   const float z = dot(offset, camera.forward);
-  if (!(z > 1e-6f * sqrtf(dot(offset, offset)))) return false;
-  const float sx = dot(offset, camera.right) / (dot(camera.right, camera.right) * z);
-  const float sy = dot(offset, camera.up) / (dot(camera.up, camera.up) * z);
+  const float inverseZ = 1.0f / (z > 0.0f ? z : 1.0f);
+  const float sx = dot(offset, camera.right) / dot(camera.right, camera.right) * inverseZ;
+  const float sy = dot(offset, camera.up) / dot(camera.up, camera.up) * inverseZ;
   px = (sx + 1.0f) * 0.5f * float(w);
   py = (1.0f - sy) * 0.5f * float(h);
-  return fabsf(px) < 1e9f && fabsf(py) < 1e9f;
+  return z - 1e-6f * sqrtf(dot(offset, offset));
+}
+
+// filmPosition where the point lies in front of the camera and lands within 1e9 pixels; false elsewhere.
+CANDELA_FN bool projectToFilm(const Camera& camera, Vec3 offset, int w, int h, float& px, float& py) {
+  return filmPosition(camera, offset, w, h, px, py) > 0.0f && fabsf(px) < 1e9f && fabsf(py) < 1e9f;
 }
 
 // Whether a pixel of this mean emission shows an emitter.
@@ -65,27 +72,46 @@ CANDELA_FN bool sameSurface(TemporalGuides history, TemporalGuides current, floa
   return dot(history.normal, current.normal) >= limits.normalTolerance;
 }
 
-// The history of pixel (x, y), whose first hit lies at guides.depth along its centre ray from `current` (0: the path
-// escaped), reprojected from the previous frame seen by `previous`: the bilinear mix of
-// the (up to four) previous pixels around the point's previous position that show the same surface. No history
-// (length 0) where none does or the point was off the previous film. historyAt(qx, qy, guides) returns the
+// Where the first hit of pixel (x, y) lay on the previous film: the film point (px, py) in pixels at which the
+// previous camera saw it, and the distance it then lay at (0 for a path that escaped: then the point is the
+// direction's, at infinity). `onFilm` is false where the point lay behind the previous camera or off its film.
+// Without branches, so that a CPU loop over a row of pixels vectorises.
+struct PreviousFilmPoint {
+  float px, py, expectedDepth;
+  bool onFilm;
+};
+
+CANDELA_FN PreviousFilmPoint previousFilmPoint(const Camera& current, const Camera& previous, int w, int h, int x,
+                                               int y, float depth) {
+  const Vec3 direction = cameraDirection(current, float(x) + 0.5f, float(y) + 0.5f, w, h);
+  const bool escaped = depth == 0.0f;
+  const Vec3 offset = escaped ? direction : current.position + direction * depth - previous.position;
+  PreviousFilmPoint p;
+  const float front = filmPosition(previous, offset, w, h, p.px, p.py);
+  p.expectedDepth = escaped ? 0.0f : sqrtf(dot(offset, offset));
+  // In front of the camera, px in (-0.5, w + 1.5) and py likewise: where a pixel around the point lies inside the
+  // film (at px = -0.5 exactly only pixel -1 has weight). One comparison of the least margin rather than a chain of
+  // them keeps the CPU loop vectorisable (as minima by comparison: fminf does not vectorise). A NaN px or py comes
+  // only with a NaN front, which the last minimum keeps.
+  auto least = [](float a, float b) { return a < b ? a : b; };
+  const float margin = least(least(p.px + 0.5f, p.py + 0.5f), least(float(w) + 1.5f - p.px, float(h) + 1.5f - p.py));
+  p.onFilm = least(margin, front) > 0.0f;
+  return p;
+}
+
+// The history of a pixel with `guides` whose first hit the previous camera saw at `point`, reprojected from the
+// previous frame: the bilinear mix of the (up to four) previous pixels around point that show the same surface. No
+// history (length 0) where none does or the point was off the previous film. historyAt(qx, qy, guides) returns the
 // TemporalSample of previous pixel (qx, qy), inside the film, and sets its guides.
 template <class HistoryAt>
-CANDELA_HD TemporalSample reprojectHistory(const Camera& current, const Camera& previous, int w, int h, int x, int y,
-                                           TemporalGuides guides, const TemporalLimits& limits,
-                                           const HistoryAt& historyAt) {
+CANDELA_HD TemporalSample gatherHistory(const PreviousFilmPoint& point, int w, int h, TemporalGuides guides,
+                                        const TemporalLimits& limits, const HistoryAt& historyAt) {
   TemporalSample none;
-  const Vec3 direction = cameraDirection(current, float(x) + 0.5f, float(y) + 0.5f, w, h);
-  const bool escaped = guides.depth == 0.0f;
-  const Vec3 offset = escaped ? direction : current.position + direction * guides.depth - previous.position;
-  float px, py;
-  if (!projectToFilm(previous, offset, w, h, px, py)) return none;
-  const float fx = px - 0.5f, fy = py - 0.5f;
+  if (!point.onFilm) return none;
+  const float fx = point.px - 0.5f, fy = point.py - 0.5f;
   const float x0f = floorf(fx), y0f = floorf(fy);
-  if (x0f < -1.0f || y0f < -1.0f || x0f > float(w) || y0f > float(h)) return none;
   const int x0 = int(x0f), y0 = int(y0f);
   const float tx = fx - x0f, ty = fy - y0f;
-  const float expectedDepth = escaped ? 0.0f : sqrtf(dot(offset, offset));
   TemporalSample sum;
   float weights = 0.0f;
   for (int dy = 0; dy <= 1; ++dy)
@@ -96,7 +122,7 @@ CANDELA_HD TemporalSample reprojectHistory(const Camera& current, const Camera& 
       if (weight <= 0.0f) continue;
       TemporalGuides qGuides;
       const TemporalSample q = historyAt(qx, qy, qGuides);
-      if (q.length <= 0.0f || !sameSurface(qGuides, guides, expectedDepth, limits)) continue;
+      if (q.length <= 0.0f || !sameSurface(qGuides, guides, point.expectedDepth, limits)) continue;
       sum.reflected = sum.reflected + q.reflected * weight;
       sum.emission = sum.emission + q.emission * weight;
       sum.length += q.length * weight;
@@ -112,6 +138,15 @@ CANDELA_HD TemporalSample reprojectHistory(const Camera& current, const Camera& 
   sum.moment2 *= inverse;
   sum.length = fminf(sum.length * inverse, limits.maxHistory);
   return sum;
+}
+
+// The history of pixel (x, y), whose first hit lies at guides.depth along its centre ray from `current` (0: the path
+// escaped), reprojected from the previous frame seen by `previous` (gatherHistory at previousFilmPoint).
+template <class HistoryAt>
+CANDELA_HD TemporalSample reprojectHistory(const Camera& current, const Camera& previous, int w, int h, int x, int y,
+                                           TemporalGuides guides, const TemporalLimits& limits,
+                                           const HistoryAt& historyAt) {
+  return gatherHistory(previousFilmPoint(current, previous, w, h, x, y, guides.depth), w, h, guides, limits, historyAt);
 }
 
 // The history `base` (length in samples' worth) and the current film's mean of `samples` samples, weighted by their
