@@ -211,6 +211,24 @@ NonZeroColumns outputColumns(const std::vector<NonZeroColumns>& columns, int y, 
   return first < last ? NonZeroColumns{first, last} : NonZeroColumns{};
 }
 
+// The weighted means of a row's sums in columns [cols.first, cols.last) into the row of `out` that starts at pixel
+// `row`, zero in its other columns. The centre tap's weight is b3(0)^2 > 0: the sum of weights is never zero where
+// taps were summed.
+__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"))) void writeWeightedMeans(
+    const RowSums& sums, NonZeroColumns cols, const RgbPlanes& out, size_t row, int w) {
+  const float *sr = sums.r.data(), *sg = sums.g.data(), *sb = sums.b.data(), *sw = sums.weight.data();
+  float *r = out.r + row, *g = out.g + row, *b = out.b + row;
+  for (int x = 0; x < cols.first; ++x) r[x] = g[x] = b[x] = 0.0f;
+#pragma GCC ivdep  // the sums and the planes never overlap
+  for (int x = cols.first; x < cols.last; ++x) {
+    const Vec3 mean = Vec3{sr[x], sg[x], sb[x]} / sw[x];
+    r[x] = mean.x;
+    g[x] = mean.y;
+    b[x] = mean.z;
+  }
+  for (int x = cols.last; x < w; ++x) r[x] = g[x] = b[x] = 0.0f;
+}
+
 // What a pass needs of one signal.
 struct PassSignal {
   RgbPlanes in, out;
@@ -307,14 +325,7 @@ void atrousPass(Planes& planes, PassSignal* signals, int count, int w, int h, co
         for (int s = 0; s < count; ++s)
           if (cols[s].first < cols[s].last) sumTaps(cols[s].first, cols[s].last, s);
       }
-      // The centre tap's weight is b3(0)^2 > 0: the sum of weights is never zero where taps were summed.
-      for (int s = 0; s < count; ++s) {
-        const RowSums& sum = sums[s];
-        for (int x = 0; x < w; ++x)
-          signals[s].out.set(row + x, x >= cols[s].first && x < cols[s].last
-                                          ? Vec3{sum.r[x], sum.g[x], sum.b[x]} / sum.weight[x]
-                                          : Vec3{});
-      }
+      for (int s = 0; s < count; ++s) writeWeightedMeans(sums[s], cols[s], signals[s].out, row, w);
     }
   });
 }
@@ -349,6 +360,11 @@ void AtrousWorkspace::setGuides(const AovImages& guides) {
   }
   Planes planes{*stack_};
   fillGuides(guides, planes);
+}
+
+RgbPlanes AtrousWorkspace::unitNormals() {
+  Planes planes{*stack_};
+  return {planes[kNx], planes[kNy], planes[kNz]};
 }
 
 RgbPlanes AtrousWorkspace::signal(int which) { return Planes{*stack_}.colour(which, 0); }

@@ -53,6 +53,8 @@ class AtrousWorkspace {
   // The guide planes from the AOVs' normals and depths; the planes are made for their size, or kept from the last
   // call where it is the same.
   void setGuides(const AovImages& guides);
+  // The unit normals (zero where the path escaped) setGuides made of the AOVs', x, y and z in the three planes.
+  RgbPlanes unitNormals();
   // Where runPasses starts: the caller writes signal `which` (0 or 1) there (after setGuides).
   RgbPlanes signal(int which);
   // The passes on signals 0 to signalCount - 1 (1 or 2), guided by the guides set, each as if filtered alone.

@@ -80,6 +80,10 @@ Image TemporalFilter::filter(const TemporalFrame& frame) {
   const TemporalLimits limits{params_.maxHistory, params_.depthTolerance, params_.normalTolerance};
   const AovImages& aovs = frame.aovs;
 
+  // The guides of the a-trous passes, whose unit normals the reprojection and the new history take too.
+  workspace_.setGuides(aovs);
+  const RgbPlanes normals = workspace_.unitNormals();
+
   // The history this film starts from: the last frame's reprojected, unless the film goes on from that frame's.
   if (!frame.filmContinues) {
     tbb::parallel_for(tbb::blocked_range<int>(0, h), [&](const tbb::blocked_range<int>& rows) {
@@ -97,8 +101,7 @@ Image TemporalFilter::filter(const TemporalFrame& frame) {
               return TemporalSample{last_.reflected[q], last_.emission[q], last_.length[q], last_.moment1[q],
                                     last_.moment2[q]};
             };
-            const TemporalGuides guides{unitOrZero(aovs.normal.pixels[i]), aovs.depth[i],
-                                        isEmissive(aovs.emission.pixels[i])};
+            const TemporalGuides guides{normals.get(i), aovs.depth[i], isEmissive(aovs.emission.pixels[i])};
             s = gatherHistory(points.at(x), w, h, guides, limits, historyAt);
           }
           base_.reflected[i] = s.reflected;
@@ -113,7 +116,6 @@ Image TemporalFilter::filter(const TemporalFrame& frame) {
 
   // The film added to it, straight into the planes of the a-trous passes: the reflected light and the accumulated
   // emission (kept in the new history too).
-  workspace_.setGuides(aovs);
   const RgbPlanes signal = workspace_.signal(0), emissionSignal = workspace_.signal(1);
   variance_.resize(pixels);
   const float samples = float(frame.samples > 0 ? frame.samples : 1);
@@ -130,7 +132,7 @@ Image TemporalFilter::filter(const TemporalFrame& frame) {
     last_.length[i] = s.length;
     last_.moment1[i] = s.moment1;
     last_.moment2[i] = s.moment2;
-    last_.normal[i] = unitOrZero(aovs.normal.pixels[i]);
+    last_.normal[i] = normals.get(i);
     last_.depth[i] = aovs.depth[i];
     last_.emissive[i] = isEmissive(s.emission);
   });
