@@ -1,6 +1,6 @@
 #pragma once
-// What the convergence benchmarks share: their common options, relMSE against a reference, timed progressive
-// renders, and reading a relMSE-against-time curve at a given time.
+// What the convergence benchmarks share: their common options, relMSE against a reference (temporal_orbit's measure
+// too), timed progressive renders, and reading a relMSE-against-time curve at a given time.
 #include <CLI/CLI.hpp>
 
 #include <algorithm>

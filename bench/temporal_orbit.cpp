@@ -18,21 +18,12 @@
 #include "app/camera_path.h"
 #include "app/scene_loading.h"
 #include "backends/cpu/cpu_backend.h"
+#include "convergence.h"
 #include "image/filters/temporal.h"
 #include "image/image_io.h"
 
 namespace candela {
 namespace {
-
-double relMse(const Image& image, const Image& reference) {
-  double sum = 0.0;
-  for (size_t i = 0; i < image.pixels.size(); ++i)
-    for (int c = 0; c < 3; ++c) {
-      const double r = reference.pixels[i][c], d = image.pixels[i][c] - r;
-      sum += d * d / (r * r + 0.01);
-    }
-  return sum / (3.0 * double(image.pixels.size()));
-}
 
 struct Stability {
   double sum = 0.0, referenceSum = 0.0;
@@ -96,7 +87,8 @@ int main(int argc, char** argv) {
       const AovImages aovs = noisy.readAovs();
       const Image spatial = atrousDenoise(raw, aovs, AtrousParams{});
       const Image filtered = temporal.filter({raw, aovs, camera, 1, false});
-      const double r = relMse(raw, reference), s = relMse(spatial, reference), t = relMse(filtered, reference);
+      const double r = bench::relMse(raw, reference), s = bench::relMse(spatial, reference),
+                   t = bench::relMse(filtered, reference);
       if (f % 10 == 0 || f + 1 == frames) std::printf("| %u | %.4f | %.4f | %.4f |\n", f, r, s, t);
       if (f >= frames - frames / 4) {
         tailRaw += r;

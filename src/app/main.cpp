@@ -38,6 +38,16 @@ using namespace candela;
 
 namespace {
 
+// The scene, built-in or a file, its --env and its --camera.
+void addSceneOptions(CLI::App& cmd, std::string& sceneSpec, std::string& environmentPath, std::string& camera) {
+  std::string scenes;
+  for (const std::string& n : builtinSceneNames()) scenes += (scenes.empty() ? "" : ", ") + n;
+  cmd.add_option("scene", sceneSpec, "Scene file (.obj, .gltf, .glb, .pbrt, .json) or built-in scene (" + scenes + ")")
+      ->capture_default_str();
+  cmd.add_option("--env", environmentPath, "Environment map (.hdr or .exr) that lights the scene");
+  cmd.add_option("--camera", camera, "The scene's camera to take, by name or index (default: the first)");
+}
+
 // How scene files are read. The scene cache is on for the commands; the library's default is off.
 void addSceneInputOptions(CLI::App& cmd, SceneCacheSettings& cache, OutsidePaths& outsidePaths) {
   cache.enabled = true;
@@ -57,9 +67,12 @@ void addSceneInputOptions(CLI::App& cmd, SceneCacheSettings& cache, OutsidePaths
       ->check(CLI::Range(0.001, 1e6));
 }
 
-// --devices: the GPUs of the optix backend. A malformed list is a usage error; GPUs that are not there are found
-// when the backend starts.
-void addDevicesOption(CLI::App& cmd, DeviceRequest& devices) {
+// --backend, and --devices (the GPUs of the optix backend). A malformed device list is a usage error; GPUs that are
+// not there are found when the backend starts.
+void addBackendOptions(CLI::App& cmd, std::string& backend, DeviceRequest& devices) {
+  cmd.add_option("--backend", backend, "auto, cpu or optix (in this build: " + availableBackends() + ")")
+      ->check(CLI::IsMember({"auto", "cpu", "optix"}))
+      ->capture_default_str();
   cmd.add_option_function<std::string>(
          "--devices", [&devices](const std::string& text) { devices = parseDeviceRequest(text); },
          "GPUs to render on, optix backend: all (every GPU of the kind of GPU 0) or CUDA indices like 0,1; each "
@@ -78,7 +91,10 @@ void addDevicesOption(CLI::App& cmd, DeviceRequest& devices) {
       ->default_str("all");
 }
 
-void addSamplerOption(CLI::App& cmd, SamplerKind& sampler) {
+// --seed and --sampler: the random numbers of the paths.
+void addRandomSequenceOptions(CLI::App& cmd, uint32_t& seed, SamplerKind& sampler,
+                              const std::string& seedHelp = "Seed of the random sequence") {
+  cmd.add_option("--seed", seed, seedHelp)->capture_default_str();
   cmd.add_option_function<std::string>(
          "--sampler",
          [&sampler](const std::string& name) {
@@ -88,6 +104,13 @@ void addSamplerOption(CLI::App& cmd, SamplerKind& sampler) {
          "(white noise)")
       ->check(CLI::IsMember({"sobol", "independent"}))
       ->default_str("sobol");
+}
+
+// --tonemap, the tone mapper's name (parseToneMapper); `what` begins the help.
+void addToneMapperOption(CLI::App& cmd, std::string& toneMapper, const std::string& what = "Tone mapper") {
+  cmd.add_option("--tonemap", toneMapper, what + ": aces, reinhard or clamp (linear)")
+      ->check(CLI::IsMember({"aces", "reinhard", "clamp"}))
+      ->capture_default_str();
 }
 
 const char* textureFilterName(TextureFilter filter) {
@@ -137,13 +160,7 @@ void addTextureLimitOptions(CLI::App& cmd, TextureLimits& limits) {
 }
 
 void addRenderOptions(CLI::App& cmd, RenderJob& job) {
-  std::string scenes;
-  for (const std::string& n : builtinSceneNames()) scenes += (scenes.empty() ? "" : ", ") + n;
-  cmd.add_option("scene", job.sceneSpec,
-                 "Scene file (.obj, .gltf, .glb, .pbrt, .json) or built-in scene (" + scenes + ")")
-      ->capture_default_str();
-  cmd.add_option("--env", job.environmentPath, "Environment map (.hdr or .exr) that lights the scene");
-  cmd.add_option("--camera", job.camera, "The scene's camera to take, by name or index (default: the first)");
+  addSceneOptions(cmd, job.sceneSpec, job.environmentPath, job.camera);
   addSceneInputOptions(cmd, job.sceneCache, job.outsidePaths);
   addTextureLimitOptions(cmd, job.textureLimits);
   cmd.add_option("--spp", job.samplesPerPixel, "Samples per pixel")
@@ -159,9 +176,8 @@ void addRenderOptions(CLI::App& cmd, RenderJob& job) {
                  "Longest path in bounces after the camera ray (1 = direct light only)")
       ->check(CLI::Range(1u, 1024u))
       ->capture_default_str();
-  cmd.add_option("--seed", job.settings.seed, "Seed of the random sequence; same seed, same image")
-      ->capture_default_str();
-  addSamplerOption(cmd, job.settings.sampler);
+  addRandomSequenceOptions(cmd, job.settings.seed, job.settings.sampler,
+                           "Seed of the random sequence; same seed, same image");
   addTextureFilterOption(cmd, job.settings.textureFilter);
   addLightSamplerOption(cmd, job.settings.lightSampler);
   // Validated while parsing, so a bad value is a usage error (exit status 2) like any other.
@@ -196,10 +212,7 @@ void addRenderOptions(CLI::App& cmd, RenderJob& job) {
         MaterialOverrides scratch;
         parseOverride(scratch, assignment);
       }));
-  cmd.add_option("--backend", job.backend, "auto, cpu or optix (in this build: " + availableBackends() + ")")
-      ->check(CLI::IsMember({"auto", "cpu", "optix"}))
-      ->capture_default_str();
-  addDevicesOption(cmd, job.devices);
+  addBackendOptions(cmd, job.backend, job.devices);
 }
 
 // --time, --frames, --fps and --animation of `candela render` (animation_render.h).
@@ -485,19 +498,10 @@ int runLoad(const std::string& spec, const SceneLoadOptions& options) {
 }
 
 void addViewOptions(CLI::App& cmd, ViewerOptions& options, std::string& toneMapper) {
-  std::string scenes;
-  for (const std::string& n : builtinSceneNames()) scenes += (scenes.empty() ? "" : ", ") + n;
-  cmd.add_option("scene", options.sceneSpec,
-                 "Scene file (.obj, .gltf, .glb, .pbrt, .json) or built-in scene (" + scenes + ")")
-      ->capture_default_str();
-  cmd.add_option("--env", options.environmentPath, "Environment map (.hdr or .exr) that lights the scene");
-  cmd.add_option("--camera", options.camera, "The scene's camera to take, by name or index (default: the first)");
+  addSceneOptions(cmd, options.sceneSpec, options.environmentPath, options.camera);
   addSceneInputOptions(cmd, options.sceneCache, options.outsidePaths);
   addTextureLimitOptions(cmd, options.textureLimits);
-  cmd.add_option("--backend", options.backend, "auto, cpu or optix (in this build: " + availableBackends() + ")")
-      ->check(CLI::IsMember({"auto", "cpu", "optix"}))
-      ->capture_default_str();
-  addDevicesOption(cmd, options.devices);
+  addBackendOptions(cmd, options.backend, options.devices);
   cmd.add_flag_callback(
       "--no-interop", [&options] { options.interop = false; },
       "OptiX backend: show the image through a copy to the host, not CUDA-OpenGL interop");
@@ -510,8 +514,7 @@ void addViewOptions(CLI::App& cmd, ViewerOptions& options, std::string& toneMapp
   cmd.add_option("--max-depth", options.maxDepth, "Longest path in bounces after the camera ray")
       ->check(CLI::Range(1u, 1024u))
       ->capture_default_str();
-  cmd.add_option("--seed", options.seed, "Seed of the random sequence")->capture_default_str();
-  addSamplerOption(cmd, options.sampler);
+  addRandomSequenceOptions(cmd, options.seed, options.sampler);
   addLightSamplerOption(cmd, options.lightSampler);
   cmd.add_option("--spp-per-frame", options.samplesPerFrame, "Samples per pixel added each frame at rest")
       ->check(CLI::Range(1u, 1024u))
@@ -523,9 +526,7 @@ void addViewOptions(CLI::App& cmd, ViewerOptions& options, std::string& toneMapp
                  "Denoiser to start with (the panel switches it): none; atrous; optix (the OptiX AI denoiser)")
       ->transform(CLI::CheckedTransformer(denoisers, CLI::ignore_case))
       ->default_str("none");
-  cmd.add_option("--tonemap", toneMapper, "Tone mapper: aces, reinhard or clamp (linear)")
-      ->check(CLI::IsMember({"aces", "reinhard", "clamp"}))
-      ->capture_default_str();
+  addToneMapperOption(cmd, toneMapper);
   CLI::Option* frames =
       cmd.add_option("--frames", options.frames, "Render this many frames, then exit (0: until the window closes)")
           ->capture_default_str();
@@ -559,10 +560,7 @@ void addServeOptions(CLI::App& cmd, ServeOptions& options, std::string& toneMapp
       ->capture_default_str();
   cmd.add_option("--env", options.environmentPath, "Environment map (.hdr or .exr) that lights the scene");
   addSceneInputOptions(cmd, options.sceneCache, options.outsidePaths);
-  cmd.add_option("--backend", options.backend, "auto, cpu or optix (in this build: " + availableBackends() + ")")
-      ->check(CLI::IsMember({"auto", "cpu", "optix"}))
-      ->capture_default_str();
-  addDevicesOption(cmd, options.devices);
+  addBackendOptions(cmd, options.backend, options.devices);
   cmd.add_option("--port", options.port, "TCP port to listen on (0: any free port)")->capture_default_str();
   cmd.add_option("--bind", options.bind, "Address to listen on; any but loopback requires a token")
       ->capture_default_str();
@@ -577,16 +575,13 @@ void addServeOptions(CLI::App& cmd, ServeOptions& options, std::string& toneMapp
   cmd.add_option("--max-depth", options.maxDepth, "Longest path in bounces after the camera ray")
       ->check(CLI::Range(1u, 64u))
       ->capture_default_str();
-  cmd.add_option("--seed", options.seed, "Seed of the random sequence")->capture_default_str();
-  addSamplerOption(cmd, options.sampler);
+  addRandomSequenceOptions(cmd, options.seed, options.sampler);
   addLightSamplerOption(cmd, options.lightSampler);
   cmd.add_option("--spp-per-frame", options.samplesPerFrame, "Samples per pixel added each frame at rest")
       ->check(CLI::Range(1u, 64u))
       ->capture_default_str();
   cmd.add_option("--exposure", options.post.display.exposure, "Exposure in stops")->capture_default_str();
-  cmd.add_option("--tonemap", toneMapper, "Tone mapper: aces, reinhard or clamp (linear)")
-      ->check(CLI::IsMember({"aces", "reinhard", "clamp"}))
-      ->capture_default_str();
+  addToneMapperOption(cmd, toneMapper);
   cmd.add_option("--frames", options.frames, "Send this many frames, then exit (0: until interrupted)")
       ->capture_default_str();
 }
@@ -631,9 +626,7 @@ int main(int argc, char** argv) {
   render->add_option("--exposure", display.exposure, "Exposure in stops, for .png")->capture_default_str();
   AnimationRequest animation;
   addAnimationOptions(*render, animation);
-  render->add_option("--tonemap", toneMapper, "Tone mapper for .png: aces, reinhard or clamp (linear)")
-      ->check(CLI::IsMember({"aces", "reinhard", "clamp"}))
-      ->capture_default_str();
+  addToneMapperOption(*render, toneMapper, "Tone mapper for .png");
   render
       ->add_option("--denoise", renderJob.denoiser,
                    "Denoiser: none; atrous (edge-avoiding a-trous guided by albedo, normal and depth); bilateral; "

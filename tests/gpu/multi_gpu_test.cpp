@@ -15,7 +15,7 @@
 #include "backends/optix/cuda_devices.h"
 #include "backends/optix/multi_gpu_backend.h"
 #include "gpu_render.h"
-#include "scene/material_overrides.h"
+#include "support/scene_edits.h"
 
 namespace candela {
 namespace {
@@ -235,11 +235,7 @@ const auto kNothing = [](Backend&) {};
 
 TEST(MultiGpu, MaterialEditReachesEveryDevice) {
   const Scene original = makeMaterialGallery();
-  Scene edited = original;
-  MaterialOverrides overrides;
-  overrides.shading = ShadingModel::Pbr;
-  overrides.roughness = 0.2f;
-  applyOverrides(edited.materials, overrides);
+  const Scene edited = test::withMaterialEdit(original);
   expectEditReachesEveryDevice(
       original, edited, [&](Backend& b) { EXPECT_TRUE(b.setMaterials(edited.materials)); }, kNothing);
 }

@@ -57,13 +57,17 @@ void expectSameImage(const Image& a, const Image& b) {
   EXPECT_EQ(differing, 0u) << "of " << a.pixels.size() << " pixels";
 }
 
-void expectMaterialEditMatchesRebuild(const BackendFactory& makeBackend) {
-  const Scene original = makeMaterialGallery();
-  Scene edited = original;
+Scene withMaterialEdit(Scene scene) {
   MaterialOverrides overrides;
   overrides.shading = ShadingModel::Pbr;
   overrides.roughness = 0.2f;
-  applyOverrides(edited.materials, overrides);
+  applyOverrides(scene.materials, overrides);
+  return scene;
+}
+
+void expectMaterialEditMatchesRebuild(const BackendFactory& makeBackend) {
+  const Scene original = makeMaterialGallery();
+  const Scene edited = withMaterialEdit(original);
   Image afterEdit =
       renderEdited(makeBackend, original, [&](Backend& b) { EXPECT_TRUE(b.setMaterials(edited.materials)); });
   Image rebuilt = renderRebuilt(makeBackend, edited);

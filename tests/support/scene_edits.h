@@ -15,7 +15,10 @@ using BackendFactory = std::function<std::unique_ptr<Backend>()>;
 // Expects two images equal bit for bit.
 void expectSameImage(const Image& a, const Image& b);
 
-// The material gallery re-shaded with the PBR model and an overridden roughness.
+// The material edit of these checks: `scene` with every material re-shaded with the PBR model at roughness 0.2.
+Scene withMaterialEdit(Scene scene);
+
+// The material gallery edited by withMaterialEdit.
 void expectMaterialEditMatchesRebuild(const BackendFactory& makeBackend);
 
 // The material gallery's uniform sky replaced by a small map, scaled and turned.
