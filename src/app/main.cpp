@@ -556,7 +556,7 @@ int runView(ViewerOptions options, const std::string& toneMapper) {
 }
 
 void addServeOptions(CLI::App& cmd, ServeOptions& options, std::string& toneMapper) {
-  cmd.add_option("scene", options.sceneSpec, "Scene file (.obj, .gltf, .glb, .json) or built-in scene")
+  cmd.add_option("scene", options.sceneSpec, "Scene file (.obj, .gltf, .glb, .pbrt, .json) or built-in scene")
       ->capture_default_str();
   cmd.add_option("--env", options.environmentPath, "Environment map (.hdr or .exr) that lights the scene");
   addSceneInputOptions(cmd, options.sceneCache, options.outsidePaths);
