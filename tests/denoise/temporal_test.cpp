@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 #include "app/camera_path.h"
 #include "denoise_support.h"
@@ -60,6 +61,41 @@ TEST(TemporalReprojection, FindsThePixelThatSawThePoint) {
   TemporalGuides emitter = guides;
   emitter.emissive = true;
   EXPECT_EQ(reprojectHistory(current, previous, w, h, x, y, emitter, limits, historyAt).length, 0.0f);
+}
+
+// Where the previous camera could not have seen a pixel's first hit, the pixel has no history: a point behind it,
+// one off its film (past the half pixel whose neighbours still lie on it), and depths that are not finite.
+TEST(TemporalReprojection, NoHistoryBehindTheCameraOffTheFilmOrForNonFiniteDepths) {
+  const int w = 32, h = 24;
+  const Camera current = Camera::lookAt({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 40.0f, float(w) / float(h));
+  // The centre pixel's hit 5 units ahead; seen from the same place, it lands at the film's centre.
+  const PreviousFilmPoint same = previousFilmPoint(current, current, w, h, 15, 11, 5.0f);
+  EXPECT_TRUE(same.onFilm);
+  EXPECT_NEAR(same.px, 15.5f, 1e-3f);
+  EXPECT_NEAR(same.py, 11.5f, 1e-3f);
+  EXPECT_NEAR(same.expectedDepth, 5.0f, 1e-3f);
+  // A previous camera past the point, looking the same way: the point lies behind it.
+  const Camera passed = Camera::lookAt({0, 0, -1}, {0, 0, -6}, {0, 1, 0}, 40.0f, float(w) / float(h));
+  EXPECT_FALSE(previousFilmPoint(current, passed, w, h, 15, 11, 5.0f).onFilm);
+  // A previous camera turned 90 degrees: the point lies in its image plane, far off the film.
+  const Camera turned = Camera::lookAt({0, 0, 5}, {5, 0, 5}, {0, 1, 0}, 40.0f, float(w) / float(h));
+  EXPECT_FALSE(previousFilmPoint(current, turned, w, h, 15, 11, 5.0f).onFilm);
+  // Shifted sideways until the point lands just off the film's right edge, then just inside its last half pixel.
+  auto shiftedBy = [&](float dx) {
+    return Camera::lookAt({dx, 0, 5}, {dx, 0, 0}, {0, 1, 0}, 40.0f, float(w) / float(h));
+  };
+  const float pixelWidth = 2.0f * 5.0f * std::tan(0.5f * 40.0f * 3.14159265f / 180.0f) * float(w) / float(h) / float(w);
+  const PreviousFilmPoint inside = previousFilmPoint(current, shiftedBy(-pixelWidth * 17.9f), w, h, 15, 11, 5.0f);
+  EXPECT_TRUE(inside.onFilm) << inside.px;
+  EXPECT_GT(inside.px, float(w) + 1.0f);
+  EXPECT_FALSE(previousFilmPoint(current, shiftedBy(-pixelWidth * 18.1f), w, h, 15, 11, 5.0f).onFilm);
+  for (float depth : {std::numeric_limits<float>::infinity(), std::numeric_limits<float>::quiet_NaN(), -1e30f})
+    EXPECT_FALSE(previousFilmPoint(current, shiftedBy(0.1f), w, h, 15, 11, depth).onFilm) << depth;
+  // An escaped path (depth 0) is a direction: seen from anywhere nearby, at the same place on the film.
+  const PreviousFilmPoint sky = previousFilmPoint(current, shiftedBy(0.1f), w, h, 15, 11, 0.0f);
+  EXPECT_TRUE(sky.onFilm);
+  EXPECT_NEAR(sky.px, 15.5f, 1e-3f);
+  EXPECT_EQ(sky.expectedDepth, 0.0f);
 }
 
 // Along a slow orbit of the Cornell box at one sample per frame, the temporal filter's frames change less from one
