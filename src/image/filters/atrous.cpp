@@ -407,8 +407,8 @@ Image atrousDenoise(const Image& color, const AovImages& aovs, const AtrousParam
     reflectedIn.set(i, demodulate(color.pixels[i], aovs.emission.pixels[i], aovs.albedo.pixels[i]));
   });
   // Where the camera sees no emission the second signal's planes are left untouched (not even mapped).
-  const bool emission = std::any_of(aovs.emission.pixels.begin(), aovs.emission.pixels.end(),
-                                    [](Vec3 e) { return e.x != 0.0f || e.y != 0.0f || e.z != 0.0f; });
+  const bool emission =
+      std::any_of(aovs.emission.pixels.begin(), aovs.emission.pixels.end(), [](Vec3 e) { return !isBlack(e); });
   if (emission) {
     const RgbPlanes emissionIn = workspace.signal(1);
     tbb::parallel_for(size_t(0), pixels,

@@ -49,11 +49,6 @@ CANDELA_FN float filmPosition(const Camera& camera, Vec3 offset, int w, int h, f
   return z - 1e-6f * sqrtf(dot(offset, offset));
 }
 
-// filmPosition where the point lies in front of the camera and lands within 1e9 pixels; false elsewhere.
-CANDELA_FN bool projectToFilm(const Camera& camera, Vec3 offset, int w, int h, float& px, float& py) {
-  return filmPosition(camera, offset, w, h, px, py) > 0.0f && fabsf(px) < 1e9f && fabsf(py) < 1e9f;
-}
-
 // Whether a pixel of this mean emission shows an emitter.
 CANDELA_FN bool isEmissive(Vec3 emission) { return emission.x + emission.y + emission.z > 0.0f; }
 
