@@ -52,6 +52,9 @@ __device__ inline void writeAtrousGuides(const FilmView& film, const AtrousPlane
   p.gy[i] = depthSlope(filmDepth(film, x, y - 1, w, h), z, filmDepth(film, x, y + 1, w, h));
 }
 
+// The unit normal (zero where the path escaped) of pixel i that writeAtrousGuides made of the film's.
+__device__ inline Vec3 unitNormalAt(const AtrousPlanes& p, size_t i) { return {p.nx[i], p.ny[i], p.nz[i]}; }
+
 // Adds the luminances of a block's threads to `sum` (one atomic per warp); every thread of the block calls it.
 __device__ inline void addToLuminanceSum(double lum, double* sum) {
   for (int offset = 16; offset > 0; offset /= 2) lum += __shfl_down_sync(0xFFFFFFFFu, lum, offset);

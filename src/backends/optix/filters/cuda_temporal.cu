@@ -36,9 +36,16 @@ HistoryPlanes historyPlanesOf(void* base, size_t pixels) {
   return p;
 }
 
-// The last frame's history reprojected to the current film's pixels, into `base`.
-__global__ void reprojectKernel(FilmView film, HistoryPlanes last, HistoryPlanes base, Camera current, Camera previous,
-                                int w, int h, TemporalLimits limits) {
+// The guides of the a-trous passes, whose unit normals and depths the reprojection and the new history take too: each
+// pixel's normal is made unit once (as TemporalFilter::filter takes AtrousWorkspace::unitNormals).
+__global__ void guidesKernel(FilmView film, AtrousPlanes p, int w, int h) {
+  const int x = int(blockIdx.x * blockDim.x + threadIdx.x), y = int(blockIdx.y * blockDim.y + threadIdx.y);
+  if (x < w && y < h) writeAtrousGuides(film, p, x, y, w, h);
+}
+
+// The last frame's history reprojected to the current film's pixels (guided by guidesKernel's planes), into `base`.
+__global__ void reprojectKernel(FilmView film, AtrousPlanes p, HistoryPlanes last, HistoryPlanes base, Camera current,
+                                Camera previous, int w, int h, TemporalLimits limits) {
   const int x = int(blockIdx.x * blockDim.x + threadIdx.x), y = int(blockIdx.y * blockDim.y + threadIdx.y);
   if (x >= w || y >= h) return;
   const size_t i = size_t(y) * w + x;
@@ -47,8 +54,7 @@ __global__ void reprojectKernel(FilmView film, HistoryPlanes last, HistoryPlanes
     guides = {last.normal[q], last.depth[q], last.emissive[q] != 0};
     return TemporalSample{last.reflected[q], last.emission[q], last.length[q], last.moment1[q], last.moment2[q]};
   };
-  const TemporalGuides guides{unitOrZero(meanAt(film.normal, film.samples, i)), meanAt(film.depth, film.samples, i),
-                              isEmissive(meanAt(film.emission, film.samples, i))};
+  const TemporalGuides guides{unitNormalAt(p, i), p.z[i], isEmissive(meanAt(film.emission, film.samples, i))};
   const TemporalSample s = reprojectHistory(current, previous, w, h, x, y, guides, limits, historyAt);
   base.reflected[i] = s.reflected;
   base.emission[i] = s.emission;
@@ -58,8 +64,8 @@ __global__ void reprojectKernel(FilmView film, HistoryPlanes last, HistoryPlanes
 }
 
 // The film added to the history `base`: the accumulated reflected light into colour planes 0 (and its luminance
-// summed), the first pass's variance, the guides, and the new history's planes other than the reflected light (which
-// the first a-trous pass gives).
+// summed), the first pass's variance, and the new history's planes other than the reflected light (which the first
+// a-trous pass gives), its normals and depths from guidesKernel's planes.
 __global__ void accumulateKernel(FilmView film, HistoryPlanes base, HistoryPlanes last, AtrousPlanes p, float* variance,
                                  int w, int h, float samples, double* luminanceSum) {
   const int x = int(blockIdx.x * blockDim.x + threadIdx.x), y = int(blockIdx.y * blockDim.y + threadIdx.y);
@@ -77,10 +83,9 @@ __global__ void accumulateKernel(FilmView film, HistoryPlanes base, HistoryPlane
     last.length[i] = s.length;
     last.moment1[i] = s.moment1;
     last.moment2[i] = s.moment2;
-    last.normal[i] = unitOrZero(meanAt(film.normal, film.samples, i));
-    last.depth[i] = meanAt(film.depth, film.samples, i);
+    last.normal[i] = unitNormalAt(p, i);
+    last.depth[i] = p.z[i];
     last.emissive[i] = isEmissive(s.emission) ? 1 : 0;
-    writeAtrousGuides(film, p, x, y, w, h);
   }
   addToLuminanceSum(lum, luminanceSum);
 }
@@ -153,10 +158,12 @@ void CudaTemporal::run(const FilmView& film, uint32_t width, uint32_t height, co
   const AtrousPlanes p = atrousPlanesOf(planes_.as<void>(), width, height);
   const TemporalLimits limits{params_.maxHistory, params_.depthTolerance, params_.normalTolerance};
 
+  guidesKernel<<<grid, kFilterBlock, 0, stream>>>(film, p, w, h);
+
   // The history this film starts from: the last frame's reprojected, unless the film goes on from that frame's.
   if (!filmContinues) {
     if (haveHistory_)
-      reprojectKernel<<<grid, kFilterBlock, 0, stream>>>(film, last, base, camera, camera_, w, h, limits);
+      reprojectKernel<<<grid, kFilterBlock, 0, stream>>>(film, p, last, base, camera, camera_, w, h, limits);
     else
       checkCuda(cudaMemsetAsync(base_.as<void>(), 0, base_.size(), stream), "clearing the temporal filter's history");
   }
