@@ -302,6 +302,27 @@ TEST(GltfLoader, RequiredExtensionsCandelaLacksStopTheLoadNamingThem) {
       << warnings.messages[0];
 }
 
+// A meshopt-compressed file without fallback data: the buffer the decoder would fill has no URI. The refusal names
+// the extension, not the buffer.
+TEST(GltfLoader, RequiredExtensionIsNamedBeforeABufferWithoutUri) {
+  json g = triangleGltf();
+  g["buffers"].push_back({{"byteLength", 72}});
+  g["bufferViews"][0] = {{"buffer", 1},
+                         {"byteLength", 72},
+                         {"extensions", {{"EXT_meshopt_compression", {{"buffer", 0}, {"byteLength", 72}}}}}};
+  g["extensionsUsed"] = g["extensionsRequired"] = {"EXT_meshopt_compression"};
+  TempFolder dir;
+  const std::string file = dir.write("meshopt.gltf", g.dump());
+  LoadWarnings warnings;
+  try {
+    loadGltf(file, warnings);
+    ADD_FAILURE() << "expected a LoadError";
+  } catch (const LoadError& e) {
+    EXPECT_NE(std::string(e.what()).find("requires the glTF extension EXT_meshopt_compression"), std::string::npos)
+        << e.what();
+  }
+}
+
 // KHR_mesh_quantization: integer positions (not normalised, scaled by the node), normalised byte normals and
 // normalised unsigned-short texture coordinates.
 TEST(GltfLoader, QuantizedAttributes) {

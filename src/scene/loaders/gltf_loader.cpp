@@ -832,9 +832,11 @@ Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, c
                                                  unsigned(std::min<size_t>(size, UINT32_MAX)), baseDir)
                    : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(data),
                                                 unsigned(std::min<size_t>(size, UINT32_MAX)), baseDir);
-  if (!ok && !access.refusal.empty()) failLoad(name, access.refusal);
   if (!ok) {
+    // An extension candela lacks explains the failure best: a meshopt-compressed file's buffer of decoded data
+    // has no URI, which would otherwise be reported as a buffer that names no file.
     if (json) refuseUnsupportedRequiredExtensions(json, jsonSize, name);
+    if (!access.refusal.empty()) failLoad(name, access.refusal);
     failLoad(name, err.empty() ? "not a valid glTF file" : firstLine(err));
   }
   std::istringstream lines(warn);
