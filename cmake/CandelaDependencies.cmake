@@ -14,10 +14,12 @@ find_package(CLI11 REQUIRED CONFIG)
 find_package(nlohmann_json REQUIRED CONFIG)
 find_package(OpenEXR REQUIRED CONFIG)
 find_package(ZLIB REQUIRED)
-# Texture decoding: PNG through libpng, JPEG through libjpeg-turbo (stb_image keeps TGA, BMP and Radiance HDR).
+# Texture decoding: PNG through libpng, JPEG through libjpeg-turbo, WebP (glTF's EXT_texture_webp) through libwebp
+# (stb_image keeps TGA, BMP and Radiance HDR).
 find_package(PNG REQUIRED)
 find_package(JPEG REQUIRED)
 pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
+pkg_check_modules(WEBP REQUIRED IMPORTED_TARGET libwebp)
 pkg_check_modules(XXHASH REQUIRED IMPORTED_TARGET libxxhash)
 # Single-header libraries: candela compiles their implementations itself (src/scene/loaders/*_impl.cpp).
 find_path(TINYOBJLOADER_INCLUDE_DIR tiny_obj_loader.h REQUIRED)

@@ -7,7 +7,7 @@ packages=(
   libembree-dev libtbb-dev libglm-dev libstb-dev libtinyobjloader-dev libtinygltf-dev
   nlohmann-json3-dev libcli11-dev libopenexr-dev libgtest-dev libxxhash-dev zlib1g-dev
   # texture decoding; libjpeg-dev is libjpeg62-turbo-dev on Debian, libjpeg-turbo8-dev on Ubuntu
-  libpng-dev libjpeg-dev
+  libpng-dev libjpeg-dev libwebp-dev
   # CPU benchmarks of the filters (bench/)
   libbenchmark-dev
   # the viewer, and its tests on a virtual display with Mesa's software OpenGL

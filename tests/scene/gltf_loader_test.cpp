@@ -12,6 +12,7 @@
 #include "scene/loaders/gltf_loader.h"
 #include "scene/loaders/gltf_specular_glossiness.h"
 #include "scene/scene_test_files.h"
+#include "scene/webp_test_image.h"
 
 namespace candela {
 namespace {
@@ -250,6 +251,31 @@ TEST(GltfLoader, UniformTextureTransformIsBakedIntoUvs) {
   EXPECT_FLOAT_EQ(s.meshes[0].uvs[2].y, 2.0f);
 }
 
+// EXT_texture_webp: the texture's image is the extension's source, whether or not `source` names a fallback.
+TEST(GltfLoader, WebpTexturesAreTheExtensionsSource) {
+  TempFolder dir;
+  const std::vector<uint8_t> webp = test::losslessWebp({200, 100, 50, 255}, 1, 1);
+  dir.write("colour.webp", std::string(webp.begin(), webp.end()));
+  std::filesystem::copy_file(std::string(CANDELA_SOURCE_DIR) + "/tests/scene/data/checker.png", dir.file("c.png"));
+  json g = triangleGltf();
+  g["images"] = {{{"uri", "c.png"}}, {{"uri", "colour.webp"}}};
+  g["textures"] = {{{"extensions", {{"EXT_texture_webp", {{"source", 1}}}}}}};
+  g["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+  g["meshes"][0]["primitives"][0]["material"] = 0;
+  g["extensionsUsed"] = g["extensionsRequired"] = {"EXT_texture_webp"};
+  for (bool fallback : {false, true}) {
+    if (fallback) g["textures"][0]["source"] = 0;
+    LoadWarnings warnings;
+    Scene s = loadGltf(dir.write("a.gltf", g.dump()), warnings);
+    EXPECT_TRUE(warnings.messages.empty()) << warnings.messages[0];
+    ASSERT_EQ(s.textures.size(), 1u);
+    EXPECT_EQ(s.materials[0].baseColorTexture, 0);
+    ASSERT_EQ(s.textures[0].width, 1u);
+    EXPECT_EQ(s.textures[0].bytes[0], 200);
+    EXPECT_EQ(s.textures[0].bytes[1], 100);
+  }
+}
+
 TEST(GltfLoader, SamplerWrapModesArePerAxis) {
   json g = triangleGltf();
   std::vector<uint8_t> png = readFileBytes(std::string(CANDELA_SOURCE_DIR) + "/tests/scene/data/checker.png");
@@ -294,11 +320,11 @@ TEST(GltfLoader, RequiredExtensionsCandelaLacksStopTheLoadNamingThem) {
         << e;
 
   g = triangleGltf();
-  g["extensionsUsed"] = {"EXT_texture_webp", "KHR_mesh_quantization"};
+  g["extensionsUsed"] = {"KHR_texture_basisu", "KHR_mesh_quantization"};
   LoadWarnings warnings;
   load(g, warnings);
   ASSERT_EQ(warnings.messages.size(), 1u);
-  EXPECT_NE(warnings.messages[0].find("uses the glTF extension EXT_texture_webp"), std::string::npos)
+  EXPECT_NE(warnings.messages[0].find("uses the glTF extension KHR_texture_basisu"), std::string::npos)
       << warnings.messages[0];
 }
 

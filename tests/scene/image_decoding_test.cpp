@@ -26,6 +26,7 @@
 #include "scene/loaders/obj_loader.h"
 #include "scene/loaders/texture_limits.h"
 #include "scene_test_files.h"
+#include "webp_test_image.h"
 
 namespace candela {
 namespace {
@@ -255,6 +256,37 @@ TEST(JpegDecoding, DamagedFilesAreLibjpegErrors) {
   const uint8_t huff[] = {0xff, 0xff, 0xff, 0xff, 0xff, 0xd8, 0xff, 0xff, 0xff, 0xc4,
                           0xda, 0xff, 0x00, 0x18, 0x2c, 0xdf, 0xff, 0x21, 0x66, 0x81};
   EXPECT_THROW(decodeImage("huff.jpg", huff, sizeof huff, false), LoadError);
+}
+
+// glTF's EXT_texture_webp: lossless pixels come back exactly, as RGBA; a smaller decode averages them.
+TEST(WebpDecoding, LosslessPixelsAndAreaAverage) {
+  const std::vector<uint8_t> rgba = {10, 20,  30,  255, 50,  60,  70,  128,  // row 0
+                                     90, 100, 110, 255, 130, 140, 150, 0};
+  const std::vector<uint8_t> webp = test::losslessWebp(rgba, 2, 2);
+  Texture t = decodeImage("t.webp", webp.data(), webp.size(), true);
+  EXPECT_EQ(t.width, 2u);
+  EXPECT_EQ(t.height, 2u);
+  ASSERT_EQ(t.channels, 4u);
+  EXPECT_TRUE(t.srgb);
+  // libwebp may change the colour of fully transparent pixels; the others are exact.
+  for (size_t i = 0; i < 12; ++i) EXPECT_EQ(t.bytes[i], rgba[i]) << i;
+  EXPECT_EQ(t.bytes[15], 0);
+  Texture small = decodeImage("t.webp", webp.data(), webp.size(), false, 1, 1);
+  ASSERT_EQ(small.bytes.size(), 4u);
+  EXPECT_NEAR(small.bytes[3], (255 + 128 + 255 + 0) / 4.0, 1.0);
+}
+
+TEST(WebpDecoding, DamagedFilesAreLoadErrorsNamingTheFile) {
+  const std::vector<uint8_t> rgba(64 * 64 * 4, 77);
+  std::vector<uint8_t> webp = test::losslessWebp(rgba, 64, 64);
+  for (size_t cut : {size_t(12), size_t(20), webp.size() / 2}) {
+    try {
+      decodeImage("cut.webp", webp.data(), cut, false);
+      ADD_FAILURE() << "a WebP cut to " << cut << " bytes decoded";
+    } catch (const LoadError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("cut.webp: ", 0), 0u) << e.what();
+    }
+  }
 }
 
 // An OpenEXR image of 100x10 pixels whose data window lies far from the origin; pixel (x, y) of the window

@@ -14,21 +14,13 @@ namespace candela {
 namespace {
 
 // Read fully or in part; where in part, the loader warns about what it leaves out.
-constexpr std::array<std::string_view, 15> kSupported = {"EXT_mesh_gpu_instancing",
-                                                         "KHR_lights_punctual",
-                                                         "KHR_materials_anisotropy",
-                                                         "KHR_materials_clearcoat",
-                                                         "KHR_materials_emissive_strength",
-                                                         "KHR_materials_ior",
-                                                         "KHR_materials_iridescence",
-                                                         "KHR_materials_pbrSpecularGlossiness",
-                                                         "KHR_materials_sheen",
-                                                         "KHR_materials_specular",
-                                                         "KHR_materials_transmission",
-                                                         "KHR_materials_unlit",
-                                                         "KHR_materials_volume",
-                                                         "KHR_mesh_quantization",
-                                                         "KHR_texture_transform"};
+constexpr std::array<std::string_view, 16> kSupported = {
+    "EXT_mesh_gpu_instancing",  "EXT_texture_webp",          "KHR_lights_punctual",
+    "KHR_materials_anisotropy", "KHR_materials_clearcoat",   "KHR_materials_emissive_strength",
+    "KHR_materials_ior",        "KHR_materials_iridescence", "KHR_materials_pbrSpecularGlossiness",
+    "KHR_materials_sheen",      "KHR_materials_specular",    "KHR_materials_transmission",
+    "KHR_materials_unlit",      "KHR_materials_volume",      "KHR_mesh_quantization",
+    "KHR_texture_transform"};
 
 constexpr std::string_view kDraco = "KHR_draco_mesh_compression";  // where candela is built with Draco
 
@@ -68,6 +60,13 @@ void checkGltfExtensions(const tinygltf::Model& model, const std::string& file, 
   for (const std::string& name : model.extensionsUsed)
     if (!supported(name))
       warnings.add(file, "uses the glTF extension " + name + ", which candela does not support; it is ignored");
+}
+
+int textureImageIndex(const tinygltf::Texture& texture) {
+  const auto webp = texture.extensions.find("EXT_texture_webp");
+  if (webp != texture.extensions.end() && webp->second.Has("source") && webp->second.Get("source").IsInt())
+    return webp->second.Get("source").GetNumberAsInt();
+  return texture.source;
 }
 
 }  // namespace candela

@@ -18,4 +18,8 @@ void checkGltfExtensions(const tinygltf::Model& model, const std::string& file, 
 // Returns normally when the text names no such extension or is not readable JSON.
 void refuseUnsupportedRequiredExtensions(const char* json, size_t size, const std::string& file);
 
+// The index of the image a texture shows: EXT_texture_webp's `source` where the texture has one (the image its
+// author preferred; `source` is then a PNG or JPEG fallback, or absent), else `source` (-1 when absent).
+int textureImageIndex(const tinygltf::Texture& texture);
+
 }  // namespace candela

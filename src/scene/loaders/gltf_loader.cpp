@@ -719,14 +719,15 @@ class GltfSceneBuilder {
       wrapU = wrapMode(model_.samplers[size_t(t.sampler)].wrapS);
       wrapV = wrapMode(model_.samplers[size_t(t.sampler)].wrapT);
     }
-    if (t.source < 0 || size_t(t.source) >= model_.images.size()) {
+    const int source = textureImageIndex(t);
+    if (source < 0 || size_t(source) >= model_.images.size()) {
       std::string ext =
           t.extensions.empty() ? "" : " (it uses " + t.extensions.begin()->first + ", which is not supported)";
       warnings_.add(file_, where + " has no image" + ext + "; the material is left untextured");
       return kNoTexture;
     }
-    const tinygltf::Image& image = model_.images[size_t(t.source)];
-    std::string imageWhere = "images[" + std::to_string(t.source) + "]";
+    const tinygltf::Image& image = model_.images[size_t(source)];
+    std::string imageWhere = "images[" + std::to_string(source) + "]";
     if (!image.image.empty())
       return textures_.fromMemory(file_ + ": " + imageWhere, file_ + ": " + imageWhere, image.image, srgb, wrapU,
                                   wrapV);
@@ -747,7 +748,7 @@ class GltfSceneBuilder {
   // texture (gltf_materials.h); nothing where the image cannot be read.
   std::optional<Vec4> textureMean(int index, bool srgb) {
     if (index < 0 || size_t(index) >= model_.textures.size()) return std::nullopt;
-    const int source = model_.textures[size_t(index)].source;
+    const int source = textureImageIndex(model_.textures[size_t(index)]);
     if (source < 0 || size_t(source) >= model_.images.size()) return std::nullopt;
     const tinygltf::Image& image = model_.images[size_t(source)];
     const std::string name = file_ + ": images[" + std::to_string(source) + "]";

@@ -14,6 +14,7 @@
 #include "scene/loaders/jpeg_decoding.h"
 #include "scene/loaders/load_diagnostics.h"
 #include "scene/loaders/png_decoding.h"
+#include "scene/loaders/webp_decoding.h"
 
 namespace candela {
 
@@ -112,6 +113,7 @@ Texture decodeAt(const std::string& name, const uint8_t* data, size_t size, bool
   targetHeight = std::clamp(targetHeight, 1u, info.height);
   Texture t = isPng(data, size)    ? decodePng(name, data, size, targetWidth, targetHeight)
               : isJpeg(data, size) ? decodeJpeg(name, data, size, targetWidth, targetHeight)
+              : isWebp(data, size) ? decodeWebp(name, data, size, targetWidth, targetHeight)
                                    : decodeWithStb(name, data, size, info, targetWidth, targetHeight);
   t.srgb = info.hdr ? false : srgb;
   return t;
@@ -146,6 +148,7 @@ ImageInfo inspectImage(const std::string& name, const uint8_t* data, size_t size
   if (size == 0) failLoad(name, "image file is empty");
   const ImageInfo info = isPng(data, size)    ? pngInfo(name, data, size)
                          : isJpeg(data, size) ? jpegInfo(name, data, size)
+                         : isWebp(data, size) ? webpInfo(name, data, size)
                                               : stbInfo(name, data, size);
   checkImageHeader(name, info.width, info.height, size);
   return info;

@@ -22,12 +22,13 @@ struct ImageInfo {
   bool hdr = false;  // decodes to floats
 };
 
-// Reads the header of a PNG, JPEG, TGA, BMP or Radiance HDR image held in memory, decoding no pixels. Throws
+// Reads the header of a PNG, JPEG, WebP, TGA, BMP or Radiance HDR image held in memory, decoding no pixels. Throws
 // LoadError naming `name` when it is not such an image or its header is absurd: no pixels, or more than the file
 // can hold.
 ImageInfo inspectImage(const std::string& name, const uint8_t* data, size_t size);
 
-// Decodes such an image: PNG through libpng, JPEG through libjpeg-turbo, the others through stb_image. 8-bit
+// Decodes such an image: PNG through libpng, JPEG through libjpeg-turbo, WebP through libwebp, the others through
+// stb_image. 8-bit
 // images keep their bytes: one channel for grey images, RGBA otherwise; `srgb` records how their colours are
 // encoded. Radiance HDR images become float RGBA. Throws LoadError naming `name` when the data is not a readable
 // image. The second form decodes to a smaller size (at most the image's own in each direction), each pixel the
