@@ -349,6 +349,26 @@ TEST(GltfLoader, RequiredExtensionIsNamedBeforeABufferWithoutUri) {
   }
 }
 
+// KHR_materials_variants (which Blender lists as required): the primitives' default materials are rendered.
+TEST(GltfLoader, MaterialVariantsRenderTheDefaultMaterials) {
+  json g = triangleGltf();
+  g["materials"] = {{{"pbrMetallicRoughness", {{"baseColorFactor", {0.1, 0.2, 0.3, 1}}}}},
+                    {{"pbrMetallicRoughness", {{"baseColorFactor", {0.9, 0.8, 0.7, 1}}}}}};
+  json& primitive = g["meshes"][0]["primitives"][0];
+  primitive["material"] = 0;
+  primitive["extensions"] = {{"KHR_materials_variants", {{"mappings", {{{"material", 1}, {"variants", {0}}}}}}}};
+  g["extensions"] = {{"KHR_materials_variants", {{"variants", {{{"name", "other"}}}}}}};
+  g["extensionsUsed"] = g["extensionsRequired"] = {"KHR_materials_variants"};
+  LoadWarnings warnings;
+  Scene s = load(g, warnings);
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_NE(warnings.messages[0].find("KHR_materials_variants: each primitive's default material is rendered"),
+            std::string::npos)
+      << warnings.messages[0];
+  ASSERT_EQ(s.meshes.size(), 1u);
+  EXPECT_FLOAT_EQ(s.materials[s.meshes[0].triangleMaterials[0]].baseColor.x, 0.1f);
+}
+
 // KHR_mesh_quantization: integer positions (not normalised, scaled by the node), normalised byte normals and
 // normalised unsigned-short texture coordinates.
 TEST(GltfLoader, QuantizedAttributes) {

@@ -23,11 +23,14 @@ constexpr std::array<std::string_view, 16> kSupported = {
     "KHR_texture_transform"};
 
 constexpr std::string_view kDraco = "KHR_draco_mesh_compression";  // where candela is built with Draco
+// Alternative materials a viewer may switch to; each primitive's `material` stays its default look, which is what
+// candela renders. Blender lists the extension as required, though the file is complete without it.
+constexpr std::string_view kVariants = "KHR_materials_variants";
 
 bool contains(auto& list, const std::string& name) { return std::find(list.begin(), list.end(), name) != list.end(); }
 
 bool supported(const std::string& name) {
-  return contains(kSupported, name) || (name == kDraco && gltfDracoAvailable());
+  return contains(kSupported, name) || name == kVariants || (name == kDraco && gltfDracoAvailable());
 }
 
 void refuseUnsupported(const std::vector<std::string>& required, const std::string& file) {
@@ -60,6 +63,8 @@ void checkGltfExtensions(const tinygltf::Model& model, const std::string& file, 
   for (const std::string& name : model.extensionsUsed)
     if (!supported(name))
       warnings.add(file, "uses the glTF extension " + name + ", which candela does not support; it is ignored");
+    else if (name == kVariants)
+      warnings.add(file, "uses the glTF extension " + name + ": each primitive's default material is rendered");
 }
 
 int textureImageIndex(const tinygltf::Texture& texture) {
