@@ -369,6 +369,19 @@ TEST(GltfLoader, MaterialVariantsRenderTheDefaultMaterials) {
   EXPECT_FLOAT_EQ(s.materials[s.meshes[0].triangleMaterials[0]].baseColor.x, 0.1f);
 }
 
+TEST(GltfLoader, BufferWithoutUriInAGltfIsNamedSo) {
+  json g = triangleGltf();
+  g["buffers"][0].erase("uri");
+  TempFolder dir;
+  LoadWarnings warnings;
+  try {
+    loadGltf(dir.write("no-uri.gltf", g.dump()), warnings);
+    ADD_FAILURE() << "expected a LoadError";
+  } catch (const LoadError& e) {
+    EXPECT_NE(std::string(e.what()).find("no-uri.gltf: a buffer has no 'uri'"), std::string::npos) << e.what();
+  }
+}
+
 // KHR_mesh_quantization: integer positions (not normalised, scaled by the node), normalised byte normals and
 // normalised unsigned-short texture coordinates.
 TEST(GltfLoader, QuantizedAttributes) {

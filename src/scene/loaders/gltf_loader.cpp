@@ -99,6 +99,10 @@ struct FileAccess {
     const std::string prefix = baseDir.empty() || baseDir.back() == '/' ? baseDir : baseDir + "/";
     if (baseDir.empty() || path.compare(0, prefix.size(), prefix) != 0) return std::nullopt;
     const std::string decoded = path.substr(prefix.size());
+    if (decoded.empty()) {  // tinygltf asks for "" where a buffer has no uri
+      refusal = "a buffer has no 'uri' (only the first buffer of a .glb may leave it out)";
+      return std::nullopt;
+    }
     if (!bufferUris) bufferUris.emplace(json);
     std::optional<std::string> reference = bufferUris->pathFor(decoded);
     if (!reference) {
