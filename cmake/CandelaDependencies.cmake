@@ -36,6 +36,18 @@ else()
   message(STATUS "draco: off (needs libdraco-dev): glTF files that require KHR_draco_mesh_compression are refused")
 endif()
 
+# glTF's EXT_meshopt_compression through meshoptimizer's decoder (libmeshoptimizer-dev); optional as Draco is.
+find_package(meshoptimizer QUIET CONFIG)
+if(TARGET meshoptimizer::meshoptimizer)
+  set(CANDELA_MESHOPT_ENABLED ON)
+  message(STATUS "meshopt: on (meshoptimizer ${meshoptimizer_VERSION}): glTF files compressed with "
+                 "EXT_meshopt_compression load")
+else()
+  set(CANDELA_MESHOPT_ENABLED OFF)
+  message(STATUS "meshopt: off (needs libmeshoptimizer-dev): glTF files that require EXT_meshopt_compression are "
+                 "refused")
+endif()
+
 # candela serve, the viewer in a web browser: Boost.Beast (headers only) for HTTP and WebSocket, libjpeg-turbo for
 # the frames. It is built when both are found; CANDELA_SERVE_ENABLED says whether.
 set(CANDELA_SERVE_ENABLED OFF)

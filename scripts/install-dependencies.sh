@@ -25,9 +25,9 @@ packages=(
 # saying why. npm comes with NodeSource's nodejs; Debian ships it as a package of its own.
 browser_packages=(chromium nodejs)
 command -v npm >/dev/null || browser_packages+=(npm)
-# glTF's KHR_draco_mesh_compression. Installed where the archive has it (Debian 12: bookworm/main); candela builds
-# without it and then refuses glTF files that require the extension, naming it.
-draco_packages=(libdraco-dev)
+# glTF's KHR_draco_mesh_compression and EXT_meshopt_compression. Installed where the archive has them (Debian 12:
+# bookworm/main); candela builds without them and then refuses glTF files that require the extensions, naming them.
+draco_packages=(libdraco-dev libmeshoptimizer-dev)
 
 missing_among() {
   local p
@@ -52,9 +52,9 @@ if [ ${#missing[@]} -gt 0 ]; then
   install "${missing[@]}"
 fi
 if [ ${#missing_draco[@]} -gt 0 ]; then
-  echo "dependencies: installing ${missing_draco[*]} (for Draco-compressed glTF)"
+  echo "dependencies: installing ${missing_draco[*]} (for Draco- and meshopt-compressed glTF)"
   install "${missing_draco[@]}" ||
-    echo "dependencies: could not install ${missing_draco[*]}; glTF files that require Draco will be refused"
+    echo "dependencies: could not install ${missing_draco[*]}; glTF files that require them will be refused"
 fi
 if [ ${#missing_browser[@]} -gt 0 ]; then
   echo "dependencies: installing ${missing_browser[*]} (for the browser tests)"

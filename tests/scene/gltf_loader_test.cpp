@@ -293,11 +293,11 @@ TEST(GltfLoader, SamplerWrapModesArePerAxis) {
 TEST(GltfLoader, RequiredExtensionsCandelaLacksStopTheLoadNamingThem) {
   // As a meshopt-compressed file looks: the accessors' bufferViews hold compressed data.
   json g = triangleGltf();
-  g["bufferViews"][0]["extensions"] = {{"EXT_meshopt_compression", {{"buffer", 0}, {"byteLength", 72}}}};
-  g["extensionsUsed"] = {"EXT_meshopt_compression", "KHR_texture_transform"};
-  g["extensionsRequired"] = {"EXT_meshopt_compression", "KHR_texture_transform"};
+  g["bufferViews"][0]["extensions"] = {{"KHR_meshopt_compression", {{"buffer", 0}, {"byteLength", 72}}}};
+  g["extensionsUsed"] = {"KHR_meshopt_compression", "KHR_texture_transform"};
+  g["extensionsRequired"] = {"KHR_meshopt_compression", "KHR_texture_transform"};
   std::string e = errorOf(g);
-  EXPECT_NE(e.find("requires the glTF extension EXT_meshopt_compression, which candela does not support"),
+  EXPECT_NE(e.find("requires the glTF extension KHR_meshopt_compression, which candela does not support"),
             std::string::npos)
       << e;
   EXPECT_EQ(e.find("KHR_texture_transform"), std::string::npos) << e;
@@ -335,8 +335,8 @@ TEST(GltfLoader, RequiredExtensionIsNamedBeforeABufferWithoutUri) {
   g["buffers"].push_back({{"byteLength", 72}});
   g["bufferViews"][0] = {{"buffer", 1},
                          {"byteLength", 72},
-                         {"extensions", {{"EXT_meshopt_compression", {{"buffer", 0}, {"byteLength", 72}}}}}};
-  g["extensionsUsed"] = g["extensionsRequired"] = {"EXT_meshopt_compression"};
+                         {"extensions", {{"KHR_meshopt_compression", {{"buffer", 0}, {"byteLength", 72}}}}}};
+  g["extensionsUsed"] = g["extensionsRequired"] = {"KHR_meshopt_compression"};
   TempFolder dir;
   const std::string file = dir.write("meshopt.gltf", g.dump());
   LoadWarnings warnings;
@@ -344,7 +344,7 @@ TEST(GltfLoader, RequiredExtensionIsNamedBeforeABufferWithoutUri) {
     loadGltf(file, warnings);
     ADD_FAILURE() << "expected a LoadError";
   } catch (const LoadError& e) {
-    EXPECT_NE(std::string(e.what()).find("requires the glTF extension EXT_meshopt_compression"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("requires the glTF extension KHR_meshopt_compression"), std::string::npos)
         << e.what();
   }
 }

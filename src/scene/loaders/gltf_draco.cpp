@@ -9,6 +9,7 @@
 #include <cstring>
 #include <string_view>
 
+#include "scene/loaders/gltf_glb.h"
 #include "scene/loaders/load_diagnostics.h"
 
 namespace candela {
@@ -24,20 +25,6 @@ bool gltfDracoAvailable() {
 namespace {
 
 constexpr std::string_view kExtension = "KHR_draco_mesh_compression";
-
-// The bytes of a .glb whose JSON chunk (`json`, the chunk that starts at byte 20) is replaced by `text`.
-std::vector<uint8_t> replaceGlbJson(const uint8_t* data, size_t size, size_t jsonLength, std::string text) {
-  text.resize((text.size() + 3) / 4 * 4, ' ');  // chunks are padded to 4 bytes, JSON with spaces
-  const size_t restAt = 20 + jsonLength;
-  const size_t total = 20 + text.size() + (size - restAt);
-  std::vector<uint8_t> out(data, data + 20);
-  const uint32_t total32 = uint32_t(total), length32 = uint32_t(text.size());
-  std::memcpy(out.data() + 8, &total32, 4);
-  std::memcpy(out.data() + 12, &length32, 4);
-  out.insert(out.end(), text.begin(), text.end());
-  out.insert(out.end(), data + restAt, data + size);
-  return out;
-}
 
 }  // namespace
 

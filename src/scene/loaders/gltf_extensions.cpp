@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "scene/loaders/gltf_draco.h"
+#include "scene/loaders/gltf_meshopt.h"
 
 namespace candela {
 
@@ -23,6 +24,7 @@ constexpr std::array<std::string_view, 16> kSupported = {
     "KHR_texture_transform"};
 
 constexpr std::string_view kDraco = "KHR_draco_mesh_compression";  // where candela is built with Draco
+constexpr std::string_view kMeshopt = "EXT_meshopt_compression";   // where candela is built with meshoptimizer
 // Alternative materials a viewer may switch to; each primitive's `material` stays its default look, which is what
 // candela renders. Blender lists the extension as required, though the file is complete without it.
 constexpr std::string_view kVariants = "KHR_materials_variants";
@@ -30,7 +32,8 @@ constexpr std::string_view kVariants = "KHR_materials_variants";
 bool contains(auto& list, const std::string& name) { return std::find(list.begin(), list.end(), name) != list.end(); }
 
 bool supported(const std::string& name) {
-  return contains(kSupported, name) || name == kVariants || (name == kDraco && gltfDracoAvailable());
+  return contains(kSupported, name) || name == kVariants || (name == kDraco && gltfDracoAvailable()) ||
+         (name == kMeshopt && gltfMeshoptAvailable());
 }
 
 void refuseUnsupported(const std::vector<std::string>& required, const std::string& file) {
@@ -39,6 +42,10 @@ void refuseUnsupported(const std::vector<std::string>& required, const std::stri
     if (!supported(name)) refused += (refused.empty() ? "" : ", ") + name;
   if (refused.empty()) return;
   const bool many = refused.find(',') != std::string::npos;
+  if (refused == kMeshopt)
+    failLoad(file, "requires the glTF extension " + refused +
+                       ", which this build of candela does not support: it was built without meshoptimizer (install "
+                       "libmeshoptimizer-dev and configure again)");
   if (refused == kDraco)
     failLoad(file, "requires the glTF extension " + refused +
                        ", which this build of candela does not support: it was built without Draco (install "

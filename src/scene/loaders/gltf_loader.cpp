@@ -25,6 +25,7 @@
 #include "scene/loaders/gltf_draco.h"
 #include "scene/loaders/gltf_extensions.h"
 #include "scene/loaders/gltf_materials.h"
+#include "scene/loaders/gltf_meshopt.h"
 #include "scene/loaders/image_decoding.h"
 #include "scene/loaders/path_confinement.h"
 #include "scene/loaders/texture_table.h"
@@ -826,6 +827,13 @@ Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, c
     size = forTinygltf->size();
     std::tie(json, jsonSize) = binary ? glbJson(data, size) : std::pair{reinterpret_cast<const char*>(data), size};
   }
+  // Meshopt fallback buffers as tinygltf accepts them (gltf_meshopt.h); decodeMeshoptBufferViews supersedes them.
+  const std::optional<std::vector<uint8_t>> withPlaceholders = withMeshoptPlaceholderBuffers(data, size);
+  if (withPlaceholders) {
+    data = withPlaceholders->data();
+    size = withPlaceholders->size();
+    std::tie(json, jsonSize) = binary ? glbJson(data, size) : std::pair{reinterpret_cast<const char*>(data), size};
+  }
 
   tinygltf::TinyGLTF loader;
   FileAccess access{baseDir, files, json ? std::string_view(json, jsonSize) : std::string_view(), {}, {}, {}};
@@ -850,6 +858,7 @@ Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, c
     if (!firstLine(line).empty()) warnings.add(name, firstLine(line));
   checkGltfExtensions(model, name, warnings);
   decodeDracoPrimitives(model, name);
+  decodeMeshoptBufferViews(model, name);
   Scene scene = GltfSceneBuilder(model, name, files, warnings, sharedTextures).build();
   scene.inputFiles.insert(scene.inputFiles.begin(), access.filesRead.begin(), access.filesRead.end());
   return scene;

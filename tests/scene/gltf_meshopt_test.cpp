@@ -1,0 +1,159 @@
+// EXT_meshopt_compression: bufferViews compressed with meshoptimizer's encoder, laid out as gltfpack writes them
+// (the compressed bytes in the .glb's BIN chunk, the decoded views in a fallback buffer without data).
+#include <gtest/gtest.h>
+#include <meshoptimizer.h>
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstring>
+
+#include "scene/loaders/gltf_loader.h"
+#include "scene/loaders/load_diagnostics.h"
+
+namespace candela {
+namespace {
+
+using nlohmann::json;
+
+std::vector<uint8_t> glb(const json& gltf, std::vector<uint8_t> bin) {
+  std::string text = gltf.dump();
+  text.resize((text.size() + 3) / 4 * 4, ' ');
+  bin.resize((bin.size() + 3) / 4 * 4, 0);
+  std::vector<uint8_t> out;
+  auto word = [&](uint32_t v) {
+    out.insert(out.end(), reinterpret_cast<uint8_t*>(&v), reinterpret_cast<uint8_t*>(&v) + 4);
+  };
+  word(0x46546C67);  // "glTF"
+  word(2);
+  word(uint32_t(28 + text.size() + bin.size()));
+  word(uint32_t(text.size()));
+  word(0x4E4F534A);  // "JSON"
+  out.insert(out.end(), text.begin(), text.end());
+  word(uint32_t(bin.size()));
+  word(0x004E4942);  // "BIN\0"
+  out.insert(out.end(), bin.begin(), bin.end());
+  return out;
+}
+
+constexpr std::array<float, 12> kPositions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0};
+constexpr std::array<unsigned, 6> kIndices = {0, 1, 2, 2, 1, 3};
+
+// A quad of two triangles: positions (4 x 12 bytes) and 16-bit indices compressed into the BIN chunk.
+struct CompressedQuad {
+  json gltf;
+  std::vector<uint8_t> bin;
+};
+
+CompressedQuad compressedQuad() {
+  std::vector<uint8_t> vertices(meshopt_encodeVertexBufferBound(4, 12));
+  vertices.resize(meshopt_encodeVertexBuffer(vertices.data(), vertices.size(), kPositions.data(), 4, 12));
+  std::vector<uint8_t> indices(meshopt_encodeIndexBufferBound(6, 4));
+  indices.resize(meshopt_encodeIndexBuffer(indices.data(), indices.size(), kIndices.data(), 6));
+  std::vector<uint8_t> bin = vertices;
+  bin.resize((bin.size() + 3) / 4 * 4, 0);
+  const size_t indicesAt = bin.size();
+  bin.insert(bin.end(), indices.begin(), indices.end());
+  auto compressed = [](size_t offset, size_t length, int stride, int count, const char* mode) {
+    return json{{"EXT_meshopt_compression",
+                 {{"buffer", 0},
+                  {"byteOffset", offset},
+                  {"byteLength", length},
+                  {"byteStride", stride},
+                  {"count", count},
+                  {"mode", mode}}}};
+  };
+  json g = {
+      {"asset", {{"version", "2.0"}}},
+      {"buffers",
+       {{{"byteLength", bin.size()}},
+        {{"byteLength", 60}, {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}}}},
+      {"bufferViews",
+       {{{"buffer", 1},
+         {"byteLength", 48},
+         {"byteStride", 12},
+         {"extensions", compressed(0, vertices.size(), 12, 4, "ATTRIBUTES")}},
+        {{"buffer", 1},
+         {"byteOffset", 48},
+         {"byteLength", 12},
+         {"extensions", compressed(indicesAt, indices.size(), 2, 6, "TRIANGLES")}}}},
+      {"accessors",
+       {{{"bufferView", 0},
+         {"componentType", 5126},
+         {"count", 4},
+         {"type", "VEC3"},
+         {"min", {0, 0, 0}},
+         {"max", {1, 1, 0}}},
+        {{"bufferView", 1}, {"componentType", 5123}, {"count", 6}, {"type", "SCALAR"}}}},
+      {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"indices", 1}}}}}}},
+      {"nodes", {{{"mesh", 0}}}},
+      {"scenes", {{{"nodes", {0}}}}},
+      {"extensionsUsed", {"EXT_meshopt_compression"}},
+      {"extensionsRequired", {"EXT_meshopt_compression"}},
+  };
+  return {g, bin};
+}
+
+Scene load(const CompressedQuad& quad, LoadWarnings& warnings) {
+  const std::vector<uint8_t> bytes = glb(quad.gltf, quad.bin);
+  return loadGltfBytes("quad.glb", bytes.data(), bytes.size(), warnings);
+}
+
+std::string errorOf(const CompressedQuad& quad) {
+  LoadWarnings warnings;
+  try {
+    load(quad, warnings);
+  } catch (const LoadError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "expected a LoadError";
+  return {};
+}
+
+TEST(GltfMeshopt, CompressedBufferViewsAreDecoded) {
+  LoadWarnings warnings;
+  const Scene s = load(compressedQuad(), warnings);
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages[0];
+  ASSERT_EQ(s.meshes.size(), 1u);
+  const Mesh& m = s.meshes[0];
+  ASSERT_EQ(m.triangleCount(), 2u);
+  ASSERT_EQ(m.indices.size(), kIndices.size());
+  for (size_t i = 0; i < kIndices.size(); ++i) {
+    const Vec3 p = m.positions[m.indices[i]];
+    const float* expected = &kPositions[3 * kIndices[i]];
+    EXPECT_EQ(p.x, expected[0]) << i;
+    EXPECT_EQ(p.y, expected[1]) << i;
+    EXPECT_EQ(p.z, expected[2]) << i;
+  }
+}
+
+// The fallback buffer need not carry the extension's `fallback` marker.
+TEST(GltfMeshopt, UnmarkedFallbackBufferWithoutDataIsDecodedInto) {
+  CompressedQuad quad = compressedQuad();
+  quad.gltf["buffers"][1].erase("extensions");
+  LoadWarnings warnings;
+  const Scene s = load(quad, warnings);
+  ASSERT_EQ(s.meshes.size(), 1u);
+  EXPECT_EQ(s.meshes[0].triangleCount(), 2u);
+}
+
+TEST(GltfMeshopt, DamagedOrForgedDataIsOneLineNamingTheBufferView) {
+  CompressedQuad quad = compressedQuad();
+  quad.gltf["bufferViews"][0]["extensions"]["EXT_meshopt_compression"]["count"] = 100000000;
+  EXPECT_NE(errorOf(quad).find("quad.glb: bufferViews[0].extensions.EXT_meshopt_compression: 'count' claims more"),
+            std::string::npos);
+
+  quad = compressedQuad();
+  std::fill(quad.bin.begin(), quad.bin.begin() + 8, uint8_t(0xff));  // the vertex stream's header
+  EXPECT_NE(errorOf(quad).find("bufferViews[0].extensions.EXT_meshopt_compression: the compressed data cannot be "
+                               "decoded"),
+            std::string::npos);
+
+  quad = compressedQuad();
+  quad.gltf["bufferViews"][1]["extensions"]["EXT_meshopt_compression"]["byteLength"] = 1 << 20;
+  EXPECT_NE(errorOf(quad).find("bufferViews[1].extensions.EXT_meshopt_compression: 'byteOffset' and 'byteLength' "
+                               "reach beyond the buffer"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace candela
