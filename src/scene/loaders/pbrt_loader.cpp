@@ -10,6 +10,7 @@
 #include "scene/loaders/file_bytes.h"
 #include "scene/loaders/pbrt_camera.h"
 #include "scene/loaders/pbrt_context.h"
+#include "scene/loaders/pbrt_film.h"
 #include "scene/loaders/pbrt_lights.h"
 #include "scene/loaders/pbrt_materials.h"
 #include "scene/loaders/pbrt_parameters.h"
@@ -86,11 +87,11 @@ class PbrtReader {
     if (!worldBegun_) chooseWorldMirror();
     assignPendingMaterials();
     Scene& scene = context_.scene;
-    // The same ranges as a JSON scene file's render settings (scene_file.cpp).
-    uint32_t width = uint32_t(std::clamp(film_ ? film_->getInt("xresolution", 1280) : 1280, 1, 16384));
-    uint32_t height = uint32_t(std::clamp(film_ ? film_->getInt("yresolution", 720) : 720, 1, 16384));
+    PbrtFilm film = readPbrtFilm(film_ ? &*film_ : nullptr, camera_ ? &*camera_ : nullptr, context_);
+    uint32_t width = film.width, height = film.height;
     scene.renderHints.width = width;
     scene.renderHints.height = height;
+    scaleSceneLights(scene, film.imagingRatio);
     if (camera_) {
       scene.camera = makePbrtCamera(cameraType_, *camera_, cameraFromWorld_, width, height, mirrorX_, context_);
       context_.warnUnused("camera '" + cameraType_ + "'", *camera_);
