@@ -15,6 +15,7 @@
 #include "scene/loaders/load_diagnostics.h"
 #include "scene/loaders/pbrt_lights.h"
 #include "scene/loaders/pbrt_spectra.h"
+#include "scene/loaders/pbrt_spectrum_files.h"
 #include "scene/loaders/pbrt_tokenizer.h"
 #include "scene/loaders/texture_limits.h"
 #include "scene/scene_test_files.h"
@@ -649,6 +650,47 @@ TEST(PbrtLoader, UnknownSpectraWarnAndTakeTheDefault) {
   expectNear(scene.materials[scene.meshes[0].triangleMaterials[0]].baseColor, {0.5f, 0.5f, 0.5f});
   ASSERT_EQ(warnings.messages.size(), 1u);
   EXPECT_NE(warnings.messages[0].find("'measured.spd'"), std::string::npos) << warnings.messages[0];
+}
+
+// pbrt-v4 reads a spectrum that is not one of its names from a file of wavelength-value pairs (pbrt-v4-scenes'
+// killeroo-gold: "spectrum k" [ "spds/Au.k.spd" ]).
+TEST(PbrtLoader, SpectrumFilesAreRead) {
+  TempFolder folder;
+  folder.write("spds/grey.spd", "# a measured grey\n300 0.25   # nm, value\n900 0.25\n");
+  folder.write("spds/bad.spd", "400 0.5\n500 half\n");
+  std::string main = folder.write(
+      "main.pbrt", std::string(kMirroredCamera) + "Material \"diffuse\" \"spectrum reflectance\" \"spds/grey.spd\"\n" +
+                       kTriangle + "Material \"diffuse\" \"spectrum reflectance\" \"spds/missing.spd\"\n" + kTriangle +
+                       "Material \"diffuse\" \"spectrum reflectance\" \"spds/bad.spd\"\n" + kTriangle);
+  LoadWarnings warnings;
+  Scene scene = loadPbrt(main, warnings);
+  expectNear(scene.materials[scene.meshes[0].triangleMaterials[0]].baseColor, {0.25f, 0.25f, 0.25f}, 1e-3f);
+  // Files that cannot be read are named once each, and the default stands in.
+  expectNear(scene.materials[scene.meshes[1].triangleMaterials[0]].baseColor, {0.5f, 0.5f, 0.5f});
+  expectNear(scene.materials[scene.meshes[2].triangleMaterials[0]].baseColor, {0.5f, 0.5f, 0.5f});
+  ASSERT_EQ(warnings.messages.size(), 2u);
+  EXPECT_NE(warnings.messages[0].find("missing.spd: cannot open"), std::string::npos) << warnings.messages[0];
+  EXPECT_NE(warnings.messages[1].find("bad.spd:2: 'half' is not a number"), std::string::npos) << warnings.messages[1];
+  // The file is one of the scene's inputs (the scene cache notices when it changes).
+  EXPECT_NE(std::find_if(scene.inputFiles.begin(), scene.inputFiles.end(),
+                         [](const std::string& f) { return f.find("grey.spd") != std::string::npos; }),
+            scene.inputFiles.end());
+}
+
+TEST(PbrtSpectrumFiles, PairsCommentsAndMalformedFiles) {
+  EXPECT_EQ(parsePbrtSpectrumFile("a.spd", "# c\n400 1,500 2\r\n#\n600 3 700 4"),
+            (std::vector<double>{400, 1, 500, 2, 600, 3, 700, 4}));
+  auto error = [](const std::string& text) {
+    try {
+      parsePbrtSpectrumFile("a.spd", text);
+    } catch (const LoadError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  EXPECT_EQ(error("400 1 500"), "a.spd: a spectrum file needs wavelength-value pairs, found 3 numbers");
+  EXPECT_EQ(error("# nothing\n"), "a.spd: a spectrum file needs wavelength-value pairs, found 0 numbers");
+  EXPECT_EQ(error("400 1\n500 nan\n"), "a.spd:2: 'nan' is not a number");
 }
 
 TEST(PbrtLoader, ImageTexturesWithTheirUvMapping) {

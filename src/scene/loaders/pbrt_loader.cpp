@@ -15,6 +15,7 @@
 #include "scene/loaders/pbrt_materials.h"
 #include "scene/loaders/pbrt_parameters.h"
 #include "scene/loaders/pbrt_shapes.h"
+#include "scene/loaders/pbrt_spectrum_files.h"
 #include "scene/loaders/pbrt_textures.h"
 #include "scene/loaders/pbrt_tokenizer.h"
 #include "scene/loaders/pbrt_transforms.h"
@@ -128,6 +129,13 @@ class PbrtReader {
     if (bracketed && tokens.next().kind != PbrtToken::Kind::CloseBracket)
       fail(tokens, tokens.line(), directive + " expects " + std::to_string(count) + " numbers in brackets");
     return values;
+  }
+
+  // The parameters of a directive that may name spectrum files (materials, textures, lights), with those read.
+  PbrtParameters readParametersWithSpectra(PbrtTokenizer& tokens) {
+    PbrtParameters params = parsePbrtParameters(tokens);
+    readPbrtSpectrumFiles(params, context_);
+    return params;
   }
 
   std::string readString(PbrtTokenizer& tokens, const std::string& directive) {
@@ -260,18 +268,18 @@ class PbrtReader {
         readFile(context_.resolve(file, tokens.file(), t.line), depth + 1);
       } else if (d == "Texture") {
         std::string name = readString(tokens, d), valueType = readString(tokens, d), className = readString(tokens, d);
-        PbrtParameters params = parsePbrtParameters(tokens);
+        PbrtParameters params = readParametersWithSpectra(tokens);
         textures_.define(name, valueType, className, params);
         context_.warnUnused("texture '" + className + "'", params);
       } else if (d == "Material") {
         std::string type = readString(tokens, d);
-        PbrtParameters params = parsePbrtParameters(tokens);
+        PbrtParameters params = readParametersWithSpectra(tokens);
         state_.material = materials_.make(type, params);
         state_.materialName.clear();
         context_.warnUnused("material '" + type + "'", params);
       } else if (d == "MakeNamedMaterial") {
         std::string name = readString(tokens, d);
-        PbrtParameters params = parsePbrtParameters(tokens);
+        PbrtParameters params = readParametersWithSpectra(tokens);
         materials_.defineNamed(name, params);
         context_.warnUnused("material '" + params.getString("type", "") + "'", params);
       } else if (d == "NamedMaterial") {
@@ -281,12 +289,12 @@ class PbrtReader {
         if (materials_.isNamed(name)) state_.material = materials_.named(name, tokens.file(), t.line);
       } else if (d == "LightSource") {
         std::string type = readString(tokens, d);
-        PbrtParameters params = parsePbrtParameters(tokens);
+        PbrtParameters params = readParametersWithSpectra(tokens);
         readLight(type, params);
         context_.warnUnused("light '" + type + "'", params);
       } else if (d == "AreaLightSource") {
         std::string type = readString(tokens, d);
-        PbrtParameters params = parsePbrtParameters(tokens);
+        PbrtParameters params = readParametersWithSpectra(tokens);
         state_.areaLight = makePbrtAreaLight(type, params, context_);
         context_.warnUnused("area light '" + type + "'", params);
       } else if (d == "Shape") {
