@@ -587,6 +587,24 @@ TEST(PbrtLoader, PointSpotAndDistantLightsBecomePunctualLights) {
   expectNear(sun.intensity, {3, 3, 3});
 }
 
+// pbrt-v4's photometric normalisations of punctual lights: a point light's power spreads over 4 pi steradians, a
+// spot's over 2 pi (1 - cos inner) plus half its falloff band; a distant light's illuminance multiplies L.
+TEST(PbrtLoader, PunctualLightPowerAndIlluminanceSetTheirIntensity) {
+  LoadWarnings warnings;
+  Scene scene = loadText(
+      "WorldBegin\nLightSource \"point\" \"rgb I\" [1 2 3] \"float power\" 100 \"float scale\" 2\n"
+      "LightSource \"spot\" \"float power\" 10 \"float coneangle\" 60 \"float conedelta\" 60\n"
+      "LightSource \"distant\" \"rgb L\" [1 1 2] \"float illuminance\" 5\n",
+      &warnings);
+  ASSERT_EQ(scene.punctualLights.size(), 3u);
+  const float pointScale = 2.0f * 100.0f / (4.0f * kPi);
+  expectNear(scene.punctualLights[0].intensity, Vec3{1, 2, 3} * pointScale, 1e-4f);
+  // Inner cone 0 degrees, falloff to 60: 2 pi (0 + (1 - 0.5) / 2) = pi / 2 steradians.
+  expectNear(scene.punctualLights[1].intensity, Vec3{1, 1, 1} * (10.0f / (kPi / 2.0f)), 1e-4f);
+  expectNear(scene.punctualLights[2].intensity, {5, 5, 10});
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages[0];
+}
+
 // pbrt-v4's sensor scales the image by ISO / 100 times the exposure time (shutterclose - shutteropen): scenes such
 // as pbrt-v4-scenes' contemporary-bathroom (ISO 600) would be far too dark without it. candela scales the lights.
 TEST(PbrtLoader, FilmIsoAndShutterTimeScaleTheLights) {

@@ -66,35 +66,40 @@ Vec3 pbrtAreaLightRadiance(const PbrtAreaLight& light, float worldArea) {
 }
 
 PunctualLight makePbrtPunctualLight(const std::string& type, const PbrtParameters& params,
-                                    const glm::mat4& worldFromLight, PbrtContext& context) {
+                                    const glm::mat4& worldFromLight) {
   auto point = [&](const char* name, Vec3 fallback) {
     std::vector<Vec3> p = params.getVec3s(name);
     Vec3 local = p.empty() ? fallback : p[0];
     glm::vec4 world = worldFromLight * glm::vec4(local.x, local.y, local.z, 1.0f);
     return Vec3{world.x, world.y, world.z};
   };
-  for (const char* normalisation : {"power", "illuminance"})
-    if (params.find(normalisation))
-      context.warn(std::string("light ") + normalisation,
-                   std::string("light '") + normalisation + "' is not applied: I or L times scale is used");
   PunctualLight light;
-  const float scale = params.getFloat("scale", 1.0f);
+  float scale = params.getFloat("scale", 1.0f);
   const Vec3 from = point("from", {0, 0, 0});
   if (type == "distant") {
     light.type = PunctualLightType::Directional;
+    // pbrt-v4: `illuminance` (lux) times the spectrum of L, normalised to luminance 1 (as RGB L already is).
+    const float illuminance = params.getFloat("illuminance", -1.0f);
+    if (illuminance > 0.0f) scale *= illuminance;
     light.intensity = params.getColor("L").value_or(PbrtColor{{1, 1, 1}, true}).rgb * scale;
     light.direction = normalize(point("to", {0, 0, 1}) - from);
     return light;
   }
   light.position = from;
-  light.intensity = params.getColor("I").value_or(PbrtColor{{1, 1, 1}, true}).rgb * scale;
+  const float power = params.getFloat("power", -1.0f);
   if (type == "spot") {
     light.type = PunctualLightType::Spot;
     light.direction = normalize(point("to", {0, 0, 1}) - from);
     const float cone = params.getFloat("coneangle", 30.0f), delta = params.getFloat("conedelta", 5.0f);
     light.cosOuter = std::cos(cone * kPi / 180.0f);
     light.cosInner = std::cos(std::max(cone - delta, 0.0f) * kPi / 180.0f);
+    // pbrt-v4's solid angle of a spot, its falloff counted as half: `power` (lumens) over it gives the intensity.
+    const float solidAngle = 2.0f * kPi * ((1.0f - light.cosInner) + (light.cosInner - light.cosOuter) / 2.0f);
+    if (power > 0.0f && solidAngle > 0.0f) scale *= power / solidAngle;
+  } else if (power > 0.0f) {
+    scale *= power / (4.0f * kPi);  // a point light's power spreads over the whole sphere
   }
+  light.intensity = params.getColor("I").value_or(PbrtColor{{1, 1, 1}, true}).rgb * scale;
   return light;
 }
 

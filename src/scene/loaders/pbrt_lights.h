@@ -28,10 +28,11 @@ Environment makePbrtInfiniteLight(const PbrtParameters& params, const glm::mat4&
 
 // pbrt's `LightSource "point"`, "spot" and "distant" as candela's punctual lights, placed by `worldFromLight` (the
 // world mirror included): I (or L for a distant light) times scale; a spot's `coneangle` and `conedelta` bound its
-// smoothstep falloff as in pbrt-v4; a distant light travels from `from` to `to`. `power` and `illuminance`, which
-// pbrt-v4 normalises spectrally, are not applied (a warning).
+// smoothstep falloff as in pbrt-v4; a distant light travels from `from` to `to`. As in pbrt-v4, a point or spot
+// light's `power` (over the sphere, or the spot's cone with its falloff counted as half) and a distant light's
+// `illuminance` multiply I (or L), whose spectrum is normalised to luminance 1 (RGB values are taken as they are).
 PunctualLight makePbrtPunctualLight(const std::string& type, const PbrtParameters& params,
-                                    const glm::mat4& worldFromLight, PbrtContext& context);
+                                    const glm::mat4& worldFromLight);
 
 // Where pbrt-v4's equal-area octahedral map (Clarberg 2008) puts direction `d` (unit length): [0, 1]^2.
 Vec2 equalAreaSphereToSquare(Vec3 d);

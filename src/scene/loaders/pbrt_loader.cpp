@@ -328,7 +328,7 @@ class PbrtReader {
     if (!worldBegun_) chooseWorldMirror();
     if (type == "point" || type == "spot" || type == "distant") {
       context_.scene.punctualLights.push_back(
-          makePbrtPunctualLight(type, params, worldFromPbrt_ * state_.ctm, context_));
+          makePbrtPunctualLight(type, params, worldFromPbrt_ * state_.ctm));
       return;
     }
     if (type != "infinite") {
