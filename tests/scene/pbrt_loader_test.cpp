@@ -605,6 +605,15 @@ TEST(PbrtLoader, PunctualLightPowerAndIlluminanceSetTheirIntensity) {
   EXPECT_TRUE(warnings.messages.empty()) << warnings.messages[0];
 }
 
+// pbrt-v3's name of a spot's falloff band, as pbrt-v4-scenes' villa-lights-on gives it.
+TEST(PbrtLoader, SpotFalloffTakesPbrtV3sConeDeltaAngle) {
+  LoadWarnings warnings;
+  Scene scene = loadText("WorldBegin\nLightSource \"spot\" \"float coneangle\" 50 \"float conedeltaangle\" 20\n", &warnings);
+  ASSERT_EQ(scene.punctualLights.size(), 1u);
+  EXPECT_NEAR(scene.punctualLights[0].cosInner, std::cos(30.0f * kPi / 180.0f), 1e-6f);
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages[0];
+}
+
 // pbrt-v4's sensor scales the image by ISO / 100 times the exposure time (shutterclose - shutteropen): scenes such
 // as pbrt-v4-scenes' contemporary-bathroom (ISO 600) would be far too dark without it. candela scales the lights.
 TEST(PbrtLoader, FilmIsoAndShutterTimeScaleTheLights) {
