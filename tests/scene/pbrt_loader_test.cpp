@@ -619,7 +619,7 @@ TEST(PbrtLoader, SpotFalloffTakesPbrtV3sConeDeltaAngle) {
 TEST(PbrtLoader, FilmIsoAndShutterTimeScaleTheLights) {
   LoadWarnings warnings;
   Scene scene = loadText(
-      "Film \"rgb\" \"float iso\" 400 \"string filename\" \"out.exr\" \"float cropwindow\" [0 .5 0 .5]\n"
+      "Film \"rgb\" \"float iso\" 400 \"string filename\" \"out.exr\" \"float maxcomponentvalue\" 10\n"
       "Scale -1 1 1\nCamera \"perspective\" \"float shutteropen\" 0 \"float shutterclose\" 0.5\nWorldBegin\n"
       "LightSource \"infinite\" \"rgb L\" [1 1 1]\nLightSource \"point\" \"rgb I\" [1 2 3]\n"
       "AreaLightSource \"diffuse\" \"rgb L\" [1 2 3]\n" +
@@ -630,7 +630,7 @@ TEST(PbrtLoader, FilmIsoAndShutterTimeScaleTheLights) {
   expectNear(scene.environment.radiance * scene.environment.intensity, {2, 2, 2});
   // What the film asks for and candela does not do is named; the output file is candela's -o.
   ASSERT_EQ(warnings.messages.size(), 1u);
-  EXPECT_EQ(warnings.messages[0], "test.pbrt: film: parameter 'cropwindow' is not applied");
+  EXPECT_EQ(warnings.messages[0], "test.pbrt: film: parameter 'maxcomponentvalue' is not applied");
   // Without iso and shutter times the ratio is 1.
   Scene plain = loadText(std::string(kMirroredCamera) + "AreaLightSource \"diffuse\" \"rgb L\" [1 2 3]\n" + kTriangle);
   expectNear(plain.materials[plain.meshes[0].triangleMaterials[0]].emission, {1, 2, 3});
@@ -638,6 +638,35 @@ TEST(PbrtLoader, FilmIsoAndShutterTimeScaleTheLights) {
                 .find("test.pbrt:1: the camera's shutter times leave the shutter closed"),
             std::string::npos);
   EXPECT_NE(loadError("Film \"rgb\" \"float iso\" 0\n").find("test.pbrt:1: 'iso' must be positive"), std::string::npos);
+}
+
+// pbrt-v4 renders only the film's crop window (pbrt-v4-scenes' head and sanmiguel-courtyard set one): the image
+// is its pixels, seen as the full frame's camera sees them. The top-right quarter of a 200 x 100 frame is a 100 x 50
+// image of the screen window x in [0, 2], y in [0, 1].
+TEST(PbrtLoader, FilmCropWindowsRenderTheirPartOfTheFrame) {
+  LoadWarnings warnings;
+  Scene cropped = loadText(
+      "Film \"rgb\" \"integer xresolution\" 200 \"integer yresolution\" 100 \"float cropwindow\" [1 .5 0 .5]\n"
+      "Scale -1 1 1\nCamera \"perspective\" \"float fov\" 60\nWorldBegin\n",
+      &warnings);
+  Scene windowed = loadText(
+      "Film \"rgb\" \"integer xresolution\" 100 \"integer yresolution\" 50\n"
+      "Scale -1 1 1\nCamera \"perspective\" \"float fov\" 60 \"float screenwindow\" [0 2 0 1]\nWorldBegin\n");
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages[0];
+  EXPECT_EQ(cropped.renderHints.width, 100u);
+  EXPECT_EQ(cropped.renderHints.height, 50u);
+  EXPECT_NEAR(cropped.camera.verticalFovDegrees, windowed.camera.verticalFovDegrees, 1e-4f);
+  EXPECT_NEAR(cropped.camera.imageShift.x, windowed.camera.imageShift.x, 1e-5f);
+  EXPECT_NEAR(cropped.camera.imageShift.y, windowed.camera.imageShift.y, 1e-5f);
+  EXPECT_GT(cropped.camera.imageShift.x, 0.0f);
+  EXPECT_GT(cropped.camera.imageShift.y, 0.0f);
+  // pbrt-v4's pixel bounds: columns ceil(0.3 * 10) = 3 to ceil(0.8 * 10) = 8.
+  Scene rounded = loadText("Film \"rgb\" \"integer xresolution\" 10 \"integer yresolution\" 10 "
+                           "\"float cropwindow\" [.3 .8 .15 .7]\n");
+  EXPECT_EQ(rounded.renderHints.width, 5u);
+  EXPECT_EQ(rounded.renderHints.height, 5u);
+  EXPECT_NE(loadError("Film \"rgb\" \"float cropwindow\" [.5 .5 0 1]\n").find("test.pbrt:1: the film's 'cropwindow' holds no pixel"),
+            std::string::npos);
 }
 
 TEST(PbrtLoader, UnsupportedFeaturesWarnOncePerFeature) {

@@ -89,17 +89,16 @@ class PbrtReader {
     assignPendingMaterials();
     Scene& scene = context_.scene;
     PbrtFilm film = readPbrtFilm(film_ ? &*film_ : nullptr, camera_ ? &*camera_ : nullptr, context_);
-    uint32_t width = film.width, height = film.height;
-    scene.renderHints.width = width;
-    scene.renderHints.height = height;
+    scene.renderHints.width = film.width;
+    scene.renderHints.height = film.height;
     scaleSceneLights(scene, film.imagingRatio);
     if (camera_) {
-      scene.camera = makePbrtCamera(cameraType_, *camera_, cameraFromWorld_, width, height, mirrorX_, context_);
+      scene.camera = makePbrtCamera(cameraType_, *camera_, cameraFromWorld_, film, mirrorX_, context_);
       context_.warnUnused("camera '" + cameraType_ + "'", *camera_);
     } else {
       PbrtParameters none;
       none.file = context_.mainFile;
-      scene.camera = makePbrtCamera("perspective", none, glm::mat4(1.0f), width, height, mirrorX_, context_);
+      scene.camera = makePbrtCamera("perspective", none, glm::mat4(1.0f), film, mirrorX_, context_);
     }
     if (samplerSamples_) scene.renderHints.samplesPerPixel = *samplerSamples_;
     scene.renderHints.maxDepth = maxDepth_;
