@@ -1118,6 +1118,28 @@ TEST(PbrtLights, OctahedralMapsFollowTheMirroredWorld) {
   EXPECT_GT(plusX[2], 0.9f);
 }
 
+// pbrt-v4's `illuminance` of an infinite light: the lux it gives a surface facing the light's +z, pi L for a
+// uniform L, and the integral of L cos(theta) over that hemisphere for a map.
+TEST(PbrtLights, InfiniteLightIlluminanceSetsItsRadiance) {
+  Scene constant = loadText("WorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 2] \"float illuminance\" 10\n");
+  expectNear(constant.environment.radiance, Vec3{1, 1, 2} * (10.0f / kPi));
+  TempFolder folder;
+  std::string pfm = "PF\n64 32\n-1.0\n";
+  for (int texel = 0; texel < 64 * 32; ++texel) {
+    float rgb[3] = {2.0f, 2.0f, 2.0f};
+    pfm.append(reinterpret_cast<const char*>(rgb), sizeof(rgb));
+  }
+  folder.write("sky.pfm", pfm);
+  std::string path = folder.write("scene.pbrt", std::string(kMirroredCamera) +
+                                                    "LightSource \"infinite\" \"string filename\" \"sky.pfm\" "
+                                                    "\"float illuminance\" 10 \"float scale\" 3\n");
+  LoadWarnings warnings;
+  const Texture& map = loadPbrt(path, warnings).environment.map;
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages[0];
+  ASSERT_FALSE(map.floats.empty());
+  EXPECT_NEAR(map.floats[(size_t(5) * map.width + 7) * 3], 3.0f * 10.0f / kPi, 0.02f * 3.0f * 10.0f / kPi);
+}
+
 TEST(PbrtLights, PbrtV3EquirectangularMaps) {
   // pbrt-v3's layout: u = phi / 2pi about the light's +z, v = theta / pi from +z. A map whose top half is red
   // (the light's +z hemisphere), turned so that +z is world +y: red above, blue below.

@@ -110,10 +110,12 @@ Environment makePbrtInfiniteLight(const PbrtParameters& params, const glm::mat4&
                                   PbrtContext& context) {
   Environment env;
   float scale = params.getFloat("scale", 1.0f);
-  if (params.find("illuminance")) context.warn("infinite illuminance", "infinite light 'illuminance' is not applied");
+  // pbrt-v4's `illuminance`: what the light gives a surface facing its +z (lux).
+  const float illuminance = params.getFloat("illuminance", -1.0f);
   if (params.find("portal")) context.warn("infinite portal", "infinite light portals are ignored");
   std::string file = params.getString("filename", "");
   if (file.empty()) {
+    if (illuminance > 0.0f) scale *= illuminance / kPi;  // a uniform L gives pi L on a surface
     env.radiance = params.getColor("L").value_or(PbrtColor{{1, 1, 1}, true}).rgb * scale;
     return env;
   }
@@ -133,6 +135,7 @@ Environment makePbrtInfiniteLight(const PbrtParameters& params, const glm::mat4&
   map.width = 2 * map.height;
   map.channels = 3;
   map.floats.resize(size_t(map.width) * map.height * 3);
+  double mapIlluminance = 0.0;  // of the file's values over the light's upper hemisphere, before `scale`
   for (uint32_t row = 0; row < map.height; ++row)
     for (uint32_t column = 0; column < map.width; ++column) {
       // candela's map direction of this texel (kernel/environment.h), then pbrt's world, then the light's frame.
@@ -153,11 +156,18 @@ Environment makePbrtInfiniteLight(const PbrtParameters& params, const glm::mat4&
           value = sampleClamped(source, lightPhi / (2.0f * kPi), std::acos(std::clamp(dl.z, -1.0f, 1.0f)) / kPi);
         }
       }
+      if (isFinite(dl) && dl.z > 0.0f) {
+        const double solidAngle = (2.0 * kPi / double(map.width)) * (kPi / double(map.height)) * std::sin(theta);
+        mapIlluminance += double(luminance(value)) * dl.z * solidAngle;
+      }
       float* out = map.floats.data() + (size_t(row) * map.width + column) * 3;
       out[0] = value.x * scale;
       out[1] = value.y * scale;
       out[2] = value.z * scale;
     }
+  // As pbrt-v4: the map is scaled to give `illuminance` (times `scale`) on a surface facing the light's +z.
+  if (illuminance > 0.0f && mapIlluminance > 0.0 && std::isfinite(mapIlluminance))
+    for (float& f : map.floats) f *= float(illuminance / mapIlluminance);
   return env;
 }
 

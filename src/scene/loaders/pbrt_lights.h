@@ -22,7 +22,8 @@ Vec3 pbrtAreaLightRadiance(const PbrtAreaLight& light, float worldArea);
 // pbrt's `LightSource "infinite"` as candela's environment: a constant L, or an image (`filename`) in pbrt-v4's
 // equal-area octahedral layout (square) or pbrt-v3's equirectangular one (twice as wide as high), resampled into
 // candela's equirectangular orientation through the light's transform `worldFromLight` and, when `mirrorX`, the
-// reflection x -> -x that turns pbrt's left-handed world into candela's right-handed one.
+// reflection x -> -x that turns pbrt's left-handed world into candela's right-handed one. `illuminance` scales
+// either, as in pbrt-v4, to give that many lux (times `scale`) on a surface facing the light's +z.
 Environment makePbrtInfiniteLight(const PbrtParameters& params, const glm::mat4& worldFromLight, bool mirrorX,
                                   PbrtContext& context);
 
