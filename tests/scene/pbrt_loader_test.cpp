@@ -669,6 +669,20 @@ TEST(PbrtLoader, FilmCropWindowsRenderTheirPartOfTheFrame) {
             std::string::npos);
 }
 
+// CoordSysTransform "camera" puts what follows in the camera's frame (pbrt-v4-scenes' killeroo-gold lights its
+// scene with a distant light that way): a point light at its origin sits at the eye, a distant light shines along
+// the view.
+TEST(PbrtLoader, CoordSysTransformCameraPlacesLightsAtTheCamera) {
+  Scene scene = loadText(
+      "LookAt 3 1 0  0 0 0  0 1 0\nCamera \"perspective\"\nWorldBegin\nAttributeBegin\nCoordSysTransform \"camera\"\n"
+      "LightSource \"point\"\nLightSource \"distant\"\nAttributeEnd\n");
+  ASSERT_EQ(scene.punctualLights.size(), 2u);
+  expectNear(scene.punctualLights[0].position, scene.camera.eye);
+  expectNear(scene.punctualLights[1].direction, normalize(scene.camera.target - scene.camera.eye));
+  EXPECT_NE(loadError("Scale 0 1 1\nCamera \"perspective\"\n").find("test.pbrt:2: the camera transform is not invertible"),
+            std::string::npos);
+}
+
 TEST(PbrtLoader, UnsupportedFeaturesWarnOncePerFeature) {
   LoadWarnings warnings;
   Scene scene = loadText(std::string(kMirroredCamera) +

@@ -226,7 +226,11 @@ class PbrtReader {
         cameraType_ = readString(tokens, d);
         camera_ = parsePbrtParameters(tokens);
         cameraFromWorld_ = state_.ctm;
-        namedFrames_["camera"] = state_.ctm;
+        // As in every pbrt, "camera" names the camera's frame in the world: what is placed in it after
+        // CoordSysTransform "camera" moves with the camera (a headlight).
+        glm::mat4 worldFromCamera = glm::inverse(state_.ctm);
+        if (!isFiniteMatrix(worldFromCamera)) fail(tokens, t.line, "the camera transform is not invertible");
+        namedFrames_["camera"] = worldFromCamera;
       } else if (d == "Film") {
         std::string type = readString(tokens, d);
         film_ = parsePbrtParameters(tokens);
