@@ -25,8 +25,9 @@ work=$(cd "$work" && pwd)
 
 v4_folders=(killeroos lte-orb ganesha crown pbrt-book sssdragon transparent-machines watercolor)
 v4_scenes=(killeroos/killeroo-simple.pbrt killeroos/killeroo-gold.pbrt killeroos/killeroo-coated-gold.pbrt
-           lte-orb/lte-orb-silver.pbrt lte-orb/lte-orb-rough-glass.pbrt ganesha/ganesha.pbrt crown/crown.pbrt
-           pbrt-book/book.pbrt)
+           killeroos/killeroo-moving.pbrt lte-orb/lte-orb-silver.pbrt lte-orb/lte-orb-rough-glass.pbrt
+           lte-orb/lte-orb-blue-agat-spec.pbrt lte-orb/lte-orb-simple-ball.pbrt ganesha/ganesha.pbrt crown/crown.pbrt
+           pbrt-book/book.pbrt sssdragon/dragon_10.pbrt)
 bitterli=(cornell-box veach-mis veach-bidir veach-ajar staircase staircase2 living-room living-room-2
           living-room-3 kitchen glass-of-water material-testball coffee classroom bathroom bathroom2 bedroom
           dining-room house lamp spaceship dragon car car2 teapot teapot-full water-caustic volumetric-caustic

@@ -15,6 +15,7 @@
 #include "scene/loaders/load_diagnostics.h"
 #include "scene/loaders/pbrt_lights.h"
 #include "scene/loaders/pbrt_spectra.h"
+#include "scene/loaders/pbrt_spectrum_files.h"
 #include "scene/loaders/pbrt_tokenizer.h"
 #include "scene/loaders/texture_limits.h"
 #include "scene/scene_test_files.h"
@@ -586,6 +587,102 @@ TEST(PbrtLoader, PointSpotAndDistantLightsBecomePunctualLights) {
   expectNear(sun.intensity, {3, 3, 3});
 }
 
+// pbrt-v4's photometric normalisations of punctual lights: a point light's power spreads over 4 pi steradians, a
+// spot's over 2 pi (1 - cos inner) plus half its falloff band; a distant light's illuminance multiplies L.
+TEST(PbrtLoader, PunctualLightPowerAndIlluminanceSetTheirIntensity) {
+  LoadWarnings warnings;
+  Scene scene = loadText(
+      "WorldBegin\nLightSource \"point\" \"rgb I\" [1 2 3] \"float power\" 100 \"float scale\" 2\n"
+      "LightSource \"spot\" \"float power\" 10 \"float coneangle\" 60 \"float conedelta\" 60\n"
+      "LightSource \"distant\" \"rgb L\" [1 1 2] \"float illuminance\" 5\n",
+      &warnings);
+  ASSERT_EQ(scene.punctualLights.size(), 3u);
+  const float pointScale = 2.0f * 100.0f / (4.0f * kPi);
+  expectNear(scene.punctualLights[0].intensity, Vec3{1, 2, 3} * pointScale, 1e-4f);
+  // Inner cone 0 degrees, falloff to 60: 2 pi (0 + (1 - 0.5) / 2) = pi / 2 steradians.
+  expectNear(scene.punctualLights[1].intensity, Vec3{1, 1, 1} * (10.0f / (kPi / 2.0f)), 1e-4f);
+  expectNear(scene.punctualLights[2].intensity, {5, 5, 10});
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages[0];
+}
+
+// pbrt-v3's name of a spot's falloff band, as pbrt-v4-scenes' villa-lights-on gives it.
+TEST(PbrtLoader, SpotFalloffTakesPbrtV3sConeDeltaAngle) {
+  LoadWarnings warnings;
+  Scene scene = loadText("WorldBegin\nLightSource \"spot\" \"float coneangle\" 50 \"float conedeltaangle\" 20\n", &warnings);
+  ASSERT_EQ(scene.punctualLights.size(), 1u);
+  EXPECT_NEAR(scene.punctualLights[0].cosInner, std::cos(30.0f * kPi / 180.0f), 1e-6f);
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages[0];
+}
+
+// pbrt-v4's sensor scales the image by ISO / 100 times the exposure time (shutterclose - shutteropen): scenes such
+// as pbrt-v4-scenes' contemporary-bathroom (ISO 600) would be far too dark without it. candela scales the lights.
+TEST(PbrtLoader, FilmIsoAndShutterTimeScaleTheLights) {
+  LoadWarnings warnings;
+  Scene scene = loadText(
+      "Film \"rgb\" \"float iso\" 400 \"string filename\" \"out.exr\" \"float maxcomponentvalue\" 10\n"
+      "Scale -1 1 1\nCamera \"perspective\" \"float shutteropen\" 0 \"float shutterclose\" 0.5\nWorldBegin\n"
+      "LightSource \"infinite\" \"rgb L\" [1 1 1]\nLightSource \"point\" \"rgb I\" [1 2 3]\n"
+      "AreaLightSource \"diffuse\" \"rgb L\" [1 2 3]\n" +
+          std::string(kTriangle),
+      &warnings);
+  expectNear(scene.materials[scene.meshes[0].triangleMaterials[0]].emission, {2, 4, 6});
+  expectNear(scene.punctualLights[0].intensity, {2, 4, 6});
+  expectNear(scene.environment.radiance * scene.environment.intensity, {2, 2, 2});
+  // What the film asks for and candela does not do is named; the output file is candela's -o.
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_EQ(warnings.messages[0], "test.pbrt: film: parameter 'maxcomponentvalue' is not applied");
+  // Without iso and shutter times the ratio is 1.
+  Scene plain = loadText(std::string(kMirroredCamera) + "AreaLightSource \"diffuse\" \"rgb L\" [1 2 3]\n" + kTriangle);
+  expectNear(plain.materials[plain.meshes[0].triangleMaterials[0]].emission, {1, 2, 3});
+  EXPECT_NE(loadError("Camera \"perspective\" \"float shutteropen\" 1 \"float shutterclose\" 1\n")
+                .find("test.pbrt:1: the camera's shutter times leave the shutter closed"),
+            std::string::npos);
+  EXPECT_NE(loadError("Film \"rgb\" \"float iso\" 0\n").find("test.pbrt:1: 'iso' must be positive"), std::string::npos);
+}
+
+// pbrt-v4 renders only the film's crop window (pbrt-v4-scenes' head and sanmiguel-courtyard set one): the image
+// is its pixels, seen as the full frame's camera sees them. The top-right quarter of a 200 x 100 frame is a 100 x 50
+// image of the screen window x in [0, 2], y in [0, 1].
+TEST(PbrtLoader, FilmCropWindowsRenderTheirPartOfTheFrame) {
+  LoadWarnings warnings;
+  Scene cropped = loadText(
+      "Film \"rgb\" \"integer xresolution\" 200 \"integer yresolution\" 100 \"float cropwindow\" [1 .5 0 .5]\n"
+      "Scale -1 1 1\nCamera \"perspective\" \"float fov\" 60\nWorldBegin\n",
+      &warnings);
+  Scene windowed = loadText(
+      "Film \"rgb\" \"integer xresolution\" 100 \"integer yresolution\" 50\n"
+      "Scale -1 1 1\nCamera \"perspective\" \"float fov\" 60 \"float screenwindow\" [0 2 0 1]\nWorldBegin\n");
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages[0];
+  EXPECT_EQ(cropped.renderHints.width, 100u);
+  EXPECT_EQ(cropped.renderHints.height, 50u);
+  EXPECT_NEAR(cropped.camera.verticalFovDegrees, windowed.camera.verticalFovDegrees, 1e-4f);
+  EXPECT_NEAR(cropped.camera.imageShift.x, windowed.camera.imageShift.x, 1e-5f);
+  EXPECT_NEAR(cropped.camera.imageShift.y, windowed.camera.imageShift.y, 1e-5f);
+  EXPECT_GT(cropped.camera.imageShift.x, 0.0f);
+  EXPECT_GT(cropped.camera.imageShift.y, 0.0f);
+  // pbrt-v4's pixel bounds: columns ceil(0.3 * 10) = 3 to ceil(0.8 * 10) = 8.
+  Scene rounded = loadText("Film \"rgb\" \"integer xresolution\" 10 \"integer yresolution\" 10 "
+                           "\"float cropwindow\" [.3 .8 .15 .7]\n");
+  EXPECT_EQ(rounded.renderHints.width, 5u);
+  EXPECT_EQ(rounded.renderHints.height, 5u);
+  EXPECT_NE(loadError("Film \"rgb\" \"float cropwindow\" [.5 .5 0 1]\n").find("test.pbrt:1: the film's 'cropwindow' holds no pixel"),
+            std::string::npos);
+}
+
+// CoordSysTransform "camera" puts what follows in the camera's frame (pbrt-v4-scenes' killeroo-gold lights its
+// scene with a distant light that way): a point light at its origin sits at the eye, a distant light shines along
+// the view.
+TEST(PbrtLoader, CoordSysTransformCameraPlacesLightsAtTheCamera) {
+  Scene scene = loadText(
+      "LookAt 3 1 0  0 0 0  0 1 0\nCamera \"perspective\"\nWorldBegin\nAttributeBegin\nCoordSysTransform \"camera\"\n"
+      "LightSource \"point\"\nLightSource \"distant\"\nAttributeEnd\n");
+  ASSERT_EQ(scene.punctualLights.size(), 2u);
+  expectNear(scene.punctualLights[0].position, scene.camera.eye);
+  expectNear(scene.punctualLights[1].direction, normalize(scene.camera.target - scene.camera.eye));
+  EXPECT_NE(loadError("Scale 0 1 1\nCamera \"perspective\"\n").find("test.pbrt:2: the camera transform is not invertible"),
+            std::string::npos);
+}
+
 TEST(PbrtLoader, UnsupportedFeaturesWarnOncePerFeature) {
   LoadWarnings warnings;
   Scene scene = loadText(std::string(kMirroredCamera) +
@@ -623,6 +720,47 @@ TEST(PbrtLoader, UnknownSpectraWarnAndTakeTheDefault) {
   expectNear(scene.materials[scene.meshes[0].triangleMaterials[0]].baseColor, {0.5f, 0.5f, 0.5f});
   ASSERT_EQ(warnings.messages.size(), 1u);
   EXPECT_NE(warnings.messages[0].find("'measured.spd'"), std::string::npos) << warnings.messages[0];
+}
+
+// pbrt-v4 reads a spectrum that is not one of its names from a file of wavelength-value pairs (pbrt-v4-scenes'
+// killeroo-gold: "spectrum k" [ "spds/Au.k.spd" ]).
+TEST(PbrtLoader, SpectrumFilesAreRead) {
+  TempFolder folder;
+  folder.write("spds/grey.spd", "# a measured grey\n300 0.25   # nm, value\n900 0.25\n");
+  folder.write("spds/bad.spd", "400 0.5\n500 half\n");
+  std::string main = folder.write(
+      "main.pbrt", std::string(kMirroredCamera) + "Material \"diffuse\" \"spectrum reflectance\" \"spds/grey.spd\"\n" +
+                       kTriangle + "Material \"diffuse\" \"spectrum reflectance\" \"spds/missing.spd\"\n" + kTriangle +
+                       "Material \"diffuse\" \"spectrum reflectance\" \"spds/bad.spd\"\n" + kTriangle);
+  LoadWarnings warnings;
+  Scene scene = loadPbrt(main, warnings);
+  expectNear(scene.materials[scene.meshes[0].triangleMaterials[0]].baseColor, {0.25f, 0.25f, 0.25f}, 1e-3f);
+  // Files that cannot be read are named once each, and the default stands in.
+  expectNear(scene.materials[scene.meshes[1].triangleMaterials[0]].baseColor, {0.5f, 0.5f, 0.5f});
+  expectNear(scene.materials[scene.meshes[2].triangleMaterials[0]].baseColor, {0.5f, 0.5f, 0.5f});
+  ASSERT_EQ(warnings.messages.size(), 2u);
+  EXPECT_NE(warnings.messages[0].find("missing.spd: cannot open"), std::string::npos) << warnings.messages[0];
+  EXPECT_NE(warnings.messages[1].find("bad.spd:2: 'half' is not a number"), std::string::npos) << warnings.messages[1];
+  // The file is one of the scene's inputs (the scene cache notices when it changes).
+  EXPECT_NE(std::find_if(scene.inputFiles.begin(), scene.inputFiles.end(),
+                         [](const std::string& f) { return f.find("grey.spd") != std::string::npos; }),
+            scene.inputFiles.end());
+}
+
+TEST(PbrtSpectrumFiles, PairsCommentsAndMalformedFiles) {
+  EXPECT_EQ(parsePbrtSpectrumFile("a.spd", "# c\n400 1,500 2\r\n#\n600 3 700 4"),
+            (std::vector<double>{400, 1, 500, 2, 600, 3, 700, 4}));
+  auto error = [](const std::string& text) {
+    try {
+      parsePbrtSpectrumFile("a.spd", text);
+    } catch (const LoadError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  EXPECT_EQ(error("400 1 500"), "a.spd: a spectrum file needs wavelength-value pairs, found 3 numbers");
+  EXPECT_EQ(error("# nothing\n"), "a.spd: a spectrum file needs wavelength-value pairs, found 0 numbers");
+  EXPECT_EQ(error("400 1\n500 nan\n"), "a.spd:2: 'nan' is not a number");
 }
 
 TEST(PbrtLoader, ImageTexturesWithTheirUvMapping) {
@@ -992,6 +1130,28 @@ TEST(PbrtLights, OctahedralMapsFollowTheMirroredWorld) {
   const float* plusX = map.floats.data() + (size_t(map.height / 2) * map.width + 3 * map.width / 4) * 3;
   EXPECT_GT(minusX[0], 0.9f);
   EXPECT_GT(plusX[2], 0.9f);
+}
+
+// pbrt-v4's `illuminance` of an infinite light: the lux it gives a surface facing the light's +z, pi L for a
+// uniform L, and the integral of L cos(theta) over that hemisphere for a map.
+TEST(PbrtLights, InfiniteLightIlluminanceSetsItsRadiance) {
+  Scene constant = loadText("WorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 2] \"float illuminance\" 10\n");
+  expectNear(constant.environment.radiance, Vec3{1, 1, 2} * (10.0f / kPi));
+  TempFolder folder;
+  std::string pfm = "PF\n64 32\n-1.0\n";
+  for (int texel = 0; texel < 64 * 32; ++texel) {
+    float rgb[3] = {2.0f, 2.0f, 2.0f};
+    pfm.append(reinterpret_cast<const char*>(rgb), sizeof(rgb));
+  }
+  folder.write("sky.pfm", pfm);
+  std::string path = folder.write("scene.pbrt", std::string(kMirroredCamera) +
+                                                    "LightSource \"infinite\" \"string filename\" \"sky.pfm\" "
+                                                    "\"float illuminance\" 10 \"float scale\" 3\n");
+  LoadWarnings warnings;
+  const Texture& map = loadPbrt(path, warnings).environment.map;
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages[0];
+  ASSERT_FALSE(map.floats.empty());
+  EXPECT_NEAR(map.floats[(size_t(5) * map.width + 7) * 3], 3.0f * 10.0f / kPi, 0.02f * 3.0f * 10.0f / kPi);
 }
 
 TEST(PbrtLights, PbrtV3EquirectangularMaps) {

@@ -36,7 +36,7 @@ bool pbrtWorldNeedsMirror(const glm::mat4& cameraFromWorld) {
 }
 
 CameraDescription makePbrtCamera(const std::string& type, const PbrtParameters& params,
-                                 const glm::mat4& cameraFromWorld, uint32_t width, uint32_t height, bool mirrorX,
+                                 const glm::mat4& cameraFromWorld, const PbrtFilm& film, bool mirrorX,
                                  PbrtContext& context) {
   const bool orthographic = type == "orthographic";
   if (type != "perspective" && !orthographic)
@@ -52,7 +52,15 @@ CameraDescription makePbrtCamera(const std::string& type, const PbrtParameters& 
 
   // candela spans the image's height and takes the width from the image's aspect ratio; the window's centre
   // becomes the image shift, in units of its half height.
-  const ScreenWindow window = screenWindowOf(params, width, height);
+  const ScreenWindow full = screenWindowOf(params, film.fullWidth, film.fullHeight);
+  // The crop window's part of it (pbrt's rows run down from the top, screen y up).
+  const float columnWidth = (full.xMax - full.xMin) / float(film.fullWidth);
+  const float rowHeight = (full.yMax - full.yMin) / float(film.fullHeight);
+  const ScreenWindow window{full.xMin + columnWidth * float(film.cropX),
+                            full.xMin + columnWidth * float(film.cropX + film.width),
+                            full.yMax - rowHeight * float(film.cropY + film.height),
+                            full.yMax - rowHeight * float(film.cropY)};
+  const uint32_t width = film.width, height = film.height;
   const float halfHeight = 0.5f * (window.yMax - window.yMin);
   const float windowAspect = (window.xMax - window.xMin) / (window.yMax - window.yMin);
   if (std::fabs(windowAspect / (float(width) / float(height)) - 1.0f) > 0.01f)

@@ -21,9 +21,7 @@ void PbrtContext::warnUnused(const std::string& directive, const PbrtParameters&
   for (const std::string& name : params.unused())
     warn(directive + " " + name, directive + ": parameter '" + name + "' is not applied");
   for (const std::string& spectrum : params.unknownSpectra)
-    warn("spectrum " + spectrum, "spectrum '" + spectrum +
-                                     "' is not known (spectrum files are not read): the "
-                                     "parameter's default is used");
+    warn("spectrum " + spectrum, "spectrum '" + spectrum + "' is not known: the parameter's default is used");
 }
 
 std::string PbrtContext::resolve(const std::string& reference, const std::string& file, size_t line) {

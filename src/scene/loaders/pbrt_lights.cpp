@@ -66,35 +66,43 @@ Vec3 pbrtAreaLightRadiance(const PbrtAreaLight& light, float worldArea) {
 }
 
 PunctualLight makePbrtPunctualLight(const std::string& type, const PbrtParameters& params,
-                                    const glm::mat4& worldFromLight, PbrtContext& context) {
+                                    const glm::mat4& worldFromLight) {
   auto point = [&](const char* name, Vec3 fallback) {
     std::vector<Vec3> p = params.getVec3s(name);
     Vec3 local = p.empty() ? fallback : p[0];
     glm::vec4 world = worldFromLight * glm::vec4(local.x, local.y, local.z, 1.0f);
     return Vec3{world.x, world.y, world.z};
   };
-  for (const char* normalisation : {"power", "illuminance"})
-    if (params.find(normalisation))
-      context.warn(std::string("light ") + normalisation,
-                   std::string("light '") + normalisation + "' is not applied: I or L times scale is used");
   PunctualLight light;
-  const float scale = params.getFloat("scale", 1.0f);
+  float scale = params.getFloat("scale", 1.0f);
   const Vec3 from = point("from", {0, 0, 0});
   if (type == "distant") {
     light.type = PunctualLightType::Directional;
+    // pbrt-v4: `illuminance` (lux) times the spectrum of L, normalised to luminance 1 (as RGB L already is).
+    const float illuminance = params.getFloat("illuminance", -1.0f);
+    if (illuminance > 0.0f) scale *= illuminance;
     light.intensity = params.getColor("L").value_or(PbrtColor{{1, 1, 1}, true}).rgb * scale;
     light.direction = normalize(point("to", {0, 0, 1}) - from);
     return light;
   }
   light.position = from;
-  light.intensity = params.getColor("I").value_or(PbrtColor{{1, 1, 1}, true}).rgb * scale;
+  const float power = params.getFloat("power", -1.0f);
   if (type == "spot") {
     light.type = PunctualLightType::Spot;
     light.direction = normalize(point("to", {0, 0, 1}) - from);
-    const float cone = params.getFloat("coneangle", 30.0f), delta = params.getFloat("conedelta", 5.0f);
+    // pbrt-v3 named the falloff band `conedeltaangle` (pbrt-v4-scenes' villa still does).
+    const float cone = params.getFloat("coneangle", 30.0f);
+    const float delta = params.find("conedelta") ? params.getFloat("conedelta", 5.0f)
+                                                 : params.getFloat("conedeltaangle", 5.0f);
     light.cosOuter = std::cos(cone * kPi / 180.0f);
     light.cosInner = std::cos(std::max(cone - delta, 0.0f) * kPi / 180.0f);
+    // pbrt-v4's solid angle of a spot, its falloff counted as half: `power` (lumens) over it gives the intensity.
+    const float solidAngle = 2.0f * kPi * ((1.0f - light.cosInner) + (light.cosInner - light.cosOuter) / 2.0f);
+    if (power > 0.0f && solidAngle > 0.0f) scale *= power / solidAngle;
+  } else if (power > 0.0f) {
+    scale *= power / (4.0f * kPi);  // a point light's power spreads over the whole sphere
   }
+  light.intensity = params.getColor("I").value_or(PbrtColor{{1, 1, 1}, true}).rgb * scale;
   return light;
 }
 
@@ -102,10 +110,12 @@ Environment makePbrtInfiniteLight(const PbrtParameters& params, const glm::mat4&
                                   PbrtContext& context) {
   Environment env;
   float scale = params.getFloat("scale", 1.0f);
-  if (params.find("illuminance")) context.warn("infinite illuminance", "infinite light 'illuminance' is not applied");
+  // pbrt-v4's `illuminance`: what the light gives a surface facing its +z (lux).
+  const float illuminance = params.getFloat("illuminance", -1.0f);
   if (params.find("portal")) context.warn("infinite portal", "infinite light portals are ignored");
   std::string file = params.getString("filename", "");
   if (file.empty()) {
+    if (illuminance > 0.0f) scale *= illuminance / kPi;  // a uniform L gives pi L on a surface
     env.radiance = params.getColor("L").value_or(PbrtColor{{1, 1, 1}, true}).rgb * scale;
     return env;
   }
@@ -125,6 +135,7 @@ Environment makePbrtInfiniteLight(const PbrtParameters& params, const glm::mat4&
   map.width = 2 * map.height;
   map.channels = 3;
   map.floats.resize(size_t(map.width) * map.height * 3);
+  double mapIlluminance = 0.0;  // of the file's values over the light's upper hemisphere, before `scale`
   for (uint32_t row = 0; row < map.height; ++row)
     for (uint32_t column = 0; column < map.width; ++column) {
       // candela's map direction of this texel (kernel/environment.h), then pbrt's world, then the light's frame.
@@ -145,11 +156,18 @@ Environment makePbrtInfiniteLight(const PbrtParameters& params, const glm::mat4&
           value = sampleClamped(source, lightPhi / (2.0f * kPi), std::acos(std::clamp(dl.z, -1.0f, 1.0f)) / kPi);
         }
       }
+      if (isFinite(dl) && dl.z > 0.0f) {
+        const double solidAngle = (2.0 * kPi / double(map.width)) * (kPi / double(map.height)) * std::sin(theta);
+        mapIlluminance += double(luminance(value)) * dl.z * solidAngle;
+      }
       float* out = map.floats.data() + (size_t(row) * map.width + column) * 3;
       out[0] = value.x * scale;
       out[1] = value.y * scale;
       out[2] = value.z * scale;
     }
+  // As pbrt-v4: the map is scaled to give `illuminance` (times `scale`) on a surface facing the light's +z.
+  if (illuminance > 0.0f && mapIlluminance > 0.0 && std::isfinite(mapIlluminance))
+    for (float& f : map.floats) f *= float(illuminance / mapIlluminance);
   return env;
 }
 

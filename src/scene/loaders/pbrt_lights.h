@@ -22,16 +22,18 @@ Vec3 pbrtAreaLightRadiance(const PbrtAreaLight& light, float worldArea);
 // pbrt's `LightSource "infinite"` as candela's environment: a constant L, or an image (`filename`) in pbrt-v4's
 // equal-area octahedral layout (square) or pbrt-v3's equirectangular one (twice as wide as high), resampled into
 // candela's equirectangular orientation through the light's transform `worldFromLight` and, when `mirrorX`, the
-// reflection x -> -x that turns pbrt's left-handed world into candela's right-handed one.
+// reflection x -> -x that turns pbrt's left-handed world into candela's right-handed one. `illuminance` scales
+// either, as in pbrt-v4, to give that many lux (times `scale`) on a surface facing the light's +z.
 Environment makePbrtInfiniteLight(const PbrtParameters& params, const glm::mat4& worldFromLight, bool mirrorX,
                                   PbrtContext& context);
 
 // pbrt's `LightSource "point"`, "spot" and "distant" as candela's punctual lights, placed by `worldFromLight` (the
 // world mirror included): I (or L for a distant light) times scale; a spot's `coneangle` and `conedelta` bound its
-// smoothstep falloff as in pbrt-v4; a distant light travels from `from` to `to`. `power` and `illuminance`, which
-// pbrt-v4 normalises spectrally, are not applied (a warning).
+// smoothstep falloff as in pbrt-v4; a distant light travels from `from` to `to`. As in pbrt-v4, a point or spot
+// light's `power` (over the sphere, or the spot's cone with its falloff counted as half) and a distant light's
+// `illuminance` multiply I (or L), whose spectrum is normalised to luminance 1 (RGB values are taken as they are).
 PunctualLight makePbrtPunctualLight(const std::string& type, const PbrtParameters& params,
-                                    const glm::mat4& worldFromLight, PbrtContext& context);
+                                    const glm::mat4& worldFromLight);
 
 // Where pbrt-v4's equal-area octahedral map (Clarberg 2008) puts direction `d` (unit length): [0, 1]^2.
 Vec2 equalAreaSphereToSquare(Vec3 d);

@@ -10,10 +10,12 @@
 #include "scene/loaders/file_bytes.h"
 #include "scene/loaders/pbrt_camera.h"
 #include "scene/loaders/pbrt_context.h"
+#include "scene/loaders/pbrt_film.h"
 #include "scene/loaders/pbrt_lights.h"
 #include "scene/loaders/pbrt_materials.h"
 #include "scene/loaders/pbrt_parameters.h"
 #include "scene/loaders/pbrt_shapes.h"
+#include "scene/loaders/pbrt_spectrum_files.h"
 #include "scene/loaders/pbrt_textures.h"
 #include "scene/loaders/pbrt_tokenizer.h"
 #include "scene/loaders/pbrt_transforms.h"
@@ -86,18 +88,17 @@ class PbrtReader {
     if (!worldBegun_) chooseWorldMirror();
     assignPendingMaterials();
     Scene& scene = context_.scene;
-    // The same ranges as a JSON scene file's render settings (scene_file.cpp).
-    uint32_t width = uint32_t(std::clamp(film_ ? film_->getInt("xresolution", 1280) : 1280, 1, 16384));
-    uint32_t height = uint32_t(std::clamp(film_ ? film_->getInt("yresolution", 720) : 720, 1, 16384));
-    scene.renderHints.width = width;
-    scene.renderHints.height = height;
+    PbrtFilm film = readPbrtFilm(film_ ? &*film_ : nullptr, camera_ ? &*camera_ : nullptr, context_);
+    scene.renderHints.width = film.width;
+    scene.renderHints.height = film.height;
+    scaleSceneLights(scene, film.imagingRatio);
     if (camera_) {
-      scene.camera = makePbrtCamera(cameraType_, *camera_, cameraFromWorld_, width, height, mirrorX_, context_);
+      scene.camera = makePbrtCamera(cameraType_, *camera_, cameraFromWorld_, film, mirrorX_, context_);
       context_.warnUnused("camera '" + cameraType_ + "'", *camera_);
     } else {
       PbrtParameters none;
       none.file = context_.mainFile;
-      scene.camera = makePbrtCamera("perspective", none, glm::mat4(1.0f), width, height, mirrorX_, context_);
+      scene.camera = makePbrtCamera("perspective", none, glm::mat4(1.0f), film, mirrorX_, context_);
     }
     if (samplerSamples_) scene.renderHints.samplesPerPixel = *samplerSamples_;
     scene.renderHints.maxDepth = maxDepth_;
@@ -127,6 +128,13 @@ class PbrtReader {
     if (bracketed && tokens.next().kind != PbrtToken::Kind::CloseBracket)
       fail(tokens, tokens.line(), directive + " expects " + std::to_string(count) + " numbers in brackets");
     return values;
+  }
+
+  // The parameters of a directive that may name spectrum files (materials, textures, lights), with those read.
+  PbrtParameters readParametersWithSpectra(PbrtTokenizer& tokens) {
+    PbrtParameters params = parsePbrtParameters(tokens);
+    readPbrtSpectrumFiles(params, context_);
+    return params;
   }
 
   std::string readString(PbrtTokenizer& tokens, const std::string& directive) {
@@ -218,7 +226,11 @@ class PbrtReader {
         cameraType_ = readString(tokens, d);
         camera_ = parsePbrtParameters(tokens);
         cameraFromWorld_ = state_.ctm;
-        namedFrames_["camera"] = state_.ctm;
+        // As in every pbrt, "camera" names the camera's frame in the world: what is placed in it after
+        // CoordSysTransform "camera" moves with the camera (a headlight).
+        glm::mat4 worldFromCamera = glm::inverse(state_.ctm);
+        if (!isFiniteMatrix(worldFromCamera)) fail(tokens, t.line, "the camera transform is not invertible");
+        namedFrames_["camera"] = worldFromCamera;
       } else if (d == "Film") {
         std::string type = readString(tokens, d);
         film_ = parsePbrtParameters(tokens);
@@ -259,18 +271,18 @@ class PbrtReader {
         readFile(context_.resolve(file, tokens.file(), t.line), depth + 1);
       } else if (d == "Texture") {
         std::string name = readString(tokens, d), valueType = readString(tokens, d), className = readString(tokens, d);
-        PbrtParameters params = parsePbrtParameters(tokens);
+        PbrtParameters params = readParametersWithSpectra(tokens);
         textures_.define(name, valueType, className, params);
         context_.warnUnused("texture '" + className + "'", params);
       } else if (d == "Material") {
         std::string type = readString(tokens, d);
-        PbrtParameters params = parsePbrtParameters(tokens);
+        PbrtParameters params = readParametersWithSpectra(tokens);
         state_.material = materials_.make(type, params);
         state_.materialName.clear();
         context_.warnUnused("material '" + type + "'", params);
       } else if (d == "MakeNamedMaterial") {
         std::string name = readString(tokens, d);
-        PbrtParameters params = parsePbrtParameters(tokens);
+        PbrtParameters params = readParametersWithSpectra(tokens);
         materials_.defineNamed(name, params);
         context_.warnUnused("material '" + params.getString("type", "") + "'", params);
       } else if (d == "NamedMaterial") {
@@ -280,12 +292,12 @@ class PbrtReader {
         if (materials_.isNamed(name)) state_.material = materials_.named(name, tokens.file(), t.line);
       } else if (d == "LightSource") {
         std::string type = readString(tokens, d);
-        PbrtParameters params = parsePbrtParameters(tokens);
+        PbrtParameters params = readParametersWithSpectra(tokens);
         readLight(type, params);
         context_.warnUnused("light '" + type + "'", params);
       } else if (d == "AreaLightSource") {
         std::string type = readString(tokens, d);
-        PbrtParameters params = parsePbrtParameters(tokens);
+        PbrtParameters params = readParametersWithSpectra(tokens);
         state_.areaLight = makePbrtAreaLight(type, params, context_);
         context_.warnUnused("area light '" + type + "'", params);
       } else if (d == "Shape") {
@@ -319,7 +331,7 @@ class PbrtReader {
     if (!worldBegun_) chooseWorldMirror();
     if (type == "point" || type == "spot" || type == "distant") {
       context_.scene.punctualLights.push_back(
-          makePbrtPunctualLight(type, params, worldFromPbrt_ * state_.ctm, context_));
+          makePbrtPunctualLight(type, params, worldFromPbrt_ * state_.ctm));
       return;
     }
     if (type != "infinite") {

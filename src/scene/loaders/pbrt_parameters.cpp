@@ -174,7 +174,8 @@ std::optional<PbrtColor> PbrtParameters::getColor(const std::string& name) const
     if (p->strings.size() == 1) {
       std::optional<Vec3> named = namedSpectrumRgb(p->strings[0]);
       if (!named) {
-        // A spectrum file or a name candela does not know: the parameter's default stands in.
+        // A name candela does not know (spectrum files were read before, pbrt_spectrum_files.h): the
+        // parameter's default stands in.
         unknownSpectra.push_back(p->strings[0]);
         return std::nullopt;
       }
@@ -187,7 +188,7 @@ std::optional<PbrtColor> PbrtParameters::getColor(const std::string& name) const
       float v = float(p->numbers[0]);
       c.rgb = {v, v, v};
     } else {
-      fail("'" + name + "' needs wavelength-value pairs or a spectrum's name (a spectrum file is not read)");
+      fail("'" + name + "' needs wavelength-value pairs, a spectrum's name or a spectrum file");
     }
   } else {
     fail("'" + name + "' needs a colour, not a " + p->type);

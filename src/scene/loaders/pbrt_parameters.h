@@ -35,7 +35,7 @@ class PbrtParameters {
   std::string file;
   size_t line = 0;
   std::vector<PbrtParameter> list;
-  // Spectra that colour lookups met but could not turn into RGB (spectrum files, unknown names).
+  // Spectra that colour lookups met but could not turn into RGB (unknown names, files of a scene read from memory).
   mutable std::vector<std::string> unknownSpectra;
 
   const PbrtParameter* find(const std::string& name) const;
@@ -48,7 +48,7 @@ class PbrtParameters {
   std::vector<Vec2> getVec2s(const std::string& name) const;      // point2 (or float pairs)
   std::vector<int64_t> getInts(const std::string& name) const;
   // A colour (rgb, spectrum, blackbody, or a float for grey); nothing when absent, a texture, or a spectrum file
-  // or name that is not known (recorded in unknownSpectra).
+  // not read (pbrt_spectrum_files.h) or a name that is not known (recorded in unknownSpectra).
   std::optional<PbrtColor> getColor(const std::string& name) const;
   // The texture a parameter names, when it is of type "texture".
   std::optional<std::string> getTexture(const std::string& name) const;
