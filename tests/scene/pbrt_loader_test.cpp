@@ -608,7 +608,8 @@ TEST(PbrtLoader, PunctualLightPowerAndIlluminanceSetTheirIntensity) {
 // pbrt-v3's name of a spot's falloff band, as pbrt-v4-scenes' villa-lights-on gives it.
 TEST(PbrtLoader, SpotFalloffTakesPbrtV3sConeDeltaAngle) {
   LoadWarnings warnings;
-  Scene scene = loadText("WorldBegin\nLightSource \"spot\" \"float coneangle\" 50 \"float conedeltaangle\" 20\n", &warnings);
+  Scene scene =
+      loadText("WorldBegin\nLightSource \"spot\" \"float coneangle\" 50 \"float conedeltaangle\" 20\n", &warnings);
   ASSERT_EQ(scene.punctualLights.size(), 1u);
   EXPECT_NEAR(scene.punctualLights[0].cosInner, std::cos(30.0f * kPi / 180.0f), 1e-6f);
   EXPECT_TRUE(warnings.messages.empty()) << warnings.messages[0];
@@ -661,11 +662,13 @@ TEST(PbrtLoader, FilmCropWindowsRenderTheirPartOfTheFrame) {
   EXPECT_GT(cropped.camera.imageShift.x, 0.0f);
   EXPECT_GT(cropped.camera.imageShift.y, 0.0f);
   // pbrt-v4's pixel bounds: columns ceil(0.3 * 10) = 3 to ceil(0.8 * 10) = 8.
-  Scene rounded = loadText("Film \"rgb\" \"integer xresolution\" 10 \"integer yresolution\" 10 "
-                           "\"float cropwindow\" [.3 .8 .15 .7]\n");
+  Scene rounded = loadText(
+      "Film \"rgb\" \"integer xresolution\" 10 \"integer yresolution\" 10 "
+      "\"float cropwindow\" [.3 .8 .15 .7]\n");
   EXPECT_EQ(rounded.renderHints.width, 5u);
   EXPECT_EQ(rounded.renderHints.height, 5u);
-  EXPECT_NE(loadError("Film \"rgb\" \"float cropwindow\" [.5 .5 0 1]\n").find("test.pbrt:1: the film's 'cropwindow' holds no pixel"),
+  EXPECT_NE(loadError("Film \"rgb\" \"float cropwindow\" [.5 .5 0 1]\n")
+                .find("test.pbrt:1: the film's 'cropwindow' holds no pixel"),
             std::string::npos);
 }
 
@@ -679,8 +682,9 @@ TEST(PbrtLoader, CoordSysTransformCameraPlacesLightsAtTheCamera) {
   ASSERT_EQ(scene.punctualLights.size(), 2u);
   expectNear(scene.punctualLights[0].position, scene.camera.eye);
   expectNear(scene.punctualLights[1].direction, normalize(scene.camera.target - scene.camera.eye));
-  EXPECT_NE(loadError("Scale 0 1 1\nCamera \"perspective\"\n").find("test.pbrt:2: the camera transform is not invertible"),
-            std::string::npos);
+  EXPECT_NE(
+      loadError("Scale 0 1 1\nCamera \"perspective\"\n").find("test.pbrt:2: the camera transform is not invertible"),
+      std::string::npos);
 }
 
 TEST(PbrtLoader, UnsupportedFeaturesWarnOncePerFeature) {
@@ -728,10 +732,11 @@ TEST(PbrtLoader, SpectrumFilesAreRead) {
   TempFolder folder;
   folder.write("spds/grey.spd", "# a measured grey\n300 0.25   # nm, value\n900 0.25\n");
   folder.write("spds/bad.spd", "400 0.5\n500 half\n");
-  std::string main = folder.write(
-      "main.pbrt", std::string(kMirroredCamera) + "Material \"diffuse\" \"spectrum reflectance\" \"spds/grey.spd\"\n" +
-                       kTriangle + "Material \"diffuse\" \"spectrum reflectance\" \"spds/missing.spd\"\n" + kTriangle +
-                       "Material \"diffuse\" \"spectrum reflectance\" \"spds/bad.spd\"\n" + kTriangle);
+  std::string main =
+      folder.write("main.pbrt", std::string(kMirroredCamera) +
+                                    "Material \"diffuse\" \"spectrum reflectance\" \"spds/grey.spd\"\n" + kTriangle +
+                                    "Material \"diffuse\" \"spectrum reflectance\" \"spds/missing.spd\"\n" + kTriangle +
+                                    "Material \"diffuse\" \"spectrum reflectance\" \"spds/bad.spd\"\n" + kTriangle);
   LoadWarnings warnings;
   Scene scene = loadPbrt(main, warnings);
   expectNear(scene.materials[scene.meshes[0].triangleMaterials[0]].baseColor, {0.25f, 0.25f, 0.25f}, 1e-3f);

@@ -92,8 +92,8 @@ PunctualLight makePbrtPunctualLight(const std::string& type, const PbrtParameter
     light.direction = normalize(point("to", {0, 0, 1}) - from);
     // pbrt-v3 named the falloff band `conedeltaangle` (pbrt-v4-scenes' villa still does).
     const float cone = params.getFloat("coneangle", 30.0f);
-    const float delta = params.find("conedelta") ? params.getFloat("conedelta", 5.0f)
-                                                 : params.getFloat("conedeltaangle", 5.0f);
+    const float delta =
+        params.find("conedelta") ? params.getFloat("conedelta", 5.0f) : params.getFloat("conedeltaangle", 5.0f);
     light.cosOuter = std::cos(cone * kPi / 180.0f);
     light.cosInner = std::cos(std::max(cone - delta, 0.0f) * kPi / 180.0f);
     // pbrt-v4's solid angle of a spot, its falloff counted as half: `power` (lumens) over it gives the intensity.

@@ -330,8 +330,7 @@ class PbrtReader {
   void readLight(const std::string& type, const PbrtParameters& params) {
     if (!worldBegun_) chooseWorldMirror();
     if (type == "point" || type == "spot" || type == "distant") {
-      context_.scene.punctualLights.push_back(
-          makePbrtPunctualLight(type, params, worldFromPbrt_ * state_.ctm));
+      context_.scene.punctualLights.push_back(makePbrtPunctualLight(type, params, worldFromPbrt_ * state_.ctm));
       return;
     }
     if (type != "infinite") {

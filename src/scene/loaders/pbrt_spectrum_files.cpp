@@ -34,8 +34,8 @@ std::vector<double> parsePbrtSpectrumFile(const std::string& path, const std::st
     i = end;
   }
   if (numbers.empty() || numbers.size() % 2 != 0)
-    failLoad(path, "a spectrum file needs wavelength-value pairs, found " + std::to_string(numbers.size()) +
-                       " numbers");
+    failLoad(path,
+             "a spectrum file needs wavelength-value pairs, found " + std::to_string(numbers.size()) + " numbers");
   return numbers;
 }
 
@@ -58,8 +58,8 @@ void readPbrtSpectrumFiles(PbrtParameters& params, PbrtContext& context) {
       ++i;
     } catch (const LoadError& e) {
       // The warning names the file; without the parameter, the lookups take its default.
-      context.warn("spectrum file " + p.strings[0], std::string("spectrum file left out: ") + e.what() +
-                                                        ": the parameter's default is used");
+      context.warn("spectrum file " + p.strings[0],
+                   std::string("spectrum file left out: ") + e.what() + ": the parameter's default is used");
       params.list.erase(params.list.begin() + std::ptrdiff_t(i));
     }
   }
