@@ -242,6 +242,32 @@ TEST(GltfDraco, CorruptDataIsRefusedNamingThePrimitive) {
   EXPECT_EQ(e, where + ".attributes.COLOR_0: the Draco attribute has 4 components, the accessor 3") << e;
 }
 
+// A .glb whose header or BIN chunk claims more bytes than the file has is refused in one line, not read beyond its
+// end: the pass that rewrites a Draco file's JSON before tinygltf reads it must not make such a file look whole.
+TEST(GltfDraco, LengthsBeyondTheFileAreRefused) {
+  const std::vector<Corner> corners = gridCorners();
+  DracoIds ids;
+  const std::vector<uint8_t> file = dracoGlb(encodeWithDraco(corners, ids), ids, 9, 24);
+  auto withWord = [&](size_t at, uint32_t value) {
+    std::vector<uint8_t> changed = file;
+    std::memcpy(changed.data() + at, &value, 4);
+    return changed;
+  };
+  uint32_t jsonLength;
+  std::memcpy(&jsonLength, file.data() + 12, 4);
+  const size_t binAt = 20 + size_t(jsonLength);
+  const std::string size = std::to_string(file.size());
+
+  EXPECT_EQ(errorOf(withWord(8, uint32_t(file.size() + 8))), "test.glb: the .glb header says the file has " +
+                                                                 std::to_string(file.size() + 8) + " bytes, it has " +
+                                                                 size);
+  const uint32_t binLength = uint32_t(file.size() - binAt - 8 + 4);
+  EXPECT_EQ(errorOf(withWord(binAt, binLength)),
+            "test.glb: the .glb's second chunk of " + std::to_string(binLength) + " bytes reaches beyond its end");
+  EXPECT_EQ(errorOf(withWord(12, uint32_t(file.size()))),
+            "test.glb: the .glb's JSON chunk of " + size + " bytes reaches beyond its end");
+}
+
 // Attributes the loader does not read itself (skin joints and weights) are decoded into their accessors' own
 // component types, for whatever reads them.
 TEST(GltfDraco, JointsAndWeightsKeepTheirAccessorTypes) {

@@ -77,6 +77,27 @@ std::pair<const char*, size_t> glbJson(const uint8_t* data, size_t size) {
   return {reinterpret_cast<const char*>(data + 20), std::min<size_t>(length, size - 20)};
 }
 
+// A .glb's header and chunk lengths must agree with the bytes there are: tinygltf trusts them, and the passes
+// that rewrite the JSON chunk before tinygltf reads it (gltf_glb.h) give the result the length of the bytes they
+// copy, which would hide a header that claims more.
+void checkGlbLengths(const std::string& name, const uint8_t* data, size_t size) {
+  if (size < 20) failLoad(name, "the .glb header is cut short (" + std::to_string(size) + " bytes)");
+  uint32_t total, jsonLength;
+  std::memcpy(&total, data + 8, 4);
+  std::memcpy(&jsonLength, data + 12, 4);
+  if (total > size)
+    failLoad(name,
+             "the .glb header says the file has " + std::to_string(total) + " bytes, it has " + std::to_string(size));
+  if (total < 20 || jsonLength > total - 20)
+    failLoad(name, "the .glb's JSON chunk of " + std::to_string(jsonLength) + " bytes reaches beyond its end");
+  const size_t binAt = 20 + size_t(jsonLength);
+  if (binAt + 8 > total) return;
+  uint32_t binLength;
+  std::memcpy(&binLength, data + binAt, 4);
+  if (binLength > total - binAt - 8)
+    failLoad(name, "the .glb's second chunk of " + std::to_string(binLength) + " bytes reaches beyond its end");
+}
+
 std::string firstLine(const std::string& s) {
   std::string line = s.substr(0, s.find('\n'));
   while (!line.empty() && (line.back() == ' ' || line.back() == '.')) line.pop_back();
@@ -817,6 +838,7 @@ Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, c
   const std::string& baseDir = files.folder;
   if (size == 0) failLoad(name, "file is empty");
   bool binary = isGlb(data, size);
+  if (binary) checkGlbLengths(name, data, size);
   auto [json, jsonSize] = binary ? glbJson(data, size) : std::pair{reinterpret_cast<const char*>(data), size};
   if (json && jsonDepth(json, jsonSize) > kMaxJsonDepth)
     failLoad(name, "JSON nests deeper than " + std::to_string(kMaxJsonDepth) + " levels");
