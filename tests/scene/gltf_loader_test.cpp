@@ -382,6 +382,35 @@ TEST(GltfLoader, BufferWithoutUriInAGltfIsNamedSo) {
   }
 }
 
+// A .glb whose BIN buffer has a byteLength of 0: tinygltf reads the first byte of the empty buffer, which throws;
+// the load stops with one line naming the file.
+TEST(GltfLoader, GlbBufferOfNoBytesIsOneLine) {
+  const std::string text = R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":0}]})";
+  std::string jsonChunk = text + std::string((4 - text.size() % 4) % 4, ' ');
+  std::vector<uint8_t> file;
+  auto word = [&](uint32_t v) {
+    file.insert(file.end(), reinterpret_cast<uint8_t*>(&v), reinterpret_cast<uint8_t*>(&v) + 4);
+  };
+  word(0x46546C67);  // "glTF"
+  word(2);
+  word(uint32_t(20 + jsonChunk.size() + 8 + 4));
+  word(uint32_t(jsonChunk.size()));
+  word(0x4E4F534A);  // "JSON"
+  file.insert(file.end(), jsonChunk.begin(), jsonChunk.end());
+  word(4);
+  word(0x004E4942);  // "BIN"
+  word(0);
+  LoadWarnings warnings;
+  try {
+    loadGltfBytes("test.glb", file.data(), file.size(), warnings);
+    ADD_FAILURE() << "expected a LoadError";
+  } catch (const LoadError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind("test.glb: ", 0), 0u) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+  }
+}
+
 // KHR_mesh_quantization: integer positions (not normalised, scaled by the node), normalised byte normals and
 // normalised unsigned-short texture coordinates.
 TEST(GltfLoader, QuantizedAttributes) {

@@ -863,10 +863,16 @@ Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, c
   loader.SetImageLoader(&keepEncodedImage, nullptr);
   tinygltf::Model model;
   std::string err, warn;
-  bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, data,
-                                                 unsigned(std::min<size_t>(size, UINT32_MAX)), baseDir)
-                   : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(data),
-                                                unsigned(std::min<size_t>(size, UINT32_MAX)), baseDir);
+  bool ok = false;
+  try {
+    ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, data, unsigned(std::min<size_t>(size, UINT32_MAX)),
+                                              baseDir)
+                : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(data),
+                                             unsigned(std::min<size_t>(size, UINT32_MAX)), baseDir);
+  } catch (const std::exception& e) {
+    // tinygltf's own checks miss some malformed files (a .glb's buffer of byteLength 0 reads its first byte).
+    failLoad(name, std::string("tinygltf cannot read it: ") + e.what());
+  }
   if (!ok) {
     // An extension candela lacks explains the failure best: a meshopt-compressed file's buffer of decoded data
     // has no URI, which would otherwise be reported as a buffer that names no file.
