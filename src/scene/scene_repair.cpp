@@ -322,6 +322,13 @@ void repairInstances(Scene& scene, const std::vector<MeshRepair>& repairs, const
       warnings.add(file, std::to_string(dropped) +
                              " skinned or morphed meshes keep their rest shape: vertices beyond the coordinate "
                              "range were dropped from them");
+    // A deformation's rest normals and tangents are copies of its mesh's, taken at load: they take the repaired
+    // ones (non-finite values zeroed, extreme ones rescaled), which the player writes back when it poses the mesh.
+    for (MeshDeformation& d : scene.animation.deformations) {
+      const Mesh& mesh = scene.meshes[d.mesh];
+      if (d.normals.size() == mesh.normals.size()) d.normals = mesh.normals;
+      if (d.tangents.size() == mesh.tangents.size()) d.tangents = mesh.tangents;
+    }
   }
   if (unusable > 0)
     warnings.add(file, std::to_string(unusable) +
