@@ -12,6 +12,7 @@
 #include <cstring>
 #include <filesystem>
 #include <map>
+#include <new>
 #include <optional>
 #include <sstream>
 #include <tuple>
@@ -869,6 +870,8 @@ Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, c
                                               baseDir)
                 : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(data),
                                              unsigned(std::min<size_t>(size, UINT32_MAX)), baseDir);
+  } catch (const std::bad_alloc&) {
+    throw;  // the caller's out-of-memory report, as for every loader
   } catch (const std::exception& e) {
     // tinygltf's own checks miss some malformed files (a .glb's buffer of byteLength 0 reads its first byte).
     failLoad(name, std::string("tinygltf cannot read it: ") + e.what());
