@@ -13,6 +13,7 @@
 #include "scene/loaders/gltf_accessors.h"
 #include "scene/loaders/gltf_draco.h"
 #include "scene/loaders/gltf_loader.h"
+#include "support/glb_file.h"
 
 namespace candela {
 namespace {
@@ -77,26 +78,6 @@ std::vector<uint8_t> encodeWithDraco(const std::vector<Corner>& corners, DracoId
   return std::vector<uint8_t>(out.data(), out.data() + out.size());
 }
 
-std::vector<uint8_t> glb(const json& gltf, std::vector<uint8_t> bin) {
-  std::string text = gltf.dump();
-  text.resize((text.size() + 3) / 4 * 4, ' ');
-  bin.resize((bin.size() + 3) / 4 * 4, 0);
-  std::vector<uint8_t> out;
-  auto word = [&](uint32_t v) {
-    out.insert(out.end(), reinterpret_cast<uint8_t*>(&v), reinterpret_cast<uint8_t*>(&v) + 4);
-  };
-  word(0x46546C67);  // "glTF"
-  word(2);
-  word(uint32_t(28 + text.size() + bin.size()));
-  word(uint32_t(text.size()));
-  word(0x4E4F534A);  // "JSON"
-  out.insert(out.end(), text.begin(), text.end());
-  word(uint32_t(bin.size()));
-  word(0x004E4942);  // "BIN\0"
-  out.insert(out.end(), bin.begin(), bin.end());
-  return out;
-}
-
 json accessors(size_t vertices, size_t indices) {
   return {{{"componentType", 5126}, {"count", vertices}, {"type", "VEC3"}},
           {{"componentType", 5126}, {"count", vertices}, {"type", "VEC3"}},
@@ -136,7 +117,7 @@ std::vector<uint8_t> uncompressedGlb(const std::vector<Corner>& corners) {
             {"bufferViews", views},          {"accessors", a},
             {"meshes", {meshOf(nullptr)}},   {"nodes", {{{"mesh", 0}}}},
             {"scenes", {{{"nodes", {0}}}}}};
-  return glb(g, bin);
+  return test::glbFile(g, bin);
 }
 
 // A glTF whose one primitive is `draco`, as KHR_draco_mesh_compression stores it: accessors without bufferViews.
@@ -155,7 +136,7 @@ std::vector<uint8_t> dracoGlb(const std::vector<uint8_t>& draco, const DracoIds&
             {"meshes", {meshOf(extension)}},
             {"nodes", {{{"mesh", 0}}}},
             {"scenes", {{{"nodes", {0}}}}}};
-  return glb(g, draco);
+  return test::glbFile(g, draco);
 }
 
 Scene load(const std::vector<uint8_t>& bytes) {

@@ -13,6 +13,7 @@
 #include "scene/loaders/gltf_specular_glossiness.h"
 #include "scene/scene_test_files.h"
 #include "scene/webp_test_image.h"
+#include "support/glb_file.h"
 
 namespace candela {
 namespace {
@@ -385,21 +386,8 @@ TEST(GltfLoader, BufferWithoutUriInAGltfIsNamedSo) {
 // A .glb whose BIN buffer has a byteLength of 0: tinygltf reads the first byte of the empty buffer, which throws;
 // the load stops with one line naming the file.
 TEST(GltfLoader, GlbBufferOfNoBytesIsOneLine) {
-  const std::string text = R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":0}]})";
-  std::string jsonChunk = text + std::string((4 - text.size() % 4) % 4, ' ');
-  std::vector<uint8_t> file;
-  auto word = [&](uint32_t v) {
-    file.insert(file.end(), reinterpret_cast<uint8_t*>(&v), reinterpret_cast<uint8_t*>(&v) + 4);
-  };
-  word(0x46546C67);  // "glTF"
-  word(2);
-  word(uint32_t(20 + jsonChunk.size() + 8 + 4));
-  word(uint32_t(jsonChunk.size()));
-  word(0x4E4F534A);  // "JSON"
-  file.insert(file.end(), jsonChunk.begin(), jsonChunk.end());
-  word(4);
-  word(0x004E4942);  // "BIN"
-  word(0);
+  const std::vector<uint8_t> file =
+      test::glbFile({{"asset", {{"version", "2.0"}}}, {"buffers", {{{"byteLength", 0}}}}}, {0, 0, 0, 0});
   LoadWarnings warnings;
   try {
     loadGltfBytes("test.glb", file.data(), file.size(), warnings);

@@ -9,31 +9,12 @@
 
 #include "scene/loaders/gltf_loader.h"
 #include "scene/loaders/load_diagnostics.h"
+#include "support/glb_file.h"
 
 namespace candela {
 namespace {
 
 using nlohmann::json;
-
-std::vector<uint8_t> glb(const json& gltf, std::vector<uint8_t> bin) {
-  std::string text = gltf.dump();
-  text.resize((text.size() + 3) / 4 * 4, ' ');
-  bin.resize((bin.size() + 3) / 4 * 4, 0);
-  std::vector<uint8_t> out;
-  auto word = [&](uint32_t v) {
-    out.insert(out.end(), reinterpret_cast<uint8_t*>(&v), reinterpret_cast<uint8_t*>(&v) + 4);
-  };
-  word(0x46546C67);  // "glTF"
-  word(2);
-  word(uint32_t(28 + text.size() + bin.size()));
-  word(uint32_t(text.size()));
-  word(0x4E4F534A);  // "JSON"
-  out.insert(out.end(), text.begin(), text.end());
-  word(uint32_t(bin.size()));
-  word(0x004E4942);  // "BIN\0"
-  out.insert(out.end(), bin.begin(), bin.end());
-  return out;
-}
 
 constexpr std::array<float, 12> kPositions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0};
 constexpr std::array<unsigned, 6> kIndices = {0, 1, 2, 2, 1, 3};
@@ -94,7 +75,7 @@ CompressedQuad compressedQuad() {
 }
 
 Scene load(const CompressedQuad& quad, LoadWarnings& warnings) {
-  const std::vector<uint8_t> bytes = glb(quad.gltf, quad.bin);
+  const std::vector<uint8_t> bytes = test::glbFile(quad.gltf, quad.bin);
   return loadGltfBytes("quad.glb", bytes.data(), bytes.size(), warnings);
 }
 

@@ -30,18 +30,9 @@ constexpr std::string_view kExtension = "KHR_draco_mesh_compression";
 
 std::optional<std::vector<uint8_t>> withoutDracoIndices(const uint8_t* data, size_t size) {
   if (!gltfDracoAvailable()) return std::nullopt;
-  const bool glb = size >= 20 && std::memcmp(data, "glTF", 4) == 0;
-  size_t jsonLength = size;
-  if (glb) {
-    uint32_t length;
-    std::memcpy(&length, data + 12, 4);
-    if (length > size - 20) return std::nullopt;
-    jsonLength = length;
-  }
-  const char* json = reinterpret_cast<const char*>(data) + (glb ? 20 : 0);
-  if (std::string_view(json, jsonLength).find(kExtension) == std::string_view::npos) return std::nullopt;
-  nlohmann::json doc = nlohmann::json::parse(json, json + jsonLength, nullptr, false);
-  if (!doc.is_object() || !doc.contains("meshes") || !doc["meshes"].is_array()) return std::nullopt;
+  std::optional<GltfJson> json = gltfJsonMentioning(data, size, kExtension);
+  if (!json || !json->doc.contains("meshes") || !json->doc["meshes"].is_array()) return std::nullopt;
+  nlohmann::json& doc = json->doc;
   bool changed = false;
   for (nlohmann::json& mesh : doc["meshes"]) {
     if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array()) continue;
@@ -54,9 +45,7 @@ std::optional<std::vector<uint8_t>> withoutDracoIndices(const uint8_t* data, siz
     }
   }
   if (!changed) return std::nullopt;
-  std::string text = doc.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
-  if (glb) return replaceGlbJson(data, size, jsonLength, std::move(text));
-  return std::vector<uint8_t>(text.begin(), text.end());
+  return withRewrittenJson(data, size, *json);
 }
 
 #ifndef CANDELA_HAS_DRACO

@@ -5,7 +5,6 @@
 #endif
 #include <nlohmann/json.hpp>
 
-#include <cstring>
 #include <string_view>
 #include <vector>
 
@@ -33,18 +32,10 @@ bool gltfMeshoptAvailable() {
 
 std::optional<std::vector<uint8_t>> withMeshoptPlaceholderBuffers(const uint8_t* data, size_t size) {
   if (!gltfMeshoptAvailable()) return std::nullopt;
-  const bool glb = size >= 20 && std::memcmp(data, "glTF", 4) == 0;
-  size_t jsonLength = size;
-  if (glb) {
-    uint32_t length;
-    std::memcpy(&length, data + 12, 4);
-    if (length > size - 20) return std::nullopt;
-    jsonLength = length;
-  }
-  const char* json = reinterpret_cast<const char*>(data) + (glb ? 20 : 0);
-  if (std::string_view(json, jsonLength).find(kExtension) == std::string_view::npos) return std::nullopt;
-  nlohmann::json doc = nlohmann::json::parse(json, json + jsonLength, nullptr, false);
-  if (!doc.is_object() || !doc.contains("buffers") || !doc["buffers"].is_array()) return std::nullopt;
+  std::optional<GltfJson> json = gltfJsonMentioning(data, size, kExtension);
+  if (!json || !json->doc.contains("buffers") || !json->doc["buffers"].is_array()) return std::nullopt;
+  nlohmann::json& doc = json->doc;
+  const bool glb = json->glb;
   // The buffers that compressed bufferViews decode into; not every file marks them with the extension.
   std::vector<bool> decodedInto(doc["buffers"].size(), false);
   if (doc.contains("bufferViews") && doc["bufferViews"].is_array())
@@ -67,9 +58,7 @@ std::optional<std::vector<uint8_t>> withMeshoptPlaceholderBuffers(const uint8_t*
     changed = true;
   }
   if (!changed) return std::nullopt;
-  std::string text = doc.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
-  if (glb) return replaceGlbJson(data, size, jsonLength, std::move(text));
-  return std::vector<uint8_t>(text.begin(), text.end());
+  return withRewrittenJson(data, size, *json);
 }
 
 #ifndef CANDELA_HAS_MESHOPT
