@@ -66,8 +66,10 @@ InputFile::InputFile(const std::string& path) : path_(path) {
 
 InputFile::~InputFile() { ::close(fd_); }
 
-std::vector<uint8_t> readFileBytes(const std::string& path) {
-  InputFile file(path);
+std::vector<uint8_t> readFileBytes(const std::string& path) { return readFileBytes(InputFile(path)); }
+
+std::vector<uint8_t> readFileBytes(const InputFile& file) {
+  const std::string& path = file.path();
   // Exactly the size the file had when it was opened: a file that grows meanwhile is not followed without end.
   std::vector<uint8_t> bytes(size_t(file.size()));
   size_t done = 0;

@@ -34,5 +34,7 @@ class InputFile {
 
 // The whole content of a file opened as InputFile does; throws LoadError naming the file when it cannot be read.
 std::vector<uint8_t> readFileBytes(const std::string& path);
+// The same from a file already open, for a reader that checks its size first.
+std::vector<uint8_t> readFileBytes(const InputFile& file);
 
 }  // namespace candela

@@ -52,7 +52,7 @@ void readPbrtSpectrumFiles(PbrtParameters& params, PbrtContext& context) {
       InputFile file(path);
       if (file.size() > kMaxSpectrumFileBytes)
         failLoad(path, "a spectrum file of more than " + std::to_string(kMaxSpectrumFileBytes) + " bytes");
-      std::vector<uint8_t> bytes = readFileBytes(path);
+      std::vector<uint8_t> bytes = readFileBytes(file);
       p.numbers = parsePbrtSpectrumFile(path, std::string(bytes.begin(), bytes.end()));
       p.strings.clear();
       ++i;
