@@ -52,6 +52,11 @@ class PathSampler {
             bitsToUnitFloat(owenScramble(sobolDimension1(index), seeds.z))};
   }
 
+  // The next dimension, and the way back to it: a path whose vertices are shaded in separate launches keeps it
+  // between them (backends/optix/wavefront_schedule.h).
+  CANDELA_FN uint32_t dimension() const { return dimension_; }
+  CANDELA_FN void setDimension(uint32_t dimension) { dimension_ = dimension; }
+
   // The next dimension's 32 random bits, for callers that hash them further (white noise for every kind).
   CANDELA_FN uint32_t nextBits() { return pcg4d({pixel_, sampleIndex_, dimension_++, seed_}).x; }
 
