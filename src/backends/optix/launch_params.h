@@ -4,6 +4,7 @@
 
 #include <cstdint>
 
+#include "backends/optix/wavefront_buffers.h"
 #include "kernel/camera.h"
 #include "kernel/film.h"
 #include "kernel/render_settings.h"
@@ -64,6 +65,7 @@ struct LaunchParameters {
   RayRecording recording;
   const uint32_t* batchInstances = nullptr;  // kMaxBatchInputs per batch: the instance id of each build input
   uint32_t firstBatchId = 0xFFFFFFFFu;       // IAS instance ids from here on are batches
+  WavefrontBuffers wavefront;                // the wavefront schedule's launches only
 };
 
 }  // namespace candela::optix

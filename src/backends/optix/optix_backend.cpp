@@ -5,8 +5,11 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <optional>
 #include <stdexcept>
+#include <string>
 
 #include "backends/optix/acceleration.h"
 #include "backends/optix/cuda_devices.h"
@@ -21,6 +24,8 @@
 #include "backends/optix/optix_error.h"
 #include "backends/optix/pipeline.h"
 #include "backends/optix/pixel_counters.h"
+#include "backends/optix/wavefront_schedule.h"
+#include "backends/path_schedule.h"
 #include "scene/flat_scene.h"
 
 namespace candela {
@@ -57,7 +62,20 @@ std::vector<std::unique_ptr<Pipeline>> makePipelines(OptixDeviceContext context,
   pipelines.push_back(std::make_unique<Pipeline>(context, module, std::vector{RaygenProgram::RawTrace}));
   pipelines.push_back(
       std::make_unique<Pipeline>(context, module, std::vector{RaygenProgram::RenderWithAovs, RaygenProgram::Record}));
+  pipelines.push_back(std::make_unique<Pipeline>(context, module,
+                                                 std::vector{RaygenProgram::PathStart, RaygenProgram::PathIntersect,
+                                                             RaygenProgram::PathShade, RaygenProgram::PathShadow,
+                                                             RaygenProgram::PathFinish}));
   return pipelines;
+}
+
+// CANDELA_GPU_SCHEDULE: auto (the default), megakernel or wavefront (backends/path_schedule.h).
+PathSchedule requestedSchedule() {
+  const char* text = std::getenv("CANDELA_GPU_SCHEDULE");
+  if (!text) return PathSchedule::Auto;
+  if (std::optional<PathSchedule> schedule = parsePathSchedule(text)) return *schedule;
+  std::fprintf(stderr, "optix: CANDELA_GPU_SCHEDULE=%s is none of auto, megakernel, wavefront; using auto\n", text);
+  return PathSchedule::Auto;
 }
 
 struct LaunchResult {
@@ -91,6 +109,9 @@ struct OptixBackend::State {
   CudaEvent start, stop;
   uint32_t accumulated = 0;
   uint32_t nextSample = 0;
+  WavefrontSchedule wavefront;
+  PathScheduleChoice schedule{requestedSchedule()};
+  std::string reportedSchedule;
 
   uint32_t pixelCount() const { return settings.width * settings.height; }
 
@@ -120,10 +141,28 @@ struct OptixBackend::State {
     const Pipeline& pipe = pipeline(program);
     checkCuda(cudaMemcpyAsync(parameters.as<void>(), &p, sizeof p, cudaMemcpyHostToDevice, stream),
               "uploading the launch parameters");
+    return timed(p, rows, [&] {
+      checkOptix(optixLaunch(pipe.get(), stream, parameters.address(), sizeof p, &pipe.bindingTable(program),
+                             settings.width, rows, 1),
+                 "launching the device programs");
+    });
+  }
+
+  // One sample per pixel of `rows` rows from p.firstRow on through the wavefront schedule, timed as launch().
+  LaunchResult launchWavefront(const LaunchParameters& p, uint32_t rows) {
+    return timed(p, rows, [&] {
+      wavefront.enqueueSample(pipeline(RaygenProgram::PathStart), context.stream(), p, settings.width, rows,
+                              settings.maxDepth);
+    });
+  }
+
+  // Runs `enqueue`, which leaves per-pixel counters for `rows` rows from p.firstRow on, and sums the counters,
+  // timing both with CUDA events; waits for the result.
+  template <class Enqueue>
+  LaunchResult timed(const LaunchParameters& p, uint32_t rows, const Enqueue& enqueue) {
+    cudaStream_t stream = context.stream();
     checkCuda(cudaEventRecord(start.get(), stream), "recording a CUDA event");
-    checkOptix(optixLaunch(pipe.get(), stream, parameters.address(), sizeof p, &pipe.bindingTable(program),
-                           settings.width, rows, 1),
-               "launching the device programs");
+    enqueue();
     sumPixelCounters(counters.as<PixelCounters>() + size_t(p.firstRow) * settings.width, rows * settings.width,
                      totals.as<CounterTotals>(), stream);
     checkCuda(cudaEventRecord(stop.get(), stream), "recording a CUDA event");
@@ -133,6 +172,48 @@ struct OptixBackend::State {
     checkCuda(cudaStreamSynchronize(stream), "running the device programs");
     checkCuda(cudaEventElapsedTime(&result.milliseconds, start.get(), stop.get()), "reading a CUDA event");
     return result;
+  }
+
+  // Samples p.firstSample on (p.samplesPerPixel of them) without AOVs, by the schedule of the choice; the
+  // wavefront takes one sample per sequence of launches, and sets p.samplesPerPixel to 1.
+  LaunchResult launchPaths(LaunchParameters& p, uint32_t rows) {
+    if (!schedule.decided()) probeSchedule();
+    if (schedule.next() == PathSchedule::Wavefront) {
+      try {
+        wavefront.reserve(size_t(settings.width) * rows);
+      } catch (const std::runtime_error& e) {  // out of device memory
+        if (schedule.requested() == PathSchedule::Wavefront) throw;
+        schedule.wavefrontUnavailable();
+        std::fprintf(stderr, "optix: %s\n", e.what());
+        report();
+      }
+    }
+    if (schedule.next() == PathSchedule::Wavefront) {
+      p.samplesPerPixel = 1;
+      return launchWavefront(p, rows);
+    }
+    return launch(RaygenProgram::Render, p, rows);
+  }
+
+  // Auto's probe (backends/path_schedule.h): sample 0 of every pixel by the megakernel, into a film of its own.
+  void probeSchedule() {
+    DeviceFilm probeFilm;
+    probeFilm.resize(settings.width, settings.height, false);
+    probeFilm.clear(context.stream());
+    LaunchParameters p = baseParameters();
+    p.film = probeFilm.view();
+    p.firstSample = 0;
+    p.samplesPerPixel = 1;
+    const LaunchResult r = launch(RaygenProgram::Render, p, settings.height);
+    schedule.decide(double(r.totals.rays) / double(pixelCount()));
+    report();
+  }
+
+  // Says which schedule renders, when that changed.
+  void report() {
+    const std::string line = schedule.describe();
+    if (line != reportedSchedule) std::fprintf(stderr, "optix: %s\n", line.c_str());
+    reportedSchedule = line;
   }
 
   // The film and the per-pixel counters for the current size; the film with AOV sums while they are enabled.
@@ -188,6 +269,7 @@ void OptixBackend::setScene(const Scene& scene) {
   s.acceleration.update(s.context.get(), s.context.stream(), &s.flat, flat, s.scene.view());
   s.flat = std::move(flat);
   s.hasScene = true;
+  s.schedule.reset();
   s.restart();
 }
 
@@ -231,6 +313,7 @@ void OptixBackend::setSettings(const RenderSettings& settings) {
   State& s = *state_;
   s.settings = settings;
   s.allocateFilm();
+  s.schedule.reset();
   s.restart();
 }
 
@@ -251,7 +334,7 @@ FrameStats OptixBackend::renderRows(uint32_t samplesPerPixel, uint32_t firstRow,
     p.firstSample = s.nextSample;
     p.samplesPerPixel = std::min(samplesPerPixel - done, maxPerLaunch);
     p.firstRow = firstRow;
-    LaunchResult r = s.launch(s.aovsEnabled ? RaygenProgram::RenderWithAovs : RaygenProgram::Render, p, rows);
+    LaunchResult r = s.aovsEnabled ? s.launch(RaygenProgram::RenderWithAovs, p, rows) : s.launchPaths(p, rows);
     stats.rays += r.totals.rays;
     stats.invalidSamples += r.totals.invalidSamples;
     stats.deviceMilliseconds += r.milliseconds;
@@ -261,6 +344,10 @@ FrameStats OptixBackend::renderRows(uint32_t samplesPerPixel, uint32_t firstRow,
   }
   return stats;
 }
+
+void OptixBackend::setPathSchedule(PathSchedule schedule) { state_->schedule.request(schedule); }
+
+std::string OptixBackend::pathScheduleDescription() const { return state_->schedule.describe(); }
 
 uint32_t OptixBackend::accumulatedSamples() const { return state_->accumulated; }
 

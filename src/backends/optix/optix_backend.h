@@ -5,6 +5,7 @@
 
 #include "backends/backend.h"
 #include "backends/optix/acceleration_statistics.h"
+#include "backends/path_schedule.h"
 
 namespace candela {
 
@@ -35,6 +36,11 @@ class OptixBackend final : public Backend, public DeviceImage {
 
   // FrameStats::deviceMilliseconds holds the launches' GPU time from CUDA events.
   FrameStats render(uint32_t samplesPerPixel) override;
+  // How renders without AOVs organise their launches (backends/path_schedule.h; renders with AOVs always use the
+  // megakernel). The default is CANDELA_GPU_SCHEDULE's, else auto.
+  void setPathSchedule(PathSchedule schedule);
+  // The schedule in use and, for auto, why.
+  std::string pathScheduleDescription() const;
   uint32_t accumulatedSamples() const override;
   void setNextSampleIndex(uint32_t index) override;
   FilmSums readFilm() const override;

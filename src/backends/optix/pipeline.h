@@ -10,7 +10,18 @@
 
 namespace candela::optix {
 
-enum class RaygenProgram { Render, Record, RawTrace, RenderWithAovs };
+enum class RaygenProgram {
+  Render,
+  Record,
+  RawTrace,
+  RenderWithAovs,
+  // The wavefront schedule's (backends/optix/wavefront_schedule.h)
+  PathStart,
+  PathIntersect,
+  PathShade,
+  PathShadow,
+  PathFinish,
+};
 
 // Options every pipeline over the module must be created with.
 OptixPipelineCompileOptions pipelineCompileOptions();

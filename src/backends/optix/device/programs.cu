@@ -83,6 +83,8 @@ extern "C" __global__ void __raygen__rawTrace() {
   params.counters[pixel] = {count, 0};
 }
 
+#include "backends/optix/device/wavefront_programs.h"
+
 // The scene's instance of the hit triangle: the IAS instance's, or for a batch of meshes the instance of the
 // build input the triangle came from (launch_params.h).
 __device__ uint32_t hitInstance() {

@@ -1,0 +1,184 @@
+#pragma once
+// The wavefront schedule's raygen programs (backends/optix/wavefront_schedule.h): one launch starts every pixel's
+// path, then per bounce one launch traces the queued radiance rays, one shades their hits (kernel/path_vertex.h)
+// and queues shadow rays and next rays, one traces the shadow rays; a last launch adds the paths to the film.
+// Only programs.cu includes this, after the launch parameters and the helpers it defines.
+
+namespace {
+
+// The queue slot of this thread: the queue launches are one-dimensional.
+__device__ uint32_t queueSlot() { return optixGetLaunchIndex().x; }
+
+// Appends to a queue whose length is *count, with one atomic per warp; returns the slot.
+__device__ uint32_t appendSlot(uint32_t* count) {
+  const unsigned active = __activemask();
+  const int leader = __ffs(active) - 1;
+  uint32_t lane;
+  asm("mov.u32 %0, %%laneid;" : "=r"(lane));
+  uint32_t base = 0;
+  if (int(lane) == leader) base = atomicAdd(count, uint32_t(__popc(active)));
+  base = __shfl_sync(active, base, leader);
+  return base + uint32_t(__popc(active & ((1u << lane) - 1u)));
+}
+
+__device__ uint32_t word(float f) { return __float_as_uint(f); }
+__device__ float real(uint32_t u) { return __uint_as_float(u); }
+
+// The path of slot `path` samples the pixel it is named after, in the band of rows the launch covers.
+__device__ PathSampler pathSampler(uint32_t path) {
+  return PathSampler(params.firstRow * params.settings.width + path, params.firstSample, params.settings.seed,
+                     params.settings.sampler);
+}
+
+__device__ PathState loadPath(const WavefrontBuffers& w, uint32_t path, uint32_t& dimension) {
+  const uint32_t n = w.slots;
+  const Words4 a = w.paths[path], b = w.paths[n + path], c = w.paths[2 * n + path], d = w.paths[3 * n + path],
+               e = w.paths[4 * n + path];
+  PathState s;
+  s.radiance = {real(a.x), real(a.y), real(a.z)};
+  s.rays = a.w;
+  s.beta = {real(b.x), real(b.y), real(b.z)};
+  s.etaScale = real(b.w);
+  s.lastScatter = {real(c.x), real(c.y), real(c.z)};
+  s.bsdfPdf = real(c.w);
+  s.lastNormal = {real(d.x), real(d.y), real(d.z)};
+  s.depth = d.w;
+  s.cone = {real(e.x), real(e.y)};
+  dimension = e.z;
+  s.specularBounce = e.w;
+  return s;
+}
+
+__device__ void storePath(const WavefrontBuffers& w, uint32_t path, const PathState& s, uint32_t dimension) {
+  const uint32_t n = w.slots;
+  w.paths[path] = {word(s.radiance.x), word(s.radiance.y), word(s.radiance.z), s.rays};
+  w.paths[n + path] = {word(s.beta.x), word(s.beta.y), word(s.beta.z), word(s.etaScale)};
+  w.paths[2 * n + path] = {word(s.lastScatter.x), word(s.lastScatter.y), word(s.lastScatter.z), word(s.bsdfPdf)};
+  w.paths[3 * n + path] = {word(s.lastNormal.x), word(s.lastNormal.y), word(s.lastNormal.z), s.depth};
+  w.paths[4 * n + path] = {word(s.cone.width), word(s.cone.spread), dimension, s.specularBounce};
+}
+
+struct QueuedRay {
+  Ray ray;
+  uint32_t path;
+  uint32_t bits;
+};
+
+__device__ QueuedRay loadRay(const WavefrontBuffers& w, uint32_t queue, uint32_t slot) {
+  const Words4 a = w.rays[queue][slot], b = w.rays[queue][w.slots + slot];
+  QueuedRay q;
+  q.ray = {{real(a.x), real(a.y), real(a.z)}, {real(b.x), real(b.y), real(b.z)}, 0.0f, real(a.w)};
+  q.path = b.w;
+  q.bits = params.scene.hasCutouts ? w.rayBits[queue][slot] : 0u;
+  return q;
+}
+
+__device__ void storeRay(const WavefrontBuffers& w, uint32_t queue, uint32_t slot, const Ray& ray, uint32_t path,
+                         uint32_t bits) {
+  w.rays[queue][slot] = {word(ray.origin.x), word(ray.origin.y), word(ray.origin.z), word(ray.tMax)};
+  w.rays[queue][w.slots + slot] = {word(ray.direction.x), word(ray.direction.y), word(ray.direction.z), path};
+  if (params.scene.hasCutouts) w.rayBits[queue][slot] = bits;
+}
+
+}  // namespace
+
+// One thread per pixel of the launch: the camera ray of the pixel's sample params.firstSample, queued in queue 0 at
+// the pixel's slot (a camera ray that cannot be traced gets no path, and its sample is dropped).
+extern "C" __global__ void __raygen__pathStart() {
+  const uint2 xy = launchPixelXY();
+  const uint32_t path = launchPixel() - params.firstRow * params.settings.width;
+  const WavefrontBuffers& w = params.wavefront;
+  PathSampler sampler = pathSampler(path);
+  const Vec2 jitter = sampler.next2D();
+  Vec2 uLens;
+  if (params.camera.lensRadius > 0.0f) uLens = sampler.next2D();
+  const Ray ray = params.camera.generateRay(float(xy.x) + jitter.x, float(xy.y) + jitter.y, int(params.settings.width),
+                                            int(params.settings.height), uLens);
+  const bool dropped = !isTraceableCameraRay(ray);
+  PathState s;
+  uint32_t bits = 0;
+  if (!dropped) {
+    s.cone = cameraRayCone(params.camera, params.settings.height);
+    s.rays = 1;
+    bits = passThroughBits(params.scene, sampler);
+  }
+  storePath(w, path, s, sampler.dimension());
+  w.droppedPaths[path] = dropped ? 1u : 0u;
+  storeRay(w, 0, path, ray, dropped ? kNoPath : path, bits);
+}
+
+extern "C" __global__ void __raygen__pathIntersect() {
+  const uint32_t slot = queueSlot();
+  const WavefrontBuffers& w = params.wavefront;
+  const QueuedRay q = loadRay(w, w.current, slot);
+  if (q.path == kNoPath) return;
+  Hit hit;
+  if (!sceneTracer().intersect(q.ray, hit, q.bits)) hit.instanceId = kMissedInstance;
+  w.hits[slot] = {word(hit.t), word(hit.b1), word(hit.b2), hit.instanceId};
+  w.hitPrimitives[slot] = hit.primitiveId;
+}
+
+extern "C" __global__ void __raygen__pathShade() {
+  const uint32_t slot = queueSlot();
+  const WavefrontBuffers& w = params.wavefront;
+  const QueuedRay q = loadRay(w, w.current, slot);
+  if (q.path == kNoPath) return;
+  uint32_t dimension = 0;
+  PathState s = loadPath(w, q.path, dimension);
+  PathSampler sampler = pathSampler(q.path);
+  sampler.setDimension(dimension);
+  const Words4 h = w.hits[slot];
+  Hit hit;
+  hit.t = real(h.x);
+  hit.b1 = real(h.y);
+  hit.b2 = real(h.z);
+  hit.instanceId = h.w;
+  hit.primitiveId = w.hitPrimitives[slot];
+  PathAovState unused;
+  ShadowQuery shadow;
+  VertexScatter scatter;
+  Ray ray = q.ray;
+  uint32_t bits = 0;
+  bool goesOn = shadeVertex<false>(params.scene, params.settings, s, unused, sampler, ray,
+                                   hit.instanceId != kMissedInstance, hit, shadow, scatter);
+  if (goesOn && !isBlack(shadow.contribution)) {
+    const uint32_t k = appendSlot(&w.counts[2]);
+    const Ray& r = shadow.ray;
+    const Vec3& c = shadow.contribution;
+    w.shadows[k] = {word(r.origin.x), word(r.origin.y), word(r.origin.z), word(r.tMax)};
+    w.shadows[w.slots + k] = {word(r.direction.x), word(r.direction.y), word(r.direction.z), q.path};
+    w.shadows[2 * w.slots + k] = {word(c.x), word(c.y), word(c.z), shadow.bits};
+  }
+  goesOn = goesOn && continuePath<false>(params.scene, params.settings, s, unused, sampler, scatter, ray, bits);
+  storePath(w, q.path, s, sampler.dimension());
+  const uint32_t next = 1 - w.current;
+  if (goesOn) storeRay(w, next, appendSlot(&w.counts[next]), ray, q.path, bits);
+}
+
+// A path gets at most one shadow ray per bounce, so adding to its radiance needs no atomics.
+extern "C" __global__ void __raygen__pathShadow() {
+  const uint32_t slot = queueSlot();
+  const WavefrontBuffers& w = params.wavefront;
+  const Words4 a = w.shadows[slot], b = w.shadows[w.slots + slot], c = w.shadows[2 * w.slots + slot];
+  const Ray ray{{real(a.x), real(a.y), real(a.z)}, {real(b.x), real(b.y), real(b.z)}, 0.0f, real(a.w)};
+  if (sceneTracer().occluded(ray, c.w)) return;
+  Words4& radiance = w.paths[b.w];
+  radiance.x = word(real(radiance.x) + real(c.x));
+  radiance.y = word(real(radiance.y) + real(c.y));
+  radiance.z = word(real(radiance.z) + real(c.z));
+}
+
+// One thread per pixel: the path's sample joins the film (kernel/film_accumulation.h), as __raygen__render adds its.
+extern "C" __global__ void __raygen__pathFinish() {
+  const uint32_t pixel = launchPixel();
+  const uint32_t path = pixel - params.firstRow * params.settings.width;
+  const Words4 r = params.wavefront.paths[path];
+  const bool dropped = params.wavefront.droppedPaths[path] != 0;
+  const PixelTally tally = accumulatePixel<false>(params.film, pixel, params.firstSample, 1, [&](uint32_t) {
+    PathResult result;
+    result.radiance = dropped ? Vec3{-1.0f, -1.0f, -1.0f} : Vec3{real(r.x), real(r.y), real(r.z)};
+    result.rays = r.w;
+    return result;
+  });
+  params.counters[pixel] = {tally.rays, tally.invalidSamples};
+}

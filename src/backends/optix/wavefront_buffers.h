@@ -1,0 +1,38 @@
+#pragma once
+// Where the wavefront schedule keeps its paths and queues between launches (backends/optix/wavefront_schedule.h),
+// as seen by the device programs. Structure of arrays: each plane holds one 16-byte word (or one 4-byte word) per
+// slot, so that a warp reading or writing one plane touches consecutive memory. Stored field by field in an array
+// of structures, the state cost the shading launches three times the memory traffic (docs/performance.md).
+#include <cstdint>
+
+namespace candela::optix {
+
+struct alignas(16) Words4 {
+  uint32_t x, y, z, w;
+};
+
+// The planes of a path's state (PathState and the sampler's next dimension, kernel/path_vertex.h):
+// radiance + rays, beta + etaScale, lastScatter + bsdfPdf, lastNormal + depth, cone + dimension + specularBounce.
+constexpr uint32_t kPathPlanes = 5;
+// A queued radiance ray: origin + tMax, direction + path; its pass-through bits in a plane of their own.
+constexpr uint32_t kRayPlanes = 2;
+// A queued shadow ray: origin + tMax, direction + path, contribution + pass-through bits.
+constexpr uint32_t kShadowPlanes = 3;
+
+// A queue slot's path where there is none (a camera ray that cannot be traced).
+constexpr uint32_t kNoPath = 0xFFFFFFFFu;
+
+struct WavefrontBuffers {
+  Words4* paths = nullptr;               // kPathPlanes planes, one slot per pixel of the launch
+  uint32_t* droppedPaths = nullptr;      // per path: 1 where its camera ray could not be traced
+  Words4* rays[2] = {nullptr, nullptr};  // two radiance-ray queues, kRayPlanes planes each: read one, fill the other
+  uint32_t* rayBits[2] = {nullptr, nullptr};
+  Words4* hits = nullptr;  // per slot of the queue read: t, b1, b2, instance (kMissedInstance: none)
+  uint32_t* hitPrimitives = nullptr;
+  Words4* shadows = nullptr;   // kShadowPlanes planes
+  uint32_t* counts = nullptr;  // entries in radiance queues 0 and 1, and in the shadow queue
+  uint32_t slots = 0;          // slots per plane (at least the launch's pixels)
+  uint32_t current = 0;        // the radiance queue this launch reads
+};
+
+}  // namespace candela::optix

@@ -1,0 +1,48 @@
+#pragma once
+// The path tracer as a wavefront (Laine, Karras and Aila 2013; pbrt-v4's GPU renderer): instead of one thread
+// following its path from ray to ray, with every kind of shading inlined around the trace calls, each bounce is
+// three launches over queues of paths: trace the radiance rays, shade the hits (kernel/path_vertex.h) and queue the
+// shadow rays and next rays, trace the shadow rays. The queues are compacted, so every launch's warps are full, and
+// each launch's program is small. Paths and queues live in device memory between launches
+// (backends/optix/wavefront_buffers.h), about 220 bytes a pixel. The samples are those of the one-thread schedule:
+// the same numbers drawn in the same order.
+#include <cuda_runtime.h>
+
+#include <cstdint>
+
+#include "backends/optix/device_buffer.h"
+#include "backends/optix/launch_params.h"
+#include "backends/optix/pipeline.h"
+
+namespace candela::optix {
+
+class WavefrontSchedule {
+ public:
+  WavefrontSchedule();
+  ~WavefrontSchedule();
+  WavefrontSchedule(const WavefrontSchedule&) = delete;
+  WavefrontSchedule& operator=(const WavefrontSchedule&) = delete;
+
+  // Buffers for at least `slots` paths (a launch's pixels), kept when fewer are asked for later (MultiGpuBackend
+  // resizes its bands of rows every launch). Throws std::runtime_error, naming the amount, when they do not fit in
+  // device memory; then none are held.
+  void reserve(size_t slots);
+
+  // Enqueues one sample per pixel (sample p.firstSample) of `rows` rows from p.firstRow on, up to `maxDepth`
+  // bounces, on `stream`, with the programs of `pipeline`; the pixels' counters are left in p.counters as the
+  // one-thread schedule leaves them. Waits once per bounce for the queue lengths, which size the next launches.
+  // Reserves the buffers first (reserve()).
+  void enqueueSample(const Pipeline& pipeline, cudaStream_t stream, LaunchParameters p, uint32_t width, uint32_t rows,
+                     uint32_t maxDepth);
+
+ private:
+  void allocate(size_t slots);
+  void release();
+
+  size_t slots_ = 0;  // paths the buffers hold: the stride of their planes
+  DeviceBuffer paths_, droppedPaths_, rays_[2], rayBits_[2], hits_, hitPrimitives_, shadows_, counts_;
+  DeviceBuffer parameters_[2];      // the launch parameters reading radiance queue 0 and 1
+  uint32_t* hostCounts_ = nullptr;  // pinned: the queue lengths read back each bounce
+};
+
+}  // namespace candela::optix
