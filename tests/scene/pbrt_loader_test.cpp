@@ -1103,29 +1103,34 @@ TEST(PbrtLights, EqualAreaOctahedralMapping) {
 }
 
 // A square PFM whose centre (pbrt's +z in the octahedral layout) is red and whose corners (-z) are blue.
-std::string octahedralPfm(int size) {
-  std::string out = "PF\n" + std::to_string(size) + " " + std::to_string(size) + "\n-1.0\n";
-  for (int row = 0; row < size; ++row)
-    for (int column = 0; column < size; ++column) {
-      float u = (float(column) + 0.5f) / float(size) * 2 - 1, v = (float(row) + 0.5f) / float(size) * 2 - 1;
-      bool upper = std::fabs(u) + std::fabs(v) < 1.0f;
-      float rgb[3] = {upper ? 1.0f : 0.0f, 0.0f, upper ? 0.0f : 1.0f};
+// A little-endian RGB PFM of width x height whose texel (row, column) is texel(row, column); PFM rows run from the
+// bottom of the image.
+template <class Texel>
+std::string pfmImage(int width, int height, const Texel& texel) {
+  std::string out = "PF\n" + std::to_string(width) + " " + std::to_string(height) + "\n-1.0\n";
+  for (int row = 0; row < height; ++row)
+    for (int column = 0; column < width; ++column) {
+      const Vec3 c = texel(row, column);
+      const float rgb[3] = {c.x, c.y, c.z};
       out.append(reinterpret_cast<const char*>(rgb), sizeof(rgb));
     }
   return out;
+}
+
+Vec3 redOrBlue(bool red) { return red ? Vec3{1, 0, 0} : Vec3{0, 0, 1}; }
+
+std::string octahedralPfm(int size) {
+  return pfmImage(size, size, [&](int row, int column) {
+    float u = (float(column) + 0.5f) / float(size) * 2 - 1, v = (float(row) + 0.5f) / float(size) * 2 - 1;
+    return redOrBlue(std::fabs(u) + std::fabs(v) < 1.0f);
+  });
 }
 
 TEST(PbrtLights, OctahedralMapsFollowTheMirroredWorld) {
   // A map whose pbrt +x half (u > 0.5 in the octahedral square) is red, under pbrt's default camera: the world
   // is mirrored, so pbrt's +x is candela's -x, where candela's map has u = 0.25.
   TempFolder folder;
-  std::string pfm = "PF\n16 16\n-1.0\n";
-  for (int row = 0; row < 16; ++row)
-    for (int column = 0; column < 16; ++column) {
-      float rgb[3] = {column >= 8 ? 1.0f : 0.0f, 0.0f, column >= 8 ? 0.0f : 1.0f};
-      pfm.append(reinterpret_cast<const char*>(rgb), sizeof(rgb));
-    }
-  folder.write("sky.pfm", pfm);
+  folder.write("sky.pfm", pfmImage(16, 16, [](int, int column) { return redOrBlue(column >= 8); }));
   std::string path =
       folder.write("scene.pbrt", "WorldBegin\nLightSource \"infinite\" \"string filename\" \"sky.pfm\"\n");
   LoadWarnings warnings;
@@ -1143,12 +1148,7 @@ TEST(PbrtLights, InfiniteLightIlluminanceSetsItsRadiance) {
   Scene constant = loadText("WorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 2] \"float illuminance\" 10\n");
   expectNear(constant.environment.radiance, Vec3{1, 1, 2} * (10.0f / kPi));
   TempFolder folder;
-  std::string pfm = "PF\n64 32\n-1.0\n";
-  for (int texel = 0; texel < 64 * 32; ++texel) {
-    float rgb[3] = {2.0f, 2.0f, 2.0f};
-    pfm.append(reinterpret_cast<const char*>(rgb), sizeof(rgb));
-  }
-  folder.write("sky.pfm", pfm);
+  folder.write("sky.pfm", pfmImage(64, 32, [](int, int) { return Vec3{2, 2, 2}; }));
   std::string path = folder.write("scene.pbrt", std::string(kMirroredCamera) +
                                                     "LightSource \"infinite\" \"string filename\" \"sky.pfm\" "
                                                     "\"float illuminance\" 10 \"float scale\" 3\n");
@@ -1163,14 +1163,7 @@ TEST(PbrtLights, PbrtV3EquirectangularMaps) {
   // pbrt-v3's layout: u = phi / 2pi about the light's +z, v = theta / pi from +z. A map whose top half is red
   // (the light's +z hemisphere), turned so that +z is world +y: red above, blue below.
   TempFolder folder;
-  std::string pfm = "PF\n32 16\n-1.0\n";
-  for (int row = 0; row < 16; ++row)  // PFM rows run from the bottom
-    for (int column = 0; column < 32; ++column) {
-      bool upper = row >= 8;
-      float rgb[3] = {upper ? 1.0f : 0.0f, 0.0f, upper ? 0.0f : 1.0f};
-      pfm.append(reinterpret_cast<const char*>(rgb), sizeof(rgb));
-    }
-  folder.write("sky.pfm", pfm);
+  folder.write("sky.pfm", pfmImage(32, 16, [](int row, int) { return redOrBlue(row >= 8); }));
   std::string path = folder.write("scene.pbrt", std::string(kMirroredCamera) +
                                                     "Rotate -90 1 0 0\nLightSource \"infinite\" \"string filename\" "
                                                     "\"sky.pfm\"\n");
