@@ -28,9 +28,7 @@ struct PathResult {
 template <bool kWithAovs = false, class Tracer>
 CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ray ray, PathSampler& sampler,
                                 const RenderSettings& settings, RayCone cone = {}) {
-  PathState s;
-  s.cone = cone;
-  s.rays = 1;
+  PathState s = startPath(cone);
   PathAovState a;
   uint32_t bits = passThroughBits(scene, sampler);
   for (;;) {
@@ -55,22 +53,31 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
 // NaN, infinite or negative estimates come from numerical failures; they are dropped, never accumulated.
 CANDELA_FN bool isValidSample(Vec3 l) { return isFinite(l) && l.x >= 0.0f && l.y >= 0.0f && l.z >= 0.0f; }
 
-// One sample of pixel (x, y): a jittered camera ray, then the path. A camera ray that cannot be traced
-// (isTraceableCameraRay) is not: the sample gets a negative estimate, which isValidSample drops and counts.
+// The camera ray of a sample of pixel (x, y): jittered within the pixel, through the lens where there is one. Draws
+// the sample's first dimensions from `sampler`, the pixel's.
+CANDELA_FN Ray pixelSampleRay(const Camera& camera, const RenderSettings& settings, uint32_t x, uint32_t y,
+                              PathSampler& sampler) {
+  Vec2 jitter = sampler.next2D();
+  Vec2 uLens;
+  if (camera.lensRadius > 0.0f) uLens = sampler.next2D();
+  return camera.generateRay(float(x) + jitter.x, float(y) + jitter.y, int(settings.width), int(settings.height), uLens);
+}
+
+// The sample of a camera ray that cannot be traced (isTraceableCameraRay): a negative estimate, which
+// isValidSample drops and the film counts.
+CANDELA_FN PathResult droppedSample() {
+  PathResult dropped;
+  dropped.radiance = {-1.0f, -1.0f, -1.0f};
+  return dropped;
+}
+
+// One sample of pixel (x, y): a jittered camera ray, then the path.
 template <bool kWithAovs = false, class Tracer>
 CANDELA_HD PathResult renderPixelSample(const SceneView& scene, const Tracer& tracer, const Camera& camera,
                                         const RenderSettings& settings, uint32_t x, uint32_t y, uint32_t sampleIndex) {
   PathSampler sampler(y * settings.width + x, sampleIndex, settings.seed, settings.sampler);
-  Vec2 jitter = sampler.next2D();
-  Vec2 uLens;
-  if (camera.lensRadius > 0.0f) uLens = sampler.next2D();
-  Ray ray =
-      camera.generateRay(float(x) + jitter.x, float(y) + jitter.y, int(settings.width), int(settings.height), uLens);
-  if (!isTraceableCameraRay(ray)) {
-    PathResult dropped;
-    dropped.radiance = {-1.0f, -1.0f, -1.0f};
-    return dropped;
-  }
+  const Ray ray = pixelSampleRay(camera, settings, x, y, sampler);
+  if (!isTraceableCameraRay(ray)) return droppedSample();
   return tracePath<kWithAovs>(scene, tracer, ray, sampler, settings, cameraRayCone(camera, settings.height));
 }
 

@@ -37,6 +37,14 @@ struct PathState {
   uint32_t specularBounce = 0;  // the current ray left a delta lobe
 };
 
+// A path about to trace its first ray, whose footprint is `cone`.
+CANDELA_FN PathState startPath(RayCone cone) {
+  PathState s;
+  s.cone = cone;
+  s.rays = 1;
+  return s;
+}
+
 // What only paths that record the denoisers' guides carry (the kWithAovs instantiations).
 struct PathAovState {
   Vec3 emitted;  // PathResult::emitted

@@ -58,6 +58,18 @@ __device__ void storePath(const WavefrontBuffers& w, uint32_t path, const PathSt
   w.paths[4 * n + path] = {word(s.cone.width), word(s.cone.spread), dimension, s.specularBounce};
 }
 
+// A ray and its path in two planes of words (radiance and shadow queues alike): origin + tMax, direction + path.
+__device__ void storeRayWords(Words4* planes, uint32_t stride, uint32_t slot, const Ray& ray, uint32_t path) {
+  planes[slot] = {word(ray.origin.x), word(ray.origin.y), word(ray.origin.z), word(ray.tMax)};
+  planes[stride + slot] = {word(ray.direction.x), word(ray.direction.y), word(ray.direction.z), path};
+}
+
+__device__ Ray loadRayWords(const Words4* planes, uint32_t stride, uint32_t slot, uint32_t& path) {
+  const Words4 a = planes[slot], b = planes[stride + slot];
+  path = b.w;
+  return {{real(a.x), real(a.y), real(a.z)}, {real(b.x), real(b.y), real(b.z)}, 0.0f, real(a.w)};
+}
+
 struct QueuedRay {
   Ray ray;
   uint32_t path;
@@ -65,18 +77,15 @@ struct QueuedRay {
 };
 
 __device__ QueuedRay loadRay(const WavefrontBuffers& w, uint32_t queue, uint32_t slot) {
-  const Words4 a = w.rays[queue][slot], b = w.rays[queue][w.slots + slot];
   QueuedRay q;
-  q.ray = {{real(a.x), real(a.y), real(a.z)}, {real(b.x), real(b.y), real(b.z)}, 0.0f, real(a.w)};
-  q.path = b.w;
+  q.ray = loadRayWords(w.rays[queue], w.slots, slot, q.path);
   q.bits = params.scene.hasCutouts ? w.rayBits[queue][slot] : 0u;
   return q;
 }
 
 __device__ void storeRay(const WavefrontBuffers& w, uint32_t queue, uint32_t slot, const Ray& ray, uint32_t path,
                          uint32_t bits) {
-  w.rays[queue][slot] = {word(ray.origin.x), word(ray.origin.y), word(ray.origin.z), word(ray.tMax)};
-  w.rays[queue][w.slots + slot] = {word(ray.direction.x), word(ray.direction.y), word(ray.direction.z), path};
+  storeRayWords(w.rays[queue], w.slots, slot, ray, path);
   if (params.scene.hasCutouts) w.rayBits[queue][slot] = bits;
 }
 
@@ -89,19 +98,10 @@ extern "C" __global__ void __raygen__pathStart() {
   const uint32_t path = launchPixel() - params.firstRow * params.settings.width;
   const WavefrontBuffers& w = params.wavefront;
   PathSampler sampler = pathSampler(path);
-  const Vec2 jitter = sampler.next2D();
-  Vec2 uLens;
-  if (params.camera.lensRadius > 0.0f) uLens = sampler.next2D();
-  const Ray ray = params.camera.generateRay(float(xy.x) + jitter.x, float(xy.y) + jitter.y, int(params.settings.width),
-                                            int(params.settings.height), uLens);
+  const Ray ray = pixelSampleRay(params.camera, params.settings, xy.x, xy.y, sampler);
   const bool dropped = !isTraceableCameraRay(ray);
-  PathState s;
-  uint32_t bits = 0;
-  if (!dropped) {
-    s.cone = cameraRayCone(params.camera, params.settings.height);
-    s.rays = 1;
-    bits = passThroughBits(params.scene, sampler);
-  }
+  const PathState s = dropped ? PathState{} : startPath(cameraRayCone(params.camera, params.settings.height));
+  const uint32_t bits = dropped ? 0u : passThroughBits(params.scene, sampler);
   storePath(w, path, s, sampler.dimension());
   w.droppedPaths[path] = dropped ? 1u : 0u;
   storeRay(w, 0, path, ray, dropped ? kNoPath : path, bits);
@@ -143,10 +143,8 @@ extern "C" __global__ void __raygen__pathShade() {
                                    hit.instanceId != kMissedInstance, hit, shadow, scatter);
   if (goesOn && !isBlack(shadow.contribution)) {
     const uint32_t k = appendSlot(&w.counts[2]);
-    const Ray& r = shadow.ray;
     const Vec3& c = shadow.contribution;
-    w.shadows[k] = {word(r.origin.x), word(r.origin.y), word(r.origin.z), word(r.tMax)};
-    w.shadows[w.slots + k] = {word(r.direction.x), word(r.direction.y), word(r.direction.z), q.path};
+    storeRayWords(w.shadows, w.slots, k, shadow.ray, q.path);
     w.shadows[2 * w.slots + k] = {word(c.x), word(c.y), word(c.z), shadow.bits};
   }
   goesOn = goesOn && continuePath<false>(params.scene, params.settings, s, unused, sampler, scatter, ray, bits);
@@ -159,10 +157,11 @@ extern "C" __global__ void __raygen__pathShade() {
 extern "C" __global__ void __raygen__pathShadow() {
   const uint32_t slot = queueSlot();
   const WavefrontBuffers& w = params.wavefront;
-  const Words4 a = w.shadows[slot], b = w.shadows[w.slots + slot], c = w.shadows[2 * w.slots + slot];
-  const Ray ray{{real(a.x), real(a.y), real(a.z)}, {real(b.x), real(b.y), real(b.z)}, 0.0f, real(a.w)};
+  uint32_t path = 0;
+  const Ray ray = loadRayWords(w.shadows, w.slots, slot, path);
+  const Words4 c = w.shadows[2 * w.slots + slot];
   if (sceneTracer().occluded(ray, c.w)) return;
-  Words4& radiance = w.paths[b.w];
+  Words4& radiance = w.paths[path];
   radiance.x = word(real(radiance.x) + real(c.x));
   radiance.y = word(real(radiance.y) + real(c.y));
   radiance.z = word(real(radiance.z) + real(c.z));
@@ -175,9 +174,11 @@ extern "C" __global__ void __raygen__pathFinish() {
   const Words4 r = params.wavefront.paths[path];
   const bool dropped = params.wavefront.droppedPaths[path] != 0;
   const PixelTally tally = accumulatePixel<false>(params.film, pixel, params.firstSample, 1, [&](uint32_t) {
-    PathResult result;
-    result.radiance = dropped ? Vec3{-1.0f, -1.0f, -1.0f} : Vec3{real(r.x), real(r.y), real(r.z)};
-    result.rays = r.w;
+    PathResult result = droppedSample();
+    if (!dropped) {
+      result.radiance = {real(r.x), real(r.y), real(r.z)};
+      result.rays = r.w;
+    }
     return result;
   });
   params.counters[pixel] = {tally.rays, tally.invalidSamples};
