@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # bundle.sh <build dir> <output dir>: copies candela, test_gpu, denoise_gpu_bench, sampler_convergence,
-# light_sampler_convergence, image_compare, compare_exr, candela-generate-scene, the GPU check scripts (with
+# light_sampler_convergence, image_compare, compare_exr, candela-generate-scene, the GPU check and bench scripts (with
 # checks_common.sh, which they source) and the bench scenes, and the shared libraries the binaries load (not the
 # C/C++ runtime's, not the NVIDIA driver's) into <output dir>, so that the GPU checks run on a machine that has the
 # GPU but not the build dependencies:
@@ -11,7 +11,7 @@ here=$(dirname "$(realpath "$0")")
 mkdir -p "$out/lib"
 cp "$build/src/candela" "$build/src/candela-generate-scene" "$build/tests/gpu/test_gpu" "$build/bench/denoise_gpu_bench" "$build/bench/sampler_convergence" \
   "$build/bench/light_sampler_convergence" "$here/error_paths.sh" \
-  "$here/../../bench/gpu_bench.sh" "$build/tests/viewer/image_compare" "$here/viewer_interop.sh" \
+  "$here/../../bench/gpu_bench.sh" "$here/../../bench/gpu_town_bench.sh" "$build/tests/viewer/image_compare" "$here/viewer_interop.sh" \
   "$build/tests/distributed/compare_exr" "$here/multi_gpu.sh" "$here/checks_common.sh" \
   "$here/../../bench/multi_gpu_bench.sh" "$out/"
 cp -r "$here/../../bench/scenes" "$out/"
