@@ -8,10 +8,15 @@
 namespace candela::optix {
 
 WavefrontSchedule::WavefrontSchedule() {
-  checkCuda(cudaMallocHost(&hostCounts_, 3 * sizeof(uint32_t)), "allocating the wavefront's queue lengths");
+  checkCuda(cudaMallocHost(&hostCounts_, kCountCopies * sizeof(uint32_t)), "allocating the wavefront's queue lengths");
+  for (cudaEvent_t& copied : countsCopied_)
+    checkCuda(cudaEventCreateWithFlags(&copied, cudaEventDisableTiming), "creating an event");
 }
 
-WavefrontSchedule::~WavefrontSchedule() { cudaFreeHost(hostCounts_); }
+WavefrontSchedule::~WavefrontSchedule() {
+  for (cudaEvent_t copied : countsCopied_) cudaEventDestroy(copied);
+  cudaFreeHost(hostCounts_);
+}
 
 void WavefrontSchedule::reserve(size_t slots) {
   if (slots <= slots_) return;
@@ -49,7 +54,7 @@ void WavefrontSchedule::allocate(size_t slots) {
   hits_ = DeviceBuffer(slots * sizeof(Words4), purpose);
   hitPrimitives_ = DeviceBuffer(slots * sizeof(uint32_t), purpose);
   shadows_ = DeviceBuffer(slots * kShadowPlanes * sizeof(Words4), purpose);
-  counts_ = DeviceBuffer(3 * sizeof(uint32_t), purpose);
+  counts_ = DeviceBuffer(3 * sizeof(uint32_t), purpose);  // radiance queues 0 and 1, the shadow queue
   for (DeviceBuffer& p : parameters_) p = DeviceBuffer(sizeof(LaunchParameters), "the launch parameters");
 }
 
@@ -80,19 +85,37 @@ void WavefrontSchedule::enqueueSample(const Pipeline& pipeline, cudaStream_t str
                            &pipeline.bindingTable(program), launchWidth, launchHeight, 1),
                "launching the device programs");
   };
+  uint32_t* counts = counts_.as<uint32_t>();
+  // After bounce b's shading, the length of the radiance queue of bounce b + 1 goes to the host, asynchronously;
+  // radianceCount(b) waits for the length of bounce b's.
+  auto copyRadianceCount = [&](uint32_t bounce) {
+    const uint32_t copy = bounce % kCountCopies;
+    checkCuda(cudaMemcpyAsync(hostCounts_ + copy, counts + (1 - (bounce & 1u)), sizeof(uint32_t),
+                              cudaMemcpyDeviceToHost, stream),
+              "reading a queue's length");
+    checkCuda(cudaEventRecord(countsCopied_[copy], stream), "recording an event");
+  };
+  auto radianceCount = [&](uint32_t bounce) {
+    const uint32_t copy = (bounce - 1) % kCountCopies;
+    checkCuda(cudaEventSynchronize(countsCopied_[copy]), "running the device programs");
+    return hostCounts_[copy];
+  };
+  checkCuda(cudaMemsetAsync(counts, 0, 3 * sizeof(uint32_t), stream), "clearing the queues");
   launch(RaygenProgram::PathStart, 0, width, rows);
-  uint32_t queued = uint32_t(slots);
-  for (uint32_t bounce = 0; bounce <= maxDepth && queued > 0; ++bounce) {
+  // Launch sizes: a path queues at most one radiance ray and one shadow ray per bounce, so no queue of bounce b
+  // is longer than bounce b - 1's radiance queue, whose length the host waits for while the GPU runs bounce b.
+  // The GPU then never waits for the host between bounces; the launches' threads beyond their queue's length
+  // return at once.
+  uint32_t bound = uint32_t(slots);
+  for (uint32_t bounce = 0; bounce <= maxDepth && bound > 0; ++bounce) {
     const uint32_t current = bounce & 1u, next = 1 - current;
-    checkCuda(cudaMemsetAsync(counts_.as<uint32_t>() + next, 0, sizeof(uint32_t), stream), "clearing a queue");
-    checkCuda(cudaMemsetAsync(counts_.as<uint32_t>() + 2, 0, sizeof(uint32_t), stream), "clearing a queue");
-    launch(RaygenProgram::PathIntersect, current, queued, 1);
-    launch(RaygenProgram::PathShade, current, queued, 1);
-    checkCuda(cudaMemcpyAsync(hostCounts_, counts_.as<void>(), 3 * sizeof(uint32_t), cudaMemcpyDeviceToHost, stream),
-              "reading the queue lengths");
-    checkCuda(cudaStreamSynchronize(stream), "running the device programs");
-    if (hostCounts_[2] > 0) launch(RaygenProgram::PathShadow, current, hostCounts_[2], 1);
-    queued = hostCounts_[next];
+    checkCuda(cudaMemsetAsync(counts + next, 0, sizeof(uint32_t), stream), "clearing a queue");
+    checkCuda(cudaMemsetAsync(counts + 2, 0, sizeof(uint32_t), stream), "clearing a queue");
+    launch(RaygenProgram::PathIntersect, current, bound, 1);
+    launch(RaygenProgram::PathShade, current, bound, 1);
+    copyRadianceCount(bounce);
+    launch(RaygenProgram::PathShadow, current, bound, 1);
+    if (bounce >= 1) bound = radianceCount(bounce);
   }
   launch(RaygenProgram::PathFinish, 0, width, rows);
 }

@@ -30,8 +30,8 @@ class WavefrontSchedule {
 
   // Enqueues one sample per pixel (sample p.firstSample) of `rows` rows from p.firstRow on, up to `maxDepth`
   // bounces, on `stream`, with the programs of `pipeline`; the pixels' counters are left in p.counters as the
-  // one-thread schedule leaves them. Waits once per bounce for the queue lengths, which size the next launches.
-  // Reserves the buffers first (reserve()).
+  // one-thread schedule leaves them. Waits once per bounce for a queue's length, a bounce behind the device, which
+  // bounds the next launches' sizes. Reserves the buffers first (reserve()).
   void enqueueSample(const Pipeline& pipeline, cudaStream_t stream, LaunchParameters p, uint32_t width, uint32_t rows,
                      uint32_t maxDepth);
 
@@ -41,8 +41,12 @@ class WavefrontSchedule {
 
   size_t slots_ = 0;  // paths the buffers hold: the stride of their planes
   DeviceBuffer paths_, droppedPaths_, rays_[2], rayBits_[2], hits_, hitPrimitives_, shadows_, counts_;
-  DeviceBuffer parameters_[2];      // the launch parameters reading radiance queue 0 and 1
-  uint32_t* hostCounts_ = nullptr;  // pinned: the queue lengths read back each bounce
+  DeviceBuffer parameters_[2];  // the launch parameters reading radiance queue 0 and 1
+  // The radiance queues' lengths read back (pinned), and their copies' completion: a bounce's copy is read while
+  // the next bounce's is under way.
+  static constexpr uint32_t kCountCopies = 2;
+  uint32_t* hostCounts_ = nullptr;
+  cudaEvent_t countsCopied_[kCountCopies] = {};
 };
 
 }  // namespace candela::optix

@@ -1,7 +1,9 @@
 #pragma once
 // The wavefront schedule's raygen programs (backends/optix/wavefront_schedule.h): one launch starts every pixel's
 // path, then per bounce one launch traces the queued radiance rays, one shades their hits (kernel/path_vertex.h)
-// and queues shadow rays and next rays, one traces the shadow rays; a last launch adds the paths to the film.
+// and queues shadow rays and next rays, one traces the shadow rays; a last launch adds the paths to the film. The
+// queue launches may have more threads than their queue has entries (the host learns a queue's length a bounce
+// late): threads beyond its length return at once.
 // Only programs.cu includes this, after the launch parameters and the helpers it defines.
 
 namespace {
@@ -97,6 +99,7 @@ extern "C" __global__ void __raygen__pathStart() {
   const uint2 xy = launchPixelXY();
   const uint32_t path = launchPixel() - params.firstRow * params.settings.width;
   const WavefrontBuffers& w = params.wavefront;
+  if (path == 0) w.counts[0] = optixGetLaunchDimensions().x * optixGetLaunchDimensions().y;
   PathSampler sampler = pathSampler(path);
   const Ray ray = pixelSampleRay(params.camera, params.settings, xy.x, xy.y, sampler);
   const bool dropped = !isTraceableCameraRay(ray);
@@ -110,6 +113,7 @@ extern "C" __global__ void __raygen__pathStart() {
 extern "C" __global__ void __raygen__pathIntersect() {
   const uint32_t slot = queueSlot();
   const WavefrontBuffers& w = params.wavefront;
+  if (slot >= w.counts[w.current]) return;
   const QueuedRay q = loadRay(w, w.current, slot);
   if (q.path == kNoPath) return;
   Hit hit;
@@ -121,6 +125,7 @@ extern "C" __global__ void __raygen__pathIntersect() {
 extern "C" __global__ void __raygen__pathShade() {
   const uint32_t slot = queueSlot();
   const WavefrontBuffers& w = params.wavefront;
+  if (slot >= w.counts[w.current]) return;
   const QueuedRay q = loadRay(w, w.current, slot);
   if (q.path == kNoPath) return;
   uint32_t dimension = 0;
@@ -157,6 +162,7 @@ extern "C" __global__ void __raygen__pathShade() {
 extern "C" __global__ void __raygen__pathShadow() {
   const uint32_t slot = queueSlot();
   const WavefrontBuffers& w = params.wavefront;
+  if (slot >= w.counts[2]) return;
   uint32_t path = 0;
   const Ray ray = loadRayWords(w.shadows, w.slots, slot, path);
   const Words4 c = w.shadows[2 * w.slots + slot];
