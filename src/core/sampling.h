@@ -68,4 +68,25 @@ CANDELA_FN int findInterval(const float* cdf, int n, float u) {
   return lo;
 }
 
+// findInterval(cdf, n, u) for 0 <= u, searched only between the buckets a guide table names (Chen and Asau's
+// guide table, 1974): guide[g] is the bucket of g / n for g < n, guide[n] = n - 1, so that u's search starts
+// between guide[g] and guide[g + 1] + 1 for g = floor(u * n), one or two buckets where the table is smooth instead
+// of log2(n). Where rounding leaves u outside that bracket, the bracket widens to the whole table: the bucket is
+// always the one findInterval finds.
+CANDELA_FN int findGuidedInterval(const float* cdf, const uint32_t* guide, int n, float u) {
+  const float cell = u * float(n);
+  const int g = cell > 0.0f ? (cell < float(n - 1) ? int(cell) : n - 1) : 0;
+  int lo = int(guide[g]), hi = int(guide[g + 1]) + 1;
+  if (!(cdf[lo] <= u)) lo = 0;
+  if (!(u < cdf[hi])) hi = n;
+  while (hi - lo > 1) {
+    int mid = (lo + hi) / 2;
+    if (cdf[mid] <= u)
+      lo = mid;
+    else
+      hi = mid;
+  }
+  return lo;
+}
+
 }  // namespace candela

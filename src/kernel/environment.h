@@ -25,7 +25,10 @@ struct EnvironmentView {
   const float* func = nullptr;            // width * height
   const float* conditionalCdf = nullptr;  // height rows of width + 1 entries
   const float* marginalCdf = nullptr;     // height + 1 entries
-  float funcAverage = 0.0f;               // mean of func: the normaliser of the (u, v) density
+  // Guide tables of the cdfs, shaped as they are (findGuidedInterval, core/sampling.h)
+  const uint32_t* conditionalGuide = nullptr;
+  const uint32_t* marginalGuide = nullptr;
+  float funcAverage = 0.0f;  // mean of func: the normaliser of the (u, v) density
 };
 
 CANDELA_FN bool hasEnvironmentMap(const EnvironmentView& env) { return env.texels != nullptr; }
@@ -86,9 +89,10 @@ struct EnvironmentSample {
   float pdf = 0.0f;  // solid angle
 };
 
-// Samples a continuous position inside a piecewise-constant 1D table: the bucket by its cdf, then uniformly in it.
-CANDELA_FN float sampleCdfContinuous(const float* cdf, uint32_t n, float u, uint32_t& bucket) {
-  bucket = uint32_t(findInterval(cdf, int(n), u));
+// Samples a continuous position inside a piecewise-constant 1D table: the bucket by its cdf (and the cdf's guide
+// table), then uniformly in it.
+CANDELA_FN float sampleCdfContinuous(const float* cdf, const uint32_t* guide, uint32_t n, float u, uint32_t& bucket) {
+  bucket = uint32_t(findGuidedInterval(cdf, guide, int(n), u));
   float width = cdf[bucket + 1] - cdf[bucket];
   float du = width > 0.0f ? (u - cdf[bucket]) / width : 0.5f;
   return (float(bucket) + clampf(du, 0.0f, 0.99999994f)) / float(n);
@@ -103,8 +107,9 @@ CANDELA_FN EnvironmentSample sampleEnvironment(const EnvironmentView& env, Vec2 
   }
   if (!(env.funcAverage > 0.0f)) return s;
   uint32_t row, col;
-  float v = sampleCdfContinuous(env.marginalCdf, env.height, u.y, row);
-  float uu = sampleCdfContinuous(env.conditionalCdf + size_t(row) * (env.width + 1), env.width, u.x, col);
+  float v = sampleCdfContinuous(env.marginalCdf, env.marginalGuide, env.height, u.y, row);
+  const size_t rowStart = size_t(row) * (env.width + 1);
+  float uu = sampleCdfContinuous(env.conditionalCdf + rowStart, env.conditionalGuide + rowStart, env.width, u.x, col);
   float sinTheta = sinf(kPi * v);
   if (sinTheta <= 0.0f) return s;
   s.direction = environmentDirection(env, {uu, v});

@@ -24,6 +24,16 @@ double buildCdf(const float* values, uint32_t n, float* cdf) {
 
 }  // namespace
 
+void buildIntervalGuide(const float* cdf, uint32_t n, uint32_t* guide) {
+  uint32_t bucket = 0;
+  for (uint32_t g = 0; g < n; ++g) {
+    const float u = float(g) / float(n);
+    while (bucket + 1 < n && cdf[bucket + 1] <= u) ++bucket;
+    guide[g] = bucket;
+  }
+  guide[n] = n - 1;
+}
+
 EnvironmentDistribution EnvironmentDistribution::build(const std::vector<Vec3>& texels, uint32_t width,
                                                        uint32_t height) {
   if (width == 0 || height == 0 || texels.size() != size_t(width) * height)
@@ -32,6 +42,8 @@ EnvironmentDistribution EnvironmentDistribution::build(const std::vector<Vec3>& 
   d.func.resize(texels.size());
   d.conditionalCdf.resize(size_t(height) * (width + 1));
   d.marginalCdf.resize(height + 1);
+  d.conditionalGuide.resize(d.conditionalCdf.size());
+  d.marginalGuide.resize(d.marginalCdf.size());
   std::vector<float> rowAverages(height);
   for (uint32_t row = 0; row < height; ++row) {
     float sinTheta = std::sin(kPi * (float(row) + 0.5f) / float(height));
@@ -39,11 +51,22 @@ EnvironmentDistribution EnvironmentDistribution::build(const std::vector<Vec3>& 
       float l = luminance(texels[size_t(row) * width + col]);
       d.func[size_t(row) * width + col] = std::isfinite(l) && l > 0.0f ? l * sinTheta : 0.0f;
     }
-    rowAverages[row] =
-        float(buildCdf(&d.func[size_t(row) * width], width, &d.conditionalCdf[size_t(row) * (width + 1)]));
+    const size_t rowStart = size_t(row) * (width + 1);
+    rowAverages[row] = float(buildCdf(&d.func[size_t(row) * width], width, &d.conditionalCdf[rowStart]));
+    buildIntervalGuide(&d.conditionalCdf[rowStart], width, &d.conditionalGuide[rowStart]);
   }
   d.funcAverage = float(buildCdf(rowAverages.data(), height, d.marginalCdf.data()));
+  buildIntervalGuide(d.marginalCdf.data(), height, d.marginalGuide.data());
   return d;
+}
+
+void EnvironmentDistribution::attach(EnvironmentView& view) const {
+  view.func = func.data();
+  view.conditionalCdf = conditionalCdf.data();
+  view.marginalCdf = marginalCdf.data();
+  view.conditionalGuide = conditionalGuide.data();
+  view.marginalGuide = marginalGuide.data();
+  view.funcAverage = funcAverage;
 }
 
 std::vector<Vec3> environmentTexels(const Texture& map) {

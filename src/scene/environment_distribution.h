@@ -1,6 +1,7 @@
 #pragma once
 #include <vector>
 
+#include "kernel/environment.h"
 #include "scene/scene.h"
 
 namespace candela {
@@ -12,11 +13,21 @@ struct EnvironmentDistribution {
   std::vector<float> func;            // width * height
   std::vector<float> conditionalCdf;  // height rows of width + 1 entries, each from 0 to 1
   std::vector<float> marginalCdf;     // height + 1 entries, from 0 to 1
-  float funcAverage = 0.0f;           // 0 when the map is black
+  // Guide tables of the cdfs, entry for entry (findGuidedInterval, core/sampling.h)
+  std::vector<uint32_t> conditionalGuide;
+  std::vector<uint32_t> marginalGuide;
+  float funcAverage = 0.0f;  // 0 when the map is black
 
   // `texels`: width * height linear RGB values, top row first.
   static EnvironmentDistribution build(const std::vector<Vec3>& texels, uint32_t width, uint32_t height);
+
+  // Points `view`'s sampling tables (and funcAverage) at this distribution's.
+  void attach(EnvironmentView& view) const;
 };
+
+// Fills `guide` (n + 1 entries) for `cdf` (n + 1 entries, a cumulative table as findInterval reads it):
+// guide[g] is the bucket of g / n, guide[n] = n - 1 (findGuidedInterval, core/sampling.h).
+void buildIntervalGuide(const float* cdf, uint32_t n, uint32_t* guide);
 
 // The RGB texels of an environment map (first three channels of a float texture).
 std::vector<Vec3> environmentTexels(const Texture& map);

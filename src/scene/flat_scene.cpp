@@ -352,9 +352,7 @@ SceneView FlatScene::hostView() const {
   v.environment = environment;
   if (!environmentTexels.empty()) {
     v.environment.texels = environmentTexels.data();
-    v.environment.func = environmentDistribution.func.data();
-    v.environment.conditionalCdf = environmentDistribution.conditionalCdf.data();
-    v.environment.marginalCdf = environmentDistribution.marginalCdf.data();
+    environmentDistribution.attach(v.environment);
   }
   return v;
 }

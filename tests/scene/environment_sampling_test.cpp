@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
+#include <vector>
 
 #include "kernel/environment.h"
 #include "scene/environment_distribution.h"
@@ -42,10 +44,7 @@ struct MapFixture {
     view.height = height;
     view.rotationCos = std::cos(rotationDegrees * kPi / 180.0f);
     view.rotationSin = std::sin(rotationDegrees * kPi / 180.0f);
-    view.func = distribution.func.data();
-    view.conditionalCdf = distribution.conditionalCdf.data();
-    view.marginalCdf = distribution.marginalCdf.data();
-    view.funcAverage = distribution.funcAverage;
+    distribution.attach(view);
   }
 
   test::Chi2Result chi2(const EnvironmentView& pdfView) const {
@@ -126,6 +125,60 @@ TEST(EnvironmentSampling, MapOrientation) {
   EXPECT_NEAR(left.x, 0.5f, 1e-5f);
 }
 
+// Cumulative tables with steps, flat runs (empty buckets) and a smooth stretch, as maps with black regions and bright
+// suns give them.
+std::vector<float> unevenCdf(uint32_t n, uint32_t seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  std::vector<float> values(n);
+  for (uint32_t i = 0; i < n; ++i) {
+    const float pick = unit(random);
+    values[i] = pick < 0.3f ? 0.0f : (pick < 0.35f ? 1000.0f * unit(random) : unit(random));
+  }
+  std::vector<float> cdf(n + 1, 0.0f);
+  double sum = 0.0, running = 0.0;
+  for (float v : values) sum += v;
+  for (uint32_t i = 0; i < n; ++i) {
+    running += values[i];
+    cdf[i + 1] = float(running / sum);
+  }
+  cdf[n] = 1.0f;
+  return cdf;
+}
+
+TEST(EnvironmentSampling, GuidedSearchFindsTheBucketsOfThePlainSearch) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  for (uint32_t n : {1u, 2u, 3u, 17u, 512u, 1024u}) {
+    for (uint32_t seed = 0; seed < 4; ++seed) {
+      const std::vector<float> cdf = unevenCdf(n, seed);
+      std::vector<uint32_t> guide(n + 1);
+      buildIntervalGuide(cdf.data(), n, guide.data());
+      std::vector<float> us = {0.0f, std::nextafter(1.0f, 0.0f)};
+      for (uint32_t g = 0; g <= n; ++g) {  // the guide cells' edges and their neighbours
+        const float edge = float(g) / float(n);
+        us.insert(us.end(), {edge, std::nextafter(edge, 0.0f), std::nextafter(edge, 1.0f)});
+      }
+      for (float c : cdf) us.insert(us.end(), {c, std::nextafter(c, 0.0f), std::nextafter(c, 1.0f)});
+      for (int i = 0; i < 20000; ++i) us.push_back(unit(random));
+      for (float u : us) {
+        if (!(u >= 0.0f && u < 1.0f)) continue;
+        ASSERT_EQ(findGuidedInterval(cdf.data(), guide.data(), int(n), u), findInterval(cdf.data(), int(n), u))
+            << "n " << n << " seed " << seed << " u " << u;
+      }
+    }
+  }
+}
+
+TEST(EnvironmentSampling, GuidedSearchWidensAWrongGuideToTheWholeTable) {
+  const std::vector<float> cdf = unevenCdf(64, 3);
+  for (uint32_t wrong : {0u, 63u}) {
+    const std::vector<uint32_t> guide(65, wrong);
+    for (float u : {0.0f, 0.1f, 0.37f, 0.5f, 0.93f, 0.9999f})
+      EXPECT_EQ(findGuidedInterval(cdf.data(), guide.data(), 64, u), findInterval(cdf.data(), 64, u)) << u;
+  }
+}
+
 TEST(EnvironmentSampling, BlackMapIsNeverSampled) {
   std::vector<Vec3> black(64 * 32);
   EnvironmentDistribution d = EnvironmentDistribution::build(black, 64, 32);
@@ -134,9 +187,7 @@ TEST(EnvironmentSampling, BlackMapIsNeverSampled) {
   view.texels = black.data();
   view.width = 64;
   view.height = 32;
-  view.func = d.func.data();
-  view.conditionalCdf = d.conditionalCdf.data();
-  view.marginalCdf = d.marginalCdf.data();
+  d.attach(view);
   EXPECT_EQ(sampleEnvironment(view, {0.3f, 0.6f}).pdf, 0.0f);
   EXPECT_EQ(environmentDirectionPdf(view, {0, 0, 1}), 0.0f);
 }

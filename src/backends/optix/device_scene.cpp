@@ -63,6 +63,10 @@ void DeviceScene::updateEnvironment(const FlatScene& flat) {
       copy(environment_, flat.environmentDistribution.conditionalCdf, "the environment's rows");
   view_.environment.marginalCdf =
       copy(environment_, flat.environmentDistribution.marginalCdf, "the environment's columns");
+  view_.environment.conditionalGuide =
+      copy(environment_, flat.environmentDistribution.conditionalGuide, "the environment's row guides");
+  view_.environment.marginalGuide =
+      copy(environment_, flat.environmentDistribution.marginalGuide, "the environment's column guides");
 }
 
 size_t DeviceScene::deviceBytes() const {
