@@ -50,11 +50,20 @@ auto withMemoryReported(const std::string& file, Load load) {
   }
 }
 
+// A model or scene file as loaded, its vertex attributes repaired (repairVertexAttributes): what the scene cache
+// stores.
+template <class Load>
+Scene loadRepairingAttributes(const std::string& path, LoadWarnings& warnings, Load load) {
+  Scene scene = load();
+  repairVertexAttributes(scene, path, warnings);
+  return scene;
+}
+
 Scene loadFile(const std::string& path, const SceneLoadOptions& options, LoadWarnings& warnings) {
   std::string ext = lowerCaseExtension(path);
   if (ext == ".obj" || ext == ".gltf" || ext == ".glb" || ext == ".pbrt")
     return loadThroughSceneCache(path, cacheFor(options), warnings, [&](LoadWarnings& w) {
-      return loadModelFile(path, options.outsidePaths, w, nullptr);
+      return loadRepairingAttributes(path, w, [&] { return loadModelFile(path, options.outsidePaths, w, nullptr); });
     });
   // A scene file is cached as a whole (its key covers the JSON and every file its models were read from), and
   // on a miss its models load together, sharing libraries and textures: cached one by one, every model's cache
@@ -65,7 +74,7 @@ Scene loadFile(const std::string& path, const SceneLoadOptions& options, LoadWar
       auto loadModel = [&](const std::string& model, LoadWarnings& mw, SharedModelAssets& shared) {
         return withMemoryReported(model, [&] { return loadModelFile(model, options.outsidePaths, mw, &shared); });
       };
-      return loadSceneFile(path, loadModel, w, options.outsidePaths);
+      return loadRepairingAttributes(path, w, [&] { return loadSceneFile(path, loadModel, w, options.outsidePaths); });
     });
   std::string names;
   for (const std::string& n : builtinSceneNames()) names += (names.empty() ? "" : ", ") + n;

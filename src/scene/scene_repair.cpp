@@ -129,41 +129,50 @@ DroppedTriangles dropUnusableTriangles(Mesh& mesh) {
   return dropped;
 }
 
-// Zeroes non-finite normals, texture coordinates and tangents and rescales extreme normals and tangents;
-// returns how many values were not finite.
-size_t repairAttributes(Mesh& mesh) {
+// Counts what `repair` replaced in `values`, repaired in parallel.
+template <class T, class Repair>
+size_t repairEach(std::vector<T>& values, Repair repair) {
   return tbb::parallel_reduce(
-      tbb::blocked_range<size_t>(0, mesh.positions.size()), size_t(0),
+      tbb::blocked_range<size_t>(0, values.size()), size_t(0),
       [&](const tbb::blocked_range<size_t>& r, size_t bad) {
-        for (size_t v = r.begin(); v < r.end(); ++v) {
-          if (v < mesh.normals.size()) {
-            Vec3& n = mesh.normals[v];
-            if (!isFinite(n)) {
-              n = {};
-              ++bad;
-            } else if (needsRescaling(n)) {
-              n = unitLength(n);
-            }
-          }
-          if (v < mesh.uvs.size() && !(std::isfinite(mesh.uvs[v].x) && std::isfinite(mesh.uvs[v].y))) {
-            mesh.uvs[v] = {};
-            ++bad;
-          }
-          if (v < mesh.tangents.size()) {
-            Vec4& t = mesh.tangents[v];
-            Vec3 xyz{t.x, t.y, t.z};
-            if (!isFinite(xyz) || !std::isfinite(t.w)) {
-              t = {0, 0, 0, 1};
-              ++bad;
-            } else if (needsRescaling(xyz)) {
-              xyz = unitLength(xyz);
-              t = {xyz.x, xyz.y, xyz.z, t.w};
-            }
-          }
-        }
+        for (size_t i = r.begin(); i < r.end(); ++i) bad += repair(values[i]) ? 1 : 0;
         return bad;
       },
       std::plus<size_t>());
+}
+
+// Non-finite normals become zero (the renderer then takes the geometric one), extreme ones unit length; true
+// where the normal was not finite. Tangents alike (zero with handedness 1), texture coordinates zeroed.
+bool repairNormal(Vec3& n) {
+  if (!isFinite(n)) {
+    n = {};
+    return true;
+  }
+  if (needsRescaling(n)) n = unitLength(n);
+  return false;
+}
+bool repairTangent(Vec4& t) {
+  Vec3 xyz{t.x, t.y, t.z};
+  if (!isFinite(xyz) || !std::isfinite(t.w)) {
+    t = {0, 0, 0, 1};
+    return true;
+  }
+  if (needsRescaling(xyz)) {
+    xyz = unitLength(xyz);
+    t = {xyz.x, xyz.y, xyz.z, t.w};
+  }
+  return false;
+}
+bool repairUv(Vec2& uv) {
+  if (std::isfinite(uv.x) && std::isfinite(uv.y)) return false;
+  uv = {};
+  return true;
+}
+// A vertex colour that is not finite becomes white, which leaves the base colour as it is.
+bool repairColor(Vec3& c) {
+  if (isFinite(c)) return false;
+  c = {1, 1, 1};
+  return true;
 }
 
 }  // namespace
@@ -219,7 +228,6 @@ namespace {
 // What repairing one mesh did, and the bounds of what is left of it.
 struct MeshRepair {
   DroppedTriangles dropped;
-  size_t badAttributes = 0;
   Bounds3 bounds;
 };
 
@@ -233,18 +241,16 @@ std::vector<MeshRepair> repairMeshes(Scene& scene, const std::string& file, Load
   tbb::parallel_for(size_t(0), scene.meshes.size(), [&](size_t m) {
     Mesh& mesh = scene.meshes[m];
     repairs[m].dropped = dropUnusableTriangles(mesh);
-    repairs[m].badAttributes = repairAttributes(mesh);
     repairs[m].bounds = meshBounds(mesh);
   });
 
   size_t meshesWarned = 0, meshesNotNamed = 0, outOfRangeNotNamed = 0, noArea = 0, meshesWithoutArea = 0;
-  size_t badAttributes = 0, trianglesLeft = 0, trianglesDropped = 0;
+  size_t trianglesLeft = 0, trianglesDropped = 0;
   const std::string range = "a vertex not finite or beyond +-" + compact(kMaxSceneCoordinate);
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     const DroppedTriangles& dropped = repairs[m].dropped;
     trianglesLeft += scene.meshes[m].triangleCount();
     trianglesDropped += dropped.outOfRange + dropped.noArea;
-    badAttributes += repairs[m].badAttributes;
     noArea += dropped.noArea;
     meshesWithoutArea += dropped.noArea > 0 ? 1 : 0;
     if (dropped.outOfRange == 0) continue;
@@ -262,9 +268,6 @@ std::vector<MeshRepair> repairMeshes(Scene& scene, const std::string& file, Load
   if (noArea > 0)
     warnings.add(file, std::to_string(noArea) + " triangles without area dropped (in " +
                            std::to_string(meshesWithoutArea) + " meshes)");
-  if (badAttributes > 0)
-    warnings.add(file, std::to_string(badAttributes) +
-                           " non-finite normals, texture coordinates or tangents replaced with zero");
   if (trianglesDropped > 0 && trianglesLeft == 0)
     failLoad(file, "no triangle is usable: all have no area or lie beyond +-" + compact(kMaxSceneCoordinate));
   return repairs;
@@ -460,7 +463,29 @@ void checkCamera(const CameraDescription& c, const std::string& file) {
 
 }  // namespace
 
+void repairVertexAttributes(Scene& scene, const std::string& file, LoadWarnings& warnings) {
+  std::vector<size_t> bad(scene.meshes.size());
+  tbb::parallel_for(size_t(0), scene.meshes.size(), [&](size_t m) {
+    Mesh& mesh = scene.meshes[m];
+    bad[m] = repairEach(mesh.normals, repairNormal) + repairEach(mesh.uvs, repairUv) +
+             repairEach(mesh.tangents, repairTangent) + repairEach(mesh.colors, repairColor);
+  });
+  // The rest shapes of skinned and morphed meshes, which the player poses the meshes from, alike (not counted:
+  // they start as copies of their meshes').
+  for (MeshDeformation& d : scene.animation.deformations) {
+    repairEach(d.normals, repairNormal);
+    repairEach(d.tangents, repairTangent);
+  }
+  size_t total = 0;
+  for (size_t b : bad) total += b;
+  if (total > 0)
+    warnings.add(file, std::to_string(total) +
+                           " non-finite normals, texture coordinates or tangents replaced with zero, or colours "
+                           "with white");
+}
+
 void repairScene(Scene& scene, const std::string& file, LoadWarnings& warnings) {
+  repairVertexAttributes(scene, file, warnings);
   const std::vector<MeshRepair> repairs = repairMeshes(scene, file, warnings);
   repairInstances(scene, repairs, file, warnings);
   clampEmittedRadiance(scene, file, warnings);

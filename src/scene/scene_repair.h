@@ -31,14 +31,20 @@ bool usableTransform(const Affine3x4& transform);
 bool boundsWithinRange(const Bounds3& objectBounds, const Affine3x4& transform);
 Bounds3 meshBounds(const Mesh& mesh);
 
+// Zeroes non-finite normals, texture coordinates and tangents, in meshes and in the rest shapes of skinned and
+// morphed meshes, and rescales normals and tangents of extreme length to unit length (a zero normal makes the
+// renderer use the geometric one); non-finite vertex colours become white; one warning naming `file` counts the values
+// that were not finite. Models go through it as they load, before the scene cache stores them (the cache holds finite
+// attributes only), and repairScene again, which changes nothing then.
+void repairVertexAttributes(Scene& scene, const std::string& file, LoadWarnings& warnings);
+
 // Repairs a loaded scene once, before it is rendered, so that no number in it can make a backend fail:
 // - triangles that use a non-finite vertex or one beyond kMaxSceneCoordinate are dropped (one warning per mesh
 //   with the count, for the first ten meshes), and so are triangles without area (one warning for the scene);
 //   meshes left without triangles are removed;
 // - instances whose transform is not finite, is singular or shrinks some direction below kMinInstanceScale, or
 //   that would place their mesh beyond kMaxSceneCoordinate, are dropped (one warning);
-// - non-finite normals, texture coordinates and tangents become zero, and normals and tangents of extreme length
-//   are rescaled to unit length (a zero normal makes the renderer use the geometric one);
+// - vertex attributes as repairVertexAttributes says;
 // - emitted radiance (material emission, float texels of emission textures, the environment) is clamped to
 //   kMaxRadiance per channel (one warning each); float texels that are not finite or negative become 0.
 // - punctual lights with a position not finite or beyond kMaxSceneCoordinate, or without a direction, are dropped,

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 #include "app/scene_loading.h"
 #include "backends/cpu/cpu_backend.h"
@@ -380,6 +381,33 @@ TEST(GltfMorphTargets, TheSceneCacheKeepsDeformations) {
   Scene broken = scene;
   broken.animation.deformations[0].joints[9] = 5;
   EXPECT_EQ(cache.refusal(broken), "a mesh deformation refers to a missing joint");
+}
+
+// A morphed mesh whose normals are not all finite (the rest shape the player poses from holds them too): the
+// scene cache, which holds finite attributes only, stores it once the load has repaired them, and the scene read
+// back is the one loaded.
+TEST(GltfMorphTargets, AMeshWithNonFiniteNormalsIsCachedRepaired) {
+  TempFolder folder;
+  GltfFile file = morphedQuad();
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  file.gltf["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] =
+      file.floats({nan, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1}, "VEC3");
+  const std::string path = file.write(folder);
+  SceneLoadOptions options;
+  options.cache = {true, folder.file("cache")};
+  const Scene fresh = loadScene(path, options);
+  CachedScene stored;
+  EXPECT_EQ(readSceneCache(sceneCacheFile(folder.file("cache"), path), path, stored), SceneCacheRead::Hit);
+  const Scene cached = loadScene(path, options);
+  for (const Scene* scene : {&fresh, &cached}) {
+    ASSERT_EQ(scene->animation.deformations.size(), 1u);
+    expectNear(scene->meshes[0].normals[0], {0, 0, 0});
+    expectNear(scene->animation.deformations[0].normals[0], {0, 0, 0});
+    expectNear(scene->animation.deformations[0].normals[1], {0, 0, 1});
+  }
+  Scene posed = cached;
+  AnimationPlayer(posed).pose(posed, 0, 0.25f);
+  expectNear(posed.meshes[0].normals[2], normalize(Vec3{0.25f, 0, 0.75f}));
 }
 
 // Renders of the bending quad: setDeformedMeshes gives the image of a full setScene of the posed scene, and the

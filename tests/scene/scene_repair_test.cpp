@@ -136,10 +136,13 @@ TEST(SceneRepair, NonFiniteAttributesAreZeroedAndExtremeOnesRescaled) {
   m.normals[1] = {0, 0, 3e38f};
   m.uvs[2] = {kInfinity, 0};
   m.tangents = {{1, 0, 0, 1}, {kNan, 0, 0, 1}, {1e-30f, 0, 0, -1}, {1, 0, 0, 1}};
+  m.colors = {{0.5f, 0.5f, 0.5f}, {0.5f, kInfinity, 0.5f}, {0.5f, 0.5f, 0.5f}, {0.5f, 0.5f, 0.5f}};
   LoadWarnings warnings;
   repairScene(s, "model.obj", warnings);
   ASSERT_EQ(warnings.messages.size(), 1u);
-  EXPECT_NE(warnings.messages[0].find("3 non-finite normals, texture coordinates or tangents"), std::string::npos);
+  EXPECT_NE(warnings.messages[0].find("4 non-finite normals, texture coordinates or tangents"), std::string::npos);
+  EXPECT_EQ(m.colors[1].y, 1.0f);
+  EXPECT_EQ(m.colors[0].y, 0.5f);
   EXPECT_EQ(m.normals[0].x, 0.0f);
   EXPECT_EQ(m.normals[0].z, 0.0f);
   EXPECT_EQ(m.normals[1].z, 1.0f);
