@@ -55,9 +55,8 @@ CANDELA_FN float powerHeuristic(float pdfF, float pdfG) {
   return f2 / (f2 + g2);
 }
 
-// Finds the bucket of a sorted cumulative table (cdf[0] = 0, cdf[n] = 1) that holds u.
-CANDELA_FN int findInterval(const float* cdf, int n, float u) {
-  int lo = 0, hi = n;  // invariant: cdf[lo] <= u < cdf[hi]
+// The bucket i in [lo, hi) of a sorted cumulative table with cdf[i] <= u < cdf[i + 1], given cdf[lo] <= u < cdf[hi].
+CANDELA_FN int searchInterval(const float* cdf, int lo, int hi, float u) {
   while (hi - lo > 1) {
     int mid = (lo + hi) / 2;
     if (cdf[mid] <= u)
@@ -67,6 +66,9 @@ CANDELA_FN int findInterval(const float* cdf, int n, float u) {
   }
   return lo;
 }
+
+// Finds the bucket of a sorted cumulative table (cdf[0] = 0, cdf[n] = 1) that holds u.
+CANDELA_FN int findInterval(const float* cdf, int n, float u) { return searchInterval(cdf, 0, n, u); }
 
 // findInterval(cdf, n, u) for 0 <= u, searched only between the buckets a guide table names (Chen and Asau's
 // guide table, 1974): guide[g] is the bucket of g / n for g < n, guide[n] = n - 1, so that u's search starts
@@ -79,14 +81,7 @@ CANDELA_FN int findGuidedInterval(const float* cdf, const uint32_t* guide, int n
   int lo = int(guide[g]), hi = int(guide[g + 1]) + 1;
   if (!(cdf[lo] <= u)) lo = 0;
   if (!(u < cdf[hi])) hi = n;
-  while (hi - lo > 1) {
-    int mid = (lo + hi) / 2;
-    if (cdf[mid] <= u)
-      lo = mid;
-    else
-      hi = mid;
-  }
-  return lo;
+  return searchInterval(cdf, lo, hi, u);
 }
 
 }  // namespace candela
