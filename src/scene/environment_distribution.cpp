@@ -22,8 +22,8 @@ double buildCdf(const float* values, uint32_t n, float* cdf) {
   return sum / n;
 }
 
-}  // namespace
-
+// Fills guide (n + 1 entries) for cdf (n + 1 entries): guide[g] is the bucket of g / n, guide[n] = n - 1
+// (findGuidedInterval, core/sampling.h).
 void buildIntervalGuide(const float* cdf, uint32_t n, uint32_t* guide) {
   uint32_t bucket = 0;
   for (uint32_t g = 0; g < n; ++g) {
@@ -33,6 +33,8 @@ void buildIntervalGuide(const float* cdf, uint32_t n, uint32_t* guide) {
   }
   guide[n] = n - 1;
 }
+
+}  // namespace
 
 EnvironmentDistribution EnvironmentDistribution::build(const std::vector<Vec3>& texels, uint32_t width,
                                                        uint32_t height) {

@@ -25,10 +25,6 @@ struct EnvironmentDistribution {
   void attach(EnvironmentView& view) const;
 };
 
-// Fills `guide` (n + 1 entries) for `cdf` (n + 1 entries, a cumulative table as findInterval reads it):
-// guide[g] is the bucket of g / n, guide[n] = n - 1 (findGuidedInterval, core/sampling.h).
-void buildIntervalGuide(const float* cdf, uint32_t n, uint32_t* guide);
-
 // The RGB texels of an environment map (first three channels of a float texture).
 std::vector<Vec3> environmentTexels(const Texture& map);
 

@@ -325,13 +325,6 @@ void repairInstances(Scene& scene, const std::vector<MeshRepair>& repairs, const
       warnings.add(file, std::to_string(dropped) +
                              " skinned or morphed meshes keep their rest shape: vertices beyond the coordinate "
                              "range were dropped from them");
-    // A deformation's rest normals and tangents are copies of its mesh's, taken at load: they take the repaired
-    // ones (non-finite values zeroed, extreme ones rescaled), which the player writes back when it poses the mesh.
-    for (MeshDeformation& d : scene.animation.deformations) {
-      const Mesh& mesh = scene.meshes[d.mesh];
-      if (d.normals.size() == mesh.normals.size()) d.normals = mesh.normals;
-      if (d.tangents.size() == mesh.tangents.size()) d.tangents = mesh.tangents;
-    }
   }
   if (unusable > 0)
     warnings.add(file, std::to_string(unusable) +
@@ -470,8 +463,8 @@ void repairVertexAttributes(Scene& scene, const std::string& file, LoadWarnings&
     bad[m] = repairEach(mesh.normals, repairNormal) + repairEach(mesh.uvs, repairUv) +
              repairEach(mesh.tangents, repairTangent) + repairEach(mesh.colors, repairColor);
   });
-  // The rest shapes of skinned and morphed meshes, which the player poses the meshes from, alike (not counted:
-  // they start as copies of their meshes').
+  // The rest shapes of skinned and morphed meshes alike, which the player writes back when it poses a mesh (not
+  // counted: they start as copies of their meshes').
   for (MeshDeformation& d : scene.animation.deformations) {
     repairEach(d.normals, repairNormal);
     repairEach(d.tangents, repairTangent);

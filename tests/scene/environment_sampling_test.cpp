@@ -125,25 +125,18 @@ TEST(EnvironmentSampling, MapOrientation) {
   EXPECT_NEAR(left.x, 0.5f, 1e-5f);
 }
 
-// Cumulative tables with steps, flat runs (empty buckets) and a smooth stretch, as maps with black regions and bright
-// suns give them.
-std::vector<float> unevenCdf(uint32_t n, uint32_t seed) {
+// A map of one row of n texels whose row cdf has steps, flat runs (empty buckets) and a smooth stretch, as maps with
+// black regions and bright suns give them: its conditionalCdf and conditionalGuide are one table of n buckets.
+EnvironmentDistribution unevenRow(uint32_t n, uint32_t seed) {
   std::mt19937 random(seed);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-  std::vector<float> values(n);
-  for (uint32_t i = 0; i < n; ++i) {
+  std::vector<Vec3> texels(n);
+  for (Vec3& t : texels) {
     const float pick = unit(random);
-    values[i] = pick < 0.3f ? 0.0f : (pick < 0.35f ? 1000.0f * unit(random) : unit(random));
+    const float grey = pick < 0.3f ? 0.0f : (pick < 0.35f ? 1000.0f * unit(random) : unit(random));
+    t = {grey, grey, grey};
   }
-  std::vector<float> cdf(n + 1, 0.0f);
-  double sum = 0.0, running = 0.0;
-  for (float v : values) sum += v;
-  for (uint32_t i = 0; i < n; ++i) {
-    running += values[i];
-    cdf[i + 1] = float(running / sum);
-  }
-  cdf[n] = 1.0f;
-  return cdf;
+  return EnvironmentDistribution::build(texels, n, 1);
 }
 
 TEST(EnvironmentSampling, GuidedSearchFindsTheBucketsOfThePlainSearch) {
@@ -151,9 +144,9 @@ TEST(EnvironmentSampling, GuidedSearchFindsTheBucketsOfThePlainSearch) {
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   for (uint32_t n : {1u, 2u, 3u, 17u, 512u, 1024u}) {
     for (uint32_t seed = 0; seed < 4; ++seed) {
-      const std::vector<float> cdf = unevenCdf(n, seed);
-      std::vector<uint32_t> guide(n + 1);
-      buildIntervalGuide(cdf.data(), n, guide.data());
+      const EnvironmentDistribution row = unevenRow(n, seed);
+      const std::vector<float>& cdf = row.conditionalCdf;
+      const std::vector<uint32_t>& guide = row.conditionalGuide;
       std::vector<float> us = {0.0f, std::nextafter(1.0f, 0.0f)};
       for (uint32_t g = 0; g <= n; ++g) {  // the guide cells' edges and their neighbours
         const float edge = float(g) / float(n);
@@ -171,7 +164,7 @@ TEST(EnvironmentSampling, GuidedSearchFindsTheBucketsOfThePlainSearch) {
 }
 
 TEST(EnvironmentSampling, GuidedSearchWidensAWrongGuideToTheWholeTable) {
-  const std::vector<float> cdf = unevenCdf(64, 3);
+  const std::vector<float> cdf = unevenRow(64, 3).conditionalCdf;
   for (uint32_t wrong : {0u, 63u}) {
     const std::vector<uint32_t> guide(65, wrong);
     for (float u : {0.0f, 0.1f, 0.37f, 0.5f, 0.93f, 0.9999f})
