@@ -33,7 +33,6 @@ void WavefrontSchedule::reserve(size_t slots) {
 void WavefrontSchedule::release() {
   slots_ = 0;
   paths_ = DeviceBuffer();
-  droppedPaths_ = DeviceBuffer();
   for (int q = 0; q < 2; ++q) {
     rays_[q] = DeviceBuffer();
     rayBits_[q] = DeviceBuffer();
@@ -46,7 +45,6 @@ void WavefrontSchedule::release() {
 void WavefrontSchedule::allocate(size_t slots) {
   const char* purpose = "the wavefront's paths and queues";
   paths_ = DeviceBuffer(slots * kPathPlanes * sizeof(Words4), purpose);
-  droppedPaths_ = DeviceBuffer(slots * sizeof(uint32_t), purpose);
   for (int q = 0; q < 2; ++q) {
     rays_[q] = DeviceBuffer(slots * kRayPlanes * sizeof(Words4), purpose);
     rayBits_[q] = DeviceBuffer(slots * sizeof(uint32_t), purpose);
@@ -54,7 +52,7 @@ void WavefrontSchedule::allocate(size_t slots) {
   hits_ = DeviceBuffer(slots * sizeof(Words4), purpose);
   hitPrimitives_ = DeviceBuffer(slots * sizeof(uint32_t), purpose);
   shadows_ = DeviceBuffer(slots * kShadowPlanes * sizeof(Words4), purpose);
-  counts_ = DeviceBuffer(3 * sizeof(uint32_t), purpose);  // radiance queues 0 and 1, the shadow queue
+  counts_ = DeviceBuffer(2 * sizeof(QueueCounts), purpose);
   for (DeviceBuffer& p : parameters_) p = DeviceBuffer(sizeof(LaunchParameters), "the launch parameters");
 }
 
@@ -64,7 +62,6 @@ void WavefrontSchedule::enqueueSample(const Pipeline& pipeline, cudaStream_t str
   reserve(slots);
   WavefrontBuffers& w = p.wavefront;
   w.paths = paths_.as<Words4>();
-  w.droppedPaths = droppedPaths_.as<uint32_t>();
   for (int q = 0; q < 2; ++q) {
     w.rays[q] = rays_[q].as<Words4>();
     w.rayBits[q] = rayBits_[q].as<uint32_t>();
@@ -72,25 +69,28 @@ void WavefrontSchedule::enqueueSample(const Pipeline& pipeline, cudaStream_t str
   w.hits = hits_.as<Words4>();
   w.hitPrimitives = hitPrimitives_.as<uint32_t>();
   w.shadows = shadows_.as<Words4>();
-  w.counts = counts_.as<uint32_t>();
+  QueueCounts* counts = counts_.as<QueueCounts>();
+  w.counts = counts;
   w.slots = uint32_t(slots_);
   p.samplesPerPixel = 1;
-  for (uint32_t q = 0; q < 2; ++q) {
-    w.current = q;
-    checkCuda(cudaMemcpyAsync(parameters_[q].as<void>(), &p, sizeof p, cudaMemcpyHostToDevice, stream),
+  for (uint32_t set = 0; set < kParameterSets; ++set) {
+    w.current = set & 1u;
+    w.cameraBounce = set == 0 ? 1u : 0u;
+    checkCuda(cudaMemcpyAsync(parameters_[set].as<void>(), &p, sizeof p, cudaMemcpyHostToDevice, stream),
               "uploading the launch parameters");
   }
-  auto launch = [&](RaygenProgram program, uint32_t queue, uint32_t launchWidth, uint32_t launchHeight) {
-    checkOptix(optixLaunch(pipeline.get(), stream, parameters_[queue].address(), sizeof p,
+  // The parameters of bounce b: the camera bounce's, then those reading queue 1 and queue 0 in turn.
+  auto launch = [&](RaygenProgram program, uint32_t bounce, uint32_t launchWidth, uint32_t launchHeight) {
+    const uint32_t set = bounce == 0 ? 0u : 2u - (bounce & 1u);
+    checkOptix(optixLaunch(pipeline.get(), stream, parameters_[set].address(), sizeof p,
                            &pipeline.bindingTable(program), launchWidth, launchHeight, 1),
                "launching the device programs");
   };
-  uint32_t* counts = counts_.as<uint32_t>();
   // After bounce b's shading, the length of the radiance queue of bounce b + 1 goes to the host, asynchronously;
   // radianceCount(b) waits for the length of bounce b's.
   auto copyRadianceCount = [&](uint32_t bounce) {
     const uint32_t copy = bounce % kCountCopies;
-    checkCuda(cudaMemcpyAsync(hostCounts_ + copy, counts + (1 - (bounce & 1u)), sizeof(uint32_t),
+    checkCuda(cudaMemcpyAsync(hostCounts_ + copy, &counts[1 - (bounce & 1u)].radiance, sizeof(uint32_t),
                               cudaMemcpyDeviceToHost, stream),
               "reading a queue's length");
     checkCuda(cudaEventRecord(countsCopied_[copy], stream), "recording an event");
@@ -100,7 +100,7 @@ void WavefrontSchedule::enqueueSample(const Pipeline& pipeline, cudaStream_t str
     checkCuda(cudaEventSynchronize(countsCopied_[copy]), "running the device programs");
     return hostCounts_[copy];
   };
-  checkCuda(cudaMemsetAsync(counts, 0, 3 * sizeof(uint32_t), stream), "clearing the queues");
+  checkCuda(cudaMemsetAsync(counts, 0, 2 * sizeof(QueueCounts), stream), "clearing the queues");
   launch(RaygenProgram::PathStart, 0, width, rows);
   // Launch sizes: a path queues at most one radiance ray and one shadow ray per bounce, so no queue of bounce b
   // is longer than bounce b - 1's radiance queue, whose length the host waits for while the GPU runs bounce b.
@@ -108,13 +108,12 @@ void WavefrontSchedule::enqueueSample(const Pipeline& pipeline, cudaStream_t str
   // return at once.
   uint32_t bound = uint32_t(slots);
   for (uint32_t bounce = 0; bounce <= maxDepth && bound > 0; ++bounce) {
-    const uint32_t current = bounce & 1u, next = 1 - current;
-    checkCuda(cudaMemsetAsync(counts + next, 0, sizeof(uint32_t), stream), "clearing a queue");
-    checkCuda(cudaMemsetAsync(counts + 2, 0, sizeof(uint32_t), stream), "clearing a queue");
-    launch(RaygenProgram::PathIntersect, current, bound, 1);
-    launch(RaygenProgram::PathShade, current, bound, 1);
+    const uint32_t next = 1 - (bounce & 1u);
+    checkCuda(cudaMemsetAsync(counts + next, 0, sizeof(QueueCounts), stream), "clearing the queues");
+    launch(RaygenProgram::PathIntersect, bounce, bound, 1);
+    launch(RaygenProgram::PathShade, bounce, bound, 1);
     copyRadianceCount(bounce);
-    launch(RaygenProgram::PathShadow, current, bound, 1);
+    launch(RaygenProgram::PathShadow, bounce, bound, 1);
     if (bounce >= 1) bound = radianceCount(bounce);
   }
   launch(RaygenProgram::PathFinish, 0, width, rows);

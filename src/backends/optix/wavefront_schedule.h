@@ -40,8 +40,10 @@ class WavefrontSchedule {
   void release();
 
   size_t slots_ = 0;  // paths the buffers hold: the stride of their planes
-  DeviceBuffer paths_, droppedPaths_, rays_[2], rayBits_[2], hits_, hitPrimitives_, shadows_, counts_;
-  DeviceBuffer parameters_[2];  // the launch parameters reading radiance queue 0 and 1
+  DeviceBuffer paths_, rays_[2], rayBits_[2], hits_, hitPrimitives_, shadows_, counts_;
+  // The launch parameters of the camera bounce, and of the later bounces reading radiance queue 1 and 0.
+  static constexpr uint32_t kParameterSets = 3;
+  DeviceBuffer parameters_[kParameterSets];
   // The radiance queues' lengths read back (pinned), and their copies' completion: a bounce's copy is read while
   // the next bounce's is under way.
   static constexpr uint32_t kCountCopies = 2;

@@ -11,16 +11,25 @@ namespace {
 // The queue slot of this thread: the queue launches are one-dimensional.
 __device__ uint32_t queueSlot() { return optixGetLaunchIndex().x; }
 
-// Appends to a queue whose length is *count, with one atomic per warp; returns the slot.
-__device__ uint32_t appendSlot(uint32_t* count) {
+// Slots in the radiance queue and the shadow queue of `counts` for the threads of the warp that append a ray to
+// either (`ray`, `shadow`): one 64-bit atomic per warp for both. Every active thread of the warp must call it.
+struct QueueSlots {
+  uint32_t ray, shadow;
+};
+
+__device__ QueueSlots appendSlots(QueueCounts* counts, bool ray, bool shadow) {
   const unsigned active = __activemask();
+  const unsigned rays = __ballot_sync(active, ray), shadows = __ballot_sync(active, shadow);
   const int leader = __ffs(active) - 1;
   uint32_t lane;
   asm("mov.u32 %0, %%laneid;" : "=r"(lane));
-  uint32_t base = 0;
-  if (int(lane) == leader) base = atomicAdd(count, uint32_t(__popc(active)));
+  unsigned long long base = 0;
+  if (int(lane) == leader && (rays | shadows) != 0u)
+    base = atomicAdd(reinterpret_cast<unsigned long long*>(counts),
+                     (static_cast<unsigned long long>(__popc(shadows)) << 32) | unsigned(__popc(rays)));
   base = __shfl_sync(active, base, leader);
-  return base + uint32_t(__popc(active & ((1u << lane) - 1u)));
+  const unsigned below = (1u << lane) - 1u;
+  return {uint32_t(base) + uint32_t(__popc(rays & below)), uint32_t(base >> 32) + uint32_t(__popc(shadows & below))};
 }
 
 __device__ uint32_t word(float f) { return __float_as_uint(f); }
@@ -34,8 +43,10 @@ __device__ PathSampler pathSampler(uint32_t path) {
 
 __device__ PathState loadPath(const WavefrontBuffers& w, uint32_t path, uint32_t& dimension) {
   const uint32_t n = w.slots;
-  const Words4 a = w.paths[path], b = w.paths[n + path], c = w.paths[2 * n + path], d = w.paths[3 * n + path],
-               e = w.paths[4 * n + path];
+  const Words4 e = w.paths[4 * n + path];
+  dimension = e.z;
+  if (w.cameraBounce) return startPath({real(e.x), real(e.y)});
+  const Words4 a = w.paths[path], b = w.paths[n + path], c = w.paths[2 * n + path], d = w.paths[3 * n + path];
   PathState s;
   s.radiance = {real(a.x), real(a.y), real(a.z)};
   s.rays = a.w;
@@ -46,14 +57,18 @@ __device__ PathState loadPath(const WavefrontBuffers& w, uint32_t path, uint32_t
   s.lastNormal = {real(d.x), real(d.y), real(d.z)};
   s.depth = d.w;
   s.cone = {real(e.x), real(e.y)};
-  dimension = e.z;
   s.specularBounce = e.w;
   return s;
 }
 
+// The plane the last launch reads (radiance and rays), which is all of a path that has ended.
+__device__ void storePathResult(const WavefrontBuffers& w, uint32_t path, const PathState& s) {
+  w.paths[path] = {word(s.radiance.x), word(s.radiance.y), word(s.radiance.z), s.rays};
+}
+
 __device__ void storePath(const WavefrontBuffers& w, uint32_t path, const PathState& s, uint32_t dimension) {
   const uint32_t n = w.slots;
-  w.paths[path] = {word(s.radiance.x), word(s.radiance.y), word(s.radiance.z), s.rays};
+  storePathResult(w, path, s);
   w.paths[n + path] = {word(s.beta.x), word(s.beta.y), word(s.beta.z), word(s.etaScale)};
   w.paths[2 * n + path] = {word(s.lastScatter.x), word(s.lastScatter.y), word(s.lastScatter.z), word(s.bsdfPdf)};
   w.paths[3 * n + path] = {word(s.lastNormal.x), word(s.lastNormal.y), word(s.lastNormal.z), s.depth};
@@ -94,26 +109,28 @@ __device__ void storeRay(const WavefrontBuffers& w, uint32_t queue, uint32_t slo
 }  // namespace
 
 // One thread per pixel of the launch: the camera ray of the pixel's sample params.firstSample, queued in queue 0 at
-// the pixel's slot (a camera ray that cannot be traced gets no path, and its sample is dropped).
+// the pixel's slot (a camera ray that cannot be traced gets no path, and its sample is dropped). A path at its
+// camera ray is all defaults (startPath) but for its footprint and the sampler's dimension: only the planes of its
+// result and of those are stored.
 extern "C" __global__ void __raygen__pathStart() {
   const uint2 xy = launchPixelXY();
   const uint32_t path = launchPixel() - params.firstRow * params.settings.width;
   const WavefrontBuffers& w = params.wavefront;
-  if (path == 0) w.counts[0] = optixGetLaunchDimensions().x * optixGetLaunchDimensions().y;
+  if (path == 0) w.counts[0].radiance = optixGetLaunchDimensions().x * optixGetLaunchDimensions().y;
   PathSampler sampler = pathSampler(path);
   const Ray ray = pixelSampleRay(params.camera, params.settings, xy.x, xy.y, sampler);
   const bool dropped = !isTraceableCameraRay(ray);
   const PathState s = dropped ? PathState{} : startPath(cameraRayCone(params.camera, params.settings.height));
   const uint32_t bits = dropped ? 0u : passThroughBits(params.scene, sampler);
-  storePath(w, path, s, sampler.dimension());
-  w.droppedPaths[path] = dropped ? 1u : 0u;
+  storePathResult(w, path, s);
+  w.paths[4 * w.slots + path] = {word(s.cone.width), word(s.cone.spread), sampler.dimension(), 0u};
   storeRay(w, 0, path, ray, dropped ? kNoPath : path, bits);
 }
 
 extern "C" __global__ void __raygen__pathIntersect() {
   const uint32_t slot = queueSlot();
   const WavefrontBuffers& w = params.wavefront;
-  if (slot >= w.counts[w.current]) return;
+  if (slot >= w.counts[w.current].radiance) return;
   const QueuedRay q = loadRay(w, w.current, slot);
   if (q.path == kNoPath) return;
   Hit hit;
@@ -125,7 +142,7 @@ extern "C" __global__ void __raygen__pathIntersect() {
 extern "C" __global__ void __raygen__pathShade() {
   const uint32_t slot = queueSlot();
   const WavefrontBuffers& w = params.wavefront;
-  if (slot >= w.counts[w.current]) return;
+  if (slot >= w.counts[w.current].radiance) return;
   const QueuedRay q = loadRay(w, w.current, slot);
   if (q.path == kNoPath) return;
   uint32_t dimension = 0;
@@ -146,23 +163,27 @@ extern "C" __global__ void __raygen__pathShade() {
   uint32_t bits = 0;
   bool goesOn = shadeVertex<false>(params.scene, params.settings, s, unused, sampler, ray,
                                    hit.instanceId != kMissedInstance, hit, shadow, scatter);
-  if (goesOn && !isBlack(shadow.contribution)) {
-    const uint32_t k = appendSlot(&w.counts[2]);
-    const Vec3& c = shadow.contribution;
-    storeRayWords(w.shadows, w.slots, k, shadow.ray, q.path);
-    w.shadows[2 * w.slots + k] = {word(c.x), word(c.y), word(c.z), shadow.bits};
-  }
+  const bool shadows = goesOn && !isBlack(shadow.contribution);
   goesOn = goesOn && continuePath<false>(params.scene, params.settings, s, unused, sampler, scatter, ray, bits);
-  storePath(w, q.path, s, sampler.dimension());
+  if (goesOn)
+    storePath(w, q.path, s, sampler.dimension());
+  else
+    storePathResult(w, q.path, s);
   const uint32_t next = 1 - w.current;
-  if (goesOn) storeRay(w, next, appendSlot(&w.counts[next]), ray, q.path, bits);
+  const QueueSlots k = appendSlots(&w.counts[next], goesOn, shadows);
+  if (shadows) {
+    const Vec3& c = shadow.contribution;
+    storeRayWords(w.shadows, w.slots, k.shadow, shadow.ray, q.path);
+    w.shadows[2 * w.slots + k.shadow] = {word(c.x), word(c.y), word(c.z), shadow.bits};
+  }
+  if (goesOn) storeRay(w, next, k.ray, ray, q.path, bits);
 }
 
 // A path gets at most one shadow ray per bounce, so adding to its radiance needs no atomics.
 extern "C" __global__ void __raygen__pathShadow() {
   const uint32_t slot = queueSlot();
   const WavefrontBuffers& w = params.wavefront;
-  if (slot >= w.counts[2]) return;
+  if (slot >= w.counts[1 - w.current].shadow) return;
   uint32_t path = 0;
   const Ray ray = loadRayWords(w.shadows, w.slots, slot, path);
   const Words4 c = w.shadows[2 * w.slots + slot];
@@ -178,10 +199,9 @@ extern "C" __global__ void __raygen__pathFinish() {
   const uint32_t pixel = launchPixel();
   const uint32_t path = pixel - params.firstRow * params.settings.width;
   const Words4 r = params.wavefront.paths[path];
-  const bool dropped = params.wavefront.droppedPaths[path] != 0;
   const PixelTally tally = accumulatePixel<false>(params.film, pixel, params.firstSample, 1, [&](uint32_t) {
     PathResult result = droppedSample();
-    if (!dropped) {
+    if (r.w != 0u) {  // rays traced: not a dropped camera ray
       result.radiance = {real(r.x), real(r.y), real(r.z)};
       result.rays = r.w;
     }
