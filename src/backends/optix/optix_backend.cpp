@@ -63,9 +63,8 @@ std::vector<std::unique_ptr<Pipeline>> makePipelines(OptixDeviceContext context,
   pipelines.push_back(
       std::make_unique<Pipeline>(context, module, std::vector{RaygenProgram::RenderWithAovs, RaygenProgram::Record}));
   pipelines.push_back(std::make_unique<Pipeline>(context, module,
-                                                 std::vector{RaygenProgram::PathStart, RaygenProgram::PathIntersect,
-                                                             RaygenProgram::PathShade, RaygenProgram::PathShadow,
-                                                             RaygenProgram::PathFinish}));
+                                                 std::vector{RaygenProgram::PathStart, RaygenProgram::PathTrace,
+                                                             RaygenProgram::PathShade, RaygenProgram::PathFinish}));
   return pipelines;
 }
 

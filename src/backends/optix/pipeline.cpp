@@ -27,9 +27,8 @@ const char* raygenName(RaygenProgram program) {
     case RaygenProgram::RawTrace: return "__raygen__rawTrace";
     case RaygenProgram::RenderWithAovs: return "__raygen__renderWithAovs";
     case RaygenProgram::PathStart: return "__raygen__pathStart";
-    case RaygenProgram::PathIntersect: return "__raygen__pathIntersect";
+    case RaygenProgram::PathTrace: return "__raygen__pathTrace";
     case RaygenProgram::PathShade: return "__raygen__pathShade";
-    case RaygenProgram::PathShadow: return "__raygen__pathShadow";
     case RaygenProgram::PathFinish: return "__raygen__pathFinish";
   }
   throw std::logic_error("no such raygen program");

@@ -17,9 +17,8 @@ enum class RaygenProgram {
   RenderWithAovs,
   // The wavefront schedule's (backends/optix/wavefront_schedule.h)
   PathStart,
-  PathIntersect,
+  PathTrace,
   PathShade,
-  PathShadow,
   PathFinish,
 };
 

@@ -106,14 +106,16 @@ void WavefrontSchedule::enqueueSample(const Pipeline& pipeline, cudaStream_t str
   // is longer than bounce b - 1's radiance queue, whose length the host waits for while the GPU runs bounce b.
   // The GPU then never waits for the host between bounces; the launches' threads beyond their queue's length
   // return at once.
+  // Bounce b's trace launch also traces the shadow rays of bounce b - 1. None are left after the loop: it ends
+  // after a bounce that shaded no paths, or after the bounce at the maximum depth, whose paths end before next-event
+  // estimation (kernel/path_vertex.h's shadeVertex).
   uint32_t bound = uint32_t(slots);
   for (uint32_t bounce = 0; bounce <= maxDepth && bound > 0; ++bounce) {
     const uint32_t next = 1 - (bounce & 1u);
     checkCuda(cudaMemsetAsync(counts + next, 0, sizeof(QueueCounts), stream), "clearing the queues");
-    launch(RaygenProgram::PathIntersect, bounce, bound, 1);
+    launch(RaygenProgram::PathTrace, bounce, bound, 1);
     launch(RaygenProgram::PathShade, bounce, bound, 1);
     copyRadianceCount(bounce);
-    launch(RaygenProgram::PathShadow, bounce, bound, 1);
     if (bounce >= 1) bound = radianceCount(bounce);
   }
   launch(RaygenProgram::PathFinish, 0, width, rows);

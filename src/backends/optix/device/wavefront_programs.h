@@ -1,7 +1,8 @@
 #pragma once
 // The wavefront schedule's raygen programs (backends/optix/wavefront_schedule.h): one launch starts every pixel's
-// path, then per bounce one launch traces the queued radiance rays, one shades their hits (kernel/path_vertex.h)
-// and queues shadow rays and next rays, one traces the shadow rays; a last launch adds the paths to the film. The
+// path, then per bounce one launch traces the queued radiance rays (and the previous bounce's shadow rays), one
+// shades their hits (kernel/path_vertex.h) and queues shadow rays and next rays; a last launch adds the paths to
+// the film. The
 // queue launches may have more threads than their queue has entries (the host learns a queue's length a bounce
 // late): threads beyond its length return at once.
 // Only programs.cu includes this, after the launch parameters and the helpers it defines.
@@ -127,10 +128,25 @@ extern "C" __global__ void __raygen__pathStart() {
   storeRay(w, 0, path, ray, dropped ? kNoPath : path, bits);
 }
 
-extern "C" __global__ void __raygen__pathIntersect() {
+// Traces the shadow rays the previous bounce's shading queued, adding the light of those that reach it to their
+// paths (a path gets at most one shadow ray per bounce, so no atomics), then this bounce's radiance rays, keeping
+// their hits. One launch for both spares a launch per bounce.
+extern "C" __global__ void __raygen__pathTrace() {
   const uint32_t slot = queueSlot();
   const WavefrontBuffers& w = params.wavefront;
-  if (slot >= w.counts[w.current].radiance) return;
+  const QueueCounts counts = w.counts[w.current];
+  if (slot < counts.shadow) {
+    uint32_t path = 0;
+    const Ray ray = loadRayWords(w.shadows, w.slots, slot, path);
+    const Words4 c = w.shadows[2 * w.slots + slot];
+    if (!sceneTracer().occluded(ray, c.w)) {
+      Words4& radiance = w.paths[path];
+      radiance.x = word(real(radiance.x) + real(c.x));
+      radiance.y = word(real(radiance.y) + real(c.y));
+      radiance.z = word(real(radiance.z) + real(c.z));
+    }
+  }
+  if (slot >= counts.radiance) return;
   const QueuedRay q = loadRay(w, w.current, slot);
   if (q.path == kNoPath) return;
   Hit hit;
@@ -177,21 +193,6 @@ extern "C" __global__ void __raygen__pathShade() {
     w.shadows[2 * w.slots + k.shadow] = {word(c.x), word(c.y), word(c.z), shadow.bits};
   }
   if (goesOn) storeRay(w, next, k.ray, ray, q.path, bits);
-}
-
-// A path gets at most one shadow ray per bounce, so adding to its radiance needs no atomics.
-extern "C" __global__ void __raygen__pathShadow() {
-  const uint32_t slot = queueSlot();
-  const WavefrontBuffers& w = params.wavefront;
-  if (slot >= w.counts[1 - w.current].shadow) return;
-  uint32_t path = 0;
-  const Ray ray = loadRayWords(w.shadows, w.slots, slot, path);
-  const Words4 c = w.shadows[2 * w.slots + slot];
-  if (sceneTracer().occluded(ray, c.w)) return;
-  Words4& radiance = w.paths[path];
-  radiance.x = word(real(radiance.x) + real(c.x));
-  radiance.y = word(real(radiance.y) + real(c.y));
-  radiance.z = word(real(radiance.z) + real(c.z));
 }
 
 // One thread per pixel: the path's sample joins the film (kernel/film_accumulation.h), as __raygen__render adds its.
