@@ -62,9 +62,8 @@ std::vector<std::unique_ptr<Pipeline>> makePipelines(OptixDeviceContext context,
   pipelines.push_back(std::make_unique<Pipeline>(context, module, std::vector{RaygenProgram::RawTrace}));
   pipelines.push_back(
       std::make_unique<Pipeline>(context, module, std::vector{RaygenProgram::RenderWithAovs, RaygenProgram::Record}));
-  pipelines.push_back(std::make_unique<Pipeline>(context, module,
-                                                 std::vector{RaygenProgram::PathStart, RaygenProgram::PathTrace,
-                                                             RaygenProgram::PathShade, RaygenProgram::PathFinish}));
+  pipelines.push_back(std::make_unique<Pipeline>(
+      context, module, std::vector{RaygenProgram::PathTrace, RaygenProgram::PathShade, RaygenProgram::PathFinish}));
   return pipelines;
 }
 
@@ -150,7 +149,7 @@ struct OptixBackend::State {
   // One sample per pixel of `rows` rows from p.firstRow on through the wavefront schedule, timed as launch().
   LaunchResult launchWavefront(const LaunchParameters& p, uint32_t rows) {
     return timed(p, rows, [&] {
-      wavefront.enqueueSample(pipeline(RaygenProgram::PathStart), context.stream(), p, settings.width, rows,
+      wavefront.enqueueSample(pipeline(RaygenProgram::PathTrace), context.stream(), p, settings.width, rows,
                               settings.maxDepth);
     });
   }

@@ -26,7 +26,6 @@ const char* raygenName(RaygenProgram program) {
     case RaygenProgram::Record: return "__raygen__record";
     case RaygenProgram::RawTrace: return "__raygen__rawTrace";
     case RaygenProgram::RenderWithAovs: return "__raygen__renderWithAovs";
-    case RaygenProgram::PathStart: return "__raygen__pathStart";
     case RaygenProgram::PathTrace: return "__raygen__pathTrace";
     case RaygenProgram::PathShade: return "__raygen__pathShade";
     case RaygenProgram::PathFinish: return "__raygen__pathFinish";

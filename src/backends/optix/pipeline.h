@@ -16,7 +16,6 @@ enum class RaygenProgram {
   RawTrace,
   RenderWithAovs,
   // The wavefront schedule's (backends/optix/wavefront_schedule.h)
-  PathStart,
   PathTrace,
   PathShade,
   PathFinish,

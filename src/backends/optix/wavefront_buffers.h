@@ -19,10 +19,6 @@ constexpr uint32_t kRayPlanes = 2;
 // A queued shadow ray: origin + tMax, direction + path, contribution + pass-through bits.
 constexpr uint32_t kShadowPlanes = 3;
 
-// A queue slot's path where there is none (a camera ray that cannot be traced). Such a path keeps a ray count of 0
-// in its first plane, which no traced path has: that is how the last launch knows its sample was dropped.
-constexpr uint32_t kNoPath = 0xFFFFFFFFu;
-
 // The queues' lengths, in pairs that one 64-bit atomic advances together: pair q holds the length of radiance queue
 // q and of the shadow queue that the same shading launch filled.
 struct alignas(8) QueueCounts {
@@ -31,7 +27,9 @@ struct alignas(8) QueueCounts {
 };
 
 struct WavefrontBuffers {
-  Words4* paths = nullptr;               // kPathPlanes planes, one slot per pixel of the launch
+  // kPathPlanes planes, one slot per pixel of the launch. A path whose camera ray cannot be traced has a ray count
+  // of 0 in the first plane, which no traced path has: the last launch drops its sample.
+  Words4* paths = nullptr;
   Words4* rays[2] = {nullptr, nullptr};  // two radiance-ray queues, kRayPlanes planes each: read one, fill the other
   uint32_t* rayBits[2] = {nullptr, nullptr};
   Words4* hits = nullptr;  // per slot of the queue read: t, b1, b2, instance (kMissedInstance: none)
@@ -40,7 +38,7 @@ struct WavefrontBuffers {
   QueueCounts* counts = nullptr;  // two pairs (QueueCounts), 8-byte aligned
   uint32_t slots = 0;             // slots per plane (at least the launch's pixels)
   uint32_t current = 0;           // the radiance queue this launch reads
-  uint32_t cameraBounce = 0;      // 1: this launch's paths are at their camera ray (only planes 0 and 4 stored)
+  uint32_t cameraBounce = 0;      // 1: this launch's paths are at their camera ray (no queue: one thread a pixel)
 };
 
 }  // namespace candela::optix

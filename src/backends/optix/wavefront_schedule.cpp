@@ -101,7 +101,6 @@ void WavefrontSchedule::enqueueSample(const Pipeline& pipeline, cudaStream_t str
     return hostCounts_[copy];
   };
   checkCuda(cudaMemsetAsync(counts, 0, 2 * sizeof(QueueCounts), stream), "clearing the queues");
-  launch(RaygenProgram::PathStart, 0, width, rows);
   // Launch sizes: a path queues at most one radiance ray and one shadow ray per bounce, so no queue of bounce b
   // is longer than bounce b - 1's radiance queue, whose length the host waits for while the GPU runs bounce b.
   // The GPU then never waits for the host between bounces; the launches' threads beyond their queue's length
@@ -109,12 +108,14 @@ void WavefrontSchedule::enqueueSample(const Pipeline& pipeline, cudaStream_t str
   // Bounce b's trace launch also traces the shadow rays of bounce b - 1. None are left after the loop: it ends
   // after a bounce that shaded no paths, or after the bounce at the maximum depth, whose paths end before next-event
   // estimation (kernel/path_vertex.h's shadeVertex).
+  // The camera bounce's launches cover the pixels (two-dimensional, no queue).
   uint32_t bound = uint32_t(slots);
   for (uint32_t bounce = 0; bounce <= maxDepth && bound > 0; ++bounce) {
     const uint32_t next = 1 - (bounce & 1u);
     checkCuda(cudaMemsetAsync(counts + next, 0, sizeof(QueueCounts), stream), "clearing the queues");
-    launch(RaygenProgram::PathTrace, bounce, bound, 1);
-    launch(RaygenProgram::PathShade, bounce, bound, 1);
+    const uint32_t launchWidth = bounce == 0 ? width : bound, launchHeight = bounce == 0 ? rows : 1;
+    launch(RaygenProgram::PathTrace, bounce, launchWidth, launchHeight);
+    launch(RaygenProgram::PathShade, bounce, launchWidth, launchHeight);
     copyRadianceCount(bounce);
     if (bounce >= 1) bound = radianceCount(bounce);
   }

@@ -1,8 +1,7 @@
 #pragma once
-// The wavefront schedule's raygen programs (backends/optix/wavefront_schedule.h): one launch starts every pixel's
-// path, then per bounce one launch traces the queued radiance rays (and the previous bounce's shadow rays), one
-// shades their hits (kernel/path_vertex.h) and queues shadow rays and next rays; a last launch adds the paths to
-// the film. The
+// The wavefront schedule's raygen programs (backends/optix/wavefront_schedule.h): per bounce one launch traces the
+// radiance rays (the camera's, or those queued; and the previous bounce's shadow rays), one shades their hits
+// (kernel/path_vertex.h) and queues shadow rays and next rays; a last launch adds the paths to the film. The
 // queue launches may have more threads than their queue has entries (the host learns a queue's length a bounce
 // late): threads beyond its length return at once.
 // Only programs.cu includes this, after the launch parameters and the helpers it defines.
@@ -44,10 +43,8 @@ __device__ PathSampler pathSampler(uint32_t path) {
 
 __device__ PathState loadPath(const WavefrontBuffers& w, uint32_t path, uint32_t& dimension) {
   const uint32_t n = w.slots;
-  const Words4 e = w.paths[4 * n + path];
-  dimension = e.z;
-  if (w.cameraBounce) return startPath({real(e.x), real(e.y)});
-  const Words4 a = w.paths[path], b = w.paths[n + path], c = w.paths[2 * n + path], d = w.paths[3 * n + path];
+  const Words4 a = w.paths[path], b = w.paths[n + path], c = w.paths[2 * n + path], d = w.paths[3 * n + path],
+               e = w.paths[4 * n + path];
   PathState s;
   s.radiance = {real(a.x), real(a.y), real(a.z)};
   s.rays = a.w;
@@ -58,6 +55,7 @@ __device__ PathState loadPath(const WavefrontBuffers& w, uint32_t path, uint32_t
   s.lastNormal = {real(d.x), real(d.y), real(d.z)};
   s.depth = d.w;
   s.cone = {real(e.x), real(e.y)};
+  dimension = e.z;
   s.specularBounce = e.w;
   return s;
 }
@@ -107,64 +105,78 @@ __device__ void storeRay(const WavefrontBuffers& w, uint32_t queue, uint32_t slo
   if (params.scene.hasCutouts) w.rayBits[queue][slot] = bits;
 }
 
-}  // namespace
-
-// One thread per pixel of the launch: the camera ray of the pixel's sample params.firstSample, queued in queue 0 at
-// the pixel's slot (a camera ray that cannot be traced gets no path, and its sample is dropped). A path at its
-// camera ray is all defaults (startPath) but for its footprint and the sampler's dimension: only the planes of its
-// result and of those are stored.
-extern "C" __global__ void __raygen__pathStart() {
+// The camera bounce's launches are two-dimensional, one thread per pixel, as the one-thread schedule's (OptiX
+// maps neighbouring pixels to a warp, whose camera rays then traverse together), and each makes the pixel's camera
+// ray (sample params.firstSample) from its numbers again rather than queueing it. The path's slot is its pixel's
+// in the band of rows the launch covers. Returns false where the ray cannot be traced: the sample is dropped.
+__device__ bool cameraRay(uint32_t& path, PathSampler& sampler, Ray& ray, uint32_t& bits) {
   const uint2 xy = launchPixelXY();
-  const uint32_t path = launchPixel() - params.firstRow * params.settings.width;
-  const WavefrontBuffers& w = params.wavefront;
-  if (path == 0) w.counts[0].radiance = optixGetLaunchDimensions().x * optixGetLaunchDimensions().y;
-  PathSampler sampler = pathSampler(path);
-  const Ray ray = pixelSampleRay(params.camera, params.settings, xy.x, xy.y, sampler);
-  const bool dropped = !isTraceableCameraRay(ray);
-  const PathState s = dropped ? PathState{} : startPath(cameraRayCone(params.camera, params.settings.height));
-  const uint32_t bits = dropped ? 0u : passThroughBits(params.scene, sampler);
-  storePathResult(w, path, s);
-  w.paths[4 * w.slots + path] = {word(s.cone.width), word(s.cone.spread), sampler.dimension(), 0u};
-  storeRay(w, 0, path, ray, dropped ? kNoPath : path, bits);
+  path = launchPixel() - params.firstRow * params.settings.width;
+  sampler = pathSampler(path);
+  ray = pixelSampleRay(params.camera, params.settings, xy.x, xy.y, sampler);
+  if (!isTraceableCameraRay(ray)) return false;
+  bits = passThroughBits(params.scene, sampler);
+  return true;
 }
+
+}  // namespace
 
 // Traces the shadow rays the previous bounce's shading queued, adding the light of those that reach it to their
 // paths (a path gets at most one shadow ray per bounce, so no atomics), then this bounce's radiance rays, keeping
 // their hits. One launch for both spares a launch per bounce.
 extern "C" __global__ void __raygen__pathTrace() {
-  const uint32_t slot = queueSlot();
   const WavefrontBuffers& w = params.wavefront;
-  const QueueCounts counts = w.counts[w.current];
-  if (slot < counts.shadow) {
-    uint32_t path = 0;
-    const Ray ray = loadRayWords(w.shadows, w.slots, slot, path);
-    const Words4 c = w.shadows[2 * w.slots + slot];
-    if (!sceneTracer().occluded(ray, c.w)) {
-      Words4& radiance = w.paths[path];
-      radiance.x = word(real(radiance.x) + real(c.x));
-      radiance.y = word(real(radiance.y) + real(c.y));
-      radiance.z = word(real(radiance.z) + real(c.z));
+  uint32_t slot = queueSlot();
+  QueuedRay q;
+  if (w.cameraBounce) {
+    PathSampler sampler = pathSampler(0);
+    if (!cameraRay(q.path, sampler, q.ray, q.bits)) return;
+    slot = q.path;
+  } else {
+    const QueueCounts counts = w.counts[w.current];
+    if (slot < counts.shadow) {
+      uint32_t path = 0;
+      const Ray ray = loadRayWords(w.shadows, w.slots, slot, path);
+      const Words4 c = w.shadows[2 * w.slots + slot];
+      if (!sceneTracer().occluded(ray, c.w)) {
+        Words4& radiance = w.paths[path];
+        radiance.x = word(real(radiance.x) + real(c.x));
+        radiance.y = word(real(radiance.y) + real(c.y));
+        radiance.z = word(real(radiance.z) + real(c.z));
+      }
     }
+    if (slot >= counts.radiance) return;
+    q = loadRay(w, w.current, slot);
   }
-  if (slot >= counts.radiance) return;
-  const QueuedRay q = loadRay(w, w.current, slot);
-  if (q.path == kNoPath) return;
   Hit hit;
   if (!sceneTracer().intersect(q.ray, hit, q.bits)) hit.instanceId = kMissedInstance;
   w.hits[slot] = {word(hit.t), word(hit.b1), word(hit.b2), hit.instanceId};
   w.hitPrimitives[slot] = hit.primitiveId;
 }
 
+// Shades the hits of the radiance rays the trace launch traced: the path's state is default at its camera ray
+// (startPath), and an ended path stores only what the last launch reads.
 extern "C" __global__ void __raygen__pathShade() {
-  const uint32_t slot = queueSlot();
   const WavefrontBuffers& w = params.wavefront;
-  if (slot >= w.counts[w.current].radiance) return;
-  const QueuedRay q = loadRay(w, w.current, slot);
-  if (q.path == kNoPath) return;
-  uint32_t dimension = 0;
-  PathState s = loadPath(w, q.path, dimension);
-  PathSampler sampler = pathSampler(q.path);
-  sampler.setDimension(dimension);
+  uint32_t slot = queueSlot();
+  QueuedRay q;
+  PathSampler sampler = pathSampler(0);
+  PathState s;
+  if (w.cameraBounce) {
+    if (!cameraRay(q.path, sampler, q.ray, q.bits)) {
+      storePathResult(w, q.path, PathState{});  // no rays traced: the last launch drops the sample
+      return;
+    }
+    slot = q.path;
+    s = startPath(cameraRayCone(params.camera, params.settings.height));
+  } else {
+    if (slot >= w.counts[w.current].radiance) return;
+    q.ray = loadRayWords(w.rays[w.current], w.slots, slot, q.path);
+    uint32_t dimension = 0;
+    s = loadPath(w, q.path, dimension);
+    sampler = pathSampler(q.path);
+    sampler.setDimension(dimension);
+  }
   const Words4 h = w.hits[slot];
   Hit hit;
   hit.t = real(h.x);
