@@ -15,6 +15,27 @@ struct PathResult {
   PathAovs aovs;      // filled only by the kWithAovs instantiations
 };
 
+// The rest of a path, vertex by vertex (kernel/path_vertex.h) until it ends, from `ray` (with pass-through bits
+// `bits`) on, with `s`, `a` and `sampler` as the path left them. With kTraced the ray has been traced already:
+// `found` tells whether it found `hit`. (Without, the loop is the one tracePath always ran: the template
+// parameter keeps the one-thread schedule's compiled code as it was.)
+template <bool kWithAovs, bool kTraced, class Tracer>
+CANDELA_FN void followPath(const SceneView& scene, const Tracer& tracer, const RenderSettings& settings, PathState& s,
+                           PathAovState& a, PathSampler& sampler, Ray ray, uint32_t bits, bool found = false,
+                           Hit hit = {}) {
+  for (bool first = true;; first = false) {
+    if (!kTraced || !first) {
+      hit = Hit{};
+      found = tracer.intersect(ray, hit, bits);
+    }
+    ShadowQuery shadow;
+    VertexScatter scatter;
+    if (!shadeVertex<kWithAovs>(scene, settings, s, a, sampler, ray, found, hit, shadow, scatter)) return;
+    if (!isBlack(shadow.contribution) && !tracer.occluded(shadow.ray, shadow.bits)) s.radiance += shadow.contribution;
+    if (!continuePath<kWithAovs>(scene, settings, s, a, sampler, scatter, ray, bits)) return;
+  }
+}
+
 // Unidirectional path tracing with next-event estimation and BSDF sampling combined by MIS (power heuristic),
 // Russian roulette after `rouletteDepth` bounces, one vertex at a time (kernel/path_vertex.h). `Tracer` answers
 // the two ray queries:
@@ -30,16 +51,7 @@ CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ra
                                 const RenderSettings& settings, RayCone cone = {}) {
   PathState s = startPath(cone);
   PathAovState a;
-  uint32_t bits = passThroughBits(scene, sampler);
-  for (;;) {
-    Hit hit;
-    const bool found = tracer.intersect(ray, hit, bits);
-    ShadowQuery shadow;
-    VertexScatter scatter;
-    if (!shadeVertex<kWithAovs>(scene, settings, s, a, sampler, ray, found, hit, shadow, scatter)) break;
-    if (!isBlack(shadow.contribution) && !tracer.occluded(shadow.ray, shadow.bits)) s.radiance += shadow.contribution;
-    if (!continuePath<kWithAovs>(scene, settings, s, a, sampler, scatter, ray, bits)) break;
-  }
+  followPath<kWithAovs, false>(scene, tracer, settings, s, a, sampler, ray, passThroughBits(scene, sampler));
   PathResult result;
   result.radiance = s.radiance;
   result.rays = s.rays;

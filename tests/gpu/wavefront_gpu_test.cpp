@@ -1,6 +1,8 @@
 // The wavefront schedule (backends/optix/wavefront_schedule.h) against the megakernel: the same samples, up to the
 // rounding of fused multiply-adds, for scenes that exercise every part of the path state (delta bounces and their
-// ray cones, cut-outs' pass-through bits, an environment), in whole images and in bands of rows; and auto's choice.
+// ray cones, cut-outs' pass-through bits, an environment), in whole images and in bands of rows, with the paths
+// left after the camera bounce shaded a bounce at a time or followed to their ends in one launch; and auto's
+// choice.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,10 +18,16 @@ struct Render {
   FrameStats stats;
 };
 
-Render renderWith(PathSchedule schedule, const Scene& scene, uint32_t spp, uint32_t bands = 1) {
+// The wavefront's ways with the paths left after the camera bounce (OptixBackend::setWavefrontTailPaths): these
+// test images are small enough for the default to take the tail launch at once.
+enum class Tail : uint32_t { Never = 0, AtOnce = 0xFFFFFFFFu };
+
+Render renderWith(PathSchedule schedule, const Scene& scene, uint32_t spp, uint32_t bands = 1,
+                  Tail tail = Tail::AtOnce) {
   RenderSettings settings = test::squareImage(96, 7);
   auto backend = test::makeBackend<OptixBackend>(scene, settings);
   backend->setPathSchedule(schedule);
+  backend->setWavefrontTailPaths(uint32_t(tail));
   Render r;
   for (uint32_t band = 0; band < bands; ++band) {
     backend->setNextSampleIndex(0);  // every band takes the same samples, as each GPU's does under MultiGpuBackend
@@ -52,33 +60,38 @@ void expectSameSamples(const Render& megakernel, const Render& wavefront) {
   EXPECT_NEAR(double(wavefront.stats.rays) / double(megakernel.stats.rays), 1.0, 1e-3);
 }
 
-TEST(WavefrontSchedule, TakesTheMegakernelsSamplesInTheCornellBox) {
-  expectSameSamples(renderWith(PathSchedule::Megakernel, makeCornellBox(), 8),
-                    renderWith(PathSchedule::Wavefront, makeCornellBox(), 8));
-}
-
-TEST(WavefrontSchedule, TakesTheMegakernelsSamplesThroughMirrorsAndGlass) {
-  expectSameSamples(renderWith(PathSchedule::Megakernel, makeCornellSpheres(), 8),
-                    renderWith(PathSchedule::Wavefront, makeCornellSpheres(), 8));
-  expectSameSamples(renderWith(PathSchedule::Megakernel, makeMirrorCorridor(), 8),
-                    renderWith(PathSchedule::Wavefront, makeMirrorCorridor(), 8));
-}
-
-TEST(WavefrontSchedule, TakesTheMegakernelsSamplesThroughCutouts) {
-  for (test::ScreenCoverage coverage : {test::ScreenCoverage::CheckerMask, test::ScreenCoverage::HalfBlend}) {
-    const Scene scene = test::makeCutoutScreen(coverage);
-    expectSameSamples(renderWith(PathSchedule::Megakernel, scene, 8), renderWith(PathSchedule::Wavefront, scene, 8));
+void expectWavefrontTakesTheMegakernelsSamples(const Scene& scene) {
+  const Render megakernel = renderWith(PathSchedule::Megakernel, scene, 8);
+  for (Tail tail : {Tail::Never, Tail::AtOnce}) {
+    SCOPED_TRACE(tail == Tail::Never ? "a launch per bounce" : "the tail launch after the camera bounce");
+    expectSameSamples(megakernel, renderWith(PathSchedule::Wavefront, scene, 8, 1, tail));
   }
 }
 
+TEST(WavefrontSchedule, TakesTheMegakernelsSamplesInTheCornellBox) {
+  expectWavefrontTakesTheMegakernelsSamples(makeCornellBox());
+}
+
+TEST(WavefrontSchedule, TakesTheMegakernelsSamplesThroughMirrorsAndGlass) {
+  expectWavefrontTakesTheMegakernelsSamples(makeCornellSpheres());
+  expectWavefrontTakesTheMegakernelsSamples(makeMirrorCorridor());
+}
+
+TEST(WavefrontSchedule, TakesTheMegakernelsSamplesThroughCutouts) {
+  for (test::ScreenCoverage coverage : {test::ScreenCoverage::CheckerMask, test::ScreenCoverage::HalfBlend})
+    expectWavefrontTakesTheMegakernelsSamples(test::makeCutoutScreen(coverage));
+}
+
 TEST(WavefrontSchedule, BandsOfRowsGiveTheWholeImagesSamples) {
-  const Render whole = renderWith(PathSchedule::Wavefront, makeCornellSpheres(), 4);
-  const Render banded = renderWith(PathSchedule::Wavefront, makeCornellSpheres(), 4, 3);
-  EXPECT_EQ(whole.stats.rays, banded.stats.rays);
-  for (size_t i = 0; i < whole.image.pixels.size(); ++i) {
-    ASSERT_EQ(whole.image.pixels[i].x, banded.image.pixels[i].x) << "pixel " << i;
-    ASSERT_EQ(whole.image.pixels[i].y, banded.image.pixels[i].y) << "pixel " << i;
-    ASSERT_EQ(whole.image.pixels[i].z, banded.image.pixels[i].z) << "pixel " << i;
+  for (Tail tail : {Tail::Never, Tail::AtOnce}) {
+    const Render whole = renderWith(PathSchedule::Wavefront, makeCornellSpheres(), 4, 1, tail);
+    const Render banded = renderWith(PathSchedule::Wavefront, makeCornellSpheres(), 4, 3, tail);
+    EXPECT_EQ(whole.stats.rays, banded.stats.rays);
+    for (size_t i = 0; i < whole.image.pixels.size(); ++i) {
+      ASSERT_EQ(whole.image.pixels[i].x, banded.image.pixels[i].x) << "pixel " << i;
+      ASSERT_EQ(whole.image.pixels[i].y, banded.image.pixels[i].y) << "pixel " << i;
+      ASSERT_EQ(whole.image.pixels[i].z, banded.image.pixels[i].z) << "pixel " << i;
+    }
   }
 }
 

@@ -62,8 +62,9 @@ std::vector<std::unique_ptr<Pipeline>> makePipelines(OptixDeviceContext context,
   pipelines.push_back(std::make_unique<Pipeline>(context, module, std::vector{RaygenProgram::RawTrace}));
   pipelines.push_back(
       std::make_unique<Pipeline>(context, module, std::vector{RaygenProgram::RenderWithAovs, RaygenProgram::Record}));
-  pipelines.push_back(std::make_unique<Pipeline>(
-      context, module, std::vector{RaygenProgram::PathTrace, RaygenProgram::PathShade, RaygenProgram::PathFinish}));
+  pipelines.push_back(std::make_unique<Pipeline>(context, module,
+                                                 std::vector{RaygenProgram::PathTrace, RaygenProgram::PathShade,
+                                                             RaygenProgram::PathTail, RaygenProgram::PathFinish}));
   return pipelines;
 }
 
@@ -344,6 +345,8 @@ FrameStats OptixBackend::renderRows(uint32_t samplesPerPixel, uint32_t firstRow,
 }
 
 void OptixBackend::setPathSchedule(PathSchedule schedule) { state_->schedule.request(schedule); }
+
+void OptixBackend::setWavefrontTailPaths(uint32_t paths) { state_->wavefront.setTailPaths(paths); }
 
 std::string OptixBackend::pathScheduleDescription() const { return state_->schedule.describe(); }
 

@@ -39,6 +39,9 @@ class OptixBackend final : public Backend, public DeviceImage {
   // How renders without AOVs organise their launches (backends/path_schedule.h; renders with AOVs always use the
   // megakernel). The default is CANDELA_GPU_SCHEDULE's, else auto.
   void setPathSchedule(PathSchedule schedule);
+  // The wavefront follows the paths left to their ends in one launch once at most `paths` are left (0: never);
+  // the default suits the device (backends/optix/wavefront_schedule.h). For tests and measurements.
+  void setWavefrontTailPaths(uint32_t paths);
   // The schedule in use and, for auto, why.
   std::string pathScheduleDescription() const;
   uint32_t accumulatedSamples() const override;

@@ -28,6 +28,7 @@ const char* raygenName(RaygenProgram program) {
     case RaygenProgram::RenderWithAovs: return "__raygen__renderWithAovs";
     case RaygenProgram::PathTrace: return "__raygen__pathTrace";
     case RaygenProgram::PathShade: return "__raygen__pathShade";
+    case RaygenProgram::PathTail: return "__raygen__pathTail";
     case RaygenProgram::PathFinish: return "__raygen__pathFinish";
   }
   throw std::logic_error("no such raygen program");

@@ -18,6 +18,7 @@ enum class RaygenProgram {
   // The wavefront schedule's (backends/optix/wavefront_schedule.h)
   PathTrace,
   PathShade,
+  PathTail,
   PathFinish,
 };
 

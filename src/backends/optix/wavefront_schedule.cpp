@@ -8,6 +8,11 @@
 namespace candela::optix {
 
 WavefrontSchedule::WavefrontSchedule() {
+  int device = 0, multiprocessors = 0;
+  checkCuda(cudaGetDevice(&device), "finding the current CUDA device");
+  checkCuda(cudaDeviceGetAttribute(&multiprocessors, cudaDevAttrMultiProcessorCount, device),
+            "counting the device's multiprocessors");
+  tailPaths_ = uint32_t(multiprocessors) * 1024u;
   checkCuda(cudaMallocHost(&hostCounts_, kCountCopies * sizeof(uint32_t)), "allocating the wavefront's queue lengths");
   for (cudaEvent_t& copied : countsCopied_)
     checkCuda(cudaEventCreateWithFlags(&copied, cudaEventDisableTiming), "creating an event");
@@ -106,8 +111,8 @@ void WavefrontSchedule::enqueueSample(const Pipeline& pipeline, cudaStream_t str
   // The GPU then never waits for the host between bounces; the launches' threads beyond their queue's length
   // return at once.
   // Bounce b's trace launch also traces the shadow rays of bounce b - 1. None are left after the loop: it ends
-  // after a bounce that shaded no paths, or after the bounce at the maximum depth, whose paths end before next-event
-  // estimation (kernel/path_vertex.h's shadeVertex).
+  // after a bounce that shaded no paths, after the bounce at the maximum depth, whose paths end before next-event
+  // estimation (kernel/path_vertex.h's shadeVertex), or with the launch that follows the paths left to their ends.
   // The camera bounce's launches cover the pixels (two-dimensional, no queue).
   uint32_t bound = uint32_t(slots);
   for (uint32_t bounce = 0; bounce <= maxDepth && bound > 0; ++bounce) {
@@ -115,6 +120,10 @@ void WavefrontSchedule::enqueueSample(const Pipeline& pipeline, cudaStream_t str
     checkCuda(cudaMemsetAsync(counts + next, 0, sizeof(QueueCounts), stream), "clearing the queues");
     const uint32_t launchWidth = bounce == 0 ? width : bound, launchHeight = bounce == 0 ? rows : 1;
     launch(RaygenProgram::PathTrace, bounce, launchWidth, launchHeight);
+    if (bounce > 0 && bound <= tailPaths_) {
+      launch(RaygenProgram::PathTail, bounce, launchWidth, launchHeight);
+      break;
+    }
     launch(RaygenProgram::PathShade, bounce, launchWidth, launchHeight);
     copyRadianceCount(bounce);
     if (bounce >= 1) bound = radianceCount(bounce);

@@ -28,6 +28,10 @@ class WavefrontSchedule {
   // device memory; then none are held.
   void reserve(size_t slots);
 
+  // Once a bounce's launches are sized for at most `paths` paths (the previous bounce's queue length), one launch
+  // follows the paths left to their ends (0: never; the default is tailPaths_'s).
+  void setTailPaths(uint32_t paths) { tailPaths_ = paths; }
+
   // Enqueues one sample per pixel (sample p.firstSample) of `rows` rows from p.firstRow on, up to `maxDepth`
   // bounces, on `stream`, with the programs of `pipeline`; the pixels' counters are left in p.counters as the
   // one-thread schedule leaves them. Waits once per bounce for a queue's length, a bounce behind the device, which
@@ -40,6 +44,11 @@ class WavefrontSchedule {
   void release();
 
   size_t slots_ = 0;  // paths the buffers hold: the stride of their planes
+  // Launches sized for at most this many paths follow the paths left to their ends in one launch
+  // (__raygen__pathTail): by default half the current device's threads (1024 a multiprocessor), 135K paths on an
+  // H200. Measured there (docs/performance.md): the Cornell box gained from it where the launch size was 94K
+  // (52K paths left), and lost where it was 176K (94K left).
+  uint32_t tailPaths_ = 0;
   DeviceBuffer paths_, rays_[2], rayBits_[2], hits_, hitPrimitives_, shadows_, counts_;
   // The launch parameters of the camera bounce, and of the later bounces reading radiance queue 1 and 0.
   static constexpr uint32_t kParameterSets = 3;

@@ -105,6 +105,28 @@ __device__ void storeRay(const WavefrontBuffers& w, uint32_t queue, uint32_t slo
   if (params.scene.hasCutouts) w.rayBits[queue][slot] = bits;
 }
 
+// The path of the ray in `slot` of the queue this launch reads, the ray, and the sampler where the path left it.
+__device__ PathState loadQueuedPath(const WavefrontBuffers& w, uint32_t slot, QueuedRay& q, PathSampler& sampler) {
+  q.ray = loadRayWords(w.rays[w.current], w.slots, slot, q.path);
+  uint32_t dimension = 0;
+  const PathState s = loadPath(w, q.path, dimension);
+  sampler = pathSampler(q.path);
+  sampler.setDimension(dimension);
+  return s;
+}
+
+// What the trace launch found for the ray in `slot` (instanceId kMissedInstance: nothing).
+__device__ Hit loadHit(const WavefrontBuffers& w, uint32_t slot) {
+  const Words4 h = w.hits[slot];
+  Hit hit;
+  hit.t = real(h.x);
+  hit.b1 = real(h.y);
+  hit.b2 = real(h.z);
+  hit.instanceId = h.w;
+  hit.primitiveId = w.hitPrimitives[slot];
+  return hit;
+}
+
 // The camera bounce's launches are two-dimensional, one thread per pixel, as the one-thread schedule's (OptiX
 // maps neighbouring pixels to a warp, whose camera rays then traverse together), and each makes the pixel's camera
 // ray (sample params.firstSample) from its numbers again rather than queueing it. The path's slot is its pixel's
@@ -171,19 +193,9 @@ extern "C" __global__ void __raygen__pathShade() {
     s = startPath(cameraRayCone(params.camera, params.settings.height));
   } else {
     if (slot >= w.counts[w.current].radiance) return;
-    q.ray = loadRayWords(w.rays[w.current], w.slots, slot, q.path);
-    uint32_t dimension = 0;
-    s = loadPath(w, q.path, dimension);
-    sampler = pathSampler(q.path);
-    sampler.setDimension(dimension);
+    s = loadQueuedPath(w, slot, q, sampler);
   }
-  const Words4 h = w.hits[slot];
-  Hit hit;
-  hit.t = real(h.x);
-  hit.b1 = real(h.y);
-  hit.b2 = real(h.z);
-  hit.instanceId = h.w;
-  hit.primitiveId = w.hitPrimitives[slot];
+  const Hit hit = loadHit(w, slot);
   PathAovState unused;
   ShadowQuery shadow;
   VertexScatter scatter;
@@ -205,6 +217,24 @@ extern "C" __global__ void __raygen__pathShade() {
     w.shadows[2 * w.slots + k.shadow] = {word(c.x), word(c.y), word(c.z), shadow.bits};
   }
   if (goesOn) storeRay(w, next, k.ray, ray, q.path, bits);
+}
+
+// Follows the paths of the queue this launch reads to their ends, one thread a path, as the one-thread schedule
+// does (kernel/integrator.h), from the hits the trace launch found. Once few paths are left, the launches of a
+// bounce take about the latency of the slowest ray's traversal and leave the GPU mostly idle; one launch for all
+// the bounces left overlaps them.
+extern "C" __global__ void __raygen__pathTail() {
+  const WavefrontBuffers& w = params.wavefront;
+  const uint32_t slot = queueSlot();
+  if (slot >= w.counts[w.current].radiance) return;
+  QueuedRay q;
+  PathSampler sampler = pathSampler(0);
+  PathState s = loadQueuedPath(w, slot, q, sampler);
+  const Hit hit = loadHit(w, slot);
+  PathAovState unused;
+  followPath<false, true>(params.scene, sceneTracer(), params.settings, s, unused, sampler, q.ray, 0u,
+                          hit.instanceId != kMissedInstance, hit);
+  storePathResult(w, q.path, s);
 }
 
 // One thread per pixel: the path's sample joins the film (kernel/film_accumulation.h), as __raygen__render adds its.
