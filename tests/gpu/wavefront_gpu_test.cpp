@@ -22,9 +22,10 @@ struct Render {
 // test images are small enough for the default to take the tail launch at once.
 enum class Tail : uint32_t { Never = 0, AtOnce = 0xFFFFFFFFu };
 
-Render renderWith(PathSchedule schedule, const Scene& scene, uint32_t spp, uint32_t bands = 1,
-                  Tail tail = Tail::AtOnce) {
+Render renderWith(PathSchedule schedule, const Scene& scene, uint32_t spp, uint32_t bands = 1, Tail tail = Tail::AtOnce,
+                  uint32_t maxDepth = RenderSettings{}.maxDepth) {
   RenderSettings settings = test::squareImage(96, 7);
+  settings.maxDepth = maxDepth;
   auto backend = test::makeBackend<OptixBackend>(scene, settings);
   backend->setPathSchedule(schedule);
   backend->setWavefrontTailPaths(uint32_t(tail));
@@ -60,11 +61,11 @@ void expectSameSamples(const Render& megakernel, const Render& wavefront) {
   EXPECT_NEAR(double(wavefront.stats.rays) / double(megakernel.stats.rays), 1.0, 1e-3);
 }
 
-void expectWavefrontTakesTheMegakernelsSamples(const Scene& scene) {
-  const Render megakernel = renderWith(PathSchedule::Megakernel, scene, 8);
+void expectWavefrontTakesTheMegakernelsSamples(const Scene& scene, uint32_t maxDepth = RenderSettings{}.maxDepth) {
+  const Render megakernel = renderWith(PathSchedule::Megakernel, scene, 8, 1, Tail::AtOnce, maxDepth);
   for (Tail tail : {Tail::Never, Tail::AtOnce}) {
     SCOPED_TRACE(tail == Tail::Never ? "a launch per bounce" : "the tail launch after the camera bounce");
-    expectSameSamples(megakernel, renderWith(PathSchedule::Wavefront, scene, 8, 1, tail));
+    expectSameSamples(megakernel, renderWith(PathSchedule::Wavefront, scene, 8, 1, tail, maxDepth));
   }
 }
 
@@ -80,6 +81,15 @@ TEST(WavefrontSchedule, TakesTheMegakernelsSamplesThroughMirrorsAndGlass) {
 TEST(WavefrontSchedule, TakesTheMegakernelsSamplesThroughCutouts) {
   for (test::ScreenCoverage coverage : {test::ScreenCoverage::CheckerMask, test::ScreenCoverage::HalfBlend})
     expectWavefrontTakesTheMegakernelsSamples(test::makeCutoutScreen(coverage));
+}
+
+// A thin lens draws two more numbers for each camera ray, which the camera bounce's two launches must both draw;
+// at depth 1 (direct light only) every path ends in the first shading or tail launch.
+TEST(WavefrontSchedule, TakesTheMegakernelsSamplesThroughALensAndAtDepthOne) {
+  Scene lens = makeCornellBox();
+  lens.camera.apertureRadius = 0.02f;  // 2 cm, the box's front plane in focus
+  expectWavefrontTakesTheMegakernelsSamples(lens);
+  expectWavefrontTakesTheMegakernelsSamples(makeCornellBox(), 1);
 }
 
 TEST(WavefrontSchedule, BandsOfRowsGiveTheWholeImagesSamples) {
