@@ -9,3 +9,11 @@
 #endif
 
 #define CANDELA_FN CANDELA_HD CANDELA_INLINE
+
+// Inlined on the host too, where the compiler would otherwise weigh it: for a function whose only job is to give a
+// loop one source for two callers, so that each caller compiles as if the loop were written in it.
+#if defined(__CUDACC__)
+#define CANDELA_FN_ALWAYS_INLINE CANDELA_HD __forceinline__
+#else
+#define CANDELA_FN_ALWAYS_INLINE inline __attribute__((always_inline))
+#endif

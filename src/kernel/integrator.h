@@ -20,9 +20,9 @@ struct PathResult {
 // `found` tells whether it found `hit`. (Without, the loop is the one tracePath always ran: the template
 // parameter keeps the one-thread schedule's compiled code as it was.)
 template <bool kWithAovs, bool kTraced, class Tracer>
-CANDELA_FN void followPath(const SceneView& scene, const Tracer& tracer, const RenderSettings& settings, PathState& s,
-                           PathAovState& a, PathSampler& sampler, Ray ray, uint32_t bits, bool found = false,
-                           Hit hit = {}) {
+CANDELA_FN_ALWAYS_INLINE void followPath(const SceneView& scene, const Tracer& tracer, const RenderSettings& settings,
+                                         PathState& s, PathAovState& a, PathSampler& sampler, Ray ray, uint32_t bits,
+                                         bool found = false, Hit hit = {}) {
   for (bool first = true;; first = false) {
     if (!kTraced || !first) {
       hit = Hit{};
