@@ -2,9 +2,10 @@
 // The path tracer as a wavefront (Laine, Karras and Aila 2013; pbrt-v4's GPU renderer): instead of one thread
 // following its path from ray to ray, with every kind of shading inlined around the trace calls, each bounce is
 // two launches over queues of paths: trace the radiance rays (and the previous bounce's shadow rays), then shade
-// the hits (kernel/path_vertex.h) and queue the shadow rays and next rays. The queues are compacted, so every
-// launch's warps are full, and each launch's program is small. Paths and queues live in device memory between launches
-// (backends/optix/wavefront_buffers.h), about 220 bytes a pixel. The samples are those of the one-thread schedule:
+// the hits (kernel/path_vertex.h) and queue the shadow rays and next rays; once few paths are left, one launch
+// follows them to their ends. The queues are compacted, so every launch's warps are full, and each launch's program
+// is small. Paths and queues live in device memory between launches (backends/optix/wavefront_buffers.h), about
+// 220 bytes a pixel. The samples are those of the one-thread schedule:
 // the same numbers drawn in the same order.
 #include <cuda_runtime.h>
 

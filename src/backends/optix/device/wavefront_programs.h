@@ -2,9 +2,8 @@
 // The wavefront schedule's raygen programs (backends/optix/wavefront_schedule.h): per bounce one launch traces the
 // radiance rays (the camera's, or those queued; and the previous bounce's shadow rays), one shades their hits
 // (kernel/path_vertex.h) and queues shadow rays and next rays; once few paths are left, one launch follows them to
-// their ends instead; a last launch adds the paths to the film. The
-// queue launches may have more threads than their queue has entries (the host learns a queue's length a bounce
-// late): threads beyond its length return at once.
+// their ends instead; a last launch adds the paths to the film. The queue launches may have more threads than their
+// queue has entries (the host learns a queue's length a bounce late): threads beyond its length return at once.
 // Only programs.cu includes this, after the launch parameters and the helpers it defines.
 
 namespace {
