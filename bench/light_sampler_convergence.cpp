@@ -19,7 +19,7 @@
 
 #include "app/scene_loading.h"
 #include "convergence.h"
-#include "image/image_io.h"
+#include "io/images/image_io.h"
 #include "many_lights_scene.h"
 
 namespace candela {

@@ -20,7 +20,7 @@
 #include "backends/cpu/cpu_backend.h"
 #include "convergence.h"
 #include "image/filters/temporal.h"
-#include "image/image_io.h"
+#include "io/images/image_io.h"
 
 namespace candela {
 namespace {

@@ -7,10 +7,10 @@
 
 #include "app/backend_factory.h"
 #include "app/schedule/render_team.h"
-#include "core/atomic_file.h"
-#include "image/aov_io.h"
+#include "io/atomic_file.h"
+#include "io/images/aov_io.h"
 #include "scene/animation_player.h"
-#include "scene/loaders/load_diagnostics.h"
+#include "io/load_diagnostics.h"
 
 namespace candela {
 

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "app/render_job.h"
-#include "image/image_io.h"
+#include "io/images/image_io.h"
 
 namespace candela {
 

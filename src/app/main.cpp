@@ -24,12 +24,12 @@
 #include "app/scene_loading.h"
 #include "app/serve/serve.h"
 #include "app/viewer/viewer.h"
-#include "core/atomic_file.h"
-#include "image/aov_io.h"
-#include "image/image_io.h"
+#include "io/atomic_file.h"
+#include "io/images/aov_io.h"
+#include "io/images/image_io.h"
 #include "scene/builtin_scenes.h"
-#include "scene/loaders/file_bytes.h"
-#include "scene/loaders/load_diagnostics.h"
+#include "io/file_bytes.h"
+#include "io/load_diagnostics.h"
 #if CANDELA_HAS_MPI
 #include "app/distributed/distributed_render.h"
 #endif

@@ -2,7 +2,7 @@
 #include <string>
 
 #include "scene/cache/scene_cache.h"
-#include "scene/loaders/path_confinement.h"
+#include "io/path_confinement.h"
 #include "scene/loaders/texture_limits.h"
 #include "scene/scene.h"
 

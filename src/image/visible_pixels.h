@@ -1,6 +1,6 @@
 #pragma once
 #include "image/image.h"
-#include "image/image_io.h"
+#include "image/display_settings.h"
 
 namespace candela {
 

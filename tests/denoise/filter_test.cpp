@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <random>
 
-#include "image/aov_io.h"
+#include "io/images/aov_io.h"
 #include "image/filters/atrous.h"
 #include "image/filters/atrous_kernel.h"
 #include "image/filters/fast_exp.h"

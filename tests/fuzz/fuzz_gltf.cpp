@@ -6,7 +6,7 @@
 #include <string>
 
 #include "posed_clips.h"
-#include "scene/loaders/gltf_loader.h"
+#include "scene/loaders/gltf/gltf_loader.h"
 #include "scene/scene_repair.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

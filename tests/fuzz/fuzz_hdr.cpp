@@ -4,8 +4,8 @@
 #include <cstdint>
 
 #include "scene/environment_distribution.h"
-#include "scene/loaders/image_decoding.h"
-#include "scene/loaders/load_diagnostics.h"
+#include "io/images/image_decoding.h"
+#include "io/load_diagnostics.h"
 #include "texture_decoding_target.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

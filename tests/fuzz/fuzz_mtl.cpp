@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "private_folder.h"
-#include "scene/loaders/mtl_materials.h"
+#include "scene/loaders/obj/mtl_materials.h"
 #include "scene/loaders/texture_table.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

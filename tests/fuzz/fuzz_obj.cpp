@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-#include "scene/loaders/obj_loader.h"
+#include "scene/loaders/obj/obj_loader.h"
 #include "scene/scene_repair.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

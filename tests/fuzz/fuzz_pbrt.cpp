@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "scene/loaders/pbrt_loader.h"
+#include "scene/loaders/pbrt/pbrt_loader.h"
 #include "scene/scene_repair.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -18,7 +18,7 @@
 
 #include "posed_clips.h"
 #include "private_folder.h"
-#include "scene/loaders/gltf_loader.h"
+#include "scene/loaders/gltf/gltf_loader.h"
 #include "scene/loaders/scene_file.h"
 #include "scene/scene_repair.h"
 

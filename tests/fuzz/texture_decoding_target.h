@@ -4,10 +4,10 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "scene/loaders/image_decoding.h"
-#include "scene/loaders/jpeg_decoding.h"
-#include "scene/loaders/load_diagnostics.h"
-#include "scene/loaders/png_decoding.h"
+#include "io/images/image_decoding.h"
+#include "io/images/jpeg_decoding.h"
+#include "io/load_diagnostics.h"
+#include "io/images/png_decoding.h"
 
 namespace candela::fuzz {
 

@@ -7,7 +7,7 @@
 
 #include "gpu_render.h"
 #include "scene/animation_player.h"
-#include "scene/loaders/gltf_loader.h"
+#include "scene/loaders/gltf/gltf_loader.h"
 #include "scene/mesh_builders.h"
 #include "scene/scene_test_files.h"
 #include "support/animated_gltf.h"

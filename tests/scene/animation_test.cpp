@@ -14,7 +14,7 @@
 #include "scene/animation_player.h"
 #include "scene/cache/scene_cache.h"
 #include "scene/gltf_cache_round_trip.h"
-#include "scene/loaders/gltf_loader.h"
+#include "scene/loaders/gltf/gltf_loader.h"
 #include "scene/loaders/scene_file.h"
 #include "scene/scene_test_files.h"
 #include "support/animated_gltf.h"

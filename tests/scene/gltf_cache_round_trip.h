@@ -3,7 +3,7 @@
 #include <utility>
 
 #include "scene/cache/scene_cache.h"
-#include "scene/loaders/gltf_loader.h"
+#include "scene/loaders/gltf/gltf_loader.h"
 #include "scene/scene_test_files.h"
 
 namespace candela::test {

@@ -10,9 +10,9 @@
 #include <cstring>
 #include <tuple>
 
-#include "scene/loaders/gltf_accessors.h"
-#include "scene/loaders/gltf_draco.h"
-#include "scene/loaders/gltf_loader.h"
+#include "scene/loaders/gltf/gltf_accessors.h"
+#include "scene/loaders/gltf/gltf_draco.h"
+#include "scene/loaders/gltf/gltf_loader.h"
 #include "support/glb_file.h"
 
 namespace candela {

@@ -7,10 +7,10 @@
 #include <set>
 
 #include "kernel/bsdf/ggx.h"
-#include "scene/loaders/file_bytes.h"
-#include "scene/loaders/gltf_draco.h"
-#include "scene/loaders/gltf_loader.h"
-#include "scene/loaders/gltf_specular_glossiness.h"
+#include "io/file_bytes.h"
+#include "scene/loaders/gltf/gltf_draco.h"
+#include "scene/loaders/gltf/gltf_loader.h"
+#include "scene/loaders/gltf/gltf_specular_glossiness.h"
 #include "scene/scene_test_files.h"
 #include "scene/webp_test_image.h"
 #include "support/glb_file.h"

@@ -9,9 +9,9 @@
 #include <string>
 
 #include "app/scene_loading.h"
-#include "scene/loaders/gltf_loader.h"
+#include "scene/loaders/gltf/gltf_loader.h"
 #include "scene/loaders/normal_generation.h"
-#include "scene/loaders/obj_loader.h"
+#include "scene/loaders/obj/obj_loader.h"
 #include "scene/scene_repair.h"
 #include "scene/scene_test_files.h"
 

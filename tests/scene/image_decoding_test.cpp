@@ -19,11 +19,11 @@
 #include <iterator>
 
 #include "app/scene_loading.h"
-#include "scene/loaders/area_downscaler.h"
-#include "scene/loaders/exr_decoding.h"
-#include "scene/loaders/image_decoding.h"
-#include "scene/loaders/load_diagnostics.h"
-#include "scene/loaders/obj_loader.h"
+#include "io/images/area_downscaler.h"
+#include "io/images/exr_decoding.h"
+#include "io/images/image_decoding.h"
+#include "io/load_diagnostics.h"
+#include "scene/loaders/obj/obj_loader.h"
 #include "scene/loaders/texture_limits.h"
 #include "scene_test_files.h"
 #include "webp_test_image.h"

@@ -7,11 +7,11 @@
 #include <filesystem>
 
 #include "scene/cache/scene_cache.h"
-#include "scene/loaders/file_bytes.h"
-#include "scene/loaders/gltf_loader.h"
-#include "scene/loaders/image_decoding.h"
-#include "scene/loaders/obj_loader.h"
-#include "scene/loaders/obj_text_source.h"
+#include "io/file_bytes.h"
+#include "scene/loaders/gltf/gltf_loader.h"
+#include "io/images/image_decoding.h"
+#include "scene/loaders/obj/obj_loader.h"
+#include "scene/loaders/obj/obj_text_source.h"
 #include "scene/loaders/scene_file.h"
 #include "scene/scene_test_files.h"
 

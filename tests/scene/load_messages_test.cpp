@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "app/scene_loading.h"
-#include "scene/loaders/load_diagnostics.h"
-#include "scene/loaders/obj_loader.h"
+#include "io/load_diagnostics.h"
+#include "scene/loaders/obj/obj_loader.h"
 #include "scene/loaders/scene_file.h"
 #include "scene/scene_test_files.h"
 

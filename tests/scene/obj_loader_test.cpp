@@ -5,7 +5,7 @@
 #include <cmath>
 #include <set>
 
-#include "scene/loaders/obj_loader.h"
+#include "scene/loaders/obj/obj_loader.h"
 #include "scene/scene_test_files.h"
 
 namespace candela {

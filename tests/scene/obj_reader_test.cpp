@@ -6,9 +6,9 @@
 #include <cstring>
 #include <map>
 
-#include "scene/loaders/obj_geometry_reader.h"
-#include "scene/loaders/obj_loader.h"
-#include "scene/loaders/obj_numbers.h"
+#include "scene/loaders/obj/obj_geometry_reader.h"
+#include "scene/loaders/obj/obj_loader.h"
+#include "scene/loaders/obj/obj_numbers.h"
 #include "scene/scene_test_files.h"
 
 namespace candela {

@@ -1,4 +1,4 @@
-#include "scene/loaders/pbrt_loader.h"
+#include "scene/loaders/pbrt/pbrt_loader.h"
 
 #include <gtest/gtest.h>
 #include <stb/stb_image_write.h>
@@ -12,11 +12,11 @@
 #include "app/render_job.h"
 #include "app/scene_loading.h"
 #include "scene/builtin_scenes.h"
-#include "scene/loaders/load_diagnostics.h"
-#include "scene/loaders/pbrt_lights.h"
-#include "scene/loaders/pbrt_spectra.h"
-#include "scene/loaders/pbrt_spectrum_files.h"
-#include "scene/loaders/pbrt_tokenizer.h"
+#include "io/load_diagnostics.h"
+#include "scene/loaders/pbrt/pbrt_lights.h"
+#include "scene/loaders/pbrt/pbrt_spectra.h"
+#include "scene/loaders/pbrt/pbrt_spectrum_files.h"
+#include "scene/loaders/pbrt/pbrt_tokenizer.h"
 #include "scene/loaders/texture_limits.h"
 #include "scene/scene_test_files.h"
 

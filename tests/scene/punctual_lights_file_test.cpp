@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "scene/loaders/obj_loader.h"
+#include "scene/loaders/obj/obj_loader.h"
 #include "scene/loaders/scene_file.h"
 #include "scene/scene_repair.h"
 #include "scene/scene_test_files.h"

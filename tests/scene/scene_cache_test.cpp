@@ -20,7 +20,7 @@
 #include "scene/cache/binary_stream.h"
 #include "scene/cache/cache_key.h"
 #include "scene/cache/scene_cache.h"
-#include "scene/loaders/obj_loader.h"
+#include "scene/loaders/obj/obj_loader.h"
 #include "scene/scene_test_files.h"
 
 namespace candela {

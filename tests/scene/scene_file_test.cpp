@@ -6,9 +6,9 @@
 #include "app/scene_loading.h"
 #include "kernel/camera.h"
 #include "scene/cache/scene_cache.h"
-#include "scene/loaders/file_bytes.h"
-#include "scene/loaders/gltf_loader.h"
-#include "scene/loaders/obj_loader.h"
+#include "io/file_bytes.h"
+#include "scene/loaders/gltf/gltf_loader.h"
+#include "scene/loaders/obj/obj_loader.h"
 #include "scene/loaders/scene_file.h"
 #include "scene/scene_test_files.h"
 

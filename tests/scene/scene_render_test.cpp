@@ -5,9 +5,9 @@
 #include "app/render_job.h"
 #include "app/scene_loading.h"
 #include "scene/environment_distribution.h"
-#include "scene/loaders/file_bytes.h"
-#include "scene/loaders/image_decoding.h"
-#include "scene/loaders/load_diagnostics.h"
+#include "io/file_bytes.h"
+#include "io/images/image_decoding.h"
+#include "io/load_diagnostics.h"
 #include "scene/scene_test_files.h"
 
 namespace candela {

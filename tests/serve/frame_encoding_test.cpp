@@ -4,7 +4,7 @@
 #include <utility>
 
 #include "app/serve/frame_encoding.h"
-#include "scene/loaders/image_decoding.h"
+#include "io/images/image_decoding.h"
 
 namespace candela {
 namespace {

@@ -11,9 +11,9 @@
 #include <fstream>
 #include <iterator>
 
-#include "core/atomic_file.h"
-#include "image/aov_io.h"
-#include "image/image_io.h"
+#include "io/atomic_file.h"
+#include "io/images/aov_io.h"
+#include "io/images/image_io.h"
 
 namespace candela {
 namespace {

@@ -10,11 +10,11 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "core/atomic_file.h"
-#include "image/exr_memory_stream.h"
+#include "io/atomic_file.h"
+#include "io/images/exr_memory_stream.h"
 #include "kernel/film.h"
-#include "scene/loaders/file_bytes.h"
-#include "scene/loaders/load_diagnostics.h"
+#include "io/file_bytes.h"
+#include "io/load_diagnostics.h"
 
 namespace candela {
 

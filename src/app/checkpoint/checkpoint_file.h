@@ -3,7 +3,7 @@
 #include <string>
 
 #include "backends/film_sums.h"
-#include "image/image_io.h"
+#include "io/images/image_io.h"
 
 namespace candela {
 
@@ -17,7 +17,7 @@ struct Checkpoint {
   FilmSums film;
 };
 
-// Replaces `path` atomically (core/atomic_file.h); throws WriteError naming it.
+// Replaces `path` atomically (io/atomic_file.h); throws WriteError naming it.
 void writeCheckpoint(const std::string& path, const Checkpoint& checkpoint);
 
 // Reads a checkpoint written for a render whose identity is `identity`, whose film is width x height with AOV

@@ -1,6 +1,6 @@
 #pragma once
 #include "app/render_job.h"
-#include "image/image_io.h"
+#include "io/images/image_io.h"
 
 namespace candela {
 

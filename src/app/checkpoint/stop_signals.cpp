@@ -2,7 +2,7 @@
 
 #include <csignal>
 
-#include "core/atomic_file.h"
+#include "io/atomic_file.h"
 
 namespace candela {
 

@@ -4,7 +4,7 @@ namespace candela {
 
 // While it lives, the first SIGINT, SIGTERM or SIGUSR1 asks the render to stop at its next sample boundary (so
 // that it can write its checkpoint) instead of ending the process; a second one ends the process as before,
-// through the handlers that remove uncommitted temporary files (core/atomic_file.h). SIGUSR1 is the one mpirun
+// through the handlers that remove uncommitted temporary files (io/atomic_file.h). SIGUSR1 is the one mpirun
 // forwards to the ranks (it ends the job on SIGTERM) and the one Slurm's --signal sends before a job's time
 // limit. One at a time per process.
 class StopOnSignals {

@@ -5,7 +5,7 @@
 
 #include "app/checkpoint/stop_signals.h"
 #include "app/distributed/mpi_team.h"
-#include "scene/loaders/load_diagnostics.h"
+#include "io/load_diagnostics.h"
 
 namespace candela {
 

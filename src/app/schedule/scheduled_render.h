@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "app/schedule/sample_schedule.h"
-#include "image/image_io.h"
+#include "io/images/image_io.h"
 
 namespace candela {
 

@@ -7,7 +7,7 @@
 #include "core/path_sampler.h"
 #include "kernel/render_settings.h"
 #include "scene/cache/scene_cache.h"
-#include "scene/loaders/path_confinement.h"
+#include "io/path_confinement.h"
 
 namespace candela {
 

@@ -1,7 +1,7 @@
 #pragma once
 #include "image/filters/atrous.h"
 #include "image/filters/bilateral.h"
-#include "image/image_io.h"
+#include "io/images/image_io.h"
 
 namespace candela {
 

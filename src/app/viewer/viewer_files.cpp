@@ -7,10 +7,10 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "core/atomic_file.h"
+#include "io/atomic_file.h"
 #include "core/file_extension.h"
 #include "image/filters/bilateral.h"
-#include "image/image_io.h"
+#include "io/images/image_io.h"
 
 namespace candela {
 

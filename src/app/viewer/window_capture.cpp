@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "app/viewer/gl.h"
-#include "image/image_io.h"
+#include "io/images/image_io.h"
 
 namespace candela {
 

@@ -15,7 +15,7 @@
 #include <memory>
 #include <stdexcept>
 
-#include "core/atomic_file.h"
+#include "io/atomic_file.h"
 #include "scene/cache/cache_key.h"
 #include "scene/cache/cached_scene_validation.h"
 #include "scene/cache/scene_serialization.h"

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/loaders/load_diagnostics.h"
+#include "io/load_diagnostics.h"
 #include "scene/scene.h"
 
 namespace candela {

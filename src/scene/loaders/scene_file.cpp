@@ -10,9 +10,9 @@
 #include <map>
 #include <tuple>
 
-#include "scene/loaders/file_bytes.h"
-#include "scene/loaders/image_decoding.h"
-#include "scene/loaders/path_confinement.h"
+#include "io/file_bytes.h"
+#include "io/images/image_decoding.h"
+#include "io/path_confinement.h"
 #include "scene/scene_repair.h"
 #include "scene/transform.h"
 

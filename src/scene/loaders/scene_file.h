@@ -2,8 +2,8 @@
 #include <functional>
 #include <string>
 
-#include "scene/loaders/load_diagnostics.h"
-#include "scene/loaders/path_confinement.h"
+#include "io/load_diagnostics.h"
+#include "io/path_confinement.h"
 #include "scene/loaders/shared_model_assets.h"
 #include "scene/scene.h"
 

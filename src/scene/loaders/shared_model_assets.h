@@ -1,5 +1,5 @@
 #pragma once
-#include "scene/loaders/obj_material_libraries.h"
+#include "scene/loaders/obj/obj_material_libraries.h"
 #include "scene/loaders/texture_table.h"
 
 namespace candela {

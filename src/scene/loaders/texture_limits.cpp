@@ -6,7 +6,7 @@
 #include <type_traits>
 
 #include "kernel/texture.h"
-#include "scene/loaders/area_downscaler.h"
+#include "io/images/area_downscaler.h"
 
 namespace candela {
 

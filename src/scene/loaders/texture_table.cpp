@@ -4,8 +4,8 @@
 
 #include <optional>
 
-#include "scene/loaders/file_bytes.h"
-#include "scene/loaders/image_decoding.h"
+#include "io/file_bytes.h"
+#include "io/images/image_decoding.h"
 #include "scene/loaders/texture_limits.h"
 
 namespace candela {

@@ -5,8 +5,8 @@
 #include <tuple>
 #include <vector>
 
-#include "scene/loaders/load_diagnostics.h"
-#include "scene/loaders/path_confinement.h"
+#include "io/load_diagnostics.h"
+#include "io/path_confinement.h"
 #include "scene/scene.h"
 
 namespace candela {

@@ -1,0 +1,16 @@
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "image/texture.h"
+
+namespace candela {
+
+// Decodes an OpenEXR image held in memory to float RGB (luminance-chroma and grey images converted by OpenEXR),
+// with NaN, infinite and negative values made 0. Any data window is accepted whose size fits the loader's
+// limits, wherever it lies: at most `maxPixels` pixels, plausible for the file's size, and within
+// kMaxDecodedImageBytes, all checked on the header before any pixel is read. Throws LoadError naming `name`.
+Texture decodeExr(const std::string& name, const uint8_t* data, size_t size, uint64_t maxPixels = UINT64_MAX);
+
+}  // namespace candela

@@ -1,0 +1,544 @@
+#include "scene/loaders/pbrt/pbrt_loader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/mat3x3.hpp>
+#include <map>
+#include <optional>
+#include <vector>
+
+#include "io/file_bytes.h"
+#include "scene/loaders/pbrt/pbrt_camera.h"
+#include "scene/loaders/pbrt/pbrt_context.h"
+#include "scene/loaders/pbrt/pbrt_film.h"
+#include "scene/loaders/pbrt/pbrt_lights.h"
+#include "scene/loaders/pbrt/pbrt_materials.h"
+#include "scene/loaders/pbrt/pbrt_parameters.h"
+#include "scene/loaders/pbrt/pbrt_shapes.h"
+#include "scene/loaders/pbrt/pbrt_spectrum_files.h"
+#include "scene/loaders/pbrt/pbrt_textures.h"
+#include "scene/loaders/pbrt/pbrt_tokenizer.h"
+#include "scene/loaders/pbrt/pbrt_transforms.h"
+#include "scene/scene_repair.h"
+#include "scene/transform.h"
+
+namespace candela {
+
+namespace {
+
+// Bounds on what a scene may ask for, so that a hostile file cannot recurse or multiply without end.
+constexpr int kMaxIncludeDepth = 32;
+constexpr size_t kMaxIncludedFiles = 4096;
+constexpr size_t kMaxAttributeDepth = 4096;
+// Triangles the loader makes beyond those the files hold (tessellated quadrics, subdivision): a line of text
+// that asks for a sphere yields thousands, so they are bounded apart from the file sizes.
+constexpr size_t kMaxGeneratedTriangles = size_t(1) << 25;
+
+struct GraphicsState {
+  glm::mat4 ctm{1.0f};
+  bool reverseOrientation = false;
+  std::optional<PbrtMaterial> material;  // none: pbrt's default diffuse, or the material named below
+  std::string materialName;              // a NamedMaterial not made yet: pbrt-v4 resolves names once the scene is read
+  std::optional<PbrtAreaLight> areaLight;
+};
+
+// A shape of an object definition (ObjectBegin): its mesh and its transform when the object was defined.
+struct ObjectShape {
+  uint32_t meshId;
+  glm::mat4 worldFromShape;
+};
+
+// The texture and value of a shape's `alpha`, which candela keeps in the material.
+struct AlphaSpec {
+  float value = 1.0f;
+  int32_t texture = kNoTexture;
+};
+
+struct PendingShape {
+  uint32_t meshId;
+  std::string materialName;
+  std::vector<Vec3> emission;
+  AlphaSpec alpha;
+  size_t triangles;
+  std::string file;
+  size_t line;
+};
+
+class PbrtReader {
+ public:
+  PbrtReader(const std::string& file, LoadWarnings& warnings, OutsidePaths outside)
+      : context_(file, warnings, outside), textures_(context_), materials_(context_, textures_) {}
+
+  void readFile(const std::string& path, int depth) {
+    if (depth > kMaxIncludeDepth) failLoad(path, "included more than " + std::to_string(kMaxIncludeDepth) + " deep");
+    if (++includedFiles_ > kMaxIncludedFiles)
+      failLoad(path, "the scene includes more than " + std::to_string(kMaxIncludedFiles) + " files");
+    PbrtTokenizer tokens(path, readFileBytes(path));
+    readDirectives(tokens, depth);
+  }
+
+  void readText(const std::string& name, const std::string& text) {
+    textOnly_ = true;
+    context_.filesAllowed = false;
+    PbrtTokenizer tokens(name, text);
+    readDirectives(tokens, 0);
+  }
+
+  Scene finish() {
+    if (!worldBegun_) chooseWorldMirror();
+    assignPendingMaterials();
+    Scene& scene = context_.scene;
+    PbrtFilm film = readPbrtFilm(film_ ? &*film_ : nullptr, camera_ ? &*camera_ : nullptr, context_);
+    scene.renderHints.width = film.width;
+    scene.renderHints.height = film.height;
+    scaleSceneLights(scene, film.imagingRatio);
+    if (camera_) {
+      scene.camera = makePbrtCamera(cameraType_, *camera_, cameraFromWorld_, film, mirrorX_, context_);
+      context_.warnUnused("camera '" + cameraType_ + "'", *camera_);
+    } else {
+      PbrtParameters none;
+      none.file = context_.mainFile;
+      scene.camera = makePbrtCamera("perspective", none, glm::mat4(1.0f), film, mirrorX_, context_);
+    }
+    if (samplerSamples_) scene.renderHints.samplesPerPixel = *samplerSamples_;
+    scene.renderHints.maxDepth = maxDepth_;
+    return std::move(scene);
+  }
+
+ private:
+  [[noreturn]] void fail(const PbrtTokenizer& tokens, size_t line, const std::string& what) {
+    failLoad(tokens.file(), line, what);
+  }
+
+  float readNumber(PbrtTokenizer& tokens, const std::string& directive) {
+    PbrtToken t = tokens.next();
+    char* end = nullptr;
+    float v = t.kind == PbrtToken::Kind::Word ? std::strtof(t.text.c_str(), &end) : 0.0f;
+    if (t.kind != PbrtToken::Kind::Word || t.text.empty() || *end != '\0' || !std::isfinite(v))
+      fail(tokens, t.line, directive + " expects numbers, found '" + t.text + "'");
+    return v;
+  }
+
+  // `count` numbers, bare or in brackets.
+  std::vector<double> readNumbers(PbrtTokenizer& tokens, size_t count, const std::string& directive) {
+    bool bracketed = tokens.peek().kind == PbrtToken::Kind::OpenBracket;
+    if (bracketed) tokens.next();
+    std::vector<double> values;
+    for (size_t i = 0; i < count; ++i) values.push_back(readNumber(tokens, directive));
+    if (bracketed && tokens.next().kind != PbrtToken::Kind::CloseBracket)
+      fail(tokens, tokens.line(), directive + " expects " + std::to_string(count) + " numbers in brackets");
+    return values;
+  }
+
+  // The parameters of a directive that may name spectrum files (materials, textures, lights), with those read.
+  PbrtParameters readParametersWithSpectra(PbrtTokenizer& tokens) {
+    PbrtParameters params = parsePbrtParameters(tokens);
+    readPbrtSpectrumFiles(params, context_);
+    return params;
+  }
+
+  std::string readString(PbrtTokenizer& tokens, const std::string& directive) {
+    PbrtToken t = tokens.next();
+    if (t.kind != PbrtToken::Kind::String) fail(tokens, t.line, directive + " expects a quoted string");
+    return t.text;
+  }
+
+  void applyTransform(const glm::mat4& m, PbrtTokenizer& tokens, size_t line, bool replace) {
+    if (!isFiniteMatrix(m)) fail(tokens, line, "transform is not finite");
+    if (activeEndOnly_) return;  // pbrt's end-of-shutter transform: candela renders the start of the shutter
+    state_.ctm = replace ? m : state_.ctm * m;
+  }
+
+  void chooseWorldMirror() {
+    mirrorX_ = pbrtWorldNeedsMirror(camera_ ? cameraFromWorld_ : glm::mat4(1.0f));
+    worldFromPbrt_ = pbrtScale({mirrorX_ ? -1.0f : 1.0f, 1.0f, 1.0f});
+  }
+
+  void readDirectives(PbrtTokenizer& tokens, int depth) {
+    for (;;) {
+      PbrtToken t = tokens.next();
+      if (t.kind == PbrtToken::Kind::End) return;
+      if (t.kind != PbrtToken::Kind::Word) fail(tokens, t.line, "expected a directive, found '" + t.text + "'");
+      const std::string& d = t.text;
+      if (d == "Identity") {
+        applyTransform(glm::mat4(1.0f), tokens, t.line, true);
+      } else if (d == "Translate") {
+        auto v = readNumbers(tokens, 3, d);
+        applyTransform(pbrtTranslate({float(v[0]), float(v[1]), float(v[2])}), tokens, t.line, false);
+      } else if (d == "Scale") {
+        auto v = readNumbers(tokens, 3, d);
+        applyTransform(pbrtScale({float(v[0]), float(v[1]), float(v[2])}), tokens, t.line, false);
+      } else if (d == "Rotate") {
+        auto v = readNumbers(tokens, 4, d);
+        applyTransform(pbrtRotate(float(v[0]), {float(v[1]), float(v[2]), float(v[3])}), tokens, t.line, false);
+      } else if (d == "LookAt") {
+        auto v = readNumbers(tokens, 9, d);
+        applyTransform(pbrtLookAt({float(v[0]), float(v[1]), float(v[2])}, {float(v[3]), float(v[4]), float(v[5])},
+                                  {float(v[6]), float(v[7]), float(v[8])}),
+                       tokens, t.line, false);
+      } else if (d == "Transform" || d == "ConcatTransform") {
+        auto v = readNumbers(tokens, 16, d);
+        applyTransform(pbrtMatrix(v.data()), tokens, t.line, d == "Transform");
+      } else if (d == "CoordinateSystem") {
+        namedFrames_[readString(tokens, d)] = state_.ctm;
+      } else if (d == "CoordSysTransform") {
+        std::string name = readString(tokens, d);
+        auto found = namedFrames_.find(name);
+        if (found == namedFrames_.end())
+          context_.warn("coordinate system " + name, tokens.file() + ":" + std::to_string(t.line) +
+                                                         ": unknown coordinate system '" + name + "' ignored");
+        else
+          state_.ctm = found->second;
+      } else if (d == "ActiveTransform") {
+        PbrtToken which = tokens.next();
+        activeEndOnly_ = which.text == "EndTime";
+        if (which.text != "All") context_.warn("motion", "motion blur is not rendered: the start transforms are used");
+      } else if (d == "TransformTimes") {
+        readNumbers(tokens, 2, d);
+      } else if (d == "ReverseOrientation") {
+        state_.reverseOrientation = !state_.reverseOrientation;
+      } else if (d == "AttributeBegin" || d == "TransformBegin") {
+        if (stack_.size() >= kMaxAttributeDepth) fail(tokens, t.line, d + " nested too deep");
+        stack_.push_back({state_, d == "TransformBegin"});
+      } else if (d == "AttributeEnd" || d == "TransformEnd") {
+        if (stack_.empty()) fail(tokens, t.line, d + " without a matching begin");
+        auto [saved, transformOnly] = stack_.back();
+        stack_.pop_back();
+        if (transformOnly)
+          state_.ctm = saved.ctm;
+        else
+          state_ = saved;
+      } else if (d == "Attribute") {
+        readString(tokens, d);
+        parsePbrtParameters(tokens);
+        context_.warn("Attribute", "'Attribute' defaults for shapes, lights and materials are not applied");
+      } else if (d == "Option" || d == "ColorSpace" || d == "Accelerator") {
+        if (d == "Option") {
+          PbrtToken name = tokens.next();
+          if (name.kind == PbrtToken::Kind::String && name.text.find(' ') != std::string::npos) tokens.next();
+        } else {
+          std::string name = readString(tokens, d);
+          if (d == "ColorSpace" && name != "srgb")
+            context_.warn("color space", "colour space '" + name + "' is read as sRGB");
+          parsePbrtParameters(tokens);
+        }
+      } else if (d == "Camera") {
+        cameraType_ = readString(tokens, d);
+        camera_ = parsePbrtParameters(tokens);
+        cameraFromWorld_ = state_.ctm;
+        // As in every pbrt, "camera" names the camera's frame in the world: what is placed in it after
+        // CoordSysTransform "camera" moves with the camera (a headlight).
+        glm::mat4 worldFromCamera = glm::inverse(state_.ctm);
+        if (!isFiniteMatrix(worldFromCamera)) fail(tokens, t.line, "the camera transform is not invertible");
+        namedFrames_["camera"] = worldFromCamera;
+      } else if (d == "Film") {
+        std::string type = readString(tokens, d);
+        film_ = parsePbrtParameters(tokens);
+        if (type == "spectral") context_.warn("spectral film", "the spectral film is rendered as an RGB film");
+      } else if (d == "Sampler") {
+        readString(tokens, d);
+        PbrtParameters p = parsePbrtParameters(tokens);
+        int samples = p.getInt("pixelsamples", 16);
+        if (samples > 0) samplerSamples_ = uint32_t(std::min(samples, 1 << 24));
+      } else if (d == "Integrator") {
+        std::string type = readString(tokens, d);
+        PbrtParameters p = parsePbrtParameters(tokens);
+        maxDepth_ = uint32_t(std::clamp(p.getInt("maxdepth", 5), 1, 1024));
+        if (type != "path" && type != "volpath")
+          context_.warn("integrator", "integrator '" + type + "' is rendered with candela's path tracer");
+      } else if (d == "PixelFilter") {
+        readString(tokens, d);
+        parsePbrtParameters(tokens);
+        context_.warn("pixel filter", "the pixel filter is noted but candela's own is used (docs/pbrt-v4.md)");
+      } else if (d == "MakeNamedMedium") {
+        readString(tokens, d);
+        parsePbrtParameters(tokens);
+        context_.warn("media", "participating media are ignored");
+      } else if (d == "MediumInterface") {
+        readString(tokens, d);
+        if (tokens.peek().kind == PbrtToken::Kind::String) tokens.next();
+        context_.warn("media", "participating media are ignored");
+      } else if (d == "WorldBegin") {
+        state_.ctm = glm::mat4(1.0f);
+        namedFrames_["world"] = state_.ctm;
+        if (!worldBegun_) chooseWorldMirror();
+        worldBegun_ = true;
+      } else if (d == "WorldEnd") {
+        // pbrt-v3's end of the scene; pbrt-v4 reads to the end of the file.
+      } else if (d == "Include" || d == "Import") {
+        std::string file = readString(tokens, d);
+        if (textOnly_) fail(tokens, t.line, d + " of '" + file + "' in a scene read from memory");
+        readFile(context_.resolve(file, tokens.file(), t.line), depth + 1);
+      } else if (d == "Texture") {
+        std::string name = readString(tokens, d), valueType = readString(tokens, d), className = readString(tokens, d);
+        PbrtParameters params = readParametersWithSpectra(tokens);
+        textures_.define(name, valueType, className, params);
+        context_.warnUnused("texture '" + className + "'", params);
+      } else if (d == "Material") {
+        std::string type = readString(tokens, d);
+        PbrtParameters params = readParametersWithSpectra(tokens);
+        state_.material = materials_.make(type, params);
+        state_.materialName.clear();
+        context_.warnUnused("material '" + type + "'", params);
+      } else if (d == "MakeNamedMaterial") {
+        std::string name = readString(tokens, d);
+        PbrtParameters params = readParametersWithSpectra(tokens);
+        materials_.defineNamed(name, params);
+        context_.warnUnused("material '" + params.getString("type", "") + "'", params);
+      } else if (d == "NamedMaterial") {
+        std::string name = readString(tokens, d);
+        state_.material.reset();
+        state_.materialName = name;
+        if (materials_.isNamed(name)) state_.material = materials_.named(name, tokens.file(), t.line);
+      } else if (d == "LightSource") {
+        std::string type = readString(tokens, d);
+        PbrtParameters params = readParametersWithSpectra(tokens);
+        readLight(type, params);
+        context_.warnUnused("light '" + type + "'", params);
+      } else if (d == "AreaLightSource") {
+        std::string type = readString(tokens, d);
+        PbrtParameters params = readParametersWithSpectra(tokens);
+        state_.areaLight = makePbrtAreaLight(type, params, context_);
+        context_.warnUnused("area light '" + type + "'", params);
+      } else if (d == "Shape") {
+        std::string type = readString(tokens, d);
+        PbrtParameters params = parsePbrtParameters(tokens);
+        readShape(type, params);
+        context_.warnUnused("shape '" + type + "'", params);
+      } else if (d == "ObjectBegin") {
+        if (currentObject_) fail(tokens, t.line, "ObjectBegin inside the definition of '" + *currentObject_ + "'");
+        if (stack_.size() >= kMaxAttributeDepth) fail(tokens, t.line, d + " nested too deep");
+        stack_.push_back({state_, false});
+        currentObject_ = readString(tokens, d);
+        objects_[*currentObject_].clear();
+      } else if (d == "ObjectEnd") {
+        if (!currentObject_) fail(tokens, t.line, "ObjectEnd without ObjectBegin");
+        currentObject_.reset();
+        if (!stack_.empty()) {
+          state_ = stack_.back().first;
+          stack_.pop_back();
+        }
+      } else if (d == "ObjectInstance") {
+        std::string name = readString(tokens, d);
+        instantiate(name, tokens, t.line);
+      } else {
+        fail(tokens, t.line, "unknown directive '" + d + "'");
+      }
+    }
+  }
+
+  void readLight(const std::string& type, const PbrtParameters& params) {
+    if (!worldBegun_) chooseWorldMirror();
+    if (type == "point" || type == "spot" || type == "distant") {
+      context_.scene.punctualLights.push_back(makePbrtPunctualLight(type, params, worldFromPbrt_ * state_.ctm));
+      return;
+    }
+    if (type != "infinite") {
+      params.markAllUsed();
+      context_.warn("light " + type, "'" + type + "' lights are not supported: left out");
+      return;
+    }
+    if (environmentSet_) context_.warn("several infinite lights", "only the first infinite light is used");
+    if (environmentSet_) return;
+    context_.scene.environment = makePbrtInfiniteLight(params, state_.ctm, mirrorX_, context_);
+    environmentSet_ = true;
+  }
+
+  AlphaSpec shapeAlpha(const PbrtParameters& params) {
+    AlphaSpec alpha;
+    if (std::optional<std::string> texture = params.getTexture("alpha")) {
+      PbrtParameters lookup = params;
+      PbrtTexture t = textures_.value(lookup, "alpha", {1, 1, 1});
+      alpha.value = t.factor.x;
+      alpha.texture = t.image;
+    } else {
+      alpha.value = std::clamp(params.getFloat("alpha", 1.0f), 0.0f, 1.0f);
+    }
+    return alpha;
+  }
+
+  // The material a shape's triangles use: `base` with the shape's emission and alpha (cached: many shapes share
+  // one light or cut-out).
+  uint32_t variant(uint32_t base, Vec3 emission, AlphaSpec alpha) {
+    // Not-a-number (from infinite areas or radiance in a hostile file) would break the ordering of the cache's
+    // keys; it emits nothing, and scene repair clamps what is too bright.
+    for (float* c : {&emission.x, &emission.y, &emission.z})
+      if (std::isnan(*c)) *c = 0.0f;
+    if (isBlack(emission) && alpha.value >= 1.0f && alpha.texture == kNoTexture) return base;
+    auto key = std::make_tuple(base, emission.x, emission.y, emission.z, alpha.value, alpha.texture);
+    auto found = variants_.find(key);
+    if (found != variants_.end()) return found->second;
+    Material m = context_.scene.materials[base];
+    m.emission = emission;
+    if (alpha.value < 1.0f || alpha.texture != kNoTexture) {
+      m.alphaMode = AlphaMode::Blend;  // pbrt-v4 lets rays through with probability 1 - alpha
+      m.opacity *= alpha.value;
+      m.opacityTexture = alpha.texture;
+    }
+    uint32_t id = uint32_t(context_.scene.materials.size());
+    context_.scene.materials.push_back(m);
+    context_.scene.materialNames.push_back(context_.scene.materialNames[base]);
+    variants_[key] = id;
+    return id;
+  }
+
+  // The radiance each triangle of a shape emits. With `power`, pbrt-v4 normalises each of its lights: one per
+  // triangle of a mesh, per patch of a bilinear mesh (two triangles here), one for a whole quadric.
+  static std::vector<Vec3> areaLightEmission(const PbrtAreaLight& light, const std::string& type, const Mesh& mesh,
+                                             const Affine3x4& toWorld) {
+    size_t triangles = mesh.triangleCount();
+    if (!(light.power > 0.0f)) return std::vector<Vec3>(triangles, light.radiance);
+    std::vector<float> area(triangles);
+    for (size_t t = 0; t < triangles; ++t) {
+      Vec3 a = toWorld.point(mesh.positions[mesh.indices[3 * t]]);
+      Vec3 b = toWorld.point(mesh.positions[mesh.indices[3 * t + 1]]);
+      Vec3 c = toWorld.point(mesh.positions[mesh.indices[3 * t + 2]]);
+      area[t] = 0.5f * length(cross(b - a, c - a));
+    }
+    std::vector<Vec3> emission(triangles);
+    size_t group = type == "bilinearmesh" ? 2 : 1;
+    if (type == "sphere" || type == "disk" || type == "cylinder") group = std::max<size_t>(triangles, 1);
+    for (size_t first = 0; first < triangles; first += group) {
+      size_t last = std::min(first + group, triangles);
+      float shapeArea = 0.0f;
+      for (size_t t = first; t < last; ++t) shapeArea += area[t];
+      for (size_t t = first; t < last; ++t) emission[t] = pbrtAreaLightRadiance(light, shapeArea);
+    }
+    return emission;
+  }
+
+  void readShape(const std::string& type, const PbrtParameters& params) {
+    if (!worldBegun_) chooseWorldMirror();
+    PbrtShapeInputs inputs{[&](const std::string& ref) { return context_.resolve(ref, params.file, params.line); },
+                           [&](const std::string& feature, const std::string& what) { context_.warn(feature, what); }};
+    std::optional<Mesh> shape = makePbrtShape(type, params, inputs);
+    if (!shape) {
+      params.markAllUsed();
+      return;
+    }
+    Mesh& mesh = *shape;
+    if (type == "sphere" || type == "disk" || type == "cylinder" || type == "loopsubdiv") {
+      generatedTriangles_ += mesh.triangleCount();
+      if (generatedTriangles_ > kMaxGeneratedTriangles)
+        failLoad(params.file, params.line,
+                 "the scene's quadrics and subdivision surfaces make more than " +
+                     std::to_string(kMaxGeneratedTriangles) + " triangles");
+    }
+    mesh.name = "pbrt " + type;
+    // Orientation: the front of a shape follows its normals when it has them, else its winding; each
+    // negated by ReverseOrientation (pbrt-v4's rule; candela's instances keep the object-space front).
+    if (state_.reverseOrientation) {
+      for (Vec3& n : mesh.normals) n = -n;
+      if (mesh.normals.empty())
+        for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) std::swap(mesh.indices[i + 1], mesh.indices[i + 2]);
+    }
+    windTrianglesAlongNormals(mesh);
+
+    AlphaSpec alpha = shapeAlpha(params);
+    Affine3x4 toWorld = toAffine(worldFromPbrt_ * state_.ctm);
+    std::vector<Vec3> emission;  // per triangle; empty when the shape does not emit
+    if (state_.areaLight && !currentObject_) {
+      emission = areaLightEmission(*state_.areaLight, type, mesh, toWorld);
+    } else if (state_.areaLight) {
+      context_.warn("area light instance", "area lights inside object definitions do not emit (as in pbrt-v4)");
+    }
+    size_t triangles = mesh.triangleCount();
+    if (state_.areaLight && state_.areaLight->twoSided && !currentObject_) {
+      for (size_t i = 0; i < 3 * triangles; i += 3)
+        mesh.indices.insert(mesh.indices.end(), {mesh.indices[i], mesh.indices[i + 2], mesh.indices[i + 1]});
+      mesh.triangleMaterials.resize(2 * triangles);
+    }
+    if (!state_.material && !state_.materialName.empty() && materials_.isNamed(state_.materialName))
+      state_.material = materials_.named(state_.materialName, params.file, params.line);
+    uint32_t pendingMesh = uint32_t(context_.scene.meshes.size());
+    if (state_.material || state_.materialName.empty()) {
+      assignMaterials(mesh, state_.material ? *state_.material : materials_.fallback(), emission, alpha, triangles);
+    } else {
+      pendingShapes_.push_back(
+          {pendingMesh, state_.materialName, std::move(emission), alpha, triangles, params.file, params.line});
+    }
+    uint32_t meshId = uint32_t(context_.scene.meshes.size());
+    context_.scene.meshes.push_back(std::move(mesh));
+    if (currentObject_) {
+      objects_[*currentObject_].push_back({meshId, state_.ctm});
+    } else {
+      addInstance(meshId, toWorld, params.file, params.line);
+    }
+  }
+
+  // The materials of a shape's `triangles` (and of their reversed copies after them, for two-sided lights), with
+  // its emission and alpha, and its texture coordinates through the material's uv mapping.
+  void assignMaterials(Mesh& mesh, const PbrtMaterial& material, const std::vector<Vec3>& emission, AlphaSpec alpha,
+                       size_t triangles) {
+    for (size_t t = 0; t < triangles; ++t)
+      mesh.triangleMaterials[t] = variant(material.id, emission.empty() ? Vec3{0, 0, 0} : emission[t], alpha);
+    for (size_t t = triangles; t < mesh.triangleMaterials.size(); ++t)
+      mesh.triangleMaterials[t] = mesh.triangleMaterials[t - triangles];
+    // pbrt's (u, v) through the base colour texture's mapping, then v flipped: candela's v runs down the image.
+    auto [scale, offset] = materials_.uvMapping(material.id);
+    for (Vec2& uv : mesh.uvs) uv = {scale.x * uv.x + offset.x, 1.0f - (scale.y * uv.y + offset.y)};
+  }
+
+  // Shapes whose NamedMaterial was made only after them (pbrt-v4 allows that): materials assigned at the end.
+  void assignPendingMaterials() {
+    for (PendingShape& p : pendingShapes_)
+      assignMaterials(context_.scene.meshes[p.meshId], materials_.named(p.materialName, p.file, p.line), p.emission,
+                      p.alpha, p.triangles);
+    pendingShapes_.clear();
+  }
+
+  void addInstance(uint32_t meshId, const Affine3x4& toWorld, const std::string& file, size_t line) {
+    if (context_.scene.instances.size() >= kMaxInstances)
+      failLoad(file, line, "more than " + std::to_string(kMaxInstances) + " shape instances");
+    context_.scene.instances.push_back({meshId, toWorld});
+  }
+
+  void instantiate(const std::string& name, PbrtTokenizer& tokens, size_t line) {
+    if (currentObject_) fail(tokens, line, "ObjectInstance inside an object definition");
+    if (!worldBegun_) chooseWorldMirror();
+    auto found = objects_.find(name);
+    if (found == objects_.end()) {
+      context_.warn("unknown object " + name,
+                    tokens.file() + ":" + std::to_string(line) + ": object '" + name + "' is not defined: left out");
+      return;
+    }
+    for (const ObjectShape& shape : found->second)
+      addInstance(shape.meshId, toAffine(worldFromPbrt_ * state_.ctm * shape.worldFromShape), tokens.file(), line);
+  }
+
+  PbrtContext context_;
+  PbrtTextures textures_;
+  PbrtMaterials materials_;
+  GraphicsState state_;
+  std::vector<std::pair<GraphicsState, bool>> stack_;  // saved state, and whether only its transform returns
+  std::map<std::string, glm::mat4> namedFrames_;
+  std::map<std::string, std::vector<ObjectShape>> objects_;
+  std::optional<std::string> currentObject_;
+  std::vector<PendingShape> pendingShapes_;
+  std::map<std::tuple<uint32_t, float, float, float, float, int32_t>, uint32_t> variants_;
+  std::optional<PbrtParameters> camera_, film_;
+  std::string cameraType_;
+  glm::mat4 cameraFromWorld_{1.0f};
+  std::optional<uint32_t> samplerSamples_;
+  uint32_t maxDepth_ = 5;
+  bool worldBegun_ = false, mirrorX_ = true, activeEndOnly_ = false, environmentSet_ = false, textOnly_ = false;
+  glm::mat4 worldFromPbrt_{1.0f};
+  size_t includedFiles_ = 0;
+  size_t generatedTriangles_ = 0;
+};
+
+}  // namespace
+
+Scene loadPbrt(const std::string& path, LoadWarnings& warnings, OutsidePaths outside) {
+  PbrtReader reader(path, warnings, outside);
+  reader.readFile(path, 0);
+  return reader.finish();
+}
+
+Scene loadPbrtText(const std::string& name, const std::string& text, LoadWarnings& warnings) {
+  PbrtReader reader(name, warnings, OutsidePaths::Refused);
+  reader.readText(name, text);
+  return reader.finish();
+}
+
+}  // namespace candela

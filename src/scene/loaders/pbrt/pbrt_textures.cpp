@@ -1,0 +1,274 @@
+#include "scene/loaders/pbrt/pbrt_textures.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/file_extension.h"
+#include "io/file_bytes.h"
+#include "io/images/image_decoding.h"
+#include "scene/loaders/pbrt/pbrt_pfm.h"
+#include "scene/loaders/texture_limits.h"
+
+namespace candela {
+
+namespace {
+
+Vec3 meanOf(const PbrtTexture& t) { return t.factor * (t.image == kNoTexture ? 1.0f : 0.5f); }
+
+// The texel of `image` nearest to (s, t) in pbrt's texture space (t runs up, the image's rows down), as linear
+// colour, wrapped as the image says.
+Vec3 texelAt(const Texture& image, float s, float t) {
+  auto index = [](float coordinate, uint32_t size, TextureWrap wrap) {
+    float x = std::floor(coordinate * float(size));
+    if (!std::isfinite(x)) return 0u;
+    if (wrap == TextureWrap::Clamp) return uint32_t(std::clamp(x, 0.0f, float(size - 1)));
+    const double period = double(size);
+    return uint32_t(std::clamp(double(x) - period * std::floor(double(x) / period), 0.0, period - 1.0));
+  };
+  const uint32_t x = index(s, image.width, image.wrapU), y = index(1.0f - t, image.height, image.wrapV);
+  const size_t at = (size_t(y) * image.width + x) * image.channels;
+  float c[3];
+  for (uint32_t k = 0; k < 3; ++k) {
+    const uint32_t channel = image.channels >= 3 ? k : 0;
+    float v = image.floats.empty() ? float(image.bytes[at + channel]) / 255.0f : image.floats[at + channel];
+    c[k] = image.floats.empty() && image.srgb ? srgbToLinear(v) : v;
+  }
+  return {c[0], c[1], c[2]};
+}
+
+}  // namespace
+
+Vec3 PbrtTextures::colourAt(const PbrtTexture& t, float u, float v) const {
+  if (t.image == kNoTexture) return t.factor;
+  const Texture& image = context_.scene.textures[size_t(t.image)];
+  return t.factor * texelAt(image, t.uvScale.x * u + t.uvOffset.x, t.uvScale.y * v + t.uvOffset.y);
+}
+
+int32_t PbrtTextures::mixedImage(const PbrtTexture& first, const PbrtTexture& second, const PbrtTexture& amount) {
+  // As fine as the finest input over pbrt's unit square, each input's repetitions counted, within the texture
+  // size limit (--max-texture-size) and 4096 texels a side.
+  const float side = float(std::min<uint32_t>(4096, textureLimits().maxSize));
+  uint32_t width = 1, height = 1;
+  for (const PbrtTexture* t : {&first, &second, &amount}) {
+    if (t->image == kNoTexture) continue;
+    const Texture& image = context_.scene.textures[size_t(t->image)];
+    width = std::max(width, uint32_t(std::min(side, std::ceil(float(image.width) * std::fabs(t->uvScale.x)))));
+    height = std::max(height, uint32_t(std::min(side, std::ceil(float(image.height) * std::fabs(t->uvScale.y)))));
+  }
+  Texture out;
+  out.name = "mix texture";
+  out.width = width;
+  out.height = height;
+  out.channels = 3;
+  out.floats.resize(size_t(width) * height * 3);
+  for (uint32_t y = 0; y < height; ++y)
+    for (uint32_t x = 0; x < width; ++x) {
+      const float u = (float(x) + 0.5f) / float(width), v = 1.0f - (float(y) + 0.5f) / float(height);
+      const Vec3 c = lerp(colourAt(amount, u, v).x, colourAt(first, u, v), colourAt(second, u, v));
+      float* texel = out.floats.data() + (size_t(y) * width + x) * 3;
+      texel[0] = c.x;
+      texel[1] = c.y;
+      texel[2] = c.z;
+    }
+  const int32_t index = int32_t(context_.scene.textures.size());
+  context_.scene.textures.push_back(std::move(out));
+  return index;
+}
+
+int32_t PbrtTextures::loadImage(const std::string& path, bool srgb, const std::string& file, size_t line) {
+  auto key = std::make_pair(path, srgb);
+  if (auto found = images_.find(key); found != images_.end()) return found->second;
+  int32_t index = kNoTexture;
+  std::string resolved = context_.resolve(path, file, line);
+  try {
+    std::string ext = lowerCaseExtension(resolved);
+    Texture image;
+    if (ext == ".exr") {
+      image = loadEnvironmentImage(resolved);
+    } else if (ext == ".pfm") {
+      image = readPfm(resolved);
+    } else {
+      // Decoded no larger than the texture size limit, checked on the header: a small PNG can claim 16000x16000
+      // pixels. The scene's memory limit applies once all its textures are read (fitSceneTextures).
+      std::vector<uint8_t> bytes = readFileBytes(resolved);
+      const ImageInfo info = inspectImage(resolved, bytes.data(), bytes.size());
+      const TextureLimits limits = textureLimits();
+      const TextureExtent full{info.width, info.height, info.channels * (info.hdr ? 4u : 1u)};
+      const TextureExtent fitted = fitTextureLimits({full}, {limits.maxSize, UINT64_MAX}).front();
+      if (fitted.width != full.width || fitted.height != full.height)
+        context_.warnings.add(context_.mainFile, downscaleWarning(resolved, full, fitted, limits));
+      image = decodeImage(resolved, bytes.data(), bytes.size(), srgb, fitted.width, fitted.height);
+    }
+    image.name = resolved;
+    index = int32_t(context_.scene.textures.size());
+    context_.scene.textures.push_back(std::move(image));
+  } catch (const LoadError& e) {
+    context_.warnings.add(context_.mainFile, std::string("image left out: ") + e.what());
+  }
+  images_[key] = index;
+  return index;
+}
+
+int32_t PbrtTextures::invertedImage(int32_t image) {
+  if (auto found = inverted_.find(image); found != inverted_.end()) return found->second;
+  const Texture& source = context_.scene.textures[size_t(image)];
+  Texture out;
+  out.name = source.name + " (inverted)";
+  out.width = source.width;
+  out.height = source.height;
+  out.channels = source.channels;
+  out.wrapU = source.wrapU;
+  out.wrapV = source.wrapV;
+  size_t values = size_t(source.width) * source.height * source.channels;
+  out.floats.resize(values);
+  for (size_t i = 0; i < values; ++i) {
+    uint32_t channel = uint32_t(i % source.channels);
+    bool alpha = (source.channels == 4 && channel == 3) || (source.channels == 2 && channel == 1);
+    float v = source.floats.empty() ? float(source.bytes[i]) / 255.0f : source.floats[i];
+    if (!source.floats.empty() || alpha || !source.srgb) {
+      out.floats[i] = alpha ? v : 1.0f - v;
+    } else {
+      out.floats[i] = 1.0f - srgbToLinear(v);
+    }
+  }
+  int32_t index = int32_t(context_.scene.textures.size());
+  context_.scene.textures.push_back(std::move(out));
+  inverted_[image] = index;
+  return index;
+}
+
+int32_t PbrtTextures::checkerboardImage(Vec3 first, Vec3 second) {
+  auto key = std::make_tuple(first.x, first.y, first.z, second.x, second.y, second.z);
+  bool finite = isFinite(first) && isFinite(second);  // not-a-number would break the ordering of the keys
+  if (auto found = checkerboards_.find(key); finite && found != checkerboards_.end()) return found->second;
+  if (checkerboards_.size() >= kMaxCheckerboardImages || !finite) {
+    context_.warn("many checkerboards", "checkerboards beyond the first " + std::to_string(kMaxCheckerboardImages) +
+                                            " distinct ones (or of colours that are not finite) become their mean");
+    return kNoTexture;
+  }
+  // pbrt's check at (s, t) is tex1 where floor(s) + floor(t) is even. The image spans s and t in [0, 2), and
+  // its rows run down while t runs up: the top half is t in [1, 2).
+  constexpr uint32_t kSize = 64;
+  Texture image;
+  image.name = "checkerboard";
+  image.width = image.height = kSize;
+  image.channels = 3;
+  image.floats.resize(size_t(kSize) * kSize * 3);
+  for (uint32_t y = 0; y < kSize; ++y)
+    for (uint32_t x = 0; x < kSize; ++x) {
+      int s = x >= kSize / 2 ? 1 : 0, t = y < kSize / 2 ? 1 : 0;
+      Vec3 c = (s + t) % 2 == 0 ? first : second;
+      float* out = image.floats.data() + (size_t(y) * kSize + x) * 3;
+      out[0] = c.x;
+      out[1] = c.y;
+      out[2] = c.z;
+    }
+  int32_t index = int32_t(context_.scene.textures.size());
+  context_.scene.textures.push_back(std::move(image));
+  checkerboards_[key] = index;
+  return index;
+}
+
+int32_t PbrtTextures::mappedImage(int32_t image, const std::string& key, const std::function<float(float)>& map) {
+  auto cacheKey = std::make_pair(image, key);
+  if (auto found = mapped_.find(cacheKey); found != mapped_.end()) return found->second;
+  const Texture& source = context_.scene.textures[size_t(image)];
+  Texture out;
+  out.name = source.name + " (" + key + ")";
+  out.width = source.width;
+  out.height = source.height;
+  out.channels = 1;
+  out.wrapU = source.wrapU;
+  out.wrapV = source.wrapV;
+  size_t pixels = size_t(source.width) * source.height;
+  out.floats.resize(pixels);
+  for (size_t i = 0; i < pixels; ++i) {
+    size_t at = i * source.channels;
+    float v = source.floats.empty() ? float(source.bytes[at]) / 255.0f : source.floats[at];
+    if (source.floats.empty() && source.srgb) v = srgbToLinear(v);
+    out.floats[i] = map(v);
+  }
+  int32_t index = int32_t(context_.scene.textures.size());
+  context_.scene.textures.push_back(std::move(out));
+  mapped_[cacheKey] = index;
+  return index;
+}
+
+PbrtTexture PbrtTextures::value(const PbrtParameters& params, const std::string& name, Vec3 fallback) {
+  if (std::optional<std::string> texture = params.getTexture(name)) {
+    auto found = named_.find(*texture);
+    if (found != named_.end()) return found->second;
+    context_.warn("unknown texture " + *texture, params.file + ":" + std::to_string(params.line) + ": texture '" +
+                                                     *texture + "' is not defined: '" + name + "' takes its default");
+    return PbrtTexture{fallback};
+  }
+  if (std::optional<PbrtColor> c = params.getColor(name)) return PbrtTexture{c->rgb};
+  return PbrtTexture{fallback};
+}
+
+void PbrtTextures::define(const std::string& name, const std::string& valueType, const std::string& className,
+                          const PbrtParameters& params) {
+  if (valueType != "float" && valueType != "spectrum" && valueType != "color" && valueType != "rgb")
+    params.fail("texture '" + name + "' has an unknown value type '" + valueType + "'");
+  PbrtTexture t;
+  if (className == "imagemap") {
+    std::string file = params.getString("filename", "");
+    if (file.empty()) params.fail("imagemap texture '" + name + "' without 'filename'");
+    std::string encoding = params.getString("encoding", "sRGB");
+    if (encoding != "sRGB" && encoding != "linear")
+      context_.warn("texture encoding " + encoding, "texture encoding '" + encoding + "' read as sRGB");
+    t.image = loadImage(file, encoding != "linear", params.file, params.line);
+    float scale = params.getFloat("scale", 1.0f);
+    t.factor = {scale, scale, scale};
+    if (params.getBool("invert", false) && t.image != kNoTexture) t.image = invertedImage(t.image);
+    std::string wrap = params.getString("wrap", "repeat");
+    if (t.image != kNoTexture) {
+      Texture& image = context_.scene.textures[size_t(t.image)];
+      image.wrapU = image.wrapV = wrap == "clamp" || wrap == "black" ? TextureWrap::Clamp : TextureWrap::Repeat;
+      if (wrap == "black") context_.warn("texture wrap black", "imagemap wrap 'black' is read as 'clamp'");
+    }
+  } else if (className == "constant") {
+    t = value(params, "value", {1, 1, 1});
+  } else if (className == "scale") {
+    PbrtTexture tex = value(params, "tex", {1, 1, 1}), scale = value(params, "scale", {1, 1, 1});
+    if (tex.image != kNoTexture && scale.image != kNoTexture)
+      context_.warn("scale of two images", "a 'scale' texture of two images keeps only the first");
+    t = tex.image != kNoTexture ? tex : scale;
+    t.factor = tex.factor * scale.factor;
+  } else if (className == "checkerboard" && params.getInt("dimension", 2) == 2) {
+    PbrtTexture a = value(params, "tex1", {1, 1, 1}), b = value(params, "tex2", {0, 0, 0});
+    if (a.image != kNoTexture || b.image != kNoTexture)
+      context_.warn("checkerboard of images", "checkerboards of image textures use the images' mean colours");
+    t.image = checkerboardImage(meanOf(a), meanOf(b));
+    if (t.image == kNoTexture) t.factor = 0.5f * (meanOf(a) + meanOf(b));
+  } else if (className == "mix") {
+    // (1 - amount) tex1 + amount tex2: exact for constants; of images, an image of the mix over pbrt's unit
+    // square, each input through its own uv mapping.
+    PbrtTexture a = value(params, "tex1", {1, 1, 1}), b = value(params, "tex2", {0, 0, 0});
+    PbrtTexture amount = value(params, "amount", {0.5f, 0.5f, 0.5f});
+    if (a.image == kNoTexture && b.image == kNoTexture && amount.image == kNoTexture)
+      t.factor = lerp(amount.factor.x, a.factor, b.factor);
+    else
+      t.image = mixedImage(a, b, amount);
+  } else if (className == "checkerboard") {
+    PbrtTexture a = value(params, "tex1", {1, 1, 1}), b = value(params, "tex2", {0, 0, 0});
+    t.factor = 0.5f * (meanOf(a) + meanOf(b));
+    context_.warn("texture " + className, "3D checkerboard textures are replaced by the mean of their inputs");
+  } else {
+    params.markAllUsed();
+    t.factor = {0.5f, 0.5f, 0.5f};
+    context_.warn("texture " + className, "'" + className + "' textures are not supported: grey 0.5 used instead");
+  }
+  t.uvScale = {params.getFloat("uscale", 1.0f), params.getFloat("vscale", 1.0f)};
+  t.uvOffset = {params.getFloat("udelta", 0.0f), params.getFloat("vdelta", 0.0f)};
+  if (className == "checkerboard" && t.image != kNoTexture) {
+    // The image holds one period of the pattern, two checks of pbrt's unit size along each axis.
+    t.uvScale = {0.5f * t.uvScale.x, 0.5f * t.uvScale.y};
+    t.uvOffset = {0.5f * t.uvOffset.x, 0.5f * t.uvOffset.y};
+  }
+  std::string mapping = params.getString("mapping", "uv");
+  if (mapping != "uv") context_.warn("texture mapping " + mapping, "texture mapping '" + mapping + "' read as 'uv'");
+  named_[name] = t;
+}
+
+}  // namespace candela

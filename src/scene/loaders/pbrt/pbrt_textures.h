@@ -1,0 +1,61 @@
+#pragma once
+#include <functional>
+#include <map>
+#include <string>
+#include <tuple>
+
+#include "scene/loaders/pbrt/pbrt_context.h"
+#include "scene/loaders/pbrt/pbrt_parameters.h"
+
+namespace candela {
+
+// A pbrt texture as candela can use it: a constant factor times, optionally, one of the scene's images, looked
+// up through pbrt's uv mapping (u' = uscale u + udelta, v' = vscale v + vdelta).
+struct PbrtTexture {
+  Vec3 factor{1, 1, 1};
+  int32_t image = kNoTexture;
+  Vec2 uvScale{1, 1};
+  Vec2 uvOffset{0, 0};
+};
+
+// The named textures of a scene (`Texture "name" "spectrum"|"float" "class" ...`): imagemap (PNG, JPEG, TGA, BMP,
+// HDR, EXR, PFM; invert), constant, scale, mix (of images: as an image of the mix) and 2D checkerboards (as an
+// image of one period) are honoured; 3D checkerboards become the mean of their two inputs, other classes a
+// constant grey, each with a warning.
+class PbrtTextures {
+ public:
+  explicit PbrtTextures(PbrtContext& context) : context_(context) {}
+
+  void define(const std::string& name, const std::string& valueType, const std::string& className,
+              const PbrtParameters& params);
+  // A material or texture parameter: a texture it names, a colour or number it gives, or `fallback`.
+  PbrtTexture value(const PbrtParameters& params, const std::string& name, Vec3 fallback);
+  // An image file as a scene texture (cached by file and encoding); kNoTexture after a warning when unreadable.
+  int32_t loadImage(const std::string& path, bool srgb, const std::string& file, size_t line);
+  // A one-channel float image of `map` applied to the first channel (as a linear value) of `image`: the form a
+  // material needs where its parameter is not linear in pbrt's texture value (roughness). Cached by `key`.
+  int32_t mappedImage(int32_t image, const std::string& key, const std::function<float(float)>& map);
+  // A 64 x 64 image of one period of a 2D checkerboard of two colours (the first where pbrt's tex1 goes), shared
+  // by every checkerboard of the same colours; kNoTexture (after a warning) beyond kMaxCheckerboardImages.
+  int32_t checkerboardImage(Vec3 first, Vec3 second);
+  // An image of (1 - amount) first + amount second over pbrt's unit (u, v) square, each input looked up (nearest
+  // texel) through its own uv mapping, as fine as the finest input there (at most 4096 texels a side, and
+  // within --max-texture-size).
+  int32_t mixedImage(const PbrtTexture& first, const PbrtTexture& second, const PbrtTexture& amount);
+
+ private:
+  // The linear colour of `t` at pbrt's (u, v): its factor, times its image's nearest texel through its uv mapping.
+  Vec3 colourAt(const PbrtTexture& t, float u, float v) const;
+  // A float copy of an image with its colour channels (as linear values) turned into 1 - value, for `invert`.
+  int32_t invertedImage(int32_t image);
+
+  PbrtContext& context_;
+  std::map<std::string, PbrtTexture> named_;
+  std::map<std::pair<std::string, bool>, int32_t> images_;
+  std::map<int32_t, int32_t> inverted_;
+  static constexpr size_t kMaxCheckerboardImages = 1024;
+  std::map<std::tuple<float, float, float, float, float, float>, int32_t> checkerboards_;
+  std::map<std::pair<int32_t, std::string>, int32_t> mapped_;
+};
+
+}  // namespace candela

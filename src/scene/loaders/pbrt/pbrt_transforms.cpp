@@ -1,0 +1,46 @@
+#include "scene/loaders/pbrt/pbrt_transforms.h"
+
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace candela {
+
+glm::mat4 pbrtTranslate(Vec3 d) { return glm::translate(glm::mat4(1.0f), glm::vec3(d.x, d.y, d.z)); }
+
+glm::mat4 pbrtScale(Vec3 s) { return glm::scale(glm::mat4(1.0f), glm::vec3(s.x, s.y, s.z)); }
+
+glm::mat4 pbrtRotate(float degrees, Vec3 axis) {
+  glm::vec3 a(axis.x, axis.y, axis.z);
+  float len = glm::length(a);
+  if (!(len > 0.0f) || !std::isfinite(len)) return glm::mat4(1.0f);
+  return glm::rotate(glm::mat4(1.0f), glm::radians(degrees), a / len);
+}
+
+glm::mat4 pbrtLookAt(Vec3 eyeIn, Vec3 lookIn, Vec3 upIn) {
+  glm::vec3 eye(eyeIn.x, eyeIn.y, eyeIn.z), look(lookIn.x, lookIn.y, lookIn.z), up(upIn.x, upIn.y, upIn.z);
+  glm::vec3 dir = look - eye;
+  if (!(glm::length(dir) > 0.0f) || !(glm::length(up) > 0.0f)) return glm::mat4(1.0f);
+  dir = glm::normalize(dir);
+  glm::vec3 right = glm::cross(glm::normalize(up), dir);
+  if (!(glm::length(right) > 0.0f)) return glm::mat4(1.0f);  // up parallel to the view direction
+  right = glm::normalize(right);
+  glm::vec3 newUp = glm::cross(dir, right);
+  glm::mat4 worldFromCamera(glm::vec4(right, 0), glm::vec4(newUp, 0), glm::vec4(dir, 0), glm::vec4(eye, 1));
+  return glm::inverse(worldFromCamera);
+}
+
+glm::mat4 pbrtMatrix(const double* m) {
+  glm::mat4 out;
+  for (int column = 0; column < 4; ++column)
+    for (int row = 0; row < 4; ++row) out[column][row] = float(m[4 * column + row]);
+  return out;
+}
+
+bool isFiniteMatrix(const glm::mat4& m) {
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(m[c][r])) return false;
+  return true;
+}
+
+}  // namespace candela

@@ -1,0 +1,3 @@
+#pragma once
+// A downward include: allowed.
+#include "kernel/integrator.h"
