@@ -6,10 +6,8 @@
 
 #include "app/backend_factory.h"
 #include "app/camera_path.h"
+#include "app/denoising/film_denoiser.h"
 #include "app/scene_loading.h"
-#if CANDELA_HAS_OPTIX
-#include "backends/optix/optix_denoiser.h"
-#endif
 
 namespace candela {
 
@@ -24,27 +22,11 @@ RenderJob withHints(RenderJob job, const RenderHints& hints) {
   return job;
 }
 
-Image denoisedFrame(Backend& backend, const RenderJob& job, TemporalDenoiser* temporal, const Camera& camera) {
-  if (temporal) return temporal->denoise(camera, /*filmContinues=*/false);
-  if (job.denoiser == "atrous") return backend.readAtrousDenoised(job.atrous);
-  if (job.denoiser == "bilateral") return backend.readBilateralFiltered(job.bilateral);
-#if CANDELA_HAS_OPTIX
-  if (job.denoiser == "optix") {
-    const AovImages aovs = backend.readAovs();
-    return denoiseWithOptix(backend.readImage(), {&aovs.albedo, &aovs.normal});
-  }
-#endif
-  return backend.readImage();
-}
-
 }  // namespace
 
 void runCameraPathRender(const RenderJob& pathJob, const TemporalParams& temporalParams, const CameraPathSource& source,
                          const std::string& output, const DisplaySettings& display) {
-#if !CANDELA_HAS_OPTIX
-  if (pathJob.denoiser == "optix")
-    throw std::runtime_error("--denoise optix needs the OptiX backend, which is not in this build (see README)");
-#endif
+  FilmDenoiser denoiser(pathJob.denoiser, {pathJob.atrous, pathJob.bilateral, temporalParams});
   validateTemporalParams(temporalParams);
   Scene scene = loadScene(pathJob.sceneSpec, {pathJob.environmentPath, pathJob.sceneCache, pathJob.outsidePaths,
                                               pathJob.camera, pathJob.textureLimits});
@@ -61,16 +43,15 @@ void runCameraPathRender(const RenderJob& pathJob, const TemporalParams& tempora
   if (!why.empty()) std::fprintf(stderr, "%s\n", why.c_str());
   backend->setScene(scene);
   backend->setSettings(job.settings);
-  backend->setAovsEnabled(job.denoiser != "none" && job.denoiser != "bilateral");
-  std::unique_ptr<TemporalDenoiser> temporal;
-  if (job.denoiser == "temporal") temporal = backend->makeTemporalDenoiser(temporalParams);
+  backend->setAovsEnabled(needsAovs(job.denoiser));
   const float aspect = float(job.settings.width) / float(job.settings.height);
   for (size_t i = 0; i < path.size(); ++i) {
     const Camera camera = path[i].toCamera(aspect);
     backend->setCamera(camera);  // restarts the film
     for (uint32_t s = 0; s < job.samplesPerPixel; ++s) backend->render(1);
     const std::string file = frameFileName(output, i, path.size());
-    writeImage(file, denoisedFrame(*backend, job, temporal.get(), camera), display);
+    // Each frame's film starts afresh: the temporal filter's history is reprojected, not continued.
+    writeImage(file, denoiser.apply(*backend, camera, /*filmContinues=*/false), display);
     std::printf("%s\n", std::filesystem::absolute(file).string().c_str());
     std::fflush(stdout);
   }

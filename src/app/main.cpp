@@ -113,6 +113,16 @@ void addToneMapperOption(CLI::App& cmd, std::string& toneMapper, const std::stri
       ->capture_default_str();
 }
 
+template <size_t N>
+void addDenoiserOption(CLI::App& cmd, DenoiserChoice& denoiser, const DenoiserChoice (&choices)[N],
+                       const std::string& what = "Denoiser") {
+  std::map<std::string, DenoiserChoice> names;
+  for (DenoiserChoice choice : choices) names[denoiserName(choice)] = choice;
+  cmd.add_option("--denoise", denoiser, what + ": " + describeDenoisers({std::begin(choices), std::end(choices)}))
+      ->transform(CLI::CheckedTransformer(names, CLI::ignore_case))
+      ->default_str(denoiserName(denoiser));
+}
+
 const char* textureFilterName(TextureFilter filter) {
   switch (filter) {
     case TextureFilter::Finest: return "finest";
@@ -520,12 +530,7 @@ void addViewOptions(CLI::App& cmd, ViewerOptions& options, std::string& toneMapp
       ->check(CLI::Range(1u, 1024u))
       ->capture_default_str();
   cmd.add_option("--exposure", options.post.display.exposure, "Exposure in stops")->capture_default_str();
-  std::map<std::string, DenoiserChoice> denoisers;
-  for (DenoiserChoice choice : kDenoiserChoices) denoisers[denoiserName(choice)] = choice;
-  cmd.add_option("--denoise", options.post.denoiser,
-                 "Denoiser to start with (the panel switches it): none; atrous; optix (the OptiX AI denoiser)")
-      ->transform(CLI::CheckedTransformer(denoisers, CLI::ignore_case))
-      ->default_str("none");
+  addDenoiserOption(cmd, options.post.denoiser, kViewerDenoiserChoices, "Denoiser to start with (the panel switches it)");
   addToneMapperOption(cmd, toneMapper);
   CLI::Option* frames =
       cmd.add_option("--frames", options.frames, "Render this many frames, then exit (0: until the window closes)")
@@ -627,12 +632,7 @@ int main(int argc, char** argv) {
   AnimationRequest animation;
   addAnimationOptions(*render, animation);
   addToneMapperOption(*render, toneMapper, "Tone mapper for .png");
-  render
-      ->add_option("--denoise", renderJob.denoiser,
-                   "Denoiser: none; atrous (edge-avoiding a-trous guided by albedo, normal and depth); bilateral; "
-                   "optix (the OptiX AI denoiser with albedo and normal guides)")
-      ->check(CLI::IsMember({"none", "atrous", "bilateral", "optix", "temporal"}))
-      ->capture_default_str();
+  addDenoiserOption(*render, renderJob.denoiser, kDenoiserChoices);
   addRenderControlOptions(*render, renderJob.control);
   // A checkpoint holds one image: a sequence's frames would overwrite it, and each would resume from it.
   for (const char* option : {"--checkpoint", "--resume"})
@@ -715,7 +715,7 @@ int main(int argc, char** argv) {
     if (*inspect) return runLoad(inspectSpec, inspectOptions);
     if (*render) {
       display.toneMapper = parseToneMapper(toneMapper);
-      if (cameraPath.given() || renderJob.denoiser == "temporal")
+      if (cameraPath.given() || renderJob.denoiser == DenoiserChoice::Temporal)
         return runCameraPath(renderJob, cameraPath, output, display);
       if (animation.requested()) return runAnimation(renderJob, animation, output, display, rankTimeoutSeconds);
       if (!animation.clip.empty()) throw std::runtime_error("--animation needs --time or --frames");

@@ -11,14 +11,12 @@
 #include "app/checkpoint/checkpoint_file.h"
 #include "app/checkpoint/render_identity.h"
 #include "app/checkpoint/stop_signals.h"
+#include "app/denoising/film_denoiser.h"
 #include "app/render_memory.h"
 #include "app/scene_loading.h"
 #include "app/schedule/local_schedule.h"
 #include "app/schedule/render_team.h"
 #include "app/schedule/scheduled_render.h"
-#if CANDELA_HAS_OPTIX
-#include "backends/optix/optix_denoiser.h"
-#endif
 #include "image/visible_pixels.h"
 
 namespace candela {
@@ -30,31 +28,17 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 }
 
 bool needsAovs(const RenderJob& job) {
-  return !job.aovs.empty() || job.denoiser != "none";  // the bilateral filter reads the emission, recorded with them
+  return !job.aovs.empty() || needsAovs(job.denoiser);
 }
 
-// Builds without OptiX refuse --denoise optix before rendering (runRenderJob).
-void denoiseWithOptixGuides([[maybe_unused]] RenderOutcome& outcome, [[maybe_unused]] const AovImages& aovs) {
-#if CANDELA_HAS_OPTIX
-  try {
-    outcome.image = denoiseWithOptix(outcome.image, {&aovs.albedo, &aovs.normal});
-  } catch (const std::runtime_error& e) {
-    std::fprintf(stderr, "candela: %s; the image is kept without denoising\n", e.what());
+void readResult(const Backend& backend, const RenderJob& job, const Camera& camera, RenderOutcome& outcome) {
+  FilmDenoiser denoiser(job.denoiser, {job.atrous, job.bilateral, {}});
+  if (job.aovs.empty()) {
+    outcome.image = denoiser.apply(backend, camera, /*filmContinues=*/false);
+    return;
   }
-#endif
-}
-
-void readResult(const Backend& backend, const RenderJob& job, RenderOutcome& outcome) {
-  if (job.denoiser == "atrous")
-    outcome.image = backend.readAtrousDenoised(job.atrous);
-  else if (job.denoiser == "bilateral")
-    outcome.image = backend.readBilateralFiltered(job.bilateral);
-  else
-    outcome.image = backend.readImage();
-  if (!needsAovs(job)) return;
-  AovImages aovs = backend.readAovs();
-  if (job.denoiser == "optix") denoiseWithOptixGuides(outcome, aovs);
-  if (!job.aovs.empty()) outcome.aovs = std::move(aovs);
+  outcome.aovs = backend.readAovs();
+  outcome.image = denoiser.apply(backend, camera, /*filmContinues=*/false, &outcome.aovs);
 }
 
 // The sample index the render starts at: 0, or the next one of the checkpoint it resumes from, whose film is
@@ -92,12 +76,7 @@ ScheduledRenderResult accumulateSamples(const RenderJob& job, Backend& backend, 
 }  // namespace
 
 RenderOutcome runRenderJob(const RenderJob& job, bool showProgress) {
-#if !CANDELA_HAS_OPTIX
-  if (job.denoiser == "optix")
-    throw std::runtime_error(
-        "--denoise optix needs the OptiX backend, which is not in this build (see README, "
-        "'GPU backend')");
-#endif
+  if (!inThisBuild(job.denoiser)) throw std::runtime_error(notInThisBuild(job.denoiser));
   const auto loadStart = std::chrono::steady_clock::now();
   RenderJob hinted;
   Scene scene = agreedStep(job.team, [&] { return loadSceneForJob(job, hinted); });
@@ -159,7 +138,8 @@ RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool s
   if (!given) backend->setScene(scene);
   backend->setSettings(job.settings);
   backend->setAovsEnabled(needsAovs(job));
-  backend->setCamera(scene.camera.toCamera(float(job.settings.width) / float(job.settings.height)));
+  const Camera camera = scene.camera.toCamera(float(job.settings.width) / float(job.settings.height));
+  backend->setCamera(camera);
   // render() returns when its launch has finished, on either backend.
   auto renderFrame = [&] {
     FrameStats frame = backend->render(1);
@@ -192,7 +172,7 @@ RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool s
     outcome.rawTraceRaysPerFrame = timing.raysPerFrame;
     outcome.rawTraceMilliseconds = std::move(timing.deviceMilliseconds);
   }
-  readResult(*backend, job, outcome);
+  readResult(*backend, job, camera, outcome);
   outcome.combineMilliseconds = backend->lastCombineMilliseconds();
   return outcome;
 }

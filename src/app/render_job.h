@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "app/checkpoint/render_control.h"
+#include "app/denoising/denoiser_choice.h"
 #include "app/device_list.h"
 #include "app/schedule/sample_dispenser.h"
 #include "backends/backend.h"
@@ -35,7 +36,7 @@ struct RenderJob {
   MaterialOverrides materialOverrides;
   uint32_t warmupFrames = 0;      // untimed launches before the timed ones
   bool rawTrace = false;          // also time the backend's raw-trace mode (optix only)
-  std::string denoiser = "none";  // "none", "atrous", "bilateral" or "optix"
+  DenoiserChoice denoiser = DenoiserChoice::None;
   AtrousParams atrous;
   BilateralParams bilateral;
   std::vector<Aov> aovs;       // AOVs to keep in RenderOutcome::aovs

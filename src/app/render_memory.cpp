@@ -66,14 +66,18 @@ std::string gib(uint64_t bytes) {
 
 uint64_t estimateRenderBytes(const RenderJob& job) {
   const uint64_t pixels = uint64_t(job.settings.width) * job.settings.height;
-  const bool aovs = !job.aovs.empty() || job.denoiser == "atrous" || job.denoiser == "optix";
+  const bool aovs = !job.aovs.empty() || needsAovs(job.denoiser);
   const uint64_t film = kImage + (aovs ? kAovs : 0);
   // The peak is the largest of three moments. Denoising, with the film still there: the image read out, the
   // guides, the denoiser's planes and its result.
   uint64_t denoising = film + kImage;
-  if (job.denoiser == "atrous") denoising += kAovs + kAtrousPlanes + kImage;
-  if (job.denoiser == "bilateral") denoising += kBilateralPlanes + kImage;
-  if (job.denoiser == "optix") denoising += kAovs + kImage;
+  switch (job.denoiser) {
+    case DenoiserChoice::Atrous:
+    case DenoiserChoice::Temporal: denoising += kAovs + kAtrousPlanes + kImage; break;
+    case DenoiserChoice::Bilateral: denoising += kBilateralPlanes + kImage; break;
+    case DenoiserChoice::Optix: denoising += kAovs + kImage; break;
+    case DenoiserChoice::None: break;
+  }
   // Reading the AOVs for the output, the film still there.
   const uint64_t readingAovs = film + kImage + (aovs ? kAovs : 0);
   // Writing, the backend gone: the image, the AOVs, each file encoded (the depth AOV first becomes an image).

@@ -8,9 +8,6 @@
 #include "backends/device_image.h"
 #include "backends/film_sums.h"
 #include "image/aov_images.h"
-#include "image/filters/atrous.h"
-#include "image/filters/bilateral.h"
-#include "image/filters/temporal.h"
 #include "image/image.h"
 #include "kernel/camera.h"
 #include "kernel/render_settings.h"
@@ -18,19 +15,7 @@
 
 namespace candela {
 
-// The temporal filter (image/filters/temporal.h) applied to a backend's film frame after frame; it keeps the
-// history. Made by Backend::makeTemporalDenoiser, used while that backend lives.
-class TemporalDenoiser {
- public:
-  virtual ~TemporalDenoiser() = default;
-  // The backend's accumulated image through the filter (the AOVs must be enabled). `camera` is the one that saw
-  // the film; `filmContinues` says that the film is the one the previous call filtered, with samples added since
-  // (the camera and scene did not change).
-  virtual Image denoise(const Camera& camera, bool filmContinues) = 0;
-  // Forgets the history (a new scene).
-  virtual void reset() = 0;
-  virtual const TemporalParams& params() const = 0;
-};
+class FilmFilters;
 
 struct FrameStats {
   uint64_t rays = 0;                // camera, bounce and shadow rays traced
@@ -99,19 +84,9 @@ class Backend {
   // The mean AOVs of the accumulated samples. Throws std::logic_error when they are not enabled.
   virtual AovImages readAovs() const = 0;
 
-  // The accumulated image through the a-trous filter guided by the AOVs, or through the bilateral filter, which
-  // keeps the emission apart (both need the AOVs enabled): by default the CPU filters on readImage(); a backend whose
-  // film lives on a GPU filters there and reads back only the result.
-  virtual Image readAtrousDenoised(const AtrousParams& params) const {
-    return atrousDenoise(readImage(), readAovs(), params);
-  }
-  virtual Image readBilateralFiltered(const BilateralParams& params) const {
-    return bilateralFilter(readImage(), readEmission(), params);
-  }
-
-  // The temporal filter for this backend's film: by default the CPU filter on readImage() and readAovs(); a backend
-  // whose film lives on a GPU filters there and reads back only the result.
-  virtual std::unique_ptr<TemporalDenoiser> makeTemporalDenoiser(const TemporalParams& params) const;
+  // The filters that run on this backend's film (backends/film_filters.h): the CPU's on readImage(), or a GPU
+  // backend's own on its film in device memory.
+  virtual const FilmFilters& filters() const = 0;
 
   // Capabilities some backends have; callers ask for them here rather than for a backend's type.
   //
@@ -128,26 +103,5 @@ class Backend {
   // add them to the film it reads (milliseconds); 0 otherwise.
   virtual double lastCombineMilliseconds() const { return 0.0; }
 };
-
-// The temporal filter on the host, for any backend.
-class HostTemporalDenoiser : public TemporalDenoiser {
- public:
-  HostTemporalDenoiser(const Backend& backend, const TemporalParams& params) : backend_(backend), filter_(params) {}
-  Image denoise(const Camera& camera, bool filmContinues) override {
-    const Image color = backend_.readImage();
-    const AovImages aovs = backend_.readAovs();
-    return filter_.filter({color, aovs, camera, backend_.accumulatedSamples(), filmContinues});
-  }
-  void reset() override { filter_.reset(); }
-  const TemporalParams& params() const override { return filter_.params(); }
-
- private:
-  const Backend& backend_;
-  TemporalFilter filter_;
-};
-
-inline std::unique_ptr<TemporalDenoiser> Backend::makeTemporalDenoiser(const TemporalParams& params) const {
-  return std::make_unique<HostTemporalDenoiser>(*this, params);
-}
 
 }  // namespace candela

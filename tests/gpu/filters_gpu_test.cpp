@@ -7,6 +7,7 @@
 #include <string>
 
 #include "app/camera_path.h"
+#include "backends/film_filters.h"
 #include "backends/optix/filters/cuda_filters.h"
 #include "gpu_render.h"
 #include "image/filters/atrous.h"
@@ -105,9 +106,9 @@ TEST(OptixFiltering, FiltersTheFilmOnTheDevice) {
   gpu->render(2);
   const Image image = gpu->readImage();
   const AovImages aovs = gpu->readAovs();
-  EXPECT_LE(worstRelativeError(gpu->readAtrousDenoised(AtrousParams{}), atrousDenoise(image, aovs, AtrousParams{})),
+  EXPECT_LE(worstRelativeError(gpu->filters().atrous(AtrousParams{}), atrousDenoise(image, aovs, AtrousParams{})),
             kTolerance);
-  EXPECT_LE(worstRelativeError(gpu->readBilateralFiltered(BilateralParams{}),
+  EXPECT_LE(worstRelativeError(gpu->filters().bilateral(BilateralParams{}),
                                bilateralFilter(image, gpu->readEmission(), BilateralParams{})),
             kTolerance);
 }
@@ -126,7 +127,7 @@ TEST(OptixFiltering, TemporalFilterMatchesTheCpuFilterAlongACameraMove) {
   const TemporalParams params;
   TemporalParams off = params;
   off.atrous.colorSigma *= 1.02f;
-  const std::unique_ptr<TemporalDenoiser> device = gpu->makeTemporalDenoiser(params);
+  const std::unique_ptr<TemporalDenoiser> device = gpu->filters().temporal(params);
   TemporalFilter cpu(params), cpuOff(off);
   const std::vector<CameraDescription> path = orbitCameraPath(scene.camera, 6, 3.0f);
   auto compare = [&](const Camera& camera, bool filmContinues, const char* what) {
@@ -162,7 +163,7 @@ TEST(OptixFilm, DropsAndCountsSamplesThatWouldOverflow) {
   EXPECT_EQ(gpu->render(4).invalidSamples, 3u * 64u);
   for (const Vec3& p : gpu->readImage().pixels) EXPECT_FLOAT_EQ(p.x, 2e38f);
   // The filter clamps values above 1e18 (kMaxFilteredValue) but keeps them finite.
-  for (const Vec3& p : gpu->readAtrousDenoised(AtrousParams{}).pixels) EXPECT_TRUE(isFinite(p));
+  for (const Vec3& p : gpu->filters().atrous(AtrousParams{}).pixels) EXPECT_TRUE(isFinite(p));
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include "app/viewer/animation_clock.h"
 #include "app/viewer/render_session.h"
+#include "backends/film_filters.h"
 #include "scene/builtin_scenes.h"
 
 namespace candela {
@@ -77,6 +78,7 @@ class RecordingBackend final : public Backend {
   }
   bool aovsEnabled() const override { return aovs_; }
   AovImages readAovs() const override { return {}; }
+  const FilmFilters& filters() const override { return filters_; }
 
  private:
   void restart() {
@@ -85,6 +87,7 @@ class RecordingBackend final : public Backend {
   }
   BackendLog& log_;
   bool aovs_ = false;
+  HostFilmFilters filters_{*this};
 };
 
 struct SessionTest : ::testing::Test {

@@ -3,6 +3,8 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <iterator>
+#include <string_view>
 
 namespace candela {
 
@@ -71,7 +73,10 @@ struct Reader {
 
 constexpr const char* kShadingNames[] = {"own", "phong", "pbr", "disney"};
 constexpr const char* kToneMapperNames[] = {"aces", "clamp", "reinhard"};  // ToneMapper's order
-constexpr const char* kDenoiserNames[] = {"none", "atrous", "optix"};      // DenoiserChoice's order
+constexpr const char* kDenoiserNames[] = {"none", "atrous", "optix"};      // kViewerDenoiserChoices' order
+static_assert(std::size(kDenoiserNames) == std::size(kViewerDenoiserChoices));
+static_assert(std::string_view(kDenoiserNames[1]) == denoiserName(kViewerDenoiserChoices[1]) &&
+              std::string_view(kDenoiserNames[2]) == denoiserName(kViewerDenoiserChoices[2]));
 constexpr const char* kButtonNames[] = {"left", "right", "middle"};        // MouseButton's order
 constexpr const char* kPointerActions[] = {"down", "up", "move"};
 constexpr const char* kActionNames[] = {"frame", "reset", "screenshot", "save_view", "take_control"};
@@ -136,7 +141,7 @@ std::optional<ClientMessage> settings(Reader& r) {
     return std::nullopt;
   if (shading) m.shading = ShadingModel(*shading);
   if (toneMapper) m.toneMapper = ToneMapper(*toneMapper);
-  if (denoiser) m.denoiser = DenoiserChoice(*denoiser);
+  if (denoiser) m.denoiser = kViewerDenoiserChoices[*denoiser];
   if (passes) m.atrousPasses = int(*passes);
   return m;
 }

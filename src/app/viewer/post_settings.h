@@ -1,28 +1,17 @@
 #pragma once
+#include "app/denoising/denoiser_choice.h"
 #include "image/filters/atrous.h"
 #include "image/filters/bilateral.h"
 #include "io/images/image_io.h"
 
 namespace candela {
 
-// The denoiser the accumulated image goes through before the display passes. Each makes the backend accumulate
-// the AOVs (albedo, normal, depth) that guide it.
-enum class DenoiserChoice {
-  None,
-  Atrous,  // where the backend's film is: the CPU filter, or CUDA for the optix backend
-  Optix,   // the OptiX AI denoiser, on the GPU, from the image and AOVs read back
-};
-constexpr DenoiserChoice kDenoiserChoices[] = {DenoiserChoice::None, DenoiserChoice::Atrous, DenoiserChoice::Optix};
-
-// The choice's name on the command line and in the viewer's state file.
-constexpr const char* denoiserName(DenoiserChoice choice) {
-  switch (choice) {
-    case DenoiserChoice::Atrous: return "atrous";
-    case DenoiserChoice::Optix: return "optix";
-    case DenoiserChoice::None: break;
-  }
-  return "none";
-}
+// The denoisers the viewer and the page offer for the accumulated image before the display passes; each makes the
+// backend accumulate the AOVs that guide it. The a-trous filter runs where the backend's film is, with the temporal
+// filter's history while the camera moves (viewer_denoiser.h); the bilateral filter is a display pass of its own
+// (PostSettings::bilateral).
+constexpr DenoiserChoice kViewerDenoiserChoices[] = {DenoiserChoice::None, DenoiserChoice::Atrous,
+                                                     DenoiserChoice::Optix};
 
 // What happens to the accumulated image between the backend and the screen (or a screenshot).
 struct PostSettings {

@@ -5,6 +5,7 @@
 
 #include "app/viewer/scene_summary.h"
 #include "backends/backend.h"
+#include "backends/film_filters.h"
 #include "scene/animation_player.h"
 #include "scene/material_overrides.h"
 
@@ -51,7 +52,7 @@ class RenderSession {
   // Starts or stops accumulating the AOVs; a change restarts the accumulation.
   void setAovsEnabled(bool enabled);
   // The accumulated image through the backend's a-trous denoiser (AOVs enabled).
-  Image atrousImage(const AtrousParams& params) const { return backend_->readAtrousDenoised(params); }
+  Image atrousImage(const AtrousParams& params) const { return backend_->filters().atrous(params); }
   const Backend& backend() const { return *backend_; }
 
  private:

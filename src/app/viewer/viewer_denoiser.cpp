@@ -49,6 +49,8 @@ Image ViewerDenoiser::apply(const RenderSession& session, DenoiserChoice choice,
     case DenoiserChoice::Optix:
       if (!optix_) throw std::logic_error("the OptiX AI denoiser was not prepared");
       return optix_(session.image(), session.backend().readAovs());
+    case DenoiserChoice::Bilateral:
+    case DenoiserChoice::Temporal: break;  // not among kViewerDenoiserChoices
   }
   throw std::logic_error("unknown denoiser");
 }
@@ -63,7 +65,7 @@ Image ViewerDenoiser::atrous(const RenderSession& session, const AtrousParams& p
   temporalParams.atrous = params;
   temporalParams.maxHistory = float(kTemporalSamples);
   if (!temporal_ || temporalBackend_ != &session.backend() || temporal_->params().atrous.passes != params.passes) {
-    temporal_ = session.backend().makeTemporalDenoiser(temporalParams);
+    temporal_ = session.backend().filters().temporal(temporalParams);
     temporalBackend_ = &session.backend();
   }
   return temporal_->denoise(session.camera(), /*filmContinues=*/!restarted);

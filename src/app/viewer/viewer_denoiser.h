@@ -5,6 +5,7 @@
 
 #include "app/viewer/post_settings.h"
 #include "app/viewer/render_session.h"
+#include "backends/film_filters.h"
 
 namespace candela {
 

@@ -2,6 +2,7 @@
 #include <memory>
 
 #include "backends/backend.h"
+#include "backends/film_filters.h"
 #include "backends/cpu/embree_scene.h"
 #include "backends/cpu/host_film.h"
 #include "scene/flat_scene.h"
@@ -35,6 +36,7 @@ class CpuBackend final : public Backend {
   void setAovsEnabled(bool enabled) override;
   bool aovsEnabled() const override { return aovsEnabled_; }
   AovImages readAovs() const override;
+  const FilmFilters& filters() const override { return filters_; }
 
  private:
   void restart();
@@ -49,6 +51,7 @@ class CpuBackend final : public Backend {
   HostFilm film_;
   uint32_t accumulated_ = 0;
   uint32_t nextSample_ = 0;
+  HostFilmFilters filters_{*this};
 };
 
 }  // namespace candela

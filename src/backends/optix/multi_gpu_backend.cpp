@@ -5,6 +5,7 @@
 #include <functional>
 #include <stdexcept>
 
+#include "backends/film_filters.h"
 #include "backends/optix/cuda_devices.h"
 #include "backends/optix/optix_error.h"
 
@@ -57,12 +58,38 @@ class CombiningTemporalDenoiser : public TemporalDenoiser {
 
 }  // namespace
 
+// The first device's filters, each run once the other devices' films are added to its own.
+class MultiGpuBackend::CombinedFilmFilters final : public FilmFilters {
+ public:
+  explicit CombinedFilmFilters(const MultiGpuBackend& backend) : backend_(backend) {}
+
+  Image atrous(const AtrousParams& params) const override {
+    backend_.mergeFilms();
+    CurrentDevice device(backend_.ordinals_[0]);
+    return backend_.devices_[0]->filters().atrous(params);
+  }
+  Image bilateral(const BilateralParams& params) const override {
+    backend_.mergeFilms();
+    CurrentDevice device(backend_.ordinals_[0]);
+    return backend_.devices_[0]->filters().bilateral(params);
+  }
+  std::unique_ptr<TemporalDenoiser> temporal(const TemporalParams& params) const override {
+    CurrentDevice device(backend_.ordinals_[0]);
+    return std::make_unique<CombiningTemporalDenoiser>(backend_.devices_[0]->filters().temporal(params),
+                                                       [this] { backend_.mergeFilms(); }, backend_.ordinals_[0]);
+  }
+
+ private:
+  const MultiGpuBackend& backend_;
+};
+
 MultiGpuBackend::MultiGpuBackend(const std::vector<int>& deviceIndices)
     : ordinals_(deviceIndices),
       threads_(deviceIndices.size()),
       devices_(deviceIndices.size()),
       balance_(deviceIndices.size()),
-      unmerged_(deviceIndices.size()) {
+      unmerged_(deviceIndices.size()),
+      filters_(std::make_unique<CombinedFilmFilters>(*this)) {
   if (deviceIndices.size() < 2) throw std::logic_error("MultiGpuBackend needs two devices at least");
   try {
     // Each context is made on its own thread, which keeps that device current.
@@ -234,23 +261,7 @@ AovImages MultiGpuBackend::readAovs() const {
   return devices_[0]->readAovs();
 }
 
-Image MultiGpuBackend::readAtrousDenoised(const AtrousParams& params) const {
-  mergeFilms();
-  CurrentDevice device(ordinals_[0]);
-  return devices_[0]->readAtrousDenoised(params);
-}
-
-Image MultiGpuBackend::readBilateralFiltered(const BilateralParams& params) const {
-  mergeFilms();
-  CurrentDevice device(ordinals_[0]);
-  return devices_[0]->readBilateralFiltered(params);
-}
-
-std::unique_ptr<TemporalDenoiser> MultiGpuBackend::makeTemporalDenoiser(const TemporalParams& params) const {
-  CurrentDevice device(ordinals_[0]);
-  return std::make_unique<CombiningTemporalDenoiser>(
-      devices_[0]->makeTemporalDenoiser(params), [this] { mergeFilms(); }, ordinals_[0]);
-}
+const FilmFilters& MultiGpuBackend::filters() const { return *filters_; }
 
 std::array<unsigned char, 16> MultiGpuBackend::deviceUuid() const { return devices_[0]->deviceUuid(); }
 

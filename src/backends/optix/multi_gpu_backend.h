@@ -53,10 +53,8 @@ class MultiGpuBackend final : public Backend, public DeviceImage {
   void setAovsEnabled(bool enabled) override;
   bool aovsEnabled() const override;
   AovImages readAovs() const override;
-  Image readAtrousDenoised(const AtrousParams& params) const override;
-  Image readBilateralFiltered(const BilateralParams& params) const override;
-  // The first device's filter, fed the combined film before every frame.
-  std::unique_ptr<TemporalDenoiser> makeTemporalDenoiser(const TemporalParams& params) const override;
+  // The first device's filters, on the combined film.
+  const FilmFilters& filters() const override;
   double lastCombineMilliseconds() const override { return combineMilliseconds_; }
 
   const DeviceImage* deviceImage() const override { return this; }
@@ -72,6 +70,7 @@ class MultiGpuBackend final : public Backend, public DeviceImage {
   const std::vector<DeviceShare>& lastShares() const { return lastShares_; }
 
  private:
+  class CombinedFilmFilters;
   // Runs `task` on every device at once, each on its thread with its device current.
   void onEveryDevice(const std::function<void(OptixBackend&)>& task);
   // A change every device made: the films start again.
@@ -93,6 +92,7 @@ class MultiGpuBackend final : public Backend, public DeviceImage {
   uint32_t accumulated_ = 0, nextSample_ = 0;
   mutable std::vector<RowRange> unmerged_;  // per device: rows holding sums not yet in the first device's film
   mutable double combineMilliseconds_ = 0.0;
+  std::unique_ptr<CombinedFilmFilters> filters_;
 };
 
 }  // namespace candela

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "backends/film_filters.h"
 #include "backends/optix/acceleration.h"
 #include "backends/optix/cuda_devices.h"
 #include "backends/optix/device_film.h"
@@ -248,7 +249,61 @@ struct OptixBackend::State {
   }
 };
 
-OptixBackend::OptixBackend(int deviceIndex) : state_(std::make_unique<State>(deviceIndex)) {
+// The temporal filter on the backend's film in device memory.
+class OptixBackend::DeviceTemporalDenoiser : public TemporalDenoiser {
+ public:
+  DeviceTemporalDenoiser(const OptixBackend& backend, const TemporalParams& params)
+      : backend_(backend), filter_(params) {}
+  Image denoise(const Camera& camera, bool filmContinues) override {
+    State& s = *backend_.state_;
+    if (!s.aovsEnabled) throw std::logic_error("the temporal filter without setAovsEnabled(true)");
+    filter_.run(s.film.view(), s.settings.width, s.settings.height, camera, s.accumulated, filmContinues,
+                s.filterOutput(), s.context.stream());
+    return s.downloadFiltered();
+  }
+  void reset() override { filter_.reset(); }
+  const TemporalParams& params() const override { return filter_.params(); }
+
+ private:
+  const OptixBackend& backend_;
+  CudaTemporal filter_;
+};
+
+// The CUDA filters on the film in device memory; only their result is read back.
+class OptixBackend::DeviceFilmFilters final : public FilmFilters {
+ public:
+  explicit DeviceFilmFilters(const OptixBackend& backend) : backend_(backend) {}
+
+  Image atrous(const AtrousParams& params) const override {
+    State& s = *backend_.state_;
+    if (!s.aovsEnabled) throw std::logic_error("the a-trous filter without setAovsEnabled(true)");
+    validateAtrousParams(params);
+    if (!s.atrous || s.atrous->width() != s.settings.width || s.atrous->height() != s.settings.height) {
+      s.atrous.reset();
+      s.atrous = std::make_unique<CudaAtrous>(s.settings.width, s.settings.height);
+    }
+    s.atrous->run(s.film.view(), nullptr, nullptr, s.filterOutput(), params, s.context.stream());
+    return s.downloadFiltered();
+  }
+
+  Image bilateral(const BilateralParams& params) const override {
+    State& s = *backend_.state_;
+    if (!s.aovsEnabled) throw std::logic_error("the bilateral filter without setAovsEnabled(true)");
+    validateBilateralParams(params);
+    cudaBilateral(s.film.view(), s.filterOutput(), s.settings.width, s.settings.height, params, s.context.stream());
+    return s.downloadFiltered();
+  }
+
+  std::unique_ptr<TemporalDenoiser> temporal(const TemporalParams& params) const override {
+    return std::make_unique<DeviceTemporalDenoiser>(backend_, params);
+  }
+
+ private:
+  const OptixBackend& backend_;
+};
+
+OptixBackend::OptixBackend(int deviceIndex)
+    : state_(std::make_unique<State>(deviceIndex)), filters_(std::make_unique<DeviceFilmFilters>(*this)) {
   std::fprintf(stderr, "optix: %s\n", deviceDescription().c_str());
   setSettings(RenderSettings{});
 }
@@ -376,49 +431,7 @@ AovImages OptixBackend::readAovs() const {
   return s.film.readAovs();
 }
 
-Image OptixBackend::readAtrousDenoised(const AtrousParams& params) const {
-  State& s = *state_;
-  if (!s.aovsEnabled) throw std::logic_error("OptixBackend::readAtrousDenoised without setAovsEnabled(true)");
-  validateAtrousParams(params);
-  if (!s.atrous || s.atrous->width() != s.settings.width || s.atrous->height() != s.settings.height) {
-    s.atrous.reset();
-    s.atrous = std::make_unique<CudaAtrous>(s.settings.width, s.settings.height);
-  }
-  s.atrous->run(s.film.view(), nullptr, nullptr, s.filterOutput(), params, s.context.stream());
-  return s.downloadFiltered();
-}
-
-Image OptixBackend::readBilateralFiltered(const BilateralParams& params) const {
-  State& s = *state_;
-  if (!s.aovsEnabled) throw std::logic_error("OptixBackend::readBilateralFiltered without setAovsEnabled(true)");
-  validateBilateralParams(params);
-  cudaBilateral(s.film.view(), s.filterOutput(), s.settings.width, s.settings.height, params, s.context.stream());
-  return s.downloadFiltered();
-}
-
-// The temporal filter on the backend's film in device memory.
-class OptixBackend::DeviceTemporalDenoiser : public TemporalDenoiser {
- public:
-  DeviceTemporalDenoiser(const OptixBackend& backend, const TemporalParams& params)
-      : backend_(backend), filter_(params) {}
-  Image denoise(const Camera& camera, bool filmContinues) override {
-    State& s = *backend_.state_;
-    if (!s.aovsEnabled) throw std::logic_error("the temporal filter without setAovsEnabled(true)");
-    filter_.run(s.film.view(), s.settings.width, s.settings.height, camera, s.accumulated, filmContinues,
-                s.filterOutput(), s.context.stream());
-    return s.downloadFiltered();
-  }
-  void reset() override { filter_.reset(); }
-  const TemporalParams& params() const override { return filter_.params(); }
-
- private:
-  const OptixBackend& backend_;
-  CudaTemporal filter_;
-};
-
-std::unique_ptr<TemporalDenoiser> OptixBackend::makeTemporalDenoiser(const TemporalParams& params) const {
-  return std::make_unique<DeviceTemporalDenoiser>(*this, params);
-}
+const FilmFilters& OptixBackend::filters() const { return *filters_; }
 
 std::array<unsigned char, 16> OptixBackend::deviceUuid() const {
   cudaDeviceProp properties{};

@@ -54,10 +54,8 @@ class OptixBackend final : public Backend, public DeviceImage {
   bool aovsEnabled() const override;
   AovImages readAovs() const override;
   // The CUDA versions of the CPU filters, run on the film in device memory; only the result comes back.
-  Image readAtrousDenoised(const AtrousParams& params) const override;
-  Image readBilateralFiltered(const BilateralParams& params) const override;
   // The CUDA version of the temporal filter, its history kept in device memory; only the result comes back.
-  std::unique_ptr<TemporalDenoiser> makeTemporalDenoiser(const TemporalParams& params) const override;
+  const FilmFilters& filters() const override;
 
   // The image stays on the GPU for consumers there (CUDA-OpenGL interop).
   const DeviceImage* deviceImage() const override { return this; }
@@ -85,8 +83,10 @@ class OptixBackend final : public Backend, public DeviceImage {
 
  private:
   class DeviceTemporalDenoiser;
+  class DeviceFilmFilters;
   struct State;
   std::unique_ptr<State> state_;
+  std::unique_ptr<DeviceFilmFilters> filters_;
 };
 
 }  // namespace candela
