@@ -7,6 +7,8 @@
 #include "app/device_list.h"
 #include "app/schedule/sample_dispenser.h"
 #include "backends/backend.h"
+#include "image/filters/atrous.h"
+#include "image/filters/bilateral.h"
 #include "io/images/aov_io.h"
 #include "scene/cache/scene_cache.h"
 #include "io/path_confinement.h"
