@@ -37,7 +37,9 @@ constexpr bool kOptixBackend = false;
 TEST(DenoiserChoice, OptixOnlyWithTheOptixBackend) {
   EXPECT_EQ(inThisBuild(DenoiserChoice::Optix), kOptixBackend);
   EXPECT_EQ(notInThisBuild(DenoiserChoice::Optix).empty(), kOptixBackend);
-  if (!kOptixBackend) EXPECT_THROW(FilmDenoiser(DenoiserChoice::Optix, {}), std::runtime_error);
+  if (!kOptixBackend) {
+    EXPECT_THROW(FilmDenoiser(DenoiserChoice::Optix, {}), std::runtime_error);
+  }
 }
 
 // A small Cornell box on the CPU with the AOVs, for the film denoiser to read.

@@ -13,7 +13,8 @@ FilmDenoiser::FilmDenoiser(DenoiserChoice choice, const DenoiserParams& params) 
   if (!inThisBuild(choice)) throw std::runtime_error(notInThisBuild(choice));
 }
 
-Image FilmDenoiser::apply(const Backend& backend, const Camera& camera, bool filmContinues, const AovImages* aovs) {
+Image FilmDenoiser::apply(const Backend& backend, const Camera& camera, bool filmContinues,
+                          [[maybe_unused]] const AovImages* aovs) {
   switch (choice_) {
     case DenoiserChoice::None: return backend.readImage();
     case DenoiserChoice::Atrous: return backend.filters().atrous(params_.atrous);
