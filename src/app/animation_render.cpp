@@ -9,8 +9,8 @@
 #include "app/schedule/render_team.h"
 #include "io/atomic_file.h"
 #include "io/images/aov_io.h"
-#include "scene/animation_player.h"
 #include "io/load_diagnostics.h"
+#include "scene/animation_player.h"
 
 namespace candela {
 

@@ -25,11 +25,11 @@
 #include "app/serve/serve.h"
 #include "app/viewer/viewer.h"
 #include "io/atomic_file.h"
+#include "io/file_bytes.h"
 #include "io/images/aov_io.h"
 #include "io/images/image_io.h"
-#include "scene/builtin_scenes.h"
-#include "io/file_bytes.h"
 #include "io/load_diagnostics.h"
+#include "scene/builtin_scenes.h"
 #if CANDELA_HAS_MPI
 #include "app/distributed/distributed_render.h"
 #endif
@@ -530,7 +530,8 @@ void addViewOptions(CLI::App& cmd, ViewerOptions& options, std::string& toneMapp
       ->check(CLI::Range(1u, 1024u))
       ->capture_default_str();
   cmd.add_option("--exposure", options.post.display.exposure, "Exposure in stops")->capture_default_str();
-  addDenoiserOption(cmd, options.post.denoiser, kViewerDenoiserChoices, "Denoiser to start with (the panel switches it)");
+  addDenoiserOption(cmd, options.post.denoiser, kViewerDenoiserChoices,
+                    "Denoiser to start with (the panel switches it)");
   addToneMapperOption(cmd, toneMapper);
   CLI::Option* frames =
       cmd.add_option("--frames", options.frames, "Render this many frames, then exit (0: until the window closes)")

@@ -27,9 +27,7 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-bool needsAovs(const RenderJob& job) {
-  return !job.aovs.empty() || needsAovs(job.denoiser);
-}
+bool needsAovs(const RenderJob& job) { return !job.aovs.empty() || needsAovs(job.denoiser); }
 
 void readResult(const Backend& backend, const RenderJob& job, const Camera& camera, RenderOutcome& outcome) {
   FilmDenoiser denoiser(job.denoiser, {job.atrous, job.bilateral, {}});

@@ -10,8 +10,8 @@
 #include "image/filters/atrous.h"
 #include "image/filters/bilateral.h"
 #include "io/images/aov_io.h"
-#include "scene/cache/scene_cache.h"
 #include "io/path_confinement.h"
+#include "scene/cache/scene_cache.h"
 #include "scene/loaders/texture_limits.h"
 #include "scene/material_overrides.h"
 #include "scene/scene.h"
@@ -36,8 +36,8 @@ struct RenderJob {
   std::string backend = "auto";
   DeviceRequest devices;  // the GPUs of the optix backend
   MaterialOverrides materialOverrides;
-  uint32_t warmupFrames = 0;      // untimed launches before the timed ones
-  bool rawTrace = false;          // also time the backend's raw-trace mode (optix only)
+  uint32_t warmupFrames = 0;  // untimed launches before the timed ones
+  bool rawTrace = false;      // also time the backend's raw-trace mode (optix only)
   DenoiserChoice denoiser = DenoiserChoice::None;
   AtrousParams atrous;
   BilateralParams bilateral;

@@ -8,10 +8,10 @@
 
 #include "core/bounds.h"
 #include "core/file_extension.h"
-#include "scene/builtin_scenes.h"
-#include "scene/loaders/gltf/gltf_loader.h"
 #include "io/images/image_decoding.h"
 #include "io/load_diagnostics.h"
+#include "scene/builtin_scenes.h"
+#include "scene/loaders/gltf/gltf_loader.h"
 #include "scene/loaders/obj/obj_loader.h"
 #include "scene/loaders/pbrt/pbrt_loader.h"
 #include "scene/loaders/scene_file.h"

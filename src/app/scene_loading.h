@@ -1,8 +1,8 @@
 #pragma once
 #include <string>
 
-#include "scene/cache/scene_cache.h"
 #include "io/path_confinement.h"
+#include "scene/cache/scene_cache.h"
 #include "scene/loaders/texture_limits.h"
 #include "scene/scene.h"
 

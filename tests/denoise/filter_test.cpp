@@ -10,11 +10,11 @@
 #include <filesystem>
 #include <random>
 
-#include "io/images/aov_io.h"
 #include "image/filters/atrous.h"
 #include "image/filters/atrous_kernel.h"
 #include "image/filters/fast_exp.h"
 #include "image/tonemap.h"
+#include "io/images/aov_io.h"
 
 namespace candela {
 namespace {

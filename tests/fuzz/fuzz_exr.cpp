@@ -3,9 +3,9 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "scene/environment_distribution.h"
 #include "io/images/exr_decoding.h"
 #include "io/load_diagnostics.h"
+#include "scene/environment_distribution.h"
 
 // Larger images take the same paths through OpenEXR and candela, only for longer: OpenEXR decodes every image it
 // accepts in full, so images of millions of pixels (a few hundred bytes can claim them) kept the fuzzer at 10

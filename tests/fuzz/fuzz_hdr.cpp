@@ -3,9 +3,9 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "scene/environment_distribution.h"
 #include "io/images/image_decoding.h"
 #include "io/load_diagnostics.h"
+#include "scene/environment_distribution.h"
 #include "texture_decoding_target.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -6,8 +6,8 @@
 
 #include "io/images/image_decoding.h"
 #include "io/images/jpeg_decoding.h"
-#include "io/load_diagnostics.h"
 #include "io/images/png_decoding.h"
+#include "io/load_diagnostics.h"
 
 namespace candela::fuzz {
 

@@ -6,8 +6,8 @@
 #include <limits>
 #include <set>
 
-#include "kernel/bsdf/ggx.h"
 #include "io/file_bytes.h"
+#include "kernel/bsdf/ggx.h"
 #include "scene/loaders/gltf/gltf_draco.h"
 #include "scene/loaders/gltf/gltf_loader.h"
 #include "scene/loaders/gltf/gltf_specular_glossiness.h"

@@ -7,8 +7,8 @@
 #include <array>
 #include <cstring>
 
-#include "scene/loaders/gltf/gltf_loader.h"
 #include "io/load_diagnostics.h"
+#include "scene/loaders/gltf/gltf_loader.h"
 #include "support/glb_file.h"
 
 namespace candela {

@@ -6,10 +6,10 @@
 
 #include <filesystem>
 
-#include "scene/cache/scene_cache.h"
 #include "io/file_bytes.h"
-#include "scene/loaders/gltf/gltf_loader.h"
 #include "io/images/image_decoding.h"
+#include "scene/cache/scene_cache.h"
+#include "scene/loaders/gltf/gltf_loader.h"
 #include "scene/loaders/obj/obj_loader.h"
 #include "scene/loaders/obj/obj_text_source.h"
 #include "scene/loaders/scene_file.h"

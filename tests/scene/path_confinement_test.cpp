@@ -10,9 +10,9 @@
 #include <filesystem>
 #include <fstream>
 
+#include "io/path_confinement.h"
 #include "scene/loaders/gltf/gltf_loader.h"
 #include "scene/loaders/obj/obj_loader.h"
-#include "io/path_confinement.h"
 #include "scene/loaders/scene_file.h"
 #include "scene/scene_test_files.h"
 

@@ -11,8 +11,8 @@
 
 #include "app/render_job.h"
 #include "app/scene_loading.h"
-#include "scene/builtin_scenes.h"
 #include "io/load_diagnostics.h"
+#include "scene/builtin_scenes.h"
 #include "scene/loaders/pbrt/pbrt_lights.h"
 #include "scene/loaders/pbrt/pbrt_spectra.h"
 #include "scene/loaders/pbrt/pbrt_spectrum_files.h"

@@ -4,9 +4,9 @@
 #include <filesystem>
 
 #include "app/scene_loading.h"
+#include "io/file_bytes.h"
 #include "kernel/camera.h"
 #include "scene/cache/scene_cache.h"
-#include "io/file_bytes.h"
 #include "scene/loaders/gltf/gltf_loader.h"
 #include "scene/loaders/obj/obj_loader.h"
 #include "scene/loaders/scene_file.h"

@@ -4,10 +4,10 @@
 
 #include "app/render_job.h"
 #include "app/scene_loading.h"
-#include "scene/environment_distribution.h"
 #include "io/file_bytes.h"
 #include "io/images/image_decoding.h"
 #include "io/load_diagnostics.h"
+#include "scene/environment_distribution.h"
 #include "scene/scene_test_files.h"
 
 namespace candela {

@@ -68,8 +68,8 @@ TEST(FilmDenoiser, AppliesTheBackendsFilmFilters) {
     return a.pixels.size() == b.pixels.size() &&
            std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(Vec3)) == 0;
   };
-  EXPECT_TRUE(same(FilmDenoiser(DenoiserChoice::None, params).apply(box.backend, box.camera, false),
-                   box.backend.readImage()));
+  EXPECT_TRUE(
+      same(FilmDenoiser(DenoiserChoice::None, params).apply(box.backend, box.camera, false), box.backend.readImage()));
   EXPECT_TRUE(same(FilmDenoiser(DenoiserChoice::Atrous, params).apply(box.backend, box.camera, false),
                    box.backend.filters().atrous(params.atrous)));
   EXPECT_TRUE(same(FilmDenoiser(DenoiserChoice::Bilateral, params).apply(box.backend, box.camera, false),

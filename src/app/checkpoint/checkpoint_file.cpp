@@ -11,10 +11,10 @@
 #include <stdexcept>
 
 #include "io/atomic_file.h"
-#include "io/images/exr_memory_stream.h"
-#include "kernel/film.h"
 #include "io/file_bytes.h"
+#include "io/images/exr_memory_stream.h"
 #include "io/load_diagnostics.h"
+#include "kernel/film.h"
 
 namespace candela {
 

@@ -14,9 +14,8 @@ enum class DenoiserChoice {
   Optix,      // the OptiX AI denoiser, from the image and the albedo and normal guides read back
 };
 
-constexpr DenoiserChoice kDenoiserChoices[] = {DenoiserChoice::None, DenoiserChoice::Atrous,
-                                               DenoiserChoice::Bilateral, DenoiserChoice::Temporal,
-                                               DenoiserChoice::Optix};
+constexpr DenoiserChoice kDenoiserChoices[] = {DenoiserChoice::None, DenoiserChoice::Atrous, DenoiserChoice::Bilateral,
+                                               DenoiserChoice::Temporal, DenoiserChoice::Optix};
 
 // "none", "atrous", "bilateral", "temporal" or "optix".
 constexpr const char* denoiserName(DenoiserChoice choice) {

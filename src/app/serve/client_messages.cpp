@@ -77,7 +77,7 @@ constexpr const char* kDenoiserNames[] = {"none", "atrous", "optix"};      // kV
 static_assert(std::size(kDenoiserNames) == std::size(kViewerDenoiserChoices));
 static_assert(std::string_view(kDenoiserNames[1]) == denoiserName(kViewerDenoiserChoices[1]) &&
               std::string_view(kDenoiserNames[2]) == denoiserName(kViewerDenoiserChoices[2]));
-constexpr const char* kButtonNames[] = {"left", "right", "middle"};        // MouseButton's order
+constexpr const char* kButtonNames[] = {"left", "right", "middle"};  // MouseButton's order
 constexpr const char* kPointerActions[] = {"down", "up", "move"};
 constexpr const char* kActionNames[] = {"frame", "reset", "screenshot", "save_view", "take_control"};
 

@@ -7,9 +7,9 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "io/atomic_file.h"
 #include "core/file_extension.h"
 #include "image/filters/bilateral.h"
+#include "io/atomic_file.h"
 #include "io/images/image_io.h"
 
 namespace candela {

@@ -2,9 +2,9 @@
 #include <memory>
 
 #include "backends/backend.h"
-#include "backends/film_filters.h"
 #include "backends/cpu/embree_scene.h"
 #include "backends/cpu/host_film.h"
+#include "backends/film_filters.h"
 #include "scene/flat_scene.h"
 
 namespace candela {

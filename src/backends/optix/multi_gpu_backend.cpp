@@ -75,8 +75,8 @@ class MultiGpuBackend::CombinedFilmFilters final : public FilmFilters {
   }
   std::unique_ptr<TemporalDenoiser> temporal(const TemporalParams& params) const override {
     CurrentDevice device(backend_.ordinals_[0]);
-    return std::make_unique<CombiningTemporalDenoiser>(backend_.devices_[0]->filters().temporal(params),
-                                                       [this] { backend_.mergeFilms(); }, backend_.ordinals_[0]);
+    return std::make_unique<CombiningTemporalDenoiser>(
+        backend_.devices_[0]->filters().temporal(params), [this] { backend_.mergeFilms(); }, backend_.ordinals_[0]);
   }
 
  private:

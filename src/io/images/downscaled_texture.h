@@ -2,8 +2,8 @@
 #include <cstdint>
 #include <string>
 
-#include "io/images/area_downscaler.h"
 #include "image/texture.h"
+#include "io/images/area_downscaler.h"
 
 namespace candela {
 

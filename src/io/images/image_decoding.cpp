@@ -8,13 +8,13 @@
 #include <memory>
 
 #include "core/file_extension.h"
+#include "io/file_bytes.h"
 #include "io/images/area_downscaler.h"
 #include "io/images/exr_decoding.h"
-#include "io/file_bytes.h"
 #include "io/images/jpeg_decoding.h"
-#include "io/load_diagnostics.h"
 #include "io/images/png_decoding.h"
 #include "io/images/webp_decoding.h"
+#include "io/load_diagnostics.h"
 
 namespace candela {
 

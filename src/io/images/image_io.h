@@ -3,9 +3,9 @@
 #include <utility>
 #include <vector>
 
-#include "io/atomic_file.h"
-#include "image/image.h"
 #include "image/display_settings.h"
+#include "image/image.h"
+#include "io/atomic_file.h"
 
 namespace candela {
 

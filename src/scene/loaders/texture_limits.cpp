@@ -5,8 +5,8 @@
 #include <cmath>
 #include <type_traits>
 
-#include "kernel/texture.h"
 #include "io/images/area_downscaler.h"
+#include "kernel/texture.h"
 
 namespace candela {
 

@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
+#include "io/load_diagnostics.h"
 #include "scene/animation.h"
 #include "scene/loaders/gltf/gltf_accessors.h"
-#include "io/load_diagnostics.h"
 
 namespace candela {
 

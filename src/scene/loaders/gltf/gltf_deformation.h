@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/loaders/gltf/gltf_accessors.h"
 #include "io/load_diagnostics.h"
+#include "scene/loaders/gltf/gltf_accessors.h"
 #include "scene/mesh_deformation.h"
 
 namespace candela {

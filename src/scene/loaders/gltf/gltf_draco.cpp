@@ -9,8 +9,8 @@
 #include <cstring>
 #include <string_view>
 
-#include "scene/loaders/gltf/gltf_glb.h"
 #include "io/load_diagnostics.h"
+#include "scene/loaders/gltf/gltf_glb.h"
 
 namespace candela {
 

@@ -17,8 +17,10 @@
 #include <sstream>
 #include <tuple>
 
-#include "scene/animation_player.h"
 #include "io/file_bytes.h"
+#include "io/images/image_decoding.h"
+#include "io/path_confinement.h"
+#include "scene/animation_player.h"
 #include "scene/loaders/gltf/gltf_accessors.h"
 #include "scene/loaders/gltf/gltf_animation.h"
 #include "scene/loaders/gltf/gltf_buffer_uris.h"
@@ -27,8 +29,6 @@
 #include "scene/loaders/gltf/gltf_extensions.h"
 #include "scene/loaders/gltf/gltf_materials.h"
 #include "scene/loaders/gltf/gltf_meshopt.h"
-#include "io/images/image_decoding.h"
-#include "io/path_confinement.h"
 #include "scene/loaders/texture_table.h"
 #include "scene/scene_repair.h"
 #include "scene/transform.h"

@@ -8,8 +8,8 @@
 #include <string_view>
 #include <vector>
 
-#include "scene/loaders/gltf/gltf_glb.h"
 #include "io/load_diagnostics.h"
+#include "scene/loaders/gltf/gltf_glb.h"
 
 namespace candela {
 

@@ -3,8 +3,8 @@
 #include <string_view>
 
 #include "io/load_diagnostics.h"
-#include "scene/loaders/obj/obj_geometry_reader.h"
 #include "io/path_confinement.h"
+#include "scene/loaders/obj/obj_geometry_reader.h"
 #include "scene/loaders/shared_model_assets.h"
 #include "scene/scene.h"
 

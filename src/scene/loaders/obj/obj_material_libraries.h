@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "io/load_diagnostics.h"
-#include "scene/loaders/obj/obj_geometry_reader.h"
 #include "io/path_confinement.h"
+#include "scene/loaders/obj/obj_geometry_reader.h"
 
 namespace candela {
 
