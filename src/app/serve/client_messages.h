@@ -7,8 +7,8 @@
 #include <variant>
 #include <vector>
 
-#include "app/viewer/camera_input.h"
-#include "app/viewer/post_settings.h"
+#include "app/interactive/camera_input.h"
+#include "app/interactive/post_settings.h"
 #include "scene/material_overrides.h"
 
 namespace candela {

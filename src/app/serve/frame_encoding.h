@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "app/viewer/post_settings.h"
+#include "app/interactive/post_settings.h"
 #include "image/image.h"
 
 namespace candela {

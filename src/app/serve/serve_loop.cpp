@@ -5,9 +5,9 @@
 #include <stdexcept>
 
 #include "app/backend_factory.h"
+#include "app/interactive/viewer_files.h"
 #include "app/scene_loading.h"
 #include "app/serve/frame_encoding.h"
-#include "app/viewer/viewer_files.h"
 
 namespace candela {
 

@@ -6,15 +6,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/interactive/camera_input.h"
+#include "app/interactive/interactive_policy.h"
+#include "app/interactive/orbit_camera.h"
+#include "app/interactive/render_session.h"
+#include "app/interactive/viewer_controls.h"
+#include "app/interactive/viewer_denoiser.h"
 #include "app/serve/client_hub.h"
 #include "app/serve/serve_options.h"
 #include "app/serve/stream_quality.h"
-#include "app/viewer/camera_input.h"
-#include "app/viewer/interactive_policy.h"
-#include "app/viewer/orbit_camera.h"
-#include "app/viewer/render_session.h"
-#include "app/viewer/viewer_controls.h"
-#include "app/viewer/viewer_denoiser.h"
 
 namespace candela {
 

@@ -3,7 +3,7 @@
 #include <string>
 
 #include "app/device_list.h"
-#include "app/viewer/post_settings.h"
+#include "app/interactive/post_settings.h"
 #include "core/path_sampler.h"
 #include "kernel/render_settings.h"
 #include "scene/cache/scene_cache.h"

@@ -10,16 +10,16 @@
 #include <vector>
 
 #include "app/backend_factory.h"
+#include "app/interactive/camera_input.h"
+#include "app/interactive/interactive_policy.h"
+#include "app/interactive/orbit_camera.h"
+#include "app/interactive/render_session.h"
+#include "app/interactive/viewer_denoiser.h"
+#include "app/interactive/viewer_files.h"
 #include "app/scene_loading.h"
-#include "app/viewer/camera_input.h"
 #include "app/viewer/glfw_window.h"
 #include "app/viewer/image_display.h"
 #include "app/viewer/image_transfer.h"
-#include "app/viewer/interactive_policy.h"
-#include "app/viewer/orbit_camera.h"
-#include "app/viewer/render_session.h"
-#include "app/viewer/viewer_denoiser.h"
-#include "app/viewer/viewer_files.h"
 #include "app/viewer/viewer_panel.h"
 #include "app/viewer/window_capture.h"
 

@@ -3,7 +3,7 @@
 #include <memory>
 #include <optional>
 
-#include "app/viewer/scene_summary.h"
+#include "app/interactive/scene_summary.h"
 #include "backends/backend.h"
 #include "scene/animation_player.h"
 #include "scene/material_overrides.h"

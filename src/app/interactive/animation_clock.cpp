@@ -1,4 +1,4 @@
-#include "app/viewer/animation_clock.h"
+#include "app/interactive/animation_clock.h"
 
 #include <algorithm>
 #include <cmath>

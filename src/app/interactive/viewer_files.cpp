@@ -1,4 +1,4 @@
-#include "app/viewer/viewer_files.h"
+#include "app/interactive/viewer_files.h"
 
 #include <nlohmann/json.hpp>
 
