@@ -65,7 +65,7 @@ TEST(ClientMessages, DropsMalformedMessagesWithAReason) {
                            R"({"type":"resize","width":100.5,"height":100})",
                            R"({"type":"resize","width":100})",
                            R"({"type":"settings","max_depth":0})",
-                           R"({"type":"settings","max_depth":65})",
+                           R"({"type":"settings","max_depth":1025})",
                            R"({"type":"settings","samples_per_frame":true})",
                            R"({"type":"settings","exposure":"bright"})",
                            R"({"type":"settings","tonemap":"filmic"})",

@@ -7,9 +7,9 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "app/interactive/post_filter.h"
 #include "core/atomic_file.h"
 #include "core/file_extension.h"
-#include "image/filters/bilateral.h"
 #include "image/image_io.h"
 
 namespace candela {
@@ -27,12 +27,7 @@ void writeJson(const std::string& path, const nlohmann::ordered_json& json) {
 
 void saveScreenshot(const std::string& path, const Image& accumulated, const Image& emission,
                     const PostSettings& post) {
-  if (post.bilateral && emission.pixels.empty())
-    writeImage(path, bilateralFilter(accumulated, post.bilateralParams), post.display);
-  else if (post.bilateral)
-    writeImage(path, bilateralFilter(accumulated, emission, post.bilateralParams), post.display);
-  else
-    writeImage(path, accumulated, post.display);
+  writeImage(path, postFiltered(accumulated, emission, post), post.display);
 }
 
 namespace {
