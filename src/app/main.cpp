@@ -20,6 +20,8 @@
 #include "app/checkpoint/duration.h"
 #include "app/checkpoint/stop_signals.h"
 #include "app/distributed/mpi_launch.h"
+#include "app/interactive/interactive_cli.h"
+#include "app/interactive/viewer_denoiser.h"
 #include "app/render_job.h"
 #include "app/scene_loading.h"
 #include "app/serve/serve.h"
@@ -507,47 +509,43 @@ int runLoad(const std::string& spec, const SceneLoadOptions& options) {
   return 0;
 }
 
-void addViewOptions(CLI::App& cmd, ViewerOptions& options, std::string& toneMapper) {
+// The options `candela view` and `candela serve` share (app/interactive/interactive_options.h), declared once for
+// both, so that each names them with the same defaults and limits.
+void addInteractiveCommandOptions(CLI::App& cmd, InteractiveOptions& options) {
   addSceneOptions(cmd, options.sceneSpec, options.environmentPath, options.camera);
   addSceneInputOptions(cmd, options.sceneCache, options.outsidePaths);
   addTextureLimitOptions(cmd, options.textureLimits);
   addBackendOptions(cmd, options.backend, options.devices);
+  addRandomSequenceOptions(cmd, options.seed, options.sampler);
+  addLightSamplerOption(cmd, options.lightSampler);
+  addInteractiveOptions(cmd, options);
+}
+
+// Fails early, before the window opens or the port is bound, on what the shared options cannot do.
+void checkInteractiveOptions(const InteractiveOptions& options) {
+  if (!options.screenshot.empty()) checkOutputPath(options.screenshot);
+  if (options.post.denoiser == DenoiserChoice::Optix && !ViewerDenoiser::optixInThisBuild())
+    throw std::runtime_error(
+        "--denoise optix needs the OptiX backend, which is not in this build (see README, "
+        "'GPU backend')");
+}
+
+void addViewOptions(CLI::App& cmd, ViewerOptions& options) {
+  addInteractiveCommandOptions(cmd, options.interactive);
   cmd.add_flag_callback(
       "--no-interop", [&options] { options.interop = false; },
       "OptiX backend: show the image through a copy to the host, not CUDA-OpenGL interop");
-  cmd.add_option("--width", options.width, "Image width in pixels; the panel sits beside the image")
-      ->check(CLI::Range(64u, 16384u))
-      ->capture_default_str();
-  cmd.add_option("--height", options.height, "Image height in pixels")
-      ->check(CLI::Range(64u, 16384u))
-      ->capture_default_str();
-  cmd.add_option("--max-depth", options.maxDepth, "Longest path in bounces after the camera ray")
-      ->check(CLI::Range(1u, 1024u))
-      ->capture_default_str();
-  addRandomSequenceOptions(cmd, options.seed, options.sampler);
-  addLightSamplerOption(cmd, options.lightSampler);
-  cmd.add_option("--spp-per-frame", options.samplesPerFrame, "Samples per pixel added each frame at rest")
-      ->check(CLI::Range(1u, 1024u))
-      ->capture_default_str();
-  cmd.add_option("--exposure", options.post.display.exposure, "Exposure in stops")->capture_default_str();
-  addDenoiserOption(cmd, options.post.denoiser, kViewerDenoiserChoices,
-                    "Denoiser to start with (the panel switches it)");
-  addToneMapperOption(cmd, toneMapper);
-  CLI::Option* frames =
-      cmd.add_option("--frames", options.frames, "Render this many frames, then exit (0: until the window closes)")
-          ->capture_default_str();
-  cmd.add_option("--screenshot", options.screenshot, "On exit, write the accumulated image (.png, .exr or .pfm)");
   cmd.add_option("--window-capture", options.windowCapture, "After --frames, write the whole window as a .png")
-      ->needs(frames);
+      ->needs(cmd.get_option("--frames"));
   cmd.add_option("--state-file", options.stateFile, "Where F12 writes the viewer's state as JSON")
       ->capture_default_str();
 }
 
-int runView(ViewerOptions options, const std::string& toneMapper) {
-  options.post.display.toneMapper = parseToneMapper(toneMapper);
-  if (!options.screenshot.empty()) checkOutputPath(options.screenshot);
+int runView(const ViewerOptions& options) {
+  checkInteractiveOptions(options.interactive);
   if (!options.windowCapture.empty()) {
-    if (options.frames == 0) throw std::runtime_error("--window-capture needs a number of --frames to render first");
+    if (options.interactive.frames == 0)
+      throw std::runtime_error("--window-capture needs a number of --frames to render first");
     checkOutputPath(options.windowCapture);
     if (std::filesystem::path(options.windowCapture).extension() != ".png")
       throw std::runtime_error("cannot write '" + options.windowCapture + "': a window capture is a .png file");
@@ -561,39 +559,17 @@ int runView(ViewerOptions options, const std::string& toneMapper) {
 #endif
 }
 
-void addServeOptions(CLI::App& cmd, ServeOptions& options, std::string& toneMapper) {
-  cmd.add_option("scene", options.sceneSpec, "Scene file (.obj, .gltf, .glb, .pbrt, .json) or built-in scene")
-      ->capture_default_str();
-  cmd.add_option("--env", options.environmentPath, "Environment map (.hdr or .exr) that lights the scene");
-  addSceneInputOptions(cmd, options.sceneCache, options.outsidePaths);
-  addBackendOptions(cmd, options.backend, options.devices);
+void addServeOptions(CLI::App& cmd, ServeOptions& options) {
+  addInteractiveCommandOptions(cmd, options.interactive);
   cmd.add_option("--port", options.port, "TCP port to listen on (0: any free port)")->capture_default_str();
   cmd.add_option("--bind", options.bind, "Address to listen on; any but loopback requires a token")
       ->capture_default_str();
   cmd.add_option("--token", options.token,
                  "Secret every request must show (default: none on loopback, else a random one, printed)");
-  cmd.add_option("--width", options.width, "Image width until a browser reports its view's size")
-      ->check(CLI::Range(16u, 4096u))
-      ->capture_default_str();
-  cmd.add_option("--height", options.height, "Image height until a browser reports its view's size")
-      ->check(CLI::Range(16u, 4096u))
-      ->capture_default_str();
-  cmd.add_option("--max-depth", options.maxDepth, "Longest path in bounces after the camera ray")
-      ->check(CLI::Range(1u, 64u))
-      ->capture_default_str();
-  addRandomSequenceOptions(cmd, options.seed, options.sampler);
-  addLightSamplerOption(cmd, options.lightSampler);
-  cmd.add_option("--spp-per-frame", options.samplesPerFrame, "Samples per pixel added each frame at rest")
-      ->check(CLI::Range(1u, 64u))
-      ->capture_default_str();
-  cmd.add_option("--exposure", options.post.display.exposure, "Exposure in stops")->capture_default_str();
-  addToneMapperOption(cmd, toneMapper);
-  cmd.add_option("--frames", options.frames, "Send this many frames, then exit (0: until interrupted)")
-      ->capture_default_str();
 }
 
-int runServeCommand(ServeOptions options, const std::string& toneMapper) {
-  options.post.display.toneMapper = parseToneMapper(toneMapper);
+int runServeCommand(const ServeOptions& options) {
+  checkInteractiveOptions(options.interactive);
   // It travels in addresses and cookies unescaped.
   const auto plain = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_'; };
   if (!std::all_of(options.token.begin(), options.token.end(), plain))
@@ -676,14 +652,12 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1u, 4096u));
 
   ViewerOptions viewOptions;
-  std::string viewToneMapper = "aces";
   CLI::App* view = app.add_subcommand("view", "Open a window that refines the image while you move the camera");
-  addViewOptions(*view, viewOptions, viewToneMapper);
+  addViewOptions(*view, viewOptions);
 
   ServeOptions serveOptions;
-  std::string serveToneMapper = "aces";
   CLI::App* serve = app.add_subcommand("serve", "Serve the interactive viewer to web browsers (prints the address)");
-  addServeOptions(*serve, serveOptions, serveToneMapper);
+  addServeOptions(*serve, serveOptions);
 
   std::string inspectSpec;
   CLI::App* inspect = app.add_subcommand("load", "Load a scene and print its size and loading time as one JSON object");
@@ -722,8 +696,8 @@ int main(int argc, char** argv) {
       if (!animation.clip.empty()) throw std::runtime_error("--animation needs --time or --frames");
       return runRender(renderJob, output, display, rankTimeoutSeconds);
     }
-    if (*view) return runView(viewOptions, viewToneMapper);
-    if (*serve) return runServeCommand(serveOptions, serveToneMapper);
+    if (*view) return runView(viewOptions);
+    if (*serve) return runServeCommand(serveOptions);
     return runBench(benchJob);
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "candela: not enough memory for the %s command\n",

@@ -2,11 +2,16 @@
 // server on a free port (CPU backend, a small image) and a headless Chromium, and exits non-zero on failure.
 import assert from 'node:assert/strict';
 import { execFile } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { writeAnimatedScene } from './animated_scene.mjs';
 import { launchBrowser, rawGet, startServer, stopServer } from './serve_harness.mjs';
 
 const [candela, testName] = process.argv.slice(2);
-const serverArgs = ['cornell-box', '--backend', 'cpu', '--port', '0', '--max-depth', '3', '--no-cache'];
+const serverOptions = ['--backend', 'cpu', '--port', '0', '--max-depth', '3', '--no-cache'];
+const serverArgs = ['cornell-box', ...serverOptions];
 const viewport = { width: 560, height: 300 };  // the image gets what the 340-pixel panel leaves
 
 async function until(what, predicate, timeoutMs = 20000) {
@@ -46,8 +51,8 @@ const pixels = (page) => page.evaluate(() => {
 });
 const blockDifference = (a, b) => a.blocks.reduce((s, v, i) => s + Math.abs(v - b.blocks[i]), 0) / 64;
 
-async function withPage(args, body) {
-  const server = await startServer(candela, [...serverArgs, ...args]);
+async function withPage(args, body, scene = 'cornell-box') {
+  const server = await startServer(candela, [scene, ...serverOptions, ...args]);
   const browser = await launchBrowser();
   try {
     const page = await browser.newPage({ viewport });
@@ -143,6 +148,61 @@ const tests = {
       await page.click('#screenshot');
       assert.equal((await screenshot).suggestedFilename(), 'candela-view.png');
     });
+  },
+
+  // A scene's animation plays in the page as in the viewer's window: the Animation section pauses and plays it,
+  // its time slider moves it (and pauses it), its choice plays another clip from its start; --camera and
+  // --animation choose where the view and the animation start.
+  async animation() {
+    const folder = fs.mkdtempSync(path.join(os.tmpdir(), 'candela-serve-animation-'));
+    try {
+      const scene = writeAnimatedScene(folder);
+      await withPage(['--camera', 'side', '--animation', 'Rise'], async (page, server) => {
+        await page.goto(server.url);
+        const h = await nextFrame(page);
+        assert.ok(Math.abs(h.camera.position[0] - 6) < 1e-3, `--camera side: ${h.camera.position}`);
+        assert.equal(h.controls.animation, 1, '--animation Rise plays the second clip');
+        assert.deepEqual((await page.evaluate(() => window.candela.hello.animations)).map((a) => a.name),
+                         ['Slide', 'Rise']);
+        assert.ok(await page.isVisible('#animation-choice'), 'two clips: the page offers the choice');
+      }, scene);
+
+      await withPage([], async (page, server) => {
+        await page.goto(server.url);
+        const first = await nextFrame(page);
+        assert.ok(first.controls.playing, 'the animation plays from the start');
+        await until('the animation to move on', async () => (await header(page)).controls.animation_time !==
+                                                           first.controls.animation_time);
+        await page.click('#play');
+        await until('the pause', async () => (await header(page)).controls.playing === false);
+        assert.equal(await page.textContent('#play'), 'Play');
+        const paused = (await nextFrame(page)).controls.animation_time;
+        await nextFrame(page);
+        assert.equal((await nextFrame(page)).controls.animation_time, paused, 'paused, the time stands');
+
+        // The quad slides from x = -1 to 1: at 0.25 s it is left of the middle, at 1.75 s right of it.
+        const at = async (seconds) => {
+          await page.locator('#animation_time').fill(String(seconds));
+          await until(`time ${seconds}`, async () => (await header(page)).controls.animation_time === seconds);
+          await nextFrame(page, true);
+          return pixels(page);
+        };
+        const left = await at(0.25);
+        const right = await at(1.75);
+        assert.ok(blockDifference(left, right) > 2, 'the pose changes the picture');
+        assert.equal((await header(page)).controls.playing, false, 'moving the time pauses');
+
+        await page.locator('#animation').selectOption('1');
+        await until('the second clip from its start', async () => {
+          const c = (await header(page)).controls;
+          return c.animation === 1 && c.animation_time === 0;
+        });
+        await page.click('#play');
+        await until('playing again', async () => (await header(page)).controls.playing === true);
+      }, scene);
+    } finally {
+      fs.rmSync(folder, { recursive: true, force: true });
+    }
   },
 
   // With a token, requests without it (or with a wrong one) get 403 and no frames; with it, frames come.

@@ -45,6 +45,19 @@ TEST(ClientMessages, ParsesSettings) {
   EXPECT_FALSE(s.samplesPerFrame);
 }
 
+// The command line's limits (interactive_options.h), and the animation's controls.
+TEST(ClientMessages, ParsesTheDepthLimitAndTheAnimation) {
+  auto m = parse(R"({"type":"settings","max_depth":1024,"samples_per_frame":1024,"playing":false,"animation":2,
+                     "animation_time":1.25})");
+  ASSERT_TRUE(m);
+  const auto& s = std::get<SettingsMessage>(*m);
+  EXPECT_EQ(s.maxDepth, 1024u);
+  EXPECT_EQ(s.samplesPerFrame, 1024u);
+  EXPECT_EQ(s.playing, false);
+  EXPECT_EQ(s.animationClip, 2u);
+  EXPECT_EQ(s.animationTime, 1.25f);
+}
+
 TEST(ClientMessages, DropsMalformedMessagesWithAReason) {
   for (const char* text : {"",
                            "not json",
@@ -65,8 +78,14 @@ TEST(ClientMessages, DropsMalformedMessagesWithAReason) {
                            R"({"type":"resize","width":100.5,"height":100})",
                            R"({"type":"resize","width":100})",
                            R"({"type":"settings","max_depth":0})",
-                           R"({"type":"settings","max_depth":65})",
+                           R"({"type":"settings","max_depth":1025})",
                            R"({"type":"settings","samples_per_frame":true})",
+                           R"({"type":"settings","samples_per_frame":1025})",
+                           R"({"type":"settings","playing":1})",
+                           R"({"type":"settings","animation":-1})",
+                           R"({"type":"settings","animation":0.5})",
+                           R"({"type":"settings","animation_time":"later"})",
+                           R"({"type":"settings","animation_time":1e300})",
                            R"({"type":"settings","exposure":"bright"})",
                            R"({"type":"settings","tonemap":"filmic"})",
                            R"({"type":"settings","overrides":{"roughness":2}})",

@@ -17,17 +17,17 @@ Image gradient() {
 }
 
 TEST(FrameEncoding, TheDisplayImageIsToneMappedLikeThePng) {
-  PostSettings post;
-  post.display.toneMapper = ToneMapper::Clamp;
-  const DisplayImage d = displayImage(gradient(), post);
+  DisplaySettings display;
+  display.toneMapper = ToneMapper::Clamp;
+  const DisplayImage d = displayImage(gradient(), display);
   ASSERT_EQ(d.rgb.size(), 64u * 32u * 3u);
   EXPECT_EQ(d.rgb[2], uint8_t(linearToSrgb(0.25f) * 255.0f + 0.5f));
-  post.display.exposure = -3.0f;
-  EXPECT_LT(displayImage(gradient(), post).rgb[2], d.rgb[2]);
+  display.exposure = -3.0f;
+  EXPECT_LT(displayImage(gradient(), display).rgb[2], d.rgb[2]);
 }
 
 TEST(FrameEncoding, JpegAndPngDecodeToTheImage) {
-  const DisplayImage d = displayImage(gradient(), PostSettings());
+  const DisplayImage d = displayImage(gradient(), DisplaySettings());
   // The PNG is exact; the JPEG (4:2:0 chroma) close on average.
   for (const auto& [encoded, meanError] : {std::pair{encodeJpeg(d, 95), 2.0}, std::pair{encodePng(d), 0.0}}) {
     const Texture decoded =

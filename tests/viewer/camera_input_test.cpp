@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "app/viewer/camera_input.h"
+#include "app/interactive/camera_input.h"
 
 namespace candela {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "app/viewer/interactive_policy.h"
+#include "app/interactive/interactive_policy.h"
 
 namespace candela {
 namespace {

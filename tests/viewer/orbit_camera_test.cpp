@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "app/viewer/orbit_camera.h"
+#include "app/interactive/orbit_camera.h"
 
 namespace candela {
 namespace {

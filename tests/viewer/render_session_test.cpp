@@ -3,8 +3,8 @@
 #include <memory>
 #include <vector>
 
-#include "app/viewer/animation_clock.h"
-#include "app/viewer/render_session.h"
+#include "app/interactive/animation_clock.h"
+#include "app/interactive/render_session.h"
 #include "backends/film_filters.h"
 #include "scene/builtin_scenes.h"
 

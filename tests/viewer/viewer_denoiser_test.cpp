@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "app/viewer/viewer_denoiser.h"
+#include "app/interactive/viewer_denoiser.h"
 #include "backends/cpu/cpu_backend.h"
 #include "image/filters/atrous.h"
 #include "scene/builtin_scenes.h"

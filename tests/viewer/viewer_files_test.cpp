@@ -6,8 +6,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "app/interactive/viewer_files.h"
 #include "app/scene_loading.h"
-#include "app/viewer/viewer_files.h"
 #include "image/tonemap.h"
 
 namespace candela {

@@ -13,8 +13,8 @@
 #include <functional>
 #include <thread>
 
-#include "app/viewer/orbit_camera.h"
-#include "app/viewer/scene_summary.h"
+#include "app/interactive/orbit_camera.h"
+#include "app/interactive/scene_summary.h"
 #include "child_process.h"
 #include "image_agreement.h"
 #include "scene/builtin_scenes.h"

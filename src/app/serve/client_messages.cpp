@@ -131,13 +131,16 @@ std::optional<ClientMessage> settings(Reader& r) {
   SettingsMessage m;
   std::optional<uint32_t> passes;
   std::optional<int> shading, toneMapper, denoiser;
-  if (!r.integer("max_depth", 1, 64, m.maxDepth) || !r.integer("samples_per_frame", 1, 64, m.samplesPerFrame) ||
+  if (!r.integer("max_depth", 1, kMaxInteractiveDepth, m.maxDepth) ||
+      !r.integer("samples_per_frame", 1, kMaxSamplesPerFrame, m.samplesPerFrame) ||
       !r.boolean("accumulate", m.accumulate) || !r.floating("env_intensity", 0.0, 16.0, m.environmentScale) ||
       !r.floating("env_rotation", -180.0, 180.0, m.environmentRotation) ||
       !r.choice("shading", kShadingNames, shading) || !overrides(r, m) ||
       !r.floating("exposure", -10.0, 10.0, m.exposure) || !r.choice("tonemap", kToneMapperNames, toneMapper) ||
       !r.choice("denoiser", kDenoiserNames, denoiser) || !r.integer("atrous_passes", 1, kMaxAtrousPasses, passes) ||
-      !r.boolean("bilateral", m.bilateral))
+      !r.boolean("bilateral", m.bilateral) || !r.boolean("playing", m.playing) ||
+      !r.integer("animation", 0, kMaxAnimationClip, m.animationClip) ||
+      !r.floating("animation_time", -kMaxAnimationSeconds, kMaxAnimationSeconds, m.animationTime))
     return std::nullopt;
   if (shading) m.shading = ShadingModel(*shading);
   if (toneMapper) m.toneMapper = ToneMapper(*toneMapper);

@@ -7,8 +7,9 @@
 #include <variant>
 #include <vector>
 
-#include "app/viewer/camera_input.h"
-#include "app/viewer/post_settings.h"
+#include "app/interactive/camera_input.h"
+#include "app/interactive/interactive_options.h"
+#include "app/interactive/post_settings.h"
 #include "scene/material_overrides.h"
 
 namespace candela {
@@ -51,16 +52,22 @@ struct SettingsMessage {
   std::optional<DenoiserChoice> denoiser;
   std::optional<int> atrousPasses;
   std::optional<bool> bilateral;
+  std::optional<bool> playing;            // the animation plays or pauses
+  std::optional<uint32_t> animationClip;  // plays this clip from its start
+  std::optional<float> animationTime;     // pauses the animation at this time
 };
 
 using ClientMessage = std::variant<PointerMessage, WheelMessage, KeysMessage, ResizeMessage, ActionMessage,
                                    FrameAckMessage, SettingsMessage>;
 
-// The limits every message is checked against.
+// The limits every message is checked against; depth and samples per frame have the command line's
+// (interactive_options.h).
 constexpr uint32_t kMaxViewSide = 4096;
 constexpr uint32_t kMinViewSide = 16;
 constexpr double kMaxCoordinate = 1e6;
 constexpr double kMaxWheelSteps = 100.0;
+constexpr double kMaxAnimationClip = 1e6;
+constexpr double kMaxAnimationSeconds = 1e9;
 
 // The message `text` holds, or nullopt with `problem` saying why it is dropped (not JSON, unknown type, a field
 // of the wrong kind or out of range). Never throws for any input.

@@ -6,23 +6,22 @@
 #include <memory>
 #include <stdexcept>
 
-#include "image/filters/bilateral.h"
 #include "image/tonemap.h"
 
 namespace candela {
 
-DisplayImage displayImage(const Image& accumulated, const PostSettings& post) {
-  const Image filtered = post.bilateral ? bilateralFilter(accumulated, post.bilateralParams) : Image();
-  const Image& image = post.bilateral ? filtered : accumulated;
-  DisplayImage out{image.width, image.height, std::vector<uint8_t>(image.pixels.size() * 3)};
-  for (size_t i = 0; i < image.pixels.size(); ++i) {
-    const Vec3 c = toneMap(image.pixels[i], post.display.exposure, post.display.toneMapper);
+DisplayImage displayImage(const Image& linear, const DisplaySettings& display) {
+  DisplayImage out{linear.width, linear.height, std::vector<uint8_t>(linear.pixels.size() * 3)};
+  for (size_t i = 0; i < linear.pixels.size(); ++i) {
+    const Vec3 c = toneMap(linear.pixels[i], display.exposure, display.toneMapper);
     out.rgb[3 * i + 0] = displayByte(c.x);
     out.rgb[3 * i + 1] = displayByte(c.y);
     out.rgb[3 * i + 2] = displayByte(c.z);
   }
   return out;
 }
+
+DisplayImage displayImage(FrameImages& frame) { return displayImage(frame.filtered(), frame.post().display); }
 
 std::string encodeJpeg(const DisplayImage& image, int quality) {
   std::unique_ptr<void, int (*)(tjhandle)> compressor(tjInitCompress(), tjDestroy);

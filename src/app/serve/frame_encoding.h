@@ -3,8 +3,9 @@
 #include <string>
 #include <vector>
 
-#include "app/viewer/post_settings.h"
+#include "app/interactive/frame_images.h"
 #include "image/image.h"
+#include "io/images/image_io.h"
 
 namespace candela {
 
@@ -14,9 +15,11 @@ struct DisplayImage {
   std::vector<uint8_t> rgb;
 };
 
-// The accumulated (perhaps denoised) image as the viewer's window would show it: through the CPU bilateral
-// filter when it is on, then exposure and tone mapping (image/tonemap.h).
-DisplayImage displayImage(const Image& accumulated, const PostSettings& post);
+// A linear image as the viewer's window would show it: through exposure and tone mapping (image/tonemap.h).
+DisplayImage displayImage(const Image& linear, const DisplaySettings& display);
+// A rendered frame as the browser gets it: denoised, through the bilateral filter with the emission kept apart
+// (FrameImages::filtered), tone mapped.
+DisplayImage displayImage(FrameImages& frame);
 
 // Compressed with libjpeg-turbo at `quality` (1 to 100). Throws std::runtime_error with libjpeg-turbo's reason.
 std::string encodeJpeg(const DisplayImage& image, int quality);

@@ -32,7 +32,7 @@ int runServe(ServeOptions options) {
   if (!token.required() && !isLoopbackAddress(options.bind)) token = AccessToken::random();
   ClientHub hub;
   HttpServer server(options.bind, options.port, token, hub);  // binds first: a busy port is told at once
-  ServeLoop loop(options, hub);
+  ServeLoop loop(options.interactive, hub);
   server.start();
   std::signal(SIGINT, requestStop);
   std::signal(SIGTERM, requestStop);
@@ -43,6 +43,7 @@ int runServe(ServeOptions options) {
   loop.run(stopRequested);
   server.stop();
   std::fprintf(stderr, "candela serve: stopped\n");
+  loop.writeExitFiles();
   return 0;
 }
 

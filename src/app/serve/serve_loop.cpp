@@ -4,16 +4,12 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "app/backend_factory.h"
-#include "app/scene_loading.h"
-#include "app/serve/frame_encoding.h"
-#include "app/viewer/viewer_files.h"
+#include "app/interactive/viewer_files.h"
 
 namespace candela {
 
 namespace {
 
-constexpr double kMaxFlyStep = 0.1;  // seconds: a slow frame does not throw the camera far
 constexpr double kTimingSmoothing = 0.1;
 constexpr std::chrono::milliseconds kIdleWait{50};
 
@@ -32,43 +28,29 @@ std::shared_ptr<const std::string> binaryMessage(const Json& header, const std::
   return message;
 }
 
-std::unique_ptr<Backend> makeBackend(const std::string& name, const DeviceRequest& devices) {
-  std::string why;
-  std::unique_ptr<Backend> backend = createBackend(name, why, devices);
-  std::fprintf(stderr, "%s\n", why.c_str());
-  return backend;
-}
-
 }  // namespace
 
-ServeLoop::ServeLoop(const ServeOptions& options, ClientHub& hub)
-    : options_(options),
-      hub_(hub),
-      session_(makeBackend(options.backend, options.devices)),
-      viewWidth_(options.width),
-      viewHeight_(options.height) {
-  controls_.maxDepth = options.maxDepth;
-  controls_.samplesPerFrame = options.samplesPerFrame;
-  controls_.post = options.post;
-  Scene scene = loadScene(options.sceneSpec, {options.environmentPath, options.sceneCache, options.outsidePaths});
-  validateScene(scene);
-  camera_ = std::make_unique<OrbitCamera>(scene.camera, summarizeScene(scene).bounds);
-  session_.setScene(std::move(scene));
-  backendName_ = session_.backend().name();
-}
+ServeLoop::ServeLoop(const InteractiveOptions& options, ClientHub& hub)
+    : options_(options), hub_(hub), renderer_(options), viewWidth_(options.width), viewHeight_(options.height) {}
 
 void ServeLoop::greet(uint64_t client) {
-  const SceneSummary& s = session_.summary();
+  const RenderSession& session = renderer_.session();
+  const SceneSummary& s = session.summary();
   Json overrides = Json::array();
   for (const OverrideParameter& p : overrideParameters())
     overrides.push_back({{"name", p.name}, {"min", p.min}, {"max", p.max}});
   Json denoisers = Json::array({"none", "atrous"});
   if (ViewerDenoiser::optixInThisBuild()) denoisers.push_back("optix");
+  // The page's animation controls: one entry per clip, none where nothing is animated.
+  Json animations = Json::array();
+  if (const SceneAnimation& animation = session.scene().animation; !animation.empty())
+    for (const AnimationClip& clip : animation.clips)
+      animations.push_back({{"name", clip.name}, {"start", clip.start}, {"end", clip.end}});
   const Json hello = {
       {"type", "hello"},
-      {"backend", session_.backend().name()},
-      {"device", session_.backend().deviceName()},
-      {"scene", session_.scene().name},
+      {"backend", session.backend().name()},
+      {"device", session.backend().deviceName()},
+      {"scene", session.scene().name},
       {"stats",
        {{"vertices", s.vertices},
         {"triangles", s.triangles},
@@ -79,28 +61,33 @@ void ServeLoop::greet(uint64_t client) {
       {"override_parameters", overrides},
       {"denoisers", denoisers},
       {"max_atrous_passes", kMaxAtrousPasses},
+      {"animations", animations},
       {"controls", controlsJson()},
   };
   hub_.send(client, std::make_shared<const std::string>(hello.dump()), false);
 }
 
 Json ServeLoop::controlsJson() const {
+  const ViewerControls& controls = renderer_.controls();
   Json overrides = Json::object();
   for (const OverrideParameter& p : overrideParameters())
-    if (const std::optional<float>& v = controls_.materials.*(p.field)) overrides[p.name] = *v;
+    if (const std::optional<float>& v = controls.materials.*(p.field)) overrides[p.name] = *v;
   return {
-      {"max_depth", controls_.maxDepth},
-      {"samples_per_frame", controls_.samplesPerFrame},
-      {"accumulate", controls_.accumulate},
-      {"env_intensity", controls_.environmentScale},
-      {"env_rotation", controls_.environmentRotation},
-      {"shading", shadingName(controls_.materials.shading)},
+      {"max_depth", controls.maxDepth},
+      {"samples_per_frame", controls.samplesPerFrame},
+      {"accumulate", controls.accumulate},
+      {"env_intensity", controls.environmentScale},
+      {"env_rotation", controls.environmentRotation},
+      {"shading", shadingName(controls.materials.shading)},
       {"overrides", overrides},
-      {"exposure", controls_.post.display.exposure},
-      {"tonemap", toneMapperName(controls_.post.display.toneMapper)},
-      {"denoiser", denoiserName(controls_.post.denoiser)},
-      {"atrous_passes", controls_.post.atrousParams.passes},
-      {"bilateral", controls_.post.bilateral},
+      {"exposure", controls.post.display.exposure},
+      {"tonemap", toneMapperName(controls.post.display.toneMapper)},
+      {"denoiser", denoiserName(controls.post.denoiser)},
+      {"atrous_passes", controls.post.atrousParams.passes},
+      {"bilateral", controls.post.bilateral},
+      {"playing", controls.animation.playing},
+      {"animation", controls.animation.clip},
+      {"animation_time", controls.animation.time},
   };
 }
 
@@ -114,11 +101,12 @@ void ServeLoop::handle(const IncomingMessage& incoming) {
       [&](const auto& m) {
         using T = std::decay_t<decltype(m)>;
         if constexpr (std::is_same_v<T, PointerMessage>) {
-          if (m.action == PointerMessage::Action::Down) input_.buttonPressed(m.button, m.x, m.y, true);
-          if (m.action == PointerMessage::Action::Up) input_.buttonReleased(m.button);
-          if (m.action == PointerMessage::Action::Move) input_.cursorMoved(m.x, m.y);
+          CameraInput& input = renderer_.input();
+          if (m.action == PointerMessage::Action::Down) input.buttonPressed(m.button, m.x, m.y, true);
+          if (m.action == PointerMessage::Action::Up) input.buttonReleased(m.button);
+          if (m.action == PointerMessage::Action::Move) input.cursorMoved(m.x, m.y);
         } else if constexpr (std::is_same_v<T, WheelMessage>) {
-          input_.wheel(m.steps, true);
+          renderer_.input().wheel(m.steps, true);
         } else if constexpr (std::is_same_v<T, KeysMessage>) {
           flyKeys_ = m.held;
         } else if constexpr (std::is_same_v<T, ResizeMessage>) {
@@ -134,40 +122,47 @@ void ServeLoop::handle(const IncomingMessage& incoming) {
 }
 
 void ServeLoop::applySettings(const SettingsMessage& m) {
-  if (m.maxDepth) controls_.maxDepth = *m.maxDepth;
-  if (m.samplesPerFrame) controls_.samplesPerFrame = *m.samplesPerFrame;
-  if (m.accumulate) controls_.accumulate = *m.accumulate;
-  if (m.environmentScale) controls_.environmentScale = *m.environmentScale;
-  if (m.environmentRotation) controls_.environmentRotation = *m.environmentRotation;
+  ViewerControls& controls = renderer_.controls();
+  if (m.maxDepth) controls.maxDepth = *m.maxDepth;
+  if (m.samplesPerFrame) controls.samplesPerFrame = *m.samplesPerFrame;
+  if (m.accumulate) controls.accumulate = *m.accumulate;
+  if (m.environmentScale) controls.environmentScale = *m.environmentScale;
+  if (m.environmentRotation) controls.environmentRotation = *m.environmentRotation;
   environmentEdited_ = environmentEdited_ || m.environmentScale || m.environmentRotation;
-  if (m.shading) controls_.materials.shading = *m.shading;
+  if (m.shading) controls.materials.shading = *m.shading;
   for (const auto& [name, value] : m.overrides)
     for (const OverrideParameter& p : overrideParameters())
-      if (name == p.name) controls_.materials.*(p.field) = value;
+      if (name == p.name) controls.materials.*(p.field) = value;
   materialsEdited_ = materialsEdited_ || m.shading || !m.overrides.empty();
-  if (m.exposure) controls_.post.display.exposure = *m.exposure;
-  if (m.toneMapper) controls_.post.display.toneMapper = *m.toneMapper;
-  if (m.denoiser) controls_.post.denoiser = *m.denoiser;
-  if (m.atrousPasses) controls_.post.atrousParams.passes = *m.atrousPasses;
-  if (m.bilateral) controls_.post.bilateral = *m.bilateral;
+  if (m.exposure) controls.post.display.exposure = *m.exposure;
+  if (m.toneMapper) controls.post.display.toneMapper = *m.toneMapper;
+  if (m.denoiser) controls.post.denoiser = *m.denoiser;
+  if (m.atrousPasses) controls.post.atrousParams.passes = *m.atrousPasses;
+  if (m.bilateral) controls.post.bilateral = *m.bilateral;
+  // As in the viewer's panel: choosing an animation plays it from its start, moving the time pauses.
+  const SceneAnimation& animation = renderer_.session().scene().animation;
+  if (m.animationClip) selectClip(controls.animation, animation, int(*m.animationClip));
+  if (m.animationTime) seekAnimation(controls.animation, animation, *m.animationTime);
+  if (m.playing) controls.animation.playing = *m.playing;
 }
 
 void ServeLoop::act(uint64_t client, ActionMessage::Kind kind) {
   switch (kind) {
-    case ActionMessage::Kind::Frame: camera_->frameScene(); break;
-    case ActionMessage::Kind::Reset: camera_->reset(); break;
+    case ActionMessage::Kind::Frame: renderer_.frameScene(); break;
+    case ActionMessage::Kind::Reset: renderer_.resetCamera(); break;
     case ActionMessage::Kind::TakeControl: hub_.giveControl(client); break;
     case ActionMessage::Kind::Screenshot:
       try {
-        const std::string png = encodePng(displayImage(accumulatedImage(), controls_.post));
+        const std::string png = encodePng(displayImage(renderer_.postImage(), renderer_.controls().post.display));
         hub_.send(client, binaryMessage({{"kind", "screenshot"}, {"name", "candela-view.png"}}, png), true);
       } catch (const std::exception& e) {
         report(std::string("no screenshot: ") + e.what(), true);
       }
       break;
     case ActionMessage::Kind::SaveView: {
-      const ViewFile file = makeViewFile(options_.sceneSpec, session_.scene(), camera_->description(),
-                                         session_.appliedSettings(), controls_);
+      const RenderSession& session = renderer_.session();
+      const ViewFile file = makeViewFile(renderer_.sceneSpec(), session.scene(), renderer_.camera().description(),
+                                         session.appliedSettings(), renderer_.controls());
       const Json message = {
           {"type", "view_file"}, {"name", "candela-view.json"}, {"text", file.text}, {"note", file.note}};
       hub_.send(client, std::make_shared<const std::string>(message.dump()), false);
@@ -176,65 +171,43 @@ void ServeLoop::act(uint64_t client, ActionMessage::Kind kind) {
   }
 }
 
-// The OptiX AI denoiser is made when first chosen; where it cannot run the page says why and denoising goes off.
-void ServeLoop::prepareDenoiser() {
-  const std::string why = denoiser_.prepareOrTurnOff(controls_.post.denoiser);
-  if (!why.empty()) report(why, true);
-}
-
-Image ServeLoop::accumulatedImage() {
-  return denoiser_.apply(session_, controls_.post.denoiser, controls_.post.atrousParams);
-}
-
-void ServeLoop::renderFrame(double now) {
-  const double sinceLast = firstFrame_ ? 0.0 : now - lastFrameTime_;
-  input_.apply(*camera_, flyKeys_, float(std::min(sinceLast, kMaxFlyStep)), float(viewHeight_));
-  const Camera camera = camera_->camera(float(viewWidth_) / float(viewHeight_));
-  const bool moved = !firstFrame_ && !sameCamera(camera, lastCamera_);
-  lastCamera_ = camera;
-  FramePlan plan = policy_.plan(viewWidth_, viewHeight_, controls_.samplesPerFrame, moved, now);
-  // A slow connection shrinks the preview further (stream_quality.h).
+// A slow connection shrinks the preview further (stream_quality.h).
+void ServeLoop::adjustPlan(FramePlan& plan) {
   const uint32_t divisor = quality_.resolutionDivisor(plan.preview);
   plan.width = std::max(plan.width / divisor, kMinViewSide);
   plan.height = std::max(plan.height / divisor, kMinViewSide);
+}
 
-  RenderSettings settings;
-  settings.width = plan.width;
-  settings.height = plan.height;
-  settings.maxDepth = controls_.maxDepth;
-  settings.seed = options_.seed;
-  settings.sampler = options_.sampler;
-  settings.lightSampler = options_.lightSampler;
-  const auto renderStart = std::chrono::steady_clock::now();
-  prepareDenoiser();
-  session_.setAovsEnabled(controls_.post.denoiser != DenoiserChoice::None);
-  session_.renderFrame(camera, settings, plan.samplesPerPixel, controls_.accumulate);
-  const DisplayImage image = displayImage(accumulatedImage(), controls_.post);
-  const double renderSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - renderStart).count();
-  policy_.recordFrame(plan, renderSeconds);
+void ServeLoop::present(FrameImages& frame) { presented_ = displayImage(frame); }
+
+void ServeLoop::renderFrame(double now) {
+  const double sinceLast = firstFrame_ ? 0.0 : now - lastFrameTime_;
+  const FrameOutcome outcome = renderer_.step({viewWidth_, viewHeight_, now, sinceLast}, *this);
+  const FramePlan& plan = outcome.plan;
   const int jpegQuality = quality_.jpegQuality(plan.preview);
-  const std::string jpeg = encodeJpeg(image, jpegQuality);
+  const std::string jpeg = encodeJpeg(presented_, jpegQuality);
 
   if (!firstFrame_) {
     const double ms = 1000.0 * sinceLast;
     msPerFrame_ = msPerFrame_ == 0.0 ? ms : (1.0 - kTimingSmoothing) * msPerFrame_ + kTimingSmoothing * ms;
   }
   ++framesSent_;
+  const RenderSession& session = renderer_.session();
   const Json header = {
       {"kind", "frame"},
       {"frame", framesSent_},
-      {"width", image.width},
-      {"height", image.height},
+      {"width", presented_.width},
+      {"height", presented_.height},
       {"preview", plan.preview},
       {"quality", jpegQuality},
-      {"samples", session_.accumulatedSamples()},
+      {"samples", session.accumulatedSamples()},
       {"fps", msPerFrame_ > 0.0 ? 1000.0 / msPerFrame_ : 0.0},
       {"ms_per_frame", msPerFrame_},
-      {"render_ms", 1000.0 * renderSeconds},
+      {"render_ms", 1000.0 * outcome.seconds},
       {"bytes_per_second", quality_.bytesPerSecond()},
       {"clients", hub_.clientCount()},
-      {"camera", {{"position", vec(camera_->position())}, {"forward", vec(camera_->forward())}}},
-      {"applied", {{"max_depth", session_.appliedSettings().maxDepth}, {"samples_per_frame", plan.samplesPerPixel}}},
+      {"camera", {{"position", vec(renderer_.camera().position())}, {"forward", vec(renderer_.camera().forward())}}},
+      {"applied", {{"max_depth", session.appliedSettings().maxDepth}, {"samples_per_frame", plan.samplesPerPixel}}},
       {"controls", controlsJson()},
   };
   hub_.publishFrame(framesSent_, binaryMessage(header, jpeg), plan.preview);
@@ -247,7 +220,7 @@ void ServeLoop::run(const std::atomic<bool>& stop) {
     hub_.waitForWork(kIdleWait);
     if (const uint64_t changes = hub_.controlChanges(); changes != controlChanges_) {
       // A new controller starts with no buttons or keys held.
-      input_ = CameraInput();
+      renderer_.input() = CameraInput();
       flyKeys_ = FlyKeys();
       controlChanges_ = changes;
     }
@@ -255,14 +228,21 @@ void ServeLoop::run(const std::atomic<bool>& stop) {
     for (const IncomingMessage& m : hub_.takeMessages()) handle(m);
     // Once for all the messages that came since the last frame: a slider dragged quickly (or a flood of
     // edits) costs one update of the backend's materials or environment, not one for each message.
-    if (environmentEdited_) session_.setEnvironment(controls_.environmentScale, controls_.environmentRotation);
-    if (materialsEdited_) session_.setMaterialOverrides(controls_.materials);
+    if (environmentEdited_) renderer_.applyEnvironmentControls();
+    if (materialsEdited_) renderer_.applyMaterialControls();
     environmentEdited_ = materialsEdited_ = false;
     for (const FrameDelivery& d : hub_.takeDeliveries()) quality_.recordDelivery(d.bytes, d.seconds, d.moving);
     if (!hub_.anyReady()) continue;
     renderFrame(std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count());
     if (options_.frames > 0 && framesSent_ >= options_.frames) break;
   }
+}
+
+void ServeLoop::writeExitFiles() {
+  if (options_.screenshot.empty()) return;
+  if (renderer_.session().frames() == 0)
+    throw std::runtime_error("no frame was rendered (no browser connected), so there is no --screenshot to write");
+  renderer_.writeScreenshot(options_.screenshot);
 }
 
 }  // namespace candela

@@ -1,8 +1,8 @@
 #pragma once
 #include <memory>
 
+#include "app/interactive/post_settings.h"
 #include "app/viewer/gl_objects.h"
-#include "app/viewer/post_settings.h"
 #include "image/image.h"
 
 namespace candela {

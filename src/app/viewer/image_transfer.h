@@ -5,8 +5,8 @@
 #include <functional>
 #include <string>
 
+#include "app/interactive/render_session.h"
 #include "app/viewer/image_display.h"
-#include "app/viewer/render_session.h"
 
 namespace candela {
 

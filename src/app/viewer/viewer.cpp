@@ -3,23 +3,14 @@
 #include <imgui.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
-#include <memory>
-#include <stdexcept>
 #include <vector>
 
-#include "app/backend_factory.h"
-#include "app/scene_loading.h"
-#include "app/viewer/camera_input.h"
+#include "app/interactive/interactive_renderer.h"
+#include "app/interactive/viewer_files.h"
 #include "app/viewer/glfw_window.h"
 #include "app/viewer/image_display.h"
 #include "app/viewer/image_transfer.h"
-#include "app/viewer/interactive_policy.h"
-#include "app/viewer/orbit_camera.h"
-#include "app/viewer/render_session.h"
-#include "app/viewer/viewer_denoiser.h"
-#include "app/viewer/viewer_files.h"
 #include "app/viewer/viewer_panel.h"
 #include "app/viewer/window_capture.h"
 
@@ -28,11 +19,10 @@ namespace candela {
 namespace {
 
 constexpr int kPanelWidth = 380;
-constexpr int kMinImageSide = 64;
-constexpr double kMaxFlyStep = 0.1;  // seconds: a slow frame does not throw the camera far
 constexpr double kTimingSmoothing = 0.1;
 
-class Viewer {
+// candela view: the interactive renderer's frames in a window, beside a panel of its controls.
+class Viewer : private FrontEnd {
  public:
   explicit Viewer(const ViewerOptions& options);
   int run();
@@ -46,67 +36,49 @@ class Viewer {
   void handleKey(const WindowEvent& e);
   FlyKeys heldFlyKeys() const;
 
-  void showScene(Scene scene, const std::string& spec);
+  // FrontEnd
+  FlyKeys takeInput() override;
+  void present(FrameImages& frame) override;
+  void report(const std::string& message, bool isError) override;
+
+  void sceneShown();
   void frame(double now, double seconds);
   void updateStatus(double seconds);
   void handle(const PanelRequests& requests);
   void writeState();
   void writeExitFiles();
-  void report(const std::string& message, bool isError);
-  void prepareDenoiser();
-  Image accumulatedImage();
-  // The emission for saveScreenshot: empty where the backend does not record it (no AOVs).
-  Image screenshotEmission() const;
 
   ViewerOptions options_;
   GlfwWindow window_;
   ImGuiLayer imgui_;
   ImageDisplay display_;
-  RenderSession session_;
+  InteractiveRenderer renderer_;
   ImageTransfer transfer_;
-  ViewerDenoiser denoiser_;
-  std::unique_ptr<OrbitCamera> camera_;
-  std::string sceneSpec_;
-  CameraInput input_;
-  InteractivePolicy policy_;
-  ViewerControls controls_;
   PanelStatus status_;
   FlyKeys flyKeys_;  // held, as the events taken from the input queue so far say
   FramePlan lastPlan_;
-  Camera lastCamera_;
   bool stateRequested_ = false;
   double pointerX_ = 0.0, pointerY_ = 0.0;  // as of the last cursor event GLFW reported
   Vec2 openSceneField_;
   bool openSceneFieldActive_ = false;
-  bool sceneJustShown_ = true;
-  bool followsSceneCamera_ = false;  // the view is the scene's animated camera, moved with each pose
   int framebufferWidth_ = 0;
   int framebufferHeight_ = 0;
 };
 
 Viewer::Viewer(const ViewerOptions& options)
     : options_(options),
-      window_(int(options.width) + kPanelWidth, int(options.height), "candela"),
+      window_(int(options.interactive.width) + kPanelWidth, int(options.interactive.height), "candela"),
       imgui_(window_.handle()),
-      session_([&] {
-        std::string why;
-        std::unique_ptr<Backend> backend = createBackend(options.backend, why, options.devices);
-        std::fprintf(stderr, "%s\n", why.c_str());
-        return backend;
-      }()),
-      transfer_(session_, options.interop) {
-  controls_.maxDepth = options.maxDepth;
-  controls_.samplesPerFrame = options.samplesPerFrame;
-  controls_.post = options.post;
+      renderer_(options.interactive),
+      transfer_(renderer_.session(), options.interop) {
   std::fprintf(stderr, "window: %s\n", window_.glRenderer().c_str());
-  showScene(loadScene(options.sceneSpec, {options.environmentPath, options.sceneCache, options.outsidePaths,
-                                          options.camera, options.textureLimits}),
-            options.sceneSpec);
-  status_.backend = session_.backend().name();
-  status_.device = session_.backend().deviceName();
+  sceneShown();
+  status_.backend = renderer_.session().backend().name();
+  status_.device = renderer_.session().backend().deviceName();
   status_.imageTransfer = transfer_.description();
   std::fprintf(stderr, "display: %s\n", status_.imageTransfer.c_str());
-  glfwSetWindowSizeLimits(window_.handle(), kPanelWidth + kMinImageSide, kMinImageSide, GLFW_DONT_CARE, GLFW_DONT_CARE);
+  glfwSetWindowSizeLimits(window_.handle(), kPanelWidth + int(kMinImageSide), int(kMinImageSide), GLFW_DONT_CARE,
+                          GLFW_DONT_CARE);
   glfwGetCursorPos(window_.handle(), &pointerX_, &pointerY_);
   imgui_.keepFromImGui(GLFW_KEY_F12);  // text fields have no use for it
   installCallbacks();
@@ -171,8 +143,8 @@ bool* flyKey(FlyKeys& keys, int key) {
 void Viewer::handleInput(const std::vector<WindowEvent>& events) {
   for (const WindowEvent& e : events) {
     switch (e.kind) {
-      case WindowEvent::Kind::CursorMove: input_.cursorMoved(e.x, e.y); break;
-      case WindowEvent::Kind::Wheel: input_.wheel(e.wheel, cursorOverImage(e.x)); break;
+      case WindowEvent::Kind::CursorMove: renderer_.input().cursorMoved(e.x, e.y); break;
+      case WindowEvent::Kind::Wheel: renderer_.input().wheel(e.wheel, cursorOverImage(e.x)); break;
       case WindowEvent::Kind::MouseButton: handleMouseButton(e); break;
       case WindowEvent::Kind::Key: handleKey(e); break;
     }
@@ -185,9 +157,9 @@ void Viewer::handleMouseButton(const WindowEvent& e) {
                         : e.code == GLFW_MOUSE_BUTTON_RIGHT ? MouseButton::Right
                                                             : MouseButton::Left;
   if (e.action == GLFW_PRESS)
-    input_.buttonPressed(b, e.x, e.y, cursorOverImage(e.x));
+    renderer_.input().buttonPressed(b, e.x, e.y, cursorOverImage(e.x));
   else if (e.action == GLFW_RELEASE)
-    input_.buttonReleased(b);
+    renderer_.input().buttonReleased(b);
 }
 
 void Viewer::handleKey(const WindowEvent& e) {
@@ -197,25 +169,16 @@ void Viewer::handleKey(const WindowEvent& e) {
   if (e.code == GLFW_KEY_F12) stateRequested_ = true;
   if (ImGui::GetIO().WantCaptureKeyboard) return;
   if (fly) *fly = true;
-  if (e.code == GLFW_KEY_F) {
-    camera_->frameScene();
-    followsSceneCamera_ = false;
-  }
-  if (e.code == GLFW_KEY_R) {
-    // Back to the scene's camera, where the animation has it now; an animated one is followed again.
-    camera_ = std::make_unique<OrbitCamera>(session_.scene().camera, session_.summary().bounds);
-    followsSceneCamera_ = sceneCameraAnimated(session_.scene());
-  }
+  if (e.code == GLFW_KEY_F) renderer_.frameScene();
+  if (e.code == GLFW_KEY_R) renderer_.resetCamera();
   if (e.code == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(window_.handle(), GLFW_TRUE);
 }
 
 FlyKeys Viewer::heldFlyKeys() const { return ImGui::GetIO().WantCaptureKeyboard ? FlyKeys{} : flyKeys_; }
 
-void Viewer::showScene(Scene scene, const std::string& spec) {
-  validateScene(scene);
-  SceneSummary summary = summarizeScene(scene);
-  camera_ = std::make_unique<OrbitCamera>(scene.camera, summary.bounds);
-  followsSceneCamera_ = sceneCameraAnimated(scene);
+// The panel's scene status and the window's title for the scene the renderer shows now.
+void Viewer::sceneShown() {
+  const Scene& scene = renderer_.session().scene();
   status_.sceneName = scene.name;
   status_.animationClips.clear();
   status_.animationRanges.clear();
@@ -224,11 +187,6 @@ void Viewer::showScene(Scene scene, const std::string& spec) {
       status_.animationClips.push_back(clip.name);
       status_.animationRanges.push_back({clip.start, clip.end});
     }
-  controls_.animation = {};
-  if (!scene.animation.empty()) controls_.animation.time = scene.animation.clips[0].start;
-  sceneSpec_ = spec;
-  sceneJustShown_ = true;
-  session_.setScene(std::move(scene));
   glfwSetWindowTitle(window_.handle(), ("candela - " + status_.sceneName).c_str());
 }
 
@@ -239,31 +197,32 @@ void Viewer::report(const std::string& message, bool isError) {
 }
 
 void Viewer::handle(const PanelRequests& requests) {
-  if (requests.applyEnvironment) session_.setEnvironment(controls_.environmentScale, controls_.environmentRotation);
-  if (requests.applyMaterials) session_.setMaterialOverrides(controls_.materials);
+  if (requests.applyEnvironment) renderer_.applyEnvironmentControls();
+  if (requests.applyMaterials) renderer_.applyMaterialControls();
+  ViewerControls& controls = renderer_.controls();
   try {
     if (requests.saveScreenshot) {
-      const Image image = accumulatedImage(), emission = screenshotEmission();
-      saveScreenshot(controls_.screenshotBase + ".png", image, emission, controls_.post);
-      saveScreenshot(controls_.screenshotBase + ".exr", image, emission, controls_.post);
-      report("saved " + controls_.screenshotBase + ".png and .exr", false);
+      const Image image = renderer_.accumulatedImage(), emission = renderer_.recordedEmission();
+      saveScreenshot(controls.screenshotBase + ".png", image, emission, controls.post);
+      saveScreenshot(controls.screenshotBase + ".exr", image, emission, controls.post);
+      report("saved " + controls.screenshotBase + ".png and .exr", false);
     }
     if (requests.saveSceneFile) {
-      std::string note = writeViewFile(controls_.sceneFilePath, sceneSpec_, session_.scene(), camera_->description(),
-                                       session_.appliedSettings(), controls_);
-      report("saved " + controls_.sceneFilePath + (note.empty() ? "" : " (" + note + ")"), false);
+      const RenderSession& session = renderer_.session();
+      std::string note = writeViewFile(controls.sceneFilePath, renderer_.sceneSpec(), session.scene(),
+                                       renderer_.camera().description(), session.appliedSettings(), controls);
+      report("saved " + controls.sceneFilePath + (note.empty() ? "" : " (" + note + ")"), false);
     }
   } catch (const std::exception& e) {
     report(e.what(), true);
   }
   if (requests.openScene) {
     try {
-      showScene(loadScene(controls_.openSpec,
-                          {{}, options_.sceneCache, options_.outsidePaths, {}, options_.textureLimits}),
-                controls_.openSpec);
-      report("opened " + controls_.openSpec, false);
+      renderer_.openScene(controls.openSpec);
+      sceneShown();
+      report("opened " + controls.openSpec, false);
     } catch (const std::exception& e) {
-      report("could not open '" + controls_.openSpec + "': " + e.what(), true);
+      report("could not open '" + controls.openSpec + "': " + e.what(), true);
     }
   }
 }
@@ -272,93 +231,49 @@ void Viewer::frame(double now, double seconds) {
   glfwGetFramebufferSize(window_.handle(), &framebufferWidth_, &framebufferHeight_);
   const int imageWidth = std::max(framebufferWidth_ - kPanelWidth, 1);
   const int imageHeight = std::max(framebufferHeight_, 1);
-
-  // A playing animation moves on with the wall clock; a new pose restarts the accumulation like a camera move.
-  bool posed = false;
-  if (const SceneAnimation& animation = session_.scene().animation; !animation.empty()) {
-    advanceAnimation(controls_.animation, animation, seconds);
-    posed = session_.poseAnimation(controls_.animation.clip, controls_.animation.time);
-  }
-  // The view follows an animated scene camera until the user moves it (R goes back to it).
-  if (posed && followsSceneCamera_)
-    camera_ = std::make_unique<OrbitCamera>(session_.scene().camera, session_.summary().bounds);
-  // ImGui takes this frame's share of the queued input first; the camera takes what ImGui does not want.
-  handleInput(imgui_.beginFrame());
-  const float aspect = float(imageWidth) / float(imageHeight);
-  const Camera beforeInput = camera_->camera(aspect);
-  input_.apply(*camera_, heldFlyKeys(), float(std::min(seconds, kMaxFlyStep)), float(imageHeight));
-  const Camera camera = camera_->camera(aspect);
-  if (!sameCamera(camera, beforeInput)) followsSceneCamera_ = false;
-  // A scene's first camera is where the view starts, not a motion.
-  const bool moved = (!sceneJustShown_ && !sameCamera(camera, lastCamera_)) || (posed && controls_.animation.playing);
-  lastCamera_ = camera;
-  sceneJustShown_ = false;
-  lastPlan_ = policy_.plan(uint32_t(imageWidth), uint32_t(imageHeight), controls_.samplesPerFrame, moved, now);
-
-  RenderSettings settings;
-  settings.width = lastPlan_.width;
-  settings.height = lastPlan_.height;
-  settings.maxDepth = controls_.maxDepth;
-  settings.seed = options_.seed;
-  settings.sampler = options_.sampler;
-  settings.lightSampler = options_.lightSampler;
-  auto start = std::chrono::steady_clock::now();
-  prepareDenoiser();
-  // The bilateral pass keeps the emission apart, which the backend records with the AOVs.
-  session_.setAovsEnabled(controls_.post.denoiser != DenoiserChoice::None || controls_.post.bilateral);
-  session_.renderFrame(camera, settings, lastPlan_.samplesPerPixel, controls_.accumulate);
-  // The denoised image is made on the host side of the backend, and the emission the bilateral pass needs is read
-  // from there; otherwise the image may stay on the device (interop).
-  if (controls_.post.bilateral) {
-    const Image emission = session_.emission();
-    display_.upload(accumulatedImage(), &emission);
-  } else if (controls_.post.denoiser != DenoiserChoice::None) {
-    display_.upload(accumulatedImage());
-  } else {
-    transfer_.transfer(session_, display_);
-  }
-  policy_.recordFrame(lastPlan_, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  lastPlan_ = renderer_.step({uint32_t(imageWidth), uint32_t(imageHeight), now, seconds}, *this).plan;
 
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, framebufferWidth_, framebufferHeight_);
   glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
-  display_.draw(controls_.post, 0, 0, imageWidth, imageHeight);
+  display_.draw(renderer_.controls().post, 0, 0, imageWidth, imageHeight);
 
   updateStatus(seconds);
   // The panel's edits take effect from the next frame on; its actions act on this frame's image.
   // ImGui lays out in window coordinates, which differ from framebuffer pixels on high-density displays.
   const float scale = ImGui::GetIO().DisplayFramebufferScale.x > 0.0f ? ImGui::GetIO().DisplayFramebufferScale.x : 1.0f;
-  PanelRequests requests = drawPanel(status_, controls_, float(imageWidth) / scale, float(kPanelWidth) / scale,
-                                     float(framebufferHeight_) / scale);
+  PanelRequests requests = drawPanel(status_, renderer_.controls(), float(imageWidth) / scale,
+                                     float(kPanelWidth) / scale, float(framebufferHeight_) / scale);
   openSceneField_ = requests.openSceneField;
   openSceneFieldActive_ = requests.openSceneFieldActive;
   handle(requests);
   imgui_.render();
 }
 
-// The OptiX AI denoiser is made when first chosen; where it cannot run the panel says why and denoising goes off,
-// before any frame is rendered for it.
-void Viewer::prepareDenoiser() {
-  const std::string why = denoiser_.prepareOrTurnOff(controls_.post.denoiser);
-  if (!why.empty()) report(why, true);
+// ImGui takes this frame's share of the queued input first; the camera takes what ImGui does not want.
+FlyKeys Viewer::takeInput() {
+  handleInput(imgui_.beginFrame());
+  return heldFlyKeys();
 }
 
-// What the window shows before its GPU passes: the film, through the chosen denoiser.
-Image Viewer::screenshotEmission() const { return session_.backend().aovsEnabled() ? session_.emission() : Image(); }
-
-Image Viewer::accumulatedImage() {
-  return denoiser_.apply(session_, controls_.post.denoiser, controls_.post.atrousParams);
+// The denoised or filtered image is made on the host side of the backend, and the emission the bilateral pass
+// keeps apart is read from there; otherwise the image may stay on the device (interop).
+void Viewer::present(FrameImages& frame) {
+  if (frame.needsHost())
+    display_.upload(frame.image(), frame.emission());
+  else
+    transfer_.transfer(frame.session(), display_);
 }
 
 void Viewer::updateStatus(double seconds) {
-  status_.accumulatedSamples = session_.accumulatedSamples();
+  status_.accumulatedSamples = renderer_.session().accumulatedSamples();
   status_.imageWidth = lastPlan_.width;
   status_.imageHeight = lastPlan_.height;
   status_.preview = lastPlan_.preview;
-  status_.scene = session_.summary();
-  status_.cameraPosition = camera_->position();
-  status_.cameraDirection = camera_->forward();
+  status_.scene = renderer_.session().summary();
+  status_.cameraPosition = renderer_.camera().position();
+  status_.cameraDirection = renderer_.camera().forward();
   if (seconds > 0.0) {
     const double ms = seconds * 1000.0;
     status_.msPerFrame =
@@ -368,24 +283,26 @@ void Viewer::updateStatus(double seconds) {
 }
 
 void Viewer::writeState() {
+  const RenderSession& session = renderer_.session();
+  const OrbitCamera& camera = renderer_.camera();
   ViewerState state;
-  state.frame = session_.frames();
-  state.restarts = session_.restarts();
-  state.accumulatedSamples = session_.accumulatedSamples();
+  state.frame = session.frames();
+  state.restarts = session.restarts();
+  state.accumulatedSamples = session.accumulatedSamples();
   state.imageWidth = lastPlan_.width;
   state.imageHeight = lastPlan_.height;
   state.preview = lastPlan_.preview;
   state.scene = status_.sceneName;
   state.backend = status_.backend;
-  state.cameraPosition = camera_->position();
-  state.cameraForward = camera_->forward();
-  state.cameraTarget = camera_->target();
-  state.cameraDistance = camera_->distance();
-  state.denoiser = denoiserName(controls_.post.denoiser);
+  state.cameraPosition = camera.position();
+  state.cameraForward = camera.forward();
+  state.cameraTarget = camera.target();
+  state.cameraDistance = camera.distance();
+  state.denoiser = denoiserName(renderer_.controls().post.denoiser);
   state.message = status_.message;
   state.messageIsError = status_.messageIsError;
   state.openSceneField = openSceneField_;
-  state.openSceneText = controls_.openSpec;
+  state.openSceneText = renderer_.controls().openSpec;
   state.openSceneFieldActive = openSceneFieldActive_;
   try {
     writeStateFile(options_.stateFile, state);
@@ -396,8 +313,7 @@ void Viewer::writeState() {
 
 void Viewer::writeExitFiles() {
   if (!options_.windowCapture.empty()) captureWindow(options_.windowCapture, framebufferWidth_, framebufferHeight_);
-  if (!options_.screenshot.empty())
-    saveScreenshot(options_.screenshot, accumulatedImage(), screenshotEmission(), controls_.post);
+  if (!options_.interactive.screenshot.empty()) renderer_.writeScreenshot(options_.interactive.screenshot);
 }
 
 int Viewer::run() {
@@ -417,22 +333,20 @@ int Viewer::run() {
       writeState();
       stateRequested_ = false;
     }
-    if (options_.frames > 0 && session_.frames() >= options_.frames) break;
+    const uint32_t frames = options_.interactive.frames;
+    if (frames > 0 && renderer_.session().frames() >= frames) break;
     glfwSwapBuffers(window_.handle());
   }
   writeExitFiles();
   std::fprintf(stderr, "viewer: %llu frames; the panel showed %.1f fps, %.2f ms/frame\n",
-               static_cast<unsigned long long>(session_.frames()), status_.framesPerSecond, status_.msPerFrame);
+               static_cast<unsigned long long>(renderer_.session().frames()), status_.framesPerSecond,
+               status_.msPerFrame);
   return 0;
 }
 
 }  // namespace
 
 int runViewer(const ViewerOptions& options) {
-  if (options.post.denoiser == DenoiserChoice::Optix && !ViewerDenoiser::optixInThisBuild())
-    throw std::runtime_error(
-        "--denoise optix needs the OptiX backend, which is not in this build (see README, "
-        "'GPU backend')");
   Viewer viewer(options);
   return viewer.run();
 }

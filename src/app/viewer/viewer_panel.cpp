@@ -6,7 +6,7 @@
 #include <optional>
 #include <span>
 
-#include "app/viewer/viewer_denoiser.h"
+#include "app/interactive/viewer_denoiser.h"
 
 namespace candela {
 

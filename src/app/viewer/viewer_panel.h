@@ -3,8 +3,8 @@
 #include <utility>
 #include <vector>
 
-#include "app/viewer/scene_summary.h"
-#include "app/viewer/viewer_controls.h"
+#include "app/interactive/scene_summary.h"
+#include "app/interactive/viewer_controls.h"
 
 namespace candela {
 

@@ -64,6 +64,7 @@ function onText(message) {
     buildDenoisers(message.denoisers);
     $('atrous_passes').max = message.max_atrous_passes;
     buildOverrides(message.override_parameters);
+    buildAnimations(message.animations);
     showControls(message.controls);
   } else if (message.type === 'role') {
     state.control = message.control;
@@ -112,24 +113,39 @@ function showStatus(h) {
 
 // ---- the panel -------------------------------------------------------------------------------------------------
 
-const sliders = ['max_depth', 'samples_per_frame', 'env_intensity', 'env_rotation', 'exposure', 'atrous_passes'];
+const sliders = ['max_depth', 'samples_per_frame', 'env_intensity', 'env_rotation', 'exposure', 'atrous_passes',
+                 'animation_time'];
 const integerSliders = new Set(['max_depth', 'samples_per_frame', 'atrous_passes']);
 const checkboxes = ['accumulate', 'bilateral'];
-const selects = ['shading', 'tonemap', 'denoiser'];
+const selects = ['shading', 'tonemap', 'denoiser', 'animation'];
+const numberSelects = new Set(['animation']);
 
-function showOutput(input) {
+// The value beside a slider: the server's where it lies beyond the slider's range (--max-depth 1024).
+function showOutput(input, value = input.value) {
   const output = input.parentElement.querySelector('output');
-  if (output) output.textContent = input.value;
+  if (output) output.textContent = value;
 }
+
+// The clips of the scene's animation (the hello's "animations"): each one's name and time range.
+let clips = [];
+let playing = false;
 
 // Shows the server's controls, except in the field being edited.
 function showControls(controls) {
   if (!controls) return;
+  const clip = clips[controls.animation];
+  if (clip) {
+    $('animation_time').min = clip.start;
+    $('animation_time').max = clip.end;
+  }
+  playing = controls.playing;
+  $('play').textContent = playing ? 'Pause' : 'Play';
   for (const id of [...sliders, ...selects]) {
     const input = $(id);
     if (document.activeElement === input || controls[id] === undefined) continue;
-    input.value = controls[id];
-    showOutput(input);
+    const value = controls[id];
+    input.value = value;
+    showOutput(input, typeof value === 'number' ? Number(value.toFixed(2)) : value);
   }
   for (const id of checkboxes) if (document.activeElement !== $(id)) $(id).checked = controls[id];
   for (const row of document.querySelectorAll('.override')) {
@@ -144,6 +160,15 @@ function showControls(controls) {
 function buildDenoisers(names) {
   const labels = { none: 'None', atrous: 'A-trous', optix: 'OptiX AI' };
   $('denoiser').replaceChildren(...names.map((n) => new Option(labels[n] || n, n)));
+}
+
+// The Animation section, for a scene with an animation: play or pause, the time (moving it pauses) and, where the
+// scene has several, the animation that plays.
+function buildAnimations(animations) {
+  clips = animations;
+  $('animation-panel').hidden = clips.length === 0;
+  $('animation-choice').hidden = clips.length < 2;
+  $('animation').replaceChildren(...clips.map((c, i) => new Option(c.name || `animation ${i}`, i)));
 }
 
 function buildOverrides(parameters) {
@@ -175,7 +200,12 @@ for (const id of sliders) {
   });
 }
 for (const id of checkboxes) $(id).addEventListener('change', (e) => send({ type: 'settings', [id]: e.target.checked }));
-for (const id of selects) $(id).addEventListener('change', (e) => send({ type: 'settings', [id]: e.target.value }));
+for (const id of selects) {
+  $(id).addEventListener('change', (e) => {
+    send({ type: 'settings', [id]: numberSelects.has(id) ? Number(e.target.value) : e.target.value });
+  });
+}
+$('play').addEventListener('click', () => send({ type: 'settings', playing: !playing }));
 
 const action = (name) => () => send({ type: 'action', name });
 $('screenshot').addEventListener('click', action('screenshot'));

@@ -1,7 +1,7 @@
 #pragma once
 #include <string>
 
-#include "app/viewer/viewer_controls.h"
+#include "app/interactive/viewer_controls.h"
 #include "image/image.h"
 #include "kernel/render_settings.h"
 #include "scene/scene.h"

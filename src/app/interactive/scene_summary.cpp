@@ -1,4 +1,4 @@
-#include "app/viewer/scene_summary.h"
+#include "app/interactive/scene_summary.h"
 
 #include <algorithm>
 

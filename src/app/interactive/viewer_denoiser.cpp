@@ -1,4 +1,4 @@
-#include "app/viewer/viewer_denoiser.h"
+#include "app/interactive/viewer_denoiser.h"
 
 #include <memory>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "app/viewer/interactive_policy.h"
+#include "app/interactive/interactive_policy.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "app/viewer/render_session.h"
+#include "app/interactive/render_session.h"
 
 #include <utility>
 

@@ -3,8 +3,8 @@
 #include <memory>
 #include <string>
 
-#include "app/viewer/post_settings.h"
-#include "app/viewer/render_session.h"
+#include "app/interactive/post_settings.h"
+#include "app/interactive/render_session.h"
 #include "backends/film_filters.h"
 
 namespace candela {

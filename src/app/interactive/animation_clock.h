@@ -14,4 +14,10 @@ struct AnimationControls {
 // keeps the clip index and the time within the clip's range. A clip of no length stays at its start.
 void advanceAnimation(AnimationControls& controls, const SceneAnimation& animation, double seconds);
 
+// Plays `clip` (kept within the animation's clips) from its start; the controls stay as they are for an animation
+// without clips.
+void selectClip(AnimationControls& controls, const SceneAnimation& animation, int clip);
+// Pauses at `time`, kept within the clip's range: what dragging the panel's time slider does.
+void seekAnimation(AnimationControls& controls, const SceneAnimation& animation, float time);
+
 }  // namespace candela

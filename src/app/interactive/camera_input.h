@@ -1,5 +1,5 @@
 #pragma once
-#include "app/viewer/orbit_camera.h"
+#include "app/interactive/orbit_camera.h"
 
 namespace candela {
 

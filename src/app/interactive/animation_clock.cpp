@@ -1,4 +1,4 @@
-#include "app/viewer/animation_clock.h"
+#include "app/interactive/animation_clock.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,6 +19,20 @@ void advanceAnimation(AnimationControls& controls, const SceneAnimation& animati
   else if (time < clip.start)
     time = clip.start;
   controls.time = float(time);
+}
+
+void selectClip(AnimationControls& controls, const SceneAnimation& animation, int clip) {
+  if (animation.clips.empty()) return;
+  controls.clip = std::clamp(clip, 0, int(animation.clips.size()) - 1);
+  controls.time = animation.clips[size_t(controls.clip)].start;
+}
+
+void seekAnimation(AnimationControls& controls, const SceneAnimation& animation, float time) {
+  controls.playing = false;
+  if (animation.clips.empty()) return;
+  controls.clip = std::clamp(controls.clip, 0, int(animation.clips.size()) - 1);
+  const AnimationClip& clip = animation.clips[size_t(controls.clip)];
+  controls.time = std::max(clip.start, std::min(time, clip.end));
 }
 
 }  // namespace candela

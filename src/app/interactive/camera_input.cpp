@@ -1,4 +1,4 @@
-#include "app/viewer/camera_input.h"
+#include "app/interactive/camera_input.h"
 
 namespace candela {
 

@@ -1,4 +1,4 @@
-#include "app/viewer/orbit_camera.h"
+#include "app/interactive/orbit_camera.h"
 
 #include <algorithm>
 #include <cmath>

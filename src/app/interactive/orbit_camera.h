@@ -1,5 +1,5 @@
 #pragma once
-#include "app/viewer/scene_summary.h"
+#include "app/interactive/scene_summary.h"
 #include "kernel/camera.h"
 #include "scene/scene.h"
 

@@ -3,7 +3,7 @@
 #include <memory>
 #include <optional>
 
-#include "app/viewer/scene_summary.h"
+#include "app/interactive/scene_summary.h"
 #include "backends/backend.h"
 #include "backends/film_filters.h"
 #include "scene/animation_player.h"

@@ -3,8 +3,8 @@
 #include <string>
 #include <vector>
 
-#include "app/viewer/animation_clock.h"
-#include "app/viewer/post_settings.h"
+#include "app/interactive/animation_clock.h"
+#include "app/interactive/post_settings.h"
 #include "scene/material_overrides.h"
 
 namespace candela {

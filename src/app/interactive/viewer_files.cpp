@@ -1,4 +1,4 @@
-#include "app/viewer/viewer_files.h"
+#include "app/interactive/viewer_files.h"
 
 #include <nlohmann/json.hpp>
 
@@ -7,9 +7,9 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "core/file_extension.h"
-#include "image/filters/bilateral.h"
+#include "app/interactive/post_filter.h"
 #include "io/atomic_file.h"
+#include "core/file_extension.h"
 #include "io/images/image_io.h"
 
 namespace candela {
@@ -27,12 +27,7 @@ void writeJson(const std::string& path, const nlohmann::ordered_json& json) {
 
 void saveScreenshot(const std::string& path, const Image& accumulated, const Image& emission,
                     const PostSettings& post) {
-  if (post.bilateral && emission.pixels.empty())
-    writeImage(path, bilateralFilter(accumulated, post.bilateralParams), post.display);
-  else if (post.bilateral)
-    writeImage(path, bilateralFilter(accumulated, emission, post.bilateralParams), post.display);
-  else
-    writeImage(path, accumulated, post.display);
+  writeImage(path, postFiltered(accumulated, emission, post), post.display);
 }
 
 namespace {
