@@ -4,6 +4,7 @@
 #include <string>
 
 #include "app/render_job.h"
+#include "image/filters/temporal.h"
 #include "io/images/image_io.h"
 
 namespace candela {
