@@ -2,6 +2,7 @@
 // (image/display_pixels.h) of the same linear images: the film's means, and the CUDA filters' outputs read back.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
@@ -28,7 +29,7 @@ std::vector<uint8_t> cpuBytes(const Image& image, const DisplaySettings& display
 
 // Both sides compute each byte with the same float operations in the same order (image/display_kernel.h: no fused
 // multiply-adds, IEEE division, the exposure's factor from the host, the same sRGB byte table instead of powf),
-// so the bytes should be equal; the contract is one step per channel at most. Prints how many channels differ.
+// so the bytes are equal (so they were on an H200). Prints how many channels differ, and by how much, where any do.
 void expectSameBytes(const std::vector<uint8_t>& gpu, const std::vector<uint8_t>& cpu, const std::string& what) {
   ASSERT_EQ(gpu.size(), cpu.size()) << what;
   int worst = 0;
@@ -40,7 +41,7 @@ void expectSameBytes(const std::vector<uint8_t>& gpu, const std::vector<uint8_t>
   }
   if (differing)
     std::printf("%s: %zu of %zu channels differ, by at most %d\n", what.c_str(), differing, gpu.size(), worst);
-  EXPECT_LE(worst, 1) << what;
+  EXPECT_EQ(differing, 0u) << what;
 }
 
 class OptixDisplay : public testing::Test {
