@@ -15,6 +15,7 @@
 
 namespace candela {
 
+class FilmDisplay;
 class FilmFilters;
 
 struct FrameStats {
@@ -87,6 +88,9 @@ class Backend {
   // The filters that run on this backend's film (backends/film_filters.h): the CPU's on readImage(), or a GPU
   // backend's own on its film in device memory.
   virtual const FilmFilters& filters() const = 0;
+  // The display frames of this backend's film (backends/film_display.h): the accumulated or filtered image tone
+  // mapped to 8-bit sRGB pixels, on the host, or on a GPU backend's device with only the bytes read back.
+  virtual const FilmDisplay& display() const = 0;
 
   // Capabilities some backends have; callers ask for them here rather than for a backend's type.
   //

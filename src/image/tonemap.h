@@ -13,11 +13,14 @@ enum class ToneMapper {
   Reinhard = 2,    // x / (1 + x) per channel
 };
 
-// Narkowicz's fit of the ACES filmic curve, applied per channel.
-CANDELA_FN float acesFilmic(float x) {
+// Narkowicz's fit of the ACES filmic curve before its clamp to [0, 1] (image/display_kernel.h clamps it its own way).
+CANDELA_FN float acesFilmicUnclamped(float x) {
   constexpr float a = 2.51f, b = 0.03f, c = 2.43f, d = 0.59f, e = 0.14f;
-  return clampf((x * (a * x + b)) / (x * (c * x + d) + e), 0.0f, 1.0f);
+  return (x * (a * x + b)) / (x * (c * x + d) + e);
 }
+
+// Narkowicz's fit of the ACES filmic curve, applied per channel.
+CANDELA_FN float acesFilmic(float x) { return clampf(acesFilmicUnclamped(x), 0.0f, 1.0f); }
 
 CANDELA_FN float reinhard(float x) {
   x = fmaxf(x, 0.0f);

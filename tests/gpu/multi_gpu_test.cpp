@@ -12,6 +12,7 @@
 #include <set>
 
 #include "app/device_list.h"
+#include "backends/film_display.h"
 #include "backends/optix/cuda_devices.h"
 #include "backends/optix/multi_gpu_backend.h"
 #include "gpu_render.h"
@@ -183,6 +184,34 @@ TEST(MultiGpu, DeviceImageIsTheCombinedImage) {
     for (int c = 0; c < 3; ++c)
       ASSERT_NEAR(image[i][c], expected.pixels[i][c], kRelative * std::max(1.0f, std::fabs(expected.pixels[i][c])))
           << "pixel " << i;
+}
+
+// The display frames (Backend::display) are the first device's, of the combined film: the bytes the CPU display
+// gives of the combined image, with the temporal filter too (whose frames combine the films themselves).
+TEST(MultiGpu, DisplayFramesShowTheCombinedFilm) {
+  const Scene scene = makeCornellBox();
+  const RenderSettings s = settings(64, 48, 15);
+  auto group = makeGroup();
+  start(*group, scene, s, /*aovs=*/true);
+  const Camera camera = scene.camera.toCamera(float(s.width) / float(s.height));
+  const std::unique_ptr<TemporalDenoiser> shown = group->filters().temporal(TemporalParams{});
+  const std::unique_ptr<TemporalDenoiser> read = group->filters().temporal(TemporalParams{});
+  auto cpuBytes = [](const Image& image) {
+    std::vector<uint8_t> bytes(image.pixels.size() * 3);
+    writeDisplayPixels({image.pixels.data(), nullptr, image.width, image.height}, DisplaySettings{}, 1, bytes.data());
+    return bytes;
+  };
+  for (int frame = 0; frame < 4; ++frame) {
+    group->render(1);  // rows on every device: the display must combine them first
+    DisplayRequest request;
+    const DisplayFrame plain = group->display().read(request);
+    EXPECT_EQ(std::vector<uint8_t>(plain.rgb, plain.rgb + s.width * s.height * 3), cpuBytes(group->readImage()));
+    group->render(1);
+    request.source = TemporalFiltered{shown.get(), camera, frame > 0};
+    const DisplayFrame temporal = group->display().read(request);
+    EXPECT_EQ(std::vector<uint8_t>(temporal.rgb, temporal.rgb + s.width * s.height * 3),
+              cpuBytes(read->denoise(camera, frame > 0)));
+  }
 }
 
 // A resumed render: the loaded film replaces every device's samples, and later samples add to it.

@@ -5,6 +5,7 @@
 
 #include "app/interactive/animation_clock.h"
 #include "app/interactive/render_session.h"
+#include "backends/film_display.h"
 #include "backends/film_filters.h"
 #include "scene/builtin_scenes.h"
 
@@ -79,6 +80,7 @@ class RecordingBackend final : public Backend {
   bool aovsEnabled() const override { return aovs_; }
   AovImages readAovs() const override { return {}; }
   const FilmFilters& filters() const override { return filters_; }
+  const FilmDisplay& display() const override { return display_; }
 
  private:
   void restart() {
@@ -88,6 +90,7 @@ class RecordingBackend final : public Backend {
   BackendLog& log_;
   bool aovs_ = false;
   HostFilmFilters filters_{*this};
+  HostFilmDisplay display_{*this};
 };
 
 struct SessionTest : ::testing::Test {

@@ -4,6 +4,7 @@
 #include "backends/backend.h"
 #include "backends/cpu/embree_scene.h"
 #include "backends/cpu/host_film.h"
+#include "backends/film_display.h"
 #include "backends/film_filters.h"
 #include "scene/flat_scene.h"
 
@@ -37,6 +38,8 @@ class CpuBackend final : public Backend {
   bool aovsEnabled() const override { return aovsEnabled_; }
   AovImages readAovs() const override;
   const FilmFilters& filters() const override { return filters_; }
+  // Reads the accumulated image straight from the film's sums.
+  const FilmDisplay& display() const override { return display_; }
 
  private:
   void restart();
@@ -52,6 +55,7 @@ class CpuBackend final : public Backend {
   uint32_t accumulated_ = 0;
   uint32_t nextSample_ = 0;
   HostFilmFilters filters_{*this};
+  HostFilmDisplay display_{*this, &film_.sums()};
 };
 
 }  // namespace candela

@@ -4,7 +4,9 @@
 #include <chrono>
 #include <functional>
 #include <stdexcept>
+#include <variant>
 
+#include "backends/film_display.h"
 #include "backends/film_filters.h"
 #include "backends/optix/cuda_devices.h"
 #include "backends/optix/optix_error.h"
@@ -49,6 +51,8 @@ class CombiningTemporalDenoiser : public TemporalDenoiser {
   }
   void reset() override { first_->reset(); }
   const TemporalParams& params() const override { return first_->params(); }
+  // The first device's filter, which the display frames run once they combined the films themselves.
+  TemporalDenoiser* first() const { return first_.get(); }
 
  private:
   std::unique_ptr<TemporalDenoiser> first_;
@@ -83,13 +87,38 @@ class MultiGpuBackend::CombinedFilmFilters final : public FilmFilters {
   const MultiGpuBackend& backend_;
 };
 
+// The first device's display frames, each made once the other devices' films are added to its own.
+class MultiGpuBackend::CombinedFilmDisplay final : public FilmDisplay {
+ public:
+  explicit CombinedFilmDisplay(const MultiGpuBackend& backend) : backend_(backend) {}
+
+  DisplayFrame read(const DisplayRequest& request) const override {
+    const auto start = std::chrono::steady_clock::now();
+    DisplayRequest onFirst = request;
+    if (auto* temporal = std::get_if<TemporalFiltered>(&onFirst.source)) {
+      auto* combining = dynamic_cast<CombiningTemporalDenoiser*>(temporal->denoiser);
+      if (!combining) throw std::invalid_argument("a display frame through a temporal filter of another backend");
+      temporal->denoiser = combining->first();
+    }
+    backend_.mergeFilms();
+    CurrentDevice device(backend_.ordinals_[0]);
+    DisplayFrame frame = backend_.devices_[0]->display().read(onFirst);
+    frame.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return frame;
+  }
+
+ private:
+  const MultiGpuBackend& backend_;
+};
+
 MultiGpuBackend::MultiGpuBackend(const std::vector<int>& deviceIndices)
     : ordinals_(deviceIndices),
       threads_(deviceIndices.size()),
       devices_(deviceIndices.size()),
       balance_(deviceIndices.size()),
       unmerged_(deviceIndices.size()),
-      filters_(std::make_unique<CombinedFilmFilters>(*this)) {
+      filters_(std::make_unique<CombinedFilmFilters>(*this)),
+      display_(std::make_unique<CombinedFilmDisplay>(*this)) {
   if (deviceIndices.size() < 2) throw std::logic_error("MultiGpuBackend needs two devices at least");
   try {
     // Each context is made on its own thread, which keeps that device current.
@@ -262,6 +291,8 @@ AovImages MultiGpuBackend::readAovs() const {
 }
 
 const FilmFilters& MultiGpuBackend::filters() const { return *filters_; }
+
+const FilmDisplay& MultiGpuBackend::display() const { return *display_; }
 
 std::array<unsigned char, 16> MultiGpuBackend::deviceUuid() const { return devices_[0]->deviceUuid(); }
 

@@ -55,6 +55,9 @@ class MultiGpuBackend final : public Backend, public DeviceImage {
   AovImages readAovs() const override;
   // The first device's filters, on the combined film.
   const FilmFilters& filters() const override;
+  // The first device's display frames, of the combined film; a temporal source must be a filter this backend's
+  // filters().temporal() made.
+  const FilmDisplay& display() const override;
   double lastCombineMilliseconds() const override { return combineMilliseconds_; }
 
   const DeviceImage* deviceImage() const override { return this; }
@@ -71,6 +74,7 @@ class MultiGpuBackend final : public Backend, public DeviceImage {
 
  private:
   class CombinedFilmFilters;
+  class CombinedFilmDisplay;
   // Runs `task` on every device at once, each on its thread with its device current.
   void onEveryDevice(const std::function<void(OptixBackend&)>& task);
   // A change every device made: the films start again.
@@ -93,6 +97,7 @@ class MultiGpuBackend final : public Backend, public DeviceImage {
   mutable std::vector<RowRange> unmerged_;  // per device: rows holding sums not yet in the first device's film
   mutable double combineMilliseconds_ = 0.0;
   std::unique_ptr<CombinedFilmFilters> filters_;
+  std::unique_ptr<CombinedFilmDisplay> display_;
 };
 
 }  // namespace candela

@@ -4,16 +4,20 @@
 #include <optix_stubs.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <variant>
 
+#include "backends/film_display.h"
 #include "backends/film_filters.h"
 #include "backends/optix/acceleration.h"
 #include "backends/optix/cuda_devices.h"
+#include "backends/optix/device_display.h"
 #include "backends/optix/device_film.h"
 #include "backends/optix/device_scene.h"
 #include "backends/optix/film_addition.h"
@@ -103,6 +107,8 @@ struct OptixBackend::State {
   DeviceFilm incoming;                 // another device's film rows on their way into this one (moveFilmRows)
   std::unique_ptr<CudaAtrous> atrous;  // made at the first a-trous read, for the image's size
   DeviceBuffer filtered;               // the filters' output
+  DeviceBuffer smoothed;               // the display frames' smoothing pass's output
+  DeviceDisplay display;
   DeviceBuffer counters;
   DeviceBuffer totals{sizeof(CounterTotals), "the counter totals"};
   DeviceBuffer parameters{sizeof(LaunchParameters), "the launch parameters"};
@@ -241,6 +247,34 @@ struct OptixBackend::State {
     return filtered.as<Vec3>();
   }
 
+  // The a-trous and bilateral filters of the film, enqueued: their result is in filterOutput().
+  Vec3* enqueueAtrous(const AtrousParams& params) {
+    if (!aovsEnabled) throw std::logic_error("the a-trous filter without setAovsEnabled(true)");
+    validateAtrousParams(params);
+    if (!atrous || atrous->width() != settings.width || atrous->height() != settings.height) {
+      atrous.reset();
+      atrous = std::make_unique<CudaAtrous>(settings.width, settings.height);
+    }
+    atrous->run(film.view(), nullptr, nullptr, filterOutput(), params, context.stream());
+    return filterOutput();
+  }
+
+  Vec3* enqueueBilateral(const BilateralParams& params) {
+    if (!aovsEnabled) throw std::logic_error("the bilateral filter without setAovsEnabled(true)");
+    validateBilateralParams(params);
+    cudaBilateral(film.view(), filterOutput(), settings.width, settings.height, params, context.stream());
+    return filterOutput();
+  }
+
+  Vec3* smoothingOutput() {
+    const size_t bytes = size_t(pixelCount()) * sizeof(Vec3);
+    if (smoothed.size() != bytes) {
+      smoothed = DeviceBuffer();
+      smoothed = DeviceBuffer(bytes, "the smoothed image");
+    }
+    return smoothed.as<Vec3>();
+  }
+
   Image downloadFiltered() const {
     Image image(settings.width, settings.height);
     checkCuda(cudaStreamSynchronize(context.stream()), "filtering the image");
@@ -255,14 +289,21 @@ class OptixBackend::DeviceTemporalDenoiser : public TemporalDenoiser {
   DeviceTemporalDenoiser(const OptixBackend& backend, const TemporalParams& params)
       : backend_(backend), filter_(params) {}
   Image denoise(const Camera& camera, bool filmContinues) override {
+    enqueue(camera, filmContinues);
+    return backend_.state_->downloadFiltered();
+  }
+  void reset() override { filter_.reset(); }
+  const TemporalParams& params() const override { return filter_.params(); }
+
+  // The filter enqueued: its result is in the backend's State::filterOutput().
+  Vec3* enqueue(const Camera& camera, bool filmContinues) {
     State& s = *backend_.state_;
     if (!s.aovsEnabled) throw std::logic_error("the temporal filter without setAovsEnabled(true)");
     filter_.run(s.film.view(), s.settings.width, s.settings.height, camera, s.accumulated, filmContinues,
                 s.filterOutput(), s.context.stream());
-    return s.downloadFiltered();
+    return s.filterOutput();
   }
-  void reset() override { filter_.reset(); }
-  const TemporalParams& params() const override { return filter_.params(); }
+  const OptixBackend& backend() const { return backend_; }
 
  private:
   const OptixBackend& backend_;
@@ -275,23 +316,13 @@ class OptixBackend::DeviceFilmFilters final : public FilmFilters {
   explicit DeviceFilmFilters(const OptixBackend& backend) : backend_(backend) {}
 
   Image atrous(const AtrousParams& params) const override {
-    State& s = *backend_.state_;
-    if (!s.aovsEnabled) throw std::logic_error("the a-trous filter without setAovsEnabled(true)");
-    validateAtrousParams(params);
-    if (!s.atrous || s.atrous->width() != s.settings.width || s.atrous->height() != s.settings.height) {
-      s.atrous.reset();
-      s.atrous = std::make_unique<CudaAtrous>(s.settings.width, s.settings.height);
-    }
-    s.atrous->run(s.film.view(), nullptr, nullptr, s.filterOutput(), params, s.context.stream());
-    return s.downloadFiltered();
+    backend_.state_->enqueueAtrous(params);
+    return backend_.state_->downloadFiltered();
   }
 
   Image bilateral(const BilateralParams& params) const override {
-    State& s = *backend_.state_;
-    if (!s.aovsEnabled) throw std::logic_error("the bilateral filter without setAovsEnabled(true)");
-    validateBilateralParams(params);
-    cudaBilateral(s.film.view(), s.filterOutput(), s.settings.width, s.settings.height, params, s.context.stream());
-    return s.downloadFiltered();
+    backend_.state_->enqueueBilateral(params);
+    return backend_.state_->downloadFiltered();
   }
 
   std::unique_ptr<TemporalDenoiser> temporal(const TemporalParams& params) const override {
@@ -302,8 +333,58 @@ class OptixBackend::DeviceFilmFilters final : public FilmFilters {
   const OptixBackend& backend_;
 };
 
+// Display frames of the film, or of a filter's output, made on the device (DeviceDisplay).
+class OptixBackend::DeviceFilmDisplay final : public FilmDisplay {
+ public:
+  explicit DeviceFilmDisplay(const OptixBackend& backend) : backend_(backend) {}
+
+  DisplayFrame read(const DisplayRequest& request) const override {
+    const auto start = std::chrono::steady_clock::now();
+    State& s = *backend_.state_;
+    displaySize(s.settings.width, s.settings.height, request.divisor);  // refuses a divisor before any filter runs
+    if (request.smoothing) validateBilateralParams(*request.smoothing);
+    const bool filtered = !std::holds_alternative<AccumulatedImage>(request.source) || request.smoothing;
+    DisplayFrame frame = s.display.read([&] { return enqueueSource(s, request); }, filtered, request.display,
+                                        request.divisor, s.context.stream());
+    frame.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return frame;
+  }
+
+ private:
+  // Enqueues the request's filter and smoothing; returns where their result (or the film) is.
+  LinearPixels enqueueSource(State& s, const DisplayRequest& request) const {
+    const FilmView film = s.film.view();
+    Vec3* values = film.radiance;
+    uint32_t* samples = film.samples;
+    if (const auto* atrous = std::get_if<AtrousFiltered>(&request.source)) values = s.enqueueAtrous(atrous->params);
+    if (const auto* bilateral = std::get_if<BilateralFiltered>(&request.source))
+      values = s.enqueueBilateral(bilateral->params);
+    if (const auto* temporal = std::get_if<TemporalFiltered>(&request.source)) {
+      auto* denoiser = dynamic_cast<DeviceTemporalDenoiser*>(temporal->denoiser);
+      if (!denoiser || &denoiser->backend() != &backend_)
+        throw std::invalid_argument("a display frame through a temporal filter of another backend");
+      values = denoiser->enqueue(temporal->camera, temporal->filmContinues);
+    }
+    if (values != film.radiance) samples = nullptr;  // a filter's output: means
+    if (request.smoothing) {
+      FilmView image;  // the source alone: no emission is kept apart
+      image.radiance = values;
+      image.samples = samples;
+      cudaBilateral(image, s.smoothingOutput(), s.settings.width, s.settings.height, *request.smoothing,
+                    s.context.stream());
+      values = s.smoothingOutput();
+      samples = nullptr;
+    }
+    return {values, samples, s.settings.width, s.settings.height};
+  }
+
+  const OptixBackend& backend_;
+};
+
 OptixBackend::OptixBackend(int deviceIndex)
-    : state_(std::make_unique<State>(deviceIndex)), filters_(std::make_unique<DeviceFilmFilters>(*this)) {
+    : state_(std::make_unique<State>(deviceIndex)),
+      filters_(std::make_unique<DeviceFilmFilters>(*this)),
+      display_(std::make_unique<DeviceFilmDisplay>(*this)) {
   std::fprintf(stderr, "optix: %s\n", deviceDescription().c_str());
   setSettings(RenderSettings{});
 }
@@ -432,6 +513,8 @@ AovImages OptixBackend::readAovs() const {
 }
 
 const FilmFilters& OptixBackend::filters() const { return *filters_; }
+
+const FilmDisplay& OptixBackend::display() const { return *display_; }
 
 std::array<unsigned char, 16> OptixBackend::deviceUuid() const {
   cudaDeviceProp properties{};

@@ -56,6 +56,9 @@ class OptixBackend final : public Backend, public DeviceImage {
   // The CUDA versions of the CPU filters, run on the film in device memory; only the result comes back.
   // The CUDA version of the temporal filter, its history kept in device memory; only the result comes back.
   const FilmFilters& filters() const override;
+  // Display frames made on the GPU from the film or the CUDA filters' output; only the 8-bit pixels come back.
+  // A temporal source must be a filter this backend's filters().temporal() made.
+  const FilmDisplay& display() const override;
 
   // The image stays on the GPU for consumers there (CUDA-OpenGL interop).
   const DeviceImage* deviceImage() const override { return this; }
@@ -84,9 +87,11 @@ class OptixBackend final : public Backend, public DeviceImage {
  private:
   class DeviceTemporalDenoiser;
   class DeviceFilmFilters;
+  class DeviceFilmDisplay;
   struct State;
   std::unique_ptr<State> state_;
   std::unique_ptr<DeviceFilmFilters> filters_;
+  std::unique_ptr<DeviceFilmDisplay> display_;
 };
 
 }  // namespace candela
