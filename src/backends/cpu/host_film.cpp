@@ -9,16 +9,9 @@ void HostFilm::reset(uint32_t width, uint32_t height, bool withAovs) {
 }
 
 FilmView HostFilm::view() {
-  FilmView v{sums_.radiance.data(), nullptr, sums_.samples.data()};
-  if (hasAovs()) {
-    v.emission = sums_.emission.data();
-    v.albedo = sums_.albedo.data();
-    v.normal = sums_.normal.data();
-    v.depth = sums_.depth.data();
-    v.luminanceSquares = sums_.luminanceSquares.data();
-    v.oddLuminance = sums_.oddLuminance.data();
-    v.oddSamples = sums_.oddSamples.data();
-  }
+  FilmView v;
+  forEachFilmChannel(v, sums_,
+                     [](auto, auto*& pointer, auto& values) { pointer = values.empty() ? nullptr : values.data(); });
   return v;
 }
 
