@@ -40,6 +40,15 @@ struct FilmSums {
     return total;
   }
   bool hasAovs() const { return !albedo.empty(); }
+  // Whether every channel holds a value per pixel, but for those with AOVs only, which are empty without AOVs: what
+  // the backends and the checkpoints take.
+  bool channelsFit() const {
+    bool fit = true;
+    forEachFilmChannel(*this, [&](auto channel, const auto& values) {
+      fit = fit && values.size() == (channel.inFilm(hasAovs()) ? pixelCount() : 0);
+    });
+    return fit;
+  }
   bool sameShape(const FilmSums& other) const {
     return width == other.width && height == other.height && hasAovs() == other.hasAovs();
   }

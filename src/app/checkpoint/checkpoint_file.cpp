@@ -88,6 +88,7 @@ void checkIdentity(const std::string& path, const Imf::Header& header, const Exr
 
 void writeCheckpoint(const std::string& path, const Checkpoint& checkpoint) {
   const FilmSums& film = checkpoint.film;
+  if (!film.channelsFit()) throw std::invalid_argument("writeCheckpoint: a channel of the film has another size");
   std::vector<Vec3> means(film.pixelCount());
   for (size_t i = 0; i < means.size(); ++i) means[i] = filmMean(film.radiance[i], film.samples[i]);
   const char* base = reinterpret_cast<const char*>(means.data());

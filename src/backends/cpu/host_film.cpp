@@ -17,6 +17,7 @@ FilmView HostFilm::view() {
 
 void HostFilm::load(const FilmSums& sums) {
   if (!sums.sameShape(sums_)) throw std::invalid_argument("HostFilm::load: the sums have another size or AOVs");
+  if (!sums.channelsFit()) throw std::invalid_argument("HostFilm::load: a channel of the sums has another size");
   sums_ = sums;
 }
 

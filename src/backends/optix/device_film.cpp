@@ -126,6 +126,7 @@ FilmSums DeviceFilm::download() const {
 void DeviceFilm::upload(const FilmSums& sums) {
   if (sums.width != width_ || sums.height != height_ || sums.hasAovs() != hasAovs())
     throw std::invalid_argument("DeviceFilm::upload: the sums have another size or AOVs");
+  if (!sums.channelsFit()) throw std::invalid_argument("DeviceFilm::upload: a channel of the sums has another size");
   forEachFilmChannel(sums, buffers_, [](auto, const auto& values, DeviceBuffer& buffer) {
     if (buffer.size() > 0) buffer.upload(values.data(), buffer.size());
   });

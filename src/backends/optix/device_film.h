@@ -30,7 +30,8 @@ class DeviceFilm {
   Image readEmission() const;
   AovImages readAovs() const;
 
-  // The sums in host memory, and replacing them (same size and AOVs, else std::invalid_argument); synchronous.
+  // The sums in host memory, and replacing them (same size and AOVs, and a value per pixel in each channel:
+  // FilmSums::channelsFit; else std::invalid_argument); synchronous.
   FilmSums download() const;
   void upload(const FilmSums& sums);
 
