@@ -58,8 +58,11 @@ int main() {
     checkCuda(cudaStreamCreate(&stream), "creating a CUDA stream");
     CudaAtrous atrous(w, h);
     // Images of means: no sample counts.
-    const FilmView film{color.as<Vec3>(),  emission.as<Vec3>(), nullptr,
-                        albedo.as<Vec3>(), normal.as<Vec3>(),   depth.as<float>()};
+    const FilmView film{.radiance = color.as<Vec3>(),
+                        .emission = emission.as<Vec3>(),
+                        .albedo = albedo.as<Vec3>(),
+                        .normal = normal.as<Vec3>(),
+                        .depth = depth.as<float>()};
     AtrousParams params;
     params.passes = 5;
     const double atrousMs = medianMilliseconds(stream, [&] {

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "core/math.h"
+#include "kernel/film_channels.h"
 
 namespace candela {
 
@@ -11,40 +12,43 @@ namespace candela {
 // into a backend, accumulation continues from it as if it had never left.
 struct FilmSums {
   uint32_t width = 0, height = 0;
-  std::vector<Vec3> radiance;
-  std::vector<uint32_t> samples;
-  // The emission sums, the AOV sums, the squared-luminance sums and the luminance sums and counts of the samples
-  // of odd index (kernel/film.h); empty when the film has no AOVs.
-  std::vector<Vec3> emission, albedo, normal;
-  std::vector<float> depth, luminanceSquares, oddLuminance;
-  std::vector<uint32_t> oddSamples;
+  // A vector per channel of kernel/film_channels.h; those of the channels with AOVs only are empty when the film
+  // has no AOVs.
+#define CANDELA_FILM_SUMS_VECTOR(Type, name, ...) std::vector<Type> name;
+  CANDELA_FILM_CHANNELS(CANDELA_FILM_SUMS_VECTOR)
+#undef CANDELA_FILM_SUMS_VECTOR
 
   // A cleared film of width x height pixels, with AOV sums or without.
   static FilmSums zero(uint32_t width, uint32_t height, bool withAovs) {
     FilmSums f;
     f.width = width;
     f.height = height;
-    const size_t pixels = size_t(width) * height, aovPixels = withAovs ? pixels : 0;
-    f.radiance.assign(pixels, Vec3{});
-    f.emission.assign(aovPixels, Vec3{});
-    f.samples.assign(pixels, 0);
-    f.albedo.assign(aovPixels, Vec3{});
-    f.normal.assign(aovPixels, Vec3{});
-    f.depth.assign(aovPixels, 0.0f);
-    f.luminanceSquares.assign(aovPixels, 0.0f);
-    f.oddLuminance.assign(aovPixels, 0.0f);
-    f.oddSamples.assign(aovPixels, 0);
+    const size_t pixels = size_t(width) * height;
+    forEachFilmChannel(f, [&](auto channel, auto& values) {
+      values.assign(channel.inFilm(withAovs) ? pixels : 0, typename decltype(channel)::Type{});
+    });
     return f;
   }
 
   size_t pixelCount() const { return size_t(width) * height; }
   // The bytes of the sums and counts.
   size_t bytes() const {
-    return (radiance.size() + emission.size() + albedo.size() + normal.size()) * sizeof(Vec3) +
-           (samples.size() + oddSamples.size()) * sizeof(uint32_t) +
-           (depth.size() + luminanceSquares.size() + oddLuminance.size()) * sizeof(float);
+    size_t total = 0;
+    forEachFilmChannel(*this, [&](auto channel, const auto& values) {
+      total += values.size() * sizeof(typename decltype(channel)::Type);
+    });
+    return total;
   }
   bool hasAovs() const { return !albedo.empty(); }
+  // Whether every channel holds a value per pixel, but for those with AOVs only, which are empty without AOVs: what
+  // the backends and the checkpoints take.
+  bool channelsFit() const {
+    bool fit = true;
+    forEachFilmChannel(*this, [&](auto channel, const auto& values) {
+      fit = fit && values.size() == (channel.inFilm(hasAovs()) ? pixelCount() : 0);
+    });
+    return fit;
+  }
   bool sameShape(const FilmSums& other) const {
     return width == other.width && height == other.height && hasAovs() == other.hasAovs();
   }

@@ -4,24 +4,20 @@
 #include <cstdint>
 
 #include "core/math.h"
+#include "kernel/film_channels.h"
 
 namespace candela {
 
-// Pointers to a film's per-pixel sums, in host or device memory. A pixel's mean is its sum over its sample count:
-// samples dropped as invalid count nowhere, so they neither darken the pixel nor shift its AOVs.
+// Pointers to a film's per-pixel sums, one per channel of kernel/film_channels.h, in host or device memory; those
+// of the channels with AOVs only are null while the AOVs are off. A pixel's mean is its sum over its sample count
+// (`samples`, the samples accepted): samples dropped as invalid count nowhere, so they neither darken the pixel nor
+// shift its AOVs. Besides the AOVs (kernel/aovs.h) and the emission (PathResult::emitted) the channels hold the
+// denoisers' guides: the sums of the squared luminance of the samples' radiance, and the sum of the luminance and
+// the count of the samples of odd index (the half the Sobol sampler scrambles apart from the even one).
 struct FilmView {
-  Vec3* radiance = nullptr;
-  Vec3* emission = nullptr;     // the sums of PathResult::emitted; null while the AOVs are off, like them
-  uint32_t* samples = nullptr;  // samples accepted per pixel
-  // The AOV sums (kernel/aovs.h), the sums of the squared luminance of the samples' radiance, and the sum of the
-  // luminance and the count of the samples of odd index (the half the Sobol sampler scrambles apart from the even
-  // one): the denoisers' guides; null while the AOVs are off.
-  Vec3* albedo = nullptr;
-  Vec3* normal = nullptr;
-  float* depth = nullptr;
-  float* luminanceSquares = nullptr;
-  float* oddLuminance = nullptr;
-  uint32_t* oddSamples = nullptr;
+#define CANDELA_FILM_VIEW_POINTER(Type, name, ...) Type* name = nullptr;
+  CANDELA_FILM_CHANNELS(CANDELA_FILM_VIEW_POINTER)
+#undef CANDELA_FILM_VIEW_POINTER
 };
 
 // A pixel's sum over `samples` samples as a mean; zero where no sample was accepted.

@@ -11,41 +11,29 @@ struct PixelTally {
   uint32_t invalidSamples = 0;  // dropped: NaN, infinite or negative, or a sum they would have made infinite
 };
 
-// One pixel's sums while samples are added to them: loaded from the film once and stored back once.
-template <bool kWithAovs>
-struct PixelSums {
-  Vec3 radiance;
-  Vec3 emission;  // with the AOVs only, as PathResult::emitted
-  PathAovs aovs;
-  float luminanceSquares = 0.0f, oddLuminance = 0.0f;
-  uint32_t samples = 0, oddSamples = 0;
+// One pixel's value of every channel of the film (kernel/film_channels.h).
+struct FilmPixel {
+#define CANDELA_FILM_PIXEL_VALUE(Type, name, ...) Type name{};
+  CANDELA_FILM_CHANNELS(CANDELA_FILM_PIXEL_VALUE)
+#undef CANDELA_FILM_PIXEL_VALUE
+};
 
+// One pixel's sums while samples are added to them: loaded from the film once and stored back once. Without the
+// AOVs the channels that exist only with them stay zero.
+template <bool kWithAovs>
+struct PixelSums : FilmPixel {
   CANDELA_HD static PixelSums load(const FilmView& film, size_t pixel) {
     PixelSums s;
-    s.radiance = film.radiance[pixel];
-    s.samples = film.samples[pixel];
-    if (kWithAovs) {
-      s.emission = film.emission[pixel];
-      s.aovs = {film.albedo[pixel], film.normal[pixel], film.depth[pixel]};
-      s.luminanceSquares = film.luminanceSquares[pixel];
-      s.oddLuminance = film.oddLuminance[pixel];
-      s.oddSamples = film.oddSamples[pixel];
-    }
+    forEachFilmChannel(s, film, [&](auto channel, auto& value, const auto* values) {
+      if (channel.inFilm(kWithAovs)) value = values[pixel];
+    });
     return s;
   }
 
   CANDELA_HD void store(const FilmView& film, size_t pixel) const {
-    film.radiance[pixel] = radiance;
-    film.samples[pixel] = samples;
-    if (kWithAovs) {
-      film.emission[pixel] = emission;
-      film.albedo[pixel] = aovs.albedo;
-      film.normal[pixel] = aovs.normal;
-      film.depth[pixel] = aovs.depth;
-      film.luminanceSquares[pixel] = luminanceSquares;
-      film.oddLuminance[pixel] = oddLuminance;
-      film.oddSamples[pixel] = oddSamples;
-    }
+    forEachFilmChannel(*this, film, [&](auto channel, const auto& value, auto* values) {
+      if (channel.inFilm(kWithAovs)) values[pixel] = value;
+    });
   }
 
   // Adds the path's sample unless it is invalid or would make a sum infinite (finite samples can: a sum of two
@@ -57,9 +45,12 @@ struct PixelSums {
     const Vec3 r = radiance + path.radiance, e = emission + path.emitted;
     if (!isFinite(r) || !isFinite(e) || samples == 0xFFFFFFFFu) return false;
     if (kWithAovs) {
-      const PathAovs a{aovs.albedo + path.aovs.albedo, aovs.normal + path.aovs.normal, aovs.depth + path.aovs.depth};
-      if (!isFinite(a.albedo) || !isFinite(a.normal) || !isFinite(a.depth)) return false;
-      aovs = a;
+      const Vec3 a = albedo + path.aovs.albedo, n = normal + path.aovs.normal;
+      const float d = depth + path.aovs.depth;
+      if (!isFinite(a) || !isFinite(n) || !isFinite(d)) return false;
+      albedo = a;
+      normal = n;
+      depth = d;
       // Only a guide: where a sample's square overflows, the sum saturates instead of dropping the sample.
       const float l = luminance(path.radiance), squares = luminanceSquares + l * l;
       luminanceSquares = squares < 3.0e38f ? squares : 3.0e38f;

@@ -9,6 +9,7 @@
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
+#include <type_traits>
 
 #include "io/atomic_file.h"
 #include "io/file_bytes.h"
@@ -25,30 +26,31 @@ constexpr const char* kFormatVersion = "1";
 constexpr const char* kNextSampleAttribute = "candela.nextSample";
 constexpr const char* kSamplesPerPixelAttribute = "candela.spp";
 
-// The film's arrays as EXR channels, for writing and for reading alike.
+// The film's channels (kernel/film_channels.h) as EXR channels, for writing and for reading alike: the layer
+// "sum.<name>", of a channel per component for a Vec3 ("sum.radiance.R"); counts as unsigned integers.
 std::vector<ExrChannel> sumChannels(const FilmSums& film) {
-  const auto vec3 = [](const std::vector<Vec3>& values, const std::string& layer, const char* names) {
+  std::vector<ExrChannel> channels;
+  forEachFilmChannel(film, [&](auto channel, const auto& values) {
+    using Value = typename decltype(channel)::Type;
+    if (!channel.inFilm(film.hasAovs())) return;
+    const std::string layer = std::string("sum.") + channel.name;
     const char* base = reinterpret_cast<const char*>(values.data());
-    std::vector<ExrChannel> channels;
-    for (int i = 0; i < 3; ++i)
-      channels.push_back({layer + "." + names[i], base + size_t(i) * sizeof(float), sizeof(Vec3)});
-    return channels;
-  };
-  std::vector<ExrChannel> channels = vec3(film.radiance, "sum.radiance", "RGB");
-  channels.push_back({"sum.samples", reinterpret_cast<const char*>(film.samples.data()), sizeof(uint32_t), true});
-  if (film.hasAovs()) {
-    for (ExrChannel& c : vec3(film.emission, "sum.emission", "RGB")) channels.push_back(c);
-    for (ExrChannel& c : vec3(film.albedo, "sum.albedo", "RGB")) channels.push_back(c);
-    for (ExrChannel& c : vec3(film.normal, "sum.normal", "XYZ")) channels.push_back(c);
-    channels.push_back({"sum.depth", reinterpret_cast<const char*>(film.depth.data()), sizeof(float)});
-    channels.push_back(
-        {"sum.luminanceSquares", reinterpret_cast<const char*>(film.luminanceSquares.data()), sizeof(float)});
-    channels.push_back({"sum.oddLuminance", reinterpret_cast<const char*>(film.oddLuminance.data()), sizeof(float)});
-    channels.push_back(
-        {"sum.oddSamples", reinterpret_cast<const char*>(film.oddSamples.data()), sizeof(uint32_t), true});
-  }
+    if constexpr (std::is_same_v<Value, Vec3>) {
+      for (int i = 0; i < 3; ++i)
+        channels.push_back({layer + "." + channel.components[i], base + size_t(i) * sizeof(float), sizeof(Vec3)});
+    } else {
+      static_assert(std::is_same_v<Value, float> || std::is_same_v<Value, uint32_t>,
+                    "a checkpoint stores channels of Vec3, float and uint32_t");
+      channels.push_back({layer, base, sizeof(Value), std::is_same_v<Value, uint32_t>});
+    }
+  });
   return channels;
 }
+
+// Whether a value of a sum is finite; counts are.
+bool isFiniteSum(Vec3 v) { return isFinite(v); }
+bool isFiniteSum(float v) { return std::isfinite(v); }
+bool isFiniteSum(uint32_t) { return true; }
 
 // A checkpoint that cannot be resumed from, told apart from OpenEXR's own exceptions.
 class ResumeError : public std::runtime_error {
@@ -86,6 +88,7 @@ void checkIdentity(const std::string& path, const Imf::Header& header, const Exr
 
 void writeCheckpoint(const std::string& path, const Checkpoint& checkpoint) {
   const FilmSums& film = checkpoint.film;
+  if (!film.channelsFit()) throw std::invalid_argument("writeCheckpoint: a channel of the film has another size");
   std::vector<Vec3> means(film.pixelCount());
   for (size_t i = 0; i < means.size(); ++i) means[i] = filmMean(film.radiance[i], film.samples[i]);
   const char* base = reinterpret_cast<const char*>(means.data());
@@ -148,13 +151,10 @@ Checkpoint readCheckpoint(const std::string& path, const ExrAttributes& identity
     cannotResume(path, std::string("not a readable OpenEXR file (") + e.what() + ")");
   }
   // What a render adds up is finite (kernel/film_accumulation.h): a file that holds more was not written so.
-  const FilmSums& f = checkpoint.film;
-  for (const std::vector<Vec3>* sums : {&f.radiance, &f.emission, &f.albedo, &f.normal})
-    for (const Vec3& v : *sums)
-      if (!isFinite(v)) cannotResume(path, "its sums hold values that are not finite numbers");
-  for (const std::vector<float>* sums : {&f.depth, &f.luminanceSquares, &f.oddLuminance})
-    for (float v : *sums)
-      if (!std::isfinite(v)) cannotResume(path, "its sums hold values that are not finite numbers");
+  forEachFilmChannel(checkpoint.film, [&](auto, const auto& values) {
+    for (const auto& v : values)
+      if (!isFiniteSum(v)) cannotResume(path, "its sums hold values that are not finite numbers");
+  });
   for (uint32_t count : checkpoint.film.samples)
     if (count > checkpoint.nextSample)
       cannotResume(path, "a pixel holds more samples than the " + std::to_string(checkpoint.nextSample) +

@@ -17,7 +17,8 @@ struct Checkpoint {
   FilmSums film;
 };
 
-// Replaces `path` atomically (io/atomic_file.h); throws WriteError naming it.
+// Replaces `path` atomically (io/atomic_file.h); throws WriteError naming it, and std::invalid_argument for a
+// film whose channels do not fit its size (FilmSums::channelsFit).
 void writeCheckpoint(const std::string& path, const Checkpoint& checkpoint);
 
 // Reads a checkpoint written for a render whose identity is `identity`, whose film is width x height with AOV

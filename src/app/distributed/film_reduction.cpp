@@ -3,6 +3,7 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 #include "app/distributed/mpi_session.h"
@@ -30,7 +31,14 @@ void reduceValues(T* values, size_t count, int rank, double timeoutSeconds) {
   }
 }
 
-float* floats(std::vector<Vec3>& v) { return v.empty() ? nullptr : &v[0].x; }
+// A film channel's values as numbers to add: a Vec3 is three floats.
+template <class T>
+std::pair<T*, size_t> numbers(std::vector<T>& values) {
+  return {values.data(), values.size()};
+}
+std::pair<float*, size_t> numbers(std::vector<Vec3>& values) {
+  return {values.empty() ? nullptr : &values[0].x, values.size() * 3};
+}
 
 }  // namespace
 
@@ -41,13 +49,11 @@ double reduceFilm(FilmSums& film, FrameStats& stats, double timeoutSeconds) {
   checkMpi(MPI_Ibarrier(MPI_COMM_WORLD, &arrived), "waiting for the ranks' films");
   waitPolitely(arrived, timeoutSeconds, "waiting for the ranks' films");
   const double start = MPI_Wtime();
-  for (std::vector<Vec3>* v : {&film.radiance, &film.emission, &film.albedo, &film.normal})
-    reduceValues(floats(*v), v->size() * 3, rank, timeoutSeconds);
-  reduceValues(film.samples.data(), film.samples.size(), rank, timeoutSeconds);
-  reduceValues(film.depth.data(), film.depth.size(), rank, timeoutSeconds);
-  reduceValues(film.luminanceSquares.data(), film.luminanceSquares.size(), rank, timeoutSeconds);
-  reduceValues(film.oddLuminance.data(), film.oddLuminance.size(), rank, timeoutSeconds);
-  reduceValues(film.oddSamples.data(), film.oddSamples.size(), rank, timeoutSeconds);
+  // Channel by channel, each value on its own: the order of the channels changes no sum.
+  forEachFilmChannel(film, [&](auto, auto& values) {
+    const auto [first, count] = numbers(values);
+    reduceValues(first, count, rank, timeoutSeconds);
+  });
   unsigned long long counts[2] = {stats.rays, stats.invalidSamples}, sums[2] = {0, 0};
   MPI_Request request;
   checkMpi(MPI_Ireduce(counts, sums, 2, MPI_UNSIGNED_LONG_LONG, MPI_SUM, 0, MPI_COMM_WORLD, &request),

@@ -9,21 +9,15 @@ void HostFilm::reset(uint32_t width, uint32_t height, bool withAovs) {
 }
 
 FilmView HostFilm::view() {
-  FilmView v{sums_.radiance.data(), nullptr, sums_.samples.data()};
-  if (hasAovs()) {
-    v.emission = sums_.emission.data();
-    v.albedo = sums_.albedo.data();
-    v.normal = sums_.normal.data();
-    v.depth = sums_.depth.data();
-    v.luminanceSquares = sums_.luminanceSquares.data();
-    v.oddLuminance = sums_.oddLuminance.data();
-    v.oddSamples = sums_.oddSamples.data();
-  }
+  FilmView v;
+  forEachFilmChannel(v, sums_,
+                     [](auto, auto*& pointer, auto& values) { pointer = values.empty() ? nullptr : values.data(); });
   return v;
 }
 
 void HostFilm::load(const FilmSums& sums) {
   if (!sums.sameShape(sums_)) throw std::invalid_argument("HostFilm::load: the sums have another size or AOVs");
+  if (!sums.channelsFit()) throw std::invalid_argument("HostFilm::load: a channel of the sums has another size");
   sums_ = sums;
 }
 

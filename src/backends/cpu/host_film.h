@@ -18,7 +18,8 @@ class HostFilm {
   FilmView view();
 
   const FilmSums& sums() const { return sums_; }
-  // Replaces the sums with `sums`, which must have the film's size and AOVs (throws std::invalid_argument).
+  // Replaces the sums with `sums`, which must have the film's size and AOVs and a value per pixel in each of its
+  // channels (FilmSums::channelsFit); else throws std::invalid_argument.
   void load(const FilmSums& sums);
 
   Image readImage() const { return meanImage(sums_.radiance); }

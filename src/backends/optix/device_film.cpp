@@ -15,39 +15,27 @@ void resizeBuffer(DeviceBuffer& buffer, size_t bytes, const char* purpose) {
   if (bytes > 0) buffer = DeviceBuffer(bytes, purpose);
 }
 
+// The bytes of a pixel's value of the film channel `channel` (kernel/film_channels.h).
+template <class Channel>
+constexpr size_t bytesPerPixel(Channel) {
+  return sizeof(typename Channel::Type);
+}
+
 }  // namespace
 
 void DeviceFilm::resize(uint32_t width, uint32_t height, bool withAovs) {
   width_ = width;
   height_ = height;
-  const size_t pixels = size_t(width) * height, aovPixels = withAovs ? pixels : 0;
-  resizeBuffer(radiance_, pixels * sizeof(Vec3), "the film's radiance sums");
-  resizeBuffer(emission_, aovPixels * sizeof(Vec3), "the film's emission sums");
-  resizeBuffer(samples_, pixels * sizeof(uint32_t), "the film's sample counts");
-  resizeBuffer(albedo_, aovPixels * sizeof(Vec3), "the albedo AOV");
-  resizeBuffer(normal_, aovPixels * sizeof(Vec3), "the normal AOV");
-  resizeBuffer(depth_, aovPixels * sizeof(float), "the depth AOV");
-  resizeBuffer(luminanceSquares_, aovPixels * sizeof(float), "the film's squared luminance sums");
-  resizeBuffer(oddLuminance_, aovPixels * sizeof(float), "the film's luminance sums of odd samples");
-  resizeBuffer(oddSamples_, aovPixels * sizeof(uint32_t), "the film's counts of odd samples");
+  const size_t pixels = size_t(width) * height;
+  forEachFilmChannel(buffers_, [&](auto channel, DeviceBuffer& buffer) {
+    resizeBuffer(buffer, (channel.inFilm(withAovs) ? pixels : 0) * bytesPerPixel(channel), channel.description);
+  });
 }
 
 void DeviceFilm::clear(cudaStream_t stream) {
-  for (const Sums& s : sums())
-    if (s.buffer->size() > 0)
-      checkCuda(cudaMemsetAsync(s.buffer->as<void>(), 0, s.buffer->size(), stream), "clearing the film");
-}
-
-std::vector<DeviceFilm::Sums> DeviceFilm::sums() const {
-  return {{&radiance_, sizeof(Vec3)},
-          {&emission_, sizeof(Vec3)},
-          {&samples_, sizeof(uint32_t)},
-          {&albedo_, sizeof(Vec3)},
-          {&normal_, sizeof(Vec3)},
-          {&depth_, sizeof(float)},
-          {&luminanceSquares_, sizeof(float)},
-          {&oddLuminance_, sizeof(float)},
-          {&oddSamples_, sizeof(uint32_t)}};
+  forEachFilmChannel(buffers_, [&](auto, DeviceBuffer& buffer) {
+    if (buffer.size() > 0) checkCuda(cudaMemsetAsync(buffer.as<void>(), 0, buffer.size(), stream), "clearing the film");
+  });
 }
 
 void DeviceFilm::copyPixels(const DeviceFilm& source, int sourceDevice, int device, uint32_t first, uint32_t count,
@@ -55,34 +43,36 @@ void DeviceFilm::copyPixels(const DeviceFilm& source, int sourceDevice, int devi
   if (source.width_ != width_ || source.height_ != height_ || source.hasAovs() != hasAovs())
     throw std::logic_error("DeviceFilm::copyPixels between films of other sizes or AOVs");
   if (size_t(first) + count > pixelCount()) throw std::logic_error("DeviceFilm::copyPixels past the film's end");
-  const std::vector<Sums> from = source.sums(), to = sums();
-  for (size_t i = 0; i < to.size(); ++i) {
-    if (to[i].buffer->size() == 0) continue;
-    const size_t offset = size_t(first) * to[i].bytesPerPixel, bytes = size_t(count) * to[i].bytesPerPixel;
-    checkCuda(cudaMemcpyPeerAsync(to[i].buffer->as<char>() + offset, device, from[i].buffer->as<char>() + offset,
-                                  sourceDevice, bytes, stream),
+  forEachFilmChannel(buffers_, source.buffers_, [&](auto channel, DeviceBuffer& to, const DeviceBuffer& from) {
+    if (to.size() == 0) return;
+    const size_t offset = size_t(first) * bytesPerPixel(channel), bytes = size_t(count) * bytesPerPixel(channel);
+    checkCuda(cudaMemcpyPeerAsync(to.as<char>() + offset, device, from.as<char>() + offset, sourceDevice, bytes,
+                                  stream),
               "copying film sums between devices");
-  }
+  });
 }
 
 void DeviceFilm::clearPixels(uint32_t first, uint32_t count, cudaStream_t stream) {
   if (size_t(first) + count > pixelCount()) throw std::logic_error("DeviceFilm::clearPixels past the film's end");
-  for (const Sums& s : sums())
-    if (s.buffer->size() > 0)
-      checkCuda(cudaMemsetAsync(s.buffer->as<char>() + size_t(first) * s.bytesPerPixel, 0,
-                                size_t(count) * s.bytesPerPixel, stream),
+  forEachFilmChannel(buffers_, [&](auto channel, DeviceBuffer& buffer) {
+    if (buffer.size() > 0)
+      checkCuda(cudaMemsetAsync(buffer.as<char>() + size_t(first) * bytesPerPixel(channel), 0,
+                                size_t(count) * bytesPerPixel(channel), stream),
                 "clearing film sums");
+  });
 }
 
 FilmView DeviceFilm::view() const {
-  return {radiance_.as<Vec3>(),      emission_.as<Vec3>(), samples_.as<uint32_t>(),       albedo_.as<Vec3>(),
-          normal_.as<Vec3>(),        depth_.as<float>(),   luminanceSquares_.as<float>(), oddLuminance_.as<float>(),
-          oddSamples_.as<uint32_t>()};
+  FilmView v;
+  forEachFilmChannel(v, buffers_, [](auto channel, auto*& pointer, const DeviceBuffer& buffer) {
+    pointer = buffer.as<typename decltype(channel)::Type>();
+  });
+  return v;
 }
 
 std::vector<uint32_t> DeviceFilm::downloadSamples() const {
   std::vector<uint32_t> samples(pixelCount());
-  samples_.download(samples.data(), samples_.size());
+  buffers_.samples.download(samples.data(), buffers_.samples.size());
   return samples;
 }
 
@@ -96,22 +86,23 @@ Image DeviceFilm::meanImage(const DeviceBuffer& sums) const {
 
 Image DeviceFilm::readEmission() const {
   if (!hasAovs()) throw std::logic_error("DeviceFilm::readEmission on a film without AOVs");
-  return meanImage(emission_);
+  return meanImage(buffers_.emission);
 }
 
 AovImages DeviceFilm::readAovs() const {
   if (!hasAovs()) throw std::logic_error("DeviceFilm::readAovs on a film without AOVs");
+  const Buffers& b = buffers_;
   AovImages aovs(width_, height_);
-  albedo_.download(aovs.albedo.pixels.data(), albedo_.size());
-  normal_.download(aovs.normal.pixels.data(), normal_.size());
-  depth_.download(aovs.depth.data(), depth_.size());
-  std::vector<Vec3> radiance(samples_.size() / sizeof(uint32_t));
+  b.albedo.download(aovs.albedo.pixels.data(), b.albedo.size());
+  b.normal.download(aovs.normal.pixels.data(), b.normal.size());
+  b.depth.download(aovs.depth.data(), b.depth.size());
+  std::vector<Vec3> radiance(b.samples.size() / sizeof(uint32_t));
   std::vector<float> squares(radiance.size()), oddLuminance(radiance.size());
   std::vector<uint32_t> oddSamples(radiance.size());
-  radiance_.download(radiance.data(), radiance_.size());
-  luminanceSquares_.download(squares.data(), luminanceSquares_.size());
-  oddLuminance_.download(oddLuminance.data(), oddLuminance_.size());
-  oddSamples_.download(oddSamples.data(), oddSamples_.size());
+  b.radiance.download(radiance.data(), b.radiance.size());
+  b.luminanceSquares.download(squares.data(), b.luminanceSquares.size());
+  b.oddLuminance.download(oddLuminance.data(), b.oddLuminance.size());
+  b.oddSamples.download(oddSamples.data(), b.oddSamples.size());
   const std::vector<uint32_t> samples = downloadSamples();
   for (size_t i = 0; i < samples.size(); ++i) {
     aovs.variance[i] = meanLuminanceVariance(radiance[i], squares[i], samples[i]);
@@ -120,40 +111,25 @@ AovImages DeviceFilm::readAovs() const {
     aovs.normal.pixels[i] = filmMean(aovs.normal.pixels[i], samples[i]);
     aovs.depth[i] = filmMean(aovs.depth[i], samples[i]);
   }
-  aovs.emission = meanImage(emission_);
+  aovs.emission = meanImage(b.emission);
   return aovs;
 }
 
 FilmSums DeviceFilm::download() const {
   FilmSums f = FilmSums::zero(width_, height_, hasAovs());
-  radiance_.download(f.radiance.data(), radiance_.size());
-  emission_.download(f.emission.data(), emission_.size());
-  samples_.download(f.samples.data(), samples_.size());
-  if (hasAovs()) {
-    albedo_.download(f.albedo.data(), albedo_.size());
-    normal_.download(f.normal.data(), normal_.size());
-    depth_.download(f.depth.data(), depth_.size());
-    luminanceSquares_.download(f.luminanceSquares.data(), luminanceSquares_.size());
-    oddLuminance_.download(f.oddLuminance.data(), oddLuminance_.size());
-    oddSamples_.download(f.oddSamples.data(), oddSamples_.size());
-  }
+  forEachFilmChannel(f, buffers_, [](auto, auto& values, const DeviceBuffer& buffer) {
+    if (buffer.size() > 0) buffer.download(values.data(), buffer.size());
+  });
   return f;
 }
 
 void DeviceFilm::upload(const FilmSums& sums) {
   if (sums.width != width_ || sums.height != height_ || sums.hasAovs() != hasAovs())
     throw std::invalid_argument("DeviceFilm::upload: the sums have another size or AOVs");
-  radiance_.upload(sums.radiance.data(), radiance_.size());
-  emission_.upload(sums.emission.data(), emission_.size());
-  samples_.upload(sums.samples.data(), samples_.size());
-  if (hasAovs()) {
-    albedo_.upload(sums.albedo.data(), albedo_.size());
-    normal_.upload(sums.normal.data(), normal_.size());
-    depth_.upload(sums.depth.data(), depth_.size());
-    luminanceSquares_.upload(sums.luminanceSquares.data(), luminanceSquares_.size());
-    oddLuminance_.upload(sums.oddLuminance.data(), oddLuminance_.size());
-    oddSamples_.upload(sums.oddSamples.data(), oddSamples_.size());
-  }
+  if (!sums.channelsFit()) throw std::invalid_argument("DeviceFilm::upload: a channel of the sums has another size");
+  forEachFilmChannel(sums, buffers_, [](auto, const auto& values, DeviceBuffer& buffer) {
+    if (buffer.size() > 0) buffer.upload(values.data(), buffer.size());
+  });
 }
 
 }  // namespace candela::optix

@@ -20,17 +20,18 @@ class DeviceFilm {
   void resize(uint32_t width, uint32_t height, bool withAovs);
   // Enqueues clearing every sum on `stream`.
   void clear(cudaStream_t stream);
-  bool hasAovs() const { return albedo_.size() > 0; }
+  bool hasAovs() const { return buffers_.albedo.size() > 0; }
   uint32_t pixelCount() const { return width_ * height_; }
   FilmView view() const;
 
   // The means, after waiting for the default stream's work on the film (downloads are synchronous).
-  Image readImage() const { return meanImage(radiance_); }
+  Image readImage() const { return meanImage(buffers_.radiance); }
   // Throw std::logic_error when the film has no AOV sums (the emission is recorded with them).
   Image readEmission() const;
   AovImages readAovs() const;
 
-  // The sums in host memory, and replacing them (same size and AOVs, else std::invalid_argument); synchronous.
+  // The sums in host memory, and replacing them (same size and AOVs, and a value per pixel in each channel:
+  // FilmSums::channelsFit; else std::invalid_argument); synchronous.
   FilmSums download() const;
   void upload(const FilmSums& sums);
 
@@ -43,20 +44,18 @@ class DeviceFilm {
   void clearPixels(uint32_t first, uint32_t count, cudaStream_t stream);
 
  private:
-  struct Sums {
-    const DeviceBuffer* buffer;
-    size_t bytesPerPixel;
+  // A buffer per channel of kernel/film_channels.h; those of the channels with AOVs only are empty without AOVs.
+  struct Buffers {
+#define CANDELA_DEVICE_FILM_BUFFER(Type, name, ...) DeviceBuffer name;
+    CANDELA_FILM_CHANNELS(CANDELA_DEVICE_FILM_BUFFER)
+#undef CANDELA_DEVICE_FILM_BUFFER
   };
-  // Every buffer of sums with its bytes per pixel; the AOV buffers are empty without AOVs.
-  std::vector<Sums> sums() const;
 
   Image meanImage(const DeviceBuffer& sums) const;
   std::vector<uint32_t> downloadSamples() const;
 
   uint32_t width_ = 0, height_ = 0;
-  DeviceBuffer radiance_, samples_;
-  DeviceBuffer emission_, albedo_, normal_, depth_, luminanceSquares_, oddLuminance_,
-      oddSamples_;  // empty without AOVs
+  Buffers buffers_;
 };
 
 }  // namespace candela::optix

@@ -8,16 +8,9 @@ __global__ void addPixels(FilmView to, FilmView from, uint32_t first, uint32_t c
   const uint32_t k = blockIdx.x * blockDim.x + threadIdx.x;
   if (k >= count) return;
   const uint32_t i = first + k;
-  to.radiance[i] = to.radiance[i] + from.radiance[i];
-  to.samples[i] += from.samples[i];
-  if (!withAovs) return;
-  to.emission[i] = to.emission[i] + from.emission[i];
-  to.albedo[i] = to.albedo[i] + from.albedo[i];
-  to.normal[i] = to.normal[i] + from.normal[i];
-  to.depth[i] += from.depth[i];
-  to.luminanceSquares[i] += from.luminanceSquares[i];
-  to.oddLuminance[i] += from.oddLuminance[i];
-  to.oddSamples[i] += from.oddSamples[i];
+  forEachFilmChannel(to, from, [&](auto channel, auto* sums, const auto* addends) {
+    if (channel.inFilm(withAovs)) sums[i] = sums[i] + addends[i];
+  });
 }
 
 }  // namespace

@@ -144,9 +144,12 @@ Image atrousDenoiseCuda(const Image& color, const AovImages& aovs, const AtrousP
   DeviceBuffer halves = DeviceBuffer::fromVector(aovs.halvesVariance, "the halves' variance AOV");
   DeviceBuffer out(c.size(), "the filtered image");
   CudaAtrous filter(color.width, color.height);
-  // Images of means: no sample counts.
-  const FilmView film{c.as<Vec3>(),      emission.as<Vec3>(), nullptr,
-                      albedo.as<Vec3>(), normal.as<Vec3>(),   depth.as<float>()};
+  FilmView film;  // images of means: no sample counts
+  film.radiance = c.as<Vec3>();
+  film.emission = emission.as<Vec3>();
+  film.albedo = albedo.as<Vec3>();
+  film.normal = normal.as<Vec3>();
+  film.depth = depth.as<float>();
   filter.run(film, variance.as<float>(), halves.as<float>(), out.as<Vec3>(), params, nullptr);
   checkCuda(cudaStreamSynchronize(nullptr), "running the a-trous filter");
   Image result(color.width, color.height);
