@@ -16,7 +16,9 @@ class OptixBackend final : public Backend, public DeviceImage {
  public:
   // Prints the GPU, driver, OptiX ABI and RT-core version on stderr. Throws std::runtime_error with one
   // sentence when there is no usable GPU (no CUDA device, no or too old a driver, no libnvoptix). Takes CUDA
-  // device `deviceIndex` modulo the devices there are.
+  // device `deviceIndex` modulo the devices there are. Returns once the programs of a first frame without AOVs
+  // are compiled (backends/optix/program_modules.h); the others compile in the background, and a launch that
+  // needs them first waits for them, as the destructor does.
   explicit OptixBackend(int deviceIndex = 0);
   ~OptixBackend() override;
 
