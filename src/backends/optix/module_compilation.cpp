@@ -25,6 +25,7 @@ ModuleCompilation::ModuleCompilation(OptixDeviceContext context, const OptixModu
     throwWithLog(result, "compiling the device programs", std::string(log_.data(), strnlen(log_.data(), log_.size())));
   }
   if (!first) return;
+  known_ = 1;
   arena_.execute([&] { run(first); });
 }
 
@@ -46,7 +47,9 @@ void ModuleCompilation::execute(OptixTask task) {
   const OptixResult result = optixTaskExecute(task, more.data(), unsigned(more.size()), &created);
   int none = OPTIX_SUCCESS;
   if (result != OPTIX_SUCCESS) firstFailure_.compare_exchange_strong(none, result);
+  known_ += created;
   for (unsigned int i = 0; i < created; ++i) run(more[i]);
+  ++done_;
 }
 
 void ModuleCompilation::waitForTasks() {
@@ -63,6 +66,12 @@ OptixModule ModuleCompilation::module() {
                  "compiling the device programs", std::string(log_.data(), strnlen(log_.data(), log_.size())));
   }
   return module_;
+}
+
+CompileTaskCounts ModuleCompilation::tasks() const {
+  // Done first: a task adds the tasks it found to `known` before it counts itself done.
+  const uint32_t done = done_;
+  return {done, known_};
 }
 
 }  // namespace candela::optix

@@ -11,6 +11,8 @@
 #include <atomic>
 #include <cstddef>
 
+#include "backends/optix/compile_progress.h"
+
 namespace candela::optix {
 
 // OptiX-IR that the build embedded in the binary (CMakeLists.txt).
@@ -34,6 +36,7 @@ class ModuleCompilation {
   // The module, once compiled: waits for the compile, taking part in its tasks. Throws OptixError with OptiX's log
   // when it failed (optixModuleGetCompilationState).
   OptixModule module();
+  CompileTaskCounts tasks() const;
 
  private:
   void run(OptixTask task);  // on the arena's threads
@@ -48,6 +51,7 @@ class ModuleCompilation {
   std::array<char, 8192> log_{};
   size_t logSize_ = sizeof log_;
   OptixModule module_ = nullptr;
+  std::atomic<uint32_t> done_{0}, known_{0};
   std::atomic<int> firstFailure_{OPTIX_SUCCESS};  // the first task's error, an OptixResult
 };
 

@@ -57,7 +57,7 @@ class CombiningTemporalDenoiser : public TemporalDenoiser {
 
 }  // namespace
 
-MultiGpuBackend::MultiGpuBackend(const std::vector<int>& deviceIndices)
+MultiGpuBackend::MultiGpuBackend(const std::vector<int>& deviceIndices, ProgramCompileListener compileProgress)
     : ordinals_(deviceIndices),
       threads_(deviceIndices.size()),
       devices_(deviceIndices.size()),
@@ -66,7 +66,10 @@ MultiGpuBackend::MultiGpuBackend(const std::vector<int>& deviceIndices)
   if (deviceIndices.size() < 2) throw std::logic_error("MultiGpuBackend needs two devices at least");
   try {
     // Each context is made on its own thread, which keeps that device current.
-    threads_.run([&](size_t i) { devices_[i] = std::make_unique<OptixBackend>(deviceIndices[i]); });
+    threads_.run([&](size_t i) {
+      devices_[i] =
+          std::make_unique<OptixBackend>(deviceIndices[i], i == 0 ? compileProgress : ProgramCompileListener());
+    });
     for (size_t i = 0; i < devices_.size(); ++i) ordinals_[i] = devices_[i]->deviceOrdinal();
     peerToPeer_ = enablePeerAccess(ordinals_);
   } catch (...) {

@@ -10,9 +10,11 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "backends/optix/acceleration.h"
+#include "backends/optix/compile_progress_reporter.h"
 #include "backends/optix/cuda_devices.h"
 #include "backends/optix/device_film.h"
 #include "backends/optix/device_scene.h"
@@ -116,9 +118,11 @@ struct LaunchResult {
 }  // namespace
 
 struct OptixBackend::State {
-  explicit State(int deviceIndex) : context(deviceIndex) {}
+  State(int deviceIndex, ProgramCompileListener listener)
+      : context(deviceIndex), compileListener(std::move(listener)) {}
 
   OptixContext context;
+  ProgramCompileListener compileListener;
   // Compiling from here on, in the background.
   ProgramModules modules{context.get(), modulesOf(programsOf(kStartPipelines))};
   std::array<std::unique_ptr<Pipeline>, kPipelineKinds> pipelines;  // made when first needed (makePipelines)
@@ -159,17 +163,35 @@ struct OptixBackend::State {
     return p;
   }
 
+  // Runs `work`, which waits for the modules `compiling`, telling the listener how their compile goes where that
+  // takes longer than a moment.
+  template <class Work>
+  void whileCompiling(const std::vector<ProgramModule>& compiling, const Work& work) {
+    ProgramCompileProgress about;
+    about.gpuName = context.info().name;
+    about.cacheDirectory = context.cacheDirectory();
+    CompileProgressReporter reporter(compileListener, about, [&] { return modules.tasks(compiling); });
+    work();
+    reporter.finish();
+  }
+
   // Makes the pipelines of `kinds` not made yet, once their modules are compiled.
   void makePipelines(const std::vector<PipelineKind>& kinds) {
-    for (PipelineKind kind : kinds)
-      if (!pipelines[size_t(kind)])
-        pipelines[size_t(kind)] = std::make_unique<Pipeline>(context.get(), modules, pipelinePrograms(kind));
+    whileCompiling(modulesOf(programsOf(kinds)), [&] {
+      for (PipelineKind kind : kinds)
+        if (!pipelines[size_t(kind)])
+          pipelines[size_t(kind)] = std::make_unique<Pipeline>(context.get(), modules, pipelinePrograms(kind));
+    });
   }
 
   // Waits for the modules still compiling in the background, so that after a first start, however short, OptiX's
   // disk cache holds every one.
   void finishCompiles() {
-    for (size_t m = 0; m < kProgramModuleCount; ++m) modules.get(ProgramModule(m));
+    std::vector<ProgramModule> all;
+    for (size_t m = 0; m < kProgramModuleCount; ++m) all.push_back(ProgramModule(m));
+    whileCompiling(all, [&] {
+      for (ProgramModule module : all) modules.get(module);
+    });
   }
 
   const Pipeline& pipeline(RaygenProgram program) {
@@ -293,7 +315,8 @@ struct OptixBackend::State {
   }
 };
 
-OptixBackend::OptixBackend(int deviceIndex) : state_(std::make_unique<State>(deviceIndex)) {
+OptixBackend::OptixBackend(int deviceIndex, ProgramCompileListener compileProgress)
+    : state_(std::make_unique<State>(deviceIndex, std::move(compileProgress))) {
   std::fprintf(stderr, "optix: %s\n", deviceDescription().c_str());
   state_->makePipelines(kStartPipelines);
   setSettings(RenderSettings{});

@@ -57,4 +57,14 @@ ProgramModules::ProgramModules(OptixDeviceContext context, const std::vector<Pro
 
 OptixModule ProgramModules::get(ProgramModule module) { return modules_[size_t(module)]->module(); }
 
+CompileTaskCounts ProgramModules::tasks(const std::vector<ProgramModule>& modules) const {
+  CompileTaskCounts sum;
+  for (ProgramModule module : modules) {
+    const CompileTaskCounts counts = modules_[size_t(module)]->tasks();
+    sum.done += counts.done;
+    sum.known += counts.known;
+  }
+  return sum;
+}
+
 }  // namespace candela::optix

@@ -11,6 +11,7 @@
 #include <memory>
 #include <vector>
 
+#include "backends/optix/compile_progress.h"
 #include "backends/optix/module_compilation.h"
 
 namespace candela::optix {
@@ -34,6 +35,8 @@ class ProgramModules {
 
   // The compiled module: waits for its compile, taking part. Throws OptixError with OptiX's log when it failed.
   OptixModule get(ProgramModule module);
+  // The tasks of the modules' compiles, summed.
+  CompileTaskCounts tasks(const std::vector<ProgramModule>& modules) const;
 
  private:
   tbb::task_arena first_;
