@@ -17,16 +17,16 @@ namespace {
 #if CANDELA_HAS_OPTIX
 // Where the devices were not named, a machine whose other GPUs cannot all be used (another process holds one in
 // exclusive mode, one is out of memory) renders on its first GPU, as it would with one.
-std::unique_ptr<Backend> makeGpuBackend(const DeviceRequest& devices) {
+std::unique_ptr<Backend> makeGpuBackend(const DeviceRequest& devices, const ProgramCompileListener& compileProgress) {
   const std::vector<int> indices = resolveDevices(devices, optix::gpuNames());
-  if (indices.size() == 1) return std::make_unique<OptixBackend>(indices[0]);
-  if (devices.given) return std::make_unique<MultiGpuBackend>(indices);
+  if (indices.size() == 1) return std::make_unique<OptixBackend>(indices[0], compileProgress);
+  if (devices.given) return std::make_unique<MultiGpuBackend>(indices, compileProgress);
   try {
-    return std::make_unique<MultiGpuBackend>(indices);
+    return std::make_unique<MultiGpuBackend>(indices, compileProgress);
   } catch (const std::runtime_error& e) {
     std::fprintf(stderr, "candela: warning: not every GPU can be used (%s): rendering on GPU %d alone\n", e.what(),
                  indices[0]);
-    return std::make_unique<OptixBackend>(indices[0]);
+    return std::make_unique<OptixBackend>(indices[0], compileProgress);
   }
 }
 #endif
@@ -77,19 +77,21 @@ std::string availableBackends() { return "cpu, optix"; }
 std::string availableBackends() { return "cpu"; }
 #endif
 
-std::unique_ptr<Backend> createBackend(const std::string& name, std::string& why, const DeviceRequest& devices) {
+std::unique_ptr<Backend> createBackend(const std::string& name, std::string& why, const DeviceRequest& devices,
+                                       [[maybe_unused]] const ProgramCompileListener& compileProgress) {
   if (devices.given && name == "cpu")
     throw std::invalid_argument("--devices chooses GPUs: it needs the optix backend, not cpu");
 #if CANDELA_HAS_OPTIX
-  return create(name, why, !devices.given, [&] { return makeGpuBackend(devices); });
+  return create(name, why, !devices.given, [&] { return makeGpuBackend(devices, compileProgress); });
 #else
   return create(name, why, !devices.given, [] { return std::unique_ptr<Backend>(); });
 #endif
 }
 
-std::unique_ptr<Backend> createBackend(const std::string& name, std::string& why, [[maybe_unused]] int deviceIndex) {
+std::unique_ptr<Backend> createBackend(const std::string& name, std::string& why, [[maybe_unused]] int deviceIndex,
+                                       [[maybe_unused]] const ProgramCompileListener& compileProgress) {
 #if CANDELA_HAS_OPTIX
-  return create(name, why, true, [&] { return std::make_unique<OptixBackend>(deviceIndex); });
+  return create(name, why, true, [&] { return std::make_unique<OptixBackend>(deviceIndex, compileProgress); });
 #else
   return create(name, why, true, [] { return std::unique_ptr<Backend>(); });
 #endif

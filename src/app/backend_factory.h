@@ -3,7 +3,9 @@
 #include <string>
 
 #include "app/device_list.h"
+#include "app/progress.h"
 #include "backends/backend.h"
+#include "backends/optix/compile_progress.h"
 
 namespace candela {
 
@@ -14,10 +16,14 @@ std::string availableBackends();
 // and why. A GPU backend renders on the GPUs `devices` names: on one, the OptiX backend; on several, the
 // OptiX backend on each behind one (optix/multi_gpu_backend.h). Throws std::runtime_error when the requested
 // backend cannot run here, std::invalid_argument when `devices` names GPUs that are not there or was given
-// for the cpu backend; "auto" falls back to the CPU only when the devices were not named.
-std::unique_ptr<Backend> createBackend(const std::string& name, std::string& why, const DeviceRequest& devices = {});
+// for the cpu backend; "auto" falls back to the CPU only when the devices were not named. A GPU backend's first
+// start on a machine compiles its programs for the GPU, which takes a while: `compileProgress` hears how it goes
+// (backends/optix/compile_progress.h), there and where a later launch waits for programs still compiling.
+std::unique_ptr<Backend> createBackend(const std::string& name, std::string& why, const DeviceRequest& devices = {},
+                                       const ProgramCompileListener& compileProgress = compileProgressOnStderr());
 // The same on the one GPU `deviceIndex` modulo the GPUs it sees (the processes of a distributed render on one
 // node take one each).
-std::unique_ptr<Backend> createBackend(const std::string& name, std::string& why, int deviceIndex);
+std::unique_ptr<Backend> createBackend(const std::string& name, std::string& why, int deviceIndex,
+                                       const ProgramCompileListener& compileProgress = compileProgressOnStderr());
 
 }  // namespace candela

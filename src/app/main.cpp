@@ -72,7 +72,10 @@ void addSceneInputOptions(CLI::App& cmd, SceneCacheSettings& cache, OutsidePaths
 // --backend, and --devices (the GPUs of the optix backend). A malformed device list is a usage error; GPUs that are
 // not there are found when the backend starts.
 void addBackendOptions(CLI::App& cmd, std::string& backend, DeviceRequest& devices) {
-  cmd.add_option("--backend", backend, "auto, cpu or optix (in this build: " + availableBackends() + ")")
+  cmd.add_option("--backend", backend,
+                 "auto, cpu or optix (in this build: " + availableBackends() +
+                     "). The optix backend's first start on a machine compiles its GPU programs, then keeps them in "
+                     "$CANDELA_OPTIX_CACHE, else $XDG_CACHE_HOME/candela/optix, else ~/.cache/candela/optix")
       ->check(CLI::IsMember({"auto", "cpu", "optix"}))
       ->capture_default_str();
   cmd.add_option_function<std::string>(

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <memory>
 
 namespace candela {
 
@@ -52,6 +53,66 @@ void ProgressReporter::update(uint64_t done) {
 
 void ProgressReporter::finish() {
   if (terminal_) std::fprintf(stderr, "\n");
+}
+
+std::string compileStartLine(const ProgramCompileProgress& progress) {
+  const std::string where = progress.cacheDirectory.empty()
+                                ? "not cached: every start compiles them"
+                                : "first start on this machine; cached in " + progress.cacheDirectory;
+  return "optix: compiling the GPU programs for " + progress.gpuName + " (" + where + ")...";
+}
+
+std::string compileStatusLine(const ProgramCompileProgress& progress) {
+  return "optix: compiling, " + std::to_string(progress.tasks.done) + "/" + std::to_string(progress.tasks.known) +
+         " tasks done, " + formatSeconds(progress.seconds);
+}
+
+std::string compileEndLine(const ProgramCompileProgress& progress) {
+  if (progress.stage == ProgramCompileProgress::Stage::Failed)
+    return "optix: compiling the GPU programs failed after " + formatSeconds(progress.seconds);
+  return "optix: compiled the GPU programs in " + formatSeconds(progress.seconds) + " (" +
+         std::to_string(progress.tasks.known) + " tasks)";
+}
+
+CompileProgressPrinter::CompileProgressPrinter(std::FILE* out, bool terminal) : out_(out), terminal_(terminal) {}
+
+void CompileProgressPrinter::operator()(const ProgramCompileProgress& progress) {
+  using Stage = ProgramCompileProgress::Stage;
+  // On a terminal each line overwrites the status line, padded to cover it.
+  auto overwrite = [&](const std::string& line) {
+    std::fprintf(out_, "\r%-*s", int(statusWidth_), line.c_str());
+    statusWidth_ = line.size();
+  };
+  switch (progress.stage) {
+    case Stage::Started:
+      std::fprintf(out_, "%s\n", compileStartLine(progress).c_str());
+      lastStatusSeconds_ = progress.seconds;
+      break;
+    case Stage::Running:
+      if (!terminal_ && progress.seconds - lastStatusSeconds_ < kLogInterval) return;  // a terminal's: every one
+      lastStatusSeconds_ = progress.seconds;
+      if (terminal_)
+        overwrite(compileStatusLine(progress));
+      else
+        std::fprintf(out_, "%s\n", compileStatusLine(progress).c_str());
+      break;
+    case Stage::Finished:
+    case Stage::Failed:
+      if (terminal_) {
+        overwrite(compileEndLine(progress));
+        std::fprintf(out_, "\n");
+      } else {
+        std::fprintf(out_, "%s\n", compileEndLine(progress).c_str());
+      }
+      statusWidth_ = 0;
+      break;
+  }
+  std::fflush(out_);
+}
+
+ProgramCompileListener compileProgressOnStderr() {
+  auto printer = std::make_shared<CompileProgressPrinter>(stderr, isatty(STDERR_FILENO) != 0);
+  return [printer](const ProgramCompileProgress& progress) { (*printer)(progress); };
 }
 
 }  // namespace candela

@@ -10,7 +10,7 @@ build=$1 out=$2
 here=$(dirname "$(realpath "$0")")
 mkdir -p "$out/lib"
 cp "$build/src/candela" "$build/src/candela-generate-scene" "$build/tests/gpu/test_gpu" "$build/bench/denoise_gpu_bench" "$build/bench/sampler_convergence" \
-  "$build/bench/light_sampler_convergence" "$here/error_paths.sh" \
+  "$build/bench/light_sampler_convergence" "$here/error_paths.sh" "$here/cold_start.sh" \
   "$here/../../bench/gpu_bench.sh" "$here/../../bench/gpu_town_bench.sh" "$build/tests/viewer/image_compare" "$here/viewer_interop.sh" \
   "$build/tests/distributed/compare_exr" "$here/multi_gpu.sh" "$here/checks_common.sh" \
   "$here/../../bench/multi_gpu_bench.sh" "$out/"

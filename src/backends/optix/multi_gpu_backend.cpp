@@ -111,7 +111,7 @@ class MultiGpuBackend::CombinedFilmDisplay final : public FilmDisplay {
   const MultiGpuBackend& backend_;
 };
 
-MultiGpuBackend::MultiGpuBackend(const std::vector<int>& deviceIndices)
+MultiGpuBackend::MultiGpuBackend(const std::vector<int>& deviceIndices, ProgramCompileListener compileProgress)
     : ordinals_(deviceIndices),
       threads_(deviceIndices.size()),
       devices_(deviceIndices.size()),
@@ -122,7 +122,10 @@ MultiGpuBackend::MultiGpuBackend(const std::vector<int>& deviceIndices)
   if (deviceIndices.size() < 2) throw std::logic_error("MultiGpuBackend needs two devices at least");
   try {
     // Each context is made on its own thread, which keeps that device current.
-    threads_.run([&](size_t i) { devices_[i] = std::make_unique<OptixBackend>(deviceIndices[i]); });
+    threads_.run([&](size_t i) {
+      devices_[i] =
+          std::make_unique<OptixBackend>(deviceIndices[i], i == 0 ? compileProgress : ProgramCompileListener());
+    });
     for (size_t i = 0; i < devices_.size(); ++i) ordinals_[i] = devices_[i]->deviceOrdinal();
     peerToPeer_ = enablePeerAccess(ordinals_);
   } catch (...) {

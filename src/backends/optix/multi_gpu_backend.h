@@ -28,7 +28,9 @@ class MultiGpuBackend final : public Backend, public DeviceImage {
  public:
   // `deviceIndices`: CUDA device indices, at least two; a repeat makes another context on the same GPU (which
   // tests the splitting and combining on a machine of one GPU). Throws std::runtime_error as OptixBackend does.
-  explicit MultiGpuBackend(const std::vector<int>& deviceIndices);
+  // The devices start at once, each compiling its programs where OptiX's disk cache does not hold them yet; the
+  // first device's compile reports to `compileProgress` (OptixBackend's constructor), the others keep pace.
+  explicit MultiGpuBackend(const std::vector<int>& deviceIndices, ProgramCompileListener compileProgress = {});
   ~MultiGpuBackend() override;
 
   std::string name() const override { return "optix"; }

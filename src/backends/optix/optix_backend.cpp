@@ -12,10 +12,13 @@
 #include <stdexcept>
 #include <string>
 #include <variant>
+#include <utility>
+#include <vector>
 
 #include "backends/film_display.h"
 #include "backends/film_filters.h"
 #include "backends/optix/acceleration.h"
+#include "backends/optix/compile_progress_reporter.h"
 #include "backends/optix/cuda_devices.h"
 #include "backends/optix/device_display.h"
 #include "backends/optix/device_film.h"
@@ -29,6 +32,7 @@
 #include "backends/optix/optix_error.h"
 #include "backends/optix/pipeline.h"
 #include "backends/optix/pixel_counters.h"
+#include "backends/optix/program_modules.h"
 #include "backends/optix/wavefront_schedule.h"
 #include "backends/path_schedule.h"
 #include "scene/flat_scene.h"
@@ -60,17 +64,46 @@ class CudaEvent {
 // pipeline how to compile traversal around each trace call, and does not document it, so this grouping is
 // what the measurement chose (docs/performance.md). The AOV path tracer gets a pipeline of its own, shaped
 // like the path tracer's (beside a copy of the record program), so that it leaves the path tracer's alone.
-std::vector<std::unique_ptr<Pipeline>> makePipelines(OptixDeviceContext context, OptixModule module) {
-  std::vector<std::unique_ptr<Pipeline>> pipelines;
-  pipelines.push_back(
-      std::make_unique<Pipeline>(context, module, std::vector{RaygenProgram::Render, RaygenProgram::Record}));
-  pipelines.push_back(std::make_unique<Pipeline>(context, module, std::vector{RaygenProgram::RawTrace}));
-  pipelines.push_back(
-      std::make_unique<Pipeline>(context, module, std::vector{RaygenProgram::RenderWithAovs, RaygenProgram::Record}));
-  pipelines.push_back(std::make_unique<Pipeline>(context, module,
-                                                 std::vector{RaygenProgram::PathTrace, RaygenProgram::PathShade,
-                                                             RaygenProgram::PathTail, RaygenProgram::PathFinish}));
-  return pipelines;
+enum class PipelineKind { Megakernel, RawTrace, AovMegakernel, Wavefront };
+constexpr size_t kPipelineKinds = 4;
+
+const std::vector<RaygenProgram>& pipelinePrograms(PipelineKind kind) {
+  static const std::array<std::vector<RaygenProgram>, kPipelineKinds> programs = {{
+      {RaygenProgram::Render, RaygenProgram::Record},
+      {RaygenProgram::RawTrace},
+      {RaygenProgram::RenderWithAovs, RaygenProgram::Record},
+      {RaygenProgram::PathTrace, RaygenProgram::PathShade, RaygenProgram::PathTail, RaygenProgram::PathFinish},
+  }};
+  return programs[size_t(kind)];
+}
+
+// The pipeline that launches `program` (the record program's copy beside the AOV path tracer only shapes that
+// pipeline).
+PipelineKind pipelineLaunching(RaygenProgram program) {
+  switch (program) {
+    case RaygenProgram::Render:
+    case RaygenProgram::Record: return PipelineKind::Megakernel;
+    case RaygenProgram::RawTrace: return PipelineKind::RawTrace;
+    case RaygenProgram::RenderWithAovs: return PipelineKind::AovMegakernel;
+    case RaygenProgram::PathTrace:
+    case RaygenProgram::PathShade:
+    case RaygenProgram::PathTail:
+    case RaygenProgram::PathFinish: return PipelineKind::Wavefront;
+  }
+  throw std::logic_error("no pipeline launches the raygen program");
+}
+
+// The pipelines made while the backend starts: those of a first frame without AOVs, the megakernel (the auto
+// schedule's probe, and its choice for scenes whose paths end soon) and the wavefront (its choice for most
+// scenes). Their modules compile first; the AOV path tracer's and the raw trace's compile in the background
+// meanwhile, and their pipelines are made at their first launch.
+const std::vector<PipelineKind> kStartPipelines = {PipelineKind::Megakernel, PipelineKind::Wavefront};
+
+std::vector<RaygenProgram> programsOf(const std::vector<PipelineKind>& kinds) {
+  std::vector<RaygenProgram> programs;
+  for (PipelineKind kind : kinds)
+    programs.insert(programs.end(), pipelinePrograms(kind).begin(), pipelinePrograms(kind).end());
+  return programs;
 }
 
 // CANDELA_GPU_SCHEDULE: auto (the default), megakernel or wavefront (backends/path_schedule.h).
@@ -90,11 +123,14 @@ struct LaunchResult {
 }  // namespace
 
 struct OptixBackend::State {
-  explicit State(int deviceIndex) : context(deviceIndex) {}
+  State(int deviceIndex, ProgramCompileListener listener)
+      : context(deviceIndex), compileListener(std::move(listener)) {}
 
   OptixContext context;
-  ProgramModule module{context.get()};
-  std::vector<std::unique_ptr<Pipeline>> pipelines = makePipelines(context.get(), module.get());
+  ProgramCompileListener compileListener;
+  // Compiling from here on, in the background.
+  ProgramModules modules{context.get(), modulesOf(programsOf(kStartPipelines))};
+  std::array<std::unique_ptr<Pipeline>, kPipelineKinds> pipelines;  // made when first needed (makePipelines)
   FlatScene flat;
   DeviceScene scene;
   AccelerationStructures acceleration;
@@ -134,10 +170,41 @@ struct OptixBackend::State {
     return p;
   }
 
-  const Pipeline& pipeline(RaygenProgram program) const {
-    for (const auto& p : pipelines)
-      if (p->has(program)) return *p;
-    throw std::logic_error("no pipeline holds the raygen program");
+  // Runs `work`, which waits for the modules `compiling`, telling the listener how their compile goes where that
+  // takes longer than a moment.
+  template <class Work>
+  void whileCompiling(const std::vector<ProgramModule>& compiling, const Work& work) {
+    ProgramCompileProgress about;
+    about.gpuName = context.info().name;
+    about.cacheDirectory = context.cacheDirectory();
+    CompileProgressReporter reporter(compileListener, about, [&] { return modules.tasks(compiling); });
+    work();
+    reporter.finish();
+  }
+
+  // Makes the pipelines of `kinds` not made yet, once their modules are compiled.
+  void makePipelines(const std::vector<PipelineKind>& kinds) {
+    whileCompiling(modulesOf(programsOf(kinds)), [&] {
+      for (PipelineKind kind : kinds)
+        if (!pipelines[size_t(kind)])
+          pipelines[size_t(kind)] = std::make_unique<Pipeline>(context.get(), modules, pipelinePrograms(kind));
+    });
+  }
+
+  // Waits for the modules still compiling in the background, so that after a first start, however short, OptiX's
+  // disk cache holds every one.
+  void finishCompiles() {
+    std::vector<ProgramModule> all;
+    for (size_t m = 0; m < kProgramModuleCount; ++m) all.push_back(ProgramModule(m));
+    whileCompiling(all, [&] {
+      for (ProgramModule module : all) modules.get(module);
+    });
+  }
+
+  const Pipeline& pipeline(RaygenProgram program) {
+    const PipelineKind kind = pipelineLaunching(program);
+    if (!pipelines[size_t(kind)]) makePipelines({kind});
+    return *pipelines[size_t(kind)];
   }
 
   // Uploads the parameters, launches one raygen program over `rows` rows of the image from p.firstRow on and
@@ -381,15 +448,21 @@ class OptixBackend::DeviceFilmDisplay final : public FilmDisplay {
   const OptixBackend& backend_;
 };
 
-OptixBackend::OptixBackend(int deviceIndex)
-    : state_(std::make_unique<State>(deviceIndex)),
+OptixBackend::OptixBackend(int deviceIndex, ProgramCompileListener compileProgress)
+    : state_(std::make_unique<State>(deviceIndex, std::move(compileProgress))),
       filters_(std::make_unique<DeviceFilmFilters>(*this)),
       display_(std::make_unique<DeviceFilmDisplay>(*this)) {
   std::fprintf(stderr, "optix: %s\n", deviceDescription().c_str());
+  state_->makePipelines(kStartPipelines);
   setSettings(RenderSettings{});
 }
 
-OptixBackend::~OptixBackend() = default;
+OptixBackend::~OptixBackend() {
+  try {
+    state_->finishCompiles();
+  } catch (const std::exception&) {  // a module that did not compile, which no launch used
+  }
+}
 
 std::string OptixBackend::deviceName() const { return state_->context.info().name; }
 

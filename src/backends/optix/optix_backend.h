@@ -5,6 +5,7 @@
 
 #include "backends/backend.h"
 #include "backends/optix/acceleration_statistics.h"
+#include "backends/optix/compile_progress.h"
 #include "backends/path_schedule.h"
 
 namespace candela {
@@ -16,8 +17,11 @@ class OptixBackend final : public Backend, public DeviceImage {
  public:
   // Prints the GPU, driver, OptiX ABI and RT-core version on stderr. Throws std::runtime_error with one
   // sentence when there is no usable GPU (no CUDA device, no or too old a driver, no libnvoptix). Takes CUDA
-  // device `deviceIndex` modulo the devices there are.
-  explicit OptixBackend(int deviceIndex = 0);
+  // device `deviceIndex` modulo the devices there are. Returns once the programs of a first frame without AOVs
+  // are compiled (backends/optix/program_modules.h); the others compile in the background, and a launch that
+  // needs them first waits for them, as the destructor does. `compileProgress` hears of these waits while they
+  // last longer than a moment: a first start on the machine, when OptiX's disk cache does not hold the programs.
+  explicit OptixBackend(int deviceIndex = 0, ProgramCompileListener compileProgress = {});
   ~OptixBackend() override;
 
   std::string name() const override { return "optix"; }

@@ -6,10 +6,14 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <mutex>
 #include <stdexcept>
+#include <system_error>
 
 #include "backends/optix/cuda_devices.h"
 #include "backends/optix/optix_error.h"
+#include "backends/optix/program_cache_directory.h"
 
 namespace candela::optix {
 
@@ -69,6 +73,43 @@ void logFromOptix(unsigned int level, const char* tag, const char* message, void
   std::fprintf(stderr, "optix [%u][%s]: %s\n", level, tag, message);
 }
 
+// Says once per process why the compiled programs are not kept (each GPU's context would say it again).
+void warnCacheUnusable(const std::string& directory, const std::string& why) {
+  static std::once_flag said;
+  std::call_once(said, [&] {
+    std::fprintf(stderr, "optix: cannot keep the compiled GPU programs in %s (%s): every start compiles them\n",
+                 directory.c_str(), why.c_str());
+  });
+}
+
+// Points OptiX's disk cache at defaultProgramCacheDirectory(), making the folder, or turns the cache off where
+// that cannot be done. With no folder to name (no $HOME) OptiX keeps its own default. Returns the folder in use
+// (OptiX's OPTIX_CACHE_PATH overrides the one set here), or nothing when the cache is off.
+std::string useProgramCache(OptixDeviceContext context) {
+  const std::string directory = defaultProgramCacheDirectory();
+  if (!directory.empty()) {
+    std::error_code error;
+    std::filesystem::create_directories(directory, error);
+    if (error) {
+      warnCacheUnusable(directory, error.message());
+      checkOptix(optixDeviceContextSetCacheEnabled(context, 0), "turning OptiX's disk cache off");
+      return {};
+    }
+    // Where OptiX cannot open its cache there, it turns the cache off.
+    if (const OptixResult result = optixDeviceContextSetCacheLocation(context, directory.c_str());
+        result != OPTIX_SUCCESS) {
+      warnCacheUnusable(directory, optixGetErrorString(result));
+      return {};
+    }
+  }
+  int enabled = 0;
+  checkOptix(optixDeviceContextGetCacheEnabled(context, &enabled), "reading whether OptiX's disk cache is on");
+  char location[4096] = {};
+  checkOptix(optixDeviceContextGetCacheLocation(context, location, sizeof location),
+             "reading where OptiX's disk cache is");
+  return enabled ? location : "";
+}
+
 }  // namespace
 
 OptixContext::OptixContext(int deviceIndex) {
@@ -93,6 +134,7 @@ OptixContext::OptixContext(int deviceIndex) {
   checkOptix(optixDeviceContextGetProperty(context_, OPTIX_DEVICE_PROPERTY_RTCORE_VERSION, &info_.rtcoreVersion,
                                            sizeof info_.rtcoreVersion),
              "reading the RT-core version");
+  cacheDirectory_ = useProgramCache(context_);
   // A blocking stream: plain cudaMemcpy on the default stream waits for the launches queued on it.
   checkCuda(cudaStreamCreate(&stream_), "creating a CUDA stream");
 }

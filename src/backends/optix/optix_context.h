@@ -1,6 +1,7 @@
 #pragma once
 // The CUDA device and the OptiX device context on it. Construction fails with one sentence when no usable
-// GPU is present: no CUDA device, no or too old a driver, no OptiX library in the driver.
+// GPU is present: no CUDA device, no or too old a driver, no OptiX library in the driver. The context keeps the
+// programs OptiX compiles in the disk cache of defaultProgramCacheDirectory() (program_cache_directory.h).
 #include <cuda_runtime.h>
 #include <optix_types.h>
 
@@ -29,6 +30,9 @@ class OptixContext {
   cudaStream_t stream() const { return stream_; }
   const GpuInfo& info() const { return info_; }
   int deviceOrdinal() const { return device_; }
+  // The folder of OptiX's disk cache; empty when the compiled programs are not kept (the folder could not be
+  // made, or OPTIX_CACHE_MAXSIZE=0).
+  const std::string& cacheDirectory() const { return cacheDirectory_; }
 
   // One line for start-up: GPU, driver, OptiX ABI and RT-core version.
   std::string describe() const;
@@ -38,6 +42,7 @@ class OptixContext {
   cudaStream_t stream_ = nullptr;
   int device_ = 0;
   GpuInfo info_;
+  std::string cacheDirectory_;
 };
 
 }  // namespace candela::optix

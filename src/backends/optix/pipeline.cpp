@@ -4,17 +4,13 @@
 #include <optix_stack_size.h>
 #include <optix_stubs.h>
 
-#include <cstring>
+#include <algorithm>
 #include <stdexcept>
-#include <string>
 #include <vector>
 
 #include "backends/optix/launch_params.h"
 #include "backends/optix/optix_error.h"
-
-// The device programs as OptiX-IR, embedded at build time (see src/backends/optix/CMakeLists.txt).
-extern const unsigned char candelaOptixPrograms[];
-extern const size_t candelaOptixProgramsSize;
+#include "backends/optix/optix_log.h"
 
 namespace candela::optix {
 
@@ -34,81 +30,60 @@ const char* raygenName(RaygenProgram program) {
   throw std::logic_error("no such raygen program");
 }
 
+ProgramModule moduleHolding(RaygenProgram program) {
+  switch (program) {
+    case RaygenProgram::Render:
+    case RaygenProgram::Record: return ProgramModule::Megakernel;
+    case RaygenProgram::RawTrace: return ProgramModule::RawTrace;
+    case RaygenProgram::RenderWithAovs: return ProgramModule::AovMegakernel;
+    case RaygenProgram::PathTrace:
+    case RaygenProgram::PathShade:
+    case RaygenProgram::PathTail:
+    case RaygenProgram::PathFinish: return ProgramModule::Wavefront;
+  }
+  throw std::logic_error("no such raygen program");
+}
+
 struct alignas(OPTIX_SBT_RECORD_ALIGNMENT) HeaderOnlyRecord {
   char header[OPTIX_SBT_RECORD_HEADER_SIZE];
 };
 
-// Calls an OptiX function that fills a log, and puts the log into the error message when it fails.
-template <class Call>
-void checkWithLog(const char* what, Call call) {
-  char log[2048];
-  size_t logSize = sizeof log;
-  OptixResult result = call(log, &logSize);
-  if (result != OPTIX_SUCCESS) {
-    try {
-      checkOptix(result, what);
-    } catch (const OptixError& e) {
-      throw OptixError(result, std::string(e.what()) + ": " + std::string(log, strnlen(log, sizeof log)));
-    }
-  }
-}
-
 }  // namespace
 
-OptixPipelineCompileOptions pipelineCompileOptions() {
-  OptixPipelineCompileOptions options{};
-  options.usesMotionBlur = 0;
-  options.traversableGraphFlags = OPTIX_TRAVERSABLE_GRAPH_FLAG_ALLOW_SINGLE_LEVEL_INSTANCING;
-  // Radiance: random bits in, then t, b1, b2, instance, primitive out; shadow: random bits, occluded.
-  options.numPayloadValues = 5;
-  options.numAttributeValues = 2;  // built-in triangle barycentrics
-  options.exceptionFlags = OPTIX_EXCEPTION_FLAG_NONE;
-  options.pipelineLaunchParamsVariableName = "params";
-  options.usesPrimitiveTypeFlags = OPTIX_PRIMITIVE_TYPE_FLAGS_TRIANGLE;
-  return options;
+std::vector<ProgramModule> modulesOf(const std::vector<RaygenProgram>& programs) {
+  std::vector<ProgramModule> modules{ProgramModule::Rays};
+  for (RaygenProgram program : programs)
+    if (std::find(modules.begin(), modules.end(), moduleHolding(program)) == modules.end())
+      modules.push_back(moduleHolding(program));
+  return modules;
 }
 
-ProgramModule::ProgramModule(OptixDeviceContext context) {
-  const OptixPipelineCompileOptions compileOptions = pipelineCompileOptions();
-  OptixModuleCompileOptions moduleOptions{};
-  moduleOptions.optLevel = OPTIX_COMPILE_OPTIMIZATION_DEFAULT;
-  moduleOptions.debugLevel = OPTIX_COMPILE_DEBUG_LEVEL_MINIMAL;
-  checkWithLog("compiling the device programs", [&](char* log, size_t* logSize) {
-    return optixModuleCreate(context, &moduleOptions, &compileOptions,
-                             reinterpret_cast<const char*>(candelaOptixPrograms), candelaOptixProgramsSize, log,
-                             logSize, &module_);
-  });
-}
-
-ProgramModule::~ProgramModule() {
-  if (module_) optixModuleDestroy(module_);
-}
-
-Pipeline::Pipeline(OptixDeviceContext context, OptixModule module, const std::vector<RaygenProgram>& programs)
+Pipeline::Pipeline(OptixDeviceContext context, ProgramModules& modules, const std::vector<RaygenProgram>& programs)
     : programs_(programs) {
+  const OptixModule rays = modules.get(ProgramModule::Rays);
   const size_t raygens = programs.size();
   const size_t radianceMiss = raygens, shadowMiss = raygens + 1, radianceHit = raygens + 2, shadowHit = raygens + 3;
   std::vector<OptixProgramGroupDesc> descriptions(raygens + 4);
   for (size_t i = 0; i < raygens; ++i) {
     descriptions[i].kind = OPTIX_PROGRAM_GROUP_KIND_RAYGEN;
-    descriptions[i].raygen.module = module;
+    descriptions[i].raygen.module = modules.get(moduleHolding(programs[i]));
     descriptions[i].raygen.entryFunctionName = raygenName(programs[i]);
   }
   // The radiance miss program would only restate the payload's "missed" sentinel, so it is absent.
   descriptions[radianceMiss].kind = OPTIX_PROGRAM_GROUP_KIND_MISS;
   descriptions[shadowMiss].kind = OPTIX_PROGRAM_GROUP_KIND_MISS;
-  descriptions[shadowMiss].miss.module = module;
+  descriptions[shadowMiss].miss.module = rays;
   descriptions[shadowMiss].miss.entryFunctionName = "__miss__shadow";
   // Both hit groups hold the pass-through any-hit program; triangles whose material does not use alpha are
   // built with any-hit disabled (acceleration.cpp), so only those that do run it. Shadow rays disable
   // closest-hit.
   descriptions[radianceHit].kind = OPTIX_PROGRAM_GROUP_KIND_HITGROUP;
-  descriptions[radianceHit].hitgroup.moduleCH = module;
+  descriptions[radianceHit].hitgroup.moduleCH = rays;
   descriptions[radianceHit].hitgroup.entryFunctionNameCH = "__closesthit__radiance";
-  descriptions[radianceHit].hitgroup.moduleAH = module;
+  descriptions[radianceHit].hitgroup.moduleAH = rays;
   descriptions[radianceHit].hitgroup.entryFunctionNameAH = "__anyhit__passThrough";
   descriptions[shadowHit].kind = OPTIX_PROGRAM_GROUP_KIND_HITGROUP;
-  descriptions[shadowHit].hitgroup.moduleAH = module;
+  descriptions[shadowHit].hitgroup.moduleAH = rays;
   descriptions[shadowHit].hitgroup.entryFunctionNameAH = "__anyhit__passThrough";
   groups_.assign(descriptions.size(), nullptr);
   OptixProgramGroupOptions groupOptions{};
@@ -167,12 +142,6 @@ Pipeline::~Pipeline() {
   if (pipeline_) optixPipelineDestroy(pipeline_);
   for (OptixProgramGroup group : groups_)
     if (group) optixProgramGroupDestroy(group);
-}
-
-bool Pipeline::has(RaygenProgram program) const {
-  for (RaygenProgram p : programs_)
-    if (p == program) return true;
-  return false;
 }
 
 const OptixShaderBindingTable& Pipeline::bindingTable(RaygenProgram program) const {

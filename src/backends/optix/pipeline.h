@@ -1,12 +1,12 @@
 #pragma once
-// The OptiX module built from the embedded OptiX-IR, and pipelines that each hold some of its raygen programs
-// with a shader binding table for each. OptiX compiles and sizes every pipeline on its own, so the raw-trace
-// ceiling can be kept apart from the path tracer's shading code.
+// Pipelines that each hold some of the raygen programs with a shader binding table for each. OptiX compiles and
+// sizes every pipeline on its own, so the raw-trace ceiling can be kept apart from the path tracer's shading code.
 #include <optix_types.h>
 
 #include <vector>
 
 #include "backends/optix/device_buffer.h"
+#include "backends/optix/program_modules.h"
 
 namespace candela::optix {
 
@@ -22,32 +22,20 @@ enum class RaygenProgram {
   PathFinish,
 };
 
-// Options every pipeline over the module must be created with.
-OptixPipelineCompileOptions pipelineCompileOptions();
-
-class ProgramModule {
- public:
-  explicit ProgramModule(OptixDeviceContext context);
-  ~ProgramModule();
-  ProgramModule(const ProgramModule&) = delete;
-  ProgramModule& operator=(const ProgramModule&) = delete;
-  OptixModule get() const { return module_; }
-
- private:
-  OptixModule module_ = nullptr;
-};
+// The modules a pipeline of these raygen programs is made of: the ray programs' and each raygen program's, once.
+std::vector<ProgramModule> modulesOf(const std::vector<RaygenProgram>& programs);
 
 // A pipeline holding some of the raygen programs, with one shader binding table for each; the tables share
 // the miss and hit-group records.
 class Pipeline {
  public:
-  Pipeline(OptixDeviceContext context, OptixModule module, const std::vector<RaygenProgram>& programs);
+  // Waits for the modules it needs (ProgramModules::get), and throws as it does.
+  Pipeline(OptixDeviceContext context, ProgramModules& modules, const std::vector<RaygenProgram>& programs);
   ~Pipeline();
   Pipeline(const Pipeline&) = delete;
   Pipeline& operator=(const Pipeline&) = delete;
 
   OptixPipeline get() const { return pipeline_; }
-  bool has(RaygenProgram program) const;
   const OptixShaderBindingTable& bindingTable(RaygenProgram program) const;
 
  private:

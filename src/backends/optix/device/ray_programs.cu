@@ -1,0 +1,44 @@
+// The programs that answer ray queries, shared by every pipeline: closest-hit, any-hit and the shadow miss. Each
+// pipeline's raygen programs are modules of their own (the other .cu files here).
+#include "backends/optix/device/program_common.h"
+
+using namespace candela;
+using namespace candela::optix;
+
+namespace {
+
+// The scene's instance of the hit triangle: the IAS instance's, or for a batch of meshes the instance of the
+// build input the triangle came from (launch_params.h).
+__device__ uint32_t hitInstance() {
+  const uint32_t id = optixGetInstanceId();
+  if (id < params.firstBatchId) return id;
+  return params.batchInstances[(id - params.firstBatchId) * kMaxBatchInputs + optixGetSbtGASIndex()];
+}
+
+}  // namespace
+
+extern "C" __global__ void __closesthit__radiance() {
+  const float2 barycentrics = optixGetTriangleBarycentrics();
+  optixSetPayload_0(__float_as_uint(optixGetRayTmax()));
+  optixSetPayload_1(__float_as_uint(barycentrics.x));
+  optixSetPayload_2(__float_as_uint(barycentrics.y));
+  optixSetPayload_3(hitInstance());
+  optixSetPayload_4(optixGetPrimitiveIndex());
+}
+
+// Any-hit for both ray types, run only on triangles whose material uses alpha: drops the candidate hit when
+// the ray passes through it. Register 0 holds the query's random bits on the way in. Back faces of materials
+// that cull them never get here: traversal culls them.
+extern "C" __global__ void __anyhit__passThrough() {
+  const float2 barycentrics = optixGetTriangleBarycentrics();
+  Hit hit;
+  hit.b1 = barycentrics.x;
+  hit.b2 = barycentrics.y;
+  hit.instanceId = hitInstance();
+  hit.primitiveId = optixGetPrimitiveIndex();
+  if (passesThrough(
+          params.scene, hit, [] { return false; }, optixGetPayload_0()))
+    optixIgnoreIntersection();
+}
+
+extern "C" __global__ void __miss__shadow() { optixSetPayload_1(0); }

@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# cold_start.sh [candela binary] [runs]: the GPU backend's time to its first frame on a GPU machine, with OptiX's
+# disk cache empty (cold: the first start on a machine, which compiles the GPU programs) and holding the programs
+# (warm), `runs` times each (default 3). Each run is `candela bench` of the Cornell box at 1920x1080, one launch
+# of one sample per pixel, and prints bench's backend_start_seconds (CUDA and OptiX contexts, the programs of a
+# first frame compiled and linked into pipelines) and first_frame_seconds (scene upload, the schedule's probe,
+# the first launch), the process's wall time, and the compile's last line. A cold run also times `candela render
+# --denoise atrous` (wall time, its first frame launches the AOV path tracer, whose programs compile in the
+# background) in a cache of its own.
+#
+# Cold is a fresh empty folder in CANDELA_OPTIX_CACHE, where the backend points OptiX's disk cache
+# (optixDeviceContextSetCacheLocation): OptiX then neither reads nor writes its default one (/var/tmp/OptixCache_$USER),
+# so nothing of the driver's needs clearing or turning off. OptiX's own variables would get in the way:
+# OPTIX_CACHE_PATH takes precedence over the folder set, and OPTIX_CACHE_MAXSIZE=0 turns the cache off (every start
+# cold), so both are unset here. CUDA's JIT cache (CUDA_CACHE_PATH) serves only PTX that the driver compiles for a
+# GPU the build has no SASS for: candela's CUDA kernels carry SASS for CMAKE_CUDA_ARCHITECTURES (90: H100/H200) and
+# OptiX compiles its modules itself; a fresh folder per cold run keeps it out of the measurement all the same.
+set -euo pipefail
+candela=$(realpath "${1:-build/src/candela}")
+runs=${2:-3}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+unset OPTIX_CACHE_PATH OPTIX_CACHE_MAXSIZE
+bench=(bench cornell-box --backend optix --width 1920 --height 1080 --spp 1 --warmup 0)
+
+# json_number <key> <json line>
+json_number() { grep -o "\"$1\":[-0-9.e+]*" <<<"$2" | cut -d: -f2; }
+
+# timed <cache folder> <log> <candela arguments...>: runs candela with that cache, its output in <log>.out and
+# <log>.err; prints its wall seconds. A failure ends the script with candela's messages.
+timed() {
+  local cache=$1 log=$2
+  shift 2
+  local start end
+  start=$(date +%s.%N)
+  if ! CANDELA_OPTIX_CACHE=$cache CUDA_CACHE_PATH=$cache/cuda "$candela" "$@" >"$log.out" 2>"$log.err"; then
+    echo "candela $* failed:" >&2
+    cat "$log.err" >&2
+    exit 1
+  fi
+  end=$(date +%s.%N)
+  awk -v s="$start" -v e="$end" 'BEGIN {printf "%.2f", e - s}'
+}
+
+# bench_run <label> <cache folder>: one bench run and its line.
+bench_run() {
+  local label=$1 cache=$2 log=$work/run
+  local wall json compiled
+  wall=$(timed "$cache" "$log" "${bench[@]}")
+  json=$(tail -1 "$log.out")
+  compiled=$(grep -E '^optix: compil(ed|ing the GPU programs failed)' "$log.err" | tr '\n' ' ' || true)
+  printf '%s: backend_start_seconds %s, first_frame_seconds %s, wall %s s; %s\n' "$label" \
+    "$(json_number backend_start_seconds "$json")" "$(json_number first_frame_seconds "$json")" "$wall" \
+    "${compiled:-no compile reported (over within half a second)}"
+  [ "$label" != "cold 1" ] || grep -m1 '^optix: .* driver ' "$log.err"
+}
+
+echo "candela: $candela"
+for run in $(seq "$runs"); do
+  mkdir "$work/cold$run" "$work/aovs$run"
+  bench_run "cold $run" "$work/cold$run"
+  wall=$(timed "$work/aovs$run" "$work/aovs" render cornell-box --backend optix --width 1920 --height 1080 --spp 1 \
+    --denoise atrous -o "$work/aovs$run/image.png")
+  echo "cold $run, render --denoise atrous: wall $wall s; $(grep -E '^optix: compil(ed|ing the GPU programs failed)' \
+    "$work/aovs.err" | tr '\n' ' ' || true)"
+done
+for run in $(seq "$runs"); do
+  bench_run "warm $run" "$work/cold1"
+done
