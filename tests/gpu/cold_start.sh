@@ -42,17 +42,24 @@ timed() {
   awk -v s="$start" -v e="$end" 'BEGIN {printf "%.2f", e - s}'
 }
 
+# compiles <stderr file>: the lines that end the compiles candela reported (at start-up, and at exit where the
+# background modules were still compiling).
+compiles() {
+  local lines
+  lines=$(grep -E '^optix: compil(ed|ing the GPU programs failed)' "$1" | tr '\n' ' ' || true)
+  echo "${lines:-no compile reported (over within half a second)}"
+}
+
 # bench_run <label> <cache folder>: one bench run and its line.
 bench_run() {
   local label=$1 cache=$2 log=$work/run
-  local wall json compiled
+  local wall json
   wall=$(timed "$cache" "$log" "${bench[@]}")
   json=$(tail -1 "$log.out")
-  compiled=$(grep -E '^optix: compil(ed|ing the GPU programs failed)' "$log.err" | tr '\n' ' ' || true)
   printf '%s: backend_start_seconds %s, first_frame_seconds %s, wall %s s; %s\n' "$label" \
     "$(json_number backend_start_seconds "$json")" "$(json_number first_frame_seconds "$json")" "$wall" \
-    "${compiled:-no compile reported (over within half a second)}"
-  [ "$label" != "cold 1" ] || grep -m1 '^optix: .* driver ' "$log.err"
+    "$(compiles "$log.err")"
+  if [ "$label" = "cold 1" ]; then grep -m1 '^optix: .* driver ' "$log.err" || true; fi
 }
 
 echo "candela: $candela"
@@ -61,8 +68,7 @@ for run in $(seq "$runs"); do
   bench_run "cold $run" "$work/cold$run"
   wall=$(timed "$work/aovs$run" "$work/aovs" render cornell-box --backend optix --width 1920 --height 1080 --spp 1 \
     --denoise atrous -o "$work/aovs$run/image.png")
-  echo "cold $run, render --denoise atrous: wall $wall s; $(grep -E '^optix: compil(ed|ing the GPU programs failed)' \
-    "$work/aovs.err" | tr '\n' ' ' || true)"
+  echo "cold $run, render --denoise atrous: wall $wall s; $(compiles "$work/aovs.err")"
 done
 for run in $(seq "$runs"); do
   bench_run "warm $run" "$work/cold1"

@@ -26,7 +26,9 @@ ModuleCompilation::ModuleCompilation(OptixDeviceContext context, const OptixModu
   }
   if (!first) return;
   known_ = 1;
-  arena_.execute([&] { run(first); });
+  // Into the arena's queue, which the arena's threads serve while this one goes on (rather than spawned by a thread
+  // that leaves the arena at once).
+  arena_.enqueue(group_.defer([this, first] { execute(first); }));
 }
 
 ModuleCompilation::~ModuleCompilation() {

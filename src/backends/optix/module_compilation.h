@@ -39,7 +39,7 @@ class ModuleCompilation {
   CompileTaskCounts tasks() const;
 
  private:
-  void run(OptixTask task);  // on the arena's threads
+  void run(OptixTask task);  // from a task: into the running thread's pool, in the arena
   void execute(OptixTask task);
   void waitForTasks();
 
