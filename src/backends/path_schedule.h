@@ -22,8 +22,9 @@ const char* pathScheduleName(PathSchedule schedule);
 // always get the same schedule, and renders stay reproducible (a resumed render equals an uninterrupted one).
 class PathScheduleChoice {
  public:
-  // Between the bench scenes' 1.14 rays per sample (DamagedHelmet under an HDR map, where the wavefront took twice
-  // the megakernel's time) and 2.96 to 3.09 (the Cornell scenes and the cut-outs, where it took 4-22% less).
+  // Between the bench scenes' rays per sample where the megakernel is faster (DamagedHelmet under an HDR map, about
+  // one ray a sample) and those where the wavefront is (the Cornell scenes and the cut-outs, about three):
+  // docs/performance.md, 'GPU frame times'.
   static constexpr double kWavefrontRaysPerSample = 2.0;
 
   explicit PathScheduleChoice(PathSchedule requested = PathSchedule::Auto) : requested_(requested) {}

@@ -28,8 +28,8 @@ class AccelerationStructures {
   // or the GAS it refers to changed. Where many meshes are to be built, those with one instance and one SBT
   // index for all their triangles (and, where back faces are culled, no mirroring transform) are built up to
   // kMaxBatchInputs to a GAS instead (launch_params.h), in world space and in the Morton order of their centres:
-  // each optixAccelBuild call costs about a third of a millisecond of host time, which for the 12,461 meshes of
-  // a 10M-triangle scene was 4.4 s. A batched mesh is built again with every update that builds.
+  // each optixAccelBuild call costs host time, seconds for the ten thousand meshes of a large scene
+  // (docs/performance-log.md, 'Large scenes on the GPU'). A batched mesh is built again with every update that builds.
   void update(OptixDeviceContext context, cudaStream_t stream, const FlatScene* previous, const FlatScene& flat,
               const SceneView& device);
 

@@ -58,11 +58,10 @@ class CudaEvent {
   cudaEvent_t event_ = nullptr;
 };
 
-// Which raygen programs share a pipeline, as measured on an H200 (OptiX 9.0 ABI, driver 580, Cornell box at
-// 1080p): the path tracer ran 4.05 ms per frame beside the record program, 6.8 ms alone or beside the
-// raw-trace program; the raw-trace program ran 2.7 ms alone, 3.1 ms beside the other two. OptiX decides per
-// pipeline how to compile traversal around each trace call, and does not document it, so this grouping is
-// what the measurement chose (docs/performance.md). The AOV path tracer gets a pipeline of its own, shaped
+// Which raygen programs share a pipeline: the path tracer runs much faster beside the record program than alone
+// or beside the raw-trace program (docs/performance-log.md, 'GPU (OptiX)'). OptiX decides per pipeline how to
+// compile traversal around each trace call, and does not document it, so this grouping is what the measurement
+// chose. The AOV path tracer gets a pipeline of its own, shaped
 // like the path tracer's (beside a copy of the record program), so that it leaves the path tracer's alone.
 enum class PipelineKind { Megakernel, RawTrace, AovMegakernel, Wavefront };
 constexpr size_t kPipelineKinds = 4;

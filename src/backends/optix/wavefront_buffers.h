@@ -2,7 +2,7 @@
 // Where the wavefront schedule keeps its paths and queues between launches (backends/optix/wavefront_schedule.h),
 // as seen by the device programs. Structure of arrays: each plane holds one 16-byte word (or one 4-byte word) per
 // slot, so that a warp reading or writing one plane touches consecutive memory. Stored field by field in an array
-// of structures, the state cost the shading launches three times the memory traffic (docs/performance.md).
+// of structures, the state cost the shading launches far more memory traffic (docs/performance-log.md).
 #include <cstdint>
 
 namespace candela::optix {

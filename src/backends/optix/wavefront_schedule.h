@@ -46,9 +46,8 @@ class WavefrontSchedule {
 
   size_t slots_ = 0;  // paths the buffers hold: the stride of their planes
   // Launches sized for at most this many paths follow the paths left to their ends in one launch
-  // (__raygen__pathTail): by default half the current device's threads (1024 a multiprocessor), 135K paths on an
-  // H200. Measured there (docs/performance.md): the Cornell box gained from it where the launch size was 94K
-  // (52K paths left), and lost where it was 176K (94K left).
+  // (__raygen__pathTail): by default half the current device's threads (1024 a multiprocessor). Chosen by
+  // measurement on an H200 (docs/performance-log.md, 'Fewer launches and less traffic per bounce').
   uint32_t tailPaths_ = 0;
   DeviceBuffer paths_, rays_[2], rayBits_[2], hits_, hitPrimitives_, shadows_, counts_;
   // The launch parameters of the camera bounce, and of the later bounces reading radiance queue 1 and 0.
