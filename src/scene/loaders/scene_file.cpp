@@ -10,6 +10,7 @@
 #include <map>
 #include <tuple>
 
+#include "kernel/bsdf/material_type_names.h"
 #include "scene/loaders/file_bytes.h"
 #include "scene/loaders/image_decoding.h"
 #include "scene/loaders/path_confinement.h"
@@ -119,13 +120,8 @@ glm::mat4 transformOf(const Node& t, LoadWarnings& warnings) {
 
 MaterialType materialType(const Node& n) {
   std::string t = n.string();
-  if (t == "diffuse") return MaterialType::Diffuse;
-  if (t == "blinn-phong") return MaterialType::BlinnPhong;
-  if (t == "pbr") return MaterialType::Pbr;
-  if (t == "disney") return MaterialType::Disney;
-  if (t == "mirror") return MaterialType::Mirror;
-  if (t == "glass") return MaterialType::Glass;
-  n.fail("unknown material type '" + t + "' (diffuse, blinn-phong, pbr, disney, mirror, glass)");
+  if (std::optional<MaterialType> type = materialTypeNamed(t)) return *type;
+  n.fail("unknown material type '" + t + "' (" + materialTypeNameList() + ")");
 }
 
 void overrideMaterial(Material& m, const Node& o, LoadWarnings& warnings) {
