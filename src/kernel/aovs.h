@@ -1,4 +1,5 @@
 #pragma once
+#include "kernel/bsdf/material_models.h"
 #include "kernel/material.h"
 
 namespace candela {
@@ -21,8 +22,6 @@ CANDELA_FN Vec3 materialAlbedo(const Material& m) {
   return {clampf(a.x, 0.0f, 1.0f), clampf(a.y, 0.0f, 1.0f), clampf(a.z, 0.0f, 1.0f)};
 }
 
-CANDELA_FN bool isSpecularMaterial(const Material& m) {
-  return m.type == MaterialType::Mirror || m.type == MaterialType::Glass;
-}
+CANDELA_FN bool isSpecularMaterial(const Material& m) { return isDeltaModel(m.type); }
 
 }  // namespace candela

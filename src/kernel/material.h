@@ -5,16 +5,50 @@
 
 namespace candela {
 
-// The shading models a material can use; kernel code dispatches on this tag with a switch.
+// The shading models, in one list, from which everything that names them is generated: MaterialType below, the
+// Bsdf's union of models, its construction and dispatch (kernel/bsdf/bsdf.h), what a material's model says about
+// it before a Bsdf is built (kernel/bsdf/material_models.h) and the names of scene files and --shading
+// (kernel/bsdf/material_type_names.h).
+//
+// To add a model: write its header (fromMaterial, flags, eval/pdf/evalPdf/sample; see "A model" below), add a
+// line here and include the header in kernel/bsdf/material_models.h, add its parameters to Material below if it
+// has new ones. A format that should produce the model sets the type in the one function that maps its
+// materials (materialFromMtl, materialFromGltf, PbrtMaterials::translate, the scene file's materialType).
+//
+// X(type, Model, name, shadingName): the MaterialType enumerator; the model's class; its name in scene files (a
+// material override's "type"); its name for --shading and the viewers' shading choice, or nullptr where they do
+// not offer it (scene/material_overrides.h). The order gives MaterialType's values, which the scene cache and
+// device buffers store: a new model goes last (a cache is read only by the build that wrote it).
+#define CANDELA_MATERIAL_MODELS(X)                      \
+  X(Diffuse, LambertianBsdf, "diffuse", nullptr)        \
+  X(BlinnPhong, BlinnPhongBsdf, "blinn-phong", "phong") \
+  X(Pbr, PbrBsdf, "pbr", "pbr")                         \
+  X(Disney, DisneyBsdf, "disney", "disney")             \
+  X(Mirror, MirrorBsdf, "mirror", nullptr)              \
+  X(Glass, SmoothDielectricBsdf, "glass", nullptr)
+
+// A model is plain data (the Bsdf keeps one in a union) working in the local shading frame, with
+//   static constexpr bool kDelta;                   only delta lobes, which light sampling cannot reach
+//   bool hasTransmission() const;                   whether it can scatter to the far side of the surface
+//   static bool transmits(const Material&);         whether a surface of the material can let light through to
+//                                                   its other side: rays then meet both sides (pass_through.h)
+//   static bool orientedByTangent(const Material&); whether its lobes turn with the surface's tangent, which the
+//                                                   scene then provides (anisotropy)
+//   static Model fromMaterial(const Material&, float eta);  the model of a material with its textures applied,
+//                                                   eta the relative index across the surface seen from wo
+//   eval, pdf, evalPdf and sample, as LambertianBsdf's.
+
+// The models of the list, then Mix; kernel code dispatches on this tag with a switch.
 enum class MaterialType : uint32_t {
-  Diffuse = 0,  // Lambertian
-  BlinnPhong,   // energy-normalised diffuse + Blinn-Phong specular (baseColor, specularColor, shininess)
-  Pbr,          // glTF metallic-roughness: diffuse + GGX specular
-  Disney,       // Burley's principled BSDF with the 2015 transmission extension
-  Mirror,       // perfect specular reflection tinted by specularColor
-  Glass,        // smooth dielectric with index `ior`, transmission tinted by baseColor
-  Mix,          // the scattering of one of two materials, chosen per shading point (kernel/textured_material.h)
+#define CANDELA_MATERIAL_TYPE_ENUMERATOR(type, Model, name, shadingName) type,
+  CANDELA_MATERIAL_MODELS(CANDELA_MATERIAL_TYPE_ENUMERATOR)
+#undef CANDELA_MATERIAL_TYPE_ENUMERATOR
+  // Not a model: the scattering of one of two materials, chosen per shading point before a Bsdf is built
+  // (chooseMixedMaterial in kernel/textured_material.h).
+  Mix,
 };
+
+constexpr uint32_t kMaterialModelCount = uint32_t(MaterialType::Mix);
 
 // How many mixes a chain of mixed materials may pass through before it reaches a material of another type:
 // the kernel resolves a mix in a loop of at most this many steps, and scene validation rejects longer chains

@@ -5,16 +5,13 @@
 // faces in traversal), the CPU backend from Embree's filter functions. Geometry whose materials cannot is built
 // with those calls disabled.
 #include "core/rng.h"
+#include "kernel/bsdf/material_models.h"
 #include "kernel/hit.h"
 #include "kernel/scene_view.h"
 #include "kernel/textured_material.h"
 #include "kernel/triangle_attributes.h"
 
 namespace candela {
-
-CANDELA_FN bool isTransmissive(const Material& m) {
-  return m.type == MaterialType::Glass || (m.type == MaterialType::Disney && m.specTrans > 0.0f);
-}
 
 // Back faces of single-sided opaque materials are not there for rays; refracting materials keep both sides.
 CANDELA_FN bool cullsBackFaces(const Material& m) { return m.doubleSided == 0 && !isTransmissive(m); }

@@ -5,6 +5,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "kernel/bsdf/material_models.h"
 #include "kernel/lights.h"
 #include "kernel/pass_through.h"
 #include "scene/emission_average.h"
@@ -122,9 +123,7 @@ void collectPunctualLights(const Scene& scene, FlatScene& flat) {
 }
 
 // Tangents are needed where a normal map or an anisotropic lobe must be oriented on the surface.
-bool needsTangents(const Material& m) {
-  return m.normalTexture != kNoTexture || (m.type == MaterialType::Disney && m.anisotropic > 0.0f);
-}
+bool needsTangents(const Material& m) { return m.normalTexture != kNoTexture || isOrientedByTangent(m); }
 
 // Per material, whether it or a material it may choose (through mixes: validation bounds their chains) needs
 // tangents.

@@ -5,7 +5,8 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "kernel/bsdf/blinn_phong.h"
+#include "kernel/bsdf/material_models.h"
+#include "kernel/bsdf/material_type_names.h"
 
 namespace candela {
 
@@ -35,14 +36,35 @@ std::string parameterList() {
   return list;
 }
 
+// The models --shading offers, in ShadingModel's order after Own: those the list of models gives a shading name.
+constexpr size_t kShadingChoiceCount = [] {
+  size_t count = 0;
+  for (const MaterialModelNames& model : kMaterialModelNames) count += model.shadingName != nullptr;
+  return count;
+}();
+static_assert(kShadingChoiceCount == size_t(ShadingModel::Disney),
+              "ShadingModel names Own, then each model with a shading name, in the list's order");
+constexpr std::array<MaterialModelNames, kShadingChoiceCount> kShadingChoices = [] {
+  std::array<MaterialModelNames, kShadingChoiceCount> choices{};
+  size_t next = 0;
+  for (const MaterialModelNames& model : kMaterialModelNames)
+    if (model.shadingName) choices[next++] = model;
+  return choices;
+}();
+
 MaterialType modelType(ShadingModel model) {
-  switch (model) {
-    case ShadingModel::BlinnPhong: return MaterialType::BlinnPhong;
-    case ShadingModel::Pbr: return MaterialType::Pbr;
-    case ShadingModel::Disney: return MaterialType::Disney;
-    case ShadingModel::Own: break;
+  if (model == ShadingModel::Own) throw std::logic_error("no material type for the material's own model");
+  return kShadingChoices[size_t(model) - 1].type;
+}
+
+// "phong, pbr or disney".
+std::string shadingNameList() {
+  std::string list;
+  for (size_t i = 0; i < kShadingChoices.size(); ++i) {
+    if (i > 0) list += i + 1 < kShadingChoices.size() ? ", " : " or ";
+    list += kShadingChoices[i].shadingName;
   }
-  throw std::logic_error("no material type for the material's own model");
+  return list;
 }
 
 }  // namespace
@@ -78,15 +100,14 @@ void parseOverride(MaterialOverrides& overrides, const std::string& assignment) 
 }
 
 ShadingModel parseShadingModel(const std::string& name) {
-  if (name == "phong") return ShadingModel::BlinnPhong;
-  if (name == "pbr") return ShadingModel::Pbr;
-  if (name == "disney") return ShadingModel::Disney;
-  throw std::invalid_argument("unknown shading model '" + name + "' (phong, pbr or disney)");
+  for (size_t i = 0; i < kShadingChoices.size(); ++i)
+    if (name == kShadingChoices[i].shadingName) return ShadingModel(i + 1);
+  throw std::invalid_argument("unknown shading model '" + name + "' (" + shadingNameList() + ")");
 }
 
 Material applyOverrides(Material m, const MaterialOverrides& o) {
   // A mix has no parameters of its own to override: the materials it mixes, in the same list, take them.
-  if (m.type == MaterialType::Mirror || m.type == MaterialType::Glass || m.type == MaterialType::Mix) return m;
+  if (m.type == MaterialType::Mix || isDeltaModel(m.type)) return m;
   MaterialType target = o.shading == ShadingModel::Own ? m.type : modelType(o.shading);
   bool fromPhong = m.type == MaterialType::BlinnPhong;
   if (fromPhong && target != MaterialType::BlinnPhong) {

@@ -5,9 +5,9 @@
 #include "app/device_list.h"
 #include "app/interactive/post_settings.h"
 #include "core/path_sampler.h"
+#include "io/path_confinement.h"
 #include "kernel/render_settings.h"
 #include "scene/cache/scene_cache.h"
-#include "io/path_confinement.h"
 #include "scene/loaders/texture_limits.h"
 
 namespace candela {

@@ -8,8 +8,8 @@
 #include <stdexcept>
 
 #include "app/interactive/post_filter.h"
-#include "io/atomic_file.h"
 #include "core/file_extension.h"
+#include "io/atomic_file.h"
 #include "io/images/image_io.h"
 
 namespace candela {

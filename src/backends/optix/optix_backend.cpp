@@ -11,8 +11,8 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <variant>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "backends/film_display.h"

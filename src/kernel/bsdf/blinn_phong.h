@@ -4,6 +4,7 @@
 #include "kernel/bsdf/half_vector_reflection.h"
 #include "kernel/bsdf/lambertian.h"
 #include "kernel/bsdf/lobe_mixture.h"
+#include "kernel/material.h"
 
 namespace candela {
 
@@ -59,6 +60,14 @@ struct BlinnPhongBsdf {
 
   CANDELA_FN BlinnPhongBsdf(Vec3 kd, Vec3 ks, float exponent)
       : diffuse{kd * (1.0f - clampf(maxComponent(ks), 0.0f, 1.0f))}, specular{ks, fmaxf(0.0f, exponent)} {}
+
+  static constexpr bool kDelta = false;
+  CANDELA_FN bool hasTransmission() const { return false; }
+  CANDELA_FN static bool transmits(const Material&) { return false; }
+  CANDELA_FN static bool orientedByTangent(const Material&) { return false; }
+  CANDELA_FN static BlinnPhongBsdf fromMaterial(const Material& m, float /*eta*/) {
+    return {m.baseColor, m.specularColor, m.shininess};
+  }
 
   CANDELA_FN LobeChoice<2> choice() const {
     return LobeChoice<2>::fromEstimates({luminance(diffuse.albedo), luminance(specular.ks)});

@@ -1,10 +1,5 @@
 #pragma once
-#include "kernel/aovs.h"
-#include "kernel/bsdf/blinn_phong.h"
-#include "kernel/bsdf/disney.h"
-#include "kernel/bsdf/lambertian.h"
-#include "kernel/bsdf/pbr.h"
-#include "kernel/bsdf/specular.h"
+#include "kernel/bsdf/material_models.h"
 #include "kernel/interaction.h"
 #include "kernel/material.h"
 
@@ -25,52 +20,46 @@ class Bsdf {
     // Closed meshes are wound outwards: arriving on the front side means entering the material.
     float ior = m.ior > 0.0f ? m.ior : 1.0f;
     float eta = dot(woWorld, si.geometricNormal) >= 0.0f ? ior : 1.0f / ior;
+    // Each model's case returns, but the fallback's breaks, to share the code after the switch with a mix and with
+    // types outside the list: every model is built in one place, as in a switch written out by hand.
     switch (m.type) {
-      case MaterialType::BlinnPhong:
-        model_.blinnPhong = BlinnPhongBsdf(m.baseColor, m.specularColor, m.shininess);
-        break;
-      case MaterialType::Pbr:
-        model_.pbr = PbrBsdf(m.baseColor, m.metallic, m.roughness, m.specular, m.iridescence, m.iridescenceIor,
-                             m.iridescenceThickness);
-        break;
-      case MaterialType::Disney: model_.disney = DisneyBsdf(m, eta); break;
-      case MaterialType::Mirror: model_.mirror = MirrorBsdf{m.specularColor}; break;
-      case MaterialType::Glass: model_.glass = SmoothDielectricBsdf{eta, sqrtColor(m.baseColor)}; break;
-      case MaterialType::Diffuse:
-      default:
-        type_ = MaterialType::Diffuse;
-        model_.lambertian = LambertianBsdf{m.baseColor};
-        break;
+#define CANDELA_BUILD_MODEL_CASE(type, Model, name, shadingName) \
+  case MaterialType::type:                                       \
+    if (MaterialType::type == kFallbackType) break;              \
+    model_.as##type = Model::fromMaterial(m, eta);               \
+    return;
+      CANDELA_MATERIAL_MODELS(CANDELA_BUILD_MODEL_CASE)
+#undef CANDELA_BUILD_MODEL_CASE
+      case MaterialType::Mix: break;  // never built: evaluateSurfaceMaterial resolves a mix first
     }
+    type_ = kFallbackType;
+    model_.asDiffuse = LambertianBsdf::fromMaterial(m, eta);
   }
 
   CANDELA_FN Vec3 toLocal(Vec3 w) const { return frame_.toLocal(w); }
   CANDELA_FN Vec3 toWorld(Vec3 w) const { return frame_.toWorld(w); }
   CANDELA_FN Vec3 normal() const { return frame_.n; }
 
-  // Delta lobes only: light sampling cannot find them, so next-event estimation is skipped.
-  CANDELA_FN bool isDelta() const { return type_ == MaterialType::Mirror || type_ == MaterialType::Glass; }
-  CANDELA_FN bool hasTransmission() const {
-    switch (type_) {
-      case MaterialType::Glass: return true;
-      case MaterialType::Disney: return model_.disney.glassWeight > 0.0f;
-      default: return false;
-    }
-  }
-
-  // Calls f with the model of this material's type.
+  // Calls f with the model of this material's type; the fallback's case shares the call after the switch, as the
+  // constructor's does.
   template <class F>
   CANDELA_FN auto visit(F&& f) const {
     switch (type_) {
-      case MaterialType::BlinnPhong: return f(model_.blinnPhong);
-      case MaterialType::Pbr: return f(model_.pbr);
-      case MaterialType::Disney: return f(model_.disney);
-      case MaterialType::Mirror: return f(model_.mirror);
-      case MaterialType::Glass: return f(model_.glass);
-      case MaterialType::Diffuse:
-      case MaterialType::Mix: break;  // never built: evaluateSurfaceMaterial resolves a mix first
+#define CANDELA_VISIT_MODEL_CASE(type, Model, name, shadingName) \
+  case MaterialType::type:                                       \
+    if (MaterialType::type == kFallbackType) break;              \
+    return f(model_.as##type);
+      CANDELA_MATERIAL_MODELS(CANDELA_VISIT_MODEL_CASE)
+#undef CANDELA_VISIT_MODEL_CASE
+      case MaterialType::Mix: break;  // never: the constructor builds the fallback instead
     }
-    return f(model_.lambertian);
+    return f(model_.asDiffuse);
+  }
+
+  // Delta lobes only: light sampling cannot find them, so next-event estimation is skipped.
+  CANDELA_FN bool isDelta() const { return isDeltaModel(type_); }
+  CANDELA_FN bool hasTransmission() const {
+    return visit([](const auto& model) { return model.hasTransmission(); });
   }
 
   CANDELA_FN Vec3 eval(Vec3 woWorld, Vec3 wiWorld) const {
@@ -95,19 +84,16 @@ class Bsdf {
   }
 
  private:
-  CANDELA_FN static Vec3 sqrtColor(Vec3 c) {
-    return {sqrtf(fmaxf(0.0f, c.x)), sqrtf(fmaxf(0.0f, c.y)), sqrtf(fmaxf(0.0f, c.z))};
-  }
+  // The model built for a mix or a type outside the list: a diffuse surface, asDiffuse.
+  static constexpr MaterialType kFallbackType = MaterialType::Diffuse;
 
-  // The one model type_ names; the others are never read. Each is plain data, so assigning one begins its life.
+  // The one model type_ names (the member as<type>: asDiffuse, asDisney, ...); the others are never read. Each is
+  // plain data, so assigning one begins its life.
   union Model {
     CANDELA_FN Model() {}
-    LambertianBsdf lambertian;
-    BlinnPhongBsdf blinnPhong;
-    PbrBsdf pbr;
-    DisneyBsdf disney;
-    MirrorBsdf mirror;
-    SmoothDielectricBsdf glass;
+#define CANDELA_MODEL_MEMBER(type, Class, name, shadingName) Class as##type;
+    CANDELA_MATERIAL_MODELS(CANDELA_MODEL_MEMBER)
+#undef CANDELA_MODEL_MEMBER
   };
 
   Frame frame_;

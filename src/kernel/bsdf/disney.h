@@ -47,6 +47,12 @@ struct DisneyBsdf {
     specularWeight = 1.0f - glassWeight;
   }
 
+  static constexpr bool kDelta = false;
+  CANDELA_FN bool hasTransmission() const { return glassWeight > 0.0f; }
+  CANDELA_FN static bool transmits(const Material& m) { return m.specTrans > 0.0f; }
+  CANDELA_FN static bool orientedByTangent(const Material& m) { return m.anisotropic > 0.0f; }
+  CANDELA_FN static DisneyBsdf fromMaterial(const Material& m, float eta) { return DisneyBsdf(m, eta); }
+
   // Lobes: 0 diffuse and sheen, 1 specular, 2 glass, 3 clearcoat.
   CANDELA_FN LobeChoice<4> choice(Vec3 wo) const {
     float diffuseGuess = luminance(diffuse.baseColor) + 0.5f * luminance(diffuse.sheenColor);

@@ -1,12 +1,19 @@
 #pragma once
 #include "core/sampling.h"
 #include "kernel/bsdf/bsdf_sample.h"
+#include "kernel/material.h"
 
 namespace candela {
 
 // Ideal diffuse reflection, sampled by the cosine.
 struct LambertianBsdf {
   Vec3 albedo;
+
+  static constexpr bool kDelta = false;
+  CANDELA_FN bool hasTransmission() const { return false; }
+  CANDELA_FN static bool transmits(const Material&) { return false; }
+  CANDELA_FN static bool orientedByTangent(const Material&) { return false; }
+  CANDELA_FN static LambertianBsdf fromMaterial(const Material& m, float /*eta*/) { return {m.baseColor}; }
 
   CANDELA_FN Vec3 eval(Vec3 wo, Vec3 wi) const {
     return (wo.z > 0.0f && wi.z > 0.0f) ? albedo * kInvPi : Vec3{0, 0, 0};

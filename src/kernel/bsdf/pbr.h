@@ -2,6 +2,7 @@
 #include "core/sampling.h"
 #include "kernel/bsdf/ggx_reflection.h"
 #include "kernel/bsdf/lobe_mixture.h"
+#include "kernel/material.h"
 
 namespace candela {
 
@@ -35,6 +36,14 @@ struct PbrBsdf {
     if (iridescence > 0.0f)
       specular.film =
           ThinFilm::over(iridescence, iridescenceIor, iridescenceThickness, metallic, dielectric, baseColor);
+  }
+
+  static constexpr bool kDelta = false;
+  CANDELA_FN bool hasTransmission() const { return false; }
+  CANDELA_FN static bool transmits(const Material&) { return false; }
+  CANDELA_FN static bool orientedByTangent(const Material&) { return false; }
+  CANDELA_FN static PbrBsdf fromMaterial(const Material& m, float /*eta*/) {
+    return {m.baseColor, m.metallic, m.roughness, m.specular, m.iridescence, m.iridescenceIor, m.iridescenceThickness};
   }
 
   // The dielectric base's reflectance F_d at cosTheta, which the diffuse term does not see.

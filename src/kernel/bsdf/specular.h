@@ -1,6 +1,7 @@
 #pragma once
 #include "kernel/bsdf/bsdf_sample.h"
 #include "kernel/bsdf/fresnel.h"
+#include "kernel/material.h"
 
 namespace candela {
 
@@ -11,6 +12,12 @@ namespace candela {
 // Perfect mirror reflecting `reflectance` of the light.
 struct MirrorBsdf {
   Vec3 reflectance;
+
+  static constexpr bool kDelta = true;
+  CANDELA_FN bool hasTransmission() const { return false; }
+  CANDELA_FN static bool transmits(const Material&) { return false; }
+  CANDELA_FN static bool orientedByTangent(const Material&) { return false; }
+  CANDELA_FN static MirrorBsdf fromMaterial(const Material& m, float /*eta*/) { return {m.specularColor}; }
 
   CANDELA_FN Vec3 eval(Vec3, Vec3) const { return {0, 0, 0}; }
   CANDELA_FN float pdf(Vec3, Vec3) const { return 0.0f; }
@@ -33,6 +40,17 @@ struct MirrorBsdf {
 struct SmoothDielectricBsdf {
   float eta = 1.5f;
   Vec3 transmissionTint{1, 1, 1};
+
+  static constexpr bool kDelta = true;
+  CANDELA_FN bool hasTransmission() const { return true; }
+  CANDELA_FN static bool transmits(const Material&) { return true; }
+  CANDELA_FN static bool orientedByTangent(const Material&) { return false; }
+  // Tinted by the square root of the base colour at each crossing, so that a closed object transmits the base
+  // colour.
+  CANDELA_FN static SmoothDielectricBsdf fromMaterial(const Material& m, float eta) {
+    const Vec3 c = m.baseColor;
+    return {eta, {sqrtf(fmaxf(0.0f, c.x)), sqrtf(fmaxf(0.0f, c.y)), sqrtf(fmaxf(0.0f, c.z))}};
+  }
 
   CANDELA_FN Vec3 eval(Vec3, Vec3) const { return {0, 0, 0}; }
   CANDELA_FN float pdf(Vec3, Vec3) const { return 0.0f; }

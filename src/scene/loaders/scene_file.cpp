@@ -13,6 +13,7 @@
 #include "io/file_bytes.h"
 #include "io/images/image_decoding.h"
 #include "io/path_confinement.h"
+#include "kernel/bsdf/material_type_names.h"
 #include "scene/scene_repair.h"
 #include "scene/transform.h"
 
@@ -119,13 +120,8 @@ glm::mat4 transformOf(const Node& t, LoadWarnings& warnings) {
 
 MaterialType materialType(const Node& n) {
   std::string t = n.string();
-  if (t == "diffuse") return MaterialType::Diffuse;
-  if (t == "blinn-phong") return MaterialType::BlinnPhong;
-  if (t == "pbr") return MaterialType::Pbr;
-  if (t == "disney") return MaterialType::Disney;
-  if (t == "mirror") return MaterialType::Mirror;
-  if (t == "glass") return MaterialType::Glass;
-  n.fail("unknown material type '" + t + "' (diffuse, blinn-phong, pbr, disney, mirror, glass)");
+  if (std::optional<MaterialType> type = materialTypeNamed(t)) return *type;
+  n.fail("unknown material type '" + t + "' (" + materialTypeNameList() + ")");
 }
 
 void overrideMaterial(Material& m, const Node& o, LoadWarnings& warnings) {

@@ -187,7 +187,6 @@ void convertSpecularGlossiness(const tinygltf::Value& e, Material& m, TextureRef
     }
   }
   const MetallicRoughness converted = metallicRoughnessFromSpecularGlossiness(diffuse, specular, glossiness);
-  m.type = MaterialType::Pbr;
   m.metallic = converted.metallic;
   m.roughness = converted.roughness;
   m.metallicRoughnessTexture = kNoTexture;
@@ -208,6 +207,20 @@ void convertSpecularGlossiness(const tinygltf::Value& e, Material& m, TextureRef
                            : kNoTexture;
 }
 
+// The extensions whose parameters only the Disney model has.
+constexpr const char* kDisneyExtensions[] = {"KHR_materials_transmission", "KHR_materials_ior",
+                                             "KHR_materials_clearcoat",    "KHR_materials_sheen",
+                                             "KHR_materials_specular",     "KHR_materials_anisotropy"};
+
+// The model glTF material `g` is rendered with: the core metallic-roughness model, Disney where an extension needs
+// it, a diffuse surface that emits the base colour for KHR_materials_unlit.
+MaterialType gltfMaterialType(const tinygltf::Material& g) {
+  if (extension(g.extensions, "KHR_materials_unlit")) return MaterialType::Diffuse;
+  for (const char* name : kDisneyExtensions)
+    if (extension(g.extensions, name)) return MaterialType::Disney;
+  return MaterialType::Pbr;
+}
+
 }  // namespace
 
 GltfMaterial materialFromGltf(const tinygltf::Model& model, int index, const std::string& file,
@@ -218,7 +231,7 @@ GltfMaterial materialFromGltf(const tinygltf::Model& model, int index, const std
   GltfMaterial out;
   Material& m = out.material;
   const auto& pbr = g.pbrMetallicRoughness;
-  m.type = MaterialType::Pbr;
+  m.type = gltfMaterialType(g);
   if (pbr.baseColorFactor.size() == 4) {
     m.baseColor = {finiteOr(pbr.baseColorFactor[0], 1), finiteOr(pbr.baseColorFactor[1], 1),
                    finiteOr(pbr.baseColorFactor[2], 1)};
@@ -254,10 +267,10 @@ GltfMaterial materialFromGltf(const tinygltf::Model& model, int index, const std
   m.alphaCutoff = finiteOr(g.alphaCutoff, 0.5f);
   m.doubleSided = g.doubleSided ? 1u : 0u;
 
+  // One of kDisneyExtensions, with a warning for each of its textures, which have no slot.
   auto disneyOnly = [&](const char* name, std::initializer_list<const char*> textures) -> const tinygltf::Value* {
     const tinygltf::Value* e = extension(g.extensions, name);
     if (!e) return nullptr;
-    m.type = MaterialType::Disney;
     for (const char* t : textures)
       if (hasTexture(*e, t))
         refs.warn(std::string(name) + "." + t + " is ignored: the material model has no such texture");
@@ -308,7 +321,6 @@ GltfMaterial materialFromGltf(const tinygltf::Model& model, int index, const std
   if (extension(g.extensions, "KHR_materials_unlit")) {
     // Unlit: the base colour is what the camera sees, whatever the lighting. Rendered as a black surface that
     // emits its base colour (texture included), so it also lights its surroundings a little.
-    m.type = MaterialType::Diffuse;
     m.emission = m.baseColor;
     m.emissionTexture = m.baseColorTexture;
     m.baseColor = {0, 0, 0};
