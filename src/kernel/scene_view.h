@@ -1,10 +1,12 @@
 #pragma once
+#include <cstddef>
 #include <cstdint>
 
 #include "core/math.h"
 #include "kernel/environment.h"
 #include "kernel/light_bounds.h"
 #include "kernel/material.h"
+#include "kernel/scene_arrays.h"
 #include "kernel/texture.h"
 
 namespace candela {
@@ -65,42 +67,35 @@ struct PunctualLight {
 };
 
 // Everything kernel code reads about a scene: plain pointers into host or device memory.
+//
+// Next-event estimation picks one light among the infinite ones (the environment, each directional light) and the
+// bounded ones (emissive triangles, point and spot lights) as pbrt-v4's BVHLightSampler does: each infinite light
+// with one fixed probability, the bounded lights together with the rest, and one of them by the light BVH or by
+// power. Bounded light i is the triangle lights[i] below lightCount, else punctualLights[i - lightCount]. The point
+// and spot lights come first in punctualLights, boundedPunctualLightCount of them, then the directional lights.
 struct SceneView {
-  const Vec3* positions = nullptr;  // object space, all meshes back to back
-  const Vec3* normals = nullptr;
-  const Vec2* uvs = nullptr;          // per vertex, alongside positions (zeros where a mesh has none)
-  const Vec4* tangents = nullptr;     // per vertex: unit tangent and bitangent sign (MikkTSpace convention)
-  const Vec3* colors = nullptr;       // per vertex, linear RGB; null when no mesh has colours
-  const uint32_t* indices = nullptr;  // mesh-local vertex indices, 3 per triangle
-  const uint32_t* triangleMaterials = nullptr;
-  const MeshRecord* meshes = nullptr;
-  const InstanceRecord* instances = nullptr;
-  const Material* materials = nullptr;
-  TexelArrays texels;
+  // The arrays of kernel/scene_arrays.h, in its order: `const Type* member`, null when the array is empty, and
+  // after it its length where the list says counted(name).
+#define CANDELA_SCENE_VIEW_ARRAY(Type, member, upload, count, description) \
+  const Type* member = nullptr;                                            \
+  CANDELA_SCENE_ARRAY_COUNT_MEMBER(count)
+  CANDELA_SCENE_ARRAYS(CANDELA_SCENE_VIEW_ARRAY)
+#undef CANDELA_SCENE_VIEW_ARRAY
+  TexelArrays texels;       // left out of the list, as the environment is (kernel/scene_arrays.h says why)
   uint32_t hasCutouts = 0;  // some material is alpha-tested, alpha-blended or back-face culled
-
-  // Next-event estimation picks one light among the infinite ones (the environment, each directional light) and
-  // the bounded ones (emissive triangles, point and spot lights) as pbrt-v4's BVHLightSampler does: each infinite
-  // light with one fixed probability, the bounded lights together with the rest, and one of them by the light BVH
-  // or by power. Bounded light i is the triangle lights[i] below lightCount, else punctualLights[i - lightCount].
-  const LightTriangle* lights = nullptr;
-  uint32_t lightCount = 0;
-  // The point and spot lights come first in punctualLights, boundedPunctualLightCount of them, then the
-  // directional lights.
-  const PunctualLight* punctualLights = nullptr;
-  uint32_t punctualLightCount = 0;
   uint32_t boundedPunctualLightCount = 0;
-  const float* lightCdf = nullptr;  // one entry per bounded light and one more, by emitted power
-  float inverseLightPower = 0.0f;   // 1 / the bounded lights' total power (kernel/lights.h)
-  // The light BVH over the bounded lights (2n - 1 nodes for n of them), and per light the path from the root to
-  // its leaf: bit i is 1 where the path takes the second child at depth i.
-  const LightBvhNode* lightBvh = nullptr;
-  const uint64_t* lightBitTrails = nullptr;
+  float inverseLightPower = 0.0f;  // 1 / the bounded lights' total power (kernel/lights.h)
   float environmentSelectProbability = 0.0f;
   float directionalSelectProbability = 0.0f;  // of each directional light
   float boundedSelectProbability = 0.0f;      // of the bounded lights together
   EnvironmentView environment;
 };
+
+// Sets the length SceneView holds of a listed array, where it holds one (CANDELA_SCENE_ARRAY_COUNT_FIELD).
+inline void setSceneArrayCount(SceneView&, std::nullptr_t, size_t) {}
+inline void setSceneArrayCount(SceneView& view, uint32_t SceneView::*count, size_t size) {
+  view.*count = uint32_t(size);
+}
 
 CANDELA_FN uint32_t boundedLightCount(const SceneView& scene) {
   return scene.lightCount + scene.boundedPunctualLightCount;

@@ -324,27 +324,15 @@ void FlatScene::replaceEnvironment(const Environment& replacement) {
 
 SceneView FlatScene::hostView() const {
   SceneView v;
-  v.positions = positions.data();
-  v.normals = normals.data();
-  v.uvs = uvs.data();
-  v.tangents = tangents.data();
-  v.colors = colors.empty() ? nullptr : colors.data();
-  v.indices = indices.data();
-  v.triangleMaterials = triangleMaterials.data();
-  v.meshes = meshes.data();
-  v.instances = instances.data();
-  v.materials = materials.data();
+#define CANDELA_POINT_AT_HOST_ARRAY(Type, member, upload, count, description) \
+  v.member = member.empty() ? nullptr : member.data();                        \
+  setSceneArrayCount(v, CANDELA_SCENE_ARRAY_COUNT_FIELD(count), member.size());
+  CANDELA_SCENE_ARRAYS(CANDELA_POINT_AT_HOST_ARRAY)
+#undef CANDELA_POINT_AT_HOST_ARRAY
   v.texels = {textures.data(), uint32_t(textures.size()), texelBytes.data(), texelFloats.data()};
   v.hasCutouts = hasCutouts ? 1u : 0u;
-  v.lights = lights.data();
-  v.lightCount = uint32_t(lights.size());
-  v.punctualLights = punctualLights.data();
-  v.punctualLightCount = uint32_t(punctualLights.size());
   v.boundedPunctualLightCount = boundedPunctualLightCount;
-  v.lightCdf = lightCdf.data();
   v.inverseLightPower = inverseLightPower;
-  v.lightBvh = lightBvh.data();
-  v.lightBitTrails = lightBitTrails.data();
   v.environmentSelectProbability = environmentSelectProbability;
   v.directionalSelectProbability = directionalSelectProbability;
   v.boundedSelectProbability = boundedSelectProbability;

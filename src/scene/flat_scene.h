@@ -10,29 +10,18 @@ namespace candela {
 // A Scene packed into the flat arrays kernel code reads, with the light table and the light BVH built. Backends either
 // point a SceneView at these arrays (CPU) or copy them to device memory (GPU).
 struct FlatScene {
-  std::vector<Vec3> positions;
-  std::vector<Vec3> normals;
-  std::vector<Vec2> uvs;
-  std::vector<Vec4> tangents;
-  std::vector<Vec3> colors;  // empty when no mesh has vertex colours (white for those without, otherwise)
-  std::vector<uint32_t> indices;
-  std::vector<uint32_t> triangleMaterials;
-  std::vector<MeshRecord> meshes;
-  std::vector<InstanceRecord> instances;
-  std::vector<Material> materials;
+  // The arrays of kernel/scene_arrays.h, in its order. The lights are as SceneView describes them: the point and
+  // spot lights first in punctualLights, lights that emit nothing left out.
+#define CANDELA_FLAT_SCENE_ARRAY(Type, member, upload, count, description) std::vector<Type> member;
+  CANDELA_SCENE_ARRAYS(CANDELA_FLAT_SCENE_ARRAY)
+#undef CANDELA_FLAT_SCENE_ARRAY
+  // The textures, left out of the list (kernel/scene_arrays.h says why), like the environment below.
   std::vector<TextureView> textures;
   std::vector<uint8_t> texelBytes;  // every 8-bit texture back to back, each with its mip levels
   std::vector<float> texelFloats;   // every float texture back to back, each with its mip levels
   bool hasCutouts = false;
-  // The lights as SceneView describes them: the point and spot lights first in punctualLights, lights that emit
-  // nothing left out.
-  std::vector<LightTriangle> lights;
-  std::vector<PunctualLight> punctualLights;
-  uint32_t boundedPunctualLightCount = 0;
-  std::vector<float> lightCdf;
+  uint32_t boundedPunctualLightCount = 0;  // the point and spot lights at the front of punctualLights
   float inverseLightPower = 0.0f;
-  std::vector<LightBvhNode> lightBvh;
-  std::vector<uint64_t> lightBitTrails;
   float environmentSelectProbability = 0.0f;
   float directionalSelectProbability = 0.0f;
   float boundedSelectProbability = 0.0f;

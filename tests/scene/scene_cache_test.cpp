@@ -17,6 +17,7 @@
 #include <random>
 #include <thread>
 
+#include "kernel/scene_arrays.h"
 #include "scene/cache/binary_stream.h"
 #include "scene/cache/cache_key.h"
 #include "scene/cache/scene_cache.h"
@@ -55,12 +56,10 @@ void expectSameScene(const Scene& a, const Scene& b) {
   for (size_t i = 0; i < a.meshes.size(); ++i) {
     const Mesh &m = a.meshes[i], &n = b.meshes[i];
     EXPECT_EQ(m.name, n.name);
-    expectSameBytes(m.positions, n.positions, "positions");
-    expectSameBytes(m.normals, n.normals, "normals");
-    expectSameBytes(m.uvs, n.uvs, "uvs");
-    expectSameBytes(m.tangents, n.tangents, "tangents");
-    EXPECT_EQ(m.indices, n.indices);
-    EXPECT_EQ(m.triangleMaterials, n.triangleMaterials);
+#define CANDELA_EXPECT_SAME_MESH_ARRAY(Type, member, upload, count, description) \
+  expectSameBytes(m.member, n.member, #member);
+    CANDELA_MESH_ARRAYS(CANDELA_EXPECT_SAME_MESH_ARRAY)
+#undef CANDELA_EXPECT_SAME_MESH_ARRAY
   }
   expectSameBytes(a.instances, b.instances, "instances");
   expectSameBytes(a.materials, b.materials, "materials");
@@ -97,6 +96,7 @@ Scene richScene() {
     m.normals = {{0, 0, 1}, {0, 0, 1}, {0, 1, 0}, {1, 0, 0}};
     if (k == 0) m.uvs = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
     if (k == 0) m.tangents = {{1, 0, 0, 1}, {1, 0, 0, -1}, {1, 0, 0, 1}, {1, 0, 0, 1}};
+    if (k == 1) m.colors = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}};
     m.indices = {0, 1, 2, 1, 3, 2};
     m.triangleMaterials = {uint32_t(k), 1};
     s.meshes.push_back(m);
@@ -429,6 +429,7 @@ TEST(SceneCache, HandBuiltCachesWithInvalidScenesAreRefused) {
       {"infinite environment rotation", [](Scene& s) { s.environment.rotationDegrees = INFINITY; }},
       {"NaN normal", [&](Scene& s) { s.meshes[1].normals[2].z = nan; }},
       {"NaN texture coordinate", [&](Scene& s) { s.meshes[0].uvs[3].x = nan; }},
+      {"NaN colour", [&](Scene& s) { s.meshes[1].colors[0].y = nan; }},
       {"NaN instance transform", [&](Scene& s) { s.instances[1].objectToWorld.m[7] = nan; }},
       {"material id past the materials", [](Scene& s) { s.meshes[0].triangleMaterials[1] = 2; }},
       {"index past the vertices", [](Scene& s) { s.meshes[1].indices[4] = 4; }},

@@ -1,53 +1,63 @@
 #include "backends/optix/device_scene.h"
 
 #include <stdexcept>
+#include <string>
 
 namespace candela::optix {
 
 void DeviceScene::upload(const FlatScene& flat) {
-  buffers_.clear();
   textures_ = DeviceTextures();
-  view_ = flat.hostView();  // scalars and counts; the pointers are replaced below, one line per array
-  view_.positions = copy(buffers_, flat.positions, "vertex positions");
-  view_.normals = copy(buffers_, flat.normals, "vertex normals");
-  view_.uvs = copy(buffers_, flat.uvs, "texture coordinates");
-  view_.tangents = copy(buffers_, flat.tangents, "vertex tangents");
-  view_.colors = flat.colors.empty() ? nullptr : copy(buffers_, flat.colors, "vertex colours");
-  view_.indices = copy(buffers_, flat.indices, "triangle indices");
-  view_.triangleMaterials = copy(buffers_, flat.triangleMaterials, "triangle materials");
-  view_.meshes = copy(buffers_, flat.meshes, "mesh records");
-  materials_ = DeviceBuffer::fromVector(flat.materials, "materials");
-  view_.materials = materials_.as<const Material>();
+  textureViews_ = DeviceBuffer();
+  view_ = flat.hostView();  // scalars and counts; every pointer is replaced below
+  uploadArrays(flat, SceneArrayUpload::WithScene);
+  uploadArrays(flat, SceneArrayUpload::WithMaterials);
   // Every texture with texels is sampled through a texture object, so the texel arrays stay on the host.
   textures_ = DeviceTextures(flat.textures, flat.texelBytes, flat.texelFloats);
-  view_.texels.textures = copy(buffers_, textures_.views(), "texture descriptions");
+  textureViews_ = DeviceBuffer::fromVector(textures_.views(), "texture descriptions");
+  view_.texels.textures = textureViews_.as<const TextureView>();
   view_.texels.texelBytes = nullptr;
   view_.texels.texelFloats = nullptr;
   updateInstances(flat);
   updateEnvironment(flat);
 }
 
+void DeviceScene::uploadArrays(const FlatScene& flat, SceneArrayUpload when) {
+  // The old copies go first, so that the new ones need no more device memory than they take.
+#define CANDELA_RELEASE_DEVICE_ARRAY(Type, member, uploaded, count, description) \
+  if (SceneArrayUpload::uploaded == when) member##_ = DeviceBuffer();
+  CANDELA_SCENE_ARRAYS(CANDELA_RELEASE_DEVICE_ARRAY)
+#undef CANDELA_RELEASE_DEVICE_ARRAY
+#define CANDELA_UPLOAD_DEVICE_ARRAY(Type, member, uploaded, count, description)            \
+  if (SceneArrayUpload::uploaded == when) {                                                \
+    member##_ = DeviceBuffer::fromVector(flat.member, description);                        \
+    view_.member = member##_.as<const Type>();                                             \
+    setSceneArrayCount(view_, CANDELA_SCENE_ARRAY_COUNT_FIELD(count), flat.member.size()); \
+  }
+  CANDELA_SCENE_ARRAYS(CANDELA_UPLOAD_DEVICE_ARRAY)
+#undef CANDELA_UPLOAD_DEVICE_ARRAY
+}
+
 void DeviceScene::updateInstances(const FlatScene& flat) {
-  posed_.clear();
-  view_.instances = copy(posed_, flat.instances, "instance records");
-  view_.lights = copy(posed_, flat.lights, "the light table");
-  view_.lightCount = uint32_t(flat.lights.size());
-  view_.lightCdf = copy(posed_, flat.lightCdf, "the light distribution");
+  uploadArrays(flat, SceneArrayUpload::WithInstances);
   view_.inverseLightPower = flat.inverseLightPower;
-  view_.lightBvh = copy(posed_, flat.lightBvh, "the light BVH");
-  view_.lightBitTrails = copy(posed_, flat.lightBitTrails, "the light BVH's bit trails");
   view_.environmentSelectProbability = flat.environmentSelectProbability;
   view_.directionalSelectProbability = flat.directionalSelectProbability;
   view_.boundedSelectProbability = flat.boundedSelectProbability;
-  view_.punctualLights = copy(posed_, flat.punctualLights, "the punctual lights");
-  view_.punctualLightCount = uint32_t(flat.punctualLights.size());
   view_.boundedPunctualLightCount = flat.boundedPunctualLightCount;
 }
 
 void DeviceScene::updateMaterials(const FlatScene& flat) {
-  if (flat.materials.size() * sizeof(Material) != materials_.size())
-    throw std::logic_error("DeviceScene::updateMaterials with a different number of materials");
-  materials_.upload(flat.materials.data(), materials_.size());
+#define CANDELA_CHECK_DEVICE_ARRAY_SIZE(Type, member, uploaded, count, description) \
+  if (SceneArrayUpload::uploaded == SceneArrayUpload::WithMaterials &&              \
+      flat.member.size() * sizeof(Type) != member##_.size())                        \
+    throw std::logic_error(std::string("DeviceScene::updateMaterials with a different number of ") + description);
+  CANDELA_SCENE_ARRAYS(CANDELA_CHECK_DEVICE_ARRAY_SIZE)
+#undef CANDELA_CHECK_DEVICE_ARRAY_SIZE
+#define CANDELA_COPY_DEVICE_ARRAY_IN_PLACE(Type, member, uploaded, count, description) \
+  if (SceneArrayUpload::uploaded == SceneArrayUpload::WithMaterials)                   \
+    member##_.upload(flat.member.data(), member##_.size());
+  CANDELA_SCENE_ARRAYS(CANDELA_COPY_DEVICE_ARRAY_IN_PLACE)
+#undef CANDELA_COPY_DEVICE_ARRAY_IN_PLACE
   view_.hasCutouts = flat.hasCutouts ? 1u : 0u;
 }
 
@@ -70,10 +80,11 @@ void DeviceScene::updateEnvironment(const FlatScene& flat) {
 }
 
 size_t DeviceScene::deviceBytes() const {
-  size_t total = materials_.size() + textures_.deviceBytes();
-  for (const DeviceBuffer& b : buffers_) total += b.size();
+  size_t total = textureViews_.size() + textures_.deviceBytes();
+#define CANDELA_ADD_DEVICE_ARRAY_BYTES(Type, member, uploaded, count, description) total += member##_.size();
+  CANDELA_SCENE_ARRAYS(CANDELA_ADD_DEVICE_ARRAY_BYTES)
+#undef CANDELA_ADD_DEVICE_ARRAY_BYTES
   for (const DeviceBuffer& b : environment_) total += b.size();
-  for (const DeviceBuffer& b : posed_) total += b.size();
   return total;
 }
 

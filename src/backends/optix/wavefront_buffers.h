@@ -11,8 +11,8 @@ struct alignas(16) Words4 {
   uint32_t x, y, z, w;
 };
 
-// The planes of a path's state (PathState and the sampler's next dimension, kernel/path_vertex.h):
-// radiance + rays, beta + etaScale, lastScatter + bsdfPdf, lastNormal + depth, cone + dimension + specularBounce.
+// The planes of a path's state (PathState and the sampler's next dimension): which member each word holds is
+// declared in backends/optix/wavefront_path_planes.h, which checks this count against it.
 constexpr uint32_t kPathPlanes = 5;
 // A queued radiance ray: origin + tMax, direction + path; its pass-through bits in a plane of their own.
 constexpr uint32_t kRayPlanes = 2;

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "kernel/scene_arrays.h"
+
 namespace candela {
 
 namespace {
@@ -13,6 +15,7 @@ namespace {
 [[noreturn]] void fail(const std::string& what) { throw std::runtime_error(what); }
 
 bool finite(float x) { return std::isfinite(x); }
+bool finite(uint32_t) { return true; }
 bool finite(Vec2 v) { return finite(v.x) && finite(v.y); }
 bool finite(Vec3 v) { return finite(v.x) && finite(v.y) && finite(v.z); }
 bool finite(Vec4 v) { return finite(v.x) && finite(v.y) && finite(v.z) && finite(v.w); }
@@ -52,10 +55,14 @@ void checkTexture(const Texture& t) {
   if (!allFinite(t.floats)) fail(name + " has non-finite values");
 }
 
+// Every per-mesh array of kernel/scene_arrays.h; validateScene has checked the indices' ranges.
 void checkMeshes(const Scene& scene) {
-  for (const Mesh& m : scene.meshes)
-    if (!allFinite(m.normals) || !allFinite(m.uvs) || !allFinite(m.tangents) || !allFinite(m.colors))
-      fail("mesh '" + m.name + "' has non-finite normals, texture coordinates, tangents or colours");
+  for (const Mesh& m : scene.meshes) {
+#define CANDELA_CHECK_MESH_ARRAY(Type, member, upload, count, description) \
+  if (!allFinite(m.member)) fail("mesh '" + m.name + "' has non-finite " + description);
+    CANDELA_MESH_ARRAYS(CANDELA_CHECK_MESH_ARRAY)
+#undef CANDELA_CHECK_MESH_ARRAY
+  }
   for (const Instance& instance : scene.instances)
     if (!finite(instance.objectToWorld)) fail("an instance has a non-finite transform");
 }

@@ -1,8 +1,19 @@
 #include "scene/cache/scene_serialization.h"
 
+#include <type_traits>
+
+#include "kernel/scene_arrays.h"
+
 namespace candela {
 
 namespace {
+
+// The per-mesh arrays of kernel/scene_arrays.h, which a mesh's record holds after its name, are Mesh's members.
+#define CANDELA_CHECK_MESH_MEMBER(Type, member, upload, count, description) \
+  static_assert(std::is_same_v<decltype(Mesh::member), std::vector<Type>>,  \
+                "Mesh::" #member " must be the std::vector<" #Type "> that kernel/scene_arrays.h lists");
+CANDELA_MESH_ARRAYS(CANDELA_CHECK_MESH_MEMBER)
+#undef CANDELA_CHECK_MESH_MEMBER
 
 static_assert(std::is_trivially_copyable_v<Material> && std::is_trivially_copyable_v<Instance> &&
               std::is_trivially_copyable_v<CameraDescription> && std::is_trivially_copyable_v<AnimationNode> &&
@@ -55,7 +66,7 @@ void readOptional(BinaryReader& in, std::optional<T>& v) {
 
 // The least a mesh, a texture, a string, an animation clip, channel, skin or mesh deformation takes in the file,
 // for checking counts before allocating.
-constexpr uint64_t kMeshBytes = 8 * sizeof(uint64_t);
+constexpr uint64_t kMeshBytes = (1 CANDELA_MESH_ARRAYS(CANDELA_SCENE_ARRAY_ONE)) * sizeof(uint64_t);
 constexpr uint64_t kTextureBytes = 3 * sizeof(uint64_t);
 constexpr uint64_t kStringBytes = sizeof(uint64_t);
 constexpr uint64_t kClipBytes = 2 * sizeof(uint64_t) + 2 * sizeof(float);
@@ -158,13 +169,9 @@ void writeScene(BinaryWriter& out, const Scene& s) {
   out.value(uint64_t(s.meshes.size()));
   for (const Mesh& m : s.meshes) {
     out.string(m.name);
-    out.array(m.positions);
-    out.array(m.normals);
-    out.array(m.uvs);
-    out.array(m.tangents);
-    out.array(m.colors);
-    out.array(m.indices);
-    out.array(m.triangleMaterials);
+#define CANDELA_WRITE_MESH_ARRAY(Type, member, upload, count, description) out.array(m.member);
+    CANDELA_MESH_ARRAYS(CANDELA_WRITE_MESH_ARRAY)
+#undef CANDELA_WRITE_MESH_ARRAY
   }
   out.array(s.instances);
   out.array(s.materials);
@@ -200,13 +207,9 @@ bool readScene(BinaryReader& in, Scene& s) {
   s.meshes.resize(size_t(in.count(kMeshBytes)));
   for (Mesh& m : s.meshes) {
     in.string(m.name);
-    in.array(m.positions);
-    in.array(m.normals);
-    in.array(m.uvs);
-    in.array(m.tangents);
-    in.array(m.colors);
-    in.array(m.indices);
-    in.array(m.triangleMaterials);
+#define CANDELA_READ_MESH_ARRAY(Type, member, upload, count, description) in.array(m.member);
+    CANDELA_MESH_ARRAYS(CANDELA_READ_MESH_ARRAY)
+#undef CANDELA_READ_MESH_ARRAY
   }
   in.array(s.instances);
   in.array(s.materials);

@@ -5,6 +5,7 @@
 // their ends instead; a last launch adds the paths to the film. The queue launches may have more threads than their
 // queue has entries (the host learns a queue's length a bounce late): threads beyond its length return at once.
 // Only programs.cu includes this, after the launch parameters and the helpers it defines.
+#include "backends/optix/wavefront_path_planes.h"
 
 namespace {
 
@@ -41,37 +42,32 @@ __device__ PathSampler pathSampler(uint32_t path) {
                      params.settings.sampler);
 }
 
+// The path's state and its sampler's next dimension, from every plane.
 __device__ PathState loadPath(const WavefrontBuffers& w, uint32_t path, uint32_t& dimension) {
   const uint32_t n = w.slots;
-  const Words4 a = w.paths[path], b = w.paths[n + path], c = w.paths[2 * n + path], d = w.paths[3 * n + path],
-               e = w.paths[4 * n + path];
-  PathState s;
-  s.radiance = {real(a.x), real(a.y), real(a.z)};
-  s.rays = a.w;
-  s.beta = {real(b.x), real(b.y), real(b.z)};
-  s.etaScale = real(b.w);
-  s.lastScatter = {real(c.x), real(c.y), real(c.z)};
-  s.bsdfPdf = real(c.w);
-  s.lastNormal = {real(d.x), real(d.y), real(d.z)};
-  s.depth = d.w;
-  s.cone = {real(e.x), real(e.y)};
-  dimension = e.z;
-  s.specularBounce = e.w;
-  return s;
+  WavefrontPath p;
+#pragma unroll
+  for (uint32_t plane = 0; plane < kPathPlanes; ++plane) unpackPathPlane(w.paths[plane * n + path], plane, p);
+  dimension = p.dimension;
+  return p.state;
 }
 
-// The plane the last launch reads (radiance and rays), which is all of a path that has ended.
+// The plane the last launch reads (radiance and rays), which is all of a path that has ended. The trace launch adds
+// the light of shadow rays to the radiance in its words x, y and z.
+static_assert(packedAt(offsetof(WavefrontPath, state.radiance.x), kPathResultPlane, 0) &&
+                  packedAt(offsetof(WavefrontPath, state.radiance.y), kPathResultPlane, 1) &&
+                  packedAt(offsetof(WavefrontPath, state.radiance.z), kPathResultPlane, 2) &&
+                  packedIn(offsetof(WavefrontPath, state.rays), kPathResultPlane),
+              "the result plane holds the radiance in words x, y and z, and the ray count");
 __device__ void storePathResult(const WavefrontBuffers& w, uint32_t path, const PathState& s) {
-  w.paths[path] = {word(s.radiance.x), word(s.radiance.y), word(s.radiance.z), s.rays};
+  w.paths[kPathResultPlane * w.slots + path] = packPathPlane({s, 0u}, kPathResultPlane);
 }
 
 __device__ void storePath(const WavefrontBuffers& w, uint32_t path, const PathState& s, uint32_t dimension) {
   const uint32_t n = w.slots;
-  storePathResult(w, path, s);
-  w.paths[n + path] = {word(s.beta.x), word(s.beta.y), word(s.beta.z), word(s.etaScale)};
-  w.paths[2 * n + path] = {word(s.lastScatter.x), word(s.lastScatter.y), word(s.lastScatter.z), word(s.bsdfPdf)};
-  w.paths[3 * n + path] = {word(s.lastNormal.x), word(s.lastNormal.y), word(s.lastNormal.z), s.depth};
-  w.paths[4 * n + path] = {word(s.cone.width), word(s.cone.spread), dimension, s.specularBounce};
+  const WavefrontPath p{s, dimension};
+#pragma unroll
+  for (uint32_t plane = 0; plane < kPathPlanes; ++plane) w.paths[plane * n + path] = packPathPlane(p, plane);
 }
 
 // A ray and its path in two planes of words (radiance and shadow queues alike): origin + tMax, direction + path.
@@ -161,7 +157,7 @@ extern "C" __global__ void __raygen__pathTrace() {
       const Ray ray = loadRayWords(w.shadows, w.slots, slot, path);
       const Words4 c = w.shadows[2 * w.slots + slot];
       if (!sceneTracer().occluded(ray, c.w)) {
-        Words4& radiance = w.paths[path];
+        Words4& radiance = w.paths[kPathResultPlane * w.slots + path];
         radiance.x = word(real(radiance.x) + real(c.x));
         radiance.y = word(real(radiance.y) + real(c.y));
         radiance.z = word(real(radiance.z) + real(c.z));
@@ -241,12 +237,13 @@ extern "C" __global__ void __raygen__pathTail() {
 extern "C" __global__ void __raygen__pathFinish() {
   const uint32_t pixel = launchPixel();
   const uint32_t path = pixel - params.firstRow * params.settings.width;
-  const Words4 r = params.wavefront.paths[path];
+  WavefrontPath ended;
+  unpackPathPlane(params.wavefront.paths[kPathResultPlane * params.wavefront.slots + path], kPathResultPlane, ended);
   const PixelTally tally = accumulatePixel<false>(params.film, pixel, params.firstSample, 1, [&](uint32_t) {
     PathResult result = droppedSample();
-    if (r.w != 0u) {  // rays traced: not a dropped camera ray
-      result.radiance = {real(r.x), real(r.y), real(r.z)};
-      result.rays = r.w;
+    if (ended.state.rays != 0u) {  // rays traced: not a dropped camera ray
+      result.radiance = ended.state.radiance;
+      result.rays = ended.state.rays;
     }
     return result;
   });
