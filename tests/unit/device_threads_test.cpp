@@ -59,6 +59,28 @@ TEST(DeviceThreads, RethrowsTheLowestDevicesExceptionAfterAllReturned) {
   EXPECT_EQ(calls.load(), 3);
 }
 
+// As the backends use it: plain memory written before run() is seen by every device's task, and what the tasks
+// write is seen by the caller after it (under ThreadSanitizer, a missing ordering is reported here).
+TEST(DeviceThreads, TasksSeeTheCallersDataAndTheCallerSeesTheirs) {
+  DeviceThreads threads(4);
+  std::vector<uint64_t> input(4), output(4);
+  for (uint64_t round = 1; round <= 50; ++round) {
+    for (size_t i = 0; i < 4; ++i) input[i] = round * 10 + i;
+    threads.run([&](size_t i) { output[i] = input[i] * 2; });
+    for (size_t i = 0; i < 4; ++i) ASSERT_EQ(output[i], (round * 10 + i) * 2);
+  }
+}
+
+TEST(DeviceThreads, StopsCleanlyWhetherItRanOrNot) {
+  for (int i = 0; i < 50; ++i) {
+    DeviceThreads threads(4);  // destroyed at once, maybe before its workers wait for work
+    if (i % 2 == 0) continue;
+    std::atomic<int> calls{0};
+    threads.run([&](size_t) { ++calls; });
+    EXPECT_EQ(calls.load(), 4);
+  }
+}
+
 TEST(DeviceThreads, OneDeviceRunsOnTheCallingThreadAlone) {
   DeviceThreads threads(1);
   std::thread::id id;

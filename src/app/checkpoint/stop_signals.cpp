@@ -1,5 +1,6 @@
 #include "app/checkpoint/stop_signals.h"
 
+#include <atomic>
 #include <csignal>
 
 #include "io/atomic_file.h"
@@ -8,7 +9,11 @@ namespace candela {
 
 namespace {
 
-volatile std::sig_atomic_t stopSignal = 0;
+// Atomic, not a volatile sig_atomic_t: a process's signal may be handled on any of its threads that does not block
+// it (Linux prefers the main thread, but not always), a TBB worker as well as the thread that renders and reads
+// it; for a plain variable that is a data race.
+std::atomic<int> stopSignal{0};
+static_assert(std::atomic<int>::is_always_lock_free, "the signal handler sets it");
 constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGUSR1};
 struct sigaction previous[3];
 
@@ -42,7 +47,8 @@ StopOnSignals::~StopOnSignals() {
 int StopOnSignals::requested() { return stopSignal; }
 
 void StopOnSignals::forward(int signal) {
-  if (stopSignal == 0) stopSignal = signal;
+  int none = 0;
+  stopSignal.compare_exchange_strong(none, signal);  // a signal that came here meanwhile stays
 }
 
 void StopOnSignals::endWithRequestedSignal() {
