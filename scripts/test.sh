@@ -3,6 +3,9 @@
 #   test-release.sh     the Release build in ./build with warnings as errors, and the whole test suite
 #   test-sanitized.sh   a second build in ./build-sanitize with AddressSanitizer + UndefinedBehaviorSanitizer,
 #                       and the test suite there
+#   test-thread-sanitized.sh
+#                       a third build in ./build-tsan with ThreadSanitizer, of what the tests of the threaded
+#                       parts need (device threads, stop signals, candela serve's hub and server), and those tests
 #   check-format.sh     every C++ file as .clang-format says (scripts/format.sh applies it)
 # Both test suites replay every fuzz seed and regression input (tests/fuzz). Stops at the first stage that fails.
 set -euo pipefail
@@ -10,4 +13,5 @@ cd "$(dirname "$0")/.."
 ./scripts/install-dependencies.sh
 ./scripts/test-release.sh
 ./scripts/test-sanitized.sh
+./scripts/test-thread-sanitized.sh
 ./scripts/check-format.sh
