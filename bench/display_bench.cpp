@@ -111,7 +111,8 @@ int main(int argc, char** argv) {
 #if CANDELA_HAS_SERVE
       DisplayImage image;
       const Timing servePost = medianTiming(repeats, [&] {
-        image = displayImage(atrous ? backend->filters().atrous(AtrousParams{}) : backend->readImage(), PostSettings());
+        image =
+            displayImage(atrous ? backend->filters().atrous(AtrousParams{}) : backend->readImage(), DisplaySettings());
       });
       size_t jpegBytes = 0;
       const Timing serveEncode = medianTiming(repeats, [&] { jpegBytes = encodeJpeg(image, quality).size(); });
