@@ -151,7 +151,7 @@ std::vector<std::string> request(uint16_t port) {
 TEST(ServeNetwork, ManyClientsAtOnceThenSigtermEndsTheServerCleanly) {
   ServeProcess server(
       CANDELA_EXECUTABLE,
-      {"cornell-box", "--backend", "cpu", "--port", "0", "--width", "32", "--height", "24", "--max-depth", "4"}, 120.0);
+      {"cornell-box", "--backend", "cpu", "--port", "0", "--width", "64", "--height", "64", "--max-depth", "4"}, 120.0);
   std::vector<std::vector<std::string>> problems(kBrowsers + kRequesters);
   bool timedOut = false;
   {

@@ -42,7 +42,7 @@ const std::vector<ListedChannel>& listedChannels() {
 // Whether two vectors hold the same bytes (Vec3 has no ==).
 template <class T>
 bool sameValues(const std::vector<T>& a, const std::vector<T>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
 }
 
 // A film whose every value differs from every other: finite sums, counts within [0, 1000).
