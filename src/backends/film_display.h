@@ -36,10 +36,15 @@ struct TemporalFiltered {
 };
 using DisplaySource = std::variant<AccumulatedImage, AtrousFiltered, BilateralFiltered, TemporalFiltered>;
 
+// The linear image `source` gives on the host, through the backend's readImage() or filters(): what a display
+// frame of it shows before tone mapping.
+Image displaySourceImage(const Backend& backend, const DisplaySource& source);
+
 struct DisplayRequest {
   DisplaySource source;
-  // The viewer's bilateral display pass (PostSettings::bilateral): the image bilateral filter
-  // (image/filters/bilateral.h, which does not keep the emission apart) on the source's image, before tone mapping.
+  // The front ends' bilateral display pass (PostSettings::bilateral) on the source's image, before tone mapping:
+  // the bilateral filter (image/filters/bilateral.h) with the emission the camera sees kept apart, where the backend
+  // records it (its AOVs are on), else on the whole image.
   std::optional<BilateralParams> smoothing;
   DisplaySettings display;
   uint32_t divisor = 1;  // see displaySize

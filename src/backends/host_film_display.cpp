@@ -15,8 +15,9 @@ double millisecondsSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// The image the request's source gives, through the backend's filters.
-Image sourceImage(const Backend& backend, const DisplaySource& source) {
+}  // namespace
+
+Image displaySourceImage(const Backend& backend, const DisplaySource& source) {
   struct Visitor {
     const Backend& backend;
     Image operator()(const AccumulatedImage&) const { return backend.readImage(); }
@@ -30,8 +31,6 @@ Image sourceImage(const Backend& backend, const DisplaySource& source) {
   return std::visit(Visitor{backend}, source);
 }
 
-}  // namespace
-
 DisplayFrame HostFilmDisplay::read(const DisplayRequest& request) const {
   const Clock::time_point start = Clock::now();
   DisplayFrame frame;
@@ -40,8 +39,10 @@ DisplayFrame HostFilmDisplay::read(const DisplayRequest& request) const {
   if (film_ && std::holds_alternative<AccumulatedImage>(request.source) && !request.smoothing) {
     source = {film_->radiance.data(), film_->samples.data(), film_->width, film_->height};
   } else {
-    image = sourceImage(backend_, request.source);
-    if (request.smoothing) image = bilateralFilter(image, *request.smoothing);
+    image = displaySourceImage(backend_, request.source);
+    if (request.smoothing)
+      image = backend_.aovsEnabled() ? bilateralFilter(image, backend_.readEmission(), *request.smoothing)
+                                     : bilateralFilter(image, *request.smoothing);
     if (!std::holds_alternative<AccumulatedImage>(request.source) || request.smoothing)
       frame.filterMilliseconds = millisecondsSince(start);
     source = {image.pixels.data(), nullptr, image.width, image.height};

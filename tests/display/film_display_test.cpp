@@ -82,14 +82,24 @@ TEST_F(CpuFilmDisplay, ThroughTheFilters) {
   }
 }
 
+// The smoothing pass keeps the emission the camera sees (the Cornell box's light) out of the filter, as the
+// viewer's display pass does, where the film records it; without the AOVs it filters the whole image.
 TEST_F(CpuFilmDisplay, WithTheSmoothingPass) {
   DisplayRequest request;
   request.smoothing = BilateralParams{};
   request.divisor = 2;
-  EXPECT_EQ(bytes(request), bytesOf(bilateralFilter(backend_.readImage(), BilateralParams{}), request.display, 2));
+  const Image emission = backend_.readEmission();
+  EXPECT_EQ(bytes(request),
+            bytesOf(bilateralFilter(backend_.readImage(), emission, BilateralParams{}), request.display, 2));
+  EXPECT_NE(bytes(request), bytesOf(bilateralFilter(backend_.readImage(), BilateralParams{}), request.display, 2));
   request.source = AtrousFiltered{AtrousParams{}};
   EXPECT_EQ(bytes(request),
-            bytesOf(bilateralFilter(backend_.filters().atrous(AtrousParams{}), BilateralParams{}), request.display, 2));
+            bytesOf(bilateralFilter(backend_.filters().atrous(AtrousParams{}), emission, BilateralParams{}),
+                    request.display, 2));
+  backend_.setAovsEnabled(false);
+  backend_.render(2);
+  request.source = AccumulatedImage{};
+  EXPECT_EQ(bytes(request), bytesOf(bilateralFilter(backend_.readImage(), BilateralParams{}), request.display, 2));
 }
 
 // A frame's pixels outlive the next read, so that one frame can be encoded while the next is made.

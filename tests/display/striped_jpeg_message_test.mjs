@@ -1,9 +1,9 @@
 // node striped_jpeg_message_test.mjs <message file> <width> <height> <stripes>: unpacks a message that
-// write_striped_jpeg packed with the page's module (tests/serve/striped_jpeg.mjs) and checks that its stripes tile
+// write_striped_jpeg packed with the page's module (tes../../src/app/serve/web/striped_jpeg.mjs) and checks that its stripes tile
 // the frame and that each is a whole JPEG file of the frame's width and the stripe's rows.
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import { unpackStripedJpeg } from '../serve/striped_jpeg.mjs';
+import { unpackStripedJpeg } from '../../src/app/serve/web/striped_jpeg.mjs';
 
 const [file, width, height, stripeCount] = process.argv.slice(2);
 const bytes = readFileSync(file);

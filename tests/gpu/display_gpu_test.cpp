@@ -107,16 +107,19 @@ TEST_F(OptixDisplay, ThroughTheCudaFiltersAreTheCpuFramesOfTheirOutput) {
   }
 }
 
-// The smoothing pass is the CUDA bilateral filter, which gives the CPU filter's image (filters_gpu_test.cpp).
+// The smoothing pass is the CUDA bilateral filter, which gives the CPU filter's image (filters_gpu_test.cpp), with
+// the film's emission kept apart.
 TEST_F(OptixDisplay, WithTheSmoothingPassAreTheCpuFramesOfTheSmoothedImage) {
   DisplayRequest request;
   request.smoothing = BilateralParams{};
+  const Image emission = gpu_->readEmission();
   expectSameBytes(bytesOf(gpu_->display().read(request)),
-                  cpuBytes(bilateralFilter(gpu_->readImage(), BilateralParams{}), request.display, 1), "smoothed film");
+                  cpuBytes(bilateralFilter(gpu_->readImage(), emission, BilateralParams{}), request.display, 1),
+                  "smoothed film");
   request.source = AtrousFiltered{AtrousParams{}};
   expectSameBytes(bytesOf(gpu_->display().read(request)),
-                  cpuBytes(bilateralFilter(gpu_->filters().atrous(AtrousParams{}), BilateralParams{}), request.display,
-                           1),
+                  cpuBytes(bilateralFilter(gpu_->filters().atrous(AtrousParams{}), emission, BilateralParams{}),
+                           request.display, 1),
                   "smoothed a-trous");
 }
 

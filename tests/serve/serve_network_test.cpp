@@ -13,6 +13,7 @@
 #include <thread>
 #include <vector>
 
+#include "io/images/striped_jpeg.h"
 #include "network_clients.h"
 #include "serve_process.h"
 
@@ -83,6 +84,19 @@ void steer(WebSocketClient& ws, int frame) {
   }
 }
 
+// A frame's payload: JPEG stripes (io/images/striped_jpeg.h) of the size its header gives.
+bool isStripedJpeg(const std::string& payload, const nlohmann::json& header) {
+  try {
+    const StripedJpeg frame = unpackStripedJpeg(payload);
+    for (const JpegStripe& stripe : frame.stripes)
+      if (stripe.bytes.size() < 2 || uint8_t(stripe.bytes[0]) != 0xff || uint8_t(stripe.bytes[1]) != 0xd8) return false;
+    return frame.width == header.at("width").get<uint32_t>() && frame.height == header.at("height").get<uint32_t>() &&
+           frame.stripes.size() == header.at("stripes").get<size_t>();
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
 // One browser's visits, one after the other; returns what went wrong.
 std::vector<std::string> browse(uint16_t port, int browser) {
   std::vector<std::string> problems;
@@ -105,8 +119,7 @@ std::vector<std::string> browse(uint16_t port, int browser) {
         const uint64_t number = header.at("frame").get<uint64_t>();
         if (number <= last)
           problems.push_back(who + "frame " + std::to_string(number) + " after " + std::to_string(last));
-        if (m.payload.size() < 2 || uint8_t(m.payload[0]) != 0xff || uint8_t(m.payload[1]) != 0xd8)
-          problems.push_back(who + "a frame that is no JPEG");
+        if (!isStripedJpeg(m.payload, header)) problems.push_back(who + "a frame that is no striped JPEG of its size");
         last = number;
         steer(ws, ++frames);
         ws.send(R"({"type":"frame_ack","frame":)" + std::to_string(number) + "}");

@@ -1,9 +1,12 @@
 #pragma once
+#include <cstdint>
 #include <optional>
+#include <vector>
 
 #include "app/interactive/post_settings.h"
 #include "app/interactive/render_session.h"
 #include "app/interactive/viewer_denoiser.h"
+#include "backends/film_display.h"
 
 namespace candela {
 
@@ -27,12 +30,18 @@ class FrameImages {
   const Image* emission();
   // image() through the bilateral filter on the host, emission() kept apart (postFiltered); image() while it is off.
   const Image& filtered();
+  // filtered() tone mapped to 8-bit sRGB pixels (backends/film_display.h), made where the film is: on a GPU the
+  // filters and the tone mapping run there and only the bytes come back. The OptiX AI denoiser's image is made on
+  // the host (filtered()) and tone mapped there. The pixels last as long as this object and the backend's next
+  // display read.
+  DisplayFrame display();
 
  private:
   const RenderSession& session_;
   ViewerDenoiser& denoiser_;
   const PostSettings& post_;
   std::optional<Image> image_, emission_, filtered_;
+  std::vector<uint8_t> hostPixels_;  // display()'s pixels where they are made on the host
 };
 
 }  // namespace candela

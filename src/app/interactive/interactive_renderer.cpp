@@ -106,7 +106,9 @@ FrameOutcome InteractiveRenderer::step(const FrameRequest& request, FrontEnd& fr
   prepareDenoiser(frontEnd);
   // The bilateral filter keeps the emission apart, which the backend records with the AOVs.
   session_.setAovsEnabled(controls_.post.denoiser != DenoiserChoice::None || controls_.post.bilateral);
+  const auto renderStart = std::chrono::steady_clock::now();
   session_.renderFrame(camera, settings, outcome.plan.samplesPerPixel, controls_.accumulate);
+  outcome.renderSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - renderStart).count();
   FrameImages images(session_, denoiser_, controls_.post);
   frontEnd.present(images);
   outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

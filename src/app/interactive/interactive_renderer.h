@@ -16,7 +16,8 @@ namespace candela {
 // What one frame did.
 struct FrameOutcome {
   FramePlan plan;
-  double seconds = 0.0;  // rendering, denoising, post-processing and presenting: the cost the plans are made with
+  double seconds = 0.0;        // rendering, denoising, post-processing and presenting: the cost the plans are made with
+  double renderSeconds = 0.0;  // of those, the backend's render of the frame's samples
 };
 
 // The interactive path tracer that candela view and candela serve share: the backend's session, the scene and its

@@ -45,7 +45,7 @@ std::string ViewerDenoiser::prepareOrTurnOff(DenoiserChoice& choice) {
 Image ViewerDenoiser::apply(const RenderSession& session, DenoiserChoice choice, const AtrousParams& atrousParams) {
   switch (choice) {
     case DenoiserChoice::None: return session.image();
-    case DenoiserChoice::Atrous: return atrous(session, atrousParams);
+    case DenoiserChoice::Atrous: return displaySourceImage(session.backend(), atrousSource(session, atrousParams));
     case DenoiserChoice::Optix:
       if (!optix_) throw std::logic_error("the OptiX AI denoiser was not prepared");
       return optix_(session.image(), session.backend().readAovs());
@@ -55,12 +55,12 @@ Image ViewerDenoiser::apply(const RenderSession& session, DenoiserChoice choice,
   throw std::logic_error("unknown denoiser");
 }
 
-Image ViewerDenoiser::atrous(const RenderSession& session, const AtrousParams& params) {
+DisplaySource ViewerDenoiser::atrousSource(const RenderSession& session, const AtrousParams& params) {
   const bool restarted = haveFrame_ && session.restarts() != lastRestarts_;
   haveFrame_ = true;
   lastRestarts_ = session.restarts();
   temporalActive_ = restarted || (temporalActive_ && session.accumulatedSamples() < kTemporalSamples);
-  if (!temporalActive_) return session.atrousImage(params);
+  if (!temporalActive_) return AtrousFiltered{params};
   TemporalParams temporalParams;
   temporalParams.atrous = params;
   temporalParams.maxHistory = float(kTemporalSamples);
@@ -68,7 +68,7 @@ Image ViewerDenoiser::atrous(const RenderSession& session, const AtrousParams& p
     temporal_ = session.backend().filters().temporal(temporalParams);
     temporalBackend_ = &session.backend();
   }
-  return temporal_->denoise(session.camera(), /*filmContinues=*/!restarted);
+  return TemporalFiltered{temporal_.get(), session.camera(), /*filmContinues=*/!restarted};
 }
 
 }  // namespace candela

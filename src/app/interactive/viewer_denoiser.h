@@ -5,6 +5,7 @@
 
 #include "app/interactive/post_settings.h"
 #include "app/interactive/render_session.h"
+#include "backends/film_display.h"
 #include "backends/film_filters.h"
 
 namespace candela {
@@ -30,14 +31,16 @@ class ViewerDenoiser {
   // they converge, so the image sharpens when the camera stops.
   Image apply(const RenderSession& session, DenoiserChoice choice, const AtrousParams& atrousParams);
 
+  // What the a-trous choice shows of the film this frame, for Backend::display (backends/film_display.h): the
+  // temporal or the spatial filter, by the rule of apply(), whose history and state it advances as apply() does.
+  DisplaySource atrousSource(const RenderSession& session, const AtrousParams& params);
+
   // Samples after which a film that stands still is filtered spatially again: the temporal history counts as at most
   // this many (TemporalParams::maxHistory).
   static constexpr uint32_t kTemporalSamples = 16;
   bool temporalActive() const { return temporalActive_; }
 
  private:
-  Image atrous(const RenderSession& session, const AtrousParams& params);
-
   std::function<Image(const Image&, const AovImages&)> optix_;
   std::unique_ptr<TemporalDenoiser> temporal_;
   const Backend* temporalBackend_ = nullptr;  // the one temporal_ reads

@@ -176,16 +176,20 @@ void ServeLoop::adjustPlan(FramePlan& plan) {
   const uint32_t divisor = quality_.resolutionDivisor(plan.preview);
   plan.width = std::max(plan.width / divisor, kMinViewSide);
   plan.height = std::max(plan.height / divisor, kMinViewSide);
+  jpegQuality_ = quality_.jpegQuality(plan.preview);
 }
 
-void ServeLoop::present(FrameImages& frame) { presented_ = displayImage(frame); }
+void ServeLoop::present(FrameImages& frame) {
+  const DisplayFrame pixels = frame.display();
+  const StripedJpeg jpeg = encoder_.encode(pixels.rgb, pixels.width, pixels.height, jpegQuality_);
+  presented_ = {packStripedJpeg(jpeg), pixels.width,        pixels.height,
+                jpeg.stripes.size(),   pixels.milliseconds, jpeg.milliseconds};
+}
 
 void ServeLoop::renderFrame(double now) {
   const double sinceLast = firstFrame_ ? 0.0 : now - lastFrameTime_;
   const FrameOutcome outcome = renderer_.step({viewWidth_, viewHeight_, now, sinceLast}, *this);
   const FramePlan& plan = outcome.plan;
-  const int jpegQuality = quality_.jpegQuality(plan.preview);
-  const std::string jpeg = encodeJpeg(presented_, jpegQuality);
 
   if (!firstFrame_) {
     const double ms = 1000.0 * sinceLast;
@@ -199,18 +203,25 @@ void ServeLoop::renderFrame(double now) {
       {"width", presented_.width},
       {"height", presented_.height},
       {"preview", plan.preview},
-      {"quality", jpegQuality},
+      {"format", "jpeg-stripes"},
+      {"stripes", presented_.stripeCount},
+      {"quality", jpegQuality_},
       {"samples", session.accumulatedSamples()},
       {"fps", msPerFrame_ > 0.0 ? 1000.0 / msPerFrame_ : 0.0},
       {"ms_per_frame", msPerFrame_},
-      {"render_ms", 1000.0 * outcome.seconds},
+      // Where a frame's time went: the backend's render, then the filters, tone mapping and read-back of its
+      // pixels, then their encoding; frame_ms is all of the step (these and the input, plan and bookkeeping).
+      {"render_ms", 1000.0 * outcome.renderSeconds},
+      {"post_ms", presented_.postMilliseconds},
+      {"encode_ms", presented_.encodeMilliseconds},
+      {"frame_ms", 1000.0 * outcome.seconds},
       {"bytes_per_second", quality_.bytesPerSecond()},
       {"clients", hub_.clientCount()},
       {"camera", {{"position", vec(renderer_.camera().position())}, {"forward", vec(renderer_.camera().forward())}}},
       {"applied", {{"max_depth", session.appliedSettings().maxDepth}, {"samples_per_frame", plan.samplesPerPixel}}},
       {"controls", controlsJson()},
   };
-  hub_.publishFrame(framesSent_, binaryMessage(header, jpeg), plan.preview);
+  hub_.publishFrame(framesSent_, binaryMessage(header, presented_.stripes), plan.preview);
   lastFrameTime_ = now;
   firstFrame_ = false;
 }

@@ -9,6 +9,7 @@
 #include "app/serve/client_hub.h"
 #include "app/serve/frame_encoding.h"
 #include "app/serve/stream_quality.h"
+#include "io/images/striped_jpeg.h"
 
 namespace candela {
 
@@ -26,7 +27,8 @@ class ServeLoop : private FrontEnd {
   void writeExitFiles();
 
  private:
-  // FrontEnd: the input came with the messages before the frame; the frame is tone mapped, then sent as a JPEG.
+  // FrontEnd: the input came with the messages before the frame; the frame is tone mapped where the film is
+  // (FrameImages::display), then encoded as JPEG stripes in parallel (io/images/striped_jpeg.h).
   FlyKeys takeInput() override { return flyKeys_; }
   void adjustPlan(FramePlan& plan) override;
   void present(FrameImages& frame) override;
@@ -49,7 +51,16 @@ class ServeLoop : private FrontEnd {
   bool materialsEdited_ = false;
   uint64_t controlChanges_ = 0;
   uint64_t framesSent_ = 0;
-  DisplayImage presented_;  // the frame present() made, for renderFrame to send
+  // The frame present() made, for renderFrame to send.
+  struct PresentedFrame {
+    std::string stripes;  // packStripedJpeg's message
+    uint32_t width = 0, height = 0;
+    size_t stripeCount = 0;
+    double postMilliseconds = 0.0, encodeMilliseconds = 0.0;
+  };
+  StripedJpegEncoder encoder_;
+  int jpegQuality_ = 0;  // of the frame being made (adjustPlan)
+  PresentedFrame presented_;
   bool firstFrame_ = true;
   double lastFrameTime_ = 0.0;
   double msPerFrame_ = 0.0;  // between frames sent, smoothed

@@ -143,6 +143,7 @@ struct OptixBackend::State {
   std::unique_ptr<CudaAtrous> atrous;  // made at the first a-trous read, for the image's size
   DeviceBuffer filtered;               // the filters' output
   DeviceBuffer smoothed;               // the display frames' smoothing pass's output
+  DeviceBuffer emissionMeans;          // the film's emission as means, for smoothing a filter's output
   DeviceDisplay display;
   DeviceBuffer counters;
   DeviceBuffer totals{sizeof(CounterTotals), "the counter totals"};
@@ -332,14 +333,17 @@ struct OptixBackend::State {
     return filterOutput();
   }
 
-  Vec3* smoothingOutput() {
+  // An image of the film's size in `buffer`, (re)made when the size changed.
+  Vec3* imageBuffer(DeviceBuffer& buffer, const char* what) {
     const size_t bytes = size_t(pixelCount()) * sizeof(Vec3);
-    if (smoothed.size() != bytes) {
-      smoothed = DeviceBuffer();
-      smoothed = DeviceBuffer(bytes, "the smoothed image");
+    if (buffer.size() != bytes) {
+      buffer = DeviceBuffer();
+      buffer = DeviceBuffer(bytes, what);
     }
-    return smoothed.as<Vec3>();
+    return buffer.as<Vec3>();
   }
+  Vec3* smoothingOutput() { return imageBuffer(smoothed, "the smoothed image"); }
+  Vec3* emissionMeansOutput() { return imageBuffer(emissionMeans, "the emission's means"); }
 
   Image downloadFiltered() const {
     Image image(settings.width, settings.height);
@@ -433,9 +437,15 @@ class OptixBackend::DeviceFilmDisplay final : public FilmDisplay {
     }
     if (values != film.radiance) samples = nullptr;  // a filter's output: means
     if (request.smoothing) {
-      FilmView image;  // the source alone: no emission is kept apart
+      FilmView image;  // the source, with the film's emission kept apart where the film records it
       image.radiance = values;
       image.samples = samples;
+      if (s.aovsEnabled && samples) {
+        image.emission = film.emission;  // sums over the same counts as the source's
+      } else if (s.aovsEnabled) {
+        image.emission = s.emissionMeansOutput();  // beside a filter's means, the emission's means
+        cudaMeans(film.emission, film.samples, image.emission, s.pixelCount(), s.context.stream());
+      }
       cudaBilateral(image, s.smoothingOutput(), s.settings.width, s.settings.height, *request.smoothing,
                     s.context.stream());
       values = s.smoothingOutput();

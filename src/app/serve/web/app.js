@@ -1,6 +1,6 @@
 // candela serve's page: shows the frames the server streams over a WebSocket and sends it the camera input and
-// the panel's edits. Plain JavaScript, no build step; the server embeds this file.
-'use strict';
+// the panel's edits. Plain JavaScript modules, no build step; the server embeds these files.
+import { drawStripedJpeg, unpackStripedJpeg } from './striped_jpeg.mjs';
 
 const $ = (id) => document.getElementById(id);
 const canvas = $('image');
@@ -33,23 +33,52 @@ function connect() {
   };
 }
 
-// A binary message: the JSON header's length (4 bytes, little-endian), the header, then an image.
+// A frame smaller than the view (a preview) is drawn whole here first, then scaled, so that no seam shows where
+// its stripes meet.
+const frameCanvas = document.createElement('canvas');
+const frameContext = frameCanvas.getContext('2d');
+
+// Draws a frame's JPEG stripes (src/io/images/striped_jpeg.h) into the view.
+async function drawFrame(frame) {
+  if (frame.width === canvas.width && frame.height === canvas.height) {
+    await drawStripedJpeg(context, frame);
+    return;
+  }
+  if (frameCanvas.width !== frame.width || frameCanvas.height !== frame.height) {
+    frameCanvas.width = frame.width;
+    frameCanvas.height = frame.height;
+  }
+  await drawStripedJpeg(frameContext, frame);
+  context.imageSmoothingEnabled = true;
+  context.drawImage(frameCanvas, 0, 0, canvas.width, canvas.height);
+}
+
+// A binary message: the JSON header's length (4 bytes, little-endian), the header, then its payload: a PNG for a
+// screenshot, JPEG stripes for a frame.
 function onBinary(buffer) {
   const length = new DataView(buffer).getUint32(0, true);
   const header = JSON.parse(new TextDecoder().decode(new Uint8Array(buffer, 4, length)));
-  const payload = new Uint8Array(buffer, 4 + length);
-  if (header.kind === 'screenshot') { download(new Blob([payload], { type: 'image/png' }), header.name); return; }
+  if (header.kind === 'screenshot') {
+    download(new Blob([new Uint8Array(buffer, 4 + length)], { type: 'image/png' }), header.name);
+    return;
+  }
   if (header.kind !== 'frame') return;
   // The server sends no other frame until this one is acknowledged, once drawn.
-  createImageBitmap(new Blob([payload], { type: 'image/jpeg' })).then((bitmap) => {
-    context.imageSmoothingEnabled = true;
-    context.drawImage(bitmap, 0, 0, canvas.width, canvas.height);
-    bitmap.close();
+  const acknowledge = () => send({ type: 'frame_ack', frame: header.frame });
+  let frame;
+  try {
+    frame = unpackStripedJpeg(buffer, 4 + length);
+  } catch (error) {
+    showMessage(`a frame that cannot be shown: ${error.message}`, true);
+    acknowledge();
+    return;
+  }
+  drawFrame(frame).then(() => {
     state.frames += 1;
     state.header = header;
-    send({ type: 'frame_ack', frame: header.frame });
+    acknowledge();
     showStatus(header);
-  }, () => { send({ type: 'frame_ack', frame: header.frame }); });
+  }, acknowledge);
 }
 
 function onText(message) {
@@ -103,7 +132,9 @@ function showStatus(h) {
     fps.count = 0;
     fps.since = now;
   }
-  $('rate').textContent = `${fps.value.toFixed(1)} fps here, ${h.fps.toFixed(1)} sent, render ${h.render_ms.toFixed(1)} ms`;
+  $('rate').textContent = `${fps.value.toFixed(1)} fps here, ${h.fps.toFixed(1)} sent`;
+  $('timing').textContent = `render ${h.render_ms.toFixed(1)}, post ${h.post_ms.toFixed(1)}, ` +
+    `encode ${h.encode_ms.toFixed(1)} ms (${h.stripes} stripes)`;
   $('samples').textContent = `${h.samples} per pixel`;
   $('image-size').textContent = `${h.width} x ${h.height}${h.preview ? ' (moving: preview)' : ''}`;
   $('stream').textContent = `JPEG q${h.quality}, ${(h.bytes_per_second / 1e6).toFixed(1)} MB/s`;

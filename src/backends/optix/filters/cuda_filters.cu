@@ -95,6 +95,11 @@ __global__ void bilateralKernel(FilmView film, Vec3* output, int w, int h, int r
   output[i] = film.emission ? filtered + meanAt(film.emission, film.samples, i) : filtered;
 }
 
+__global__ void meansKernel(const Vec3* sums, const uint32_t* samples, Vec3* means, size_t pixels) {
+  const size_t i = size_t(blockIdx.x) * blockDim.x + threadIdx.x;
+  if (i < pixels) means[i] = meanAt(sums, samples, i);
+}
+
 }  // namespace
 
 CudaAtrous::CudaAtrous(uint32_t width, uint32_t height)
@@ -131,6 +136,12 @@ void cudaBilateral(const FilmView& film, Vec3* output, uint32_t width, uint32_t 
   bilateralKernel<<<filterGridFor(width, height), kFilterBlock, 0, stream>>>(film, output, int(width), int(height),
                                                                              params.radius, bilateralScales(params));
   checkCuda(cudaGetLastError(), "launching the bilateral filter");
+}
+
+void cudaMeans(const Vec3* sums, const uint32_t* samples, Vec3* means, size_t pixels, cudaStream_t stream) {
+  constexpr unsigned kBlock = 256;
+  meansKernel<<<unsigned((pixels + kBlock - 1) / kBlock), kBlock, 0, stream>>>(sums, samples, means, pixels);
+  checkCuda(cudaGetLastError(), "launching the means of a film channel");
 }
 
 Image atrousDenoiseCuda(const Image& color, const AovImages& aovs, const AtrousParams& params) {

@@ -35,6 +35,10 @@ class CudaAtrous {
 void cudaBilateral(const FilmView& film, Vec3* output, uint32_t width, uint32_t height, const BilateralParams& params,
                    cudaStream_t stream);
 
+// Enqueues means[i] = sums[i] / samples[i] (0 where a pixel has no sample) for `pixels` pixels: a film channel as
+// an image of means, to filter beside other images of means.
+void cudaMeans(const Vec3* sums, const uint32_t* samples, Vec3* means, size_t pixels, cudaStream_t stream);
+
 // Host images in, host image out (upload, filter, download): for tests and one-off use.
 Image atrousDenoiseCuda(const Image& color, const AovImages& aovs, const AtrousParams& params);
 Image bilateralFilterCuda(const Image& input, const BilateralParams& params);
