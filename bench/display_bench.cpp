@@ -24,6 +24,8 @@
 #include "scene/builtin_scenes.h"
 #if CANDELA_HAS_SERVE
 #include "app/serve/frame_encoding.h"
+#include "app/serve/stream_quality.h"
+#include "io/video/h264_encoder.h"
 #endif
 
 using namespace candela;
@@ -124,6 +126,36 @@ int main(int argc, char** argv) {
           ", \"before_post_ms\": %.3f, \"before_post_cpu_ms\": %.3f, \"before_encode_ms\": %.3f, "
           "\"before_encode_cpu_ms\": %.3f, \"before_jpeg_bytes\": %zu",
           servePost.wallMs, servePost.cpuMs, serveEncode.wallMs, serveEncode.cpuMs, jpegBytes);
+#endif
+#if CANDELA_HAS_SERVE
+      // The H.264 stream at the stream's settings at rest (the film refining, one sample a frame) and moving (a
+      // new film of one sample each frame, the camera turning): the access units' median encode time and their
+      // mean size as a rate at 60 frames a second.
+      for (bool moving : {false, true}) {
+        H264Encoder video;
+        const H264Settings videoSettings = StreamQuality().videoSettings(moving);
+        std::vector<double> milliseconds;
+        double bytes = 0.0;
+        const int frames = repeats + 3;
+        for (int i = 0; i < frames; ++i) {
+          if (moving) {
+            Camera camera = scene.camera.toCamera(float(width) / float(height));
+            camera.position = camera.position + Vec3(0.002f * float(i), 0.0f, 0.0f);
+            backend->setCamera(camera);
+          }
+          backend->render(1);
+          const DisplayFrame pixels = backend->display().read(request);
+          const H264Frame encoded = video.encode(pixels.rgb, pixels.width, pixels.height, videoSettings, false);
+          if (i < 3) continue;  // the key frame and the encoder's warm-up
+          milliseconds.push_back(encoded.milliseconds);
+          bytes += double(encoded.bytes.size());
+        }
+        const char* name = moving ? "video_moving" : "video_rest";
+        std::printf(", \"%s_encode_ms\": %.3f, \"%s_mbit_per_s_at_60\": %.2f, \"%s_rate_factor\": %.0f", name,
+                    median(milliseconds), name, bytes / double(repeats) * 8.0 * 60.0 / 1e6, name,
+                    videoSettings.rateFactor);
+      }
+      backend->setCamera(scene.camera.toCamera(float(width) / float(height)));
 #endif
       std::printf("}\n");
       std::fflush(stdout);

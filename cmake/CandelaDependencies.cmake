@@ -49,16 +49,19 @@ else()
 endif()
 
 # candela serve, the viewer in a web browser: Boost.Beast (headers only) for HTTP and WebSocket, libjpeg-turbo for
-# the frames. It is built when both are found; CANDELA_SERVE_ENABLED says whether.
+# the JPEG frames, x264 for the H.264 video stream. It is built when all are found; CANDELA_SERVE_ENABLED says
+# whether.
 set(CANDELA_SERVE_ENABLED OFF)
 find_package(Boost 1.74 QUIET)
 pkg_check_modules(TURBOJPEG QUIET IMPORTED_TARGET libturbojpeg)
+pkg_check_modules(X264 QUIET IMPORTED_TARGET x264)
 find_package(Threads)
-if(Boost_FOUND AND TURBOJPEG_FOUND AND Threads_FOUND)
+if(Boost_FOUND AND TURBOJPEG_FOUND AND X264_FOUND AND Threads_FOUND)
   set(CANDELA_SERVE_ENABLED ON)
-  message(STATUS "serve: on (Boost ${Boost_VERSION}, libjpeg-turbo ${TURBOJPEG_VERSION})")
+  message(STATUS "serve: on (Boost ${Boost_VERSION}, libjpeg-turbo ${TURBOJPEG_VERSION}, x264 ${X264_VERSION})")
 else()
-  message(STATUS "serve: off (needs Boost.Beast and libjpeg-turbo: libboost-dev libturbojpeg0-dev)")
+  message(STATUS "serve: off (needs Boost.Beast, libjpeg-turbo and x264: libboost-dev libturbojpeg0-dev "
+                 "libx264-dev)")
 endif()
 
 # Distributed rendering (`mpirun candela render`): built when MPI (Open MPI: libopenmpi-dev) is found;

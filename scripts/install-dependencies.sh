@@ -12,8 +12,8 @@ packages=(
   libbenchmark-dev
   # the viewer, and its tests on a virtual display with Mesa's software OpenGL
   libglfw3-dev libimgui-dev libgl-dev libgl1-mesa-dri libglx-mesa0 xvfb xdotool
-  # candela serve (the viewer in a web browser)
-  libboost-dev libturbojpeg0-dev
+  # candela serve (the viewer in a web browser), its JPEG frames and its H.264 video stream
+  libboost-dev libturbojpeg0-dev libx264-dev
   # distributed rendering under mpirun (Open MPI), and its tests
   libopenmpi-dev openmpi-bin
   # scripts/check-format.sh (one version: others break lines differently)

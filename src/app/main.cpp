@@ -569,6 +569,12 @@ void addServeOptions(CLI::App& cmd, ServeOptions& options) {
       ->capture_default_str();
   cmd.add_option("--token", options.token,
                  "Secret every request must show (default: none on loopback, else a random one, printed)");
+  cmd.add_option_function<std::string>(
+         "--stream", [&options](const std::string& stream) { options.offerVideo = stream == "auto"; },
+         "How frames travel: auto (an H.264 video stream to browsers whose WebCodecs decode it, JPEG stripes to the "
+         "others) or jpeg (JPEG stripes to every browser)")
+      ->check(CLI::IsMember({"auto", "jpeg"}))
+      ->default_str("auto");
 }
 
 int runServeCommand(const ServeOptions& options) {
@@ -581,7 +587,7 @@ int runServeCommand(const ServeOptions& options) {
   return runServe(options);
 #else
   throw std::runtime_error(
-      "this build has no web viewer: install libboost-dev and libturbojpeg0-dev "
+      "this build has no web viewer: install libboost-dev, libturbojpeg0-dev and libx264-dev "
       "(scripts/install-dependencies.sh) and configure again");
 #endif
 }

@@ -1,5 +1,5 @@
 // node striped_jpeg_message_test.mjs <message file> <width> <height> <stripes>: unpacks a message that
-// write_striped_jpeg packed with the page's module (tes../../src/app/serve/web/striped_jpeg.mjs) and checks that its stripes tile
+// write_striped_jpeg packed with the page's module (src/app/serve/web/striped_jpeg.mjs) and checks that its stripes tile
 // the frame and that each is a whole JPEG file of the frame's width and the stripe's rows.
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';

@@ -65,5 +65,55 @@ TEST(ClientHub, RefusesClientsPastTheLimit) {
   EXPECT_EQ(hub.attach(std::make_shared<RecordingConnection>()), 0u);
 }
 
+// Each client gets the stream it chose; a client taking video needs a key frame whenever it missed the stream's
+// last access unit: when it chose video, and after a frame it was not ready for.
+TEST(ClientHub, VideoClientsGetKeyFramesWhereTheyMissedTheStream) {
+  ClientHub hub(/*videoOffered=*/true);
+  auto a = std::make_shared<RecordingConnection>(), b = std::make_shared<RecordingConnection>();
+  const uint64_t ida = hub.attach(a), idb = hub.attach(b);
+  hub.receive(idb, StreamMessage{FrameStream::H264});
+  FrameNeeds needs = hub.frameNeeds(0);
+  EXPECT_TRUE(needs.jpeg && needs.video && needs.videoKey);
+  hub.publishFrame(1, {frame("jpeg 1"), frame("key 1")}, false);
+  EXPECT_EQ(a->frames.back(), "jpeg 1");
+  EXPECT_EQ(b->frames.back(), "key 1");
+  hub.receive(ida, FrameAckMessage{1});
+  hub.receive(idb, FrameAckMessage{1});
+  needs = hub.frameNeeds(1);
+  EXPECT_TRUE(needs.video && !needs.videoKey) << "b has the stream's last access unit";
+  hub.publishFrame(2, {frame("jpeg 2"), frame("delta 2")}, false);
+  hub.receive(ida, FrameAckMessage{2});  // b does not acknowledge: it misses frame 3
+  needs = hub.frameNeeds(2);
+  EXPECT_TRUE(needs.jpeg && !needs.video);
+  hub.publishFrame(3, {frame("jpeg 3"), nullptr}, false);
+  hub.receive(idb, FrameAckMessage{2});
+  EXPECT_FALSE(hub.frameNeeds(2).videoKey) << "frame 3 had no access unit: the stream is whole for b";
+  hub.receive(ida, FrameAckMessage{3});
+  hub.publishFrame(4, {frame("jpeg 4"), frame("delta 4")}, false);
+  hub.receive(idb, FrameAckMessage{4});
+  hub.receive(ida, FrameAckMessage{4});
+  hub.publishFrame(5, {frame("jpeg 5"), frame("delta 5")}, false);  // b acknowledges it late
+  hub.receive(ida, FrameAckMessage{5});
+  hub.publishFrame(6, {frame("jpeg 6"), frame("delta 6")}, false);  // not to b
+  hub.receive(idb, FrameAckMessage{5});
+  EXPECT_TRUE(hub.frameNeeds(6).videoKey) << "b missed access unit 6";
+  EXPECT_EQ(b->frames, (std::vector<std::string>{"key 1", "delta 2", "delta 4", "delta 5"}));
+  // Choosing video again (the page's decoder failed) asks for a key frame too.
+  hub.publishFrame(7, {frame("jpeg 7"), frame("key 7")}, false);
+  hub.receive(idb, FrameAckMessage{7});
+  EXPECT_FALSE(hub.frameNeeds(7).videoKey);
+  hub.receive(idb, StreamMessage{FrameStream::H264});
+  EXPECT_TRUE(hub.frameNeeds(7).videoKey);
+}
+
+TEST(ClientHub, VideoIsRefusedWhereItIsNotOffered) {
+  ClientHub hub;
+  auto a = std::make_shared<RecordingConnection>();
+  const uint64_t id = hub.attach(a);
+  hub.receive(id, StreamMessage{FrameStream::H264});
+  const FrameNeeds needs = hub.frameNeeds(0);
+  EXPECT_TRUE(needs.jpeg && !needs.video);
+}
+
 }  // namespace
 }  // namespace candela

@@ -57,6 +57,15 @@ void ClientHub::receive(uint64_t client, ClientMessage message) {
     }
     return;
   }
+  if (const auto* stream = std::get_if<StreamMessage>(&message)) {
+    if (stream->stream == FrameStream::H264 && !videoOffered_) {
+      droppedLocked(client, "a video stream, which this server does not offer");
+      return;
+    }
+    it->second.video = stream->stream == FrameStream::H264;
+    it->second.videoFrameSent = 0;
+    return;
+  }
   const auto* action = std::get_if<ActionMessage>(&message);
   const bool anyoneMay =
       action && (action->kind == ActionMessage::Kind::TakeControl || action->kind == ActionMessage::Kind::Screenshot ||
@@ -69,6 +78,10 @@ void ClientHub::receive(uint64_t client, ClientMessage message) {
 
 void ClientHub::dropped(uint64_t client, const std::string& problem) {
   std::lock_guard lock(mutex_);
+  droppedLocked(client, problem);
+}
+
+void ClientHub::droppedLocked(uint64_t client, const std::string& problem) {
   const std::string kind = problem.substr(0, problem.find('\''));
   if (loggedProblems_.size() >= kMaxLoggedProblems || !loggedProblems_.insert(kind).second) return;
   std::fprintf(stderr,
@@ -148,17 +161,43 @@ void ClientHub::tellRolesLocked() {
   }
 }
 
-void ClientHub::publishFrame(uint64_t frameNumber, std::shared_ptr<const std::string> frame, bool moving) {
+bool ClientHub::videoOffered() {
+  std::lock_guard lock(mutex_);
+  return videoOffered_;
+}
+
+void ClientHub::stopVideo() {
+  std::lock_guard lock(mutex_);
+  videoOffered_ = false;
+  for (auto& [id, c] : clients_) c.video = false;
+}
+
+FrameNeeds ClientHub::frameNeeds(uint64_t lastVideoFrame) {
+  std::lock_guard lock(mutex_);
+  const auto now = std::chrono::steady_clock::now();
+  FrameNeeds needs;
+  for (const auto& [id, c] : clients_) {
+    if (!readyLocked(c, now)) continue;
+    needs.jpeg = needs.jpeg || !c.video;
+    needs.video = needs.video || c.video;
+    needs.videoKey = needs.videoKey || (c.video && (lastVideoFrame == 0 || c.videoFrameSent != lastVideoFrame));
+  }
+  return needs;
+}
+
+void ClientHub::publishFrame(uint64_t frameNumber, const PublishedFrame& frame, bool moving) {
   std::lock_guard lock(mutex_);
   const auto now = std::chrono::steady_clock::now();
   for (auto& [id, c] : clients_) {
-    if (!readyLocked(c, now)) continue;
+    const std::shared_ptr<const std::string>& message = c.video ? frame.video : frame.jpeg;
+    if (!message || !readyLocked(c, now)) continue;
     c.awaitingAck = true;
     c.frameSent = frameNumber;
-    c.bytesSent = frame->size();
+    if (c.video) c.videoFrameSent = frameNumber;
+    c.bytesSent = message->size();
     c.movingSent = moving;
     c.sentAt = now;
-    c.connection->sendFrame(frame);
+    c.connection->sendFrame(message);
   }
 }
 

@@ -36,6 +36,22 @@ struct FrameDelivery {
   bool moving = false;
 };
 
+// A frame as the render loop publishes it: as JPEG stripes for the browsers that take those, as the H.264 stream's
+// next access unit for those that take video; either may be null where no client ready for a frame takes it.
+struct PublishedFrame {
+  PublishedFrame(std::shared_ptr<const std::string> jpegFrame, std::shared_ptr<const std::string> videoFrame = {})
+      : jpeg(std::move(jpegFrame)), video(std::move(videoFrame)) {}
+  std::shared_ptr<const std::string> jpeg, video;
+};
+
+// What the clients ready for a frame need of the next one (ClientHub::frameNeeds).
+struct FrameNeeds {
+  bool jpeg = false, video = false;
+  // A client taking video did not get the stream's last access unit (it joined, chose video, was not ready for
+  // one, or lost its decoder): the next one must be a key frame, where a decoder can start.
+  bool videoKey = false;
+};
+
 // The browsers watching, which of them holds control, and the messages between them and the render loop. The
 // network thread attaches, detaches and receives; the render loop takes messages and publishes frames. A client
 // gets a new frame only once it has acknowledged the last one, so the render loop renders no faster than the
@@ -47,6 +63,11 @@ class ClientHub {
   // A frame not acknowledged in this time is taken as lost, so a browser that never acknowledges still gets
   // a frame now and then and cannot stall anyone.
   static constexpr std::chrono::seconds kAckTimeout{5};
+
+  // `videoOffered`: clients may choose the H.264 stream (StreamMessage); where not, such a choice is dropped.
+  explicit ClientHub(bool videoOffered = false) : videoOffered_(videoOffered) {}
+  ClientHub(const ClientHub&) = delete;
+  ClientHub& operator=(const ClientHub&) = delete;
 
   // Returns the client's id, or 0 when kMaxClients are connected already. The first client, and the oldest one
   // left when the controller leaves, holds control.
@@ -69,9 +90,14 @@ class ClientHub {
   uint64_t controller();
   uint64_t controlChanges();  // how often control passed to another client (or to none)
   void giveControl(uint64_t client);
+  bool videoOffered();
+  // Takes every client off the video stream and offers it no more (the encoder failed): JPEG frames from now on.
+  void stopVideo();
 
-  // Sends the frame to every client ready for one.
-  void publishFrame(uint64_t frameNumber, std::shared_ptr<const std::string> frame, bool moving);
+  // What the next frame is needed as; `lastVideoFrame` is the number of the stream's last access unit (0: none).
+  FrameNeeds frameNeeds(uint64_t lastVideoFrame);
+  // Sends the frame to every client ready for one, as the stream it takes (a client whose kind is null gets none).
+  void publishFrame(uint64_t frameNumber, const PublishedFrame& frame, bool moving);
   void send(uint64_t client, std::shared_ptr<const std::string> message, bool binary);
   void broadcast(const std::string& text);
 
@@ -82,13 +108,17 @@ class ClientHub {
     uint64_t frameSent = 0;
     size_t bytesSent = 0;
     bool movingSent = false;
+    bool video = false;           // takes the H.264 stream
+    uint64_t videoFrameSent = 0;  // the last access unit it was sent
     std::chrono::steady_clock::time_point sentAt;
   };
   bool readyLocked(const Client& client, std::chrono::steady_clock::time_point now) const;
+  void droppedLocked(uint64_t client, const std::string& problem);
   void tellRolesLocked();
   void setControllerLocked(uint64_t client);
 
   std::mutex mutex_;
+  bool videoOffered_;
   std::condition_variable work_;
   std::map<uint64_t, Client> clients_;  // ordered by id: the oldest first
   uint64_t nextId_ = 1;

@@ -80,6 +80,7 @@ static_assert(std::string_view(kDenoiserNames[1]) == denoiserName(kViewerDenoise
 constexpr const char* kButtonNames[] = {"left", "right", "middle"};  // MouseButton's order
 constexpr const char* kPointerActions[] = {"down", "up", "move"};
 constexpr const char* kActionNames[] = {"frame", "reset", "screenshot", "save_view", "take_control"};
+constexpr const char* kStreamNames[] = {"jpeg", "h264"};  // in the order of FrameStream
 
 std::optional<ClientMessage> pointer(Reader& r) {
   PointerMessage m;
@@ -153,6 +154,8 @@ std::optional<ClientMessage> settings(Reader& r) {
 
 const char* shadingName(ShadingModel model) { return kShadingNames[int(model)]; }
 
+const char* streamName(FrameStream stream) { return kStreamNames[int(stream)]; }
+
 std::optional<ClientMessage> parseClientMessage(std::string_view text, std::string& problem) {
   const Json json = Json::parse(text, nullptr, /*allow_exceptions=*/false);
   if (json.is_discarded()) return problem = "not JSON", std::nullopt;
@@ -187,6 +190,12 @@ std::optional<ClientMessage> parseClientMessage(std::string_view text, std::stri
     if (!r.number("frame", 0.0, 9.0e15, frame)) return std::nullopt;
     if (!frame) return problem = "frame_ack needs a frame", std::nullopt;
     return FrameAckMessage{uint64_t(*frame)};
+  }
+  if (type == "stream") {
+    std::optional<int> stream;
+    if (!r.choice("codec", kStreamNames, stream)) return std::nullopt;
+    if (!stream) return problem = "stream needs a codec", std::nullopt;
+    return StreamMessage{FrameStream(*stream)};
   }
   problem = "unknown type '" + type.substr(0, 40) + "'";
   return std::nullopt;

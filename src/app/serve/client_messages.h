@@ -40,6 +40,11 @@ struct ActionMessage {
 struct FrameAckMessage {
   uint64_t frame = 0;
 };
+// How a browser takes its frames: JPEG stripes, or the H.264 stream where its WebCodecs can decode it.
+enum class FrameStream { Jpeg, H264 };
+struct StreamMessage {
+  FrameStream stream = FrameStream::Jpeg;
+};
 // The panel's edits; absent fields stay as they are.
 struct SettingsMessage {
   std::optional<uint32_t> maxDepth, samplesPerFrame;
@@ -58,7 +63,7 @@ struct SettingsMessage {
 };
 
 using ClientMessage = std::variant<PointerMessage, WheelMessage, KeysMessage, ResizeMessage, ActionMessage,
-                                   FrameAckMessage, SettingsMessage>;
+                                   FrameAckMessage, StreamMessage, SettingsMessage>;
 
 // The limits every message is checked against; depth and samples per frame have the command line's
 // (interactive_options.h).
@@ -75,5 +80,6 @@ std::optional<ClientMessage> parseClientMessage(std::string_view text, std::stri
 
 // The names the page and the messages use.
 const char* shadingName(ShadingModel model);  // "own", "phong", "pbr", "disney"
+const char* streamName(FrameStream stream);   // "jpeg", "h264"
 
 }  // namespace candela

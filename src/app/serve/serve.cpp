@@ -30,7 +30,7 @@ std::string urlHost(const std::string& bind) {
 int runServe(ServeOptions options) {
   AccessToken token(options.token);
   if (!token.required() && !isLoopbackAddress(options.bind)) token = AccessToken::random();
-  ClientHub hub;
+  ClientHub hub(options.offerVideo);
   HttpServer server(options.bind, options.port, token, hub);  // binds first: a busy port is told at once
   ServeLoop loop(options.interactive, hub);
   server.start();

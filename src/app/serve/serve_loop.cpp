@@ -61,6 +61,7 @@ void ServeLoop::greet(uint64_t client) {
       {"override_parameters", overrides},
       {"denoisers", denoisers},
       {"max_atrous_passes", kMaxAtrousPasses},
+      {"streams", hub_.videoOffered() ? Json::array({"jpeg", "h264"}) : Json::array({"jpeg"})},
       {"animations", animations},
       {"controls", controlsJson()},
   };
@@ -177,16 +178,28 @@ void ServeLoop::adjustPlan(FramePlan& plan) {
   plan.width = std::max(plan.width / divisor, kMinViewSide);
   plan.height = std::max(plan.height / divisor, kMinViewSide);
   jpegQuality_ = quality_.jpegQuality(plan.preview);
+  preview_ = plan.preview;
 }
 
 void ServeLoop::present(FrameImages& frame) {
   const DisplayFrame pixels = frame.display();
-  const StripedJpeg jpeg = encoder_.encode(pixels.rgb, pixels.width, pixels.height, jpegQuality_);
-  presented_ = {packStripedJpeg(jpeg), pixels.width,        pixels.height,
-                jpeg.stripes.size(),   pixels.milliseconds, jpeg.milliseconds};
+  presented_ = {};
+  presented_.postMilliseconds = pixels.milliseconds;
+  if (needs_.jpeg) presented_.jpeg = jpegEncoder_.encode(pixels.rgb, pixels.width, pixels.height, jpegQuality_);
+  if (!needs_.video) return;
+  try {
+    presented_.video = videoEncoder_.encode(pixels.rgb, pixels.width, pixels.height, quality_.videoSettings(preview_),
+                                            needs_.videoKey);
+  } catch (const std::exception& e) {
+    // The browsers that took video get JPEG stripes from this frame on.
+    report(std::string("the video stream stopped (") + e.what() + "): JPEG frames from now on", true);
+    hub_.stopVideo();
+    if (!presented_.jpeg) presented_.jpeg = jpegEncoder_.encode(pixels.rgb, pixels.width, pixels.height, jpegQuality_);
+  }
 }
 
 void ServeLoop::renderFrame(double now) {
+  needs_ = hub_.frameNeeds(lastVideoFrame_);
   const double sinceLast = firstFrame_ ? 0.0 : now - lastFrameTime_;
   const FrameOutcome outcome = renderer_.step({viewWidth_, viewHeight_, now, sinceLast}, *this);
   const FramePlan& plan = outcome.plan;
@@ -200,20 +213,14 @@ void ServeLoop::renderFrame(double now) {
   const Json header = {
       {"kind", "frame"},
       {"frame", framesSent_},
-      {"width", presented_.width},
-      {"height", presented_.height},
       {"preview", plan.preview},
-      {"format", "jpeg-stripes"},
-      {"stripes", presented_.stripeCount},
-      {"quality", jpegQuality_},
       {"samples", session.accumulatedSamples()},
       {"fps", msPerFrame_ > 0.0 ? 1000.0 / msPerFrame_ : 0.0},
       {"ms_per_frame", msPerFrame_},
       // Where a frame's time went: the backend's render, then the filters, tone mapping and read-back of its
-      // pixels, then their encoding; frame_ms is all of the step (these and the input, plan and bookkeeping).
+      // pixels, then their encoding (encode_ms: of the stream the message carries); frame_ms is all of the step.
       {"render_ms", 1000.0 * outcome.renderSeconds},
       {"post_ms", presented_.postMilliseconds},
-      {"encode_ms", presented_.encodeMilliseconds},
       {"frame_ms", 1000.0 * outcome.seconds},
       {"bytes_per_second", quality_.bytesPerSecond()},
       {"clients", hub_.clientCount()},
@@ -221,7 +228,32 @@ void ServeLoop::renderFrame(double now) {
       {"applied", {{"max_depth", session.appliedSettings().maxDepth}, {"samples_per_frame", plan.samplesPerPixel}}},
       {"controls", controlsJson()},
   };
-  hub_.publishFrame(framesSent_, binaryMessage(header, presented_.stripes), plan.preview);
+  std::shared_ptr<const std::string> jpegMessage, videoMessage;
+  if (const std::optional<StripedJpeg>& jpeg = presented_.jpeg) {
+    Json h = header;
+    h.update({{"format", "jpeg-stripes"},
+              {"width", jpeg->width},
+              {"height", jpeg->height},
+              {"stripes", jpeg->stripes.size()},
+              {"quality", jpegQuality_},
+              {"encode_ms", jpeg->milliseconds}});
+    jpegMessage = binaryMessage(h, packStripedJpeg(*jpeg));
+  }
+  if (const std::optional<H264Frame>& video = presented_.video) {
+    const H264Settings settings = quality_.videoSettings(plan.preview);
+    Json h = header;
+    h.update({{"format", "h264"},
+              {"width", video->width},
+              {"height", video->height},
+              {"key", video->key},
+              {"codec", video->codec},
+              {"kilobits_per_second", settings.maxKilobitsPerSecond},
+              {"rate_factor", settings.rateFactor},
+              {"encode_ms", video->milliseconds}});
+    videoMessage = binaryMessage(h, video->bytes);
+    lastVideoFrame_ = framesSent_;
+  }
+  hub_.publishFrame(framesSent_, {jpegMessage, videoMessage}, plan.preview);
   lastFrameTime_ = now;
   firstFrame_ = false;
 }

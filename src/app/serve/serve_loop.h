@@ -1,6 +1,7 @@
 #pragma once
 #include <atomic>
 #include <chrono>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -10,6 +11,7 @@
 #include "app/serve/frame_encoding.h"
 #include "app/serve/stream_quality.h"
 #include "io/images/striped_jpeg.h"
+#include "io/video/h264_encoder.h"
 
 namespace candela {
 
@@ -51,15 +53,19 @@ class ServeLoop : private FrontEnd {
   bool materialsEdited_ = false;
   uint64_t controlChanges_ = 0;
   uint64_t framesSent_ = 0;
-  // The frame present() made, for renderFrame to send.
+  // The frame present() made, for renderFrame to send: as JPEG stripes, as the video's next access unit, or both,
+  // as the clients ready for it need (ClientHub::frameNeeds).
   struct PresentedFrame {
-    std::string stripes;  // packStripedJpeg's message
-    uint32_t width = 0, height = 0;
-    size_t stripeCount = 0;
-    double postMilliseconds = 0.0, encodeMilliseconds = 0.0;
+    std::optional<StripedJpeg> jpeg;
+    std::optional<H264Frame> video;
+    double postMilliseconds = 0.0;
   };
-  StripedJpegEncoder encoder_;
-  int jpegQuality_ = 0;  // of the frame being made (adjustPlan)
+  StripedJpegEncoder jpegEncoder_;
+  H264Encoder videoEncoder_;
+  FrameNeeds needs_;      // of the frame being made
+  bool preview_ = false;  // the frame being made is a preview (adjustPlan)
+  int jpegQuality_ = 0;   // of the frame being made
+  uint64_t lastVideoFrame_ = 0;
   PresentedFrame presented_;
   bool firstFrame_ = true;
   double lastFrameTime_ = 0.0;

@@ -9,8 +9,9 @@ namespace candela {
 struct ServeOptions {
   InteractiveOptions interactive;  // what candela view takes too
   std::string bind = "127.0.0.1";
-  uint16_t port = 8080;  // 0: any free port (the printed address names it)
-  std::string token;     // required of every request when not empty; a random one is made for other addresses
+  uint16_t port = 8080;    // 0: any free port (the printed address names it)
+  std::string token;       // required of every request when not empty; a random one is made for other addresses
+  bool offerVideo = true;  // browsers may take the H.264 stream instead of JPEG stripes
 };
 
 }  // namespace candela

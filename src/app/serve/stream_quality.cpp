@@ -1,6 +1,7 @@
 #include "app/serve/stream_quality.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace candela {
 
@@ -20,6 +21,19 @@ void StreamQuality::recordDelivery(size_t bytes, double seconds, bool moving) {
     else
       movingQuality_ = std::min(kMaxMovingQuality, movingQuality_ + kQualityStep / 2);
   }
+}
+
+H264Settings StreamQuality::videoSettings(bool moving) const {
+  H264Settings settings;
+  // What the link carried, with room left for the other messages and the variation between frames.
+  const double linkKilobits = 0.8 * 8.0 * bytesPerSecond_ / 1000.0;
+  settings.maxKilobitsPerSecond =
+      bytesPerSecond_ == 0.0 ? kMaxVideoKilobits
+                             : uint32_t(std::clamp(linkKilobits, double(kMinVideoKilobits), double(kMaxVideoKilobits)));
+  settings.rateFactor = moving ? kMovingRateFactor + 9.0f * float(kMaxMovingQuality - movingQuality_) /
+                                                         float(kMaxMovingQuality - kMinMovingQuality)
+                               : kRestRateFactor;
+  return settings;
 }
 
 }  // namespace candela

@@ -1,6 +1,7 @@
 // candela serve's page: shows the frames the server streams over a WebSocket and sends it the camera input and
 // the panel's edits. Plain JavaScript modules, no build step; the server embeds these files.
 import { drawStripedJpeg, unpackStripedJpeg } from './striped_jpeg.mjs';
+import { VideoStream, canDecodeH264 } from './video_stream.mjs';
 
 const $ = (id) => document.getElementById(id);
 const canvas = $('image');
@@ -8,7 +9,8 @@ const context = canvas.getContext('2d');
 const view = $('view');
 
 // What tests and scripts read (window.candela): frames drawn, the last frame's header, the role, messages.
-const state = { frames: 0, header: null, control: false, hello: null, message: null, closed: false };
+// `stream`: how frames come, 'jpeg' (stripes) or 'h264' (the video stream).
+const state = { frames: 0, header: null, control: false, hello: null, message: null, closed: false, stream: 'jpeg' };
 window.candela = state;
 
 let socket = null;
@@ -63,8 +65,13 @@ function onBinary(buffer) {
     return;
   }
   if (header.kind !== 'frame') return;
+  if (header.format === 'h264') {
+    if (video) video.decode(header, new Uint8Array(buffer, 4 + length));
+    else acknowledgeFrame(header);
+    return;
+  }
   // The server sends no other frame until this one is acknowledged, once drawn.
-  const acknowledge = () => send({ type: 'frame_ack', frame: header.frame });
+  const acknowledge = () => acknowledgeFrame(header);
   let frame;
   try {
     frame = unpackStripedJpeg(buffer, 4 + length);
@@ -73,12 +80,52 @@ function onBinary(buffer) {
     acknowledge();
     return;
   }
-  drawFrame(frame).then(() => {
-    state.frames += 1;
-    state.header = header;
-    acknowledge();
-    showStatus(header);
-  }, acknowledge);
+  drawFrame(frame).then(() => frameShown(header), acknowledge);
+}
+
+function acknowledgeFrame(header) { send({ type: 'frame_ack', frame: header.frame }); }
+
+// After a frame is drawn: what tests read, the acknowledgement that lets the server send the next, the status.
+function frameShown(header) {
+  state.frames += 1;
+  state.header = header;
+  acknowledgeFrame(header);
+  showStatus(header);
+  window.dispatchEvent(new CustomEvent('candela-frame', { detail: header }));
+}
+
+// The H.264 stream, where the server offers it and this browser decodes it, unless the address asks for JPEG
+// (?stream=jpeg). After repeated decoder failures the page goes back to JPEG stripes.
+const kMaxVideoFailures = 3;
+let video = null;
+
+async function chooseStream(streams) {
+  const wanted = new URLSearchParams(location.search).get('stream');
+  if (wanted === 'jpeg' || !streams.includes('h264') || !(await canDecodeH264())) return;
+  video = new VideoStream({
+    shown: (header, frame) => {
+      context.imageSmoothingEnabled = true;
+      // The decoded picture may have one column or row more than the frame (even sizes): drawn without it.
+      context.drawImage(frame, 0, 0, header.width, header.height, 0, 0, canvas.width, canvas.height);
+      frame.close();
+      frameShown(header);
+    },
+    lost: acknowledgeFrame,
+    restart: () => {
+      if (video.failures < kMaxVideoFailures) {
+        send({ type: 'stream', codec: 'h264' });  // the server's next frame is a key frame
+        return;
+      }
+      showMessage(`the video stream cannot be decoded here (${video.lastError?.message ?? 'unknown error'}): ` +
+                  'JPEG frames from now on', true);
+      video.close();
+      video = null;
+      state.stream = 'jpeg';
+      send({ type: 'stream', codec: 'jpeg' });
+    },
+  });
+  state.stream = 'h264';
+  send({ type: 'stream', codec: 'h264' });
 }
 
 function onText(message) {
@@ -95,6 +142,7 @@ function onText(message) {
     buildOverrides(message.override_parameters);
     buildAnimations(message.animations);
     showControls(message.controls);
+    chooseStream(message.streams ?? ['jpeg']);
   } else if (message.type === 'role') {
     state.control = message.control;
     $('role').textContent = message.control ? `in control (${message.clients} watching)`
@@ -134,10 +182,13 @@ function showStatus(h) {
   }
   $('rate').textContent = `${fps.value.toFixed(1)} fps here, ${h.fps.toFixed(1)} sent`;
   $('timing').textContent = `render ${h.render_ms.toFixed(1)}, post ${h.post_ms.toFixed(1)}, ` +
-    `encode ${h.encode_ms.toFixed(1)} ms (${h.stripes} stripes)`;
+    `encode ${h.encode_ms.toFixed(1)} ms`;
   $('samples').textContent = `${h.samples} per pixel`;
   $('image-size').textContent = `${h.width} x ${h.height}${h.preview ? ' (moving: preview)' : ''}`;
-  $('stream').textContent = `JPEG q${h.quality}, ${(h.bytes_per_second / 1e6).toFixed(1)} MB/s`;
+  const link = `${(h.bytes_per_second / 1e6).toFixed(1)} MB/s`;
+  $('stream').textContent = h.format === 'h264'
+    ? `H.264 up to ${(h.kilobits_per_second / 1000).toFixed(1)} Mbit/s, rate factor ${h.rate_factor.toFixed(0)}, ${link}`
+    : `JPEG q${h.quality}, ${h.stripes} stripes, ${link}`;
   $('camera').textContent = `${vector(h.camera.position)} looking ${vector(h.camera.forward)}`;
   showControls(h.controls);
 }

@@ -1,0 +1,64 @@
+// The H.264 encoder's stream as the page's decoder needs it (video_decode.mjs decodes it in Chromium): Annex B
+// access units, a key frame where one is due, the codec string of its SPS.
+#include <gtest/gtest.h>
+
+#include <regex>
+#include <stdexcept>
+#include <vector>
+
+#include "io/video/h264_encoder.h"
+
+namespace candela {
+namespace {
+
+std::vector<uint8_t> gradient(uint32_t width, uint32_t height, uint32_t shift) {
+  std::vector<uint8_t> rgb(size_t(width) * height * 3);
+  for (size_t i = 0; i < rgb.size(); ++i) rgb[i] = uint8_t((i / 3 % width + shift) * 255 / (width + shift));
+  return rgb;
+}
+
+TEST(H264Encoder, KeyFramesWhereDueAndAnnexBAccessUnits) {
+  H264Encoder encoder(2);
+  const H264Settings settings;
+  auto encode = [&](uint32_t width, uint32_t height, uint32_t shift, bool key) {
+    const std::vector<uint8_t> rgb = gradient(width, height, shift);
+    return encoder.encode(rgb.data(), width, height, settings, key);
+  };
+  const H264Frame first = encode(65, 37, 0, false);  // odd: coded as 66 x 38
+  EXPECT_TRUE(first.key);
+  EXPECT_EQ(first.width, 65u);
+  EXPECT_EQ(first.height, 37u);
+  EXPECT_TRUE(std::regex_match(first.codec, std::regex("avc1\\.[0-9A-F]{6}"))) << first.codec;
+  ASSERT_GE(first.bytes.size(), 5u);
+  EXPECT_EQ(first.bytes.substr(0, 4), std::string("\0\0\0\1", 4));
+  EXPECT_EQ(uint8_t(first.bytes[4]) & 0x1f, 7) << "a key frame starts with its SPS";
+  const H264Frame next = encode(65, 37, 1, false);
+  EXPECT_FALSE(next.key);
+  EXPECT_EQ(next.codec, first.codec);
+  EXPECT_TRUE(encode(65, 37, 2, true).key) << "asked for";
+  EXPECT_FALSE(encode(65, 37, 3, false).key);
+  EXPECT_TRUE(encode(64, 38, 3, false).key) << "a new size starts a new stream";
+  EXPECT_THROW(encode(1, 38, 0, false), std::invalid_argument);
+}
+
+// The rate control keeps a noisy picture's frames near the rate it is given.
+TEST(H264Encoder, TheRateStaysNearItsLimit) {
+  H264Encoder encoder(2);
+  H264Settings settings;
+  settings.maxKilobitsPerSecond = 2000;
+  settings.framesPerSecond = 30;
+  std::vector<uint8_t> rgb(size_t(320) * 240 * 3);
+  uint32_t state = 1;
+  size_t bytes = 0;
+  for (int frame = 0; frame < 60; ++frame) {
+    for (uint8_t& b : rgb) b = uint8_t((state = state * 1664525u + 1013904223u) >> 24);
+    const H264Frame encoded = encoder.encode(rgb.data(), 320, 240, settings, false);
+    if (frame >= 30) bytes += encoded.bytes.size();
+  }
+  const double kilobitsPerSecond = double(bytes) * 8.0 / 1000.0;  // 30 frames: one second
+  EXPECT_LT(kilobitsPerSecond, 1.5 * settings.maxKilobitsPerSecond);
+  EXPECT_GT(kilobitsPerSecond, 0.3 * settings.maxKilobitsPerSecond) << "noise takes what the rate allows";
+}
+
+}  // namespace
+}  // namespace candela
