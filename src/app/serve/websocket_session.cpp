@@ -4,6 +4,7 @@
 #include <boost/beast/core/buffers_to_string.hpp>
 
 #include <algorithm>
+#include <variant>
 
 namespace candela {
 
@@ -11,7 +12,12 @@ namespace beast = boost::beast;
 namespace websocket = beast::websocket;
 
 WebSocketSession::WebSocketSession(boost::asio::ip::tcp::socket socket, ClientHub& hub)
-    : ws_(std::move(socket)), hub_(hub) {}
+    : ws_(std::move(socket)), hub_(hub) {
+  // A frame is one message written at once: Nagle's algorithm would hold a small one (a video frame at rest) back
+  // until the browser's delayed acknowledgement, tens of milliseconds.
+  beast::error_code ignored;
+  beast::get_lowest_layer(ws_).socket().set_option(boost::asio::ip::tcp::no_delay(true), ignored);
+}
 
 void WebSocketSession::run(beast::http::request<beast::http::empty_body> upgrade) {
   // Pings an idle browser and drops one that stops answering; a handshake must finish in 30 seconds.
@@ -52,14 +58,19 @@ void WebSocketSession::onRead(beast::error_code error) {
     leave();
     return;
   }
-  if (!withinRate()) {
-    hub_.dropped(id_, "messages faster than the rate limit");
-  } else if (!ws_.got_text()) {
+  if (!ws_.got_text()) {
     hub_.dropped(id_, "a binary message");
   } else {
     const std::string text = beast::buffers_to_string(buffer_.data());
     std::string problem;
-    if (std::optional<ClientMessage> message = parseClientMessage(text, problem))
+    std::optional<ClientMessage> message = parseClientMessage(text, problem);
+    // A frame's acknowledgement is never dropped: without it the browser gets no frame for kAckTimeout. It comes
+    // once per frame sent, on top of the input that may come as fast.
+    if (message && std::holds_alternative<FrameAckMessage>(*message))
+      hub_.receive(id_, std::move(*message));
+    else if (!withinRate())
+      hub_.dropped(id_, "messages faster than the rate limit");
+    else if (message)
       hub_.receive(id_, std::move(*message));
     else
       hub_.dropped(id_, problem);
