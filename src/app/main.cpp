@@ -565,10 +565,12 @@ int runView(const ViewerOptions& options) {
 void addServeOptions(CLI::App& cmd, ServeOptions& options) {
   addInteractiveCommandOptions(cmd, options.interactive);
   cmd.add_option("--port", options.port, "TCP port to listen on (0: any free port)")->capture_default_str();
-  cmd.add_option("--bind", options.bind, "Address to listen on; any but loopback requires a token")
-      ->capture_default_str();
-  cmd.add_option("--token", options.token,
-                 "Secret every request must show (default: none on loopback, else a random one, printed)");
+  cmd.add_option("--bind", options.bind, "Address to listen on")->capture_default_str();
+  CLI::Option* token = cmd.add_option("--token", options.token,
+                                      "Secret every request must show (default: a random one, printed in the address)");
+  cmd.add_flag("--no-token", options.noToken,
+               "Serve a loopback address without a token: then any user of this machine may watch and steer")
+      ->excludes(token);
 }
 
 int runServeCommand(const ServeOptions& options) {

@@ -6,6 +6,8 @@
 #include <iterator>
 #include <string_view>
 
+#include "io/load_diagnostics.h"
+
 namespace candela {
 
 namespace {
@@ -113,7 +115,7 @@ bool overrides(Reader& r, SettingsMessage& m) {
     const OverrideParameter* parameter = nullptr;
     for (const OverrideParameter& p : overrideParameters())
       if (name == p.name) parameter = &p;
-    if (!parameter) return r.fail("overrides." + name, "names no material parameter");
+    if (!parameter) return r.fail("overrides." + quotedClientText(name), "names no material parameter");
     if (value.is_null()) {
       m.overrides.emplace_back(name, std::nullopt);
       continue;
@@ -153,6 +155,11 @@ std::optional<ClientMessage> settings(Reader& r) {
 
 const char* shadingName(ShadingModel model) { return kShadingNames[int(model)]; }
 
+std::string quotedClientText(std::string_view text) {
+  if (text.size() <= kMaxQuotedClientBytes) return printableText(text);
+  return printableText(text.substr(0, kMaxQuotedClientBytes)) + "...";
+}
+
 std::optional<ClientMessage> parseClientMessage(std::string_view text, std::string& problem) {
   const Json json = Json::parse(text, nullptr, /*allow_exceptions=*/false);
   if (json.is_discarded()) return problem = "not JSON", std::nullopt;
@@ -188,7 +195,7 @@ std::optional<ClientMessage> parseClientMessage(std::string_view text, std::stri
     if (!frame) return problem = "frame_ack needs a frame", std::nullopt;
     return FrameAckMessage{uint64_t(*frame)};
   }
-  problem = "unknown type '" + type.substr(0, 40) + "'";
+  problem = "unknown type '" + quotedClientText(type) + "'";
   return std::nullopt;
 }
 
