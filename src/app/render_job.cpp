@@ -155,6 +155,7 @@ RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool s
   outcome.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   outcome.samplesPerPixel = rendered.samples - job.warmupFrames;
   outcome.end = rendered.end;
+  outcome.checkpointFailed = rendered.checkpointFailed;
   outcome.writes = rendered.writes;
   outcome.stats = rendered.stats;
   outcome.frameMilliseconds = std::move(rendered.frameMilliseconds);
