@@ -146,6 +146,7 @@ RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool s
   };
 
   const ExrAttributes identity = renderIdentity(job, needsAovs(job));
+  if (job.team) job.team->checkSameRender(teamIdentity(job, scene, needsAovs(job)));
   // Warm-up launches take the first sample indices, and the timed ones continue after them.
   const uint32_t first = loadResumedFilm(job, *backend, identity) + job.warmupFrames;
   for (uint32_t w = 0; w < job.warmupFrames; ++w) renderFrame();

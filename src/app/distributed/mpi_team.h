@@ -13,6 +13,7 @@ class MpiTeam final : public RenderTeam {
   bool writes() const override { return session_.rank() == 0; }
   int localIndex() const override { return session_.localRank(); }
   void agree(std::exception_ptr failure) override;
+  void checkSameRender(const ExrAttributes& identity) override;
   std::unique_ptr<SampleSchedule> schedule(const SampleDispenser& dispenser, bool showProgress) override;
 
  private:
