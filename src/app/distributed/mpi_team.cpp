@@ -99,7 +99,7 @@ void MpiTeam::agree(std::exception_ptr failure) {
 }
 
 std::unique_ptr<SampleSchedule> MpiTeam::schedule(const SampleDispenser& dispenser, bool showProgress) {
-  if (writes()) return makeCoordinatorSchedule(dispenser, session_.size(), showProgress, timeout_);
+  if (writes()) return makeCoordinatorSchedule(dispenser, session_.size(), showProgress, timeout_, ranksLost_);
   return makeWorkerSchedule(timeout_);
 }
 

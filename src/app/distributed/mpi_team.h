@@ -15,10 +15,13 @@ class MpiTeam final : public RenderTeam {
   void agree(std::exception_ptr failure) override;
   void checkSameRender(const ExrAttributes& identity) override;
   std::unique_ptr<SampleSchedule> schedule(const SampleDispenser& dispenser, bool showProgress) override;
+  // Whether rank 0 gave up a rank that stopped answering (distributed_schedule.h) and rendered on without it.
+  bool ranksLost() const { return ranksLost_; }
 
  private:
   const MpiSession& session_;
   double timeout_;
+  bool ranksLost_ = false;
 };
 
 }  // namespace candela
