@@ -72,17 +72,18 @@ class CoordinatorSchedule final : public SampleSchedule {
       reissued_.pop_back();
       return {Assignment::Kind::Samples, first, count};
     }
-    if (pause_ == SampleDispenser::Pause::None) pause_ = dispenser_.pause(secondsPerSample);
+    if (pause_ == SampleDispenser::Pause::None) setPause(dispenser_.pause(secondsPerSample));
     if (pause_ == SampleDispenser::Pause::None) return {Assignment::Kind::Samples, dispenser_.take(1), 1};
-    // Before a checkpoint, rank 0 goes on rendering while the others finish their batches; the samples stay a
-    // prefix of the indices, as rank 0's own are done when it stops. An end waits idle: it is due now.
-    if (pause_ == SampleDispenser::Pause::Checkpoint && dispenser_.remaining() > 0 && !allPaused())
+    // Before a checkpoint, rank 0 goes on rendering while the others finish their batches, within the rank
+    // timeout; the samples stay a prefix of the indices, as rank 0's own are done when it stops. An end waits
+    // idle: it is due now.
+    if (pause_ == SampleDispenser::Pause::Checkpoint && dispenser_.remaining() > 0 && !allPaused() &&
+        secondsPaused() < timeout_)
       return {Assignment::Kind::Samples, dispenser_.take(1), 1};
     // Every worker learns of the pause at its next request, after its batches.
-    const auto start = std::chrono::steady_clock::now();
     while (!allPaused()) {
       if (!answerRequests()) std::this_thread::sleep_for(std::chrono::microseconds(500));
-      if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > timeout_) {
+      if (secondsPaused() > timeout_) {
         continueAlone();
         return next(secondsPerSample);
       }
@@ -147,6 +148,14 @@ class CoordinatorSchedule final : public SampleSchedule {
     bool released = false;  // rendering no more: its film was received, or it was given up for lost
     std::vector<std::pair<uint32_t, uint32_t>> batches;  // first and count of each handed out since the last combine
   };
+
+  void setPause(SampleDispenser::Pause pause) {
+    pause_ = pause;
+    if (pause_ != SampleDispenser::Pause::None) pausedAt_ = std::chrono::steady_clock::now();
+  }
+  double secondsPaused() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - pausedAt_).count();
+  }
 
   bool allPaused() const {
     return std::all_of(workers_.begin(), workers_.end(), [](const Worker& w) { return w.paused || w.released; });
@@ -233,7 +242,7 @@ class CoordinatorSchedule final : public SampleSchedule {
       if (request.stopSignal != 0) StopOnSignals::forward(int(request.stopSignal));
       const uint32_t count = batchSize(request.secondsPerSample);
       // The rank renders its current batch before this one: the time limit must allow for both.
-      if (pause_ == SampleDispenser::Pause::None) pause_ = dispenser_.pause(2.0 * count * request.secondsPerSample);
+      if (pause_ == SampleDispenser::Pause::None) setPause(dispenser_.pause(2.0 * count * request.secondsPerSample));
       Answer answer;
       if (pause_ == SampleDispenser::Pause::None) {
         answer.kind = uint32_t(Assignment::Kind::Samples);
@@ -255,6 +264,7 @@ class CoordinatorSchedule final : public SampleSchedule {
   SampleDispenser dispenser_;
   std::vector<Worker> workers_;
   SampleDispenser::Pause pause_ = SampleDispenser::Pause::None;
+  std::chrono::steady_clock::time_point pausedAt_;  // when pause_ was set
   uint32_t first_;
   bool showProgress_;
   double timeout_;
