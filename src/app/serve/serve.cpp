@@ -2,9 +2,9 @@
 
 #include <pthread.h>
 #include <signal.h>
+
 #include <atomic>
 #include <chrono>
-
 #include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
