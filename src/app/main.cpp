@@ -639,7 +639,8 @@ int main(int argc, char** argv) {
     render->get_option("--frames")->excludes(render->get_option(option));
   double rankTimeoutSeconds = 600.0;
   addDurationOption(*render, "--rank-timeout", rankTimeoutSeconds,
-                    "Under mpirun: how long a rank waits for another before it ends the job (default: 10m)");
+                    "Under mpirun: how long a rank waits for another (default: 10m); then rank 0 renders a silent "
+                    "rank's samples itself, other waits end the job");
   render->add_option("--atrous-passes", renderJob.atrous.passes, "Passes of the a-trous denoiser")
       ->check(CLI::Range(1, kMaxAtrousPasses))
       ->capture_default_str();
