@@ -314,13 +314,26 @@ void addRenderControlOptions(CLI::App& cmd, RenderControl& control) {
                     "and write the image of the samples so far");
 }
 
-// Fails early, before a long render, when the checkpoint cannot be written.
-void checkCheckpointPath(const std::string& path) {
+// Whether two paths name one file, the one existing or to be made.
+bool sameFile(const std::string& a, const std::string& b) {
+  std::error_code error;
+  if (std::filesystem::equivalent(a, b, error)) return true;
+  const std::filesystem::path ca = std::filesystem::weakly_canonical(std::filesystem::absolute(a), error);
+  if (error) return false;
+  const std::filesystem::path cb = std::filesystem::weakly_canonical(std::filesystem::absolute(b), error);
+  return !error && ca == cb;
+}
+
+// Fails early, before a long render, when the checkpoint cannot be written, or would be replaced by the image.
+void checkCheckpointPath(const std::string& path, const std::string& output) {
   if (path.empty()) return;
   std::string extension = std::filesystem::path(path).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return std::tolower(c); });
   if (extension != ".exr") throw std::runtime_error("cannot write '" + path + "': a checkpoint is an .exr file");
+  if (sameFile(path, output))
+    throw std::runtime_error("-o and --checkpoint name the same file, '" + path +
+                             "': the image would replace the checkpoint; give them two names");
   checkAtomicTarget(path);
 }
 
@@ -328,7 +341,7 @@ void checkCheckpointPath(const std::string& path) {
 int finishRender(const RenderJob& job, const RenderOutcome& outcome, const std::string& output,
                  const DisplaySettings& display) {
   const unsigned done = outcome.samplesPerPixel, asked = job.samplesPerPixel;
-  if (outcome.end == RenderEnd::Signal) {
+  if (outcome.end == RenderEnd::Signal && !outcome.checkpointFailed) {
     const int signal = StopOnSignals::requested();
     std::fprintf(stderr,
                  "candela: %s stopped the render after %u of %u samples per pixel; '%s' holds them (continue "
@@ -338,6 +351,11 @@ int finishRender(const RenderJob& job, const RenderOutcome& outcome, const std::
   }
   if (outcome.end == RenderEnd::TimeLimit)
     std::fprintf(stderr, "candela: the time limit stopped the render after %u of %u samples per pixel\n", done, asked);
+  if (outcome.end == RenderEnd::Signal)  // and the checkpoint that would hold the samples could not be written
+    std::fprintf(stderr,
+                 "candela: %s stopped the render after %u of %u samples per pixel; with no checkpoint to hold them, "
+                 "the image of them is written\n",
+                 StopOnSignals::signalName(StopOnSignals::requested()), done, asked);
   std::vector<std::string> written = writeImageWithAovs(output, outcome.image, display, outcome.aovs, job.aovs);
   const RenderSettings& rendered = outcome.settings;
   double samples = double(rendered.width) * rendered.height * outcome.samplesPerPixel;
@@ -363,7 +381,7 @@ int runRender(const RenderJob& job, const std::string& output, const DisplaySett
               [[maybe_unused]] double rankTimeoutSeconds) {
   auto checkOutputs = [&] {
     checkOutputPath(output);
-    checkCheckpointPath(job.control.checkpointPath);
+    checkCheckpointPath(job.control.checkpointPath, output);
   };
   auto writeOutputs = [&](const RenderOutcome& outcome) { return finishRender(job, outcome, output, display); };
 #if CANDELA_HAS_MPI
@@ -565,10 +583,12 @@ int runView(const ViewerOptions& options) {
 void addServeOptions(CLI::App& cmd, ServeOptions& options) {
   addInteractiveCommandOptions(cmd, options.interactive);
   cmd.add_option("--port", options.port, "TCP port to listen on (0: any free port)")->capture_default_str();
-  cmd.add_option("--bind", options.bind, "Address to listen on; any but loopback requires a token")
-      ->capture_default_str();
-  cmd.add_option("--token", options.token,
-                 "Secret every request must show (default: none on loopback, else a random one, printed)");
+  cmd.add_option("--bind", options.bind, "Address to listen on")->capture_default_str();
+  CLI::Option* token = cmd.add_option("--token", options.token,
+                                      "Secret every request must show (default: a random one, printed in the address)");
+  cmd.add_flag("--no-token", options.noToken,
+               "Serve a loopback address without a token: then any user of this machine may watch and steer")
+      ->excludes(token);
   cmd.add_option_function<std::string>(
          "--stream", [&options](const std::string& stream) { options.offerVideo = stream == "auto"; },
          "How frames travel: auto (an H.264 video stream to browsers whose WebCodecs decode it, JPEG stripes to the "
@@ -625,7 +645,8 @@ int main(int argc, char** argv) {
     render->get_option("--frames")->excludes(render->get_option(option));
   double rankTimeoutSeconds = 600.0;
   addDurationOption(*render, "--rank-timeout", rankTimeoutSeconds,
-                    "Under mpirun: how long a rank waits for another before it ends the job (default: 10m)");
+                    "Under mpirun: how long a rank waits for another (default: 10m); then rank 0 renders a silent "
+                    "rank's samples itself, other waits end the job");
   render->add_option("--atrous-passes", renderJob.atrous.passes, "Passes of the a-trous denoiser")
       ->check(CLI::Range(1, kMaxAtrousPasses))
       ->capture_default_str();

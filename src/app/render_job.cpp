@@ -146,6 +146,7 @@ RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool s
   };
 
   const ExrAttributes identity = renderIdentity(job, needsAovs(job));
+  if (job.team) job.team->checkSameRender(teamIdentity(job, scene, needsAovs(job)));
   // Warm-up launches take the first sample indices, and the timed ones continue after them.
   const uint32_t first = loadResumedFilm(job, *backend, identity) + job.warmupFrames;
   for (uint32_t w = 0; w < job.warmupFrames; ++w) renderFrame();
@@ -155,6 +156,7 @@ RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool s
   outcome.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   outcome.samplesPerPixel = rendered.samples - job.warmupFrames;
   outcome.end = rendered.end;
+  outcome.checkpointFailed = rendered.checkpointFailed;
   outcome.writes = rendered.writes;
   outcome.stats = rendered.stats;
   outcome.frameMilliseconds = std::move(rendered.frameMilliseconds);

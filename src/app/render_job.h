@@ -51,7 +51,8 @@ struct RenderOutcome {
   RenderSettings settings;
   uint32_t samplesPerPixel = 0;  // in the image: fewer than asked for when the render stopped early
   RenderEnd end = RenderEnd::Complete;
-  bool writes = true;  // false on the processes of a distributed render that do not hold the image
+  bool checkpointFailed = false;  // the last --checkpoint could not be written
+  bool writes = true;             // false on the processes of a distributed render that do not hold the image
   Image image;
   AovImages aovs;  // when RenderJob::aovs is not empty
   FrameStats stats;

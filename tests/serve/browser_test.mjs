@@ -267,12 +267,13 @@ const tests = {
     }
   },
 
-  // With a token, requests without it (or with a wrong one) get 403 and no frames; with it, frames come.
+  // A token is required by default, on loopback too: requests without it (or with a wrong one) get 403 and no
+  // frames; with it, frames come.
   async token() {
-    const server = await startServer(candela, [...serverArgs, '--bind', '0.0.0.0']);
+    const server = await startServer(candela, serverArgs);
     try {
       const token = new URL(server.url).searchParams.get('token');
-      assert.match(token ?? '', /^[0-9a-f]{32}$/, 'another address than loopback gets a random token');
+      assert.match(token ?? '', /^[0-9a-f]{32}$/, 'a random token by default');
       assert.equal((await rawGet(server.url, '/')).status, 403);
       assert.equal((await rawGet(server.url, '/app.js')).status, 403);
       assert.equal((await rawGet(server.url, '/?token=wrong')).status, 403);
@@ -401,7 +402,7 @@ const tests = {
 
   // Only the page's own files can be requested: nothing of the file system, however the path is spelt.
   async traversal() {
-    const server = await startServer(candela, serverArgs);
+    const server = await startServer(candela, [...serverArgs, '--no-token']);
     try {
       for (const path of ['/../../../../etc/passwd', '/%2e%2e/%2e%2e/%2e%2e/etc/passwd', '/..%2f..%2f..%2fetc%2fpasswd',
                           '//etc/passwd', '/index.html/../../etc/passwd', '/app.js/..', '/web/app.js',

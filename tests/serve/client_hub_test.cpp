@@ -115,5 +115,20 @@ TEST(ClientHub, VideoIsRefusedWhereItIsNotOffered) {
   EXPECT_TRUE(needs.jpeg && !needs.video);
 }
 
+// A flood of screenshot requests costs one screenshot per batch of messages, not one per request.
+TEST(ClientHub, ARequestThatStillWaitsIsNotQueuedAgain) {
+  ClientHub hub;
+  const uint64_t ida = hub.attach(std::make_shared<RecordingConnection>());
+  const uint64_t idb = hub.attach(std::make_shared<RecordingConnection>());
+  for (int i = 0; i < 100; ++i) {
+    hub.receive(ida, ActionMessage{ActionMessage::Kind::Screenshot});
+    hub.receive(idb, ActionMessage{ActionMessage::Kind::Screenshot});
+    hub.receive(idb, ActionMessage{ActionMessage::Kind::SaveView});
+  }
+  EXPECT_EQ(hub.takeMessages().size(), 3u);
+  hub.receive(ida, ActionMessage{ActionMessage::Kind::Screenshot});
+  EXPECT_EQ(hub.takeMessages().size(), 1u) << "once taken, a request is queued again";
+}
+
 }  // namespace
 }  // namespace candela

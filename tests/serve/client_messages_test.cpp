@@ -110,5 +110,25 @@ TEST(ClientMessages, SurvivesDeepNesting) {
   EXPECT_FALSE(parseClientMessage(objects, problem));
 }
 
+// Client text in a problem (an unknown type, a material parameter's name) is printed on the server's terminal:
+// it comes out short and without escape sequences, line ends or bytes that are not UTF-8.
+TEST(ClientMessages, QuotesClientTextShortAndPrintable) {
+  // Escape, BEL, CSI, line ends and the C1 CSI (U+009B), as JSON escapes, then a long line.
+  const std::string hostile = R"(\u001b]0;owned\u0007\u001b[31m\r\n\u009b)" + std::string(3000, 'A');
+  const std::string messages[] = {R"({"type":")" + hostile + R"("})",
+                                  R"({"type":"settings","overrides":{")" + hostile + R"(":0.5}})"};
+  for (const std::string& message : messages) {
+    std::string problem;
+    EXPECT_FALSE(parseClientMessage(message, problem));
+    EXPECT_LE(problem.size(), 4 * kMaxQuotedClientBytes + 80) << problem;
+    for (char c : problem) {
+      EXPECT_GE(static_cast<unsigned char>(c), 0x20) << problem;
+      EXPECT_NE(c, '\x7f') << problem;
+    }
+    EXPECT_EQ(problem.find("\xc2\x9b"), std::string::npos) << "a C1 control (CSI) survived";
+    EXPECT_NE(problem.find("..."), std::string::npos) << problem;
+  }
+}
+
 }  // namespace
 }  // namespace candela

@@ -1,5 +1,8 @@
 #include "network_clients.h"
 
+#include <poll.h>
+#include <sys/socket.h>
+
 #include <boost/asio/connect.hpp>
 #include <boost/asio/write.hpp>
 #include <boost/beast/core/buffers_to_string.hpp>
@@ -22,9 +25,13 @@ std::string localHost(uint16_t port) { return "127.0.0.1:" + std::to_string(port
 
 }  // namespace
 
-HttpAnswer httpGet(uint16_t port, const std::string& target, const std::string& host) {
+HttpAnswer httpGet(uint16_t port, const std::string& target, const std::string& host, const std::string& source) {
   asio::io_context io;
   tcp::socket socket(io);
+  if (!source.empty()) {
+    socket.open(tcp::v4());
+    socket.bind({asio::ip::make_address(source), 0});
+  }
   socket.connect(server(port));
   http::request<http::empty_body> request(http::verb::get, target, 11);
   request.set(http::field::host, host.empty() ? localHost(port) : host);
@@ -48,11 +55,25 @@ unsigned rawRequestStatus(uint16_t port, const std::string& bytes) {
   return error ? 0 : response.result_int();
 }
 
-WebSocketClient::WebSocketClient(uint16_t port) : ws_(io_) {
+HalfOpenRequest::HalfOpenRequest(uint16_t port, const std::string& source) : socket_(io_) {
+  socket_.open(tcp::v4());
+  socket_.bind({asio::ip::make_address(source), 0});
+  socket_.connect(server(port));
+  asio::write(socket_, asio::buffer("GET / HTTP/1.1\r\nHost: " + localHost(port) + "\r\n"));
+}
+
+bool HalfOpenRequest::closedByServer(double seconds) {
+  pollfd ready{socket_.native_handle(), POLLIN, 0};
+  if (poll(&ready, 1, int(seconds * 1000)) <= 0) return false;
+  char byte;
+  return recv(socket_.native_handle(), &byte, 1, MSG_DONTWAIT) <= 0;  // the end, or a reset
+}
+
+WebSocketClient::WebSocketClient(uint16_t port, const std::string& token) : ws_(io_) {
   ws_.next_layer().connect(server(port));
   ws_.set_option(websocket::stream_base::decorator(
       [port](websocket::request_type& request) { request.set(http::field::origin, "http://" + localHost(port)); }));
-  ws_.handshake(localHost(port), "/ws");
+  ws_.handshake(localHost(port), token.empty() ? "/ws" : "/ws?token=" + token);
 }
 
 WebSocketClient::Message WebSocketClient::read() {

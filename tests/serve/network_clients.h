@@ -17,8 +17,23 @@ struct HttpAnswer {
   std::string body;
 };
 
-// One GET on a connection of its own. `host` is the Host header (default: "127.0.0.1:<port>").
-HttpAnswer httpGet(uint16_t port, const std::string& target, const std::string& host = "");
+// One GET on a connection of its own. `host` is the Host header (default: "127.0.0.1:<port>"); `source` the
+// address the connection comes from (default: the system's choice, 127.0.0.1; any of 127.0.0.0/8 works).
+HttpAnswer httpGet(uint16_t port, const std::string& target, const std::string& host = "",
+                   const std::string& source = "");
+
+// A connection from `source` that sends the start of a request and never its end, as a client that holds
+// connections open does.
+class HalfOpenRequest {
+ public:
+  HalfOpenRequest(uint16_t port, const std::string& source);
+  // Whether the server has closed the connection (within `seconds`).
+  bool closedByServer(double seconds);
+
+ private:
+  boost::asio::io_context io_;
+  boost::asio::ip::tcp::socket socket_;
+};
 
 // Sends `bytes` as they are on a new connection and returns the status of the answer (0 for none).
 unsigned rawRequestStatus(uint16_t port, const std::string& bytes);
@@ -26,7 +41,8 @@ unsigned rawRequestStatus(uint16_t port, const std::string& bytes);
 // A browser's WebSocket ("/ws", with the page's Origin).
 class WebSocketClient {
  public:
-  explicit WebSocketClient(uint16_t port);
+  // With `token` (the server's, or empty for a server without one) in the address, as the page sends it.
+  WebSocketClient(uint16_t port, const std::string& token);
 
   struct Message {
     bool binary = false;

@@ -5,7 +5,7 @@
 set -euo pipefail
 candela=$1
 view_own='--no-interop|--window-capture|--state-file'
-serve_own='--port|--bind|--token|--stream'
+serve_own='--port|--bind|--token|--no-token|--stream'
 
 # The entries of `candela <command> --help` under Positionals and Options, one line each.
 entries() {

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <condition_variable>
 #include <mutex>
@@ -80,6 +81,7 @@ void steer(WebSocketClient& ws, int frame) {
       ws.send(R"({"type":"action","name":"screenshot"})");
       ws.send(R"({"type":"action","name":"save_view"})");
       ws.send("not json");
+      ws.send(R"({"type":"\u001b[31m)" + std::string(3000, 'A') + R"("})");
       break;
   }
 }
@@ -98,12 +100,12 @@ bool isStripedJpeg(const std::string& payload, const nlohmann::json& header) {
 }
 
 // One browser's visits, one after the other; returns what went wrong.
-std::vector<std::string> browse(uint16_t port, int browser) {
+std::vector<std::string> browse(uint16_t port, const std::string& token, int browser) {
   std::vector<std::string> problems;
   for (int visit = 0; visit < kVisitsPerBrowser; ++visit) {
     const std::string who = "browser " + std::to_string(browser) + ", visit " + std::to_string(visit) + ": ";
     try {
-      WebSocketClient ws(port);
+      WebSocketClient ws(port, token);
       bool role = false, hello = false;
       uint64_t last = 0;
       for (int frames = 0; frames < kFramesPerVisit;) {
@@ -139,7 +141,7 @@ std::vector<std::string> browse(uint16_t port, int browser) {
 }
 
 // The page's files, refusals and a request that is no HTTP, over and over; returns what went wrong.
-std::vector<std::string> request(uint16_t port) {
+std::vector<std::string> request(uint16_t port, const std::string& token) {
   std::vector<std::string> problems;
   const auto expect = [&](const std::string& what, unsigned got, unsigned wanted) {
     if (got != wanted)
@@ -147,12 +149,13 @@ std::vector<std::string> request(uint16_t port) {
   };
   for (int i = 0; i < kRequestsPerRequester; ++i) {
     try {
-      const HttpAnswer page = httpGet(port, "/");
+      const std::string withToken = "?token=" + token;
+      const HttpAnswer page = httpGet(port, "/" + withToken);
       expect("GET /", page.status, 200);
       if (page.contentType.rfind("text/html", 0) != 0) problems.push_back("GET /: " + page.contentType);
-      expect("GET /app.js", httpGet(port, "/app.js").status, 200);
-      expect("GET /no-such-file", httpGet(port, "/no-such-file").status, 404);
-      expect("GET / for another host", httpGet(port, "/", "attacker.example:" + std::to_string(port)).status, 403);
+      expect("GET /app.js", httpGet(port, "/app.js" + withToken).status, 200);
+      expect("GET /no-such-file", httpGet(port, "/no-such-file" + withToken).status, 404);
+      expect("GET / without the token", httpGet(port, "/").status, 403);
       expect("no HTTP", rawRequestStatus(port, "NOT HTTP AT ALL\r\n\r\n"), 400);
     } catch (const std::exception& e) {
       problems.push_back(std::string("request: ") + e.what());
@@ -171,9 +174,9 @@ TEST(ServeNetwork, ManyClientsAtOnceThenSigtermEndsTheServerCleanly) {
     Watchdog watchdog(std::chrono::seconds(120), server);
     std::vector<std::thread> clients;
     for (int b = 0; b < kBrowsers; ++b)
-      clients.emplace_back([&, b] { problems[size_t(b)] = browse(server.port(), b); });
+      clients.emplace_back([&, b] { problems[size_t(b)] = browse(server.port(), server.token(), b); });
     for (int r = 0; r < kRequesters; ++r)
-      clients.emplace_back([&, r] { problems[size_t(kBrowsers + r)] = request(server.port()); });
+      clients.emplace_back([&, r] { problems[size_t(kBrowsers + r)] = request(server.port(), server.token()); });
     for (std::thread& c : clients) c.join();
     timedOut = watchdog.fired();
   }
@@ -181,6 +184,14 @@ TEST(ServeNetwork, ManyClientsAtOnceThenSigtermEndsTheServerCleanly) {
   EXPECT_FALSE(timedOut) << "the clients were not done within 120 s; the server was killed";
   EXPECT_EQ(server.stop(60.0), 0) << server.stderrText();
   EXPECT_NE(server.stderrText().find("candela serve: stopped"), std::string::npos) << server.stderrText();
+  // What clients sent reaches the terminal only as printable text, on short lines.
+  const std::string log = server.stderrText();
+  EXPECT_NE(log.find("unknown type"), std::string::npos) << log;
+  EXPECT_EQ(log.find('\x1b'), std::string::npos) << "an escape sequence from a client reached the terminal";
+  for (size_t start = 0, end; start < log.size(); start = end + 1) {
+    end = std::min(log.find('\n', start), log.size());
+    EXPECT_LT(end - start, 300u) << log.substr(start, 300);
+  }
   for (const std::vector<std::string>& p : problems)
     for (const std::string& problem : p) ADD_FAILURE() << problem;
 }

@@ -99,6 +99,7 @@ ServeProcess::ServeProcess(const std::string& candela, const std::vector<std::st
       url_ = printed.substr(start, end - start);
       const size_t colon = url_.rfind(':'), slash = url_.find('/', colon);
       port_ = uint16_t(std::stoul(url_.substr(colon + 1, slash - colon - 1)));
+      if (const size_t token = url_.find("?token="); token != std::string::npos) token_ = url_.substr(token + 7);
       return;
     }
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
@@ -124,6 +125,17 @@ ServeProcess::~ServeProcess() {
 int ServeProcess::stop(double seconds) {
   if (pid_ <= 0) return -1;
   ::kill(pid_, SIGTERM);
+  const int status = waitFor(pid_, seconds);
+  pid_ = -1;
+  return status;
+}
+
+void ServeProcess::signal(int number) {
+  if (pid_ > 0) ::kill(pid_, number);
+}
+
+int ServeProcess::wait(double seconds) {
+  if (pid_ <= 0) return -1;
   const int status = waitFor(pid_, seconds);
   pid_ = -1;
   return status;

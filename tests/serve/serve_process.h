@@ -21,11 +21,15 @@ class ServeProcess {
   ServeProcess& operator=(const ServeProcess&) = delete;
 
   uint16_t port() const { return port_; }
-  const std::string& url() const { return url_; }  // as printed: "http://127.0.0.1:PORT/"
+  const std::string& url() const { return url_; }      // as printed: "http://127.0.0.1:PORT/?token=..."
+  const std::string& token() const { return token_; }  // the token in it; empty with --no-token
 
   // Sends SIGTERM and waits up to `seconds`: the exit status, or -1 when it did not exit in time (it is then
   // killed) or died from a signal.
   int stop(double seconds);
+  void signal(int number);  // sends it, nothing else
+  // Waits up to `seconds` for the exit that a signal asked for: as stop().
+  int wait(double seconds);
   // Ends it at once (SIGKILL); from any thread.
   void kill();
   std::string stderrText() const;
@@ -35,6 +39,7 @@ class ServeProcess {
   int stdout_ = -1;
   std::string stderrPath_;
   std::string url_;
+  std::string token_;
   uint16_t port_ = 0;
 };
 

@@ -9,6 +9,9 @@
 
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <functional>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -55,11 +58,11 @@ FilmSums distinctFilm(uint32_t width, uint32_t height, bool withAovs) {
       using Value = std::remove_reference_t<decltype(values[i])>;
       const float v = float(channelIndex * 100 + int(i)) + 0.25f;
       if constexpr (std::is_same_v<Value, Vec3>)
-        values[i] = {v, v + 0.5f, -v};
+        values[i] = {v, v + 0.5f, v + 0.75f};
       else if constexpr (std::is_same_v<Value, float>)
         values[i] = v;
-      else
-        values[i] = uint32_t(channelIndex * 100 + int(i));
+      else  // counts a render could make: fewer odd samples than samples
+        values[i] = uint32_t(1000 - channelIndex * 100 + int(i));
     }
   });
   return film;
@@ -206,6 +209,50 @@ TEST_F(FilmFilesTest, TheFileKeepsItsChannels) {
     const Imf::Channel* channel = channels.findChannel(name);
     ASSERT_NE(channel, nullptr) << name;
     EXPECT_EQ(channel->type, type) << name;
+  }
+}
+
+// Sums no render writes are refused on resumption: they would reach the image (a negative radiance sum is a
+// negative pixel) or break the filters that read the counts.
+TEST_F(FilmFilesTest, ForgedSumsAreRefused) {
+  const auto refusal = [&](const std::function<void(FilmSums&)>& forge) -> std::string {
+    FilmSums film = distinctFilm(6, 5, true);
+    forge(film);
+    writeCheckpoint(path("forged.exr"), Checkpoint{kIdentity, 1000, 1000, film});
+    try {
+      readCheckpoint(path("forged.exr"), kIdentity, 6, 5, true);
+    } catch (const std::runtime_error& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_EQ(refusal([](FilmSums&) {}), "") << "an unforged film";
+  EXPECT_NE(refusal([](FilmSums& f) { f.radiance[3].y = -1.0f; }).find("negative"), std::string::npos);
+  EXPECT_NE(refusal([](FilmSums& f) { f.emission[0].x = -0.5f; }).find("negative"), std::string::npos);
+  EXPECT_NE(refusal([](FilmSums& f) { f.luminanceSquares[7] = -2.0f; }).find("negative"), std::string::npos);
+  EXPECT_NE(refusal([](FilmSums& f) { f.depth[1] = std::numeric_limits<float>::infinity(); }).find("infinite"),
+            std::string::npos);
+  EXPECT_EQ(refusal([](FilmSums& f) { f.normal[2] = {-1.0f, -2.0f, -3.0f}; }), "") << "normals are signed";
+  EXPECT_NE(refusal([](FilmSums& f) { f.samples[4] = 0; }).find("a pixel without samples"), std::string::npos);
+  EXPECT_NE(refusal([](FilmSums& f) { f.samples[4] = 1001; }).find("more samples than"), std::string::npos);
+  EXPECT_NE(refusal([](FilmSums& f) { f.oddSamples[4] = f.samples[4] + 1; }).find("more odd samples"),
+            std::string::npos);
+}
+
+// A resumption reads the header as every other EXR reader does, checked first: an attribute that claims 2 GB in
+// a small file is refused before OpenEXR allocates it.
+TEST_F(FilmFilesTest, AnAttributeThatClaimsMoreThanTheFileIsRefusedFirst) {
+  std::string bytes = {0x76, 0x2f, 0x31, 0x01, 0x02, 0x00, 0x00, 0x00};
+  bytes += std::string("candela.checkpoint") + '\0' + "mystery" + '\0';
+  const int32_t claimed = 2000000000;
+  bytes.append(reinterpret_cast<const char*>(&claimed), 4);
+  bytes += std::string(32, 'x');
+  std::ofstream(path("bomb.exr"), std::ios::binary) << bytes;
+  try {
+    readCheckpoint(path("bomb.exr"), kIdentity, 6, 5, true);
+    ADD_FAILURE() << "a header whose attribute claims 2 GB was read";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("claims 2000000000 bytes"), std::string::npos) << e.what();
   }
 }
 

@@ -13,6 +13,7 @@
 
 #include "io/atomic_file.h"
 #include "io/file_bytes.h"
+#include "io/images/exr_decoding.h"
 #include "io/images/exr_memory_stream.h"
 #include "io/load_diagnostics.h"
 #include "kernel/film.h"
@@ -47,11 +48,6 @@ std::vector<ExrChannel> sumChannels(const FilmSums& film) {
   return channels;
 }
 
-// Whether a value of a sum is finite; counts are.
-bool isFiniteSum(Vec3 v) { return isFinite(v); }
-bool isFiniteSum(float v) { return std::isfinite(v); }
-bool isFiniteSum(uint32_t) { return true; }
-
 // A checkpoint that cannot be resumed from, told apart from OpenEXR's own exceptions.
 class ResumeError : public std::runtime_error {
  public:
@@ -81,6 +77,38 @@ void checkIdentity(const std::string& path, const Imf::Header& header, const Exr
     if (stored != value)
       cannotResume(path, "it was rendered with " + name.substr(name.find('.') + 1) + " '" + printableText(stored) +
                              "', this render has '" + printableText(value) + "'");
+  }
+}
+
+// Whether a value of a sum may be what a render adds up: finite (kernel/film_accumulation.h), and not negative
+// unless the channel is signed (the normals). Counts are.
+bool isPlausibleSum(Vec3 v, bool isSigned) { return isFinite(v) && (isSigned || (v.x >= 0 && v.y >= 0 && v.z >= 0)); }
+bool isPlausibleSum(float v, bool isSigned) { return std::isfinite(v) && (isSigned || v >= 0); }
+bool isPlausibleSum(uint32_t, bool) { return true; }
+bool isZeroSum(Vec3 v) { return v.x == 0 && v.y == 0 && v.z == 0; }
+bool isZeroSum(float v) { return v == 0; }
+bool isZeroSum(uint32_t v) { return v == 0; }
+
+// Refuses sums that no render writes: a file that holds them was made otherwise, and its values would reach the
+// image (a negative radiance sum is a negative pixel).
+void checkSums(const std::string& path, const Checkpoint& checkpoint) {
+  const FilmSums& film = checkpoint.film;
+  forEachFilmChannel(film, [&](auto channel, const auto& values) {
+    const bool isSigned = std::string_view(channel.name) == "normal";
+    for (size_t i = 0; i < values.size(); ++i) {
+      if (!isPlausibleSum(values[i], isSigned))
+        cannotResume(path, std::string(isSigned ? "a value that is not finite" : "a negative or infinite value") +
+                               " in " + channel.description);
+      if (film.samples[i] == 0 && !isZeroSum(values[i]))
+        cannotResume(path, std::string("a value for a pixel without samples in ") + channel.description);
+    }
+  });
+  for (size_t i = 0; i < film.samples.size(); ++i) {
+    if (film.samples[i] > checkpoint.nextSample)
+      cannotResume(path, "a pixel holds more samples than the " + std::to_string(checkpoint.nextSample) +
+                             " sample indices it says were rendered");
+    if (!film.oddSamples.empty() && film.oddSamples[i] > film.samples[i])
+      cannotResume(path, "a pixel holds more odd samples than samples");
   }
 }
 
@@ -114,6 +142,11 @@ Checkpoint readCheckpoint(const std::string& path, const ExrAttributes& identity
     throw std::runtime_error(std::string("cannot resume: ") + e.what());
   }
   Checkpoint checkpoint;
+  try {
+    checkExrHeaders(path, bytes.data(), bytes.size(), UINT64_MAX, /*checkDataWindows=*/false);
+  } catch (const LoadError& e) {
+    cannotResume(path, std::string("not a readable OpenEXR file (") + e.what() + ")");
+  }
   try {
     ExrMemoryStream stream(path, bytes.data(), bytes.size());
     Imf::InputFile exr(stream);
@@ -150,15 +183,7 @@ Checkpoint readCheckpoint(const std::string& path, const ExrAttributes& identity
   } catch (const std::exception& e) {
     cannotResume(path, std::string("not a readable OpenEXR file (") + e.what() + ")");
   }
-  // What a render adds up is finite (kernel/film_accumulation.h): a file that holds more was not written so.
-  forEachFilmChannel(checkpoint.film, [&](auto, const auto& values) {
-    for (const auto& v : values)
-      if (!isFiniteSum(v)) cannotResume(path, "its sums hold values that are not finite numbers");
-  });
-  for (uint32_t count : checkpoint.film.samples)
-    if (count > checkpoint.nextSample)
-      cannotResume(path, "a pixel holds more samples than the " + std::to_string(checkpoint.nextSample) +
-                             " sample indices it says were rendered");
+  checkSums(path, checkpoint);
   return checkpoint;
 }
 

@@ -1,7 +1,14 @@
 #include "app/checkpoint/render_identity.h"
 
+#include <xxhash.h>
+
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <tuple>
+#include <vector>
 
 namespace candela {
 
@@ -37,7 +44,49 @@ std::string overridesText(const MaterialOverrides& overrides) {
   return text;
 }
 
+// XXH3 of a file's contents as 16 hexadecimal digits, or "unreadable". Remembered by path, size and modification
+// time, so that the frames of a sequence read each file once.
+std::string contentHash(const std::string& path) {
+  std::error_code error;
+  const uintmax_t size = std::filesystem::file_size(path, error);
+  const auto modified = std::filesystem::last_write_time(path, error);
+  if (error) return "unreadable";
+  using Key = std::tuple<std::string, uintmax_t, std::filesystem::file_time_type>;
+  static std::map<Key, std::string> known;
+  const Key key{path, size, modified};
+  if (const auto it = known.find(key); it != known.end()) return it->second;
+  std::ifstream in(path, std::ios::binary);
+  std::unique_ptr<XXH3_state_t, decltype(&XXH3_freeState)> state(XXH3_createState(), &XXH3_freeState);
+  XXH3_64bits_reset(state.get());
+  std::vector<char> buffer(size_t(1) << 20);
+  while (in) {
+    in.read(buffer.data(), std::streamsize(buffer.size()));
+    XXH3_64bits_update(state.get(), buffer.data(), size_t(in.gcount()));
+  }
+  if (in.bad()) return "unreadable";
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(XXH3_64bits_digest(state.get())));
+  return known[key] = hex;
+}
+
 }  // namespace
+
+ExrAttributes teamIdentity(const RenderJob& job, const Scene& scene, bool withAovs) {
+  ExrAttributes identity = renderIdentity(job, withAovs);
+  for (auto& [name, value] : identity) {
+    if (name == "candela.scene" && !scene.inputFiles.empty()) {
+      value = "files";
+      for (const std::string& file : scene.inputFiles) {
+        value += ' ';
+        value += contentHash(file);
+      }
+    } else if (name == "candela.environment" && !job.environmentPath.empty()) {
+      value = "file ";
+      value += contentHash(job.environmentPath);
+    }
+  }
+  return identity;
+}
 
 ExrAttributes renderIdentity(const RenderJob& job, bool withAovs) {
   const RenderSettings& s = job.settings;

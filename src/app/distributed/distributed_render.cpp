@@ -51,12 +51,19 @@ int runDistributedRender(RenderJob job, double rankTimeoutSeconds, const std::fu
   if (failed) return *failed;
   // From here on no rank waits for another.
   if (!outcome.writes) return outcome.end == RenderEnd::Signal ? 128 + StopOnSignals::requested() : 0;
+  int status = 1;
   try {
-    return writeOutputs(outcome);
+    status = writeOutputs(outcome);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "candela: %s\n", printableText(e.what()).c_str());
-    return 1;
   }
+  // A rank given up for lost would hold MPI's end up for ever: the job ends here, with the outputs written.
+  if (team.ranksLost()) {
+    std::fflush(stdout);
+    std::fflush(stderr);
+    session.abort(status);
+  }
+  return status;
 }
 
 int runDistributedSequence(RenderJob job, double rankTimeoutSeconds,

@@ -19,7 +19,12 @@ namespace candela {
 
 namespace {
 
-constexpr int kRequestTag = 101, kAssignmentTag = 102;
+constexpr int kRequestTag = 101, kAssignmentTag = 102, kCombineTag = 105;
+
+// How a rank that was told of a pause combines its film (rank 0 says so once the rank is in combine()): with all
+// the others (reduceFilm), or, once a rank has stopped answering, sent to rank 0 alone, after which this rank is
+// done; or not at all (it was given up for lost, and its samples are rendered again).
+enum class Combine : uint32_t { Reduce, SendAndStop, DiscardAndStop };
 
 // A worker's request: what it has done and how fast, and whether it was asked to stop.
 struct Request {
@@ -38,32 +43,50 @@ struct Answer {
 // the batch ends.
 constexpr double kBatchSeconds = 1.0;
 
+void tellCombine(int rank, Combine how, double timeoutSeconds) {
+  const uint32_t value = uint32_t(how);
+  MPI_Request request;
+  checkMpi(MPI_Isend(&value, 1, MPI_UINT32_T, rank, kCombineTag, MPI_COMM_WORLD, &request), "starting to add up");
+  waitPolitely(request, timeoutSeconds, "starting to add up the films");
+}
+
 class CoordinatorSchedule final : public SampleSchedule {
  public:
-  CoordinatorSchedule(const SampleDispenser& dispenser, int ranks, bool showProgress, double timeoutSeconds)
+  CoordinatorSchedule(const SampleDispenser& dispenser, int ranks, bool showProgress, double timeoutSeconds,
+                      bool& ranksLost)
       : dispenser_(dispenser),
         workers_(size_t(ranks - 1)),
         first_(dispenser.next()),
         showProgress_(showProgress),
         timeout_(timeoutSeconds),
+        ranksLost_(ranksLost),
         progress_("rendering on " + std::to_string(ranks) + " ranks", dispenser.remaining()) {}
 
   Assignment next(double secondsPerSample) override {
     secondsPerSample_ = secondsPerSample;
     answerRequests();
-    if (pause_ == SampleDispenser::Pause::None) pause_ = dispenser_.pause(secondsPerSample);
+    // The batches of a rank given up for lost come first: the film must hold every index handed out before it
+    // pauses.
+    if (!reissued_.empty()) {
+      const auto [first, count] = reissued_.back();
+      reissued_.pop_back();
+      return {Assignment::Kind::Samples, first, count};
+    }
+    if (pause_ == SampleDispenser::Pause::None) setPause(dispenser_.pause(secondsPerSample));
     if (pause_ == SampleDispenser::Pause::None) return {Assignment::Kind::Samples, dispenser_.take(1), 1};
-    // Before a checkpoint, rank 0 goes on rendering while the others finish their batches; the samples stay a
-    // prefix of the indices, as rank 0's own are done when it stops. An end waits idle: it is due now.
-    if (pause_ == SampleDispenser::Pause::Checkpoint && dispenser_.remaining() > 0 && !allPaused())
+    // Before a checkpoint, rank 0 goes on rendering while the others finish their batches, within the rank
+    // timeout; the samples stay a prefix of the indices, as rank 0's own are done when it stops. An end waits
+    // idle: it is due now.
+    if (pause_ == SampleDispenser::Pause::Checkpoint && dispenser_.remaining() > 0 && !allPaused() &&
+        secondsPaused() < timeout_)
       return {Assignment::Kind::Samples, dispenser_.take(1), 1};
     // Every worker learns of the pause at its next request, after its batches.
-    const auto start = std::chrono::steady_clock::now();
     while (!allPaused()) {
       if (!answerRequests()) std::this_thread::sleep_for(std::chrono::microseconds(500));
-      if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > timeout_)
-        throw std::runtime_error(silentRanks() + " did not finish the batches within " + std::to_string(int(timeout_)) +
-                                 " s (--rank-timeout)");
+      if (secondsPaused() > timeout_) {
+        continueAlone();
+        return next(secondsPerSample);
+      }
     }
     return {pause_ == SampleDispenser::Pause::End ? Assignment::Kind::End : Assignment::Kind::Checkpoint};
   }
@@ -76,20 +99,41 @@ class CoordinatorSchedule final : public SampleSchedule {
 
   bool combine(Backend& backend, FrameStats& stats) override {
     FilmSums film = backend.readFilm();
-    const double seconds = reduceFilm(film, stats, timeout_);
+    double seconds = 0.0;
+    if (ranksLost_) {
+      // The films of the ranks that answered, received when the others were given up.
+      if (!received_.width) received_ = FilmSums::zero(film.width, film.height, film.hasAovs());
+      forEachFilmChannel(film, received_, [](auto, auto& sums, const auto& values) {
+        for (size_t i = 0; i < values.size(); ++i) sums[i] = sums[i] + values[i];
+      });
+      stats.rays += receivedStats_.rays;
+      stats.invalidSamples += receivedStats_.invalidSamples;
+      received_ = FilmSums();
+      receivedStats_ = FrameStats();
+    } else {
+      for (size_t i = 0; i < workers_.size(); ++i) tellCombine(int(i + 1), Combine::Reduce, timeout_);
+      seconds = reduceFilm(film, stats, timeout_);
+    }
     backend.loadFilm(film);
     if (pause_ == SampleDispenser::Pause::End && showProgress_) {
       progress_.update(dispenser_.next() - first_);
       progress_.finish();
       // What the scaling model of docs/performance.md needs: the time to add up the films.
-      std::fprintf(stderr,
-                   "films of %zu ranks (%.1f MiB each) added up in %.3f s; rank 0 rendered %u of the %u "
-                   "samples per pixel\n",
-                   workers_.size() + 1, double(film.bytes()) / double(1 << 20), seconds, ownDone_,
-                   dispenser_.next() - first_);
+      if (ranksLost_)
+        std::fprintf(stderr, "rank 0 rendered %u of the %u samples per pixel, with the films the other ranks sent\n",
+                     ownDone_, dispenser_.next() - first_);
+      else
+        std::fprintf(stderr,
+                     "films of %zu ranks (%.1f MiB each) added up in %.3f s; rank 0 rendered %u of the %u "
+                     "samples per pixel\n",
+                     workers_.size() + 1, double(film.bytes()) / double(1 << 20), seconds, ownDone_,
+                     dispenser_.next() - first_);
     }
     pause_ = SampleDispenser::Pause::None;
-    for (Worker& w : workers_) w.paused = false;
+    for (Worker& w : workers_) {
+      w.paused = false;
+      w.batches.clear();  // in the film now
+    }
     return true;
   }
 
@@ -100,11 +144,52 @@ class CoordinatorSchedule final : public SampleSchedule {
  private:
   struct Worker {
     uint32_t done = 0;
-    bool paused = false;  // told of the current pause
+    bool paused = false;    // told of the current pause
+    bool released = false;  // rendering no more: its film was received, or it was given up for lost
+    std::vector<std::pair<uint32_t, uint32_t>> batches;  // first and count of each handed out since the last combine
   };
 
+  void setPause(SampleDispenser::Pause pause) {
+    pause_ = pause;
+    if (pause_ != SampleDispenser::Pause::None) pausedAt_ = std::chrono::steady_clock::now();
+  }
+  double secondsPaused() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - pausedAt_).count();
+  }
+
   bool allPaused() const {
-    return std::all_of(workers_.begin(), workers_.end(), [](const Worker& w) { return w.paused; });
+    return std::all_of(workers_.begin(), workers_.end(), [](const Worker& w) { return w.paused || w.released; });
+  }
+
+  // Some ranks did not finish their batches within the rank timeout (stopped, hung, or on a dead node): no
+  // collective can include them any more. The ranks that are waiting in combine() send rank 0 their films and
+  // are done; the batches of the silent ones go to rank 0 again, which renders them and the rest of the render
+  // alone, so that the image and the checkpoints are still written.
+  void continueAlone() {
+    std::fprintf(stderr,
+                 "candela: warning: %s did not finish %s batches within %d s (--rank-timeout); rank 0 renders %s "
+                 "samples again and the rest of the render alone\n",
+                 silentRanks().c_str(), silentCount() == 1 ? "its" : "their", int(timeout_),
+                 silentCount() == 1 ? "its" : "their");
+    ranksLost_ = true;
+    for (size_t i = 0; i < workers_.size(); ++i) {
+      Worker& w = workers_[i];
+      if (w.released) continue;
+      if (w.paused) {
+        tellCombine(int(i + 1), Combine::SendAndStop, timeout_);
+        addFilmFromRank(int(i + 1), received_, receivedStats_, timeout_);
+      } else {
+        reissued_.insert(reissued_.end(), w.batches.begin(), w.batches.end());
+        w.done = 0;
+      }
+      w.batches.clear();
+      w.released = true;
+    }
+  }
+
+  int silentCount() const {
+    return int(
+        std::count_if(workers_.begin(), workers_.end(), [](const Worker& w) { return !w.paused && !w.released; }));
   }
 
   uint64_t samplesDone() const {
@@ -118,7 +203,7 @@ class CoordinatorSchedule final : public SampleSchedule {
     std::string ranks;
     int count = 0;
     for (size_t i = 0; i < workers_.size(); ++i)
-      if (!workers_[i].paused) ranks += (count++ ? ", " : "") + std::to_string(i + 1);
+      if (!workers_[i].paused && !workers_[i].released) ranks += (count++ ? ", " : "") + std::to_string(i + 1);
     return (count == 1 ? "rank " : "ranks ") + ranks;
   }
 
@@ -146,16 +231,24 @@ class CoordinatorSchedule final : public SampleSchedule {
                         MPI_STATUS_IGNORE),
                "receiving a request");
       Worker& worker = workers_[size_t(status.MPI_SOURCE - 1)];
+      if (worker.released) {  // a rank given up for lost that answers after all: its samples are rendered again
+        const Answer end{uint32_t(Assignment::Kind::End), dispenser_.next(), uint32_t(RenderEnd::Complete)};
+        checkMpi(MPI_Send(&end, sizeof end, MPI_BYTE, status.MPI_SOURCE, kAssignmentTag, MPI_COMM_WORLD),
+                 "sending an assignment");
+        tellCombine(status.MPI_SOURCE, Combine::DiscardAndStop, timeout_);
+        continue;
+      }
       worker.done = request.samplesDone;
       if (request.stopSignal != 0) StopOnSignals::forward(int(request.stopSignal));
       const uint32_t count = batchSize(request.secondsPerSample);
       // The rank renders its current batch before this one: the time limit must allow for both.
-      if (pause_ == SampleDispenser::Pause::None) pause_ = dispenser_.pause(2.0 * count * request.secondsPerSample);
+      if (pause_ == SampleDispenser::Pause::None) setPause(dispenser_.pause(2.0 * count * request.secondsPerSample));
       Answer answer;
       if (pause_ == SampleDispenser::Pause::None) {
         answer.kind = uint32_t(Assignment::Kind::Samples);
         answer.first = dispenser_.take(count);
         answer.count = dispenser_.next() - answer.first;
+        if (answer.count > 0) worker.batches.emplace_back(answer.first, answer.count);
       } else {
         answer.kind =
             uint32_t(pause_ == SampleDispenser::Pause::End ? Assignment::Kind::End : Assignment::Kind::Checkpoint);
@@ -171,11 +264,16 @@ class CoordinatorSchedule final : public SampleSchedule {
   SampleDispenser dispenser_;
   std::vector<Worker> workers_;
   SampleDispenser::Pause pause_ = SampleDispenser::Pause::None;
+  std::chrono::steady_clock::time_point pausedAt_;  // when pause_ was set
   uint32_t first_;
   bool showProgress_;
   double timeout_;
   double secondsPerSample_ = 0.0;
   uint32_t ownDone_ = 0;
+  bool& ranksLost_;
+  std::vector<std::pair<uint32_t, uint32_t>> reissued_;  // batches of ranks given up for lost, to render here
+  FilmSums received_;                                    // the films of the ranks that stopped with their films
+  FrameStats receivedStats_;
   ProgressReporter progress_;
 };
 
@@ -184,6 +282,7 @@ class WorkerSchedule final : public SampleSchedule {
   explicit WorkerSchedule(double timeoutSeconds) : timeout_(timeoutSeconds) {}
 
   Assignment next(double secondsPerSample) override {
+    if (stopped_) return {Assignment::Kind::End};
     secondsPerSample_ = secondsPerSample;
     if (!asked_) ask();
     waitPolitely(reply_, timeout_, "waiting for rank 0");
@@ -202,9 +301,19 @@ class WorkerSchedule final : public SampleSchedule {
   void sampleDone() override { ++done_; }
 
   bool combine(Backend& backend, FrameStats& stats) override {
+    if (stopped_) return false;
+    uint32_t how = 0;
+    MPI_Request request;
+    checkMpi(MPI_Irecv(&how, 1, MPI_UINT32_T, 0, kCombineTag, MPI_COMM_WORLD, &request), "starting to add up");
+    // Rank 0 may first wait up to the timeout for a silent rank, after its own sample.
+    waitPolitely(request, 3.0 * timeout_, "waiting for rank 0 to add up the films");
     FilmSums film = backend.readFilm();
-    reduceFilm(film, stats, timeout_);
-    // Rank 0 holds these samples now; the film starts again for the next ones.
+    if (Combine(how) == Combine::Reduce)
+      reduceFilm(film, stats, timeout_);
+    else if (Combine(how) == Combine::SendAndStop)
+      sendFilmToRankZero(film, stats, timeout_);
+    stopped_ = Combine(how) != Combine::Reduce;
+    // Rank 0 holds these samples now (or renders them again); the film starts again for the next ones.
     backend.loadFilm(FilmSums::zero(film.width, film.height, film.hasAovs()));
     return false;
   }
@@ -231,6 +340,7 @@ class WorkerSchedule final : public SampleSchedule {
   Answer answer_;
   MPI_Request reply_ = MPI_REQUEST_NULL;
   bool asked_ = false;
+  bool stopped_ = false;  // rank 0 renders the rest alone
   uint32_t done_ = 0, completed_ = 0;
   RenderEnd end_ = RenderEnd::Complete;
 };
@@ -238,8 +348,8 @@ class WorkerSchedule final : public SampleSchedule {
 }  // namespace
 
 std::unique_ptr<SampleSchedule> makeCoordinatorSchedule(const SampleDispenser& dispenser, int ranks, bool showProgress,
-                                                        double timeoutSeconds) {
-  return std::make_unique<CoordinatorSchedule>(dispenser, ranks, showProgress, timeoutSeconds);
+                                                        double timeoutSeconds, bool& ranksLost) {
+  return std::make_unique<CoordinatorSchedule>(dispenser, ranks, showProgress, timeoutSeconds, ranksLost);
 }
 
 std::unique_ptr<SampleSchedule> makeWorkerSchedule(double timeoutSeconds) {

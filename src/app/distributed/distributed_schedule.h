@@ -11,8 +11,13 @@ namespace candela {
 // finish. At a checkpoint or the end, rank 0 answers every request with the pause: then every handed-out batch
 // is rendered, and all ranks add up their films onto rank 0 (film_reduction.h), which writes. Rank 0 shows the
 // progress of all ranks.
+//
+// A rank that has not finished its batches when the others have paused, within `timeoutSeconds` (a stopped
+// process, a hung GPU, a dead node), is given up: the ranks that paused send rank 0 their films and stop, rank 0
+// renders the lost rank's batches since the last checkpoint again and the rest of the render alone, with a
+// warning, and sets `ranksLost` (the lost rank cannot end MPI with the others).
 std::unique_ptr<SampleSchedule> makeCoordinatorSchedule(const SampleDispenser& dispenser, int ranks, bool showProgress,
-                                                        double timeoutSeconds);
+                                                        double timeoutSeconds, bool& ranksLost);
 std::unique_ptr<SampleSchedule> makeWorkerSchedule(double timeoutSeconds);
 
 }  // namespace candela

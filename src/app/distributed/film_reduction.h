@@ -11,4 +11,10 @@ namespace candela {
 // had come to them.
 double reduceFilm(FilmSums& film, FrameStats& stats, double timeoutSeconds);
 
+// Without a collective, for when a rank has stopped answering (the others cannot meet it in one): a rank sends its
+// film and statistics to rank 0, which adds them to `film` and `stats` in float, as the film itself adds; an
+// empty `film` becomes one of the sender's size (the ranks compared their renders before starting).
+void sendFilmToRankZero(const FilmSums& film, const FrameStats& stats, double timeoutSeconds);
+void addFilmFromRank(int rank, FilmSums& film, FrameStats& stats, double timeoutSeconds);
+
 }  // namespace candela

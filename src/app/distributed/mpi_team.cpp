@@ -1,6 +1,8 @@
 #include "app/distributed/mpi_team.h"
 
 #include <climits>
+#include <cstdint>
+#include <stdexcept>
 #include <string>
 
 #include "app/distributed/distributed_schedule.h"
@@ -21,7 +23,55 @@ std::string messageOf(const std::exception_ptr& failure) {
   }
 }
 
+// An identity as one text: name and value, each ended by a zero byte.
+std::string encode(const ExrAttributes& identity) {
+  std::string text;
+  for (const auto& [name, value] : identity) text += name + '\0' + value + '\0';
+  return text;
+}
+
+ExrAttributes decode(const std::string& text) {
+  ExrAttributes identity;
+  for (size_t at = 0; at < text.size();) {
+    const size_t nameEnd = text.find('\0', at), valueEnd = text.find('\0', nameEnd + 1);
+    if (nameEnd == std::string::npos || valueEnd == std::string::npos) break;
+    identity.emplace_back(text.substr(at, nameEnd - at), text.substr(nameEnd + 1, valueEnd - nameEnd - 1));
+    at = valueEnd + 1;
+  }
+  return identity;
+}
+
+// The first setting in which `mine` differs from `writer`'s, as a sentence; empty when none does.
+std::string firstDifference(const ExrAttributes& writer, const ExrAttributes& mine) {
+  for (const auto& [name, value] : mine) {
+    std::string theirs = "(none)";
+    for (const auto& [writerName, writerValue] : writer)
+      if (writerName == name) theirs = writerValue;
+    if (theirs != value)
+      return "renders another job than rank 0: its " + name.substr(name.find('.') + 1) + " is '" + value +
+             "', rank 0's is '" + theirs + "'";
+  }
+  return "";
+}
+
 }  // namespace
+
+void MpiTeam::checkSameRender(const ExrAttributes& identity) {
+  const std::string mine = encode(identity);
+  std::string writers = mine;
+  uint64_t length = writers.size();
+  MPI_Request request;
+  checkMpi(MPI_Ibcast(&length, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD, &request), "comparing the render");
+  waitPolitely(request, timeout_, "waiting for the other ranks to load the scene");
+  if (length > uint64_t(INT_MAX)) throw std::runtime_error("comparing the render: rank 0's settings are too long");
+  writers.resize(size_t(length));
+  checkMpi(MPI_Ibcast(writers.data(), int(length), MPI_CHAR, 0, MPI_COMM_WORLD, &request), "comparing the render");
+  waitPolitely(request, timeout_, "comparing the render");
+  std::exception_ptr failure;
+  if (const std::string difference = firstDifference(decode(writers), identity); !difference.empty())
+    failure = std::make_exception_ptr(std::runtime_error(difference));
+  agree(failure);
+}
 
 void MpiTeam::agree(std::exception_ptr failure) {
   const int rank = session_.rank();
@@ -49,7 +99,7 @@ void MpiTeam::agree(std::exception_ptr failure) {
 }
 
 std::unique_ptr<SampleSchedule> MpiTeam::schedule(const SampleDispenser& dispenser, bool showProgress) {
-  if (writes()) return makeCoordinatorSchedule(dispenser, session_.size(), showProgress, timeout_);
+  if (writes()) return makeCoordinatorSchedule(dispenser, session_.size(), showProgress, timeout_, ranksLost_);
   return makeWorkerSchedule(timeout_);
 }
 

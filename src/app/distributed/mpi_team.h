@@ -13,11 +13,15 @@ class MpiTeam final : public RenderTeam {
   bool writes() const override { return session_.rank() == 0; }
   int localIndex() const override { return session_.localRank(); }
   void agree(std::exception_ptr failure) override;
+  void checkSameRender(const ExrAttributes& identity) override;
   std::unique_ptr<SampleSchedule> schedule(const SampleDispenser& dispenser, bool showProgress) override;
+  // Whether rank 0 gave up a rank that stopped answering (distributed_schedule.h) and rendered on without it.
+  bool ranksLost() const { return ranksLost_; }
 
  private:
   const MpiSession& session_;
   double timeout_;
+  bool ranksLost_ = false;
 };
 
 }  // namespace candela

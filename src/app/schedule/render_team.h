@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "app/schedule/sample_schedule.h"
+#include "io/images/image_io.h"
 
 namespace candela {
 
@@ -27,6 +28,11 @@ class RenderTeam {
   // none failed; otherwise every process throws AgreedFailure, the writer's with the first failing process's
   // message and which process it was.
   virtual void agree(std::exception_ptr failure) = 0;
+  // Every process calls it before rendering, with its render's identity (checkpoint/render_identity.h:
+  // teamIdentity). Returns when every process has the writer's; otherwise every process throws AgreedFailure, the
+  // writer's naming the first process that differs and the first difference, so that no process adds samples of
+  // another scene or settings to the image, or waits for a film of another size.
+  virtual void checkSameRender(const ExrAttributes& identity) = 0;
   // The schedule of this process; the writer's hands out `dispenser`'s indices to all.
   virtual std::unique_ptr<SampleSchedule> schedule(const SampleDispenser& dispenser, bool showProgress) = 0;
 };

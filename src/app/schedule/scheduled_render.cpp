@@ -1,8 +1,11 @@
 #include "app/schedule/scheduled_render.h"
 
 #include <chrono>
+#include <cstdio>
+#include <stdexcept>
 
 #include "app/checkpoint/checkpoint_file.h"
+#include "io/load_diagnostics.h"
 
 namespace candela {
 
@@ -35,9 +38,19 @@ ScheduledRenderResult renderScheduled(Backend& backend, SampleSchedule& schedule
     FrameStats combined = result.stats;
     result.writes = schedule.combine(backend, combined);
     result.samples = schedule.completed();
-    if (result.writes && !checkpoint.path.empty())
-      writeCheckpoint(checkpoint.path,
-                      {checkpoint.identity, result.samples, checkpoint.samplesPerPixel, backend.readFilm()});
+    if (result.writes && !checkpoint.path.empty()) {
+      try {
+        writeCheckpoint(checkpoint.path,
+                        {checkpoint.identity, result.samples, checkpoint.samplesPerPixel, backend.readFilm()});
+        result.checkpointFailed = false;
+      } catch (const std::invalid_argument&) {
+        throw;
+      } catch (const std::exception& e) {  // WriteError, or OpenEXR's own
+        std::fprintf(stderr, "candela: warning: no checkpoint after %u samples per pixel: %s; the render goes on\n",
+                     result.samples, printableText(e.what()).c_str());
+        result.checkpointFailed = true;
+      }
+    }
     schedule.checkpointWritten();
     if (a.kind == Assignment::Kind::End) {
       result.stats = combined;

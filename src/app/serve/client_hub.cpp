@@ -4,6 +4,8 @@
 
 #include <cstdio>
 
+#include "io/load_diagnostics.h"
+
 namespace candela {
 
 namespace {
@@ -72,6 +74,11 @@ void ClientHub::receive(uint64_t client, ClientMessage message) {
                  action->kind == ActionMessage::Kind::SaveView);
   if (client != controller_ && !anyoneMay) return;  // watchers look; they do not steer
   if (messages_.size() >= kMaxQueuedMessages) return;
+  if (action && action->kind != ActionMessage::Kind::TakeControl)
+    for (const IncomingMessage& waiting : messages_)
+      if (const auto* same = std::get_if<ActionMessage>(&waiting.message);
+          waiting.client == client && same && same->kind == action->kind)
+        return;
   messages_.push_back({client, std::move(message)});
   work_.notify_all();
 }
@@ -87,7 +94,7 @@ void ClientHub::droppedLocked(uint64_t client, const std::string& problem) {
   std::fprintf(stderr,
                "candela serve: dropped a message from client %llu: %s (such messages are dropped "
                "silently from now on)\n",
-               static_cast<unsigned long long>(client), problem.c_str());
+               static_cast<unsigned long long>(client), printableText(problem).c_str());
 }
 
 void ClientHub::waitForWork(std::chrono::milliseconds timeout) {

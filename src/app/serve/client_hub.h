@@ -18,7 +18,8 @@ namespace candela {
 class ClientConnection {
  public:
   virtual ~ClientConnection() = default;
-  // Queued behind earlier messages (a bounded queue: past it, messages are dropped).
+  // Queued behind earlier messages, bounded in bytes (outgoing_queue.h): past the bound text messages are
+  // dropped, and a binary message (a screenshot) takes the place of one still waiting.
   virtual void sendMessage(std::shared_ptr<const std::string> message, bool binary) = 0;
   // Takes the place of a frame not yet sent: a slow connection gets the latest frame, never a queue of old ones.
   virtual void sendFrame(std::shared_ptr<const std::string> frame) = 0;
@@ -75,7 +76,8 @@ class ClientHub {
   void detach(uint64_t client);
   // Lets every connection go (the network thread has stopped).
   void detachAll();
-  // A valid message from `client`. Input from a client without control is dropped.
+  // A valid message from `client`. Input from a client without control is dropped, and so is a request for a
+  // screenshot or a view file while the same request of the same client still waits.
   void receive(uint64_t client, ClientMessage message);
   // An invalid or unwelcome message: logged once per kind of problem, then dropped silently.
   void dropped(uint64_t client, const std::string& problem);

@@ -6,6 +6,8 @@
 #include <iterator>
 #include <string_view>
 
+#include "io/load_diagnostics.h"
+
 namespace candela {
 
 namespace {
@@ -114,7 +116,7 @@ bool overrides(Reader& r, SettingsMessage& m) {
     const OverrideParameter* parameter = nullptr;
     for (const OverrideParameter& p : overrideParameters())
       if (name == p.name) parameter = &p;
-    if (!parameter) return r.fail("overrides." + name, "names no material parameter");
+    if (!parameter) return r.fail("overrides." + quotedClientText(name), "names no material parameter");
     if (value.is_null()) {
       m.overrides.emplace_back(name, std::nullopt);
       continue;
@@ -155,6 +157,11 @@ std::optional<ClientMessage> settings(Reader& r) {
 const char* shadingName(ShadingModel model) { return kShadingNames[int(model)]; }
 
 const char* streamName(FrameStream stream) { return kStreamNames[int(stream)]; }
+
+std::string quotedClientText(std::string_view text) {
+  if (text.size() <= kMaxQuotedClientBytes) return printableText(text);
+  return printableText(text.substr(0, kMaxQuotedClientBytes)) + "...";
+}
 
 std::optional<ClientMessage> parseClientMessage(std::string_view text, std::string& problem) {
   const Json json = Json::parse(text, nullptr, /*allow_exceptions=*/false);
@@ -197,7 +204,7 @@ std::optional<ClientMessage> parseClientMessage(std::string_view text, std::stri
     if (!stream) return problem = "stream needs a codec", std::nullopt;
     return StreamMessage{FrameStream(*stream)};
   }
-  problem = "unknown type '" + type.substr(0, 40) + "'";
+  problem = "unknown type '" + quotedClientText(type) + "'";
   return std::nullopt;
 }
 

@@ -78,6 +78,12 @@ constexpr double kMaxAnimationSeconds = 1e9;
 // of the wrong kind or out of range). Never throws for any input.
 std::optional<ClientMessage> parseClientMessage(std::string_view text, std::string& problem);
 
+// Text a client sent, as a message about it quotes it: at most kMaxQuotedClientBytes of it (then "..."), made
+// printable (io/load_diagnostics.h: printableText), so that no client writes escape sequences or long lines to
+// the server's terminal.
+constexpr size_t kMaxQuotedClientBytes = 40;
+std::string quotedClientText(std::string_view text);
+
 // The names the page and the messages use.
 const char* shadingName(ShadingModel model);  // "own", "phong", "pbr", "disney"
 const char* streamName(FrameStream stream);   // "jpeg", "h264"

@@ -6,7 +6,8 @@
 #include <boost/beast/http.hpp>
 #include <boost/beast/websocket/rfc6455.hpp>
 
-#include <atomic>
+#include <list>
+#include <map>
 #include <stdexcept>
 
 #include "app/serve/web_assets.h"
@@ -24,32 +25,67 @@ namespace {
 std::string_view text(beast::string_view s) { return {s.data(), s.size()}; }
 
 constexpr size_t kMaxHeaderBytes = 8 * 1024;
-constexpr std::chrono::seconds kRequestTimeout{15};
-constexpr int kMaxConnections = 64;
+
+class HttpSession;
+
+// The HTTP connections open now, by the address they come from, and those that have not yet shown the token (or,
+// without a token, made a request addressed to a loopback name), oldest first. A connection over a limit takes
+// the place of the oldest unproven one (of its address, else of any), so that connections that send nothing, or
+// a header byte by byte, cannot keep anyone else out: they are the first to go. Only the network thread uses it.
+class Connections {
+ public:
+  // Whether a connection from `address` may open; closes an unproven one to make room where needed.
+  bool admit(const asio::ip::address& address);
+  std::list<HttpSession*>::iterator opened(HttpSession* session);
+  void proven(std::list<HttpSession*>::iterator& place);
+  void closed(const asio::ip::address& address, std::list<HttpSession*>::iterator& place);
+
+ private:
+  bool evictOldest(const asio::ip::address* of);
+  std::map<asio::ip::address, int> perAddress_;
+  int total_ = 0;
+  std::list<HttpSession*> unproven_;  // oldest first
+};
 
 // One HTTP connection: reads requests (headers only; bodies are refused) and answers each, until the browser
-// closes it or upgrades it to the WebSocket.
+// closes it or upgrades it to the WebSocket. Its first request must come within kHeaderTimeout of the connection
+// and carry the token; a request without it gets 403 and the connection is closed.
 class HttpSession : public std::enable_shared_from_this<HttpSession> {
  public:
-  HttpSession(tcp::socket socket, const AccessToken& token, ClientHub& hub, std::atomic<int>& connections)
-      : stream_(std::move(socket)), token_(token), hub_(hub), connections_(connections) {
-    ++connections_;
-  }
-  ~HttpSession() { --connections_; }
+  HttpSession(tcp::socket socket, asio::ip::address address, const AccessToken& token, ClientHub& hub,
+              Connections& connections)
+      : address_(std::move(address)),
+        stream_(std::move(socket)),
+        token_(token),
+        hub_(hub),
+        connections_(connections),
+        place_(connections.opened(this)) {}
+  ~HttpSession() { release(); }
+
+  const asio::ip::address& address() const { return address_; }
 
   void read() {
     parser_.emplace();
     parser_->header_limit(kMaxHeaderBytes);
     parser_->body_limit(0);
-    stream_.expires_after(kRequestTimeout);
+    stream_.expires_after(kHeaderTimeout);
     http::async_read(stream_, buffer_, *parser_,
                      [self = shared_from_this()](beast::error_code error, size_t) { self->onRead(error); });
+  }
+
+  // Makes room for another connection at once: it counts no more, and its pending read ends, and with it this
+  // connection.
+  void evict() {
+    release();
+    beast::error_code ignored;
+    stream_.socket().close(ignored);
   }
 
  private:
   void onRead(beast::error_code error) {
     if (error) {
-      if (error != http::error::end_of_stream && error != beast::error::timeout)
+      if (error != http::error::end_of_stream && error != beast::error::timeout &&
+          error != asio::error::operation_aborted && error != asio::error::bad_descriptor)
         respond(http::status::bad_request, "text/plain", "bad request\n", false);
       else
         close();
@@ -67,9 +103,10 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
       respond(http::status::forbidden, "text/plain",
               "forbidden: this server needs its token; open the address candela serve printed (it ends in "
               "?token=...)\n",
-              request.keep_alive());
+              false);
       return;
     }
+    connections_.proven(place_);
     if (beast::websocket::is_upgrade(request)) {
       if (target.substr(0, target.find('?')) != "/ws") {
         respond(http::status::not_found, "text/plain", "not found\n", false);
@@ -111,6 +148,7 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
     response->body() = std::string(body);
     response->keep_alive(keepAlive);
     response->prepare_payload();
+    stream_.expires_after(kHeaderTimeout);  // a client that reads nothing cannot hold the connection either
     http::async_write(stream_, *response, [self = shared_from_this(), response](beast::error_code error, size_t) {
       if (error || !response->keep_alive())
         self->close();
@@ -124,13 +162,55 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
     stream_.socket().shutdown(tcp::socket::shutdown_send, ignored);
   }
 
+  void release() {
+    if (released_) return;
+    released_ = true;
+    connections_.closed(address_, place_);
+  }
+
+  asio::ip::address address_;
   beast::tcp_stream stream_;
   beast::flat_buffer buffer_;
   std::optional<http::request_parser<http::empty_body>> parser_;
   const AccessToken& token_;
   ClientHub& hub_;
-  std::atomic<int>& connections_;
+  Connections& connections_;
+  std::list<HttpSession*>::iterator place_;  // in the unproven connections; their end() once proven
+  bool released_ = false;
 };
+
+bool Connections::evictOldest(const asio::ip::address* of) {
+  for (HttpSession* session : unproven_)
+    if (!of || session->address() == *of) {
+      session->evict();
+      return true;
+    }
+  return false;
+}
+
+bool Connections::admit(const asio::ip::address& address) {
+  const auto it = perAddress_.find(address);
+  if (it != perAddress_.end() && it->second >= kMaxHttpConnectionsPerAddress && !evictOldest(&address)) return false;
+  return total_ < kMaxHttpConnections || evictOldest(nullptr);
+}
+
+std::list<HttpSession*>::iterator Connections::opened(HttpSession* session) {
+  ++perAddress_[session->address()];
+  ++total_;
+  return unproven_.insert(unproven_.end(), session);
+}
+
+void Connections::proven(std::list<HttpSession*>::iterator& place) {
+  if (place == unproven_.end()) return;
+  unproven_.erase(place);
+  place = unproven_.end();
+}
+
+void Connections::closed(const asio::ip::address& address, std::list<HttpSession*>::iterator& place) {
+  proven(place);
+  --total_;
+  if (--perAddress_[address] == 0) perAddress_.erase(address);
+}
 
 }  // namespace
 
@@ -139,7 +219,7 @@ struct HttpServer::Impl {
   // them.
   AccessToken token;
   ClientHub& hub;
-  std::atomic<int> connections{0};
+  Connections connections;
   asio::io_context io{1};
   tcp::acceptor acceptor{io};
 
@@ -148,8 +228,12 @@ struct HttpServer::Impl {
   void accept() {
     acceptor.async_accept(asio::make_strand(io), [this](beast::error_code error, tcp::socket socket) {
       if (error == asio::error::operation_aborted) return;
-      if (!error && connections < kMaxConnections)
-        std::make_shared<HttpSession>(std::move(socket), token, hub, connections)->read();
+      beast::error_code peerError;
+      const tcp::endpoint peer = error ? tcp::endpoint() : socket.remote_endpoint(peerError);
+      // A connection over the limits is closed at once (the socket's destructor); an evicted one goes once its
+      // read has ended.
+      if (!error && !peerError && connections.admit(peer.address()))
+        std::make_shared<HttpSession>(std::move(socket), peer.address(), token, hub, connections)->read();
       accept();
     });
   }

@@ -1,4 +1,5 @@
 #pragma once
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -9,9 +10,17 @@
 
 namespace candela {
 
+// At most this many HTTP connections at once, and this many from one address (WebSockets are ClientHub's).
+constexpr int kMaxHttpConnections = 64;
+constexpr int kMaxHttpConnectionsPerAddress = 16;
+// A request's header must arrive within this time (from the connection, or from the answer before it).
+constexpr std::chrono::seconds kHeaderTimeout{5};
+
 // The HTTP and WebSocket side of candela serve, on Boost.Beast, in one network thread of its own. It answers GET
 // for the page's embedded files (web_assets.h) and nothing else, upgrades "/ws" to the WebSocket that carries
-// frames and messages (websocket_session.h), and refuses every request without the token when one is required.
+// frames and messages (websocket_session.h), and refuses every request without the token when one is required,
+// closing the connection. A connection that has not shown the token is the first to be closed when another needs
+// its place, so that clients that open connections and send nothing cannot keep others out.
 class HttpServer {
  public:
   // Binds `address` and `port` (0: any free port); throws std::runtime_error with one sentence when it cannot.

@@ -268,14 +268,15 @@ void ServeLoop::run(const std::atomic<bool>& stop) {
       controlChanges_ = changes;
     }
     for (uint64_t client : hub_.takeJoined()) greet(client);
-    for (const IncomingMessage& m : hub_.takeMessages()) handle(m);
+    for (const IncomingMessage& m : hub_.takeMessages())
+      if (!stop) handle(m);  // a stop need not wait for the screenshots asked for
     // Once for all the messages that came since the last frame: a slider dragged quickly (or a flood of
     // edits) costs one update of the backend's materials or environment, not one for each message.
     if (environmentEdited_) renderer_.applyEnvironmentControls();
     if (materialsEdited_) renderer_.applyMaterialControls();
     environmentEdited_ = materialsEdited_ = false;
     for (const FrameDelivery& d : hub_.takeDeliveries()) quality_.recordDelivery(d.bytes, d.seconds, d.moving);
-    if (!hub_.anyReady()) continue;
+    if (stop || !hub_.anyReady()) continue;
     renderFrame(std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count());
     if (options_.frames > 0 && framesSent_ >= options_.frames) break;
   }

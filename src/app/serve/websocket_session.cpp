@@ -86,7 +86,7 @@ void WebSocketSession::leave() {
 
 void WebSocketSession::sendMessage(std::shared_ptr<const std::string> message, bool binary) {
   boost::asio::post(ws_.get_executor(), [self = shared_from_this(), message = std::move(message), binary] {
-    if (self->outgoing_.size() < kMaxQueuedOutgoing) self->outgoing_.emplace_back(message, binary);
+    self->outgoing_.push(message, binary);
     self->pump();
   });
 }
@@ -102,9 +102,9 @@ void WebSocketSession::sendFrame(std::shared_ptr<const std::string> frame) {
 void WebSocketSession::pump() {
   if (writing_) return;
   bool binary = true;
-  if (!outgoing_.empty()) {
-    std::tie(writing_, binary) = outgoing_.front();
-    outgoing_.pop_front();
+  if (std::optional<OutgoingQueue::Message> message = outgoing_.pop()) {
+    writing_ = std::move(message->bytes);
+    binary = message->binary;
   } else if (pendingFrame_) {
     writing_ = std::move(pendingFrame_);
     pendingFrame_.reset();

@@ -7,23 +7,22 @@
 #include <boost/beast/websocket/stream.hpp>
 
 #include <chrono>
-#include <deque>
 #include <memory>
 #include <string>
 
 #include "app/serve/client_hub.h"
+#include "app/serve/outgoing_queue.h"
 
 namespace candela {
 
 // One browser's WebSocket. Reads text messages, checks their size, rate and content and hands the valid ones to
-// the hub; writes queued messages first, then the latest frame. Lives on the network thread: sendMessage and
-// sendFrame post their work there.
+// the hub; writes queued messages first (bounded in bytes: outgoing_queue.h), then the latest frame. Lives on the
+// network thread: sendMessage and sendFrame post their work there.
 class WebSocketSession : public ClientConnection, public std::enable_shared_from_this<WebSocketSession> {
  public:
   static constexpr size_t kMaxMessageBytes = 16 * 1024;
   static constexpr double kMessagesPerSecond = 200.0;  // sustained; bursts up to kMessageBurst
   static constexpr double kMessageBurst = 400.0;
-  static constexpr size_t kMaxQueuedOutgoing = 64;
 
   WebSocketSession(boost::asio::ip::tcp::socket socket, ClientHub& hub);
   void run(boost::beast::http::request<boost::beast::http::empty_body> upgrade);
@@ -43,7 +42,7 @@ class WebSocketSession : public ClientConnection, public std::enable_shared_from
   ClientHub& hub_;
   uint64_t id_ = 0;
   boost::beast::flat_buffer buffer_;
-  std::deque<std::pair<std::shared_ptr<const std::string>, bool>> outgoing_;
+  OutgoingQueue outgoing_;
   std::shared_ptr<const std::string> pendingFrame_;
   std::shared_ptr<const std::string> writing_;
   double tokens_ = kMessageBurst;

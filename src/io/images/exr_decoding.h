@@ -13,4 +13,11 @@ namespace candela {
 // kMaxDecodedImageBytes, all checked on the header before any pixel is read. Throws LoadError naming `name`.
 Texture decodeExr(const std::string& name, const uint8_t* data, size_t size, uint64_t maxPixels = UINT64_MAX);
 
+// The checks decodeExr makes before OpenEXR reads anything, for every other reader of OpenEXR files: every
+// attribute lies within the file and has the size it declares (OpenEXR allocates what an attribute claims), and
+// with `checkDataWindows`, every data window is within the image limits (a reader of other files than images
+// checks their windows itself). Throws LoadError naming `name`.
+void checkExrHeaders(const std::string& name, const uint8_t* data, size_t size, uint64_t maxPixels = UINT64_MAX,
+                     bool checkDataWindows = true);
+
 }  // namespace candela
