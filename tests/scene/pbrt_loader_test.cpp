@@ -890,6 +890,43 @@ TEST(PbrtLoader, InvertedImageTextures) {
   EXPECT_FLOAT_EQ(inverted.floats[1], 0.0f);
 }
 
+TEST(PbrtLoader, RepeatedShapesAndIncludesShareTheirMeshes) {
+  TempFolder folder;
+  folder.write("part.pbrt", "AttributeBegin\nTranslate 0 0 1\n" + std::string(kTriangle) + "AttributeEnd\n");
+  std::string main = folder.write("main.pbrt", std::string(kMirroredCamera) +
+                                                   "Include \"part.pbrt\"\nTranslate 5 0 0\nInclude \"part.pbrt\"\n"
+                                                   "Shape \"sphere\" \"float radius\" 2\n"
+                                                   "Translate 0 5 0\nShape \"sphere\" \"float radius\" 3\n");
+  LoadWarnings warnings;
+  Scene scene = loadPbrt(main, warnings);
+  ASSERT_EQ(scene.meshes.size(), 2u);  // one triangle, one sphere
+  ASSERT_EQ(scene.instances.size(), 4u);
+  EXPECT_EQ(scene.instances[0].meshId, scene.instances[1].meshId);
+  EXPECT_EQ(scene.instances[2].meshId, scene.instances[3].meshId);
+  // The second Include is placed where reading it would put it: 5 along x (mirrored) and 1 along z.
+  const Vec3 first = scene.instances[0].objectToWorld.point({0, 0, 0});
+  const Vec3 second = scene.instances[1].objectToWorld.point({0, 0, 0});
+  EXPECT_NEAR(std::fabs(second.x - first.x), 5.0f, 1e-5f);
+  EXPECT_NEAR(second.z, 1.0f, 1e-5f);
+  EXPECT_NEAR(length(scene.instances[3].objectToWorld.point({1, 0, 0}) -
+                     scene.instances[3].objectToWorld.point({0, 0, 0})),
+              3.0f, 1e-5f);
+}
+
+TEST(PbrtLoader, TexturesNoMaterialUsesAreNotDecoded) {
+  TempFolder folder;
+  std::string main =
+      folder.write("main.pbrt", std::string(kMirroredCamera) +
+                                    "Texture \"unused\" \"spectrum\" \"imagemap\" \"string filename\" "
+                                    "\"nowhere.png\"\n"
+                                    "Texture \"mixed\" \"spectrum\" \"mix\" \"texture tex1\" \"unused\"\n" +
+                                    kTriangle);
+  LoadWarnings warnings;
+  Scene scene = loadPbrt(main, warnings);
+  EXPECT_TRUE(scene.textures.empty());
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages.front();
+}
+
 TEST(PbrtLoader, SceneCacheNoticesChangedIncludes) {
   TempFolder folder;
   folder.write("part.pbrt", kTriangle);
@@ -909,8 +946,10 @@ TEST(PbrtLoader, QuadricsAreTessellatedOnTheirSurface) {
                          "Shape \"cylinder\" \"float radius\" 1 \"float zmin\" 0 "
                          "\"float zmax\" 3\n");
   ASSERT_EQ(scene.meshes.size(), 3u);
+  ASSERT_EQ(scene.instances[0].meshId, 0u);
   for (size_t i = 0; i < scene.meshes[0].positions.size(); ++i) {
-    EXPECT_NEAR(length(scene.meshes[0].positions[i]), 2.0f, 1e-4f);
+    // A whole sphere is the one of radius 1, scaled by its instance.
+    EXPECT_NEAR(length(scene.instances[0].objectToWorld.point(scene.meshes[0].positions[i])), 2.0f, 1e-4f);
     EXPECT_GT(dot(scene.meshes[0].normals[i], scene.meshes[0].positions[i]), 0.0f);  // outwards
   }
   for (Vec3 p : scene.meshes[1].positions) EXPECT_FLOAT_EQ(p.z, 0.5f);
