@@ -9,6 +9,7 @@
 #include "core/bounds.h"
 #include "core/file_extension.h"
 #include "io/images/image_decoding.h"
+#include "io/load_budget.h"
 #include "io/load_diagnostics.h"
 #include "scene/builtin_scenes.h"
 #include "scene/loaders/gltf/gltf_loader.h"
@@ -151,6 +152,7 @@ Scene loadScene(const std::string& spec, const SceneLoadOptions& options) {
   Scene scene;
   LoadWarnings warnings;
   setTextureLimits(options.textureLimits);
+  beginLoadBudget();
   if (!makeBuiltinScene(spec, scene))
     scene = withMemoryReported(spec, [&] { return loadFile(spec, options, warnings); });
   fitSceneTextures(scene, options.textureLimits, warnings);

@@ -22,7 +22,7 @@ class AreaDownscaler {
         channels_(channels),
         pixels_(size_t(targetWidth) * targetHeight * channels) {
     if (copies()) return;
-    sums_.assign(size_t(targetWidth) * channels, 0.0);
+    sums_.assign(size_t(targetWidth) * channels, 0);
     columnOf_.resize(sourceWidth);
     columnCounts_.assign(targetWidth, 0);
     for (uint32_t x = 0; x < sourceWidth; ++x) {
@@ -43,7 +43,7 @@ class AreaDownscaler {
     targetRow_ = target;
     for (uint32_t x = 0; x < sourceWidth_; ++x)
       for (uint32_t c = 0; c < channels_; ++c)
-        sums_[size_t(columnOf_[x]) * channels_ + c] += double(row[size_t(x) * channels_ + c]);
+        sums_[size_t(columnOf_[x]) * channels_ + c] += Sum(row[size_t(x) * channels_ + c]);
     ++rowsInSums_;
     ++sourceRow_;
   }
@@ -65,18 +65,20 @@ class AreaDownscaler {
     Sample* out = &pixels_[size_t(targetRow_) * targetWidth_ * channels_];
     for (uint32_t x = 0; x < targetWidth_; ++x)
       for (uint32_t c = 0; c < channels_; ++c) {
-        double& sum = sums_[size_t(x) * channels_ + c];
-        const double mean = sum / (double(columnCounts_[x]) * rowsInSums_);
+        Sum& sum = sums_[size_t(x) * channels_ + c];
+        const double mean = double(sum) / (double(columnCounts_[x]) * rowsInSums_);
         // Integer samples round to nearest; the mean of integers in range stays in range.
         out[size_t(x) * channels_ + c] = std::is_integral_v<Sample> ? Sample(mean + 0.5) : Sample(mean);
-        sum = 0.0;
+        sum = 0;
       }
     rowsInSums_ = 0;
   }
 
   uint32_t sourceWidth_, sourceHeight_, targetWidth_, targetHeight_, channels_;
   std::vector<Sample> pixels_;
-  std::vector<double> sums_;
+  // Integer samples add up exactly, and faster, as integers.
+  using Sum = std::conditional_t<std::is_integral_v<Sample>, uint64_t, double>;
+  std::vector<Sum> sums_;
   std::vector<uint32_t> columnOf_;
   std::vector<uint32_t> columnCounts_;
   uint32_t sourceRow_ = 0;
