@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <string>
 
 #include "io/load_diagnostics.h"
@@ -35,5 +36,20 @@ void releaseLoadMemory(uint64_t bytes);
 
 // Bytes the load may still charge.
 uint64_t loadMemoryLeft();
+
+// Where a load is, for a progress line: how long it has run, what it has charged, and the element it charged last.
+struct LoadProgress {
+  double seconds = 0;
+  uint64_t charged = 0;
+  std::string file, element;
+};
+
+// Tells the progress listener (below) where the load is, when it is time for a line. Cheap: call it per shape,
+// per few hundred rows of an image. chargeLoadMemory calls it too.
+void noteLoadProgress(const std::string& file, const std::string& element);
+
+// Called with the load's progress at most every `interval` seconds once it has run that long, from whichever
+// thread charged last (never two calls at once); an empty function stops the calls.
+void setLoadProgressListener(std::function<void(const LoadProgress&)> listener, double interval = 2.0);
 
 }  // namespace candela

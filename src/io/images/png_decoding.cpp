@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "io/images/downscaled_texture.h"
+#include "io/load_budget.h"
 #include "io/load_diagnostics.h"
 
 namespace candela {
@@ -125,6 +126,8 @@ Texture decodePng(const std::string& name, const uint8_t* data, size_t size, uin
     for (uint32_t y = 0; y < height; ++y) {
       if (!readRows(reader, rows.data(), 1, rowBytes)) failPng(name, reader);
       target.addRow(rows.data());
+      if (y % 256 == 255)
+        noteLoadProgress(name, "decoding row " + std::to_string(y + 1) + " of " + std::to_string(height));
     }
   }
   return finishTexture(name, target);

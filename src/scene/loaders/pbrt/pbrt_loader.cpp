@@ -487,6 +487,7 @@ class PbrtReader {
 
   void readShape(const std::string& type, const PbrtParameters& params) {
     if (!worldBegun_) chooseWorldMirror();
+    noteLoadProgress(params.file + ":" + std::to_string(params.line), "shape '" + type + "'");
     if (!state_.material && !state_.materialName.empty() && materials_.isNamed(state_.materialName))
       state_.material = materials_.named(state_.materialName, params.file, params.line);
     // A shape equal to one made before shares its mesh, unless it emits: its emission depends on where it is.
