@@ -7,6 +7,7 @@
 
 #include "io/images/exr_memory_stream.h"
 #include "io/images/image_decoding.h"
+#include "io/load_budget.h"
 #include "io/load_diagnostics.h"
 
 namespace candela {
@@ -145,6 +146,9 @@ Texture decodeExr(const std::string& name, const uint8_t* data, size_t size, uin
     const int64_t width = int64_t(window.max.x) - window.min.x + 1;
     const int64_t height = int64_t(window.max.y) - window.min.y + 1;
     checkExrSize(name, width, height, size, maxPixels);
+    // The half-float pixels OpenEXR fills (returned below) and the float texture made from them.
+    chargeLoadMemory(uint64_t(width) * uint64_t(height) * (sizeof(Imf::Rgba) + 3 * sizeof(float)), name,
+                     "an OpenEXR image of " + std::to_string(width) + "x" + std::to_string(height) + " pixels");
     Imf::Array2D<Imf::Rgba> pixels(height, width);
     // OpenEXR addresses pixel (x, y) of the window at base + x + y * width; base itself lies outside the array
     // unless the window starts at the origin, so it is computed as an address, not by pointer arithmetic.
@@ -163,6 +167,7 @@ Texture decodeExr(const std::string& name, const uint8_t* data, size_t size, uin
         out[1] = p.g;
         out[2] = p.b;
       }
+    releaseLoadMemory(uint64_t(width) * uint64_t(height) * sizeof(Imf::Rgba));
   } catch (const LoadError&) {
     throw;
   } catch (const std::exception& e) {
