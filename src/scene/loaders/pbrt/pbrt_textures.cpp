@@ -117,6 +117,8 @@ int32_t PbrtTextures::loadImage(const std::string& path, bool srgb, const std::s
 int32_t PbrtTextures::invertedImage(int32_t image) {
   if (auto found = inverted_.find(image); found != inverted_.end()) return found->second;
   const Texture& source = context_.scene.textures[size_t(image)];
+  chargeLoadMemory(uint64_t(source.width) * source.height * source.channels * sizeof(float), source.name,
+                   "its inverted copy");
   Texture out;
   out.name = source.name + " (inverted)";
   out.width = source.width;
@@ -178,6 +180,7 @@ int32_t PbrtTextures::mappedImage(int32_t image, const std::string& key, const s
   auto cacheKey = std::make_pair(image, key);
   if (auto found = mapped_.find(cacheKey); found != mapped_.end()) return found->second;
   const Texture& source = context_.scene.textures[size_t(image)];
+  chargeLoadMemory(uint64_t(source.width) * source.height * sizeof(float), source.name, "its " + key + " copy");
   Texture out;
   out.name = source.name + " (" + key + ")";
   out.width = source.width;
