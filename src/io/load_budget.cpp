@@ -34,7 +34,7 @@ void noteLoadProgress(const std::string& file, const std::string& element) {
 
 void beginLoadBudget() {
   charged = 0;
-  budget = availableMemoryBytes();
+  budget = availableMemoryBytes() / 2;
   std::lock_guard lock(progressMutex);
   loadStart = lastProgress = Clock::now();
 }

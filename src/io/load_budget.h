@@ -12,9 +12,10 @@ namespace candela {
 // a decompressed size) and charges that estimate: once the charges exceed the budget, the load stops with one
 // LoadError that names the file, the element and the estimate, instead of decoding for minutes into swap.
 //
-// The budget is what the process may still allocate when the load begins (availableMemoryBytes: the machine's
-// available memory, the cgroup's and ulimit's room, --max-memory). It is one for the process, so that loaders on
-// several threads charge the same budget.
+// The budget is half of what the process may still allocate when the load begins (availableMemoryBytes: the
+// machine's available memory, the cgroup's and ulimit's room, --max-memory); the other half is left for what the
+// renderer makes of the scene (its flat arrays, mip levels and acceleration structures). It is one for the
+// process, so that loaders on several threads charge the same budget.
 
 // The error of a load over its budget. Code that survives a LoadError of one part (a texture left out with a
 // warning) lets this one through: the load as a whole must stop.
