@@ -145,8 +145,18 @@ def case_tall_pfm(candela, workdir):
 
 
 def case_ply_gzip_bomb(candela, workdir):
-    header = (b"ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-              b"property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n")
+    return gzip_bomb(workdir, "binary_little_endian")
+
+
+def case_ply_gzip_ascii_bomb(candela, workdir):
+    return gzip_bomb(workdir, "ascii")
+
+
+def gzip_bomb(workdir, encoding):
+    """A gzip PLY of three vertices and a face, followed by 1 GiB of zeros."""
+    header = (b"ply\nformat %s 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+              b"property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+              % encoding.encode())
     compressor = zlib.compressobj(9, zlib.DEFLATED, 31)
     block = b"\0" * (1 << 20)
     data = compressor.compress(header) + b"".join(compressor.compress(block) for _ in range(1024))

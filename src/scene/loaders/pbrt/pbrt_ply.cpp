@@ -87,29 +87,35 @@ uint64_t smallestElementBytes(const tinyply::PlyElement& element, bool binary) {
   return bytes;
 }
 
-// The most bytes the elements a binary PLY header declares can take after it, or nothing when the header is not
-// complete in `bytes` or declares no such bound (ASCII values, lists whose counts may be large).
+// The longest an ASCII PLY value may be, with the white space after it: real numbers need fewer than 32
+// characters.
+constexpr uint64_t kMaxAsciiValueBytes = 64;
+
+// The most bytes the elements a PLY header declares can take after it (an ASCII value at most
+// kMaxAsciiValueBytes), or nothing when the header is not complete in `bytes` or declares no such bound (lists
+// whose counts may be large).
 std::optional<uint64_t> plyBytesBound(std::vector<uint8_t> bytes) {
   MemoryBuffer buffer(bytes);
   std::istream stream(&buffer);
   tinyply::PlyFile ply;
   try {
-    if (!ply.parse_header(stream) || !ply.is_binary_file()) return std::nullopt;
+    if (!ply.parse_header(stream)) return std::nullopt;
   } catch (const std::exception&) {
     return std::nullopt;
   }
+  const bool binary = ply.is_binary_file();
   uint64_t total = uint64_t(std::max<std::streamoff>(stream.tellg(), 0));
   for (const tinyply::PlyElement& e : ply.get_elements()) {
     uint64_t each = 0;
     for (const tinyply::PlyProperty& p : e.properties) {
-      const uint64_t stride = uint64_t(tinyply::PropertyTable[p.propertyType].stride);
+      const uint64_t stride = binary ? uint64_t(tinyply::PropertyTable[p.propertyType].stride) : kMaxAsciiValueBytes;
       if (!p.isList) {
         each += stride;
         continue;
       }
       const int countBytes = tinyply::PropertyTable[p.listType].stride;
       if (countBytes > 2) return std::nullopt;
-      each += uint64_t(countBytes) + ((uint64_t(1) << (8 * countBytes)) - 1) * stride;
+      each += (binary ? uint64_t(countBytes) : kMaxAsciiValueBytes) + ((uint64_t(1) << (8 * countBytes)) - 1) * stride;
     }
     if (each > 0 && e.size > (uint64_t(1) << 62) / each) return std::nullopt;
     total += e.size * each;
@@ -118,8 +124,8 @@ std::optional<uint64_t> plyBytesBound(std::vector<uint8_t> bytes) {
   return total;
 }
 
-// The content of a gzip file, decompressed no further than a binary header says its elements can reach (what
-// follows is never read), charged to the load's memory budget as it grows, and refused beyond the size any input
+// The content of a gzip file, decompressed no further than its header says its elements can reach (what follows
+// is never read), charged to the load's memory budget as it grows, and refused beyond the size any input
 // may have (maxInputFileBytes): a small "zip bomb" cannot fill the memory.
 std::vector<uint8_t> gunzip(const std::string& path, const std::vector<uint8_t>& compressed, uint64_t& charged) {
   z_stream stream{};
