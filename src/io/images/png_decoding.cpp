@@ -116,12 +116,18 @@ Texture decodePng(const std::string& name, const uint8_t* data, size_t size, uin
   AreaDownscaler<uint8_t> target(width, height, targetWidth, targetHeight, channels);
   // An interlaced image is complete only after its last pass, so it is read whole; others a row at a time.
   const bool interlaced = reader.passes > 1;
-  if (interlaced) checkDecodedSize(name, width, height, channels);
+  if (interlaced) {
+    checkDecodedSize(name, width, height, channels);
+    chargeLoadMemory(uint64_t(rowBytes) * height, name,
+                     "an interlaced PNG of " + std::to_string(width) + "x" + std::to_string(height) +
+                         " pixels, decoded whole before it is downscaled,");
+  }
   std::vector<uint8_t> rows(interlaced ? rowBytes * height : rowBytes);
   if (interlaced) {
     for (int pass = 0; pass < reader.passes; ++pass)
       if (!readRows(reader, rows.data(), height, rowBytes)) failPng(name, reader);
     for (uint32_t y = 0; y < height; ++y) target.addRow(&rows[size_t(y) * rowBytes]);
+    releaseLoadMemory(uint64_t(rowBytes) * height);
   } else {
     for (uint32_t y = 0; y < height; ++y) {
       if (!readRows(reader, rows.data(), 1, rowBytes)) failPng(name, reader);
