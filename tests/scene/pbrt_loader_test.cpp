@@ -872,6 +872,35 @@ TEST(PbrtLoader, RoughnessTexturesBecomeCandelasRoughness) {
   EXPECT_NEAR(r.floats[1], std::pow(0.5f, 0.25f), 1e-5f);
 }
 
+TEST(PbrtLoader, PfmTexturesAreDownscaledToTheSizeLimitWhileRead) {
+  TempFolder folder;
+  // 4 x 1 grey texels 1, 3, 5, 7, read at most 2 wide: the means of pairs.
+  std::string texels;
+  for (float v : {1.0f, 3.0f, 5.0f, 7.0f}) texels.append(reinterpret_cast<const char*>(&v), sizeof v);
+  folder.write("wide.pfm", "Pf\n4 1\n-1.0\n" + texels);
+  std::string path =
+      folder.write("scene.pbrt", std::string(kMirroredCamera) +
+                                     "Texture \"t\" \"spectrum\" \"imagemap\" \"string filename\" "
+                                     "\"wide.pfm\"\nMaterial \"diffuse\" \"texture reflectance\" \"t\"\n" +
+                                     kTriangle);
+  const TextureLimits saved = textureLimits();
+  setTextureLimits({2, saved.maxBytes});
+  LoadWarnings warnings;
+  Scene scene = loadPbrt(path, warnings);
+  setTextureLimits(saved);
+  const Material& m = scene.materials[scene.meshes[0].triangleMaterials[0]];
+  ASSERT_NE(m.baseColorTexture, kNoTexture);
+  const Texture& t = scene.textures[size_t(m.baseColorTexture)];
+  EXPECT_EQ(t.width, 2u);
+  EXPECT_EQ(t.height, 1u);
+  ASSERT_EQ(t.floats.size(), 2u);
+  EXPECT_FLOAT_EQ(t.floats[0], 2.0f);
+  EXPECT_FLOAT_EQ(t.floats[1], 6.0f);
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_NE(warnings.messages[0].find("texture of 4x1 pixels downscaled to 2x1"), std::string::npos)
+      << warnings.messages[0];
+}
+
 TEST(PbrtLoader, InvertedImageTextures) {
   TempFolder folder;
   folder.write("grey.pfm", std::string("Pf\n2 1\n-1.0\n") + std::string("\0\0\0\x3f\0\0\x80\x3f", 8));

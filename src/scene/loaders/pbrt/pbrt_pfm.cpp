@@ -14,7 +14,7 @@
 
 namespace candela {
 
-Texture readPfm(const std::string& path, uint32_t maxSide) {
+Texture readPfm(const std::string& path, uint32_t maxSide, TextureExtent* fileExtent) {
   std::vector<uint8_t> bytes = readFileBytes(path);
   // The header: "PF" or "Pf", width, height and a scale whose sign gives the byte order, each followed by
   // white space; the last by exactly one white-space character.
@@ -38,6 +38,7 @@ Texture readPfm(const std::string& path, uint32_t maxSide) {
   if (width > (1 << 20) || height > (1 << 20) || floats * 4 > bytes.size() - pos)
     failLoad(path, "the PFM header claims more pixels than the file holds");
   const bool bigEndian = scale > 0;
+  if (fileExtent) *fileExtent = {uint32_t(width), uint32_t(height), channels * uint32_t(sizeof(float))};
   uint32_t targetWidth = uint32_t(width), targetHeight = uint32_t(height);
   if (targetWidth >= targetHeight && targetWidth > maxSide) {
     targetHeight = uint32_t(std::max<uint64_t>(1, uint64_t(targetHeight) * maxSide / targetWidth));

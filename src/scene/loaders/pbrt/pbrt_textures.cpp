@@ -89,7 +89,12 @@ int32_t PbrtTextures::loadImage(const std::string& path, bool srgb, const std::s
     if (ext == ".exr") {
       image = loadEnvironmentImage(resolved);
     } else if (ext == ".pfm") {
-      image = readPfm(resolved, textureLimits().maxSize);
+      const TextureLimits limits = textureLimits();
+      TextureExtent full;
+      image = readPfm(resolved, limits.maxSize, &full);
+      const TextureExtent fitted{image.width, image.height, full.bytesPerPixel};
+      if (fitted.width != full.width || fitted.height != full.height)
+        context_.warnings.add(context_.mainFile, downscaleWarning(resolved, full, fitted, limits));
     } else {
       // Decoded no larger than the texture size limit, checked on the header: a small PNG can claim 16000x16000
       // pixels. The scene's memory limit applies once all its textures are read (fitSceneTextures).
