@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <type_traits>
@@ -6,6 +7,16 @@
 #include <vector>
 
 namespace candela {
+
+// The largest size of about the same aspect ratio as width x height whose sides are at most maxSide (the longer
+// side becomes maxSide exactly, the other is rounded down, never below 1); the size itself when it fits.
+inline std::pair<uint32_t, uint32_t> sizeWithin(uint32_t width, uint32_t height, uint32_t maxSide) {
+  if (width >= height && width > maxSide)
+    return {maxSide, uint32_t(std::max<uint64_t>(1, uint64_t(height) * maxSide / width))};
+  if (height > width && height > maxSide)
+    return {uint32_t(std::max<uint64_t>(1, uint64_t(width) * maxSide / height)), maxSide};
+  return {width, height};
+}
 
 // Takes an image's rows top to bottom and keeps a smaller image: each target pixel is the mean of the source
 // pixels that fall in it (source pixel (x, y) falls in target pixel (x * tw / sw, y * th / sh)). Decoders feed it

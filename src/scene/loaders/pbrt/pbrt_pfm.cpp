@@ -39,14 +39,7 @@ Texture readPfm(const std::string& path, uint32_t maxSide, TextureExtent* fileEx
     failLoad(path, "the PFM header claims more pixels than the file holds");
   const bool bigEndian = scale > 0;
   if (fileExtent) *fileExtent = {uint32_t(width), uint32_t(height), channels * uint32_t(sizeof(float))};
-  uint32_t targetWidth = uint32_t(width), targetHeight = uint32_t(height);
-  if (targetWidth >= targetHeight && targetWidth > maxSide) {
-    targetHeight = uint32_t(std::max<uint64_t>(1, uint64_t(targetHeight) * maxSide / targetWidth));
-    targetWidth = maxSide;
-  } else if (targetHeight > targetWidth && targetHeight > maxSide) {
-    targetWidth = uint32_t(std::max<uint64_t>(1, uint64_t(targetWidth) * maxSide / targetHeight));
-    targetHeight = maxSide;
-  }
+  const auto [targetWidth, targetHeight] = sizeWithin(uint32_t(width), uint32_t(height), maxSide);
   chargeLoadMemory(uint64_t(targetWidth) * targetHeight * channels * sizeof(float), path,
                    "a PFM image decoded at " + std::to_string(targetWidth) + "x" + std::to_string(targetHeight) +
                        " pixels");

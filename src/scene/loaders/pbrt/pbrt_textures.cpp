@@ -5,6 +5,7 @@
 
 #include "core/file_extension.h"
 #include "io/file_bytes.h"
+#include "io/images/exr_decoding.h"
 #include "io/images/image_decoding.h"
 #include "io/load_budget.h"
 #include "scene/loaders/pbrt/pbrt_pfm.h"
@@ -87,7 +88,15 @@ int32_t PbrtTextures::loadImage(const std::string& path, bool srgb, const std::s
     std::string ext = lowerCaseExtension(resolved);
     Texture image;
     if (ext == ".exr") {
-      image = loadEnvironmentImage(resolved);
+      const TextureLimits limits = textureLimits();
+      std::pair<uint32_t, uint32_t> inFile{0, 0};
+      const std::vector<uint8_t> bytes = readFileBytes(resolved);
+      image = decodeExr(resolved, bytes.data(), bytes.size(), UINT64_MAX, limits.maxSize, &inFile);
+      const TextureExtent full{inFile.first, inFile.second, 3 * uint32_t(sizeof(float))};
+      if (image.width != full.width || image.height != full.height)
+        context_.warnings.add(context_.mainFile,
+                              downscaleWarning(resolved, full, {image.width, image.height, full.bytesPerPixel},
+                                               limits));
     } else if (ext == ".pfm") {
       const TextureLimits limits = textureLimits();
       TextureExtent full;
