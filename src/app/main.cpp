@@ -27,6 +27,7 @@
 #include "app/serve/serve.h"
 #include "app/viewer/viewer.h"
 #include "io/atomic_file.h"
+#include "io/available_memory.h"
 #include "io/file_bytes.h"
 #include "io/images/aov_io.h"
 #include "io/images/image_io.h"
@@ -67,6 +68,13 @@ void addSceneInputOptions(CLI::App& cmd, SceneCacheSettings& cache, OutsidePaths
          "--max-file-gib", [](double gib) { setMaxInputFileBytes(uint64_t(gib * double(1 << 30))); },
          "Largest file a scene may read, in GiB (default: " + std::to_string(kDefaultMaxInputFileBytes >> 30) + ")")
       ->check(CLI::Range(0.001, 1e6));
+  cmd.add_option_function<std::string>(
+         "--max-memory", [](const std::string& size) { setProcessMemoryLimit(*parseMemorySize(size)); },
+         "Most memory the process may use, like 8G or 512M (default: what the machine and its limits leave); a "
+         "scene whose loading would need more is refused, naming the file and what is too large")
+      ->check(CLI::Validator(
+          [](std::string& size) { return parseMemorySize(size) ? std::string() : "'" + size + "' is not a size"; },
+          "SIZE", ""));
 }
 
 // --backend, and --devices (the GPUs of the optix backend). A malformed device list is a usage error; GPUs that are

@@ -1,7 +1,6 @@
 #include "app/render_memory.h"
 
-#include <sys/resource.h>
-#include <unistd.h>
+#include "io/available_memory.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -14,47 +13,11 @@ namespace candela {
 
 namespace {
 
-constexpr uint64_t kUnlimited = std::numeric_limits<uint64_t>::max();
-
 // Bytes per pixel of the buffers: Vec3 images, a float depth, the a-trous denoiser's 22 float planes (six guides, and
 // eight for each of its two signals).
 constexpr uint64_t kImage = 12, kAovs = 12 + 12 + 4, kAtrousPlanes = 22 * 4, kBilateralPlanes = 3 * 4;
 // An encoded 8-bit RGB output (stb builds the PNG in memory) or the rows OpenEXR and PFM write from.
 constexpr uint64_t kEncoded = 10;
-
-uint64_t memAvailable() {
-  std::ifstream in("/proc/meminfo");
-  std::string key;
-  uint64_t kib = 0;
-  std::string unit;
-  while (in >> key >> kib >> unit)
-    if (key == "MemAvailable:") return kib * 1024;
-  const long pages = sysconf(_SC_AVPHYS_PAGES), pageSize = sysconf(_SC_PAGESIZE);
-  return pages > 0 && pageSize > 0 ? uint64_t(pages) * uint64_t(pageSize) : kUnlimited;
-}
-
-uint64_t cgroupRoom() {
-  std::ifstream maxFile("/sys/fs/cgroup/memory.max"), currentFile("/sys/fs/cgroup/memory.current");
-  std::string max;
-  uint64_t current = 0;
-  if (!(maxFile >> max) || max == "max" || !(currentFile >> current)) return kUnlimited;
-  const uint64_t limit = std::stoull(max);
-  return limit > current ? limit - current : 0;
-}
-
-// Room under an rlimit, given how much of it the process uses now.
-uint64_t rlimitRoom(int resource, uint64_t used) {
-  rlimit limit{};
-  if (getrlimit(resource, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return kUnlimited;
-  return limit.rlim_cur > used ? limit.rlim_cur - used : 0;
-}
-
-uint64_t virtualSizeNow() {
-  std::ifstream in("/proc/self/statm");
-  uint64_t pages = 0;
-  in >> pages;
-  return pages * uint64_t(sysconf(_SC_PAGESIZE));
-}
 
 std::string gib(uint64_t bytes) {
   char buffer[32];
@@ -85,14 +48,6 @@ uint64_t estimateRenderBytes(const RenderJob& job) {
   const uint64_t writing =
       kImage + (job.aovs.empty() ? 0 : kAovs) + kEncoded * (1 + job.aovs.size()) + (depth ? kImage : 0);
   return pixels * std::max({denoising, readingAovs, writing});
-}
-
-uint64_t availableMemoryBytes() {
-  const uint64_t virtualSize = virtualSizeNow();
-  uint64_t room = std::min(memAvailable(), cgroupRoom());
-  room = std::min(room, rlimitRoom(RLIMIT_AS, virtualSize));
-  room = std::min(room, rlimitRoom(RLIMIT_DATA, virtualSize));
-  return room;
 }
 
 void checkRenderMemory(const RenderJob& job) {

@@ -10,10 +10,6 @@ namespace candela {
 // encoded output. An estimate from the buffers' sizes, not a measurement.
 uint64_t estimateRenderBytes(const RenderJob& job);
 
-// Bytes this process can still allocate: the least of the system's MemAvailable, the room left under the
-// cgroup's memory.max and under the address-space and data limits (ulimit -v, -d).
-uint64_t availableMemoryBytes();
-
 // Throws std::runtime_error, one line, when the estimate exceeds what is available: a render that would fail to
 // allocate after hours of work is refused before it starts.
 void checkRenderMemory(const RenderJob& job);

@@ -6,9 +6,12 @@
 #include <new>
 #include <stdexcept>
 
+#include "app/progress.h"
 #include "core/bounds.h"
 #include "core/file_extension.h"
+#include "io/available_memory.h"
 #include "io/images/image_decoding.h"
+#include "io/load_budget.h"
 #include "io/load_diagnostics.h"
 #include "scene/builtin_scenes.h"
 #include "scene/loaders/gltf/gltf_loader.h"
@@ -147,10 +150,37 @@ void frameSceneBounds(Scene& scene) {
   scene.cameraMissing = false;
 }
 
+namespace {
+
+// A line on stderr every few seconds while a long load runs: how long, how much memory, and what it is making.
+class LoadProgressLines {
+ public:
+  LoadProgressLines(const std::string& spec, bool print) : print_(print) {
+    if (!print_) return;
+    setLoadProgressListener([spec](const LoadProgress& p) {
+      std::fprintf(stderr, "candela: loading %s: %s, about %s so far (%s: %s)\n", printableText(spec).c_str(),
+                   formatSeconds(p.seconds).c_str(), memorySizeText(p.charged).c_str(), printableText(p.file).c_str(),
+                   printableText(p.element).c_str());
+    });
+  }
+  ~LoadProgressLines() {
+    if (print_) setLoadProgressListener({});
+  }
+  LoadProgressLines(const LoadProgressLines&) = delete;
+  LoadProgressLines& operator=(const LoadProgressLines&) = delete;
+
+ private:
+  bool print_;
+};
+
+}  // namespace
+
 Scene loadScene(const std::string& spec, const SceneLoadOptions& options) {
   Scene scene;
   LoadWarnings warnings;
   setTextureLimits(options.textureLimits);
+  beginLoadBudget();
+  LoadProgressLines progress(spec, options.printWarnings);
   if (!makeBuiltinScene(spec, scene))
     scene = withMemoryReported(spec, [&] { return loadFile(spec, options, warnings); });
   fitSceneTextures(scene, options.textureLimits, warnings);

@@ -19,6 +19,7 @@
 #include <iterator>
 
 #include "app/scene_loading.h"
+#include "io/file_bytes.h"
 #include "io/images/area_downscaler.h"
 #include "io/images/exr_decoding.h"
 #include "io/images/image_decoding.h"
@@ -318,6 +319,43 @@ TEST(ExrDecoding, DataWindowFarFromTheOrigin) {
     EXPECT_EQ(t.floats[(5 * 100 + 7) * 3 + 1], 5.0f);
     EXPECT_EQ(t.floats[(9 * 100 + 99) * 3 + 2], 1.0f);
   }
+}
+
+TEST(ExrDecoding, LargeImagesAreReadInBandsAndDownscaled) {
+  TempFolder dir;
+  // 1000 x 1100 pixels: more than one band of rows. Pixel (x, y) holds red x % 16, green y % 16.
+  const int width = 1000, height = 1100;
+  const std::string path = dir.file("large.exr");
+  {
+    Imath::Box2i window({0, 0}, {width - 1, height - 1});
+    Imf::RgbaOutputFile file(path.c_str(), Imf::Header(window, window), Imf::WRITE_RGBA);
+    std::vector<Imf::Rgba> pixels(size_t(width) * height);
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) pixels[size_t(y) * width + x] = Imf::Rgba(float(x % 16), float(y % 16), 1.0f);
+    file.setFrameBuffer(pixels.data(), 1, width);
+    file.writePixels(height);
+  }
+  const std::vector<uint8_t> bytes = readFileBytes(path);
+  std::pair<uint32_t, uint32_t> fileSize;
+  Texture t = decodeExr(path, bytes.data(), bytes.size(), UINT64_MAX, 500, &fileSize);
+  EXPECT_EQ(fileSize, std::make_pair(1000u, 1100u));
+  ASSERT_EQ(t.width, 454u);  // 1000 * 500 / 1100, rounded down
+  ASSERT_EQ(t.height, 500u);
+  // Every target pixel is the mean of the source pixels that fall in it, on both sides of a band's edge.
+  for (uint32_t ty = 0; ty < t.height; ++ty) {
+    double sum = 0;
+    uint32_t count = 0;
+    for (uint32_t y = 0; y < uint32_t(height); ++y)
+      if (y * t.height / height == ty) {
+        sum += y % 16;
+        ++count;
+      }
+    EXPECT_NEAR(t.floats[(size_t(ty) * t.width + 3) * 3 + 1], sum / count, 1e-5) << "row " << ty;
+  }
+  Texture whole = decodeExr(path, bytes.data(), bytes.size());
+  EXPECT_EQ(whole.width, 1000u);
+  EXPECT_EQ(whole.floats[(size_t(1099) * width + 999) * 3 + 0], float(999 % 16));
+  EXPECT_EQ(whole.floats[(size_t(1099) * width + 999) * 3 + 1], float(1099 % 16));
 }
 
 // The message of the LoadError that `decode` throws, or "(no error)".

@@ -872,6 +872,35 @@ TEST(PbrtLoader, RoughnessTexturesBecomeCandelasRoughness) {
   EXPECT_NEAR(r.floats[1], std::pow(0.5f, 0.25f), 1e-5f);
 }
 
+TEST(PbrtLoader, PfmTexturesAreDownscaledToTheSizeLimitWhileRead) {
+  TempFolder folder;
+  // 4 x 1 grey texels 1, 3, 5, 7, read at most 2 wide: the means of pairs.
+  std::string texels;
+  for (float v : {1.0f, 3.0f, 5.0f, 7.0f}) texels.append(reinterpret_cast<const char*>(&v), sizeof v);
+  folder.write("wide.pfm", "Pf\n4 1\n-1.0\n" + texels);
+  std::string path =
+      folder.write("scene.pbrt", std::string(kMirroredCamera) +
+                                     "Texture \"t\" \"spectrum\" \"imagemap\" \"string filename\" "
+                                     "\"wide.pfm\"\nMaterial \"diffuse\" \"texture reflectance\" \"t\"\n" +
+                                     kTriangle);
+  const TextureLimits saved = textureLimits();
+  setTextureLimits({2, saved.maxBytes});
+  LoadWarnings warnings;
+  Scene scene = loadPbrt(path, warnings);
+  setTextureLimits(saved);
+  const Material& m = scene.materials[scene.meshes[0].triangleMaterials[0]];
+  ASSERT_NE(m.baseColorTexture, kNoTexture);
+  const Texture& t = scene.textures[size_t(m.baseColorTexture)];
+  EXPECT_EQ(t.width, 2u);
+  EXPECT_EQ(t.height, 1u);
+  ASSERT_EQ(t.floats.size(), 2u);
+  EXPECT_FLOAT_EQ(t.floats[0], 2.0f);
+  EXPECT_FLOAT_EQ(t.floats[1], 6.0f);
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_NE(warnings.messages[0].find("texture of 4x1 pixels downscaled to 2x1"), std::string::npos)
+      << warnings.messages[0];
+}
+
 TEST(PbrtLoader, InvertedImageTextures) {
   TempFolder folder;
   folder.write("grey.pfm", std::string("Pf\n2 1\n-1.0\n") + std::string("\0\0\0\x3f\0\0\x80\x3f", 8));
@@ -888,6 +917,43 @@ TEST(PbrtLoader, InvertedImageTextures) {
   ASSERT_EQ(inverted.floats.size(), 2u);
   EXPECT_FLOAT_EQ(inverted.floats[0], 0.5f);
   EXPECT_FLOAT_EQ(inverted.floats[1], 0.0f);
+}
+
+TEST(PbrtLoader, RepeatedShapesAndIncludesShareTheirMeshes) {
+  TempFolder folder;
+  folder.write("part.pbrt", "AttributeBegin\nTranslate 0 0 1\n" + std::string(kTriangle) + "AttributeEnd\n");
+  std::string main = folder.write("main.pbrt", std::string(kMirroredCamera) +
+                                                   "Include \"part.pbrt\"\nTranslate 5 0 0\nInclude \"part.pbrt\"\n"
+                                                   "Shape \"sphere\" \"float radius\" 2\n"
+                                                   "Translate 0 5 0\nShape \"sphere\" \"float radius\" 3\n");
+  LoadWarnings warnings;
+  Scene scene = loadPbrt(main, warnings);
+  ASSERT_EQ(scene.meshes.size(), 2u);  // one triangle, one sphere
+  ASSERT_EQ(scene.instances.size(), 4u);
+  EXPECT_EQ(scene.instances[0].meshId, scene.instances[1].meshId);
+  EXPECT_EQ(scene.instances[2].meshId, scene.instances[3].meshId);
+  // The second Include is placed where reading it would put it: 5 along x (mirrored) and 1 along z.
+  const Vec3 first = scene.instances[0].objectToWorld.point({0, 0, 0});
+  const Vec3 second = scene.instances[1].objectToWorld.point({0, 0, 0});
+  EXPECT_NEAR(std::fabs(second.x - first.x), 5.0f, 1e-5f);
+  EXPECT_NEAR(second.z, 1.0f, 1e-5f);
+  EXPECT_NEAR(length(scene.instances[3].objectToWorld.point({1, 0, 0}) -
+                     scene.instances[3].objectToWorld.point({0, 0, 0})),
+              3.0f, 1e-5f);
+}
+
+TEST(PbrtLoader, TexturesNoMaterialUsesAreNotDecoded) {
+  TempFolder folder;
+  std::string main =
+      folder.write("main.pbrt", std::string(kMirroredCamera) +
+                                    "Texture \"unused\" \"spectrum\" \"imagemap\" \"string filename\" "
+                                    "\"nowhere.png\"\n"
+                                    "Texture \"mixed\" \"spectrum\" \"mix\" \"texture tex1\" \"unused\"\n" +
+                                    kTriangle);
+  LoadWarnings warnings;
+  Scene scene = loadPbrt(main, warnings);
+  EXPECT_TRUE(scene.textures.empty());
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages.front();
 }
 
 TEST(PbrtLoader, SceneCacheNoticesChangedIncludes) {
@@ -909,8 +975,10 @@ TEST(PbrtLoader, QuadricsAreTessellatedOnTheirSurface) {
                          "Shape \"cylinder\" \"float radius\" 1 \"float zmin\" 0 "
                          "\"float zmax\" 3\n");
   ASSERT_EQ(scene.meshes.size(), 3u);
+  ASSERT_EQ(scene.instances[0].meshId, 0u);
   for (size_t i = 0; i < scene.meshes[0].positions.size(); ++i) {
-    EXPECT_NEAR(length(scene.meshes[0].positions[i]), 2.0f, 1e-4f);
+    // A whole sphere is the one of radius 1, scaled by its instance.
+    EXPECT_NEAR(length(scene.instances[0].objectToWorld.point(scene.meshes[0].positions[i])), 2.0f, 1e-4f);
     EXPECT_GT(dot(scene.meshes[0].normals[i], scene.meshes[0].positions[i]), 0.0f);  // outwards
   }
   for (Vec3 p : scene.meshes[1].positions) EXPECT_FLOAT_EQ(p.z, 0.5f);

@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <type_traits>
@@ -6,6 +7,16 @@
 #include <vector>
 
 namespace candela {
+
+// The largest size of about the same aspect ratio as width x height whose sides are at most maxSide (the longer
+// side becomes maxSide exactly, the other is rounded down, never below 1); the size itself when it fits.
+inline std::pair<uint32_t, uint32_t> sizeWithin(uint32_t width, uint32_t height, uint32_t maxSide) {
+  if (width >= height && width > maxSide)
+    return {maxSide, uint32_t(std::max<uint64_t>(1, uint64_t(height) * maxSide / width))};
+  if (height > width && height > maxSide)
+    return {uint32_t(std::max<uint64_t>(1, uint64_t(width) * maxSide / height)), maxSide};
+  return {width, height};
+}
 
 // Takes an image's rows top to bottom and keeps a smaller image: each target pixel is the mean of the source
 // pixels that fall in it (source pixel (x, y) falls in target pixel (x * tw / sw, y * th / sh)). Decoders feed it
@@ -22,7 +33,7 @@ class AreaDownscaler {
         channels_(channels),
         pixels_(size_t(targetWidth) * targetHeight * channels) {
     if (copies()) return;
-    sums_.assign(size_t(targetWidth) * channels, 0.0);
+    sums_.assign(size_t(targetWidth) * channels, 0);
     columnOf_.resize(sourceWidth);
     columnCounts_.assign(targetWidth, 0);
     for (uint32_t x = 0; x < sourceWidth; ++x) {
@@ -43,7 +54,7 @@ class AreaDownscaler {
     targetRow_ = target;
     for (uint32_t x = 0; x < sourceWidth_; ++x)
       for (uint32_t c = 0; c < channels_; ++c)
-        sums_[size_t(columnOf_[x]) * channels_ + c] += double(row[size_t(x) * channels_ + c]);
+        sums_[size_t(columnOf_[x]) * channels_ + c] += Sum(row[size_t(x) * channels_ + c]);
     ++rowsInSums_;
     ++sourceRow_;
   }
@@ -65,18 +76,20 @@ class AreaDownscaler {
     Sample* out = &pixels_[size_t(targetRow_) * targetWidth_ * channels_];
     for (uint32_t x = 0; x < targetWidth_; ++x)
       for (uint32_t c = 0; c < channels_; ++c) {
-        double& sum = sums_[size_t(x) * channels_ + c];
-        const double mean = sum / (double(columnCounts_[x]) * rowsInSums_);
+        Sum& sum = sums_[size_t(x) * channels_ + c];
+        const double mean = double(sum) / (double(columnCounts_[x]) * rowsInSums_);
         // Integer samples round to nearest; the mean of integers in range stays in range.
         out[size_t(x) * channels_ + c] = std::is_integral_v<Sample> ? Sample(mean + 0.5) : Sample(mean);
-        sum = 0.0;
+        sum = 0;
       }
     rowsInSums_ = 0;
   }
 
   uint32_t sourceWidth_, sourceHeight_, targetWidth_, targetHeight_, channels_;
   std::vector<Sample> pixels_;
-  std::vector<double> sums_;
+  // Integer samples add up exactly, and faster, as integers.
+  using Sum = std::conditional_t<std::is_integral_v<Sample>, uint64_t, double>;
+  std::vector<Sum> sums_;
   std::vector<uint32_t> columnOf_;
   std::vector<uint32_t> columnCounts_;
   uint32_t sourceRow_ = 0;

@@ -3,15 +3,23 @@
 #include <OpenEXR/ImfArray.h>
 #include <OpenEXR/ImfRgbaFile.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <vector>
 
+#include "io/images/area_downscaler.h"
 #include "io/images/exr_memory_stream.h"
 #include "io/images/image_decoding.h"
+#include "io/load_budget.h"
 #include "io/load_diagnostics.h"
 
 namespace candela {
 
 namespace {
+
+// Pixels read at a time: the rows of an image are read in bands of about this many.
+constexpr int64_t kBandPixels = int64_t(1) << 20;
 
 // The size checks of a data window, on the header before any allocation.
 void checkExrSize(const std::string& name, int64_t width, int64_t height, size_t fileSize, uint64_t maxPixels) {
@@ -133,7 +141,8 @@ void checkExrHeaders(const std::string& name, const uint8_t* data, size_t size, 
   }
 }
 
-Texture decodeExr(const std::string& name, const uint8_t* data, size_t size, uint64_t maxPixels) {
+Texture decodeExr(const std::string& name, const uint8_t* data, size_t size, uint64_t maxPixels, uint32_t maxSide,
+                  std::pair<uint32_t, uint32_t>* fileSize) {
   Texture t;
   t.name = name;
   t.channels = 3;
@@ -146,30 +155,46 @@ Texture decodeExr(const std::string& name, const uint8_t* data, size_t size, uin
     const int64_t width = int64_t(window.max.x) - window.min.x + 1;
     const int64_t height = int64_t(window.max.y) - window.min.y + 1;
     checkExrSize(name, width, height, size, maxPixels);
-    Imf::Array2D<Imf::Rgba> pixels(height, width);
-    // OpenEXR addresses pixel (x, y) of the window at base + x + y * width; base itself lies outside the array
-    // unless the window starts at the origin, so it is computed as an address, not by pointer arithmetic.
-    const int64_t originOffset = int64_t(window.min.x) + int64_t(window.min.y) * width;
-    const uintptr_t base = reinterpret_cast<uintptr_t>(&pixels[0][0]) - uintptr_t(originOffset) * sizeof(Imf::Rgba);
-    file.setFrameBuffer(reinterpret_cast<Imf::Rgba*>(base), 1, size_t(width));
-    file.readPixels(window.min.y, window.max.y);
-    t.width = uint32_t(width);
-    t.height = uint32_t(height);
-    t.floats.resize(size_t(width) * size_t(height) * 3);
-    for (int64_t y = 0; y < height; ++y)
-      for (int64_t x = 0; x < width; ++x) {
-        const Imf::Rgba& p = pixels[y][x];
-        float* out = &t.floats[(size_t(y) * size_t(width) + size_t(x)) * 3];
-        out[0] = p.r;
-        out[1] = p.g;
-        out[2] = p.b;
+    if (fileSize) *fileSize = {uint32_t(width), uint32_t(height)};
+    const auto [targetWidth, targetHeight] = sizeWithin(uint32_t(width), uint32_t(height), maxSide);
+    const int64_t bandRows = std::clamp<int64_t>(kBandPixels / width, 1, height);
+    chargeLoadMemory(uint64_t(targetWidth) * targetHeight * 3 * sizeof(float), name,
+                     "an OpenEXR image decoded at " + std::to_string(targetWidth) + "x" + std::to_string(targetHeight) +
+                         " pixels");
+    const uint64_t bandBytes = uint64_t(bandRows) * uint64_t(width) * (sizeof(Imf::Rgba) + 3 * sizeof(float));
+    chargeLoadMemory(bandBytes, name, "a band of its rows");
+    AreaDownscaler<float> target(uint32_t(width), uint32_t(height), targetWidth, targetHeight, 3);
+    Imf::Array2D<Imf::Rgba> band(bandRows, width);
+    std::vector<float> row(size_t(width) * 3);
+    for (int64_t first = 0; first < height; first += bandRows) {
+      const int64_t rows = std::min(bandRows, height - first);
+      // OpenEXR addresses pixel (x, y) at base + x + y * width; base itself lies outside the band unless the band
+      // starts at the window's origin, so it is computed as an address, not by pointer arithmetic.
+      const int64_t originOffset = int64_t(window.min.x) + (int64_t(window.min.y) + first) * width;
+      const uintptr_t base = reinterpret_cast<uintptr_t>(&band[0][0]) - uintptr_t(originOffset) * sizeof(Imf::Rgba);
+      file.setFrameBuffer(reinterpret_cast<Imf::Rgba*>(base), 1, size_t(width));
+      file.readPixels(int(window.min.y + first), int(window.min.y + first + rows - 1));
+      for (int64_t y = 0; y < rows; ++y) {
+        for (int64_t x = 0; x < width; ++x) {
+          const Imf::Rgba& p = band[y][x];
+          float* out = &row[size_t(x) * 3];
+          for (int c = 0; c < 3; ++c) {
+            const float v = c == 0 ? float(p.r) : c == 1 ? float(p.g) : float(p.b);
+            out[c] = std::isfinite(v) && v > 0.0f ? v : 0.0f;
+          }
+        }
+        target.addRow(row.data());
       }
+    }
+    releaseLoadMemory(bandBytes);
+    t.width = targetWidth;
+    t.height = targetHeight;
+    t.floats = target.finish();
   } catch (const LoadError&) {
     throw;
   } catch (const std::exception& e) {
     failLoad(name, std::string("cannot read OpenEXR image (") + e.what() + ")");
   }
-  zeroInvalidFloats(t.floats);
   return t;
 }
 

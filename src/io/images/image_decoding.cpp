@@ -14,6 +14,7 @@
 #include "io/images/jpeg_decoding.h"
 #include "io/images/png_decoding.h"
 #include "io/images/webp_decoding.h"
+#include "io/load_budget.h"
 #include "io/load_diagnostics.h"
 
 namespace candela {
@@ -111,6 +112,9 @@ Texture decodeAt(const std::string& name, const uint8_t* data, size_t size, bool
                  uint32_t targetWidth, uint32_t targetHeight) {
   targetWidth = std::clamp(targetWidth, 1u, info.width);
   targetHeight = std::clamp(targetHeight, 1u, info.height);
+  chargeLoadMemory(uint64_t(targetWidth) * targetHeight * info.channels * (info.hdr ? sizeof(float) : 1), name,
+                   "an image decoded at " + std::to_string(targetWidth) + "x" + std::to_string(targetHeight) +
+                       " pixels");
   Texture t = isPng(data, size)    ? decodePng(name, data, size, targetWidth, targetHeight)
               : isJpeg(data, size) ? decodeJpeg(name, data, size, targetWidth, targetHeight)
               : isWebp(data, size) ? decodeWebp(name, data, size, targetWidth, targetHeight)

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "io/images/downscaled_texture.h"
+#include "io/load_budget.h"
 #include "io/load_diagnostics.h"
 
 namespace candela {
@@ -63,6 +64,9 @@ bool readHeader(PngReader& r) {
   // clears what a text (or iCCP, sPLT, eXIf, pCAL, sCAL) chunk declares before reading it, and its check of the
   // length only warns: a 59-byte file whose iTXt chunk claimed 1.8 GB took 2 GB of memory and 18 s.
   png_set_keep_unknown_chunks(r.png, PNG_HANDLE_CHUNK_NEVER, nullptr, -1);
+  // The checksum of the compressed stream costs a tenth of the decoding of a large image and protects nothing a
+  // decoder needs: corrupt data still fails (or decodes to wrong pixels) without it.
+  png_set_option(r.png, PNG_IGNORE_ADLER32, PNG_OPTION_ON);
   png_read_info(r.png, r.info);
   const png_byte colorType = png_get_color_type(r.png, r.info);
   png_set_strip_16(r.png);
@@ -112,16 +116,24 @@ Texture decodePng(const std::string& name, const uint8_t* data, size_t size, uin
   AreaDownscaler<uint8_t> target(width, height, targetWidth, targetHeight, channels);
   // An interlaced image is complete only after its last pass, so it is read whole; others a row at a time.
   const bool interlaced = reader.passes > 1;
-  if (interlaced) checkDecodedSize(name, width, height, channels);
+  if (interlaced) {
+    checkDecodedSize(name, width, height, channels);
+    chargeLoadMemory(uint64_t(rowBytes) * height, name,
+                     "an interlaced PNG of " + std::to_string(width) + "x" + std::to_string(height) +
+                         " pixels, decoded whole before it is downscaled,");
+  }
   std::vector<uint8_t> rows(interlaced ? rowBytes * height : rowBytes);
   if (interlaced) {
     for (int pass = 0; pass < reader.passes; ++pass)
       if (!readRows(reader, rows.data(), height, rowBytes)) failPng(name, reader);
     for (uint32_t y = 0; y < height; ++y) target.addRow(&rows[size_t(y) * rowBytes]);
+    releaseLoadMemory(uint64_t(rowBytes) * height);
   } else {
     for (uint32_t y = 0; y < height; ++y) {
       if (!readRows(reader, rows.data(), 1, rowBytes)) failPng(name, reader);
       target.addRow(rows.data());
+      if (y % 256 == 255)
+        noteLoadProgress(name, "decoding row " + std::to_string(y + 1) + " of " + std::to_string(height));
     }
   }
   return finishTexture(name, target);

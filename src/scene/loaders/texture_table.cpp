@@ -1,11 +1,13 @@
 #include "scene/loaders/texture_table.h"
 
 #include <tbb/parallel_for.h>
+#include <exception>
 
 #include <optional>
 
 #include "io/file_bytes.h"
 #include "io/images/image_decoding.h"
+#include "io/load_budget.h"
 #include "scene/loaders/texture_limits.h"
 
 namespace candela {
@@ -72,6 +74,7 @@ void TextureTable::finish(Scene& scene, size_t firstMaterial, LoadWarnings& warn
     }
 
   std::vector<std::optional<Texture>> decoded(requests_.size());
+  std::vector<std::exception_ptr> overBudget(requests_.size());  // the load stops: no texture is left out for it
   tbb::parallel_for(size_t(0), requests_.size(), [&](size_t i) {
     Request& r = requests_[i];
     if (!infos[i]) return;
@@ -79,11 +82,15 @@ void TextureTable::finish(Scene& scene, size_t firstMaterial, LoadWarnings& warn
       decoded[i] = decodeImage(r.name, r.bytes.data(), r.bytes.size(), r.srgb, targets[i].width, targets[i].height);
       decoded[i]->wrapU = r.wrapU;
       decoded[i]->wrapV = r.wrapV;
+    } catch (const LoadBudgetError&) {
+      overBudget[i] = std::current_exception();
     } catch (const LoadError& e) {
       failures[i] = e.what();
     }
     r.bytes = {};
   });
+  for (const std::exception_ptr& e : overBudget)
+    if (e) std::rethrow_exception(e);
 
   std::vector<int32_t> finalIndex(requests_.size(), kNoTexture);
   for (size_t i = 0; i < requests_.size(); ++i) {

@@ -187,6 +187,10 @@ class ChunkParser {
     for (std::string_view f = field(); !f.empty(); f = field()) {
       int64_t index[3];
       if (!corner(f, index)) return;
+      if (c_.cornerPositions.size() - first == kMaxObjFaceCorners) {
+        fail("a face of more than " + std::to_string(kMaxObjFaceCorners) + " corners");
+        return;
+      }
       c_.cornerPositions.push_back(uint32_t(std::min<int64_t>(index[0], UINT32_MAX)));
       c_.cornerUvs.push_back(int32_t(std::min<int64_t>(index[1], INT32_MAX)));
       c_.cornerNormals.push_back(int32_t(std::min<int64_t>(index[2], INT32_MAX)));

@@ -66,6 +66,10 @@ struct ObjChunk {
   size_t faceCount() const { return faceSmoothing.size(); }
 };
 
+// The most corners a face may have. Real polygons have far fewer; a face line of millions of corners would cost
+// seconds and gigabytes to triangulate, so it is refused with the line's number.
+constexpr size_t kMaxObjFaceCorners = size_t(1) << 16;
+
 // The attribute statements, faces and lines in `text`, as parseObjChunk reads them.
 struct ObjChunkOutline {
   ObjCounts counts;
@@ -76,10 +80,10 @@ ObjChunkOutline outlineObjChunk(std::string_view text);
 
 // Parses the whole lines of `text` into `chunk` (its firstLine and before already set). The statements read
 // are v, vt, vn (missing coordinates are 0; every field must be a number), f (polygons; references may be
-// relative), l and p (counted, not kept), s, usemtl and mtllib (recorded) and vw (noted, ignored); o, g and
-// anything else are ignored, as are fields after a '#'. A reference to a missing texture coordinate or normal
-// is dropped; any other problem stops parsing with chunk.error. Positive references are checked only when
-// `totals` (the counts of the whole file) are given: a forward reference is allowed.
+// relative; at most kMaxObjFaceCorners corners), l and p (counted, not kept), s, usemtl and mtllib (recorded) and vw
+// (noted, ignored); o, g and anything else are ignored, as are fields after a '#'. A reference to a missing texture
+// coordinate or normal is dropped; any other problem stops parsing with chunk.error. Positive references are checked
+// only when `totals` (the counts of the whole file) are given: a forward reference is allowed.
 void parseObjChunk(std::string_view text, ObjChunk& chunk, const ObjCounts* totals);
 
 }  // namespace candela

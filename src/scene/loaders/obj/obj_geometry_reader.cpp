@@ -6,6 +6,7 @@
 #include <climits>
 #include <numeric>
 
+#include "io/load_budget.h"
 #include "scene/loaders/obj/obj_chunk_parser.h"
 #include "scene/loaders/polygon_triangulation.h"
 
@@ -115,7 +116,7 @@ class GeometryReader {
     std::vector<ObjChunkOutline> outlines(pieces.size());
     tbb::parallel_for(size_t(0), pieces.size(), [&](size_t i) { outlines[i] = outlineObjChunk(pieces[i]); });
 
-    const size_t first = chunks_.size();
+    const size_t first = chunks_.size(), firstLine = line_;
     chunks_.resize(first + pieces.size());
     chunkMaterials_.resize(chunks_.size());
     for (size_t i = 0; i < pieces.size(); ++i) {
@@ -131,6 +132,16 @@ class GeometryReader {
     }
     if (std::max({totals_.positions, totals_.uvs, totals_.normals}) > INT32_MAX)
       failLoad(name_, "has more than 2147483647 vertices, texture coordinates or normals");
+    // The window's attributes and faces as parsed, and the mesh they become (a vertex per corner at worst).
+    uint64_t faces = 0, attributeBytes = 0;
+    for (const ObjChunkOutline& o : outlines) {
+      faces += o.faces;
+      attributeBytes +=
+          uint64_t(o.counts.positions) * 12 + uint64_t(o.counts.uvs) * 8 + uint64_t(o.counts.normals) * 12;
+    }
+    chargeLoadMemory(attributeBytes + faces * (3 * 12 + 8 + 3 * 32 + 16), name_,
+                     "lines " + std::to_string(firstLine) + " to " + std::to_string(line_ - 1) + " (" +
+                         std::to_string(faces) + " faces)");
 
     tbb::parallel_for(size_t(0), pieces.size(), [&](size_t i) {
       ObjChunk& c = chunks_[first + i];

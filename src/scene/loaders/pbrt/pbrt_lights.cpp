@@ -5,6 +5,7 @@
 
 #include "core/file_extension.h"
 #include "io/images/image_decoding.h"
+#include "io/load_budget.h"
 #include "scene/loaders/pbrt/pbrt_pfm.h"
 
 namespace candela {
@@ -106,6 +107,9 @@ PunctualLight makePbrtPunctualLight(const std::string& type, const PbrtParameter
   return light;
 }
 
+// The most rows of an infinite light's map once resampled to candela's equirectangular layout.
+constexpr uint32_t kMaxEnvironmentHeight = 8192;
+
 Environment makePbrtInfiniteLight(const PbrtParameters& params, const glm::mat4& worldFromLight, bool mirrorX,
                                   PbrtContext& context) {
   Environment env;
@@ -120,7 +124,8 @@ Environment makePbrtInfiniteLight(const PbrtParameters& params, const glm::mat4&
     return env;
   }
   std::string path = context.resolve(file, params.file, params.line);
-  Texture source = lowerCaseExtension(path) == ".pfm" ? readPfm(path) : loadEnvironmentImage(path);
+  Texture source =
+      lowerCaseExtension(path) == ".pfm" ? readPfm(path, kMaxEnvironmentHeight * 2) : loadEnvironmentImage(path);
   bool octahedral = source.width == source.height;
   if (!octahedral && source.width != 2 * source.height)
     context.warn("infinite map layout", "environment map '" + file +
@@ -131,8 +136,16 @@ Environment makePbrtInfiniteLight(const PbrtParameters& params, const glm::mat4&
   // Not the file's name: the map is no longer the file's layout (a viewer's saved view must not name the file as
   // an equirectangular map).
   map.name = path + " (resampled to equirectangular)";
-  map.height = std::clamp(octahedral ? source.height : source.height, 1u, 8192u);
+  // As many rows as the file's for the layouts pbrt writes; for any other shape (a map of 1 x 8192 pixels) as
+  // many texels as the file has, so that a thin file does not become a map of a hundred million texels.
+  const bool usualLayout = octahedral || source.width == 2 * source.height;
+  const double sourceTexels = double(source.width) * double(source.height);
+  map.height = usualLayout ? source.height : uint32_t(std::max(1.0, std::round(std::sqrt(sourceTexels / 2.0))));
+  map.height = std::clamp(map.height, 1u, kMaxEnvironmentHeight);
   map.width = 2 * map.height;
+  chargeLoadMemory(uint64_t(map.width) * map.height * 3 * sizeof(float), path,
+                   "the infinite light's map resampled to " + std::to_string(map.width) + "x" +
+                       std::to_string(map.height) + " texels");
   map.channels = 3;
   map.floats.resize(size_t(map.width) * map.height * 3);
   double mapIlluminance = 0.0;  // of the file's values over the light's upper hemisphere, before `scale`

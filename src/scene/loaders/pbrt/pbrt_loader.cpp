@@ -8,12 +8,14 @@
 #include <vector>
 
 #include "io/file_bytes.h"
+#include "io/load_budget.h"
 #include "scene/loaders/pbrt/pbrt_camera.h"
 #include "scene/loaders/pbrt/pbrt_context.h"
 #include "scene/loaders/pbrt/pbrt_film.h"
 #include "scene/loaders/pbrt/pbrt_lights.h"
 #include "scene/loaders/pbrt/pbrt_materials.h"
 #include "scene/loaders/pbrt/pbrt_parameters.h"
+#include "scene/loaders/pbrt/pbrt_shape_key.h"
 #include "scene/loaders/pbrt/pbrt_shapes.h"
 #include "scene/loaders/pbrt/pbrt_spectrum_files.h"
 #include "scene/loaders/pbrt/pbrt_textures.h"
@@ -34,6 +36,13 @@ constexpr size_t kMaxAttributeDepth = 4096;
 // that asks for a sphere yields thousands, so they are bounded apart from the file sizes.
 constexpr size_t kMaxGeneratedTriangles = size_t(1) << 25;
 
+// Bytes a mesh holds, as the load's memory budget counts them.
+uint64_t meshBytes(const Mesh& m) {
+  return m.positions.size() * sizeof(Vec3) + m.normals.size() * sizeof(Vec3) + m.uvs.size() * sizeof(Vec2) +
+         m.tangents.size() * sizeof(Vec4) + m.colors.size() * sizeof(Vec3) + m.indices.size() * sizeof(uint32_t) +
+         m.triangleMaterials.size() * sizeof(uint32_t);
+}
+
 struct GraphicsState {
   glm::mat4 ctm{1.0f};
   bool reverseOrientation = false;
@@ -53,6 +62,28 @@ struct AlphaSpec {
   float value = 1.0f;
   int32_t texture = kNoTexture;
 };
+
+// What reading an included file did, kept so that including it again in the same state places the same meshes
+// again instead of reading and building them again: the meshes its shapes made (or shared) with their transforms
+// relative to the transform at the Include, and the transform it leaves. Only files that do nothing else can be
+// placed again (`reusable`): transforms relative to the current one, attribute blocks they close, materials
+// chosen inside them, shapes that emit no light and further Includes.
+struct IncludeRecording {
+  struct Placement {
+    uint32_t meshId;
+    glm::mat4 relative;
+  };
+  std::vector<Placement> shapes;
+  glm::mat4 relative{1.0f};
+  std::vector<glm::mat4> saved;  // `relative` at each attribute block the file opened and has not closed
+  bool reusable = true;
+};
+
+// The state an included file's effect depends on: the file, and what it would apply to its shapes.
+using IncludeKey = std::tuple<std::string, bool, int64_t, std::string, bool>;
+
+// Shapes equal in everything their mesh depends on: the shape's key, its orientation and its material.
+using SharedShapeKey = std::tuple<std::string, bool, int64_t, std::string>;
 
 struct PendingShape {
   uint32_t meshId;
@@ -75,6 +106,46 @@ class PbrtReader {
       failLoad(path, "the scene includes more than " + std::to_string(kMaxIncludedFiles) + " files");
     PbrtTokenizer tokens(path, readFileBytes(path));
     readDirectives(tokens, depth);
+  }
+
+  // An Include: read the file, or, when it was read before in the same state and did nothing but place
+  // shapes, place the same meshes again.
+  void include(const std::string& path, int depth) {
+    if (recording_ || state_.areaLight) {
+      readFile(path, depth);
+      return;
+    }
+    const IncludeKey key{path, state_.reverseOrientation, materialKey(), state_.materialName, activeEndOnly_};
+    if (auto found = includes_.find(key); found != includes_.end()) {
+      if (++includedFiles_ > kMaxIncludedFiles)
+        failLoad(path, "the scene includes more than " + std::to_string(kMaxIncludedFiles) + " files");
+      for (const IncludeRecording::Placement& shape : found->second.shapes)
+        putMesh(shape.meshId, state_.ctm * shape.relative, path, 0);
+      state_.ctm = state_.ctm * found->second.relative;
+      return;
+    }
+    const GraphicsState before = state_;
+    const size_t stackDepth = stack_.size();
+    recording_.emplace();
+    readFile(path, depth);
+    IncludeRecording recording = std::move(*recording_);
+    recording_.reset();
+    const bool sameState = state_.reverseOrientation == before.reverseOrientation &&
+                           materialKey() == materialKeyOf(before) && state_.materialName == before.materialName &&
+                           !state_.areaLight && stack_.size() == stackDepth;
+    if (recording.reusable && sameState && recording.saved.empty()) includes_.emplace(key, std::move(recording));
+  }
+
+  static int64_t materialKeyOf(const GraphicsState& state) { return state.material ? int64_t(state.material->id) : -1; }
+  int64_t materialKey() const { return materialKeyOf(state_); }
+
+  // Whether an included file that uses directive `d` can be placed again without reading it (IncludeRecording).
+  static bool replayable(const std::string& d) {
+    for (const char* allowed : {"Translate", "Scale", "Rotate", "LookAt", "ConcatTransform", "AttributeBegin",
+                                "AttributeEnd", "TransformBegin", "TransformEnd", "ReverseOrientation", "Shape",
+                                "Material", "NamedMaterial", "Include", "Import"})
+      if (d == allowed) return true;
+    return false;
   }
 
   void readText(const std::string& name, const std::string& text) {
@@ -147,6 +218,7 @@ class PbrtReader {
     if (!isFiniteMatrix(m)) fail(tokens, line, "transform is not finite");
     if (activeEndOnly_) return;  // pbrt's end-of-shutter transform: candela renders the start of the shutter
     state_.ctm = replace ? m : state_.ctm * m;
+    if (recording_) recording_->relative = replace ? m : recording_->relative * m;
   }
 
   void chooseWorldMirror() {
@@ -160,6 +232,7 @@ class PbrtReader {
       if (t.kind == PbrtToken::Kind::End) return;
       if (t.kind != PbrtToken::Kind::Word) fail(tokens, t.line, "expected a directive, found '" + t.text + "'");
       const std::string& d = t.text;
+      if (recording_ && !replayable(d)) recording_->reusable = false;
       if (d == "Identity") {
         applyTransform(glm::mat4(1.0f), tokens, t.line, true);
       } else if (d == "Translate") {
@@ -200,10 +273,16 @@ class PbrtReader {
       } else if (d == "AttributeBegin" || d == "TransformBegin") {
         if (stack_.size() >= kMaxAttributeDepth) fail(tokens, t.line, d + " nested too deep");
         stack_.push_back({state_, d == "TransformBegin"});
+        if (recording_) recording_->saved.push_back(recording_->relative);
       } else if (d == "AttributeEnd" || d == "TransformEnd") {
         if (stack_.empty()) fail(tokens, t.line, d + " without a matching begin");
         auto [saved, transformOnly] = stack_.back();
         stack_.pop_back();
+        if (recording_ && recording_->saved.empty()) recording_->reusable = false;  // closes a block of the includer
+        if (recording_ && !recording_->saved.empty()) {
+          recording_->relative = recording_->saved.back();
+          recording_->saved.pop_back();
+        }
         if (transformOnly)
           state_.ctm = saved.ctm;
         else
@@ -268,12 +347,11 @@ class PbrtReader {
       } else if (d == "Include" || d == "Import") {
         std::string file = readString(tokens, d);
         if (textOnly_) fail(tokens, t.line, d + " of '" + file + "' in a scene read from memory");
-        readFile(context_.resolve(file, tokens.file(), t.line), depth + 1);
+        include(context_.resolve(file, tokens.file(), t.line), depth + 1);
       } else if (d == "Texture") {
         std::string name = readString(tokens, d), valueType = readString(tokens, d), className = readString(tokens, d);
         PbrtParameters params = readParametersWithSpectra(tokens);
-        textures_.define(name, valueType, className, params);
-        context_.warnUnused("texture '" + className + "'", params);
+        textures_.define(name, valueType, className, params);  // its parameters are checked when it is used
       } else if (d == "Material") {
         std::string type = readString(tokens, d);
         PbrtParameters params = readParametersWithSpectra(tokens);
@@ -409,14 +487,31 @@ class PbrtReader {
 
   void readShape(const std::string& type, const PbrtParameters& params) {
     if (!worldBegun_) chooseWorldMirror();
+    noteLoadProgress(params.file + ":" + std::to_string(params.line), "shape '" + type + "'");
+    if (!state_.material && !state_.materialName.empty() && materials_.isNamed(state_.materialName))
+      state_.material = materials_.named(state_.materialName, params.file, params.line);
+    // A shape equal to one made before shares its mesh, unless it emits: its emission depends on where it is.
+    std::optional<PbrtShapeKey> key;
+    if (!state_.areaLight) key = pbrtShapeKey(type, params);
+    std::optional<SharedShapeKey> sharedKey;
+    if (key) {
+      sharedKey = SharedShapeKey{key->key, state_.reverseOrientation, materialKey(), state_.materialName};
+      if (auto found = sharedMeshes_.find(*sharedKey); found != sharedMeshes_.end()) {
+        params.markAllUsed();
+        placeMesh(found->second, key->shapeFromMesh, params.file, params.line);
+        return;
+      }
+    }
     PbrtShapeInputs inputs{[&](const std::string& ref) { return context_.resolve(ref, params.file, params.line); },
                            [&](const std::string& feature, const std::string& what) { context_.warn(feature, what); }};
-    std::optional<Mesh> shape = makePbrtShape(type, params, inputs);
+    std::optional<Mesh> shape = makePbrtShape(type, key && key->unitShape ? key->unitParams : params, inputs);
     if (!shape) {
       params.markAllUsed();
       return;
     }
     Mesh& mesh = *shape;
+    chargeLoadMemory(meshBytes(mesh), params.file + ":" + std::to_string(params.line),
+                     "shape '" + type + "' of " + std::to_string(mesh.triangleCount()) + " triangles");
     if (type == "sphere" || type == "disk" || type == "cylinder" || type == "loopsubdiv") {
       generatedTriangles_ += mesh.triangleCount();
       if (generatedTriangles_ > kMaxGeneratedTriangles)
@@ -448,8 +543,6 @@ class PbrtReader {
         mesh.indices.insert(mesh.indices.end(), {mesh.indices[i], mesh.indices[i + 2], mesh.indices[i + 1]});
       mesh.triangleMaterials.resize(2 * triangles);
     }
-    if (!state_.material && !state_.materialName.empty() && materials_.isNamed(state_.materialName))
-      state_.material = materials_.named(state_.materialName, params.file, params.line);
     uint32_t pendingMesh = uint32_t(context_.scene.meshes.size());
     if (state_.material || state_.materialName.empty()) {
       assignMaterials(mesh, state_.material ? *state_.material : materials_.fallback(), emission, alpha, triangles);
@@ -459,11 +552,22 @@ class PbrtReader {
     }
     uint32_t meshId = uint32_t(context_.scene.meshes.size());
     context_.scene.meshes.push_back(std::move(mesh));
-    if (currentObject_) {
-      objects_[*currentObject_].push_back({meshId, state_.ctm});
-    } else {
-      addInstance(meshId, toWorld, params.file, params.line);
-    }
+    if (sharedKey) sharedMeshes_.emplace(*sharedKey, meshId);
+    placeMesh(meshId, key ? key->shapeFromMesh : glm::mat4(1.0f), params.file, params.line);
+  }
+
+  // A shape's mesh, `shapeFromMesh` in the current transform, recorded for an Include being read.
+  void placeMesh(uint32_t meshId, const glm::mat4& shapeFromMesh, const std::string& file, size_t line) {
+    if (recording_) recording_->shapes.push_back({meshId, recording_->relative * shapeFromMesh});
+    putMesh(meshId, state_.ctm * shapeFromMesh, file, line);
+  }
+
+  // A mesh where `ctm` puts it: in the object being defined, or in the scene.
+  void putMesh(uint32_t meshId, const glm::mat4& ctm, const std::string& file, size_t line) {
+    if (currentObject_)
+      objects_[*currentObject_].push_back({meshId, ctm});
+    else
+      addInstance(meshId, toAffine(worldFromPbrt_ * ctm), file, line);
   }
 
   // The materials of a shape's `triangles` (and of their reversed copies after them, for two-sided lights), with
@@ -515,6 +619,9 @@ class PbrtReader {
   std::map<std::string, std::vector<ObjectShape>> objects_;
   std::optional<std::string> currentObject_;
   std::vector<PendingShape> pendingShapes_;
+  std::map<SharedShapeKey, uint32_t> sharedMeshes_;
+  std::optional<IncludeRecording> recording_;  // while an included file is read for the first time
+  std::map<IncludeKey, IncludeRecording> includes_;
   std::map<std::tuple<uint32_t, float, float, float, float, int32_t>, uint32_t> variants_;
   std::optional<PbrtParameters> camera_, film_;
   std::string cameraType_;

@@ -1,5 +1,6 @@
 #include "scene/loaders/pbrt/pbrt_pfm.h"
 
+#include <algorithm>
 #include <bit>
 #include <cctype>
 #include <cmath>
@@ -7,11 +8,13 @@
 #include <sstream>
 
 #include "io/file_bytes.h"
+#include "io/images/area_downscaler.h"
+#include "io/load_budget.h"
 #include "io/load_diagnostics.h"
 
 namespace candela {
 
-Texture readPfm(const std::string& path) {
+Texture readPfm(const std::string& path, uint32_t maxSide, TextureExtent* fileExtent) {
   std::vector<uint8_t> bytes = readFileBytes(path);
   // The header: "PF" or "Pf", width, height and a scale whose sign gives the byte order, each followed by
   // white space; the last by exactly one white-space character.
@@ -34,23 +37,33 @@ Texture readPfm(const std::string& path) {
   uint64_t floats = uint64_t(width) * uint64_t(height) * channels;
   if (width > (1 << 20) || height > (1 << 20) || floats * 4 > bytes.size() - pos)
     failLoad(path, "the PFM header claims more pixels than the file holds");
-  bool bigEndian = scale > 0;
-  Texture t;
-  t.width = uint32_t(width);
-  t.height = uint32_t(height);
-  t.channels = channels;
-  t.floats.resize(floats);
-  for (uint64_t i = 0; i < floats; ++i) {
-    uint32_t word;
-    std::memcpy(&word, bytes.data() + pos + 4 * i, 4);
-    if (bigEndian == (std::endian::native == std::endian::little)) word = __builtin_bswap32(word);
-    float v;
-    std::memcpy(&v, &word, 4);
-    // PFM stores the bottom row first.
-    uint64_t pixel = i / channels, row = pixel / uint64_t(width), column = pixel % uint64_t(width);
-    t.floats[((uint64_t(height) - 1 - row) * uint64_t(width) + column) * channels + i % channels] =
-        std::isfinite(v) ? v : 0.0f;
+  const bool bigEndian = scale > 0;
+  if (fileExtent) *fileExtent = {uint32_t(width), uint32_t(height), channels * uint32_t(sizeof(float))};
+  const auto [targetWidth, targetHeight] = sizeWithin(uint32_t(width), uint32_t(height), maxSide);
+  chargeLoadMemory(uint64_t(targetWidth) * targetHeight * channels * sizeof(float), path,
+                   "a PFM image decoded at " + std::to_string(targetWidth) + "x" + std::to_string(targetHeight) +
+                       " pixels");
+  // PFM stores the bottom row first: the rows are fed to the downscaler top first.
+  AreaDownscaler<float> target(uint32_t(width), uint32_t(height), targetWidth, targetHeight, channels);
+  const size_t rowFloats = size_t(width) * channels;
+  std::vector<float> row(rowFloats);
+  for (long y = height - 1; y >= 0; --y) {
+    const uint8_t* at = bytes.data() + pos + 4 * rowFloats * size_t(y);
+    for (size_t i = 0; i < rowFloats; ++i) {
+      uint32_t word;
+      std::memcpy(&word, at + 4 * i, 4);
+      if (bigEndian == (std::endian::native == std::endian::little)) word = __builtin_bswap32(word);
+      float v;
+      std::memcpy(&v, &word, 4);
+      row[i] = std::isfinite(v) ? v : 0.0f;
+    }
+    target.addRow(row.data());
   }
+  Texture t;
+  t.width = targetWidth;
+  t.height = targetHeight;
+  t.channels = channels;
+  t.floats = target.finish();
   return t;
 }
 

@@ -5,9 +5,11 @@
 #include <cstring>
 #include <istream>
 #include <memory>
+#include <optional>
 #include <streambuf>
 
 #include "io/file_bytes.h"
+#include "io/load_budget.h"
 #include "io/load_diagnostics.h"
 #include "tinyply.h"
 
@@ -17,32 +19,6 @@ namespace {
 
 bool endsWith(const std::string& s, const std::string& suffix) {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
-// The content of a gzip file, refused beyond the size any input may have (maxInputFileBytes) so that a small
-// "zip bomb" cannot fill the memory.
-std::vector<uint8_t> gunzip(const std::string& path, const std::vector<uint8_t>& compressed) {
-  z_stream stream{};
-  if (inflateInit2(&stream, 16 + MAX_WBITS) != Z_OK) failLoad(path, "cannot start decompressing it");
-  std::unique_ptr<z_stream, int (*)(z_stream*)> cleanup(&stream, inflateEnd);
-  stream.next_in = const_cast<Bytef*>(compressed.data());
-  stream.avail_in = uInt(std::min<size_t>(compressed.size(), UINT32_MAX));
-  std::vector<uint8_t> out;
-  const uint64_t limit = maxInputFileBytes();
-  int status = Z_OK;
-  while (status != Z_STREAM_END) {
-    size_t used = out.size();
-    if (used >= limit) failLoad(path, "decompresses to more than the largest input accepted (--max-file-gib)");
-    out.resize(used + std::min<uint64_t>(std::max<size_t>(size_t(1) << 20, used), limit - used));  // doubling
-    stream.next_out = out.data() + used;
-    stream.avail_out = uInt(out.size() - used);
-    status = inflate(&stream, Z_NO_FLUSH);
-    out.resize(out.size() - stream.avail_out);
-    if (status == Z_BUF_ERROR && stream.avail_in == 0) failLoad(path, "compressed data ends early");
-    if (status != Z_OK && status != Z_STREAM_END && status != Z_BUF_ERROR)
-      failLoad(path, std::string("cannot decompress it: ") + (stream.msg ? stream.msg : "corrupt data"));
-  }
-  return out;
 }
 
 // An input stream over bytes in memory that can seek, as tinyply's reading of variable-length lists needs,
@@ -111,11 +87,94 @@ uint64_t smallestElementBytes(const tinyply::PlyElement& element, bool binary) {
   return bytes;
 }
 
+// The longest an ASCII PLY value may be, with the white space after it: real numbers need fewer than 32
+// characters.
+constexpr uint64_t kMaxAsciiValueBytes = 64;
+
+// The most bytes the elements a PLY header declares can take after it (an ASCII value at most
+// kMaxAsciiValueBytes), or nothing when the header is not complete in `bytes` or declares no such bound (lists
+// whose counts may be large).
+std::optional<uint64_t> plyBytesBound(std::vector<uint8_t> bytes) {
+  MemoryBuffer buffer(bytes);
+  std::istream stream(&buffer);
+  tinyply::PlyFile ply;
+  try {
+    if (!ply.parse_header(stream)) return std::nullopt;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+  const bool binary = ply.is_binary_file();
+  uint64_t total = uint64_t(std::max<std::streamoff>(stream.tellg(), 0));
+  for (const tinyply::PlyElement& e : ply.get_elements()) {
+    uint64_t each = 0;
+    for (const tinyply::PlyProperty& p : e.properties) {
+      const uint64_t stride = binary ? uint64_t(tinyply::PropertyTable[p.propertyType].stride) : kMaxAsciiValueBytes;
+      if (!p.isList) {
+        each += stride;
+        continue;
+      }
+      const int countBytes = tinyply::PropertyTable[p.listType].stride;
+      if (countBytes > 2) return std::nullopt;
+      each += (binary ? uint64_t(countBytes) : kMaxAsciiValueBytes) + ((uint64_t(1) << (8 * countBytes)) - 1) * stride;
+    }
+    if (each > 0 && e.size > (uint64_t(1) << 62) / each) return std::nullopt;
+    total += e.size * each;
+    if (total > (uint64_t(1) << 62)) return std::nullopt;
+  }
+  return total;
+}
+
+// The content of a gzip file, decompressed no further than its header says its elements can reach (what follows
+// is never read), charged to the load's memory budget as it grows, and refused beyond the size any input
+// may have (maxInputFileBytes): a small "zip bomb" cannot fill the memory.
+std::vector<uint8_t> gunzip(const std::string& path, const std::vector<uint8_t>& compressed, uint64_t& charged) {
+  z_stream stream{};
+  if (inflateInit2(&stream, 16 + MAX_WBITS) != Z_OK) failLoad(path, "cannot start decompressing it");
+  std::unique_ptr<z_stream, int (*)(z_stream*)> cleanup(&stream, inflateEnd);
+  stream.next_in = const_cast<Bytef*>(compressed.data());
+  stream.avail_in = uInt(std::min<size_t>(compressed.size(), UINT32_MAX));
+  std::vector<uint8_t> out;
+  uint64_t limit = maxInputFileBytes();
+  bool bounded = false;
+  int status = Z_OK;
+  while (status != Z_STREAM_END) {
+    size_t used = out.size();
+    if (!bounded && used > 0) {
+      // The header is in the first chunk unless it is longer than any real one.
+      if (std::optional<uint64_t> bound = plyBytesBound(out)) limit = std::min(limit, *bound);
+      bounded = true;
+    }
+    if (used >= limit) {
+      if (bounded && limit < maxInputFileBytes()) break;
+      failLoad(path, "decompresses to more than the largest input accepted (--max-file-gib)");
+    }
+    const size_t grow = std::min<uint64_t>(std::max<size_t>(size_t(1) << 20, used), limit - used);  // doubling
+    chargeLoadMemory(grow, path, "its decompressed data");
+    charged += grow;
+    out.resize(used + grow);
+    stream.next_out = out.data() + used;
+    stream.avail_out = uInt(out.size() - used);
+    status = inflate(&stream, Z_NO_FLUSH);
+    out.resize(out.size() - stream.avail_out);
+    if (status == Z_BUF_ERROR && stream.avail_in == 0) failLoad(path, "compressed data ends early");
+    if (status != Z_OK && status != Z_STREAM_END && status != Z_BUF_ERROR)
+      failLoad(path, std::string("cannot decompress it: ") + (stream.msg ? stream.msg : "corrupt data"));
+  }
+  return out;
+}
+
+// Returns what a PLY read charged to the load's budget for its temporary buffers once they are gone.
+struct TemporaryCharge {
+  uint64_t bytes = 0;
+  ~TemporaryCharge() { releaseLoadMemory(bytes); }
+};
+
 }  // namespace
 
 Mesh readPlyMesh(const std::string& path) {
+  TemporaryCharge temporary;
   std::vector<uint8_t> bytes = readFileBytes(path);
-  if (endsWith(path, ".gz")) bytes = gunzip(path, bytes);
+  if (endsWith(path, ".gz")) bytes = gunzip(path, bytes, temporary.bytes);
   const uint64_t totalBytes = bytes.size();
   MemoryBuffer buffer(bytes);
   std::istream stream(&buffer);
@@ -132,6 +191,17 @@ Mesh readPlyMesh(const std::string& path) {
       needed += e.size * each;
     }
     if (needed > remaining) failLoad(path, "its elements claim more data than the file has");
+    uint64_t vertexCount = 0, faceCount = 0;
+    for (const tinyply::PlyElement& e : ply.get_elements()) {
+      if (e.name == "vertex") vertexCount = e.size;
+      if (e.name == "face") faceCount = e.size;
+    }
+    // tinyply's buffers and the values read from them, then the mesh (positions, normals, texture coordinates,
+    // two triangles of a quad with their materials): a PLY that claims a billion faces is refused here.
+    const uint64_t estimate = vertexCount * (2 * 32 + 32) + faceCount * (2 * 4 * 8 + 2 * 16);
+    chargeLoadMemory(estimate, path,
+                     std::to_string(vertexCount) + " vertices and " + std::to_string(faceCount) + " faces");
+    temporary.bytes += estimate;
 
     const tinyply::PlyElement* vertex = nullptr;
     const tinyply::PlyElement* face = nullptr;

@@ -5,7 +5,9 @@
 
 #include "core/file_extension.h"
 #include "io/file_bytes.h"
+#include "io/images/exr_decoding.h"
 #include "io/images/image_decoding.h"
+#include "io/load_budget.h"
 #include "scene/loaders/pbrt/pbrt_pfm.h"
 #include "scene/loaders/texture_limits.h"
 
@@ -55,6 +57,8 @@ int32_t PbrtTextures::mixedImage(const PbrtTexture& first, const PbrtTexture& se
     width = std::max(width, uint32_t(std::min(side, std::ceil(float(image.width) * std::fabs(t->uvScale.x)))));
     height = std::max(height, uint32_t(std::min(side, std::ceil(float(image.height) * std::fabs(t->uvScale.y)))));
   }
+  chargeLoadMemory(uint64_t(width) * height * 3 * sizeof(float), context_.mainFile,
+                   "a mix texture baked at " + std::to_string(width) + "x" + std::to_string(height) + " texels");
   Texture out;
   out.name = "mix texture";
   out.width = width;
@@ -76,17 +80,30 @@ int32_t PbrtTextures::mixedImage(const PbrtTexture& first, const PbrtTexture& se
 }
 
 int32_t PbrtTextures::loadImage(const std::string& path, bool srgb, const std::string& file, size_t line) {
-  auto key = std::make_pair(path, srgb);
+  std::string resolved = context_.resolve(path, file, line);
+  auto key = std::make_pair(resolved, srgb);
   if (auto found = images_.find(key); found != images_.end()) return found->second;
   int32_t index = kNoTexture;
-  std::string resolved = context_.resolve(path, file, line);
   try {
     std::string ext = lowerCaseExtension(resolved);
     Texture image;
     if (ext == ".exr") {
-      image = loadEnvironmentImage(resolved);
+      const TextureLimits limits = textureLimits();
+      std::pair<uint32_t, uint32_t> inFile{0, 0};
+      const std::vector<uint8_t> bytes = readFileBytes(resolved);
+      image = decodeExr(resolved, bytes.data(), bytes.size(), UINT64_MAX, limits.maxSize, &inFile);
+      const TextureExtent full{inFile.first, inFile.second, 3 * uint32_t(sizeof(float))};
+      if (image.width != full.width || image.height != full.height)
+        context_.warnings.add(context_.mainFile,
+                              downscaleWarning(resolved, full, {image.width, image.height, full.bytesPerPixel},
+                                               limits));
     } else if (ext == ".pfm") {
-      image = readPfm(resolved);
+      const TextureLimits limits = textureLimits();
+      TextureExtent full;
+      image = readPfm(resolved, limits.maxSize, &full);
+      const TextureExtent fitted{image.width, image.height, full.bytesPerPixel};
+      if (fitted.width != full.width || fitted.height != full.height)
+        context_.warnings.add(context_.mainFile, downscaleWarning(resolved, full, fitted, limits));
     } else {
       // Decoded no larger than the texture size limit, checked on the header: a small PNG can claim 16000x16000
       // pixels. The scene's memory limit applies once all its textures are read (fitSceneTextures).
@@ -102,6 +119,8 @@ int32_t PbrtTextures::loadImage(const std::string& path, bool srgb, const std::s
     image.name = resolved;
     index = int32_t(context_.scene.textures.size());
     context_.scene.textures.push_back(std::move(image));
+  } catch (const LoadBudgetError&) {
+    throw;
   } catch (const LoadError& e) {
     context_.warnings.add(context_.mainFile, std::string("image left out: ") + e.what());
   }
@@ -112,6 +131,8 @@ int32_t PbrtTextures::loadImage(const std::string& path, bool srgb, const std::s
 int32_t PbrtTextures::invertedImage(int32_t image) {
   if (auto found = inverted_.find(image); found != inverted_.end()) return found->second;
   const Texture& source = context_.scene.textures[size_t(image)];
+  chargeLoadMemory(uint64_t(source.width) * source.height * source.channels * sizeof(float), source.name,
+                   "its inverted copy");
   Texture out;
   out.name = source.name + " (inverted)";
   out.width = source.width;
@@ -173,6 +194,7 @@ int32_t PbrtTextures::mappedImage(int32_t image, const std::string& key, const s
   auto cacheKey = std::make_pair(image, key);
   if (auto found = mapped_.find(cacheKey); found != mapped_.end()) return found->second;
   const Texture& source = context_.scene.textures[size_t(image)];
+  chargeLoadMemory(uint64_t(source.width) * source.height * sizeof(float), source.name, "its " + key + " copy");
   Texture out;
   out.name = source.name + " (" + key + ")";
   out.width = source.width;
@@ -197,7 +219,20 @@ int32_t PbrtTextures::mappedImage(int32_t image, const std::string& key, const s
 PbrtTexture PbrtTextures::value(const PbrtParameters& params, const std::string& name, Vec3 fallback) {
   if (std::optional<std::string> texture = params.getTexture(name)) {
     auto found = named_.find(*texture);
-    if (found != named_.end()) return found->second;
+    if (found != named_.end()) return made(found->second);
+    context_.warn("unknown texture " + *texture, params.file + ":" + std::to_string(params.line) + ": texture '" +
+                                                     *texture + "' is not defined: '" + name + "' takes its default");
+    return PbrtTexture{fallback};
+  }
+  if (std::optional<PbrtColor> c = params.getColor(name)) return PbrtTexture{c->rgb};
+  return PbrtTexture{fallback};
+}
+
+PbrtTexture PbrtTextures::input(const Definition& definition, const std::string& name, Vec3 fallback) {
+  const PbrtParameters& params = definition.params;
+  if (std::optional<std::string> texture = params.getTexture(name)) {
+    auto found = definition.inputs.find(*texture);
+    if (found != definition.inputs.end() && found->second) return *found->second->made;
     context_.warn("unknown texture " + *texture, params.file + ":" + std::to_string(params.line) + ": texture '" +
                                                      *texture + "' is not defined: '" + name + "' takes its default");
     return PbrtTexture{fallback};
@@ -210,6 +245,42 @@ void PbrtTextures::define(const std::string& name, const std::string& valueType,
                           const PbrtParameters& params) {
   if (valueType != "float" && valueType != "spectrum" && valueType != "color" && valueType != "rgb")
     params.fail("texture '" + name + "' has an unknown value type '" + valueType + "'");
+  auto definition = std::make_shared<Definition>(Definition{name, valueType, className, params, {}, std::nullopt});
+  for (const PbrtParameter& p : params.list)
+    if (p.type == "texture" && !p.strings.empty()) {
+      auto found = named_.find(p.strings.front());
+      definition->inputs[p.strings.front()] = found == named_.end() ? nullptr : found->second;
+    }
+  named_[name] = std::move(definition);
+}
+
+const PbrtTexture& PbrtTextures::made(const std::shared_ptr<Definition>& definition) {
+  std::vector<Definition*> pending{definition.get()};
+  while (!pending.empty()) {
+    Definition* d = pending.back();
+    bool ready = true;
+    for (const auto& [inputName, input] : d->inputs)
+      if (input && !input->made) {
+        pending.push_back(input.get());
+        ready = false;
+      }
+    if (!ready) continue;
+    pending.pop_back();
+    if (!d->made) {
+      d->made = make(*d);
+      context_.warnUnused("texture '" + d->className + "'", d->params);
+    }
+  }
+  return *definition->made;
+}
+
+PbrtTexture PbrtTextures::make(const Definition& definition) {
+  const std::string& name = definition.name;
+  const std::string& className = definition.className;
+  const PbrtParameters& params = definition.params;
+  auto value = [&](const PbrtParameters&, const std::string& parameter, Vec3 fallback) {
+    return input(definition, parameter, fallback);
+  };
   PbrtTexture t;
   if (className == "imagemap") {
     std::string file = params.getString("filename", "");
@@ -268,7 +339,7 @@ void PbrtTextures::define(const std::string& name, const std::string& valueType,
   }
   std::string mapping = params.getString("mapping", "uv");
   if (mapping != "uv") context_.warn("texture mapping " + mapping, "texture mapping '" + mapping + "' read as 'uv'");
-  named_[name] = t;
+  return t;
 }
 
 }  // namespace candela

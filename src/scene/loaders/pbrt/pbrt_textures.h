@@ -1,6 +1,7 @@
 #pragma once
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <tuple>
 
@@ -21,14 +22,16 @@ struct PbrtTexture {
 // The named textures of a scene (`Texture "name" "spectrum"|"float" "class" ...`): imagemap (PNG, JPEG, TGA, BMP,
 // HDR, EXR, PFM; invert), constant, scale, mix (of images: as an image of the mix) and 2D checkerboards (as an
 // image of one period) are honoured; 3D checkerboards become the mean of their two inputs, other classes a
-// constant grey, each with a warning.
+// constant grey, each with a warning. A texture is made (its images decoded, its mix baked) only when a material,
+// a light or a shape first asks for it: a scene may define many textures it never uses.
 class PbrtTextures {
  public:
   explicit PbrtTextures(PbrtContext& context) : context_(context) {}
 
   void define(const std::string& name, const std::string& valueType, const std::string& className,
               const PbrtParameters& params);
-  // A material or texture parameter: a texture it names, a colour or number it gives, or `fallback`.
+  // A material or light parameter: a texture it names (made now, if not before), a colour or number it gives, or
+  // `fallback`.
   PbrtTexture value(const PbrtParameters& params, const std::string& name, Vec3 fallback);
   // An image file as a scene texture (cached by file and encoding); kNoTexture after a warning when unreadable.
   int32_t loadImage(const std::string& path, bool srgb, const std::string& file, size_t line);
@@ -44,13 +47,25 @@ class PbrtTextures {
   int32_t mixedImage(const PbrtTexture& first, const PbrtTexture& second, const PbrtTexture& amount);
 
  private:
+  // A Texture directive, kept until something uses it, with the definitions its texture parameters named then.
+  struct Definition {
+    std::string name, valueType, className;
+    PbrtParameters params;
+    std::map<std::string, std::shared_ptr<Definition>> inputs;  // by texture name; null for a name not defined
+    std::optional<PbrtTexture> made;
+  };
+  // Makes `definition` and, first, every texture it depends on (without recursion: chains of textures may be long).
+  const PbrtTexture& made(const std::shared_ptr<Definition>& definition);
+  PbrtTexture make(const Definition& definition);
+  // A parameter of a texture being made: a texture among its inputs, a colour or number, or `fallback`.
+  PbrtTexture input(const Definition& definition, const std::string& name, Vec3 fallback);
   // The linear colour of `t` at pbrt's (u, v): its factor, times its image's nearest texel through its uv mapping.
   Vec3 colourAt(const PbrtTexture& t, float u, float v) const;
   // A float copy of an image with its colour channels (as linear values) turned into 1 - value, for `invert`.
   int32_t invertedImage(int32_t image);
 
   PbrtContext& context_;
-  std::map<std::string, PbrtTexture> named_;
+  std::map<std::string, std::shared_ptr<Definition>> named_;
   std::map<std::pair<std::string, bool>, int32_t> images_;
   std::map<int32_t, int32_t> inverted_;
   static constexpr size_t kMaxCheckerboardImages = 1024;

@@ -1,0 +1,258 @@
+#!/usr/bin/env python3
+"""Small files that once made a load take minutes and gigabytes, generated here and rendered (or refused) under a
+bound on wall time and peak memory: python3 load_bounds.py CASE CANDELA WORKDIR.
+
+Each case writes its inputs into WORKDIR, runs candela on them and measures the child's peak resident memory
+(wait4's ru_maxrss) and its time. The time bound is on the child's CPU time (user and system, all its threads):
+on a machine shared with other work the wall time says more about the neighbours than about candela; swapping,
+which costs wall time, shows in the memory bound. A case passes when candela renders or refuses (as the case says) within
+the bounds; a case of shared data also renders the scene with one reference and requires the many references to
+cost no more than 1.2 times its memory."""
+
+import gzip
+import os
+import re
+import struct
+import subprocess
+import sys
+import time
+import zlib
+
+SECONDS = 5.0
+MEMORY_BYTES = 1 << 30
+SHARED_RATIO = 1.2
+
+TINY = ["--spp", "1", "--width", "16", "--height", "12", "--backend", "cpu", "--no-cache"]
+
+
+def run(candela, args, workdir):
+    """Runs candela; returns (exit status, output, seconds, peak resident bytes, CPU seconds)."""
+    start = time.monotonic()
+    child = subprocess.Popen([candela] + args, cwd=workdir, stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+    out = b""
+    # Read before waiting so that a talkative child cannot block on a full pipe.
+    out = child.stdout.read()
+    _, status, usage = os.wait4(child.pid, 0)
+    child.returncode = os.waitstatus_to_exitcode(status)
+    seconds = time.monotonic() - start
+    cpu = usage.ru_utime + usage.ru_stime
+    return child.returncode, out.decode(errors="replace"), seconds, usage.ru_maxrss * 1024, cpu
+
+
+def render(candela, workdir, scene, extra=()):
+    return run(candela, ["render", scene, *TINY, *extra, "-o", os.path.join(workdir, "out.png")], workdir)
+
+
+def write(path, data):
+    with open(path, "wb") as f:
+        f.write(data if isinstance(data, bytes) else data.encode())
+
+
+def png_bytes(width, height, channels=3):
+    """A PNG of zero pixels: a few kilobytes however large it claims to be."""
+    color_type = {1: 0, 3: 2, 4: 6}[channels]
+    row = b"\0" * (1 + width * channels)
+    compressor = zlib.compressobj(9)
+    data = b"".join(compressor.compress(row) for _ in range(height)) + compressor.flush()
+
+    def chunk(kind, body):
+        return struct.pack(">I", len(body)) + kind + body + struct.pack(">I", zlib.crc32(kind + body))
+
+    header = struct.pack(">IIBBBBB", width, height, 8, color_type, 0, 0, 0)
+    return b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", data) + chunk(b"IEND", b"")
+
+
+def pfm_bytes(width, height):
+    return b"PF\n%d %d\n-1\n" % (width, height) + struct.pack("<f", 0.5) * (3 * width * height)
+
+
+def ply_grid(cells):
+    """A binary PLY of a cells x cells grid of quads."""
+    n = cells + 1
+    header = ("ply\nformat binary_little_endian 1.0\nelement vertex %d\nproperty float x\nproperty float y\n"
+              "property float z\nelement face %d\nproperty list uchar int vertex_indices\nend_header\n"
+              % (n * n, cells * cells)).encode()
+    vertices = b"".join(struct.pack("<fff", i / cells, j / cells, 0.0) for j in range(n) for i in range(n))
+    faces = b"".join(struct.pack("<Biiii", 4, j * n + i, j * n + i + 1, (j + 1) * n + i + 1, (j + 1) * n + i)
+                     for j in range(cells) for i in range(cells))
+    return header + vertices + faces
+
+
+SCENE_HEAD = ('LookAt 0 0 -5  0 0 0  0 1 0\nCamera "perspective" "float fov" 45\nWorldBegin\n'
+              'LightSource "infinite" "rgb L" [1 1 1]\n')
+
+
+def shapes_scene(count, shape):
+    lines = [SCENE_HEAD]
+    for i in range(count):
+        lines.append("AttributeBegin\nTranslate %g %g 0\n%s\nAttributeEnd\n" % (i % 60 * 0.1, i // 60 * 0.1, shape))
+    return "".join(lines)
+
+
+def case_ply_referenced_many(candela, workdir):
+    write(os.path.join(workdir, "grid.ply"), ply_grid(300))
+    for count in (1, 2000):
+        write(os.path.join(workdir, "ply-%d.pbrt" % count),
+              shapes_scene(count, 'Shape "plymesh" "string filename" "grid.ply"'))
+    return "shared", "ply-1.pbrt", "ply-2000.pbrt"
+
+
+def case_include_many(candela, workdir):
+    cells = 150
+    points = " ".join("%g %g 0" % (i / cells, j / cells) for j in range(cells + 1) for i in range(cells + 1))
+    n = cells + 1
+    indices = " ".join("%d %d %d %d %d %d" % (j * n + i, j * n + i + 1, (j + 1) * n + i + 1,
+                                              j * n + i, (j + 1) * n + i + 1, (j + 1) * n + i)
+                       for j in range(cells) for i in range(cells))
+    write(os.path.join(workdir, "part.pbrt"),
+          'Shape "trianglemesh" "point3 P" [%s] "integer indices" [%s]\n' % (points, indices))
+    for count in (1, 2000):
+        write(os.path.join(workdir, "include-%d.pbrt" % count), shapes_scene(count, 'Include "part.pbrt"'))
+    return "shared", "include-1.pbrt", "include-2000.pbrt"
+
+
+def case_spheres(candela, workdir):
+    write(os.path.join(workdir, "spheres-1.pbrt"), shapes_scene(1, 'Shape "sphere" "float radius" 0.04'))
+    lines = [SCENE_HEAD]
+    for i in range(3600):
+        lines.append('AttributeBegin\nTranslate %g %g 0\nShape "sphere" "float radius" %g\nAttributeEnd\n'
+                     % (i % 60 * 0.1, i // 60 * 0.1, 0.01 + 0.00001 * i))
+    write(os.path.join(workdir, "spheres-3600.pbrt"), "".join(lines))
+    return "shared", "spheres-1.pbrt", "spheres-3600.pbrt"
+
+
+def case_unused_mix_textures(candela, workdir):
+    write(os.path.join(workdir, "a.png"), png_bytes(4096, 4096))
+    write(os.path.join(workdir, "b.png"), png_bytes(4096, 4096))
+    lines = [SCENE_HEAD]
+    for i in range(200):
+        lines.append('Texture "a%d" "spectrum" "imagemap" "string filename" "a.png" "float uscale" %d\n' % (i, i + 1))
+        lines.append('Texture "b%d" "spectrum" "imagemap" "string filename" "b.png"\n' % i)
+        lines.append('Texture "m%d" "spectrum" "mix" "texture tex1" "a%d" "texture tex2" "b%d"\n' % (i, i, i))
+    lines.append('Shape "sphere"\n')
+    write(os.path.join(workdir, "mix.pbrt"), "".join(lines))
+    return "bounded", "mix.pbrt"
+
+
+def case_tall_pfm(candela, workdir):
+    write(os.path.join(workdir, "tall.pfm"), pfm_bytes(1, 1000000))
+    write(os.path.join(workdir, "tall-pfm.pbrt"),
+          'LookAt 0 0 -5  0 0 0  0 1 0\nCamera "perspective"\nWorldBegin\n'
+          'LightSource "infinite" "string filename" "tall.pfm"\n'
+          'Texture "t" "spectrum" "imagemap" "string filename" "tall.pfm"\n'
+          'Material "diffuse" "texture reflectance" "t"\nShape "sphere"\n')
+    return "bounded", "tall-pfm.pbrt"
+
+
+def case_ply_gzip_bomb(candela, workdir):
+    return gzip_bomb(workdir, "binary_little_endian")
+
+
+def case_ply_gzip_ascii_bomb(candela, workdir):
+    return gzip_bomb(workdir, "ascii")
+
+
+def gzip_bomb(workdir, encoding):
+    """A gzip PLY of three vertices and a face, followed by 1 GiB of zeros."""
+    header = (b"ply\nformat %s 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+              b"property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+              % encoding.encode())
+    compressor = zlib.compressobj(9, zlib.DEFLATED, 31)
+    block = b"\0" * (1 << 20)
+    data = compressor.compress(header) + b"".join(compressor.compress(block) for _ in range(1024))
+    write(os.path.join(workdir, "bomb.ply.gz"), data + compressor.flush())
+    write(os.path.join(workdir, "bomb.pbrt"), SCENE_HEAD + 'Shape "plymesh" "string filename" "bomb.ply.gz"\n')
+    return "bounded", "bomb.pbrt"
+
+
+def case_large_png(candela, workdir):
+    write(os.path.join(workdir, "large.png"), png_bytes(16000, 16000))
+    write(os.path.join(workdir, "large-png.pbrt"), SCENE_HEAD +
+          'Texture "t" "spectrum" "imagemap" "string filename" "large.png"\n'
+          'Material "diffuse" "texture reflectance" "t"\nShape "sphere"\n')
+    return "bounded", "large-png.pbrt"
+
+
+def case_obj_face_corners(candela, workdir):
+    corners = 12000000
+    with open(os.path.join(workdir, "corners.obj"), "wb") as f:
+        f.write(b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf")
+        f.write(b" 1 2 3" * (corners // 3))
+        f.write(b"\n")
+    return "bounded", "corners.obj"
+
+
+def case_thin_environment(candela, workdir):
+    write(os.path.join(workdir, "thin.pfm"), pfm_bytes(1, 8192))
+    write(os.path.join(workdir, "thin-env.pbrt"),
+          'LookAt 0 0 -5  0 0 0  0 1 0\nCamera "perspective"\nWorldBegin\n'
+          'LightSource "infinite" "string filename" "thin.pfm"\nShape "sphere"\n')
+    return "bounded", "thin-env.pbrt"
+
+
+def case_max_memory(candela, workdir):
+    write(os.path.join(workdir, "budget.png"), png_bytes(8192, 8192, 4))
+    write(os.path.join(workdir, "budget.pbrt"), SCENE_HEAD +
+          'Texture "t" "spectrum" "imagemap" "string filename" "budget.png"\n'
+          'Material "diffuse" "texture reflectance" "t"\nShape "sphere"\n')
+    return "refused", "budget.pbrt", ["--max-memory", "200M"], "budget.png: an image decoded at 8192x8192 pixels needs about 256 MiB.*--max-memory"
+
+
+CASES = {name[len("case_"):]: f for name, f in globals().items() if name.startswith("case_")}
+
+
+def describe(label, result):
+    status, out, seconds, peak, cpu = result
+    last = out.strip().splitlines()[-1] if out.strip() else ""
+    print("%s: exit %d in %.2f s (%.2f s of CPU), peak %.0f MiB: %s" % (label, status, seconds, cpu, peak / 2**20, last))
+
+
+def within_bounds(label, result):
+    status, out, _, peak, seconds = result
+    describe(label, result)
+    ok = True
+    if status not in (0, 1) or (status == 1 and len(out.strip().splitlines()) == 0):
+        print("FAIL: %s neither rendered nor refused in a line" % label)
+        ok = False
+    if seconds > SECONDS:
+        print("FAIL: %s took %.2f s of CPU, more than %.0f s" % (label, seconds, SECONDS))
+        ok = False
+    if peak > MEMORY_BYTES:
+        print("FAIL: %s peaked at %.0f MiB, more than %.0f MiB" % (label, peak / 2**20, MEMORY_BYTES / 2**20))
+        ok = False
+    return ok
+
+
+def main():
+    if len(sys.argv) != 4 or sys.argv[1] not in CASES:
+        print("usage: load_bounds.py {%s} CANDELA WORKDIR" % "|".join(sorted(CASES)))
+        return 2
+    name, candela, workdir = sys.argv[1], os.path.abspath(sys.argv[2]), os.path.join(sys.argv[3], sys.argv[1])
+    os.makedirs(workdir, exist_ok=True)
+    kind, *scenes = CASES[name](candela, workdir)
+    if kind == "refused":
+        scene, options, pattern = scenes
+        result = render(candela, workdir, scene, options)
+        ok = within_bounds(scene, result)
+        if result[0] != 1 or not re.search(pattern, result[1]):
+            print("FAIL: %s was not refused with a line like '%s'" % (scene, pattern))
+            ok = False
+        return 0 if ok else 1
+    if kind == "bounded":
+        return 0 if within_bounds(scenes[0], render(candela, workdir, scenes[0])) else 1
+    one = render(candela, workdir, scenes[0])
+    describe(scenes[0], one)
+    many = render(candela, workdir, scenes[1])
+    ok = within_bounds(scenes[1], many)
+    if one[0] != 0 or many[0] != 0:
+        print("FAIL: a scene of shared data must render")
+        ok = False
+    if many[3] > SHARED_RATIO * one[3]:
+        print("FAIL: %s peaked at %.2f times the memory of one reference, more than %.1f"
+              % (scenes[1], many[3] / one[3], SHARED_RATIO))
+        ok = False
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
