@@ -778,7 +778,8 @@ TEST(GltfLoader, BadInputNamesFileAndJsonPath) {
 
   g = triangleGltf();
   g["bufferViews"][0]["byteLength"] = 1000;
-  EXPECT_NE(errorOf(g).find("reaches past the end of buffer 0"), std::string::npos);
+  EXPECT_NE(errorOf(g).find("bufferViews[0]: byteOffset 0 and byteLength 1000 reach beyond the"), std::string::npos)
+      << errorOf(g);
 
   g = triangleGltf();
   g["buffers"][0]["uri"] = "missing.bin";
@@ -791,6 +792,49 @@ TEST(GltfLoader, BadInputNamesFileAndJsonPath) {
   g = triangleGltf();
   g["nodes"] = {{{"mesh", 0}, {"children", {0}}}};
   EXPECT_NE(errorOf(g).find("cycle"), std::string::npos);
+}
+
+// glTF meshes made of the same primitives are one mesh of the scene, instanced by every node that names one.
+TEST(GltfLoader, MeshesOfTheSamePrimitivesAreOneMeshInstanced) {
+  json g = triangleGltf();
+  g["meshes"].push_back(g["meshes"][0]);
+  g["nodes"] = {{{"mesh", 0}}, {{"mesh", 1}, {"translation", {2, 0, 0}}}};
+  g["scenes"][0]["nodes"] = {0, 1};
+  const Scene s = load(g);
+  ASSERT_EQ(s.meshes.size(), 1u);
+  ASSERT_EQ(s.instances.size(), 2u);
+  EXPECT_EQ(s.instances[1].meshId, 0u);
+  EXPECT_EQ(s.instances[1].objectToWorld.m[3], 2.0f);
+}
+
+// A primitive that repeats another's vertices, indices and mode adds nothing but memory: it is left out, and
+// primitives that share vertex accessors share one copy of the vertices.
+TEST(GltfLoader, RepeatedPrimitivesAreDrawnOnceAndSharedVerticesKeptOnce) {
+  json g = triangleGltf();
+  json primitive = g["meshes"][0]["primitives"][0];
+  for (int i = 0; i < 3; ++i) g["meshes"][0]["primitives"].push_back(primitive);
+  primitive["mode"] = 6;  // the same triangle as a fan
+  g["meshes"][0]["primitives"].push_back(primitive);
+  LoadWarnings warnings;
+  const Scene s = load(g, warnings);
+  ASSERT_EQ(s.meshes.size(), 1u);
+  EXPECT_EQ(s.meshes[0].triangleCount(), 2u);
+  EXPECT_EQ(s.meshes[0].positions.size(), 3u);
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_EQ(warnings.messages[0],
+            "test.gltf: meshes[0]: 3 primitives draw the triangles of an earlier primitive again and are left out");
+}
+
+TEST(GltfLoader, NegativeByteOffsetsAreRefused) {
+  json g = triangleGltf();
+  g["bufferViews"][1]["byteOffset"] = -4;
+  EXPECT_EQ(errorOf(g), "test.gltf: bufferViews[1].byteOffset: -4 is not a whole number of bytes from 0");
+  g = triangleGltf();
+  g["accessors"][1]["byteOffset"] = -4;
+  EXPECT_EQ(errorOf(g), "test.gltf: accessors[1].byteOffset: -4 is not a whole number of bytes from 0");
+  g = triangleGltf();
+  g["accessors"][1]["byteOffset"] = 4.5;
+  EXPECT_EQ(errorOf(g), "test.gltf: accessors[1].byteOffset: 4.5 is not a whole number of bytes from 0");
 }
 
 TEST(GltfLoader, MissingTextureIsAWarning) {
