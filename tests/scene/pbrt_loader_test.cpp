@@ -404,7 +404,7 @@ TEST(PbrtLoader, PerspectiveScreenWindowsScaleAndShiftTheImage) {
   EXPECT_FLOAT_EQ(scene.camera.imageShift.x, 1.0f);
   EXPECT_FLOAT_EQ(scene.camera.imageShift.y, 0.5f);
   EXPECT_NE(loadError("Camera \"perspective\" \"float screenwindow\" [1 -1 -1 1]\nWorldBegin\n")
-                .find("test.pbrt:1: the camera's screen window is empty"),
+                .find("test.pbrt:1: Camera 'screenwindow' (or 'frameaspectratio'): the window is empty"),
             std::string::npos);
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/mat3x3.hpp>
+#include <string>
 
 namespace candela {
 
@@ -23,9 +24,8 @@ ScreenWindow screenWindowOf(const PbrtParameters& params, uint32_t width, uint32
     if (sw.size() != 4) params.fail("'screenwindow' needs 4 numbers: xmin xmax ymin ymax");
     w = {float(sw[0]), float(sw[1]), float(sw[2]), float(sw[3])};
   }
-  if (!(std::isfinite(w.xMin) && std::isfinite(w.xMax) && std::isfinite(w.yMin) && std::isfinite(w.yMax) &&
-        w.xMax > w.xMin && w.yMax > w.yMin))
-    params.fail("the camera's screen window is empty or not finite");
+  if (!(std::isfinite(w.xMax - w.xMin) && std::isfinite(w.yMax - w.yMin) && w.xMax > w.xMin && w.yMax > w.yMin))
+    params.fail("Camera 'screenwindow' (or 'frameaspectratio'): the window is empty or its size is not finite");
   return w;
 }
 
@@ -75,13 +75,19 @@ CameraDescription makePbrtCamera(const std::string& type, const PbrtParameters& 
     c.orthographicHalfHeight = halfHeight * length(cameraUp);
   } else {
     // fov spans screen coordinates [-1, 1]: the shorter image axis of the default window.
-    const float fov = std::clamp(params.getFloat("fov", 90.0f), 0.01f, 179.0f);
-    const float tanHalf = std::tan(0.5f * fov * kPi / 180.0f) * halfHeight;
+    const float fov = params.getFloat("fov", 90.0f);
+    if (!(fov > 0.0f && fov < 180.0f))
+      params.fail("Camera 'fov' " + std::to_string(fov) + ": it must lie between 0 and 180 degrees");
+    const float tanHalf = std::tan(0.5f * std::clamp(fov, 0.01f, 179.0f) * kPi / 180.0f) * halfHeight;
     c.verticalFovDegrees = std::clamp(2.0f * std::atan(tanHalf) * 180.0f / kPi, 0.01f, 179.0f);
   }
+  if (!std::isfinite(c.imageShift.x) || !std::isfinite(c.imageShift.y) || !std::isfinite(c.verticalFovDegrees) ||
+      !std::isfinite(c.orthographicHalfHeight))
+    params.fail("Camera 'screenwindow': the window gives no finite field of view or image shift");
   c.apertureRadius = std::max(0.0f, params.getFloat("lensradius", 0.0f));
   c.focusDistance = std::max(0.0f, params.getFloat("focaldistance", 1e6f));
-  if (!isFinite(c.eye) || !isFinite(forward) || !isFinite(c.up)) params.fail("camera transform is not invertible");
+  if (!isFinite(c.eye) || !isFinite(forward) || !isFinite(c.up))
+    params.fail("Camera: the camera transform (CTM at the Camera directive) is not invertible");
   return c;
 }
 

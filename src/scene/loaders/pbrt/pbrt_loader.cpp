@@ -170,9 +170,15 @@ class PbrtReader {
         applyTransform(pbrtScale({float(v[0]), float(v[1]), float(v[2])}), tokens, t.line, false);
       } else if (d == "Rotate") {
         auto v = readNumbers(tokens, 4, d);
+        const std::string problem = pbrtRotateProblem(float(v[0]), {float(v[1]), float(v[2]), float(v[3])});
+        if (!problem.empty()) fail(tokens, t.line, "Rotate: " + problem);
         applyTransform(pbrtRotate(float(v[0]), {float(v[1]), float(v[2]), float(v[3])}), tokens, t.line, false);
       } else if (d == "LookAt") {
         auto v = readNumbers(tokens, 9, d);
+        const std::string problem =
+            pbrtLookAtProblem({float(v[0]), float(v[1]), float(v[2])}, {float(v[3]), float(v[4]), float(v[5])},
+                              {float(v[6]), float(v[7]), float(v[8])});
+        if (!problem.empty()) fail(tokens, t.line, "LookAt: " + problem);
         applyTransform(pbrtLookAt({float(v[0]), float(v[1]), float(v[2])}, {float(v[3]), float(v[4]), float(v[5])},
                                   {float(v[6]), float(v[7]), float(v[8])}),
                        tokens, t.line, false);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
+#include <string>
 
 namespace candela {
 
@@ -14,6 +15,24 @@ glm::mat4 pbrtRotate(float degrees, Vec3 axis) {
   float len = glm::length(a);
   if (!(len > 0.0f) || !std::isfinite(len)) return glm::mat4(1.0f);
   return glm::rotate(glm::mat4(1.0f), glm::radians(degrees), a / len);
+}
+
+std::string pbrtRotateProblem(float degrees, Vec3 axis) {
+  if (!std::isfinite(degrees)) return "the angle is not finite";
+  const float len = glm::length(glm::vec3(axis.x, axis.y, axis.z));
+  if (!(len > 0.0f) || !std::isfinite(len)) return "the axis has no direction (it is zero or not finite)";
+  return {};
+}
+
+std::string pbrtLookAtProblem(Vec3 eyeIn, Vec3 lookIn, Vec3 upIn) {
+  const glm::vec3 eye(eyeIn.x, eyeIn.y, eyeIn.z), look(lookIn.x, lookIn.y, lookIn.z), up(upIn.x, upIn.y, upIn.z);
+  const glm::vec3 dir = look - eye;
+  if (!std::isfinite(glm::length(dir)) || !std::isfinite(glm::length(up)))
+    return "a point or the up vector is not finite";
+  if (!(glm::length(dir) > 0.0f)) return "the eye and the point looked at are the same point";
+  if (!(glm::length(glm::cross(glm::normalize(up), glm::normalize(dir))) > 0.0f))
+    return "the up vector is zero or parallel to the view direction";
+  return {};
 }
 
 glm::mat4 pbrtLookAt(Vec3 eyeIn, Vec3 lookIn, Vec3 upIn) {
