@@ -202,7 +202,8 @@ void packTextures(const Scene& scene, FlatScene& flat) {
 
 void buildEnvironment(const Environment& env, FlatScene& flat) {
   EnvironmentView& view = flat.environment;
-  float angle = env.rotationDegrees * kPi / 180.0f;
+  // Reduced exactly first: a rotation near the largest float would overflow to infinity in radians.
+  float angle = std::fmod(env.rotationDegrees, 360.0f) * kPi / 180.0f;
   view.rotationCos = std::cos(angle);
   view.rotationSin = std::sin(angle);
   view.visibleToCamera = env.visibleToCamera ? 1u : 0u;
