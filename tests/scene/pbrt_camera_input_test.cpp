@@ -54,6 +54,22 @@ TEST(PbrtCameraInput, ScreenWindowErrorsSpeakPbrt) {
             "finite");
 }
 
+// What the scene's repair would refuse in a camera is refused here first, naming the pbrt parameter rather than
+// a field of candela's scene file.
+TEST(PbrtCameraInput, CamerasBeyondTheCoordinateLimitsAreRefusedInPbrtsTerms) {
+  const std::string world = "WorldBegin\n" + std::string(kTriangle);
+  EXPECT_EQ(loadError("Camera \"orthographic\" \"float screenwindow\" [-1 1 -1e20 1e20]\n" + world),
+            "test.pbrt:1: Camera 'screenwindow': the window gives no field of view, or a size or shift beyond 1e9");
+  EXPECT_EQ(loadError("Camera \"perspective\" \"float lensradius\" 1e30\n" + world),
+            "test.pbrt:1: Camera 'lensradius' 1000000015047466219876688855040.000000: it must lie between 0 and 1e9");
+  EXPECT_EQ(loadError("Camera \"perspective\" \"float focaldistance\" -1\n" + world),
+            "test.pbrt:1: Camera 'focaldistance' -1.000000: it must lie between 0 and 1e9");
+  EXPECT_EQ(loadError("LookAt 3e38 0 0  0 0 0  0 1 0\nCamera \"perspective\"\n" + world),
+            "test.pbrt:2: Camera: the camera transform (the CTM at the Camera directive) places the camera beyond 1e9");
+  EXPECT_EQ(loadError("Translate 1e20 0 0\nCamera \"perspective\"\n" + world),
+            "test.pbrt:2: Camera: the camera transform (the CTM at the Camera directive) places the camera beyond 1e9");
+}
+
 TEST(PbrtCameraInput, AByteOrderMarkIsSkippedInTheMainFileAndInIncludes) {
   test::TempFolder folder;
   const std::string bom = "\xEF\xBB\xBF";

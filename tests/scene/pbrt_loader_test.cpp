@@ -682,9 +682,9 @@ TEST(PbrtLoader, CoordSysTransformCameraPlacesLightsAtTheCamera) {
   ASSERT_EQ(scene.punctualLights.size(), 2u);
   expectNear(scene.punctualLights[0].position, scene.camera.eye);
   expectNear(scene.punctualLights[1].direction, normalize(scene.camera.target - scene.camera.eye));
-  EXPECT_NE(
-      loadError("Scale 0 1 1\nCamera \"perspective\"\n").find("test.pbrt:2: the camera transform is not invertible"),
-      std::string::npos);
+  EXPECT_NE(loadError("Scale 0 1 1\nCamera \"perspective\"\n")
+                .find("test.pbrt:2: Camera: the CTM at the Camera directive is not invertible"),
+            std::string::npos);
 }
 
 TEST(PbrtLoader, UnsupportedFeaturesWarnOncePerFeature) {

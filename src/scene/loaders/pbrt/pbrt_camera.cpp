@@ -5,6 +5,8 @@
 #include <glm/mat3x3.hpp>
 #include <string>
 
+#include "scene/scene_repair.h"
+
 namespace candela {
 
 namespace {
@@ -41,7 +43,8 @@ CameraDescription makePbrtCamera(const std::string& type, const PbrtParameters& 
   const bool orthographic = type == "orthographic";
   if (type != "perspective" && !orthographic)
     context.warn("camera " + type, "'" + type + "' cameras are drawn as perspective cameras of the same field of view");
-  glm::mat4 worldFromCamera = glm::inverse(cameraFromWorld);
+  // In double: a camera placed far out would overflow the cofactors of a float inverse.
+  const glm::mat4 worldFromCamera(glm::inverse(glm::dmat4(cameraFromWorld)));
   auto toCandela = [&](glm::vec4 v) { return Vec3{mirrorX ? -v.x : v.x, v.y, v.z}; };
   CameraDescription c;
   c.eye = toCandela(worldFromCamera * glm::vec4(0, 0, 0, 1));
@@ -81,13 +84,24 @@ CameraDescription makePbrtCamera(const std::string& type, const PbrtParameters& 
     const float tanHalf = std::tan(0.5f * std::clamp(fov, 0.01f, 179.0f) * kPi / 180.0f) * halfHeight;
     c.verticalFovDegrees = std::clamp(2.0f * std::atan(tanHalf) * 180.0f / kPi, 0.01f, 179.0f);
   }
-  if (!std::isfinite(c.imageShift.x) || !std::isfinite(c.imageShift.y) || !std::isfinite(c.verticalFovDegrees) ||
-      !std::isfinite(c.orthographicHalfHeight))
-    params.fail("Camera 'screenwindow': the window gives no finite field of view or image shift");
-  c.apertureRadius = std::max(0.0f, params.getFloat("lensradius", 0.0f));
-  c.focusDistance = std::max(0.0f, params.getFloat("focaldistance", 1e6f));
+  // The limits the scene's repair holds every camera to (scene_repair.h), said here in pbrt's terms.
+  const float limit = kMaxCameraCoordinate;
+  auto within = [limit](float x) { return std::fabs(x) <= limit; };
+  if (!within(c.imageShift.x) || !within(c.imageShift.y) || !std::isfinite(c.verticalFovDegrees) ||
+      !(c.orthographicHalfHeight > 0.0f && c.orthographicHalfHeight <= limit))
+    params.fail("Camera 'screenwindow': the window gives no field of view, or a size or shift beyond 1e9");
+  const float lensRadius = params.getFloat("lensradius", 0.0f), focalDistance = params.getFloat("focaldistance", 1e6f);
+  if (!(lensRadius >= 0.0f && lensRadius <= limit))
+    params.fail("Camera 'lensradius' " + std::to_string(lensRadius) + ": it must lie between 0 and 1e9");
+  if (!(focalDistance >= 0.0f && focalDistance <= limit))
+    params.fail("Camera 'focaldistance' " + std::to_string(focalDistance) + ": it must lie between 0 and 1e9");
+  c.apertureRadius = lensRadius;
+  c.focusDistance = focalDistance;
   if (!isFinite(c.eye) || !isFinite(forward) || !isFinite(c.up))
-    params.fail("Camera: the camera transform (CTM at the Camera directive) is not invertible");
+    params.fail("Camera: the camera transform (the CTM at the Camera directive) is not invertible");
+  if (!within(c.eye.x) || !within(c.eye.y) || !within(c.eye.z) || !within(c.target.x) || !within(c.target.y) ||
+      !within(c.target.z))
+    params.fail("Camera: the camera transform (the CTM at the Camera directive) places the camera beyond 1e9");
   return c;
 }
 

@@ -231,11 +231,13 @@ class PbrtReader {
       } else if (d == "Camera") {
         cameraType_ = readString(tokens, d);
         camera_ = parsePbrtParameters(tokens);
+        camera_->line = t.line;  // the camera's errors name the directive's line, also when it has no parameters
         cameraFromWorld_ = state_.ctm;
         // As in every pbrt, "camera" names the camera's frame in the world: what is placed in it after
         // CoordSysTransform "camera" moves with the camera (a headlight).
         glm::mat4 worldFromCamera = glm::inverse(state_.ctm);
-        if (!isFiniteMatrix(worldFromCamera)) fail(tokens, t.line, "the camera transform is not invertible");
+        if (!isFiniteMatrix(worldFromCamera))
+          fail(tokens, t.line, "Camera: the CTM at the Camera directive is not invertible");
         namedFrames_["camera"] = worldFromCamera;
       } else if (d == "Film") {
         std::string type = readString(tokens, d);

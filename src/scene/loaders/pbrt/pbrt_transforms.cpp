@@ -1,6 +1,7 @@
 #include "scene/loaders/pbrt/pbrt_transforms.h"
 
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <string>
 
@@ -25,27 +26,29 @@ std::string pbrtRotateProblem(float degrees, Vec3 axis) {
 }
 
 std::string pbrtLookAtProblem(Vec3 eyeIn, Vec3 lookIn, Vec3 upIn) {
-  const glm::vec3 eye(eyeIn.x, eyeIn.y, eyeIn.z), look(lookIn.x, lookIn.y, lookIn.z), up(upIn.x, upIn.y, upIn.z);
-  const glm::vec3 dir = look - eye;
+  // In double, where the lengths of float vectors cannot overflow.
+  const glm::dvec3 eye(eyeIn.x, eyeIn.y, eyeIn.z), look(lookIn.x, lookIn.y, lookIn.z), up(upIn.x, upIn.y, upIn.z);
+  const glm::dvec3 dir = look - eye;
   if (!std::isfinite(glm::length(dir)) || !std::isfinite(glm::length(up)))
     return "a point or the up vector is not finite";
-  if (!(glm::length(dir) > 0.0f)) return "the eye and the point looked at are the same point";
-  if (!(glm::length(glm::cross(glm::normalize(up), glm::normalize(dir))) > 0.0f))
+  if (!(glm::length(dir) > 0.0)) return "the eye and the point looked at are the same point";
+  if (!(glm::length(glm::cross(glm::normalize(up), glm::normalize(dir))) > 1e-6))
     return "the up vector is zero or parallel to the view direction";
   return {};
 }
 
 glm::mat4 pbrtLookAt(Vec3 eyeIn, Vec3 lookIn, Vec3 upIn) {
-  glm::vec3 eye(eyeIn.x, eyeIn.y, eyeIn.z), look(lookIn.x, lookIn.y, lookIn.z), up(upIn.x, upIn.y, upIn.z);
-  glm::vec3 dir = look - eye;
-  if (!(glm::length(dir) > 0.0f) || !(glm::length(up) > 0.0f)) return glm::mat4(1.0f);
+  // In double, so that points far out (up to the largest float) neither overflow the lengths nor the inverse.
+  const glm::dvec3 eye(eyeIn.x, eyeIn.y, eyeIn.z), look(lookIn.x, lookIn.y, lookIn.z), up(upIn.x, upIn.y, upIn.z);
+  glm::dvec3 dir = look - eye;
+  if (!(glm::length(dir) > 0.0) || !(glm::length(up) > 0.0)) return glm::mat4(1.0f);
   dir = glm::normalize(dir);
-  glm::vec3 right = glm::cross(glm::normalize(up), dir);
-  if (!(glm::length(right) > 0.0f)) return glm::mat4(1.0f);  // up parallel to the view direction
+  glm::dvec3 right = glm::cross(glm::normalize(up), dir);
+  if (!(glm::length(right) > 0.0)) return glm::mat4(1.0f);  // up parallel to the view direction
   right = glm::normalize(right);
-  glm::vec3 newUp = glm::cross(dir, right);
-  glm::mat4 worldFromCamera(glm::vec4(right, 0), glm::vec4(newUp, 0), glm::vec4(dir, 0), glm::vec4(eye, 1));
-  return glm::inverse(worldFromCamera);
+  const glm::dvec3 newUp = glm::cross(dir, right);
+  const glm::dmat4 worldFromCamera(glm::dvec4(right, 0), glm::dvec4(newUp, 0), glm::dvec4(dir, 0), glm::dvec4(eye, 1));
+  return glm::mat4(glm::inverse(worldFromCamera));
 }
 
 glm::mat4 pbrtMatrix(const double* m) {
