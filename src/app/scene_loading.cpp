@@ -177,8 +177,8 @@ Scene loadScene(const std::string& spec, const SceneLoadOptions& options) {
     env.map = withMemoryReported(map, [&] { return loadEnvironmentImage(map); });
     scene.environment = std::move(env);
   }
+  chooseCamera(scene, spec, options.camera, warnings);  // first, so that the repair checks the camera taken
   repairScene(scene, spec, warnings);
-  chooseCamera(scene, spec, options.camera, warnings);
   if (!hasLightSource(scene))
     warnings.add(spec,
                  "the scene has no light source (no emissive surface, punctual light or environment): the "

@@ -6,6 +6,7 @@
 #include <limits>
 #include <set>
 
+#include "app/scene_loading.h"
 #include "io/file_bytes.h"
 #include "kernel/bsdf/ggx.h"
 #include "scene/loaders/gltf/gltf_draco.h"
@@ -835,6 +836,27 @@ TEST(GltfLoader, NegativeByteOffsetsAreRefused) {
   g = triangleGltf();
   g["accessors"][1]["byteOffset"] = 4.5;
   EXPECT_EQ(errorOf(g), "test.gltf: accessors[1].byteOffset: 4.5 is not a whole number of bytes from 0");
+}
+
+// The camera --camera takes is held to the same limits as the first one.
+TEST(GltfLoader, AChosenCameraIsCheckedLikeTheFirst) {
+  TempFolder dir;
+  json g = triangleGltf();
+  g["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.7}, {"znear", 0.1}}}}};
+  g["nodes"].push_back({{"camera", 0}, {"translation", {0, 0, 5}}});
+  g["nodes"].push_back({{"camera", 0}, {"translation", {0, 0, 3e38}}});
+  g["scenes"][0]["nodes"] = {0, 1, 2};
+  const std::string file = dir.write("cameras.gltf", g.dump());
+  SceneLoadOptions options;
+  options.printWarnings = false;
+  EXPECT_EQ(loadScene(file, options).camera.eye.z, 5.0f);
+  options.camera = "1";
+  try {
+    loadScene(file, options);
+    ADD_FAILURE() << "expected the far camera to be refused";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("camera.position: "), std::string::npos) << e.what();
+  }
 }
 
 TEST(GltfLoader, MissingTextureIsAWarning) {
