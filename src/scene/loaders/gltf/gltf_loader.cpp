@@ -671,8 +671,27 @@ class GltfSceneBuilder {
   }
 
   // With `origins`, also where each vertex of the mesh came from (for its morph targets and skin weights); each
-  // primitive then has vertices of its own, as its morph targets may differ.
+  // primitive then has vertices of its own, as its morph targets may differ. Running out of memory is said so,
+  // naming the mesh and its size.
   Mesh convertMesh(int meshIndex, std::vector<GltfVertexOrigin>* origins = nullptr) {
+    try {
+      return buildMesh(meshIndex, origins);
+    } catch (const std::bad_alloc&) {
+      uint64_t vertices = 0, indices = 0;
+      for (const tinygltf::Primitive& prim : model_.meshes[size_t(meshIndex)].primitives) {
+        auto position = prim.attributes.find("POSITION");
+        if (position != prim.attributes.end() && size_t(position->second) < model_.accessors.size())
+          vertices += model_.accessors[size_t(position->second)].count;
+        if (prim.indices >= 0 && size_t(prim.indices) < model_.accessors.size())
+          indices += model_.accessors[size_t(prim.indices)].count;
+      }
+      failLoad(file_, "meshes[" + std::to_string(meshIndex) + "]: not enough memory for its " +
+                          std::to_string(vertices) + " vertices and " + std::to_string(indices) + " indices (with " +
+                          std::to_string(scene_.meshes.size()) + " meshes built before it)");
+    }
+  }
+
+  Mesh buildMesh(int meshIndex, std::vector<GltfVertexOrigin>* origins) {
     const tinygltf::Mesh& gm = model_.meshes[size_t(meshIndex)];
     const std::string meshWhere = "meshes[" + std::to_string(meshIndex) + "]";
     std::vector<MeshPart> parts;
