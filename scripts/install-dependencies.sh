@@ -18,6 +18,8 @@ packages=(
   libopenmpi-dev openmpi-bin
   # scripts/check-format.sh (one version: others break lines differently)
   clang-format-14
+  # tests that run candela and watch it (peak memory of glTF loads, signals while writing)
+  python3
 )
 # The browser tests of candela serve: Node drives Chromium through playwright-core (tests/serve/
 # install-browser-test-deps.sh fetches it with npm into tests/serve/node_modules). Where the archive cannot

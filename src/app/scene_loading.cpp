@@ -132,9 +132,26 @@ bool hasLightSource(const Scene& scene) {
 }
 
 void frameSceneBounds(Scene& scene) {
+  // A mesh of one instance contributes its vertices; a mesh of many, the corners of its box at each instance, so
+  // that a mesh instanced thousands of times is framed in time proportional to its size and its instances.
+  std::vector<uint32_t> instances(scene.meshes.size());
+  for (const Instance& inst : scene.instances) ++instances[inst.meshId];
+  std::vector<Bounds3> meshBounds(scene.meshes.size());
+  for (size_t m = 0; m < scene.meshes.size(); ++m)
+    if (instances[m] > 1)
+      for (Vec3 p : scene.meshes[m].positions) meshBounds[m].extend(p);
   Bounds3 bounds;
-  for (const Instance& inst : scene.instances)
-    for (Vec3 p : scene.meshes[inst.meshId].positions) bounds.extend(inst.objectToWorld.point(p));
+  for (const Instance& inst : scene.instances) {
+    if (instances[inst.meshId] == 1) {
+      for (Vec3 p : scene.meshes[inst.meshId].positions) bounds.extend(inst.objectToWorld.point(p));
+      continue;
+    }
+    const Bounds3& box = meshBounds[inst.meshId];
+    if (box.empty()) continue;
+    for (int corner = 0; corner < 8; ++corner)
+      bounds.extend(inst.objectToWorld.point(
+          {corner & 1 ? box.hi.x : box.lo.x, corner & 2 ? box.hi.y : box.lo.y, corner & 4 ? box.hi.z : box.lo.z}));
+  }
   if (!(bounds.lo.x <= bounds.hi.x)) return;  // nothing to frame
   Vec3 centre = bounds.centre();
   float radius = std::max(bounds.radius(), 1e-3f);
@@ -190,8 +207,8 @@ Scene loadScene(const std::string& spec, const SceneLoadOptions& options) {
     env.map = withMemoryReported(map, [&] { return loadEnvironmentImage(map); });
     scene.environment = std::move(env);
   }
+  chooseCamera(scene, spec, options.camera, warnings);  // first, so that the repair checks the camera taken
   repairScene(scene, spec, warnings);
-  chooseCamera(scene, spec, options.camera, warnings);
   if (!hasLightSource(scene))
     warnings.add(spec,
                  "the scene has no light source (no emissive surface, punctual light or environment): the "

@@ -31,14 +31,17 @@ struct TemporarySlot {
 std::array<TemporarySlot, kSlots> temporaries;
 std::mutex slotMutex;
 
-struct sigaction previousInt, previousTerm;
+// The signals whose default action ends the process: each removes the temporaries first. Where a signal is
+// ignored (SIGHUP under nohup, SIGINT in a background job), it is left so: the process goes on and commits.
+constexpr std::array<int, 5> kEndingSignals = {SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGQUIT};
+std::array<struct sigaction, kEndingSignals.size()> previousActions;
 
 void removeTemporariesAndResignal(int signal) {
   for (TemporarySlot& slot : temporaries)
     if (slot.used.load()) ::unlink(slot.path);
   // Hand the signal to whatever handled it before (by default: end the process with it).
-  const struct sigaction& previous = signal == SIGINT ? previousInt : previousTerm;
-  ::sigaction(signal, &previous, nullptr);
+  for (size_t i = 0; i < kEndingSignals.size(); ++i)
+    if (kEndingSignals[i] == signal) ::sigaction(signal, &previousActions[i], nullptr);
   ::raise(signal);
 }
 
@@ -51,8 +54,10 @@ void installTemporaryRemovalOnSignals() {
     action.sa_handler = &removeTemporariesAndResignal;
     sigemptyset(&action.sa_mask);
     action.sa_flags = SA_RESETHAND;
-    ::sigaction(SIGINT, &action, &previousInt);
-    ::sigaction(SIGTERM, &action, &previousTerm);
+    for (size_t i = 0; i < kEndingSignals.size(); ++i) {
+      ::sigaction(kEndingSignals[i], nullptr, &previousActions[i]);
+      if (previousActions[i].sa_handler != SIG_IGN) ::sigaction(kEndingSignals[i], &action, nullptr);
+    }
   });
 }
 

@@ -44,8 +44,17 @@ void buildLightTable(const Scene& scene, FlatScene& flat) {
   };
   std::vector<Candidate> candidates;
   std::vector<LightTriangle> lights;
+  // Which meshes emit, found once per mesh rather than once per instance.
+  std::vector<bool> emits(scene.meshes.size());
+  for (size_t m = 0; m < scene.meshes.size(); ++m)
+    for (uint32_t material : scene.meshes[m].triangleMaterials)
+      if (luminance(scene.materials[material].emission) > 0.0f) {
+        emits[m] = true;
+        break;
+      }
   for (uint32_t instanceId = 0; instanceId < flat.instances.size(); ++instanceId) {
     const InstanceRecord& inst = flat.instances[instanceId];
+    if (!emits[inst.meshId]) continue;
     const Mesh& mesh = scene.meshes[inst.meshId];
     // Kernel code takes a triangle's front from its object-space winding carried by the normal transform, which
     // a mirroring transform does not flip, while it reverses the world-space winding of the corners kept here.
@@ -193,7 +202,8 @@ void packTextures(const Scene& scene, FlatScene& flat) {
 
 void buildEnvironment(const Environment& env, FlatScene& flat) {
   EnvironmentView& view = flat.environment;
-  float angle = env.rotationDegrees * kPi / 180.0f;
+  // Reduced exactly first: a rotation near the largest float would overflow to infinity in radians.
+  float angle = std::fmod(env.rotationDegrees, 360.0f) * kPi / 180.0f;
   view.rotationCos = std::cos(angle);
   view.rotationSin = std::sin(angle);
   view.visibleToCamera = env.visibleToCamera ? 1u : 0u;

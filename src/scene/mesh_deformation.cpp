@@ -24,7 +24,8 @@ Affine3x4 multiply(const Affine3x4& a, const Affine3x4& b) { return toAffine(toM
 // v normalised, or zero where it has no usable length (the renderer then takes the geometric normal).
 Vec3 unitOrZero(Vec3 v) {
   const float l = length(v);
-  return l > 0.0f && std::isfinite(l) ? v / l : Vec3{0, 0, 0};
+  // Component by component: the reciprocal of a subnormal length overflows to infinity.
+  return l > 0.0f && std::isfinite(l) ? Vec3{v.x / l, v.y / l, v.z / l} : Vec3{0, 0, 0};
 }
 
 bool usable(Vec3 p, float limit) {

@@ -57,8 +57,10 @@ TriangleFault triangleFault(const Mesh& mesh, size_t t) {
 Vec3 unitLength(Vec3 v) {
   float largest = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
   if (largest == 0.0f) return v;
-  v = v / largest;
-  return v / length(v);
+  // Divided component by component: the reciprocal of a subnormal largest component overflows to infinity.
+  v = {v.x / largest, v.y / largest, v.z / largest};
+  const float l = length(v);
+  return {v.x / l, v.y / l, v.z / l};
 }
 
 // Normals and tangents of a reasonable length are left exactly as they are; the others would overflow or

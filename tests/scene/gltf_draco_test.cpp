@@ -193,6 +193,28 @@ TEST(GltfDraco, DecodesAsTheUncompressedMesh) {
   EXPECT_EQ(triangles(m), triangles(plain.meshes[0]));
 }
 
+// Primitives that name the same compressed bytes (through one bufferView or several) are decoded once: their
+// meshes become one mesh of the scene, instanced.
+TEST(GltfDraco, PrimitivesNamingTheSameBytesAreDecodedOnceAndInstanced) {
+  const std::vector<Corner> corners = gridCorners();
+  DracoIds ids;
+  const std::vector<uint8_t> draco = encodeWithDraco(corners, ids);
+  const std::vector<uint8_t> one = dracoGlb(draco, ids, 9, corners.size());
+  json g = json::parse(one.begin() + 20, one.begin() + 20 + *reinterpret_cast<const uint32_t*>(&one[12]));
+  g["bufferViews"].push_back(g["bufferViews"][0]);
+  for (int m = 1; m < 100; ++m) {
+    json mesh = g["meshes"][0];
+    mesh["primitives"][0]["extensions"]["KHR_draco_mesh_compression"]["bufferView"] = m % 2;
+    g["meshes"].push_back(mesh);
+    g["nodes"].push_back({{"mesh", m}, {"translation", {2 * m, 0, 0}}});
+    g["scenes"][0]["nodes"].push_back(m);
+  }
+  const Scene s = load(test::glbFile(g, draco));
+  ASSERT_EQ(s.meshes.size(), 1u);
+  EXPECT_EQ(s.meshes[0].positions.size(), 9u);
+  EXPECT_EQ(s.instances.size(), 100u);
+}
+
 TEST(GltfDraco, CorruptDataIsRefusedNamingThePrimitive) {
   const std::vector<Corner> corners = gridCorners();
   DracoIds ids;

@@ -6,6 +6,7 @@
 #include <limits>
 #include <set>
 
+#include "app/scene_loading.h"
 #include "io/file_bytes.h"
 #include "kernel/bsdf/ggx.h"
 #include "scene/loaders/gltf/gltf_draco.h"
@@ -778,7 +779,8 @@ TEST(GltfLoader, BadInputNamesFileAndJsonPath) {
 
   g = triangleGltf();
   g["bufferViews"][0]["byteLength"] = 1000;
-  EXPECT_NE(errorOf(g).find("reaches past the end of buffer 0"), std::string::npos);
+  EXPECT_NE(errorOf(g).find("bufferViews[0]: byteOffset 0 and byteLength 1000 reach beyond the"), std::string::npos)
+      << errorOf(g);
 
   g = triangleGltf();
   g["buffers"][0]["uri"] = "missing.bin";
@@ -791,6 +793,70 @@ TEST(GltfLoader, BadInputNamesFileAndJsonPath) {
   g = triangleGltf();
   g["nodes"] = {{{"mesh", 0}, {"children", {0}}}};
   EXPECT_NE(errorOf(g).find("cycle"), std::string::npos);
+}
+
+// glTF meshes made of the same primitives are one mesh of the scene, instanced by every node that names one.
+TEST(GltfLoader, MeshesOfTheSamePrimitivesAreOneMeshInstanced) {
+  json g = triangleGltf();
+  g["meshes"].push_back(g["meshes"][0]);
+  g["nodes"] = {{{"mesh", 0}}, {{"mesh", 1}, {"translation", {2, 0, 0}}}};
+  g["scenes"][0]["nodes"] = {0, 1};
+  const Scene s = load(g);
+  ASSERT_EQ(s.meshes.size(), 1u);
+  ASSERT_EQ(s.instances.size(), 2u);
+  EXPECT_EQ(s.instances[1].meshId, 0u);
+  EXPECT_EQ(s.instances[1].objectToWorld.m[3], 2.0f);
+}
+
+// A primitive that repeats another's vertices, indices and mode adds nothing but memory: it is left out, and
+// primitives that share vertex accessors share one copy of the vertices.
+TEST(GltfLoader, RepeatedPrimitivesAreDrawnOnceAndSharedVerticesKeptOnce) {
+  json g = triangleGltf();
+  json primitive = g["meshes"][0]["primitives"][0];
+  for (int i = 0; i < 3; ++i) g["meshes"][0]["primitives"].push_back(primitive);
+  primitive["mode"] = 6;  // the same triangle as a fan
+  g["meshes"][0]["primitives"].push_back(primitive);
+  LoadWarnings warnings;
+  const Scene s = load(g, warnings);
+  ASSERT_EQ(s.meshes.size(), 1u);
+  EXPECT_EQ(s.meshes[0].triangleCount(), 2u);
+  EXPECT_EQ(s.meshes[0].positions.size(), 3u);
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_EQ(warnings.messages[0],
+            "test.gltf: meshes[0]: 3 primitives draw the triangles of an earlier primitive again and are left out");
+}
+
+TEST(GltfLoader, NegativeByteOffsetsAreRefused) {
+  json g = triangleGltf();
+  g["bufferViews"][1]["byteOffset"] = -4;
+  EXPECT_EQ(errorOf(g), "test.gltf: bufferViews[1].byteOffset: -4 is not a whole number of bytes from 0");
+  g = triangleGltf();
+  g["accessors"][1]["byteOffset"] = -4;
+  EXPECT_EQ(errorOf(g), "test.gltf: accessors[1].byteOffset: -4 is not a whole number of bytes from 0");
+  g = triangleGltf();
+  g["accessors"][1]["byteOffset"] = 4.5;
+  EXPECT_EQ(errorOf(g), "test.gltf: accessors[1].byteOffset: 4.5 is not a whole number of bytes from 0");
+}
+
+// The camera --camera takes is held to the same limits as the first one.
+TEST(GltfLoader, AChosenCameraIsCheckedLikeTheFirst) {
+  TempFolder dir;
+  json g = triangleGltf();
+  g["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.7}, {"znear", 0.1}}}}};
+  g["nodes"].push_back({{"camera", 0}, {"translation", {0, 0, 5}}});
+  g["nodes"].push_back({{"camera", 0}, {"translation", {0, 0, 3e38}}});
+  g["scenes"][0]["nodes"] = {0, 1, 2};
+  const std::string file = dir.write("cameras.gltf", g.dump());
+  SceneLoadOptions options;
+  options.printWarnings = false;
+  EXPECT_EQ(loadScene(file, options).camera.eye.z, 5.0f);
+  options.camera = "1";
+  try {
+    loadScene(file, options);
+    ADD_FAILURE() << "expected the far camera to be refused";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("camera.position: "), std::string::npos) << e.what();
+  }
 }
 
 TEST(GltfLoader, MissingTextureIsAWarning) {

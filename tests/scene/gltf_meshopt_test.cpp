@@ -131,9 +131,54 @@ TEST(GltfMeshopt, DamagedOrForgedDataIsOneLineNamingTheBufferView) {
 
   quad = compressedQuad();
   quad.gltf["bufferViews"][1]["extensions"]["EXT_meshopt_compression"]["byteLength"] = 1 << 20;
-  EXPECT_NE(errorOf(quad).find("bufferViews[1].extensions.EXT_meshopt_compression: 'byteOffset' and 'byteLength' "
-                               "reach beyond the buffer"),
-            std::string::npos);
+  EXPECT_NE(errorOf(quad).find("bufferViews[1].extensions.EXT_meshopt_compression: byteOffset 72 and byteLength "
+                               "1048576 reach beyond the"),
+            std::string::npos)
+      << errorOf(quad);
+}
+
+// Offsets beyond any buffer, in the extension or in the bufferView the data decode into, are refused.
+TEST(GltfMeshopt, OffsetsBeyondTheBuffersAreRefused) {
+  const uint64_t huge = uint64_t(1) << 62;
+  CompressedQuad quad = compressedQuad();
+  quad.gltf["bufferViews"][0]["extensions"]["EXT_meshopt_compression"]["byteOffset"] = huge;
+  EXPECT_EQ(errorOf(quad),
+            "quad.glb: bufferViews[0].extensions.EXT_meshopt_compression.byteOffset: 4611686018427387904 is not a "
+            "whole number from 0 to 2147483647");
+  quad = compressedQuad();
+  quad.gltf["bufferViews"][0]["byteOffset"] = huge;
+  EXPECT_EQ(errorOf(quad),
+            "quad.glb: bufferViews[0]: byteOffset 4611686018427387904 and byteLength 48 reach beyond the 60 bytes of "
+            "buffers[1]");
+  quad = compressedQuad();
+  quad.gltf["bufferViews"][0]["extensions"]["EXT_meshopt_compression"]["byteOffset"] = -4;
+  EXPECT_EQ(errorOf(quad),
+            "quad.glb: bufferViews[0].extensions.EXT_meshopt_compression.byteOffset: -4 is not a whole number from 0 "
+            "to 2147483647");
+}
+
+// bufferViews that decode the same stream share one decoding; streams that differ are added up, and refused
+// before any is decoded when together they claim more than the compressed bytes can hold.
+TEST(GltfMeshopt, RepeatedStreamsAreDecodedOnceAndDistinctOnesBounded) {
+  CompressedQuad quad = compressedQuad();
+  for (int i = 0; i < 1000; ++i) quad.gltf["bufferViews"].push_back(quad.gltf["bufferViews"][0]);
+  LoadWarnings warnings;
+  EXPECT_EQ(load(quad, warnings).triangleCount(), 2u);
+
+  quad = compressedQuad();
+  json view = quad.gltf["bufferViews"][0];
+  for (int i = 0; i < 1000; ++i) {
+    view["extensions"]["EXT_meshopt_compression"]["count"] = 1000 + i;
+    view["byteLength"] = 12 * (1000 + i);
+    quad.gltf["buffers"][1]["byteLength"] = 12 * (1000 + i);
+    quad.gltf["bufferViews"].push_back(view);
+  }
+  const std::string error = errorOf(quad);
+  EXPECT_NE(error.find("quad.glb: bufferViews["), std::string::npos) << error;
+  EXPECT_NE(error.find("].extensions.EXT_meshopt_compression: the compressed bufferViews up to this one decode to "),
+            std::string::npos)
+      << error;
+  EXPECT_NE(error.find("more than 256 times the"), std::string::npos) << error;
 }
 
 }  // namespace

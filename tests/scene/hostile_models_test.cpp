@@ -176,6 +176,25 @@ TEST(HostileGltf, CyclesAreRefusedNamingTheNode) {
             "hostile.gltf: nodes[0]: the node is its own ancestor (a cycle through nodes[1].children)");
 }
 
+// A chain of nodes as deep as the loader allows is walked without recursion: a recursive walk overflows the stack
+// of a sanitizer build long before this depth.
+json nodeChain(int depth) {
+  json nodes = json::array();
+  for (int i = 0; i < depth; ++i) nodes.push_back({{"translation", {0.001, 0, 0}}, {"children", {i + 1}}});
+  nodes.push_back({{"mesh", 0}});
+  return nodes;
+}
+
+TEST(HostileGltf, ANodeChainAsDeepAsAllowedLoads) {
+  const std::string text = triangleGltf(nodeChain(1024), {0}).dump();
+  LoadWarnings warnings;
+  Scene s = loadGltfBytes("deep.gltf", reinterpret_cast<const uint8_t*>(text.data()), text.size(), warnings);
+  ASSERT_EQ(s.instances.size(), 1u);
+  EXPECT_NEAR(s.instances[0].objectToWorld.m[3], 1.024f, 1e-4f);
+  EXPECT_EQ(gltfError(triangleGltf(nodeChain(1025), {0})),
+            "hostile.gltf: nodes[1025]: the node hierarchy is deeper than 1024");
+}
+
 TEST(HostileGltf, AFlattenedNodeIsDroppedWithAWarningByTheSceneRepair) {
   test::TempFolder dir;
   json nodes = {{{"mesh", 0}}, {{"mesh", 0}, {"scale", {1, 1, 0}}}};

@@ -1,12 +1,14 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 
 #include "app/scene_loading.h"
 #include "io/file_bytes.h"
 #include "kernel/camera.h"
 #include "scene/cache/scene_cache.h"
+#include "scene/flat_scene.h"
 #include "scene/loaders/gltf/gltf_loader.h"
 #include "scene/loaders/obj/obj_loader.h"
 #include "scene/loaders/scene_file.h"
@@ -81,6 +83,24 @@ TEST(SceneFile, ModelsTransformsOverridesCameraEnvironmentAndSettings) {
   for (const auto& w : warnings.messages) all += w + "\n";
   EXPECT_NE(all.find("colour: unknown key"), std::string::npos) << all;
   EXPECT_NE(all.find("materials.blue: no material of that name"), std::string::npos) << all;
+}
+
+// Any finite rotation is an angle: 3e38 degrees, which in radians would overflow to infinity and make every
+// environment sample NaN, is reduced exactly to the turn it means.
+TEST(SceneFile, AHugeEnvironmentRotationIsReducedToOneTurn) {
+  TempFolder dir;
+  dir.write("t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  LoadWarnings warnings;
+  Scene s = loadSceneFile(dir.write("s.json", R"({"models": [{"file": "t.obj"}],
+      "environment": {"radiance": [1, 1, 1], "rotation_degrees": 3e38}})"),
+                          &loadModel, warnings);
+  EXPECT_EQ(s.environment.rotationDegrees, std::fmod(3e38f, 360.0f));
+  EXPECT_GE(s.environment.rotationDegrees, 0.0f);
+  EXPECT_LT(s.environment.rotationDegrees, 360.0f);
+  // A scene that holds such an angle otherwise (a cache, the viewer) still gets a finite rotation.
+  s.environment.rotationDegrees = 3e38f;
+  const FlatScene flat = FlatScene::build(s);
+  EXPECT_TRUE(std::isfinite(flat.environment.rotationCos) && std::isfinite(flat.environment.rotationSin));
 }
 
 TEST(SceneFile, AFileNamedByManyModelsIsLoadedOnceAndInstanced) {

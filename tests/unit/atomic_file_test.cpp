@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -161,21 +162,26 @@ TEST_F(AtomicFileTest, ReadOnlyFolderIsAnErrorAndTheFileSurvives) {
   EXPECT_EQ(names(), std::vector<std::string>{"out.png"});
 }
 
-TEST_F(AtomicFileTest, SigtermWhileWritingRemovesTheTemporary) {
-  put("out.pfm", "old");
-  const pid_t child = ::fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) {
-    AtomicFile file(path("out.pfm"));
-    file.write("partial", 7);
-    ::raise(SIGTERM);
-    ::_exit(0);  // not reached
+// Every signal whose default action ends the process removes the temporary first, then ends it as before.
+TEST_F(AtomicFileTest, EndingSignalsWhileWritingRemoveTheTemporary) {
+  for (int signal : {SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGQUIT}) {
+    put("out.pfm", "old");
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      const rlimit noCore{0, 0};
+      ::setrlimit(RLIMIT_CORE, &noCore);  // SIGQUIT's default action dumps core
+      AtomicFile file(path("out.pfm"));
+      file.write("partial", 7);
+      ::raise(signal);
+      ::_exit(0);  // not reached
+    }
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == signal) << strsignal(signal) << ": " << status;
+    EXPECT_EQ(get("out.pfm"), "old") << strsignal(signal);
+    EXPECT_EQ(names(), std::vector<std::string>{"out.pfm"}) << strsignal(signal);
   }
-  int status = 0;
-  ASSERT_EQ(::waitpid(child, &status, 0), child);
-  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM) << status;
-  EXPECT_EQ(get("out.pfm"), "old");
-  EXPECT_EQ(names(), std::vector<std::string>{"out.pfm"});
 }
 
 TEST_F(AtomicFileTest, FailingAovKeepsThePreviousImage) {

@@ -3,6 +3,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "backends/cpu/embree_errors.h"
 #include "backends/cpu/embree_pass_through.h"
 #include "kernel/pass_through.h"
 
@@ -10,10 +11,11 @@ namespace candela {
 
 namespace {
 
-void check(RTCDevice device, const char* what) {
+void check(RTCDevice device, const char* what, const FlatScene& flat) {
   RTCError error = rtcGetDeviceError(device);
   if (error != RTC_ERROR_NONE)
-    throw std::runtime_error(std::string("Embree failed while ") + what + " (error " + std::to_string(error) + ")");
+    throw std::runtime_error(
+        embreeFailure(error, what, {flat.meshes.size(), flat.indices.size() / 3, flat.instances.size()}));
 }
 
 std::vector<bool> meshesThatCanPassRays(const FlatScene& flat) {
@@ -60,7 +62,7 @@ void EmbreeScene::build(const FlatScene& flat) {
                                                                  3 * sizeof(float), mesh.vertexCount));
     auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                                                    3 * sizeof(uint32_t), mesh.triangleCount));
-    check(device_, "allocating mesh buffers");
+    check(device_, "allocating mesh buffers", flat);
     if (mesh.vertexCount > 0)
       std::memcpy(vertices, flat.positions.data() + mesh.firstVertex, mesh.vertexCount * sizeof(Vec3));
     if (mesh.triangleCount > 0)
@@ -75,7 +77,7 @@ void EmbreeScene::build(const FlatScene& flat) {
     rtcReleaseGeometry(geometry);
     rtcSetSceneBuildQuality(meshScene, RTC_BUILD_QUALITY_HIGH);
     rtcCommitScene(meshScene);
-    check(device_, "building a mesh BVH");
+    check(device_, "building a mesh BVH", flat);
     meshScenes_.push_back(meshScene);
   }
 
@@ -90,7 +92,7 @@ void EmbreeScene::build(const FlatScene& flat) {
     rtcReleaseGeometry(geometry);
   }
   rtcCommitScene(top_);
-  check(device_, "building the instance BVH");
+  check(device_, "building the instance BVH", flat);
 }
 
 void EmbreeScene::updateInstanceTransforms(const FlatScene& flat) {
@@ -100,7 +102,7 @@ void EmbreeScene::updateInstanceTransforms(const FlatScene& flat) {
     rtcCommitGeometry(geometry);
   }
   rtcCommitScene(top_);
-  check(device_, "building the instance BVH");
+  check(device_, "building the instance BVH", flat);
 }
 
 void EmbreeScene::updateMeshVertices(const FlatScene& flat, const std::vector<uint32_t>& deformed) {
@@ -113,7 +115,7 @@ void EmbreeScene::updateMeshVertices(const FlatScene& flat, const std::vector<ui
     rtcUpdateGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0);
     rtcCommitGeometry(geometry);
     rtcCommitScene(meshScenes_[m]);
-    check(device_, "building a deformed mesh's BVH");
+    check(device_, "building a deformed mesh's BVH", flat);
   }
 }
 

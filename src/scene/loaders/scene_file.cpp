@@ -398,7 +398,8 @@ Scene loadSceneFile(const std::string& path, const ModelLoader& loadModel, LoadW
     if (e.has("radiance")) env.radiance = e["radiance"].vec3();
     if (env.radiance.x < 0 || env.radiance.y < 0 || env.radiance.z < 0) e["radiance"].fail("must not be negative");
     if (e.has("intensity")) env.intensity = e["intensity"].number(0.0f, 1e30f);
-    if (e.has("rotation_degrees")) env.rotationDegrees = e["rotation_degrees"].number();
+    // Reduced exactly to one turn, so that any finite angle keeps its meaning (and the viewer can turn it further).
+    if (e.has("rotation_degrees")) env.rotationDegrees = std::fmod(e["rotation_degrees"].number(), 360.0f);
     if (e.has("visible")) env.visibleToCamera = e["visible"].boolean();
     scene.environment = std::move(env);
   }

@@ -1,5 +1,6 @@
 #include "scene/loaders/gltf/gltf_accessors.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include "io/load_diagnostics.h"
@@ -9,6 +10,11 @@ namespace candela {
 namespace {
 
 constexpr size_t kMaxZeroBasedElements = size_t(1) << 26;
+// The budget of what the file's distinct accessors decode to (GltfAccessorReader::charge). Decoding widens 8- and
+// 16-bit components to floats (at most 4 times) and a file's buffers hold images too; the floor leaves room for
+// sparse morph targets over zeros.
+constexpr uint64_t kDecodedPerBufferByte = 16;
+constexpr uint64_t kMinDecodedBudget = uint64_t(512) << 20;
 
 // One component as glTF defines its value: normalised integers map to [0, 1] (unsigned) or [-1, 1] (signed).
 float readComponent(const uint8_t* p, int componentType, bool normalized) {
@@ -77,6 +83,23 @@ const char* typeName(int type) {
 
 }  // namespace
 
+GltfAccessorReader::GltfAccessorReader(const tinygltf::Model& model, std::string file)
+    : model_(model), file_(std::move(file)), charged_(model.accessors.size(), false) {
+  uint64_t bufferBytes = 0;
+  for (const tinygltf::Buffer& b : model.buffers) bufferBytes += b.data.size();
+  budget_ = std::max(kMinDecodedBudget, kDecodedPerBufferByte * bufferBytes);
+}
+
+void GltfAccessorReader::charge(int index, uint64_t bytes, const std::string& at) const {
+  if (charged_[size_t(index)]) return;
+  charged_[size_t(index)] = true;
+  decoded_ += bytes;
+  if (decoded_ > budget_)
+    fail(at, "the accessors read up to this one decode to " + std::to_string(decoded_) + " bytes, more than the " +
+                 std::to_string(budget_) + " allowed (" + std::to_string(kDecodedPerBufferByte) +
+                 " times the bytes of the file's buffers, at least 512 MiB)");
+}
+
 void GltfAccessorReader::fail(const std::string& where, const std::string& what) const {
   failLoad(file_, where + ": " + what);
 }
@@ -136,6 +159,7 @@ std::vector<float> GltfAccessorReader::readFloats(int index, int type, const std
     fail(at, std::to_string(a.count) + " elements without a bufferView are more than candela reads (" +
                  std::to_string(kMaxZeroBasedElements) + ")");
   }
+  charge(index, uint64_t(a.count) * components * sizeof(float), at);
   std::vector<float> out(a.count * components, 0.0f);
   for (size_t i = 0; i < base.count; ++i) decode(base.data + i * base.stride, &out[i * components]);
   if (a.sparse.isSparse) {
@@ -210,6 +234,7 @@ std::vector<uint32_t> GltfAccessorReader::readIndices(int index, const std::stri
   size_t size = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType)));
   View v = bytes(a.bufferView, a.byteOffset, a.count, size, at);
   if (v.stride % size != 0) fail(at, "byteStride " + std::to_string(v.stride) + " is invalid");
+  charge(index, uint64_t(v.count) * sizeof(uint32_t), at);
   std::vector<uint32_t> out(v.count);
   for (size_t i = 0; i < v.count; ++i) out[i] = readIndex(v.data + i * v.stride, a.componentType);
   return out;

@@ -17,10 +17,12 @@ namespace candela {
 // [0, 1] or [-1, 1] as the specification says, the others keep their integer values (a node transform then
 // scales them). Sparse accessors (core glTF 2.0) are supported: the listed elements replace those of the base
 // bufferView, or of zeros when there is none. Values are returned as they are, non-finite ones included:
-// repairing or dropping bad elements is left to the scene's repair after loading.
+// repairing or dropping bad elements is left to the scene's repair after loading. What the distinct accessors read
+// decode to is bounded by 16 times the bytes of the file's buffers (decoded Draco and meshopt data included), or
+// 512 MiB where that is more.
 class GltfAccessorReader {
  public:
-  GltfAccessorReader(const tinygltf::Model& model, std::string file) : model_(model), file_(std::move(file)) {}
+  GltfAccessorReader(const tinygltf::Model& model, std::string file);
 
   std::vector<Vec3> readVec3(int accessor, const std::string& where) const;
   std::vector<Vec4> readVec4(int accessor, const std::string& where) const;
@@ -45,9 +47,16 @@ class GltfAccessorReader {
   std::vector<float> readFloats(int accessor, int type, const std::string& where) const;
   const tinygltf::Accessor& accessor(int index, const std::string& where) const;
   [[noreturn]] void fail(const std::string& where, const std::string& what) const;
+  // Adds the decoded size of accessors[index], the first time it is read, to what the file's distinct accessors
+  // decode to, and refuses the file when that passes the budget: accessors that alias the same bytes at
+  // different offsets (or sparse ones over zeros) could otherwise make a small file ask for any amount of memory.
+  void charge(int index, uint64_t bytes, const std::string& at) const;
 
   const tinygltf::Model& model_;
   std::string file_;
+  uint64_t budget_ = 0;  // bytes
+  mutable uint64_t decoded_ = 0;
+  mutable std::vector<bool> charged_;  // by accessor
 };
 
 }  // namespace candela

@@ -7,7 +7,10 @@
 #include <nlohmann/json.hpp>
 
 #include <cstring>
+#include <map>
+#include <optional>
 #include <string_view>
+#include <tuple>
 
 #include "io/load_diagnostics.h"
 #include "scene/loaders/gltf/gltf_glb.h"
@@ -202,9 +205,48 @@ class DracoPrimitiveDecoder {
   std::string where_;
 };
 
+// What identifies the result of decoding a Draco primitive: the compressed bytes, and each attribute's name,
+// Draco id and accessor layout.
+struct DracoStream {
+  int buffer;
+  size_t offset, length;
+  std::vector<std::tuple<std::string, int, int, int, bool>> attributes;  // name, id, componentType, type, normalized
+  auto operator<=>(const DracoStream&) const = default;
+};
+
+// The accessors a decoded primitive names.
+struct DecodedPrimitive {
+  std::map<std::string, int> attributes;
+  int indices = -1;
+};
+
+// The primitive's stream, or nothing where the extension is malformed (the decoder then says how).
+std::optional<DracoStream> streamOf(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
+                                    const tinygltf::Value& extension) {
+  if (!extension.IsObject() || !extension.Get("bufferView").IsInt() || !extension.Get("attributes").IsObject())
+    return std::nullopt;
+  const int view = extension.Get("bufferView").GetNumberAsInt();
+  if (view < 0 || size_t(view) >= model.bufferViews.size()) return std::nullopt;
+  const tinygltf::BufferView& bv = model.bufferViews[size_t(view)];
+  DracoStream s{bv.buffer, bv.byteOffset, bv.byteLength, {}};
+  const tinygltf::Value& attributes = extension.Get("attributes");
+  for (const std::string& name : attributes.Keys()) {
+    auto used = primitive.attributes.find(name);
+    const tinygltf::Value& id = attributes.Get(name);
+    if (used == primitive.attributes.end() || !id.IsInt() || used->second < 0 ||
+        size_t(used->second) >= model.accessors.size())
+      return std::nullopt;
+    const tinygltf::Accessor& a = model.accessors[size_t(used->second)];
+    s.attributes.emplace_back(name, id.GetNumberAsInt(), a.componentType, a.type, a.normalized);
+  }
+  return s;
+}
+
 }  // namespace
 
 void decodeDracoPrimitives(tinygltf::Model& model, const std::string& file) {
+  // Primitives that decode the same bytes into the same accessors share what the first of them decoded.
+  std::map<DracoStream, DecodedPrimitive> decoded;
   for (size_t m = 0; m < model.meshes.size(); ++m)
     for (size_t p = 0; p < model.meshes[m].primitives.size(); ++p) {
       tinygltf::Primitive& primitive = model.meshes[m].primitives[p];
@@ -214,7 +256,19 @@ void decodeDracoPrimitives(tinygltf::Model& model, const std::string& file) {
       if (primitive.mode >= 0 && primitive.mode < TINYGLTF_MODE_TRIANGLES) continue;
       const std::string where = "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) + "].extensions." +
                                 std::string(kExtension);
+      const std::optional<DracoStream> stream = streamOf(model, primitive, extension->second);
+      if (auto it = stream ? decoded.find(*stream) : decoded.end(); it != decoded.end()) {
+        for (const auto& [name, accessor] : it->second.attributes) primitive.attributes[name] = accessor;
+        primitive.indices = it->second.indices;
+        primitive.mode = TINYGLTF_MODE_TRIANGLES;
+        continue;
+      }
       DracoPrimitiveDecoder(model, file, where).decode(primitive, extension->second);
+      if (!stream) continue;
+      DecodedPrimitive& shared = decoded[*stream];
+      for (const auto& name : extension->second.Get("attributes").Keys())
+        shared.attributes[name] = primitive.attributes[name];
+      shared.indices = primitive.indices;
     }
 }
 

@@ -8,12 +8,14 @@
 #include <glm/gtx/matrix_decompose.hpp>
 #include <glm/mat4x4.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <map>
 #include <new>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <tuple>
 
@@ -24,6 +26,7 @@
 #include "scene/loaders/gltf/gltf_accessors.h"
 #include "scene/loaders/gltf/gltf_animation.h"
 #include "scene/loaders/gltf/gltf_buffer_uris.h"
+#include "scene/loaders/gltf/gltf_byte_ranges.h"
 #include "scene/loaders/gltf/gltf_deformation.h"
 #include "scene/loaders/gltf/gltf_draco.h"
 #include "scene/loaders/gltf/gltf_extensions.h"
@@ -227,8 +230,7 @@ class GltfSceneBuilder {
     animated_ = animatedGltfNodes(model_);
     posed_ = posedNodes();
     animationNodes_.assign(model_.nodes.size(), -1);
-    for (int r : roots)
-      visit(r, glm::mat4(1.0f), 0, "scenes[" + std::to_string(std::max(sceneIndex, 0)) + "].nodes", -1);
+    for (int r : roots) visitTree(r, "scenes[" + std::to_string(std::max(sceneIndex, 0)) + "].nodes");
     if (scene_.instances.empty()) failLoad(file_, "has no meshes to render");
     resolveSkins();
     readAnimations();
@@ -242,8 +244,37 @@ class GltfSceneBuilder {
   }
 
  private:
-  // `parentNode`: the parent's entry in scene_.animation.nodes, or -1 where the parent does not move.
-  void visit(int index, const glm::mat4& parent, int depth, const std::string& from, int32_t parentNode) {
+  // A node being visited, with the next of its children to visit.
+  struct NodeVisit {
+    int index;
+    glm::mat4 world;
+    int depth;
+    int32_t animationNode;
+    size_t nextChild = 0;
+  };
+
+  // Visits the root and its descendants, parents before children, each node's children in order. The walk keeps
+  // its own stack: a hierarchy kMaxNodeDepth deep would exhaust the thread's stack in a recursive one.
+  void visitTree(int root, const std::string& from) {
+    std::vector<NodeVisit> path{enter(root, glm::mat4(1.0f), 0, from, -1)};
+    while (!path.empty()) {
+      NodeVisit& visit = path.back();
+      const std::vector<int>& children = model_.nodes[size_t(visit.index)].children;
+      if (visit.nextChild == children.size()) {
+        nodeStates_[size_t(visit.index)] = NodeState::Done;
+        path.pop_back();
+        continue;
+      }
+      const int child = children[visit.nextChild++];
+      NodeVisit next = enter(child, visit.world, visit.depth + 1, "nodes[" + std::to_string(visit.index) + "].children",
+                             visit.animationNode);
+      path.push_back(next);
+    }
+  }
+
+  // Takes the node's mesh, camera and light into the scene. `parentNode`: the parent's entry in
+  // scene_.animation.nodes, or -1 where the parent does not move.
+  NodeVisit enter(int index, const glm::mat4& parent, int depth, const std::string& from, int32_t parentNode) {
     if (index < 0 || size_t(index) >= model_.nodes.size())
       failLoad(file_, from + ": node " + std::to_string(index) + " does not exist");
     std::string where = "nodes[" + std::to_string(index) + "]";
@@ -272,9 +303,7 @@ class GltfSceneBuilder {
     if (node.camera >= 0) takeCamera(node.camera, world, where, animationNode);
     if (auto light = node.extensions.find("KHR_lights_punctual"); light != node.extensions.end())
       addLight(light->second, world, where, animationNode);
-    for (size_t c = 0; c < node.children.size(); ++c)
-      visit(node.children[c], world, depth + 1, where + ".children", animationNode);
-    nodeStates_[size_t(index)] = NodeState::Done;
+    return {index, world, depth, animationNode};
   }
 
   // `local`: what the instance's transform applies before the node's (`world`), for the animation to keep.
@@ -538,14 +567,16 @@ class GltfSceneBuilder {
   std::optional<uint32_t> meshFor(int gltfMesh) {
     auto it = meshes_.find(gltfMesh);
     if (it != meshes_.end()) return it->second;
-    std::optional<uint32_t> id;
-    Mesh mesh = convertMesh(gltfMesh);
-    if (mesh.triangleCount() > 0) {
-      id = uint32_t(scene_.meshes.size());
-      scene_.meshes.push_back(std::move(mesh));
+    auto [same, added] = meshesBySignature_.emplace(meshSignature(gltfMesh), std::nullopt);
+    if (added) {
+      Mesh mesh = convertMesh(gltfMesh);
+      if (mesh.triangleCount() > 0) {
+        same->second = uint32_t(scene_.meshes.size());
+        scene_.meshes.push_back(std::move(mesh));
+      }
     }
-    meshes_[gltfMesh] = id;
-    return id;
+    meshes_[gltfMesh] = same->second;
+    return same->second;
   }
 
   uint32_t defaultMaterial() {
@@ -563,70 +594,134 @@ class GltfSceneBuilder {
     return *defaultMaterial_;
   }
 
-  // With `origins`, also where each vertex of the mesh came from (for its morph targets and skin weights).
-  Mesh convertMesh(int meshIndex, std::vector<GltfVertexOrigin>* origins = nullptr) {
-    const tinygltf::Mesh& gm = model_.meshes[size_t(meshIndex)];
-    struct Part {
-      std::vector<Vec3> positions, normals;
-      std::vector<Vec2> uvs;
-      std::vector<Vec4> tangents;
-      std::vector<Vec3> colors;
-      std::vector<uint32_t> indices;
-      uint32_t material;
+  // The accessors a primitive's vertices are read from, and the material whose uv transform they take: primitives
+  // that agree on them share one set of vertices.
+  using VertexSource = std::array<int, 6>;  // POSITION, NORMAL, TEXCOORD_n, its uv transform's material, COLOR_0,
+                                            // TANGENT
+
+  // Vertices read from one set of accessors, and the triangles of the primitives that share them.
+  struct MeshPart {
+    std::vector<Vec3> positions, normals;
+    std::vector<Vec2> uvs;
+    std::vector<Vec4> tangents;
+    std::vector<Vec3> colors;
+    std::vector<uint32_t> indices;
+    std::vector<uint32_t> triangleMaterials;
+  };
+
+  void readVertices(const tinygltf::Primitive& prim, const VertexSource& source, const std::string& where,
+                    MeshPart& part) {
+    part.positions = accessors_.readVec3(source[0], where + ".attributes.POSITION");
+    const size_t n = part.positions.size();
+    auto sameCount = [&](size_t count, const std::string& what) {
+      if (count != n)
+        failLoad(file_, where + ".attributes." + what + ": " + std::to_string(count) + " elements for " +
+                            std::to_string(n) + " positions");
     };
-    std::vector<Part> parts;
-    std::vector<uint32_t> partPrimitives;  // per part, its index in gm.primitives
+    if (source[1] >= 0) {
+      part.normals = accessors_.readVec3(source[1], where + ".attributes.NORMAL");
+      sameCount(part.normals.size(), "NORMAL");
+    }
+    const std::string texCoord =
+        "TEXCOORD_" + std::to_string(prim.material >= 0 ? texCoords_[size_t(prim.material)] : 0);
+    if (source[2] >= 0) {
+      part.uvs = accessors_.readVec2(source[2], where + ".attributes." + texCoord);
+      sameCount(part.uvs.size(), texCoord);
+      if (source[3] >= 0)
+        for (Vec2& uv : part.uvs) uv = uvTransforms_[size_t(source[3])]->apply(uv);
+    } else if (texCoord != "TEXCOORD_0") {
+      warnings_.add(file_, where + ": the material's textures read " + texCoord + ", which the primitive lacks");
+    }
+    if (source[4] >= 0) {
+      std::vector<Vec4> rgba = accessors_.readColours(source[4], where + ".attributes.COLOR_0");
+      sameCount(rgba.size(), "COLOR_0");
+      part.colors.resize(rgba.size());
+      bool translucent = false;
+      for (size_t i = 0; i < rgba.size(); ++i) {
+        part.colors[i] = {rgba[i].x, rgba[i].y, rgba[i].z};
+        translucent |= rgba[i].w < 1.0f;
+      }
+      if (translucent) warnings_.add(file_, where + ".attributes.COLOR_0: the alpha of vertex colours is ignored");
+    }
+    if (source[5] >= 0) {
+      part.tangents = accessors_.readVec4(source[5], where + ".attributes.TANGENT");
+      sameCount(part.tangents.size(), "TANGENT");
+    }
+  }
+
+  VertexSource vertexSourceOf(const tinygltf::Primitive& prim) const {
+    auto attribute = [&](const std::string& name) {
+      auto it = prim.attributes.find(name);
+      return it == prim.attributes.end() ? -1 : it->second;
+    };
+    const bool known = prim.material >= 0 && size_t(prim.material) < model_.materials.size();
+    const int texCoord = known ? texCoords_[size_t(prim.material)] : 0;
+    const int uvTransform = known && uvTransforms_[size_t(prim.material)] ? prim.material : -1;
+    return {attribute("POSITION"), attribute("NORMAL"),  attribute("TEXCOORD_" + std::to_string(texCoord)),
+            uvTransform,           attribute("COLOR_0"), attribute("TANGENT")};
+  }
+
+  // What a static mesh is made of: its primitives' accessors, modes and materials. glTF meshes that agree on it
+  // are one mesh of the scene, instanced by every node that names one of them.
+  std::vector<std::tuple<VertexSource, int, int, int>> meshSignature(int meshIndex) const {
+    std::vector<std::tuple<VertexSource, int, int, int>> signature;
+    for (const tinygltf::Primitive& prim : model_.meshes[size_t(meshIndex)].primitives)
+      signature.emplace_back(vertexSourceOf(prim), prim.indices, prim.mode, prim.material);
+    return signature;
+  }
+
+  // With `origins`, also where each vertex of the mesh came from (for its morph targets and skin weights); each
+  // primitive then has vertices of its own, as its morph targets may differ. Running out of memory is said so,
+  // naming the mesh and its size.
+  Mesh convertMesh(int meshIndex, std::vector<GltfVertexOrigin>* origins = nullptr) {
+    try {
+      return buildMesh(meshIndex, origins);
+    } catch (const std::bad_alloc&) {
+      uint64_t vertices = 0, indices = 0;
+      for (const tinygltf::Primitive& prim : model_.meshes[size_t(meshIndex)].primitives) {
+        auto position = prim.attributes.find("POSITION");
+        if (position != prim.attributes.end() && size_t(position->second) < model_.accessors.size())
+          vertices += model_.accessors[size_t(position->second)].count;
+        if (prim.indices >= 0 && size_t(prim.indices) < model_.accessors.size())
+          indices += model_.accessors[size_t(prim.indices)].count;
+      }
+      failLoad(file_, "meshes[" + std::to_string(meshIndex) + "]: not enough memory for its " +
+                          std::to_string(vertices) + " vertices and " + std::to_string(indices) + " indices (with " +
+                          std::to_string(scene_.meshes.size()) + " meshes built before it)");
+    }
+  }
+
+  Mesh buildMesh(int meshIndex, std::vector<GltfVertexOrigin>* origins) {
+    const tinygltf::Mesh& gm = model_.meshes[size_t(meshIndex)];
+    const std::string meshWhere = "meshes[" + std::to_string(meshIndex) + "]";
+    std::vector<MeshPart> parts;
+    std::vector<uint32_t> partPrimitives;  // per part, its (first) index in gm.primitives
+    std::map<VertexSource, size_t> partOf;
+    // A primitive with the vertices, indices and mode of an earlier one draws the same triangles again.
+    std::set<std::tuple<VertexSource, int, int>> drawn;
+    size_t repeats = 0;
     for (size_t p = 0; p < gm.primitives.size(); ++p) {
       const tinygltf::Primitive& prim = gm.primitives[p];
-      std::string where = "meshes[" + std::to_string(meshIndex) + "].primitives[" + std::to_string(p) + "]";
+      std::string where = meshWhere + ".primitives[" + std::to_string(p) + "]";
       if (prim.mode < TINYGLTF_MODE_TRIANGLES && prim.mode >= 0) {
         warnings_.add(file_, where + ": points and lines are not rendered");
         continue;
       }
       if (prim.mode > TINYGLTF_MODE_TRIANGLE_FAN)
         failLoad(file_, where + ".mode: unknown mode " + std::to_string(prim.mode));
-      auto attribute = [&](const char* name) {
-        auto it = prim.attributes.find(name);
-        return it == prim.attributes.end() ? -1 : it->second;
-      };
-      int positionAccessor = attribute("POSITION");
-      if (positionAccessor < 0) failLoad(file_, where + ".attributes: POSITION is missing");
-      Part part;
-      part.positions = accessors_.readVec3(positionAccessor, where + ".attributes.POSITION");
-      size_t n = part.positions.size();
-      auto sameCount = [&](size_t count, const char* what) {
-        if (count != n)
-          failLoad(file_, where + ".attributes." + what + ": " + std::to_string(count) + " elements for " +
-                              std::to_string(n) + " positions");
-      };
-      if (int a = attribute("NORMAL"); a >= 0) {
-        part.normals = accessors_.readVec3(a, where + ".attributes.NORMAL");
-        sameCount(part.normals.size(), "NORMAL");
-      }
       if (prim.material >= 0 && size_t(prim.material) >= model_.materials.size())
         failLoad(file_, where + ".material: material " + std::to_string(prim.material) + " does not exist");
-      std::string texCoord = "TEXCOORD_" + std::to_string(prim.material >= 0 ? texCoords_[size_t(prim.material)] : 0);
-      if (int a = attribute(texCoord.c_str()); a >= 0) {
-        part.uvs = accessors_.readVec2(a, where + ".attributes." + texCoord);
-        sameCount(part.uvs.size(), texCoord.c_str());
-      } else if (texCoord != "TEXCOORD_0") {
-        warnings_.add(file_, where + ": the material's textures read " + texCoord + ", which the primitive lacks");
+      const VertexSource source = vertexSourceOf(prim);
+      if (source[0] < 0) failLoad(file_, where + ".attributes: POSITION is missing");
+      if (!origins && !drawn.emplace(source, prim.indices, prim.mode).second) {
+        ++repeats;
+        continue;
       }
-      if (int a = attribute("COLOR_0"); a >= 0) {
-        std::vector<Vec4> rgba = accessors_.readColours(a, where + ".attributes.COLOR_0");
-        sameCount(rgba.size(), "COLOR_0");
-        part.colors.resize(rgba.size());
-        bool translucent = false;
-        for (size_t i = 0; i < rgba.size(); ++i) {
-          part.colors[i] = {rgba[i].x, rgba[i].y, rgba[i].z};
-          translucent |= rgba[i].w < 1.0f;
-        }
-        if (translucent) warnings_.add(file_, where + ".attributes.COLOR_0: the alpha of vertex colours is ignored");
-      }
-      if (int a = attribute("TANGENT"); a >= 0) {
-        part.tangents = accessors_.readVec4(a, where + ".attributes.TANGENT");
-        sameCount(part.tangents.size(), "TANGENT");
-      }
+      auto shared = origins ? partOf.end() : partOf.find(source);
+      MeshPart fresh;
+      MeshPart& part = shared != partOf.end() ? parts[shared->second] : fresh;
+      if (shared == partOf.end()) readVertices(prim, source, where, fresh);
+      const size_t n = part.positions.size();
       std::vector<uint32_t> indices;
       if (prim.indices >= 0) {
         indices = accessors_.readIndices(prim.indices, where + ".indices");
@@ -638,20 +733,24 @@ class GltfSceneBuilder {
         indices.resize(n);
         for (size_t i = 0; i < n; ++i) indices[i] = uint32_t(i);
       }
-      part.indices = toTriangleList(indices, prim.mode);
-      part.material = prim.material >= 0 ? uint32_t(prim.material) : defaultMaterial();
-      if (prim.material >= 0 && uvTransforms_[size_t(prim.material)])
-        for (Vec2& uv : part.uvs) uv = uvTransforms_[size_t(prim.material)]->apply(uv);
-      if (!part.indices.empty()) {
-        parts.push_back(std::move(part));
+      const std::vector<uint32_t> triangles = toTriangleList(indices, prim.mode);
+      part.indices.insert(part.indices.end(), triangles.begin(), triangles.end());
+      part.triangleMaterials.insert(part.triangleMaterials.end(), triangles.size() / 3,
+                                    prim.material >= 0 ? uint32_t(prim.material) : defaultMaterial());
+      if (shared == partOf.end() && !part.indices.empty()) {
+        if (!origins) partOf.emplace(source, parts.size());
+        parts.push_back(std::move(fresh));
         partPrimitives.push_back(uint32_t(p));
       }
     }
+    if (repeats > 0)
+      warnings_.add(file_, meshWhere + ": " + std::to_string(repeats) +
+                               " primitives draw the triangles of an earlier primitive again and are left out");
 
     Mesh mesh;
     mesh.name = gm.name.empty() ? "meshes[" + std::to_string(meshIndex) + "]" : gm.name;
     bool anyNormals = false, allNormals = true, anyUvs = false, anyColors = false, allTangents = !parts.empty();
-    for (const Part& p : parts) {
+    for (const MeshPart& p : parts) {
       anyNormals |= !p.normals.empty();
       allNormals &= !p.normals.empty();
       anyUvs |= !p.uvs.empty();
@@ -659,7 +758,7 @@ class GltfSceneBuilder {
       allTangents &= !p.tangents.empty();
     }
     for (size_t part = 0; part < parts.size(); ++part) {
-      Part& p = parts[part];
+      MeshPart& p = parts[part];
       // glTF asks for flat shading where normals are missing; when other primitives of the mesh have normals,
       // this primitive's triangles get their own vertices with the face normal.
       const bool unwelded = anyNormals && !allNormals && p.normals.empty();
@@ -684,7 +783,8 @@ class GltfSceneBuilder {
       }
       if (allTangents) mesh.tangents.insert(mesh.tangents.end(), p.tangents.begin(), p.tangents.end());
       for (uint32_t i : p.indices) mesh.indices.push_back(base + i);
-      mesh.triangleMaterials.insert(mesh.triangleMaterials.end(), p.indices.size() / 3, p.material);
+      mesh.triangleMaterials.insert(mesh.triangleMaterials.end(), p.triangleMaterials.begin(),
+                                    p.triangleMaterials.end());
     }
     return mesh;
   }
@@ -704,9 +804,8 @@ class GltfSceneBuilder {
     return out;
   }
 
-  template <class Part>
-  static void unweldWithFaceNormals(Part& part) {
-    auto& [positions, normals, uvs, tangents, colors, indices, material] = part;
+  static void unweldWithFaceNormals(MeshPart& part) {
+    auto& [positions, normals, uvs, tangents, colors, indices, triangleMaterials] = part;
     std::vector<Vec3> p, col;
     std::vector<Vec2> uv;
     std::vector<Vec4> tg;
@@ -821,8 +920,9 @@ class GltfSceneBuilder {
   TextureTable& textures_;
   bool sharesTextures_;
   std::vector<std::optional<UvTransform>> uvTransforms_;
-  std::vector<int> texCoords_;  // the TEXCOORD set each material's textures read
-  std::map<int, std::optional<uint32_t>> meshes_;
+  std::vector<int> texCoords_;                     // the TEXCOORD set each material's textures read
+  std::map<int, std::optional<uint32_t>> meshes_;  // by glTF mesh
+  std::map<std::vector<std::tuple<VertexSource, int, int, int>>, std::optional<uint32_t>> meshesBySignature_;
   std::optional<uint32_t> defaultMaterial_;
   bool cameraFound_ = false;
   size_t lightRangesIgnored_ = 0;
@@ -843,6 +943,7 @@ Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, c
   auto [json, jsonSize] = binary ? glbJson(data, size) : std::pair{reinterpret_cast<const char*>(data), size};
   if (json && jsonDepth(json, jsonSize) > kMaxJsonDepth)
     failLoad(name, "JSON nests deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+  checkGltfByteRanges(data, size, name);
   // Draco primitives as tinygltf accepts them (gltf_draco.h); decodeDracoPrimitives fills them in after parsing.
   const std::optional<std::vector<uint8_t>> forTinygltf = withoutDracoIndices(data, size);
   if (forTinygltf) {

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/mat3x3.hpp>
+#include <string>
+
+#include "scene/scene_repair.h"
 
 namespace candela {
 
@@ -23,9 +26,8 @@ ScreenWindow screenWindowOf(const PbrtParameters& params, uint32_t width, uint32
     if (sw.size() != 4) params.fail("'screenwindow' needs 4 numbers: xmin xmax ymin ymax");
     w = {float(sw[0]), float(sw[1]), float(sw[2]), float(sw[3])};
   }
-  if (!(std::isfinite(w.xMin) && std::isfinite(w.xMax) && std::isfinite(w.yMin) && std::isfinite(w.yMax) &&
-        w.xMax > w.xMin && w.yMax > w.yMin))
-    params.fail("the camera's screen window is empty or not finite");
+  if (!(std::isfinite(w.xMax - w.xMin) && std::isfinite(w.yMax - w.yMin) && w.xMax > w.xMin && w.yMax > w.yMin))
+    params.fail("Camera 'screenwindow' (or 'frameaspectratio'): the window is empty or its size is not finite");
   return w;
 }
 
@@ -41,7 +43,8 @@ CameraDescription makePbrtCamera(const std::string& type, const PbrtParameters& 
   const bool orthographic = type == "orthographic";
   if (type != "perspective" && !orthographic)
     context.warn("camera " + type, "'" + type + "' cameras are drawn as perspective cameras of the same field of view");
-  glm::mat4 worldFromCamera = glm::inverse(cameraFromWorld);
+  // In double: a camera placed far out would overflow the cofactors of a float inverse.
+  const glm::mat4 worldFromCamera(glm::inverse(glm::dmat4(cameraFromWorld)));
   auto toCandela = [&](glm::vec4 v) { return Vec3{mirrorX ? -v.x : v.x, v.y, v.z}; };
   CameraDescription c;
   c.eye = toCandela(worldFromCamera * glm::vec4(0, 0, 0, 1));
@@ -75,13 +78,30 @@ CameraDescription makePbrtCamera(const std::string& type, const PbrtParameters& 
     c.orthographicHalfHeight = halfHeight * length(cameraUp);
   } else {
     // fov spans screen coordinates [-1, 1]: the shorter image axis of the default window.
-    const float fov = std::clamp(params.getFloat("fov", 90.0f), 0.01f, 179.0f);
-    const float tanHalf = std::tan(0.5f * fov * kPi / 180.0f) * halfHeight;
+    const float fov = params.getFloat("fov", 90.0f);
+    if (!(fov > 0.0f && fov < 180.0f))
+      params.fail("Camera 'fov' " + std::to_string(fov) + ": it must lie between 0 and 180 degrees");
+    const float tanHalf = std::tan(0.5f * std::clamp(fov, 0.01f, 179.0f) * kPi / 180.0f) * halfHeight;
     c.verticalFovDegrees = std::clamp(2.0f * std::atan(tanHalf) * 180.0f / kPi, 0.01f, 179.0f);
   }
-  c.apertureRadius = std::max(0.0f, params.getFloat("lensradius", 0.0f));
-  c.focusDistance = std::max(0.0f, params.getFloat("focaldistance", 1e6f));
-  if (!isFinite(c.eye) || !isFinite(forward) || !isFinite(c.up)) params.fail("camera transform is not invertible");
+  // The limits the scene's repair holds every camera to (scene_repair.h), said here in pbrt's terms.
+  const float limit = kMaxCameraCoordinate;
+  auto within = [limit](float x) { return std::fabs(x) <= limit; };
+  if (!within(c.imageShift.x) || !within(c.imageShift.y) || !std::isfinite(c.verticalFovDegrees) ||
+      !(c.orthographicHalfHeight > 0.0f && c.orthographicHalfHeight <= limit))
+    params.fail("Camera 'screenwindow': the window gives no field of view, or a size or shift beyond 1e9");
+  const float lensRadius = params.getFloat("lensradius", 0.0f), focalDistance = params.getFloat("focaldistance", 1e6f);
+  if (!(lensRadius >= 0.0f && lensRadius <= limit))
+    params.fail("Camera 'lensradius' " + std::to_string(lensRadius) + ": it must lie between 0 and 1e9");
+  if (!(focalDistance >= 0.0f && focalDistance <= limit))
+    params.fail("Camera 'focaldistance' " + std::to_string(focalDistance) + ": it must lie between 0 and 1e9");
+  c.apertureRadius = lensRadius;
+  c.focusDistance = focalDistance;
+  if (!isFinite(c.eye) || !isFinite(forward) || !isFinite(c.up))
+    params.fail("Camera: the camera transform (the CTM at the Camera directive) is not invertible");
+  if (!within(c.eye.x) || !within(c.eye.y) || !within(c.eye.z) || !within(c.target.x) || !within(c.target.y) ||
+      !within(c.target.z))
+    params.fail("Camera: the camera transform (the CTM at the Camera directive) places the camera beyond 1e9");
   return c;
 }
 

@@ -243,9 +243,15 @@ class PbrtReader {
         applyTransform(pbrtScale({float(v[0]), float(v[1]), float(v[2])}), tokens, t.line, false);
       } else if (d == "Rotate") {
         auto v = readNumbers(tokens, 4, d);
+        const std::string problem = pbrtRotateProblem(float(v[0]), {float(v[1]), float(v[2]), float(v[3])});
+        if (!problem.empty()) fail(tokens, t.line, "Rotate: " + problem);
         applyTransform(pbrtRotate(float(v[0]), {float(v[1]), float(v[2]), float(v[3])}), tokens, t.line, false);
       } else if (d == "LookAt") {
         auto v = readNumbers(tokens, 9, d);
+        const std::string problem =
+            pbrtLookAtProblem({float(v[0]), float(v[1]), float(v[2])}, {float(v[3]), float(v[4]), float(v[5])},
+                              {float(v[6]), float(v[7]), float(v[8])});
+        if (!problem.empty()) fail(tokens, t.line, "LookAt: " + problem);
         applyTransform(pbrtLookAt({float(v[0]), float(v[1]), float(v[2])}, {float(v[3]), float(v[4]), float(v[5])},
                                   {float(v[6]), float(v[7]), float(v[8])}),
                        tokens, t.line, false);
@@ -304,11 +310,13 @@ class PbrtReader {
       } else if (d == "Camera") {
         cameraType_ = readString(tokens, d);
         camera_ = parsePbrtParameters(tokens);
+        camera_->line = t.line;  // the camera's errors name the directive's line, also when it has no parameters
         cameraFromWorld_ = state_.ctm;
         // As in every pbrt, "camera" names the camera's frame in the world: what is placed in it after
         // CoordSysTransform "camera" moves with the camera (a headlight).
         glm::mat4 worldFromCamera = glm::inverse(state_.ctm);
-        if (!isFiniteMatrix(worldFromCamera)) fail(tokens, t.line, "the camera transform is not invertible");
+        if (!isFiniteMatrix(worldFromCamera))
+          fail(tokens, t.line, "Camera: the CTM at the Camera directive is not invertible");
         namedFrames_["camera"] = worldFromCamera;
       } else if (d == "Film") {
         std::string type = readString(tokens, d);

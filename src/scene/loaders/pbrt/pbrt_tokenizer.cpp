@@ -9,15 +9,19 @@ namespace {
 bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v'; }
 bool endsWord(char c) { return isSpace(c) || c == '"' || c == '[' || c == ']' || c == '#'; }
 
+// Where the text starts: after a UTF-8 byte-order mark, which some editors put at the start of a file.
+size_t afterByteOrderMark(std::string_view text) { return text.starts_with("\xEF\xBB\xBF") ? 3 : 0; }
+
 }  // namespace
 
 PbrtTokenizer::PbrtTokenizer(std::string file, std::string text)
-    : file_(std::move(file)), ownedText_(std::move(text)), text_(ownedText_) {}
+    : file_(std::move(file)), ownedText_(std::move(text)), text_(ownedText_), pos_(afterByteOrderMark(text_)) {}
 
 PbrtTokenizer::PbrtTokenizer(std::string file, std::vector<uint8_t>&& bytes)
     : file_(std::move(file)),
       storage_(std::move(bytes)),
-      text_(reinterpret_cast<const char*>(storage_.data()), storage_.size()) {}
+      text_(reinterpret_cast<const char*>(storage_.data()), storage_.size()),
+      pos_(afterByteOrderMark(text_)) {}
 
 const PbrtToken& PbrtTokenizer::peek() {
   if (!haveLookahead_) {

@@ -1,7 +1,9 @@
 #include "scene/loaders/pbrt/pbrt_transforms.h"
 
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <string>
 
 namespace candela {
 
@@ -16,17 +18,37 @@ glm::mat4 pbrtRotate(float degrees, Vec3 axis) {
   return glm::rotate(glm::mat4(1.0f), glm::radians(degrees), a / len);
 }
 
+std::string pbrtRotateProblem(float degrees, Vec3 axis) {
+  if (!std::isfinite(degrees)) return "the angle is not finite";
+  const float len = glm::length(glm::vec3(axis.x, axis.y, axis.z));
+  if (!(len > 0.0f) || !std::isfinite(len)) return "the axis has no direction (it is zero or not finite)";
+  return {};
+}
+
+std::string pbrtLookAtProblem(Vec3 eyeIn, Vec3 lookIn, Vec3 upIn) {
+  // In double, where the lengths of float vectors cannot overflow.
+  const glm::dvec3 eye(eyeIn.x, eyeIn.y, eyeIn.z), look(lookIn.x, lookIn.y, lookIn.z), up(upIn.x, upIn.y, upIn.z);
+  const glm::dvec3 dir = look - eye;
+  if (!std::isfinite(glm::length(dir)) || !std::isfinite(glm::length(up)))
+    return "a point or the up vector is not finite";
+  if (!(glm::length(dir) > 0.0)) return "the eye and the point looked at are the same point";
+  if (!(glm::length(glm::cross(glm::normalize(up), glm::normalize(dir))) > 1e-6))
+    return "the up vector is zero or parallel to the view direction";
+  return {};
+}
+
 glm::mat4 pbrtLookAt(Vec3 eyeIn, Vec3 lookIn, Vec3 upIn) {
-  glm::vec3 eye(eyeIn.x, eyeIn.y, eyeIn.z), look(lookIn.x, lookIn.y, lookIn.z), up(upIn.x, upIn.y, upIn.z);
-  glm::vec3 dir = look - eye;
-  if (!(glm::length(dir) > 0.0f) || !(glm::length(up) > 0.0f)) return glm::mat4(1.0f);
+  // In double, so that points far out (up to the largest float) neither overflow the lengths nor the inverse.
+  const glm::dvec3 eye(eyeIn.x, eyeIn.y, eyeIn.z), look(lookIn.x, lookIn.y, lookIn.z), up(upIn.x, upIn.y, upIn.z);
+  glm::dvec3 dir = look - eye;
+  if (!(glm::length(dir) > 0.0) || !(glm::length(up) > 0.0)) return glm::mat4(1.0f);
   dir = glm::normalize(dir);
-  glm::vec3 right = glm::cross(glm::normalize(up), dir);
-  if (!(glm::length(right) > 0.0f)) return glm::mat4(1.0f);  // up parallel to the view direction
+  glm::dvec3 right = glm::cross(glm::normalize(up), dir);
+  if (!(glm::length(right) > 0.0)) return glm::mat4(1.0f);  // up parallel to the view direction
   right = glm::normalize(right);
-  glm::vec3 newUp = glm::cross(dir, right);
-  glm::mat4 worldFromCamera(glm::vec4(right, 0), glm::vec4(newUp, 0), glm::vec4(dir, 0), glm::vec4(eye, 1));
-  return glm::inverse(worldFromCamera);
+  const glm::dvec3 newUp = glm::cross(dir, right);
+  const glm::dmat4 worldFromCamera(glm::dvec4(right, 0), glm::dvec4(newUp, 0), glm::dvec4(dir, 0), glm::dvec4(eye, 1));
+  return glm::mat4(glm::inverse(worldFromCamera));
 }
 
 glm::mat4 pbrtMatrix(const double* m) {
