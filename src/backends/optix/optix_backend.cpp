@@ -517,6 +517,8 @@ void OptixBackend::setCamera(const Camera& camera) {
 }
 
 void OptixBackend::setSettings(const RenderSettings& settings) {
+  if (settings.restir != RestirMode::Off)
+    throw std::invalid_argument("--restir runs on the CPU backend only so far: add --backend cpu, or --restir off");
   State& s = *state_;
   s.settings = settings;
   s.allocateFilm();
