@@ -161,6 +161,26 @@ void addLightSamplerOption(CLI::App& cmd, LightSamplerKind& lightSampler) {
       ->default_str("bvh");
 }
 
+const std::map<std::string, RestirMode> kRestirModes = {{"off", RestirMode::Off},
+                                                        {"di", RestirMode::Di},
+                                                        {"di-biased", RestirMode::DiBiased}};
+
+void addRestirOption(CLI::App& cmd, RestirMode& restir) {
+  cmd.add_option(
+         "--restir", restir,
+         "Direct light at the camera ray's first hit: off (next-event estimation and BSDF sampling, as at every "
+         "vertex), di (ReSTIR DI: reservoirs reused across samples and nearby pixels, unbiased) or di-biased "
+         "(the same with cheaper 1/M reuse weights, which leave a bias); the CPU backend only")
+      ->transform(CLI::CheckedTransformer(kRestirModes))
+      ->default_str("off");
+}
+
+std::string restirModeName(RestirMode mode) {
+  for (const auto& [name, value] : kRestirModes)
+    if (value == mode) return name;
+  return "off";
+}
+
 void addTextureLimitOptions(CLI::App& cmd, TextureLimits& limits) {
   cmd.add_option("--max-texture-size", limits.maxSize,
                  "Largest width or height of a texture in pixels; a larger one is decoded smaller, with a warning")
@@ -195,6 +215,7 @@ void addRenderOptions(CLI::App& cmd, RenderJob& job) {
                            "Seed of the random sequence; same seed, same image");
   addTextureFilterOption(cmd, job.settings.textureFilter);
   addLightSamplerOption(cmd, job.settings.lightSampler);
+  addRestirOption(cmd, job.settings.restir);
   // Validated while parsing, so a bad value is a usage error (exit status 2) like any other.
   auto validated = [](auto apply) {
     return CLI::Validator(
@@ -441,6 +462,7 @@ int runBench(const RenderJob& job) {
       {"sampler", rendered.sampler == SamplerKind::Sobol ? "sobol" : "independent"},
       {"texture_filter", textureFilterName(rendered.textureFilter)},
       {"light_sampler", rendered.lightSampler == LightSamplerKind::Bvh ? "bvh" : "power"},
+      {"restir", restirModeName(rendered.restir)},
       {"backend", outcome.backendName},
       {"device", outcome.deviceName},
       {"seconds", outcome.seconds},
@@ -521,6 +543,7 @@ void addInteractiveCommandOptions(CLI::App& cmd, InteractiveOptions& options) {
   addBackendOptions(cmd, options.backend, options.devices);
   addRandomSequenceOptions(cmd, options.seed, options.sampler);
   addLightSamplerOption(cmd, options.lightSampler);
+  addRestirOption(cmd, options.restir);
   addInteractiveOptions(cmd, options);
 }
 
