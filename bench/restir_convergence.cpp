@@ -1,7 +1,7 @@
 // restir_convergence: error against samples and time with and without ReSTIR DI (--restir), on the generated town at
 // night with thousands of small lights (many_lights_scene.h) or any scene.
 //   restir_convergence [--blocks 12] [--backend cpu] [--width 160] [--height 90] [--reference-spp 2048]
-//                      [--max-spp 64] [--seeds 2] [--scene FILE]
+//                      [--max-spp 64] [--seeds 2] [--max-depth 8] [--scene FILE]
 // Renders a reference without ReSTIR (independent sampler, a seed of its own) at --reference-spp, then for each mode
 // (off, di, di-biased) and each power of two up to --max-spp the mean relMSE over --seeds renders (Sobol sampler)
 // against it, and the fastest time of one render at that count. Prints one JSON object per line: the curves, the
@@ -27,6 +27,7 @@ using bench::Point;
 struct Options : bench::ConvergenceOptions {
   std::string scene = "night-town";
   uint32_t blocks = 12;
+  uint32_t maxDepth = RenderSettings{}.maxDepth;  // 1: the direct light alone, all of which ReSTIR estimates
 
   Options() {
     width = 160;
@@ -50,14 +51,15 @@ double imageMean(const Image& image) {
 int run(const Options& options) {
   Scene scene = options.scene == "night-town" ? makeNightTown(options.blocks, 1) : loadScene(options.scene, {});
   bench::Renderer renderer = bench::Renderer::of(scene, options);
+  renderer.settings.maxDepth = options.maxDepth;
   double referenceMs = 0.0;
   renderer.settings.restir = RestirMode::Off;
   const Image reference = renderer.renderReference(options.referenceSpp, referenceMs);
   const double referenceMean = imageMean(reference);
   std::printf(
-      "{\"scene\": \"%s\", \"triangles\": %zu, \"reference_spp\": %u, \"reference_seconds\": %.1f, \"backend\": "
-      "\"%s\", \"device\": \"%s\"}\n",
-      scene.name.c_str(), scene.triangleCount(), options.referenceSpp, referenceMs / 1000.0,
+      "{\"scene\": \"%s\", \"triangles\": %zu, \"max_depth\": %u, \"reference_spp\": %u, \"reference_seconds\": "
+      "%.1f, \"backend\": \"%s\", \"device\": \"%s\"}\n",
+      scene.name.c_str(), scene.triangleCount(), options.maxDepth, options.referenceSpp, referenceMs / 1000.0,
       renderer.backend->name().c_str(), renderer.backend->deviceName().c_str());
   std::fflush(stdout);
 
@@ -117,6 +119,9 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--blocks", options.blocks, "night-town: blocks per side")
       ->check(CLI::Range(1u, 200u))
+      ->capture_default_str();
+  app.add_option("--max-depth", options.maxDepth, "Bounces after the camera ray (1: direct light only)")
+      ->check(CLI::Range(1u, 1024u))
       ->capture_default_str();
   candela::bench::addConvergenceOptions(app, options);
   return candela::bench::runBenchmark(app, argc, argv, "restir_convergence", [&] { return candela::run(options); });

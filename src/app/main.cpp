@@ -166,12 +166,12 @@ const std::map<std::string, RestirMode> kRestirModes = {{"off", RestirMode::Off}
                                                         {"di-biased", RestirMode::DiBiased}};
 
 void addRestirOption(CLI::App& cmd, RestirMode& restir) {
-  cmd.add_option(
-         "--restir", restir,
+  cmd.add_option_function<std::string>(
+         "--restir", [&restir](const std::string& name) { restir = kRestirModes.at(name); },
          "Direct light at the camera ray's first hit: off (next-event estimation and BSDF sampling, as at every "
-         "vertex), di (ReSTIR DI: reservoirs reused across samples and nearby pixels, unbiased) or di-biased "
-         "(the same with cheaper 1/M reuse weights, which leave a bias); the CPU backend only")
-      ->transform(CLI::CheckedTransformer(kRestirModes))
+         "vertex), di (ReSTIR DI: reservoirs reused across samples and nearby pixels, unbiased) or di-biased (the "
+         "same with cheaper 1/M reuse weights, which leave a bias); the CPU backend only")
+      ->check(CLI::IsMember({"off", "di", "di-biased"}))
       ->default_str("off");
 }
 
