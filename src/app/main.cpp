@@ -170,7 +170,8 @@ void addRestirOption(CLI::App& cmd, RestirMode& restir) {
          "--restir", [&restir](const std::string& name) { restir = kRestirModes.at(name); },
          "Direct light at the camera ray's first hit: off (next-event estimation and BSDF sampling, as at every "
          "vertex), di (ReSTIR DI: reservoirs reused across samples and nearby pixels, unbiased) or di-biased (the "
-         "same with cheaper 1/M reuse weights, which leave a bias); the CPU backend only")
+         "same with cheaper 1/M reuse weights, which leave a bias); on the CPU, or on one GPU outside the wavefront "
+         "schedule")
       ->check(CLI::IsMember({"off", "di", "di-biased"}))
       ->default_str("off");
 }
