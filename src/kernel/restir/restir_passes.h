@@ -197,7 +197,9 @@ struct ReservoirReuse {
     if (canonical.weight > 0.0f) canonicalTarget = centre.target(scene, canonical.sample, light);
   }
 
-  CANDELA_FN void add(const RestirVertex& neighbour, const Reservoir& r) {
+  // Adds the reservoir `r` of the pixel whose primary surface is `surface`; only the unbiased weights rebuild that
+  // surface's shading point.
+  CANDELA_FN void add(const RenderSettings& settings, const PrimarySurface& surface, const Reservoir& r) {
     confidence += r.confidence;
     const float uKeep = random.next1D();
     if (biased) {
@@ -206,6 +208,7 @@ struct ReservoirReuse {
       stream.add(r.sample, target * r.weight * r.confidence, target, uKeep);
       return;
     }
+    const RestirVertex neighbour(scene, settings, surface);
     const float canonicalShare = canonical.confidence / neighbours;
     if (r.weight > 0.0f) {
       RestirLightAt atNeighbour, atCentre;
@@ -310,11 +313,10 @@ CANDELA_FN uint32_t restirCandidatePass(const SceneView& scene, const Tracer& tr
 
   const uint32_t previous = temporalHistoryPixel(settings, restir, surface, vertex.position);
   if (previous != kNoHistory) {
-    const RestirVertex then(scene, settings, restir.previousSurfaces[previous]);
     Reservoir history = restir.history[previous];
     history.confidence = fminf(history.confidence, kRestirHistoryCap * r.confidence);
     ReservoirReuse<Tracer> reuse(scene, tracer, vertex, r, 1, settings.restir == RestirMode::DiBiased, random, rays);
-    reuse.add(then, history);
+    reuse.add(settings, restir.previousSurfaces[previous], history);
     r = reuse.finish();
   }
   restir.reservoirs[pixel] = r;
@@ -351,8 +353,7 @@ CANDELA_FN PathResult restirShadePass(const SceneView& scene, const Tracer& trac
       if (restirSimilar(surface, restir.surfaces[n], surface.hit.t)) chosen[count++] = n;
     }
     ReservoirReuse<Tracer> reuse(scene, tracer, vertex, r, count, biased, random, restirRays);
-    for (uint32_t i = 0; i < count; ++i)
-      reuse.add(RestirVertex(scene, settings, restir.surfaces[chosen[i]]), restir.reservoirs[chosen[i]]);
+    for (uint32_t i = 0; i < count; ++i) reuse.add(settings, restir.surfaces[chosen[i]], restir.reservoirs[chosen[i]]);
     r = reuse.finish();
     // The 1/M weights keep samples that may be occluded from here: their visibility is tested before shading.
     if (biased && r.weight > 0.0f) {
