@@ -169,6 +169,27 @@ void addLightSamplerOption(CLI::App& cmd, LightSamplerKind& lightSampler) {
       ->default_str("bvh");
 }
 
+const std::map<std::string, RestirMode> kRestirModes = {{"off", RestirMode::Off},
+                                                        {"di", RestirMode::Di},
+                                                        {"di-biased", RestirMode::DiBiased}};
+
+void addRestirOption(CLI::App& cmd, RestirMode& restir) {
+  cmd.add_option_function<std::string>(
+         "--restir", [&restir](const std::string& name) { restir = kRestirModes.at(name); },
+         "Direct light at the camera ray's first hit: off (next-event estimation and BSDF sampling, as at every "
+         "vertex), di (ReSTIR DI: reservoirs reused across samples and nearby pixels, unbiased) or di-biased (the "
+         "same with cheaper 1/M reuse weights, which leave a bias); on the CPU, or on one GPU outside the wavefront "
+         "schedule")
+      ->check(CLI::IsMember({"off", "di", "di-biased"}))
+      ->default_str("off");
+}
+
+std::string restirModeName(RestirMode mode) {
+  for (const auto& [name, value] : kRestirModes)
+    if (value == mode) return name;
+  return "off";
+}
+
 void addTextureLimitOptions(CLI::App& cmd, TextureLimits& limits) {
   cmd.add_option("--max-texture-size", limits.maxSize,
                  "Largest width or height of a texture in pixels; a larger one is decoded smaller, with a warning")
@@ -203,6 +224,7 @@ void addRenderOptions(CLI::App& cmd, RenderJob& job) {
                            "Seed of the random sequence; same seed, same image");
   addTextureFilterOption(cmd, job.settings.textureFilter);
   addLightSamplerOption(cmd, job.settings.lightSampler);
+  addRestirOption(cmd, job.settings.restir);
   // Validated while parsing, so a bad value is a usage error (exit status 2) like any other.
   auto validated = [](auto apply) {
     return CLI::Validator(
@@ -467,6 +489,7 @@ int runBench(const RenderJob& job) {
       {"sampler", rendered.sampler == SamplerKind::Sobol ? "sobol" : "independent"},
       {"texture_filter", textureFilterName(rendered.textureFilter)},
       {"light_sampler", rendered.lightSampler == LightSamplerKind::Bvh ? "bvh" : "power"},
+      {"restir", restirModeName(rendered.restir)},
       {"backend", outcome.backendName},
       {"device", outcome.deviceName},
       {"seconds", outcome.seconds},
@@ -547,6 +570,7 @@ void addInteractiveCommandOptions(CLI::App& cmd, InteractiveOptions& options) {
   addBackendOptions(cmd, options.backend, options.devices);
   addRandomSequenceOptions(cmd, options.seed, options.sampler);
   addLightSamplerOption(cmd, options.lightSampler);
+  addRestirOption(cmd, options.restir);
   addInteractiveOptions(cmd, options);
 }
 

@@ -1,6 +1,7 @@
 // Instantiates the shared kernel code for the device so that every build with nvcc proves it stays
 // device-clean. The tracer here never hits anything; the OptiX backend supplies the real one.
 #include "kernel/integrator.h"
+#include "kernel/restir/restir_passes.h"
 
 namespace candela {
 
@@ -13,6 +14,22 @@ __global__ void compileKernelForDevice(SceneView scene, Camera camera, RenderSet
   uint32_t x = blockIdx.x * blockDim.x + threadIdx.x, y = blockIdx.y * blockDim.y + threadIdx.y;
   if (x >= settings.width || y >= settings.height) return;
   PathResult r = renderPixelSample(scene, MissEverythingTracer{}, camera, settings, x, y, 0);
+  out[y * settings.width + x] = r.radiance;
+}
+
+// ReSTIR DI's two passes (kernel/restir/restir_passes.h), each as one launch over the image would run it.
+__global__ void compileRestirCandidatesForDevice(SceneView scene, Camera camera, RenderSettings settings,
+                                                 RestirView restir, uint32_t* rays) {
+  uint32_t x = blockIdx.x * blockDim.x + threadIdx.x, y = blockIdx.y * blockDim.y + threadIdx.y;
+  if (x >= settings.width || y >= settings.height) return;
+  rays[y * settings.width + x] = restirCandidatePass(scene, MissEverythingTracer{}, camera, settings, restir, x, y, 0);
+}
+
+__global__ void compileRestirShadingForDevice(SceneView scene, Camera camera, RenderSettings settings,
+                                              RestirView restir, Vec3* out) {
+  uint32_t x = blockIdx.x * blockDim.x + threadIdx.x, y = blockIdx.y * blockDim.y + threadIdx.y;
+  if (x >= settings.width || y >= settings.height) return;
+  PathResult r = restirShadePass<true>(scene, MissEverythingTracer{}, camera, settings, restir, x, y, 0);
   out[y * settings.width + x] = r.radiance;
 }
 

@@ -33,9 +33,15 @@ struct PathState {
   float bsdfPdf = 0.0f;   // its solid-angle density
   Vec3 lastNormal;        // the shading normal there, for the light sampler's density
   uint32_t depth = 0;
-  RayCone cone;                 // the pixel's footprint about the current ray (kernel/ray_cone.h)
-  uint32_t specularBounce = 0;  // the current ray left a delta lobe
+  RayCone cone;              // the pixel's footprint about the current ray (kernel/ray_cone.h)
+  uint32_t bounceFlags = 0;  // how the current ray left its vertex: kDeltaBounce, kDirectLightCounted
 };
+
+// PathState::bounceFlags. kDeltaBounce: the current ray left a delta lobe. kDirectLightCounted: the vertex it left
+// took its direct light from a ReSTIR reservoir (shadeVertex's directFromReservoir), which already counts all the
+// light a non-delta lobe receives straight from emitters, so the emission this ray finds takes weight 0.
+constexpr uint32_t kDeltaBounce = 1u;
+constexpr uint32_t kDirectLightCounted = 2u;
 
 // A path about to trace its first ray, whose footprint is `cone`.
 CANDELA_FN PathState startPath(RayCone cone) {
@@ -70,6 +76,7 @@ struct VertexScatter {
   Vec3 shadingNormal;
   Vec3 wo;
   float hitDistance = 0.0f;
+  bool directFromReservoir = false;  // the vertex's direct light came from a reservoir, not from next-event estimation
 };
 
 // Random bits for a ray query's pass-through decisions; scenes without cut-outs never ask for them.
@@ -100,17 +107,29 @@ CANDELA_FN Vec3 texturedLightRadiance(const SceneView& scene, const LightSample&
 // Delta lobes (mirror, smooth glass) skip light sampling and take the emission they hit at full weight. A punctual
 // light's sample takes no MIS weight: no BSDF sample can hit it. With kWithAovs the path also records its AOVs at
 // its first non-specular vertex.
+//
+// directFromReservoir: the caller adds this vertex's direct light itself, from a ReSTIR DI reservoir
+// (kernel/restir/restir_passes.h), which estimates the whole of it: all the light that the BSDF's non-delta lobes
+// receive straight from emitters (triangles, punctual lights, the environment). Without ReSTIR that integral is
+// split between next-event estimation here and the emission the BSDF's sample finds at the next vertex, with MIS
+// weights that sum to 1. With the reservoir both of those must be left out, or the direct light is counted twice:
+// next-event estimation is skipped here, and continuePath marks the next ray kDirectLightCounted, whose emission
+// (an emitter's or the environment's) then takes weight 0. A sample of a delta lobe is not marked: the reservoir's
+// target (the BSDF's eval) has no delta lobes, so the emission found along one keeps its full weight, as always.
+// Emission found further on, and next-event estimation at every later vertex, are as without ReSTIR.
 template <bool kWithAovs>
 CANDELA_FN bool shadeVertex(const SceneView& scene, const RenderSettings& settings, PathState& s, PathAovState& a,
                             PathSampler& sampler, const Ray& ray, bool found, const Hit& hit, ShadowQuery& shadow,
-                            VertexScatter& scatter) {
-  const bool specularBounce = s.specularBounce != 0;
+                            VertexScatter& scatter, bool directFromReservoir = false) {
+  const bool specularBounce = (s.bounceFlags & kDeltaBounce) != 0;
+  const bool directCounted = (s.bounceFlags & kDirectLightCounted) != 0;
   if (!found) {
     if (kWithAovs && a.aovsPending) a.aovs.albedo = s.beta;
     Vec3 le = environmentRadiance(scene, ray.direction);
     if (!isBlack(le) && (s.depth > 0 || scene.environment.visibleToCamera)) {
-      float w =
-          (s.depth == 0 || specularBounce) ? 1.0f : powerHeuristic(s.bsdfPdf, environmentPdf(scene, ray.direction));
+      float w = (s.depth == 0 || specularBounce) ? 1.0f
+                : directCounted                  ? 0.0f
+                                                 : powerHeuristic(s.bsdfPdf, environmentPdf(scene, ray.direction));
       s.radiance += s.beta * le * w;
       if (kWithAovs && a.cameraChain) a.emitted += s.beta * le;
     }
@@ -137,7 +156,9 @@ CANDELA_FN bool shadeVertex(const SceneView& scene, const RenderSettings& settin
   float cosAtSurface = dot(si.geometricNormal, wo);
   if (!isBlack(material.emission) && cosAtSurface > 0.0f) {
     float w = 1.0f;
-    if (s.depth > 0 && !specularBounce) {
+    if (s.depth > 0 && !specularBounce && directCounted) {
+      w = 0.0f;
+    } else if (s.depth > 0 && !specularBounce) {
       float lightPdf = triangleLightPdf(scene, settings.lightSampler, {s.lastScatter, s.lastNormal}, hit,
                                         length(si.position - s.lastScatter), cosAtSurface);
       w = powerHeuristic(s.bsdfPdf, lightPdf);
@@ -157,7 +178,7 @@ CANDELA_FN bool shadeVertex(const SceneView& scene, const RenderSettings& settin
   float uSelect = sampler.next1D();
   Vec2 uLight = sampler.next2D();
   shadow.contribution = {};
-  if (!bsdf.isDelta()) {
+  if (!bsdf.isDelta() && !directFromReservoir) {
     LightSample ls = sampleLight(scene, settings.lightSampler, {si.position, bsdf.normal()}, uSelect, uLight);
     bool reachable = dot(ls.wi, si.geometricNormal) * woSide > 0.0f || bsdf.hasTransmission();
     BsdfEval e;
@@ -181,6 +202,7 @@ CANDELA_FN bool shadeVertex(const SceneView& scene, const RenderSettings& settin
   scatter.shadingNormal = bsdf.normal();
   scatter.wo = wo;
   scatter.hitDistance = hit.t;
+  scatter.directFromReservoir = directFromReservoir;
 
   if (!isBlack(shadow.contribution)) {
     ++s.rays;
@@ -202,7 +224,7 @@ CANDELA_FN bool continuePath(const SceneView& scene, const RenderSettings& setti
     return false;
   s.beta *= bs.f * (fabsf(dot(bs.wi, scatter.shadingNormal)) / bs.pdf);
   s.etaScale *= bs.eta * bs.eta;
-  s.specularBounce = bs.isDelta ? 1u : 0u;
+  s.bounceFlags = bs.isDelta ? kDeltaBounce : (scatter.directFromReservoir ? kDirectLightCounted : 0u);
   if (kWithAovs) a.cameraChain = a.cameraChain && bs.isDelta;
   s.bsdfPdf = bs.pdf;
   s.cone = bs.isDelta ? s.cone.afterDeltaBounce(scatter.hitDistance) : RayCone{};

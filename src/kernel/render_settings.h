@@ -10,6 +10,11 @@ namespace candela {
 // shading point, or by emitted power alone from one table.
 enum class LightSamplerKind : uint32_t { Bvh, Power };
 
+// How the camera ray's first vertex gets its direct light: by next-event estimation and BSDF sampling combined by
+// MIS, as every other vertex (Off), or from a reservoir of ReSTIR DI reused across pixels and samples
+// (kernel/restir/restir_passes.h): unbiased (Di), or with the cheaper 1/M weights that leave a bias (DiBiased).
+enum class RestirMode : uint32_t { Off, Di, DiBiased };
+
 struct RenderSettings {
   uint32_t width = 512;
   uint32_t height = 512;
@@ -21,6 +26,7 @@ struct RenderSettings {
   // (kernel/ray_cone.h); Finest reads level 0 everywhere, as before mip pyramids.
   TextureFilter textureFilter = TextureFilter::Anisotropic;
   LightSamplerKind lightSampler = LightSamplerKind::Bvh;
+  RestirMode restir = RestirMode::Off;
 };
 
 }  // namespace candela

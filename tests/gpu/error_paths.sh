@@ -18,6 +18,9 @@ expect auto_without_device_is_cpu 0 "^backend: cpu \(auto: no usable GPU: no CUD
   env CUDA_VISIBLE_DEVICES= "$candela" render "${tiny[@]}" -o "$work/d.png"
 expect denoiser_without_weights_continues 0 "candela: .*(OptiX error 7990).*kept without denoising|^$work/e.png" \
   "$candela" render --backend optix --denoise optix "${tiny[@]}" -o "$work/e.png"
+expect restir_megakernel_renders 0 "^$work/g.png" "$candela" render --backend optix --restir di "${tiny[@]}" -o "$work/g.png"
+expect restir_wavefront_refused 1 "^candela: --restir runs in the megakernel schedule only" \
+  env CANDELA_GPU_SCHEDULE=wavefront "$candela" render --backend optix --restir di "${tiny[@]}" -o "$work/h.png"
 
 # libnvoptix missing: /dev/null mounted over the library, in a mount namespace of this check alone.
 library=$(ldconfig -p | awk '/libnvoptix\.so\.1 /{print $NF; exit}')

@@ -36,6 +36,7 @@ struct InteractiveOptions {
   uint32_t seed = 0;
   SamplerKind sampler = SamplerKind::Sobol;
   LightSamplerKind lightSampler = LightSamplerKind::Bvh;
+  RestirMode restir = RestirMode::Off;
   uint32_t samplesPerFrame = 1;
   PostSettings post;
   uint32_t frames = 0;     // render this many frames, then exit; 0: until closed or interrupted

@@ -102,6 +102,7 @@ FrameOutcome InteractiveRenderer::step(const FrameRequest& request, FrontEnd& fr
   settings.seed = options_.seed;
   settings.sampler = options_.sampler;
   settings.lightSampler = options_.lightSampler;
+  settings.restir = options_.restir;
   const auto start = std::chrono::steady_clock::now();
   prepareDenoiser(frontEnd);
   // The bilateral filter keeps the emission apart, which the backend records with the AOVs.

@@ -10,6 +10,7 @@
 
 #include "backends/cpu/embree_tracer.h"
 #include "kernel/film_accumulation.h"
+#include "kernel/restir/restir_passes.h"
 
 namespace candela {
 
@@ -69,7 +70,7 @@ void CpuBackend::setDeformedMeshes(const Scene& scene, const std::vector<uint32_
 
 void CpuBackend::setCamera(const Camera& camera) {
   camera_ = camera;
-  restart();
+  restart(/*keepRestirHistory=*/true);
 }
 
 void CpuBackend::setSettings(const RenderSettings& settings) {
@@ -82,13 +83,20 @@ void CpuBackend::setAovsEnabled(bool enabled) {
   restart();
 }
 
-void CpuBackend::restart() {
+void CpuBackend::restart(bool keepRestirHistory) {
   film_.reset(settings_.width, settings_.height, aovsEnabled_);
   accumulated_ = 0;
   nextSample_ = 0;
+  if (settings_.restir == RestirMode::Off) {
+    restir_.reset(0, 0);
+  } else if (!keepRestirHistory) {
+    restir_.reset(settings_.width, settings_.height);
+  }
 }
 
 FrameStats CpuBackend::render(uint32_t samplesPerPixel) {
+  if (settings_.restir != RestirMode::Off)
+    return aovsEnabled_ ? renderRestirSamples<true>(samplesPerPixel) : renderRestirSamples<false>(samplesPerPixel);
   return aovsEnabled_ ? renderSamples<true>(samplesPerPixel) : renderSamples<false>(samplesPerPixel);
 }
 
@@ -112,6 +120,48 @@ FrameStats CpuBackend::renderSamples(uint32_t samplesPerPixel) {
                           local.invalidSamples += tally.invalidSamples;
                         }
                     });
+  accumulated_ += samplesPerPixel;
+  nextSample_ += samplesPerPixel;
+  FrameStats total;
+  stats.combine_each([&](const FrameStats& s) {
+    total.rays += s.rays;
+    total.invalidSamples += s.invalidSamples;
+  });
+  return total;
+}
+
+// Each sample index is two passes over the whole image (kernel/restir/restir_passes.h): the second reads the
+// reservoirs the first wrote at other pixels.
+template <bool kWithAovs>
+FrameStats CpuBackend::renderRestirSamples(uint32_t samplesPerPixel) {
+  const SceneView scene = flat_.hostView();
+  const EmbreeTracer tracer(embree_.topLevel(), scene);
+  const FilmView film = film_.view();
+  const tbb::blocked_range2d<uint32_t> image(0, settings_.height, kTileSize, 0, settings_.width, kTileSize);
+  tbb::combinable<FrameStats> stats;
+  for (uint32_t i = 0; i < samplesPerPixel; ++i) {
+    const uint32_t sample = nextSample_ + i;
+    const RestirView restir = restir_.view();
+    tbb::parallel_for(image, [&](const tbb::blocked_range2d<uint32_t>& tile) {
+      FrameStats& local = stats.local();
+      for (uint32_t y = tile.rows().begin(); y < tile.rows().end(); ++y)
+        for (uint32_t x = tile.cols().begin(); x < tile.cols().end(); ++x)
+          local.rays += restirCandidatePass(scene, tracer, camera_, settings_, restir, x, y, sample);
+    });
+    tbb::parallel_for(image, [&](const tbb::blocked_range2d<uint32_t>& tile) {
+      FrameStats& local = stats.local();
+      for (uint32_t y = tile.rows().begin(); y < tile.rows().end(); ++y)
+        for (uint32_t x = tile.cols().begin(); x < tile.cols().end(); ++x) {
+          const PixelTally tally =
+              accumulatePixel<kWithAovs>(film, size_t(y) * settings_.width + x, sample, 1, [&](uint32_t s) {
+                return restirShadePass<kWithAovs>(scene, tracer, camera_, settings_, restir, x, y, s);
+              });
+          local.rays += tally.rays;
+          local.invalidSamples += tally.invalidSamples;
+        }
+    });
+    restir_.endSample(camera_);
+  }
   accumulated_ += samplesPerPixel;
   nextSample_ += samplesPerPixel;
   FrameStats total;

@@ -4,6 +4,7 @@
 #include "backends/backend.h"
 #include "backends/cpu/embree_scene.h"
 #include "backends/cpu/host_film.h"
+#include "backends/cpu/host_restir_buffers.h"
 #include "backends/film_display.h"
 #include "backends/film_filters.h"
 #include "scene/flat_scene.h"
@@ -42,9 +43,12 @@ class CpuBackend final : public Backend {
   const FilmDisplay& display() const override { return display_; }
 
  private:
-  void restart();
+  // Restarts the film; ReSTIR's history survives only a camera move (setCamera), which its temporal reuse follows.
+  void restart(bool keepRestirHistory = false);
   template <bool kWithAovs>
   FrameStats renderSamples(uint32_t samplesPerPixel);
+  template <bool kWithAovs>
+  FrameStats renderRestirSamples(uint32_t samplesPerPixel);
 
   FlatScene flat_;
   EmbreeScene embree_;
@@ -52,6 +56,7 @@ class CpuBackend final : public Backend {
   RenderSettings settings_;
   bool aovsEnabled_ = false;
   HostFilm film_;
+  HostRestirBuffers restir_;
   uint32_t accumulated_ = 0;
   uint32_t nextSample_ = 0;
   HostFilmFilters filters_{*this};

@@ -8,6 +8,7 @@
 #include "kernel/camera.h"
 #include "kernel/film.h"
 #include "kernel/render_settings.h"
+#include "kernel/restir/restir_buffers.h"
 #include "kernel/scene_view.h"
 
 namespace candela::optix {
@@ -66,6 +67,7 @@ struct LaunchParameters {
   const uint32_t* batchInstances = nullptr;  // kMaxBatchInputs per batch: the instance id of each build input
   uint32_t firstBatchId = 0xFFFFFFFFu;       // IAS instance ids from here on are batches
   WavefrontBuffers wavefront;                // the wavefront schedule's launches only
+  RestirView restir;                         // ReSTIR's launches only
 };
 
 }  // namespace candela::optix

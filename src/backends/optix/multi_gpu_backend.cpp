@@ -207,6 +207,10 @@ void MultiGpuBackend::setCamera(const Camera& camera) {
 }
 
 void MultiGpuBackend::setSettings(const RenderSettings& settings) {
+  // ReSTIR's spatial reuse reads the whole image's reservoirs of the same sample, which a split into bands of rows
+  // scatters over the devices.
+  if (settings.restir != RestirMode::Off && devices_.size() > 1)
+    throw std::invalid_argument("--restir runs on one GPU: pick one with --devices");
   onEveryDevice([&](OptixBackend& d) { d.setSettings(settings); });
   settings_ = settings;
   restart();

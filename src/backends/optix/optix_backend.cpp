@@ -22,6 +22,7 @@
 #include "backends/optix/cuda_devices.h"
 #include "backends/optix/device_display.h"
 #include "backends/optix/device_film.h"
+#include "backends/optix/device_restir_buffers.h"
 #include "backends/optix/device_scene.h"
 #include "backends/optix/film_addition.h"
 #include "backends/optix/filters/cuda_filters.h"
@@ -63,8 +64,9 @@ class CudaEvent {
 // compile traversal around each trace call, and does not document it, so this grouping is what the measurement
 // chose. The AOV path tracer gets a pipeline of its own, shaped
 // like the path tracer's (beside a copy of the record program), so that it leaves the path tracer's alone.
-enum class PipelineKind { Megakernel, RawTrace, AovMegakernel, Wavefront };
-constexpr size_t kPipelineKinds = 4;
+// ReSTIR's launches have a pipeline of their own, made at their first launch.
+enum class PipelineKind { Megakernel, RawTrace, AovMegakernel, Wavefront, Restir };
+constexpr size_t kPipelineKinds = 5;
 
 const std::vector<RaygenProgram>& pipelinePrograms(PipelineKind kind) {
   static const std::array<std::vector<RaygenProgram>, kPipelineKinds> programs = {{
@@ -72,6 +74,7 @@ const std::vector<RaygenProgram>& pipelinePrograms(PipelineKind kind) {
       {RaygenProgram::RawTrace},
       {RaygenProgram::RenderWithAovs, RaygenProgram::Record},
       {RaygenProgram::PathTrace, RaygenProgram::PathShade, RaygenProgram::PathTail, RaygenProgram::PathFinish},
+      {RaygenProgram::RestirCandidates, RaygenProgram::RestirShade, RaygenProgram::RestirShadeWithAovs},
   }};
   return programs[size_t(kind)];
 }
@@ -88,6 +91,9 @@ PipelineKind pipelineLaunching(RaygenProgram program) {
     case RaygenProgram::PathShade:
     case RaygenProgram::PathTail:
     case RaygenProgram::PathFinish: return PipelineKind::Wavefront;
+    case RaygenProgram::RestirCandidates:
+    case RaygenProgram::RestirShade:
+    case RaygenProgram::RestirShadeWithAovs: return PipelineKind::Restir;
   }
   throw std::logic_error("no pipeline launches the raygen program");
 }
@@ -152,6 +158,7 @@ struct OptixBackend::State {
   uint32_t accumulated = 0;
   uint32_t nextSample = 0;
   WavefrontSchedule wavefront;
+  DeviceRestirBuffers restir;
   PathScheduleChoice schedule{requestedSchedule()};
   std::string reportedSchedule;
 
@@ -299,10 +306,28 @@ struct OptixBackend::State {
     }
   }
 
-  void restart() {
+  // Restarts the film; ReSTIR's history survives only a camera move, which its temporal reuse follows.
+  void restart(bool keepRestirHistory = false) {
     accumulated = 0;
     nextSample = 0;
     film.clear(context.stream());
+    if (!keepRestirHistory) restir.dropHistory();
+  }
+
+  // One sample per pixel of the whole image by ReSTIR DI's two launches (kernel/restir/restir_passes.h), sample
+  // index `sample`; the wavefront schedule does not run them.
+  LaunchResult launchRestir(uint32_t sample) {
+    LaunchParameters p = baseParameters();
+    p.restir = restir.view();
+    p.firstSample = sample;
+    p.samplesPerPixel = 1;
+    const LaunchResult candidates = launch(RaygenProgram::RestirCandidates, p, settings.height);
+    LaunchResult shaded =
+        launch(aovsEnabled ? RaygenProgram::RestirShadeWithAovs : RaygenProgram::RestirShade, p, settings.height);
+    restir.endSample(camera);
+    shaded.totals.rays += candidates.totals.rays;
+    shaded.milliseconds += candidates.milliseconds;
+    return shaded;
   }
 
   Vec3* filterOutput() {
@@ -523,13 +548,21 @@ void OptixBackend::setInstanceTransforms(const Scene& scene) {
 
 void OptixBackend::setCamera(const Camera& camera) {
   state_->camera = camera;
-  state_->restart();
+  state_->restart(/*keepRestirHistory=*/true);
 }
 
 void OptixBackend::setSettings(const RenderSettings& settings) {
   State& s = *state_;
+  if (settings.restir != RestirMode::Off && s.schedule.requested() == PathSchedule::Wavefront)
+    throw std::invalid_argument(
+        "--restir runs in the megakernel schedule only: unset CANDELA_GPU_SCHEDULE=wavefront, or use --restir off");
   s.settings = settings;
   s.allocateFilm();
+  if (settings.restir != RestirMode::Off) {
+    s.restir.reset(settings.width, settings.height);
+  } else {
+    s.restir.reset(0, 0);
+  }
   s.schedule.reset();
   s.restart();
 }
@@ -546,6 +579,21 @@ FrameStats OptixBackend::renderRows(uint32_t samplesPerPixel, uint32_t firstRow,
   // Per-pixel ray counts are 32-bit: long requests are split into launches that cannot overflow them.
   const uint32_t maxPerLaunch = std::max(1u, 0xFFFFFFFFu / rayBoundPerSample(s.settings));
   FrameStats stats;
+  if (s.settings.restir != RestirMode::Off) {
+    // Spatial reuse reads the neighbours' reservoirs of the same launch: a band of rows would read rows no launch
+    // of this device wrote.
+    if (firstRow != 0 || rows != s.settings.height)
+      throw std::invalid_argument("--restir renders whole images: on several GPUs it needs a sample per GPU per call");
+    for (uint32_t i = 0; i < samplesPerPixel; ++i) {
+      const LaunchResult r = s.launchRestir(s.nextSample);
+      stats.rays += r.totals.rays;
+      stats.invalidSamples += r.totals.invalidSamples;
+      stats.deviceMilliseconds += r.milliseconds;
+      ++s.accumulated;
+      ++s.nextSample;
+    }
+    return stats;
+  }
   for (uint32_t done = 0; done < samplesPerPixel;) {
     LaunchParameters p = s.baseParameters();
     p.firstSample = s.nextSample;

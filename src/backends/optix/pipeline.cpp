@@ -26,6 +26,9 @@ const char* raygenName(RaygenProgram program) {
     case RaygenProgram::PathShade: return "__raygen__pathShade";
     case RaygenProgram::PathTail: return "__raygen__pathTail";
     case RaygenProgram::PathFinish: return "__raygen__pathFinish";
+    case RaygenProgram::RestirCandidates: return "__raygen__restirCandidates";
+    case RaygenProgram::RestirShade: return "__raygen__restirShade";
+    case RaygenProgram::RestirShadeWithAovs: return "__raygen__restirShadeWithAovs";
   }
   throw std::logic_error("no such raygen program");
 }
@@ -40,6 +43,9 @@ ProgramModule moduleHolding(RaygenProgram program) {
     case RaygenProgram::PathShade:
     case RaygenProgram::PathTail:
     case RaygenProgram::PathFinish: return ProgramModule::Wavefront;
+    case RaygenProgram::RestirCandidates:
+    case RaygenProgram::RestirShade:
+    case RaygenProgram::RestirShadeWithAovs: return ProgramModule::Restir;
   }
   throw std::logic_error("no such raygen program");
 }

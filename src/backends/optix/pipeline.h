@@ -20,6 +20,10 @@ enum class RaygenProgram {
   PathShade,
   PathTail,
   PathFinish,
+  // ReSTIR DI's two launches per sample (kernel/restir/restir_passes.h)
+  RestirCandidates,
+  RestirShade,
+  RestirShadeWithAovs,
 };
 
 // The modules a pipeline of these raygen programs is made of: the ray programs' and each raygen program's, once.

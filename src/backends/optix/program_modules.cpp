@@ -2,9 +2,9 @@
 
 // The device programs as OptiX-IR, embedded at build time (CMakeLists.txt).
 extern const unsigned char candelaRayPrograms[], candelaMegakernelPrograms[], candelaAovMegakernelPrograms[],
-    candelaWavefrontPrograms[], candelaRawTracePrograms[];
+    candelaWavefrontPrograms[], candelaRawTracePrograms[], candelaRestirPrograms[];
 extern const size_t candelaRayProgramsSize, candelaMegakernelProgramsSize, candelaAovMegakernelProgramsSize,
-    candelaWavefrontProgramsSize, candelaRawTraceProgramsSize;
+    candelaWavefrontProgramsSize, candelaRawTraceProgramsSize, candelaRestirProgramsSize;
 
 namespace candela::optix {
 
@@ -17,6 +17,7 @@ EmbeddedIr moduleIr(ProgramModule module) {
     case ProgramModule::AovMegakernel: return {candelaAovMegakernelPrograms, candelaAovMegakernelProgramsSize};
     case ProgramModule::Wavefront: return {candelaWavefrontPrograms, candelaWavefrontProgramsSize};
     case ProgramModule::RawTrace: return {candelaRawTracePrograms, candelaRawTraceProgramsSize};
+    case ProgramModule::Restir: return {candelaRestirPrograms, candelaRestirProgramsSize};
   }
   return {nullptr, 0};
 }

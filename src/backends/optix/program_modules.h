@@ -22,8 +22,9 @@ enum class ProgramModule {
   AovMegakernel,  // device/aov_megakernel_programs.cu
   Wavefront,      // device/wavefront_programs.cu
   RawTrace,       // device/raw_trace_programs.cu
+  Restir,         // device/restir_programs.cu
 };
-constexpr size_t kProgramModuleCount = 5;
+constexpr size_t kProgramModuleCount = 6;
 
 // Options every module and every pipeline over them must be created with.
 OptixPipelineCompileOptions pipelineCompileOptions();

@@ -26,7 +26,7 @@ struct WavefrontPath {
   X(state.beta.x, state.beta.y, state.beta.z, state.etaScale)                     \
   X(state.lastScatter.x, state.lastScatter.y, state.lastScatter.z, state.bsdfPdf) \
   X(state.lastNormal.x, state.lastNormal.y, state.lastNormal.z, state.depth)      \
-  X(state.cone.width, state.cone.spread, dimension, state.specularBounce)
+  X(state.cone.width, state.cone.spread, dimension, state.bounceFlags)
 
 constexpr uint32_t kPathResultPlane = 0;
 

@@ -1,0 +1,158 @@
+#pragma once
+// ReSTIR DI's target function: what a light sample (kernel/restir/restir_buffers.h) would contribute to a pixel's
+// primary shading point, unshadowed, in the sample space's own measure; and the densities with which the initial
+// candidates' two strategies (light sampling, BSDF sampling) produce a sample, for their MIS weights.
+#include "kernel/bsdf/bsdf.h"
+#include "kernel/interaction.h"
+#include "kernel/lights.h"
+#include "kernel/path_vertex.h"
+#include "kernel/restir/restir_buffers.h"
+
+namespace candela {
+
+// A light sample seen from a point: the direction and distance to it, the radiance (or a punctual light's
+// irradiance at a surface facing it) arriving, and `jacobian`, which turns a solid-angle density at the point into
+// the sample space's measure (cos at the light / distance^2 on a triangle, 1 elsewhere).
+struct RestirLightAt {
+  Vec3 wi;
+  float distance = kInf;
+  Vec3 radiance;
+  float jacobian = 0.0f;
+  bool valid = false;
+  bool isPunctual = false;  // counting measure: no BSDF sample can find it
+};
+
+CANDELA_FN RestirLightAt restirLightAt(const SceneView& scene, const RestirSample& sample, Vec3 p) {
+  RestirLightAt at;
+  if (sample.light == kRestirEnvironment) {
+    at.wi = sample.coordinates;
+    at.radiance = environmentRadiance(scene, at.wi);
+    at.jacobian = 1.0f;
+    at.valid = !isBlack(at.radiance);
+    return at;
+  }
+  if (sample.light < scene.lightCount) {
+    const LightTriangle& light = scene.lights[sample.light];
+    const Vec3 y = light.p0 + light.edge1 * sample.coordinates.x + light.edge2 * sample.coordinates.y;
+    const Vec3 toLight = y - p;
+    const float dist2 = dot(toLight, toLight);
+    if (!(dist2 > 0.0f)) return at;
+    at.distance = sqrtf(dist2);
+    at.wi = toLight / at.distance;
+    const Vec3 n = normalize(cross(light.edge1, light.edge2)) * light.frontSign;
+    const float cosAtLight = -dot(n, at.wi);
+    if (!(cosAtLight > 0.0f)) return at;  // emitters are one-sided
+    LightSample ls;
+    ls.lightIndex = sample.light;
+    ls.barycentrics = {sample.coordinates.x, sample.coordinates.y};
+    ls.radiance = light.radiance;
+    at.radiance = texturedLightRadiance(scene, ls);
+    at.jacobian = cosAtLight / dist2;
+    at.valid = !isBlack(at.radiance);
+    return at;
+  }
+  if (sample.light - scene.lightCount < scene.punctualLightCount) {
+    const LightSample ls = samplePunctualLight(scene.punctualLights[sample.light - scene.lightCount], p, 1.0f);
+    at.wi = ls.wi;
+    at.distance = ls.distance;
+    at.radiance = ls.radiance;
+    at.jacobian = 1.0f;
+    at.valid = ls.valid;
+    at.isPunctual = true;
+  }
+  return at;
+}
+
+// A primary shading point rebuilt from its PrimarySurface, as shadeVertex builds a vertex's: its position, normals,
+// the direction to the camera and its BSDF. `usable` is false where the camera ray found nothing or the BSDF has
+// only delta lobes (light sampling cannot find those: such a pixel keeps next-event estimation's way, which skips
+// them too).
+struct RestirVertex {
+  Vec3 position;
+  Vec3 geometricNormal;
+  Vec3 wo;
+  float woSide = 0.0f;
+  bool usable = false;  // before bsdf: rebuild() sets it while bsdf is initialised
+  Bsdf bsdf;
+
+  CANDELA_FN RestirVertex(const SceneView& scene, const RenderSettings& settings, const PrimarySurface& surface)
+      : bsdf(rebuild(scene, settings, surface)) {}
+
+  // The unshadowed contribution f * Le * |cos| of `light` (not yet in the sample space's measure: times
+  // light.jacobian for that); black where the BSDF cannot send light that way, as in next-event estimation.
+  CANDELA_FN BsdfEval contribution(const RestirLightAt& light, Vec3& value) const {
+    value = {};
+    BsdfEval e;
+    if (!usable || !light.valid) return e;
+    const bool reachable = dot(light.wi, geometricNormal) * woSide > 0.0f || bsdf.hasTransmission();
+    const bool sidesAgree = (dot(light.wi, geometricNormal) * woSide > 0.0f) == (dot(light.wi, bsdf.normal()) > 0.0f);
+    if (!reachable || !sidesAgree) return e;
+    e = bsdf.evalPdf(wo, light.wi);
+    value = e.f * light.radiance * fabsf(dot(light.wi, bsdf.normal()));
+    return e;
+  }
+
+  // The target function p-hat of `sample` here, in the sample space's measure: the luminance of the unshadowed
+  // contribution. `light` receives the sample seen from here.
+  CANDELA_FN float target(const SceneView& scene, const RestirSample& sample, RestirLightAt& light) const {
+    if (!usable || sample.light == kRestirNoLight) return 0.0f;
+    light = restirLightAt(scene, sample, position);
+    Vec3 value;
+    contribution(light, value);
+    const float t = luminance(value) * light.jacobian;
+    return t > 0.0f && t < kInf ? t : 0.0f;
+  }
+
+  // A shadow ray from here to the light seen as `light`, stopping short of it.
+  CANDELA_FN Ray shadowRay(const RestirLightAt& light) const {
+    return {offsetRayOrigin(position, geometricNormal, light.wi), light.wi, 0.0f,
+            light.distance >= kInf ? kInf : light.distance * (1.0f - 1e-4f)};
+  }
+
+ private:
+  CANDELA_FN Bsdf rebuild(const SceneView& scene, const RenderSettings& settings, const PrimarySurface& surface) {
+    SurfaceInteraction si;
+    Material material;
+    if (surface.found) {
+      si = makeInteraction(scene, surface.hit);
+      const Material& stored = scene.materials[si.materialId];
+      if (hasTextures(stored))
+        si.footprint =
+            textureFootprint(scene, surface.hit, surface.ray.direction, surface.coneWidth, settings.textureFilter);
+      wo = -surface.ray.direction;
+      material = evaluateSurfaceMaterial(scene, si, wo);
+      applyNormalMap(scene, material, si);
+      keepReflectionAboveSurface(si, wo);
+      position = si.position;
+      geometricNormal = si.geometricNormal;
+      woSide = dot(wo, si.geometricNormal);
+    }
+    Bsdf built(material, si, wo);
+    usable = surface.found != 0 && !built.isDelta();
+    return built;
+  }
+};
+
+// Solid-angle density with which next-event estimation's light sampling (sampleLight) picks the light sample seen
+// as `light` from ctx; a punctual light's probability.
+CANDELA_FN float restirLightPdf(const SceneView& scene, LightSamplerKind kind, LightSampleContext ctx,
+                                const RestirSample& sample, const RestirLightAt& light) {
+  if (sample.light == kRestirEnvironment) return environmentPdf(scene, light.wi);
+  if (sample.light < scene.lightCount) {
+    const LightTriangle& triangle = scene.lights[sample.light];
+    const float selectPmf =
+        kind == LightSamplerKind::Power ? powerTablePmf(scene, triangle) : lightBvhPmf(scene, ctx, sample.light);
+    const float cosAtLight = light.jacobian * light.distance * light.distance;
+    return scene.boundedSelectProbability * trianglePointPdf(triangle, selectPmf,
+                                                             sphericalSamplingSolidAngle(triangle, ctx.p),
+                                                             light.distance, cosAtLight);
+  }
+  const uint32_t punctual = sample.light - scene.lightCount;
+  if (punctual >= scene.boundedPunctualLightCount) return scene.directionalSelectProbability;
+  const float selectPmf = kind == LightSamplerKind::Power
+                              ? scene.inverseLightPower * punctualLightPower(scene.punctualLights[punctual])
+                              : lightBvhPmf(scene, ctx, sample.light);
+  return scene.boundedSelectProbability * selectPmf;
+}
+
+}  // namespace candela
