@@ -11,6 +11,7 @@
 #include "app/scene_loading.h"
 #include "scene/loaders/gltf/gltf_loader.h"
 #include "scene/loaders/normal_generation.h"
+#include "scene/loaders/obj/obj_chunk_parser.h"
 #include "scene/loaders/obj/obj_loader.h"
 #include "scene/scene_repair.h"
 #include "scene/scene_test_files.h"
@@ -94,21 +95,32 @@ TEST(HostileObj, AHubOfManyDistinctNormalsStillKeepsTheCreaseBetweenTwoFans) {
   }
 }
 
-TEST(HostileObj, AFaceOfAMillionCornersIsCutIntoAFanWithAWarning) {
-  const int corners = 1000000;
-  std::string text, face = "f";
-  for (int i = 0; i < corners; ++i) {
-    double a = 2.0 * M_PI * i / corners;
-    text += "v " + std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a)) + " 0\n";
-    face += ' ';
-    face += std::to_string(i + 1);
-  }
+// A face of up to kMaxObjFaceCorners corners is cut into a fan with a warning; one of a million is refused, naming
+// its line, before its corners are gathered.
+TEST(HostileObj, AFaceOfManyCornersIsCutIntoAFanAndOneOfAMillionIsRefused) {
+  auto polygon = [](int corners) {
+    std::string text, face = "f";
+    for (int i = 0; i < corners; ++i) {
+      double a = 2.0 * M_PI * i / corners;
+      text += "v " + std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a)) + " 0\n";
+      face += ' ';
+      face += std::to_string(i + 1);
+    }
+    return text + face + "\n";
+  };
   LoadWarnings warnings;
-  Scene s = loadObjTimed(text + face + "\n", warnings);
+  const int corners = int(kMaxObjFaceCorners);
+  Scene s = loadObjTimed(polygon(corners), warnings);
   EXPECT_EQ(s.triangleCount(), size_t(corners - 2));
   ASSERT_FALSE(warnings.messages.empty());
   EXPECT_NE(warnings.messages[0].find("hostile.obj: 1 polygons with more than 256 corners"), std::string::npos)
       << warnings.messages[0];
+  try {
+    loadObjTimed(polygon(1000000), warnings);
+    ADD_FAILURE() << "a face of a million corners was accepted";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("hostile.obj:1000001: a face of more than"), std::string::npos) << e.what();
+  }
 }
 
 TEST(HostileObj, APositionWithManyTextureCoordinatesSharesVerticesInLinearTime) {

@@ -10,7 +10,7 @@ with the moved camera arrives (with --moving, the camera moves every frame: a wh
 acknowledgement, and the timed inputs ride on them). --stream h264 asks for the video stream (the client does not
 decode it; a browser would). Prints one JSON object, with the medians of the frames' render_ms, post_ms and
 encode_ms. Python's standard library only: it speaks the WebSocket
-protocol itself (RFC 6455, client side, unfragmented messages).
+protocol itself (RFC 6455, client side).
 """
 import argparse
 import base64
@@ -73,10 +73,11 @@ class WebSocket:
         self.send_text(json.dumps(message))
 
     def receive(self):
-        """Returns (opcode, payload) of the next data message; answers pings."""
+        """Returns (opcode, payload) of the next data message, its fragments joined; answers pings."""
+        message_opcode, parts = None, []
         while True:
             b0, b1 = self._read(2)
-            opcode, n = b0 & 0x0F, b1 & 0x7F
+            final, opcode, n = b0 & 0x80, b0 & 0x0F, b1 & 0x7F
             if n == 126:
                 n = struct.unpack(">H", self._read(2))[0]
             elif n == 127:
@@ -88,8 +89,12 @@ class WebSocket:
                                   bytes(b ^ mask[i % 4] for i, b in enumerate(payload)))
             elif opcode == 0x8:
                 raise RuntimeError("the server closed the WebSocket")
-            elif opcode in (0x1, 0x2):
-                return opcode, payload
+            elif opcode in (0x0, 0x1, 0x2):
+                if opcode != 0x0:
+                    message_opcode, parts = opcode, []
+                parts.append(payload)
+                if final:
+                    return message_opcode, b"".join(parts)
 
 
 def frame_header(payload):

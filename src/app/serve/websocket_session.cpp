@@ -22,6 +22,9 @@ WebSocketSession::WebSocketSession(boost::asio::ip::tcp::socket socket, ClientHu
 void WebSocketSession::run(beast::http::request<beast::http::empty_body> upgrade) {
   // Pings an idle browser and drops one that stops answering; a handshake must finish in 30 seconds.
   ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
+  // A frame goes out as one WebSocket frame: fragments of the write buffer's 4 KB each would cost a 1080p JPEG a
+  // hundred frame headers and writes.
+  ws_.auto_fragment(false);
   ws_.read_message_max(kMaxMessageBytes);
   ws_.async_accept(upgrade, [self = shared_from_this()](beast::error_code error) { self->onAccept(error); });
 }
