@@ -21,8 +21,10 @@ status=0
 for own in "view:$view_own" "serve:$serve_own"; do
   command=${own%%:*}
   IFS='|' read -ra names <<<"${own#*:}"
+  # Listed once, then searched: grep -q leaving a pipe early would fail the listing (pipefail) on a busy machine.
+  listed=$(entries "$command")
   for name in "${names[@]}"; do
-    entries "$command" | grep -Eq "^  $name( |$)" || { echo "candela $command --help lacks $name"; status=1; }
+    grep -Eq "^  $name( |$)" <<<"$listed" || { echo "candela $command --help lacks $name"; status=1; }
   done
 done
 shared_view=$(entries view | grep -Ev "^  ($view_own)( |$)")
