@@ -2,8 +2,8 @@
 // access units, a key frame where one is due, the codec string of its SPS.
 #include <gtest/gtest.h>
 
-#include <string>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "io/video/h264_encoder.h"
