@@ -100,6 +100,18 @@ FrameStats CpuBackend::render(uint32_t samplesPerPixel) {
   return aovsEnabled_ ? renderSamples<true>(samplesPerPixel) : renderSamples<false>(samplesPerPixel);
 }
 
+// The film holds `samplesPerPixel` more samples; the threads' counts of them, summed.
+FrameStats CpuBackend::finishSamples(uint32_t samplesPerPixel, tbb::combinable<FrameStats>& stats) {
+  accumulated_ += samplesPerPixel;
+  nextSample_ += samplesPerPixel;
+  FrameStats total;
+  stats.combine_each([&](const FrameStats& s) {
+    total.rays += s.rays;
+    total.invalidSamples += s.invalidSamples;
+  });
+  return total;
+}
+
 template <bool kWithAovs>
 FrameStats CpuBackend::renderSamples(uint32_t samplesPerPixel) {
   const SceneView scene = flat_.hostView();
@@ -120,14 +132,7 @@ FrameStats CpuBackend::renderSamples(uint32_t samplesPerPixel) {
                           local.invalidSamples += tally.invalidSamples;
                         }
                     });
-  accumulated_ += samplesPerPixel;
-  nextSample_ += samplesPerPixel;
-  FrameStats total;
-  stats.combine_each([&](const FrameStats& s) {
-    total.rays += s.rays;
-    total.invalidSamples += s.invalidSamples;
-  });
-  return total;
+  return finishSamples(samplesPerPixel, stats);
 }
 
 // Each sample index is two passes over the whole image (kernel/restir/restir_passes.h): the second reads the
@@ -162,14 +167,7 @@ FrameStats CpuBackend::renderRestirSamples(uint32_t samplesPerPixel) {
     });
     restir_.endSample(camera_);
   }
-  accumulated_ += samplesPerPixel;
-  nextSample_ += samplesPerPixel;
-  FrameStats total;
-  stats.combine_each([&](const FrameStats& s) {
-    total.rays += s.rays;
-    total.invalidSamples += s.invalidSamples;
-  });
-  return total;
+  return finishSamples(samplesPerPixel, stats);
 }
 
 AovImages CpuBackend::readAovs() const {

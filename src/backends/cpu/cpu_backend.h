@@ -1,4 +1,6 @@
 #pragma once
+#include <tbb/combinable.h>
+
 #include <memory>
 
 #include "backends/backend.h"
@@ -49,6 +51,7 @@ class CpuBackend final : public Backend {
   FrameStats renderSamples(uint32_t samplesPerPixel);
   template <bool kWithAovs>
   FrameStats renderRestirSamples(uint32_t samplesPerPixel);
+  FrameStats finishSamples(uint32_t samplesPerPixel, tbb::combinable<FrameStats>& stats);
 
   FlatScene flat_;
   EmbreeScene embree_;
