@@ -5,18 +5,14 @@
 #include <memory>
 #include <stdexcept>
 
-#include "image/tonemap.h"
+#include "image/display_pixels.h"
 
 namespace candela {
 
 DisplayImage displayImage(const Image& linear, const DisplaySettings& display) {
   DisplayImage out{linear.width, linear.height, std::vector<uint8_t>(linear.pixels.size() * 3)};
-  for (size_t i = 0; i < linear.pixels.size(); ++i) {
-    const Vec3 c = toneMap(linear.pixels[i], display.exposure, display.toneMapper);
-    out.rgb[3 * i + 0] = displayByte(c.x);
-    out.rgb[3 * i + 1] = displayByte(c.y);
-    out.rgb[3 * i + 2] = displayByte(c.z);
-  }
+  if (!linear.pixels.empty())
+    writeDisplayPixels({linear.pixels.data(), nullptr, linear.width, linear.height}, display, 1, out.rgb.data());
   return out;
 }
 

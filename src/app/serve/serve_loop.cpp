@@ -178,7 +178,7 @@ void ServeLoop::adjustPlan(FramePlan& plan) {
   plan.width = std::max(plan.width / divisor, kMinViewSide);
   plan.height = std::max(plan.height / divisor, kMinViewSide);
   jpegQuality_ = quality_.jpegQuality(plan.preview);
-  preview_ = plan.preview;
+  videoSettings_ = quality_.videoSettings(plan.preview);
 }
 
 void ServeLoop::present(FrameImages& frame) {
@@ -188,8 +188,7 @@ void ServeLoop::present(FrameImages& frame) {
   if (needs_.jpeg) presented_.jpeg = jpegEncoder_.encode(pixels.rgb, pixels.width, pixels.height, jpegQuality_);
   if (!needs_.video) return;
   try {
-    presented_.video = videoEncoder_.encode(pixels.rgb, pixels.width, pixels.height, quality_.videoSettings(preview_),
-                                            needs_.videoKey);
+    presented_.video = videoEncoder_.encode(pixels.rgb, pixels.width, pixels.height, videoSettings_, needs_.videoKey);
   } catch (const std::exception& e) {
     // The browsers that took video get JPEG stripes from this frame on.
     report(std::string("the video stream stopped (") + e.what() + "): JPEG frames from now on", true);
@@ -240,15 +239,14 @@ void ServeLoop::renderFrame(double now) {
     jpegMessage = binaryMessage(h, packStripedJpeg(*jpeg));
   }
   if (const std::optional<H264Frame>& video = presented_.video) {
-    const H264Settings settings = quality_.videoSettings(plan.preview);
     Json h = header;
     h.update({{"format", "h264"},
               {"width", video->width},
               {"height", video->height},
               {"key", video->key},
               {"codec", video->codec},
-              {"kilobits_per_second", settings.maxKilobitsPerSecond},
-              {"rate_factor", settings.rateFactor},
+              {"kilobits_per_second", videoSettings_.maxKilobitsPerSecond},
+              {"rate_factor", videoSettings_.rateFactor},
               {"encode_ms", video->milliseconds}});
     videoMessage = binaryMessage(h, video->bytes);
     lastVideoFrame_ = framesSent_;

@@ -62,9 +62,10 @@ class ServeLoop : private FrontEnd {
   };
   StripedJpegEncoder jpegEncoder_;
   H264Encoder videoEncoder_;
-  FrameNeeds needs_;      // of the frame being made
-  bool preview_ = false;  // the frame being made is a preview (adjustPlan)
-  int jpegQuality_ = 0;   // of the frame being made
+  FrameNeeds needs_;  // of the frame being made
+  // The stream settings of the frame being made (adjustPlan), for its encoding and its header.
+  int jpegQuality_ = 0;
+  H264Settings videoSettings_;
   uint64_t lastVideoFrame_ = 0;
   PresentedFrame presented_;
   bool firstFrame_ = true;
