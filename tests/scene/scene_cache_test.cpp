@@ -23,6 +23,7 @@
 #include "scene/cache/scene_cache.h"
 #include "scene/loaders/obj/obj_loader.h"
 #include "scene/scene_test_files.h"
+#include "support/scoped_variable.h"
 
 namespace candela {
 namespace {
@@ -531,20 +532,6 @@ TEST(SceneCache, DisabledCacheWritesNothing) {
                         [&](LoadWarnings& w) { return loadObj(obj.model, w); });
   EXPECT_FALSE(fs::exists(obj.cacheDirectory));
 }
-
-// Sets an environment variable for the lifetime of the object.
-class ScopedVariable {
- public:
-  ScopedVariable(const char* name, const char* value) : name_(name) {
-    if (const char* old = std::getenv(name)) old_ = old;
-    value ? setenv(name, value, 1) : unsetenv(name);
-  }
-  ~ScopedVariable() { old_ ? setenv(name_, old_->c_str(), 1) : unsetenv(name_); }
-
- private:
-  const char* name_;
-  std::optional<std::string> old_;
-};
 
 TEST(SceneCache, DefaultFolder) {
   ScopedVariable home("HOME", "/home/someone"), xdg("XDG_CACHE_HOME", nullptr), own("CANDELA_CACHE_DIR", nullptr);

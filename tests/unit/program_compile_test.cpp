@@ -14,25 +14,12 @@
 #include "app/progress.h"
 #include "backends/optix/compile_progress_reporter.h"
 #include "backends/optix/program_cache_directory.h"
+#include "support/scoped_variable.h"
 
 namespace candela {
 namespace {
 
 using Stage = ProgramCompileProgress::Stage;
-
-// Sets an environment variable for the lifetime of the object.
-class ScopedVariable {
- public:
-  ScopedVariable(const char* name, const char* value) : name_(name) {
-    if (const char* old = std::getenv(name)) old_ = old;
-    value ? setenv(name, value, 1) : unsetenv(name);
-  }
-  ~ScopedVariable() { old_ ? setenv(name_, old_->c_str(), 1) : unsetenv(name_); }
-
- private:
-  const char* name_;
-  std::optional<std::string> old_;
-};
 
 TEST(ProgramCache, FolderFromTheEnvironment) {
   ScopedVariable home("HOME", "/home/someone"), xdg("XDG_CACHE_HOME", nullptr), own("CANDELA_OPTIX_CACHE", nullptr);
