@@ -33,7 +33,9 @@ std::mutex slotMutex;
 
 // The signals whose default action ends the process: each removes the temporaries first. Where a signal is
 // ignored (SIGHUP under nohup, SIGINT in a background job), it is left so: the process goes on and commits.
-constexpr std::array<int, 5> kEndingSignals = {SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGQUIT};
+// SIGXFSZ and SIGXCPU come from the file-size and CPU-time limits (ulimit -f, -t): a write past the first ends the
+// process in the middle of a temporary.
+constexpr std::array<int, 7> kEndingSignals = {SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGQUIT, SIGXFSZ, SIGXCPU};
 std::array<struct sigaction, kEndingSignals.size()> previousActions;
 
 void removeTemporariesAndResignal(int signal) {

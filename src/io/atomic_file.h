@@ -16,8 +16,8 @@ class WriteError : public std::runtime_error {
 // ("<name>.tmp-<random>", created exclusively, with the permissions a new file gets, or the target's when it
 // exists); commit() checks that every byte reached the disk (flush, fsync, close) and only then renames it over
 // the target. Until then the target is untouched, and a failure at any step removes the temporary: when the
-// object is destroyed uncommitted, and on SIGINT, SIGTERM, SIGHUP, SIGPIPE or SIGQUIT (the handlers are installed
-// on first use, for the signals not ignored, and then let the signal end the process as before).
+// object is destroyed uncommitted, and on SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGQUIT, SIGXFSZ or SIGXCPU (the handlers
+// are installed on first use, for the signals not ignored, and then let the signal end the process as before).
 //
 // A target that is a symbolic link is followed: the file it points to is replaced and the link kept. A target
 // that exists and is not a regular file (a device such as /dev/full, a pipe, a folder) is refused, since it
@@ -61,9 +61,9 @@ class AtomicFile {
 // before a long render.
 std::string checkAtomicTarget(const std::string& target);
 
-// Installs the SIGINT, SIGTERM, SIGHUP, SIGPIPE and SIGQUIT handlers that remove uncommitted temporaries, as the first
-// AtomicFile does. A caller that installs handlers of its own calls it first and hands the signal on to these (the
-// previous ones).
+// Installs the SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGQUIT, SIGXFSZ and SIGXCPU handlers that remove uncommitted
+// temporaries, as the first AtomicFile does. A caller that installs handlers of its own calls it first and hands the
+// signal on to these (the previous ones).
 void installTemporaryRemovalOnSignals();
 
 // Writes `size` bytes to `path` through an AtomicFile.

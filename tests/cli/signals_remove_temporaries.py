@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """signals_remove_temporaries.py <candela> <folder>
 
-A render is sent SIGHUP, SIGPIPE or SIGQUIT while it writes a large output: it ends by that signal and leaves
-neither the output nor a temporary file beside it. With SIGHUP ignored (as under nohup) the same signal changes
+A render is sent SIGHUP, SIGPIPE, SIGQUIT, SIGXFSZ or SIGXCPU while it writes a large output: it ends by that
+signal and leaves neither the output nor a temporary file beside it. With SIGHUP ignored (as under nohup) the same signal changes
 nothing: the render goes on and writes its output.
 """
 import os
@@ -22,7 +22,8 @@ def render_signalled(candela, folder, sig, ignored=False):
             "--height", "1024", "--aov", "albedo,normal,depth", "-o", os.path.join(folder, "big.exr")]
 
     def prepare():
-        resource.setrlimit(resource.RLIMIT_CORE, (0, 0))  # SIGQUIT's default action dumps core
+        # The default action of SIGQUIT, SIGXFSZ and SIGXCPU dumps core.
+        resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
         if ignored:
             signal.signal(sig, signal.SIG_IGN)
 
@@ -43,7 +44,7 @@ def main():
     candela, folder = sys.argv[1], os.path.join(sys.argv[2], "signals-remove-temporaries")
     os.makedirs(folder, exist_ok=True)
     failures = []
-    for sig in (signal.SIGHUP, signal.SIGPIPE, signal.SIGQUIT):
+    for sig in (signal.SIGHUP, signal.SIGPIPE, signal.SIGQUIT, signal.SIGXFSZ, signal.SIGXCPU):
         status, sent = render_signalled(candela, folder, sig)
         left = sorted(os.listdir(folder))
         print(f"{sig.name}: exit status {status}, files left {left}")
