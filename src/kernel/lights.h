@@ -59,10 +59,9 @@ CANDELA_FN float powerTablePmf(const SceneView& scene, const LightTriangle& ligh
 // becomes unstable.
 constexpr float kMinSphericalSampleSolidAngle = 3e-4f;
 constexpr float kMaxSphericalSampleSolidAngle = 6.22f;
-// Below this estimated solid angle a triangle is sampled by area, without the exact construction. Measured on the
-// H200: the construction for every light sample cost the Cornell box 10% of its frame time for 3% less variance,
-// while beside a large light (a panel over a floor) it lowers the variance by 40%; above 0.1 sr it keeps that gain and
-// costs the box 4% (docs/performance.md, 'Solid-angle sampling where it pays').
+// Below this estimated solid angle a triangle is sampled by area, without the exact construction: for small
+// triangles the construction costs more time than the variance it removes, beside large ones it pays (the
+// measurements are in docs/performance-log.md, 'Solid-angle sampling where it pays').
 constexpr float kSphericalSamplingWorthwhile = 0.1f;
 
 // Whether `light`, seen from p as a small patch at its centroid (area x |cos| / distance^2: cheap, and exact in the

@@ -8,7 +8,8 @@
 // One vertex: the radiance ray has been traced; shadeVertex adds the emission found, prepares the shadow ray of
 // next-event estimation and samples the BSDF; then, once the shadow ray is traced (or only queued), continuePath
 // turns the BSDF sample into the next radiance ray or ends the path. Both are inlined (CANDELA_FN): as calls,
-// their structures passed through the stack made the one-thread schedule's frames 22-24% longer on an H200.
+// their structures pass through the stack, which made the one-thread schedule's frames markedly longer
+// (docs/performance-log.md).
 #include "core/path_sampler.h"
 #include "kernel/aovs.h"
 #include "kernel/bsdf/bsdf.h"

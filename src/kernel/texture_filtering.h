@@ -105,8 +105,8 @@ CANDELA_FN Vec4 sampleTextureFiltered(const TexelArrays& arrays, int32_t index, 
                    : tex2DLod<float4>(object, uv.x, uv.y, trilinearLevel(t, longer));
     return {v.x, v.y, v.z, v.w};
   }
-  // Only textures without texels lack a texture object; keeping the host's filters below out of the device
-  // program is worth about 5% of a frame (registers and code around the trace calls), textured or not.
+  // Only textures without texels lack a texture object; the host's filters below stay out of the device program,
+  // whose registers and code around the trace calls they would otherwise cost every frame, textured or not.
   return sampleTexture(arrays, index, uv);
 #else
   if (t.width == 0 || t.height == 0) return {1, 1, 1, 1};
