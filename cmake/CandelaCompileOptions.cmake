@@ -63,3 +63,9 @@ if(CANDELA_FUZZERS)
                       $<$<COMPILE_LANGUAGE:CXX>:-fno-omit-frame-pointer>)
   add_link_options(-fsanitize=address,undefined)
 endif()
+
+# The libraries are linked into executables and into shared objects (the public library and its Python module)
+# from the same objects: position-independent code, with -fno-semantic-interposition so that calls inside a library
+# stay direct and inlinable as they are in an executable.
+set(CMAKE_POSITION_INDEPENDENT_CODE ON)
+add_compile_options($<$<COMPILE_LANGUAGE:CXX>:-fno-semantic-interposition>)
