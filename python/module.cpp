@@ -40,11 +40,8 @@ struct RenderProgress {
 // A path, a built-in name, a candela.Scene or a candela.LoadedScene, as a scene to render.
 api::Scene sceneOf(const py::object& scene) {
   if (py::isinstance<api::Scene>(scene)) return scene.cast<api::Scene>();
-  if (py::isinstance<api::SceneBuilder>(scene)) {
-    const api::SceneBuilder& builder = scene.cast<const api::SceneBuilder&>();
-    py::gil_scoped_release release;
-    return builder.build();
-  }
+  // Built with the GIL held: another thread must not add to the builder meanwhile.
+  if (py::isinstance<api::SceneBuilder>(scene)) return scene.cast<const api::SceneBuilder&>().build();
   if (!py::isinstance<py::str>(scene) && !py::hasattr(scene, "__fspath__"))
     throw py::type_error("scene: a path, a built-in scene's name, a candela.Scene or a candela.LoadedScene");
   const std::string spec = py::module_::import("os").attr("fspath")(scene).cast<std::string>();
@@ -82,8 +79,12 @@ api::RenderResult renderReleasingTheGil(const api::Scene& scene, const api::Rend
       if (PyErr_CheckSignals() != 0) throw py::error_already_set();
       if (callback.is_none()) return true;
       py::object state = py::cast(RenderProgress{p.samples, p.samplesPerPixel, p.seconds, &p});
+      // However the callback ends, the film is not read through `state` afterwards (a traceback may keep it).
+      struct Expiry {
+        RenderProgress& progress;
+        ~Expiry() { progress.live = nullptr; }
+      } expiry{state.cast<RenderProgress&>()};
       const py::object answer = callback(state);
-      state.cast<RenderProgress&>().live = nullptr;
       return answer.ptr() != Py_False;
     } catch (...) {
       failure = std::current_exception();

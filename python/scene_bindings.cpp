@@ -118,7 +118,7 @@ void bindScenes(py::module_& m) {
           },
           py::arg("eye"), py::arg("target"), py::kw_only(), py::arg("up") = Vec3{0.0f, 1.0f, 0.0f},
           py::arg("fov") = 40.0f, "Without one, the scene's bounds are framed. fov: vertical, in degrees.")
-      .def("build", &api::SceneBuilder::build, py::call_guard<py::gil_scoped_release>(),
+      .def("build", &api::SceneBuilder::build,
            "The scene as a LoadedScene, repaired as a loaded file is; the Scene can go on growing.");
 }
 

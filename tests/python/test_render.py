@@ -91,12 +91,14 @@ class RenderTest(unittest.TestCase):
         calls = []
 
         def fails(p):
-            calls.append(p.samples)
+            calls.append(p)
             raise ValueError("enough")
 
         with self.assertRaisesRegex(ValueError, "enough"):
             candela.render("cornell-box", callback=fails, **TINY)
-        self.assertEqual(calls, [1])
+        self.assertEqual([p.samples for p in calls], [1])
+        with self.assertRaisesRegex(candela.Error, "only during its callback"):
+            calls[0].image()  # the render is over: its film is gone
 
     def test_errors_are_candela_errors_with_the_commands_message(self):
         self.assertTrue(issubclass(candela.Error, RuntimeError))
