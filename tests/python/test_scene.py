@@ -43,13 +43,18 @@ class SceneTest(unittest.TestCase):
         self.assertGreater(sky.mean(), lit.mean())
 
     def test_a_transform_moves_the_mesh(self):
-        scene = lit_floor()
-        built = scene.build()
-        self.assertEqual(built.triangle_count, 4)
-        moved = np.eye(4, dtype=np.float32)
-        moved[1, 3] = -100.0  # far below, out of the camera's view
-        scene.add_mesh(square(4, 0), QUAD, material=0, transform=moved)
-        self.assertEqual(scene.build().triangle_count, 6)
+        # A second lamp where the first is doubles the light on the floor; moved far below the floor, it adds none.
+        def with_second_lamp(transform):
+            scene = lit_floor()
+            scene.add_mesh(square(1, 2), QUAD[:, ::-1], material=1, transform=transform)
+            self.assertEqual(scene.build().triangle_count, 6)
+            return candela.render(scene, width=32, height=24, spp=16, backend="cpu")
+
+        below = np.eye(4, dtype=np.float32)
+        below[1, 3] = -100.0
+        doubled, moved = with_second_lamp(np.eye(4)), with_second_lamp(below)
+        self.assertGreater(doubled.mean(), 1.6 * moved.mean())
+        self.assertGreater(moved.mean(), 0.0)
 
     def test_bad_arrays_are_named(self):
         scene = candela.Scene()
