@@ -20,6 +20,10 @@ packages=(
   clang-format-14
   # tests that run candela and watch it (peak memory of glTF loads, signals while writing)
   python3
+  # the Python module (python/) and its tests
+  python3-dev python3-numpy pybind11-dev
+  # cpack -G DEB: dpkg-shlibdeps finds the package's dependencies (and its test, api_debian_package)
+  dpkg-dev file
 )
 # The browser tests of candela serve: Node drives Chromium through playwright-core (tests/serve/
 # install-browser-test-deps.sh fetches it with npm into tests/serve/node_modules). Where the archive cannot
