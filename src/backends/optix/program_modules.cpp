@@ -74,10 +74,10 @@ bool ProgramModules::finished(const std::vector<ProgramModule>& modules) const {
 }
 
 std::vector<ProgramModule> ProgramModules::startedModules() const {
-  std::vector<ProgramModule> started;
+  std::vector<ProgramModule> begun;
   for (size_t m = 0; m < kProgramModuleCount; ++m)
-    if (modules_[m]) started.push_back(ProgramModule(m));
-  return started;
+    if (modules_[m]) begun.push_back(ProgramModule(m));
+  return begun;
 }
 
 CompileTaskCounts ProgramModules::tasks(const std::vector<ProgramModule>& modules) const {
