@@ -17,16 +17,17 @@ namespace {
 #if CANDELA_HAS_OPTIX
 // Where the devices were not named, a machine whose other GPUs cannot all be used (another process holds one in
 // exclusive mode, one is out of memory) renders on its first GPU, as it would with one.
-std::unique_ptr<Backend> makeGpuBackend(const DeviceRequest& devices, const ProgramCompileListener& compileProgress) {
+std::unique_ptr<Backend> makeGpuBackend(const DeviceRequest& devices, const ProgramCompileListener& compileProgress,
+                                        ProgramStart start) {
   const std::vector<int> indices = resolveDevices(devices, optix::gpuNames());
-  if (indices.size() == 1) return std::make_unique<OptixBackend>(indices[0], compileProgress);
+  if (indices.size() == 1) return std::make_unique<OptixBackend>(indices[0], compileProgress, start);
   if (devices.given) return std::make_unique<MultiGpuBackend>(indices, compileProgress);
   try {
     return std::make_unique<MultiGpuBackend>(indices, compileProgress);
   } catch (const std::runtime_error& e) {
     std::fprintf(stderr, "candela: warning: not every GPU can be used (%s): rendering on GPU %d alone\n", e.what(),
                  indices[0]);
-    return std::make_unique<OptixBackend>(indices[0], compileProgress);
+    return std::make_unique<OptixBackend>(indices[0], compileProgress, start);
   }
 }
 #endif
@@ -78,11 +79,12 @@ std::string availableBackends() { return "cpu"; }
 #endif
 
 std::unique_ptr<Backend> createBackend(const std::string& name, std::string& why, const DeviceRequest& devices,
-                                       [[maybe_unused]] const ProgramCompileListener& compileProgress) {
+                                       [[maybe_unused]] const ProgramCompileListener& compileProgress,
+                                       [[maybe_unused]] ProgramStart start) {
   if (devices.given && name == "cpu")
     throw std::invalid_argument("--devices chooses GPUs: it needs the optix backend, not cpu");
 #if CANDELA_HAS_OPTIX
-  return create(name, why, !devices.given, [&] { return makeGpuBackend(devices, compileProgress); });
+  return create(name, why, !devices.given, [&] { return makeGpuBackend(devices, compileProgress, start); });
 #else
   return create(name, why, !devices.given, [] { return std::unique_ptr<Backend>(); });
 #endif

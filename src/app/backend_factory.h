@@ -18,9 +18,12 @@ std::string availableBackends();
 // backend cannot run here, std::invalid_argument when `devices` names GPUs that are not there or was given
 // for the cpu backend; "auto" falls back to the CPU only when the devices were not named. A GPU backend's first
 // start on a machine compiles its programs for the GPU, which takes a while: `compileProgress` hears how it goes
-// (backends/optix/compile_progress.h), there and where a later launch waits for programs still compiling.
+// (backends/optix/compile_progress.h), there and where a later launch waits for programs still compiling. With
+// `start` InBackground the OptiX backend on one GPU returns before its first frame's programs are compiled
+// (Backend::startingCompile); on several GPUs it always waits for them.
 std::unique_ptr<Backend> createBackend(const std::string& name, std::string& why, const DeviceRequest& devices = {},
-                                       const ProgramCompileListener& compileProgress = compileProgressOnStderr());
+                                       const ProgramCompileListener& compileProgress = compileProgressOnStderr(),
+                                       ProgramStart start = ProgramStart::Wait);
 // The same on the one GPU `deviceIndex` modulo the GPUs it sees (the processes of a distributed render on one
 // node take one each).
 std::unique_ptr<Backend> createBackend(const std::string& name, std::string& why, int deviceIndex,

@@ -1,6 +1,7 @@
 #pragma once
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -31,6 +32,13 @@ struct FrameStats {
 struct RawTraceTiming {
   uint64_t raysPerFrame = 0;               // rays of the recorded sample, traced again by every timed launch
   std::vector<double> deviceMilliseconds;  // one per timed launch, from CUDA events
+};
+
+// How far a backend has got with compiling the programs its next frame needs (a GPU backend's first start on a
+// machine: backends/optix/compile_progress.h).
+struct ProgramCompileStatus {
+  uint32_t tasksDone = 0, tasksKnown = 0;  // the compile's tasks; more become known as it goes
+  double seconds = 0.0;                    // since it began
 };
 
 // A renderer of one scene: owns traversal structures, memory and launches; shading is the shared kernel code.
@@ -103,6 +111,9 @@ class Backend {
   }
   // The image in GPU memory, for consumers on the same GPU; null where the image lives on the host.
   virtual const DeviceImage* deviceImage() const { return nullptr; }
+  // While the programs the next frame needs are still compiling: how far that has got (render() would wait for
+  // it). Nothing where there is nothing to wait for, as for a backend that compiles nothing.
+  virtual std::optional<ProgramCompileStatus> startingCompile() const { return std::nullopt; }
   // Where a backend renders on several devices: how long the last read that found samples on the others took to
   // add them to the film it reads (milliseconds); 0 otherwise.
   virtual double lastCombineMilliseconds() const { return 0.0; }

@@ -5,8 +5,9 @@
 # of one sample per pixel, and prints bench's backend_start_seconds (CUDA and OptiX contexts, the programs of a
 # first frame compiled and linked into pipelines) and first_frame_seconds (scene upload, the schedule's probe,
 # the first launch), the process's wall time, and the compile's last line. A cold run also times `candela render
-# --denoise atrous` (wall time, its first frame launches the AOV path tracer, whose programs compile in the
-# background) in a cache of its own.
+# --denoise atrous` (wall time: its first frame launches the AOV path tracer, whose programs begin compiling when
+# the render enables AOVs, after the start's) in a cache of its own. Only the programs a run uses are compiled, so
+# a cold bench compiles neither ReSTIR's nor the AOV path tracer's.
 #
 # Cold is a fresh empty folder in CANDELA_OPTIX_CACHE, where the backend points OptiX's disk cache
 # (optixDeviceContextSetCacheLocation): OptiX then neither reads nor writes its default one (/var/tmp/OptixCache_$USER),

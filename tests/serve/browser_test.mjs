@@ -145,6 +145,11 @@ const tests = {
       assert.ok(h.width > 100 && h.height > 100, `the image follows the page's view: ${h.width} x ${h.height}`);
       assert.ok((await pixels(page)).mean > 10, 'the canvas shows the Cornell box, not black');
       assert.equal(await page.textContent('#backend'), 'cpu');
+      // Each frame names what rendered it; only a GPU backend whose programs still compile has `starting`.
+      assert.equal(h.backend, 'cpu');
+      assert.ok(h.device.length > 0, 'the frame names its device');
+      assert.equal(h.starting, null);
+      assert.ok(await page.isHidden('#starting'), 'no compile note without a compile');
       assert.equal(await page.textContent('#scene'), 'cornell-box');
       assert.match(await page.textContent('#role'), /in control/);
       assert.match(await page.textContent('#samples'), /\d+ per pixel/);

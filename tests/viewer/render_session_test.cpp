@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <optional>
+#include <stdexcept>
 #include <vector>
 
 #include "app/interactive/animation_clock.h"
@@ -21,6 +23,10 @@ struct BackendLog {
   std::vector<uint32_t> seeds;
   float intensity = 0.0f, rotation = 0.0f;
   std::vector<Material> materials;
+  int renders = 0;
+  Camera lastCamera;
+  RenderSettings lastSettings;
+  bool compiling = false;  // whether startingCompile() says the programs of a frame are still compiling
 };
 
 class RecordingBackend final : public Backend {
@@ -54,18 +60,26 @@ class RecordingBackend final : public Backend {
     log_.rotation = environment.rotationDegrees;
     restart();
   }
-  void setCamera(const Camera&) override {
+  void setCamera(const Camera& camera) override {
     ++log_.cameras;
+    log_.lastCamera = camera;
     restart();
   }
   void setSettings(const RenderSettings& s) override {
     ++log_.settings;
     log_.seeds.push_back(s.seed);
+    log_.lastSettings = s;
     restart();
   }
   FrameStats render(uint32_t spp) override {
+    if (log_.compiling) throw std::logic_error("a frame rendered while its programs compile");
+    ++log_.renders;
     log_.accumulated += spp;
     return {};
+  }
+  std::optional<ProgramCompileStatus> startingCompile() const override {
+    if (!log_.compiling) return std::nullopt;
+    return ProgramCompileStatus{12, 40, 8.1};
   }
   uint32_t accumulatedSamples() const override { return log_.accumulated; }
   void setNextSampleIndex(uint32_t) override {}
@@ -273,6 +287,72 @@ TEST_F(SessionTest, MaterialsTheBackendRefusesGoWithTheWholeScene) {
   EXPECT_EQ(log.materialEdits, 0);
   EXPECT_EQ(log.materials[0].type, MaterialType::Disney);
   EXPECT_EQ(session.restarts(), 2u);
+}
+
+// A GPU backend whose programs compile for the first `compilingFrames` frames, with a CPU backend meanwhile.
+struct MeanwhileTest : ::testing::Test {
+  BackendLog gpu, cpu;
+  RenderSession session{std::make_unique<RecordingBackend>(gpu), std::make_unique<RecordingBackend>(cpu)};
+  Camera camera = Camera::lookAt({0, 0, -1}, {0, 0, 0}, {0, 1, 0}, 40.0f, 1.0f);
+  RenderSettings settings;
+  static constexpr int compilingFrames = 3;
+
+  void SetUp() override {
+    gpu.compiling = true;
+    session.setScene(makeWhiteFurnace());
+    settings.width = 32;
+    settings.height = 24;
+    settings.maxDepth = 5;
+  }
+};
+
+TEST_F(MeanwhileTest, RendersMeanwhileThenHandsOverOnceWithTheSameViewAndAFreshFilm) {
+  for (int i = 0; i < compilingFrames; ++i) {
+    camera.position.x = 0.1f * float(i);  // the camera moves while the programs compile
+    session.renderFrame(camera, settings, 2, true);
+    EXPECT_EQ(session.backendChanges(), 0u);
+    EXPECT_EQ(meanwhileNote(session),
+              "GPU programs compiling, 12/40, 8.1 s: frames on the recording backend meanwhile");
+  }
+  EXPECT_EQ(cpu.renders, compilingFrames);
+  EXPECT_EQ(gpu.renders, 0);
+  session.renderFrame(camera, settings, 2, true);  // still compiling: the CPU's film accumulates
+  EXPECT_EQ(session.accumulatedSamples(), 4u);
+  const uint64_t restartsBefore = session.restarts();
+
+  gpu.compiling = false;
+  for (int i = 0; i < 3; ++i) session.renderFrame(camera, settings, 2, true);
+  EXPECT_EQ(session.backendChanges(), 1u);
+  EXPECT_EQ(gpu.renders, 3);
+  EXPECT_EQ(cpu.renders, compilingFrames + 1);
+  EXPECT_EQ(session.restarts(), restartsBefore + 1);  // the GPU's film starts at the handover
+  EXPECT_EQ(session.accumulatedSamples(), 6u);
+  EXPECT_TRUE(meanwhileNote(session).empty());
+  EXPECT_FALSE(session.startingCompile());
+  // The GPU backend had every change while it compiled: the scene, the settings and the last camera.
+  EXPECT_EQ(gpu.scenes, 1);
+  EXPECT_EQ(gpu.lastSettings.maxDepth, settings.maxDepth);
+  EXPECT_EQ(gpu.lastSettings.width, settings.width);
+  EXPECT_TRUE(sameCamera(gpu.lastCamera, camera));
+  EXPECT_TRUE(sameCamera(cpu.lastCamera, gpu.lastCamera));
+}
+
+TEST_F(MeanwhileTest, AovsTurnedOnMeanwhileReachTheGpuBackend) {
+  session.renderFrame(camera, settings, 1, true);
+  session.setAovsEnabled(true);
+  gpu.compiling = false;
+  session.renderFrame(camera, settings, 1, true);
+  EXPECT_EQ(session.backendChanges(), 1u);
+  EXPECT_TRUE(session.backend().aovsEnabled());
+}
+
+TEST_F(MeanwhileTest, ABackendReadyAtOnceRendersFromTheFirstFrame) {
+  gpu.compiling = false;
+  session.renderFrame(camera, settings, 1, true);
+  EXPECT_EQ(gpu.renders, 1);
+  EXPECT_EQ(cpu.renders, 0);
+  EXPECT_EQ(session.backendChanges(), 1u);
+  EXPECT_EQ(session.restarts(), 1u);
 }
 
 TEST(SceneSummary, CountsOverInstancesAndBoundsInWorldSpace) {

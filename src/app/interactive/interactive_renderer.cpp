@@ -14,19 +14,24 @@
 
 namespace candela {
 
-namespace {
-
-std::unique_ptr<Backend> makeBackend(const InteractiveOptions& options) {
+InteractiveRenderer::Backends InteractiveRenderer::makeBackends(const InteractiveOptions& options) {
+  Backends backends;
   std::string why;
-  std::unique_ptr<Backend> backend = createBackend(options.backend, why, options.devices);
+  backends.backend =
+      createBackend(options.backend, why, options.devices, compileProgressOnStderr(), ProgramStart::InBackground);
   std::fprintf(stderr, "%s\n", why.c_str());
-  return backend;
+  if (backends.backend->startingCompile()) {
+    backends.meanwhile = createBackend("cpu", why);
+    std::fprintf(stderr, "backend: cpu meanwhile, until the GPU programs have compiled\n");
+  }
+  return backends;
 }
 
-}  // namespace
+InteractiveRenderer::InteractiveRenderer(const InteractiveOptions& options, Backends backends)
+    : options_(options), session_(std::move(backends.backend), std::move(backends.meanwhile)) {}
 
 InteractiveRenderer::InteractiveRenderer(const InteractiveOptions& options)
-    : options_(options), session_(makeBackend(options)) {
+    : InteractiveRenderer(options, makeBackends(options)) {
   controls_.maxDepth = options.maxDepth;
   controls_.samplesPerFrame = options.samplesPerFrame;
   controls_.post = options.post;

@@ -27,7 +27,8 @@ class InteractiveRenderer {
  public:
   // Makes the backend (saying which on stderr) and shows options.sceneSpec with its environment, camera and
   // animation. Throws std::runtime_error with one sentence when the backend, the scene or the animation named
-  // cannot be had.
+  // cannot be had. An OptiX backend whose programs are still compiling for the GPU (a first start on the machine)
+  // comes with the CPU backend, which renders the frames until the compile has ended (RenderSession).
   explicit InteractiveRenderer(const InteractiveOptions& options);
 
   // Shows another scene: a built-in one or a file, with its own environment, first camera and first animation.
@@ -67,6 +68,12 @@ class InteractiveRenderer {
   static constexpr double kMaxFlyStep = 0.1;
 
  private:
+  struct Backends {
+    std::unique_ptr<Backend> backend, meanwhile;
+  };
+  static Backends makeBackends(const InteractiveOptions& options);
+  InteractiveRenderer(const InteractiveOptions& options, Backends backends);
+
   void showScene(Scene scene, const std::string& spec);
   void prepareDenoiser(FrontEnd& frontEnd);
 

@@ -1,5 +1,6 @@
 #include "app/interactive/render_session.h"
 
+#include <cstdio>
 #include <utility>
 
 namespace candela {
@@ -21,7 +22,25 @@ bool sameCamera(const Camera& a, const Camera& b) {
          a.orthographic == b.orthographic;
 }
 
-RenderSession::RenderSession(std::unique_ptr<Backend> backend) : backend_(std::move(backend)) {}
+RenderSession::RenderSession(std::unique_ptr<Backend> backend, std::unique_ptr<Backend> meanwhile)
+    : backend_(std::move(backend)), meanwhile_(std::move(meanwhile)) {}
+
+template <class Change>
+void RenderSession::toEach(const Change& change) {
+  change(*backend_);
+  if (meanwhile_) meanwhileArena_.execute([&] { change(*meanwhile_); });
+}
+
+std::optional<ProgramCompileStatus> RenderSession::startingCompile() const {
+  return meanwhile_ ? backend_->startingCompile() : std::nullopt;
+}
+
+bool RenderSession::handOverWhenReady() {
+  if (!meanwhile_ || backend_->startingCompile()) return false;
+  meanwhile_.reset();
+  ++backendChanges_;
+  return true;
+}
 
 void RenderSession::setScene(Scene scene) {
   scene_ = std::move(scene);
@@ -71,8 +90,8 @@ void RenderSession::applyMaterials() {
 }
 
 void RenderSession::setAovsEnabled(bool enabled) {
-  if (enabled == backend_->aovsEnabled()) return;
-  backend_->setAovsEnabled(enabled);
+  if (enabled == backend().aovsEnabled()) return;
+  toEach([&](Backend& b) { b.setAovsEnabled(enabled); });
   ++restarts_;
 }
 
@@ -81,32 +100,50 @@ FrameStats RenderSession::renderFrame(const Camera& camera, const RenderSettings
   RenderSettings wanted = settings;
   if (!accumulate) wanted.seed = settings.seed + uint32_t(frames_);
 
-  bool restart = !haveFrame_ || !accumulate;
-  if (!sceneChanged_ && materialsChanged_ && !backend_->setMaterials(scene_.materials)) sceneChanged_ = true;
-  if (!sceneChanged_ && environmentChanged_) backend_->setEnvironment(scene_.environment);
+  // The backend handed over to has every change already; its film is empty.
+  bool restart = handOverWhenReady() || !haveFrame_ || !accumulate;
+  if (!sceneChanged_ && materialsChanged_) {
+    bool taken = true;
+    toEach([&](Backend& b) { taken = b.setMaterials(scene_.materials) && taken; });
+    if (!taken) sceneChanged_ = true;
+  }
+  if (!sceneChanged_ && environmentChanged_) toEach([&](Backend& b) { b.setEnvironment(scene_.environment); });
   if (!sceneChanged_ && instancesChanged_) {
     if (!player_->deformedMeshes().empty())
-      backend_->setDeformedMeshes(scene_, player_->deformedMeshes());
+      toEach([&](Backend& b) { b.setDeformedMeshes(scene_, player_->deformedMeshes()); });
     else
-      backend_->setInstanceTransforms(scene_);
+      toEach([&](Backend& b) { b.setInstanceTransforms(scene_); });
   }
-  if (sceneChanged_) backend_->setScene(scene_);
+  if (sceneChanged_) toEach([&](Backend& b) { b.setScene(scene_); });
   if (sceneChanged_ || materialsChanged_ || environmentChanged_ || instancesChanged_) restart = true;
   sceneChanged_ = materialsChanged_ = environmentChanged_ = instancesChanged_ = false;
   if (!haveFrame_ || !sameSettings(wanted, applied_)) {
-    backend_->setSettings(wanted);
+    toEach([&](Backend& b) { b.setSettings(wanted); });
     applied_ = wanted;
     restart = true;
   }
   if (!haveFrame_ || !sameCamera(camera, camera_)) {
-    backend_->setCamera(camera);
+    toEach([&](Backend& b) { b.setCamera(camera); });
     camera_ = camera;
     restart = true;
   }
   haveFrame_ = true;
   if (restart) ++restarts_;
   ++frames_;
-  return backend_->render(samplesPerPixel);
+  if (!meanwhile_) return backend_->render(samplesPerPixel);
+  FrameStats stats;
+  meanwhileArena_.execute([&] { stats = meanwhile_->render(samplesPerPixel); });
+  return stats;
+}
+
+std::string meanwhileNote(const RenderSession& session) {
+  const std::optional<ProgramCompileStatus> compile = session.startingCompile();
+  if (!compile) return {};
+  char note[160];
+  std::snprintf(note, sizeof note, "GPU programs compiling, %u/%u, %.1f s: frames on the %s backend meanwhile",
+                unsigned(compile->tasksDone), unsigned(compile->tasksKnown), compile->seconds,
+                session.backend().name().c_str());
+  return note;
 }
 
 }  // namespace candela

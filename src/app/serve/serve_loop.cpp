@@ -17,6 +17,17 @@ using Json = nlohmann::json;
 
 Json vec(Vec3 v) { return Json::array({v.x, v.y, v.z}); }
 
+// The frame header's `starting`: how the GPU programs' compile goes while the frames render on the CPU meanwhile
+// (RenderSession); null otherwise.
+Json startingJson(const RenderSession& session) {
+  const std::optional<ProgramCompileStatus> compile = session.startingCompile();
+  if (!compile) return nullptr;
+  return {{"tasks_done", compile->tasksDone},
+          {"tasks_known", compile->tasksKnown},
+          {"seconds", compile->seconds},
+          {"note", meanwhileNote(session)}};
+}
+
 // A binary message: the header's length (4 bytes, little-endian), the JSON header, the payload.
 std::shared_ptr<const std::string> binaryMessage(const Json& header, const std::string& payload) {
   const std::string text = header.dump();
@@ -223,6 +234,10 @@ void ServeLoop::renderFrame(double now) {
       {"frame_ms", 1000.0 * outcome.seconds},
       {"bytes_per_second", quality_.bytesPerSecond()},
       {"clients", hub_.clientCount()},
+      // The backend that rendered the frame: the CPU's while the GPU programs compile (`starting`), then the GPU's.
+      {"backend", session.backend().name()},
+      {"device", session.backend().deviceName()},
+      {"starting", startingJson(session)},
       {"camera", {{"position", vec(renderer_.camera().position())}, {"forward", vec(renderer_.camera().forward())}}},
       {"applied", {{"max_depth", session.appliedSettings().maxDepth}, {"samples_per_frame", plan.samplesPerPixel}}},
       {"controls", controlsJson()},

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 #include <vector>
 
 #include "app/interactive/interactive_renderer.h"
@@ -42,6 +43,8 @@ class Viewer : private FrontEnd {
   void report(const std::string& message, bool isError) override;
 
   void sceneShown();
+  // The backend's name and device, and how its image reaches the screen: again after the session's handover.
+  void backendShown();
   void frame(double now, double seconds);
   void updateStatus(double seconds);
   void handle(const PanelRequests& requests);
@@ -53,7 +56,8 @@ class Viewer : private FrontEnd {
   ImGuiLayer imgui_;
   ImageDisplay display_;
   InteractiveRenderer renderer_;
-  ImageTransfer transfer_;
+  std::optional<ImageTransfer> transfer_;
+  uint64_t transferBackendChanges_ = 0;  // the session's backendChanges() that transfer_ was chosen for
   PanelStatus status_;
   FlyKeys flyKeys_;  // held, as the events taken from the input queue so far say
   FramePlan lastPlan_;
@@ -69,14 +73,10 @@ Viewer::Viewer(const ViewerOptions& options)
     : options_(options),
       window_(int(options.interactive.width) + kPanelWidth, int(options.interactive.height), "candela"),
       imgui_(window_.handle()),
-      renderer_(options.interactive),
-      transfer_(renderer_.session(), options.interop) {
+      renderer_(options.interactive) {
   std::fprintf(stderr, "window: %s\n", window_.glRenderer().c_str());
   sceneShown();
-  status_.backend = renderer_.session().backend().name();
-  status_.device = renderer_.session().backend().deviceName();
-  status_.imageTransfer = transfer_.description();
-  std::fprintf(stderr, "display: %s\n", status_.imageTransfer.c_str());
+  backendShown();
   glfwSetWindowSizeLimits(window_.handle(), kPanelWidth + int(kMinImageSide), int(kMinImageSide), GLFW_DONT_CARE,
                           GLFW_DONT_CARE);
   glfwGetCursorPos(window_.handle(), &pointerX_, &pointerY_);
@@ -190,6 +190,16 @@ void Viewer::sceneShown() {
   glfwSetWindowTitle(window_.handle(), ("candela - " + status_.sceneName).c_str());
 }
 
+void Viewer::backendShown() {
+  const RenderSession& session = renderer_.session();
+  transfer_.emplace(session, options_.interop);
+  transferBackendChanges_ = session.backendChanges();
+  status_.backend = session.backend().name();
+  status_.device = session.backend().deviceName();
+  status_.imageTransfer = transfer_->description();
+  std::fprintf(stderr, "display: %s\n", status_.imageTransfer.c_str());
+}
+
 void Viewer::report(const std::string& message, bool isError) {
   status_.message = message;
   status_.messageIsError = isError;
@@ -260,14 +270,16 @@ FlyKeys Viewer::takeInput() {
 // The denoised or filtered image is made on the host side of the backend, and the emission the bilateral pass
 // keeps apart is read from there; otherwise the image may stay on the device (interop).
 void Viewer::present(FrameImages& frame) {
+  if (frame.session().backendChanges() != transferBackendChanges_) backendShown();
   if (frame.needsHost())
     display_.upload(frame.image(), frame.emission());
   else
-    transfer_.transfer(frame.session(), display_);
+    transfer_->transfer(frame.session(), display_);
 }
 
 void Viewer::updateStatus(double seconds) {
   status_.accumulatedSamples = renderer_.session().accumulatedSamples();
+  status_.starting = meanwhileNote(renderer_.session());
   status_.imageWidth = lastPlan_.width;
   status_.imageHeight = lastPlan_.height;
   status_.preview = lastPlan_.preview;

@@ -27,6 +27,7 @@ void drawStatus(const PanelStatus& s) {
   ImGui::Text("Backend  %s", s.backend.c_str());
   ImGui::TextWrapped("Device   %s", s.device.c_str());
   ImGui::TextWrapped("Display  %s", s.imageTransfer.c_str());
+  if (!s.starting.empty()) ImGui::TextColored(kOkColour, "%s", s.starting.c_str());
   ImGui::Text("%.1f fps, %.2f ms/frame", s.framesPerSecond, s.msPerFrame);
   ImGui::Text("Samples  %u per pixel", s.accumulatedSamples);
   ImGui::Text("Image    %u x %u%s", s.imageWidth, s.imageHeight, s.preview ? "  (moving: preview)" : "");

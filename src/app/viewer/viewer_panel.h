@@ -13,6 +13,7 @@ struct PanelStatus {
   std::string backend;
   std::string device;
   std::string imageTransfer;  // how the image reaches the screen (ImageTransfer::description)
+  std::string starting;       // while the GPU programs compile and the CPU renders meanwhile (meanwhileNote)
   double framesPerSecond = 0.0;
   double msPerFrame = 0.0;
   uint32_t accumulatedSamples = 0;

@@ -27,6 +27,11 @@ struct ProgramCompileProgress {
 
 constexpr double kProgramCompileQuietSeconds = 0.5;
 
+// When a GPU backend's constructor returns: once the programs of a first frame are compiled (Wait: render and
+// bench, which time the GPU), or at once, compiling them in the background (InBackground: the interactive front
+// ends, which render on the CPU meanwhile; Backend::startingCompile says how the compile goes).
+enum class ProgramStart { Wait, InBackground };
+
 // Called on a thread of the backend's, one call at a time; it must not throw.
 using ProgramCompileListener = std::function<void(const ProgramCompileProgress&)>;
 

@@ -36,6 +36,7 @@ class ModuleCompilation {
   // The module, once compiled: waits for the compile, taking part in its tasks. Throws OptixError with OptiX's log
   // when it failed (optixModuleGetCompilationState).
   OptixModule module();
+  // The compile has ended (module() does not wait) once every task known is done.
   CompileTaskCounts tasks() const;
 
  private:

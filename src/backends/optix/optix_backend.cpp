@@ -34,6 +34,7 @@
 #include "backends/optix/pipeline.h"
 #include "backends/optix/pixel_counters.h"
 #include "backends/optix/program_modules.h"
+#include "backends/optix/program_use.h"
 #include "backends/optix/wavefront_schedule.h"
 #include "backends/path_schedule.h"
 #include "scene/flat_scene.h"
@@ -64,9 +65,7 @@ class CudaEvent {
 // compile traversal around each trace call, and does not document it, so this grouping is what the measurement
 // chose. The AOV path tracer gets a pipeline of its own, shaped
 // like the path tracer's (beside a copy of the record program), so that it leaves the path tracer's alone.
-// ReSTIR's launches have a pipeline of their own, made at their first launch.
-enum class PipelineKind { Megakernel, RawTrace, AovMegakernel, Wavefront, Restir };
-constexpr size_t kPipelineKinds = 5;
+// ReSTIR's launches have a pipeline of their own. Which of them a frame needs: program_use.h.
 
 const std::vector<RaygenProgram>& pipelinePrograms(PipelineKind kind) {
   static const std::array<std::vector<RaygenProgram>, kPipelineKinds> programs = {{
@@ -98,12 +97,6 @@ PipelineKind pipelineLaunching(RaygenProgram program) {
   throw std::logic_error("no pipeline launches the raygen program");
 }
 
-// The pipelines made while the backend starts: those of a first frame without AOVs, the megakernel (the auto
-// schedule's probe, and its choice for scenes whose paths end soon) and the wavefront (its choice for most
-// scenes). Their modules compile first; the AOV path tracer's and the raw trace's compile in the background
-// meanwhile, and their pipelines are made at their first launch.
-const std::vector<PipelineKind> kStartPipelines = {PipelineKind::Megakernel, PipelineKind::Wavefront};
-
 std::vector<RaygenProgram> programsOf(const std::vector<PipelineKind>& kinds) {
   std::vector<RaygenProgram> programs;
   for (PipelineKind kind : kinds)
@@ -128,13 +121,14 @@ struct LaunchResult {
 }  // namespace
 
 struct OptixBackend::State {
-  State(int deviceIndex, ProgramCompileListener listener)
-      : context(deviceIndex), compileListener(std::move(listener)) {}
+  State(int deviceIndex, ProgramCompileListener listener, ProgramStart programs)
+      : context(deviceIndex), compileListener(std::move(listener)), programStart(programs) {}
 
   OptixContext context;
   ProgramCompileListener compileListener;
-  // Compiling from here on, in the background.
-  ProgramModules modules{context.get(), modulesOf(programsOf(kStartPipelines))};
+  ProgramStart programStart;
+  // Each compiled once something needs it (startNeeded), in the background.
+  ProgramModules modules{context.get()};
   std::array<std::unique_ptr<Pipeline>, kPipelineKinds> pipelines;  // made when first needed (makePipelines)
   FlatScene flat;
   DeviceScene scene;
@@ -198,13 +192,32 @@ struct OptixBackend::State {
     });
   }
 
-  // Waits for the modules still compiling in the background, so that after a first start, however short, OptiX's
-  // disk cache holds every one.
+  // What the next frame renders, and so which pipelines it launches (program_use.h).
+  ProgramUse use() const {
+    return {schedule.decided() ? schedule.next() : PathSchedule::Auto, aovsEnabled, settings.restir != RestirMode::Off};
+  }
+  std::vector<ProgramModule> neededModules() const { return modulesOf(programsOf(pipelinesNeeded(use()))); }
+
+  // Begins compiling the modules the next frame needs, where they have not begun: called wherever what it renders
+  // may have changed, so that the compile runs while the caller sets up the rest (or renders on the CPU).
+  void startNeeded() {
+    for (ProgramModule module : neededModules()) modules.start(module, CompilePriority::Needed);
+  }
+
+  // An interactive session (ProgramStart::InBackground) also compiles, after its first frame on the GPU, the
+  // modules of what a control is likely to switch to, at low priority, so that the switch does not wait long.
+  void prefetchLikely() {
+    if (programStart != ProgramStart::InBackground) return;
+    for (ProgramModule module : modulesOf(programsOf(pipelinesLikely(use()))))
+      modules.start(module, CompilePriority::Prefetch);
+  }
+
+  // Waits for the compiles that have begun, which cannot be cancelled (OptiX destroys no module while its tasks
+  // run); a finished module is in OptiX's disk cache, so that the next start need not compile it.
   void finishCompiles() {
-    std::vector<ProgramModule> all;
-    for (size_t m = 0; m < kProgramModuleCount; ++m) all.push_back(ProgramModule(m));
-    whileCompiling(all, [&] {
-      for (ProgramModule module : all) modules.get(module);
+    const std::vector<ProgramModule> begun = modules.startedModules();
+    whileCompiling(begun, [&] {
+      for (ProgramModule module : begun) modules.get(module);
     });
   }
 
@@ -258,6 +271,7 @@ struct OptixBackend::State {
   // wavefront takes one sample per sequence of launches, and sets p.samplesPerPixel to 1.
   LaunchResult launchPaths(LaunchParameters& p, uint32_t rows) {
     if (!schedule.decided()) probeSchedule();
+    startNeeded();  // the schedule decided may need another pipeline than the probe's
     if (schedule.next() == PathSchedule::Wavefront) {
       try {
         wavefront.reserve(size_t(settings.width) * rows);
@@ -482,13 +496,13 @@ class OptixBackend::DeviceFilmDisplay final : public FilmDisplay {
   const OptixBackend& backend_;
 };
 
-OptixBackend::OptixBackend(int deviceIndex, ProgramCompileListener compileProgress)
-    : state_(std::make_unique<State>(deviceIndex, std::move(compileProgress))),
+OptixBackend::OptixBackend(int deviceIndex, ProgramCompileListener compileProgress, ProgramStart start)
+    : state_(std::make_unique<State>(deviceIndex, std::move(compileProgress), start)),
       filters_(std::make_unique<DeviceFilmFilters>(*this)),
       display_(std::make_unique<DeviceFilmDisplay>(*this)) {
   std::fprintf(stderr, "optix: %s\n", deviceDescription().c_str());
-  state_->makePipelines(kStartPipelines);
-  setSettings(RenderSettings{});
+  setSettings(RenderSettings{});  // begins compiling the modules of a first frame of these settings
+  if (start == ProgramStart::Wait) state_->makePipelines(pipelinesNeeded(state_->use()));
 }
 
 OptixBackend::~OptixBackend() {
@@ -564,6 +578,7 @@ void OptixBackend::setSettings(const RenderSettings& settings) {
     s.restir.reset(0, 0);
   }
   s.schedule.reset();
+  s.startNeeded();
   s.restart();
 }
 
@@ -592,6 +607,7 @@ FrameStats OptixBackend::renderRows(uint32_t samplesPerPixel, uint32_t firstRow,
       ++s.accumulated;
       ++s.nextSample;
     }
+    s.prefetchLikely();
     return stats;
   }
   for (uint32_t done = 0; done < samplesPerPixel;) {
@@ -607,10 +623,14 @@ FrameStats OptixBackend::renderRows(uint32_t samplesPerPixel, uint32_t firstRow,
     s.nextSample += p.samplesPerPixel;
     done += p.samplesPerPixel;
   }
+  s.prefetchLikely();
   return stats;
 }
 
-void OptixBackend::setPathSchedule(PathSchedule schedule) { state_->schedule.request(schedule); }
+void OptixBackend::setPathSchedule(PathSchedule schedule) {
+  state_->schedule.request(schedule);
+  state_->startNeeded();
+}
 
 void OptixBackend::setWavefrontTailPaths(uint32_t paths) { state_->wavefront.setTailPaths(paths); }
 
@@ -631,7 +651,16 @@ Image OptixBackend::readEmission() const { return state_->film.readEmission(); }
 void OptixBackend::setAovsEnabled(bool enabled) {
   state_->aovsEnabled = enabled;
   state_->allocateFilm();
+  state_->startNeeded();
   state_->restart();
+}
+
+std::optional<ProgramCompileStatus> OptixBackend::startingCompile() const {
+  const State& s = *state_;
+  const std::vector<ProgramModule> needed = s.neededModules();
+  if (s.modules.finished(needed)) return std::nullopt;
+  const CompileTaskCounts tasks = s.modules.tasks(needed);
+  return ProgramCompileStatus{tasks.done, tasks.known, s.modules.secondsCompiling(needed)};
 }
 
 bool OptixBackend::aovsEnabled() const { return state_->aovsEnabled; }

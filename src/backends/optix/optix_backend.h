@@ -1,6 +1,7 @@
 #pragma once
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "backends/backend.h"
@@ -17,11 +18,16 @@ class OptixBackend final : public Backend, public DeviceImage {
  public:
   // Prints the GPU, driver, OptiX ABI and RT-core version on stderr. Throws std::runtime_error with one
   // sentence when there is no usable GPU (no CUDA device, no or too old a driver, no libnvoptix). Takes CUDA
-  // device `deviceIndex` modulo the devices there are. Returns once the programs of a first frame without AOVs
-  // are compiled (backends/optix/program_modules.h); the others compile in the background, and a launch that
-  // needs them first waits for them, as the destructor does. `compileProgress` hears of these waits while they
-  // last longer than a moment: a first start on the machine, when OptiX's disk cache does not hold the programs.
-  explicit OptixBackend(int deviceIndex = 0, ProgramCompileListener compileProgress = {});
+  // device `deviceIndex` modulo the devices there are. Compiles only the programs of what it renders
+  // (backends/optix/program_use.h), from the moment it knows: those of a first frame of default settings at once,
+  // the AOV path tracer's once AOVs are enabled, ReSTIR's once settings choose it, the raw trace's at
+  // timeRawTrace. With ProgramStart::Wait it returns once the first frame's are compiled; with InBackground at
+  // once (startingCompile() says how the compile goes), and after its first frame also compiles, at low priority,
+  // the programs a control is likely to switch to. A launch waits for the programs it needs, and the destructor
+  // for every compile begun. `compileProgress` hears of these waits while they last longer than a moment: a first
+  // start on the machine, when OptiX's disk cache does not hold the programs.
+  explicit OptixBackend(int deviceIndex = 0, ProgramCompileListener compileProgress = {},
+                        ProgramStart start = ProgramStart::Wait);
   ~OptixBackend() override;
 
   std::string name() const override { return "optix"; }
@@ -56,6 +62,8 @@ class OptixBackend final : public Backend, public DeviceImage {
   Image readEmission() const override;
   void setAovsEnabled(bool enabled) override;
   bool aovsEnabled() const override;
+  // The compile of the programs the next frame needs, while it runs.
+  std::optional<ProgramCompileStatus> startingCompile() const override;
   AovImages readAovs() const override;
   // The CUDA versions of the CPU filters, run on the film in device memory; only the result comes back.
   // The CUDA version of the temporal filter, its history kept in device memory; only the result comes back.

@@ -1,5 +1,7 @@
 #include "backends/optix/program_modules.h"
 
+#include <optional>
+
 // The device programs as OptiX-IR, embedded at build time (CMakeLists.txt).
 extern const unsigned char candelaRayPrograms[], candelaMegakernelPrograms[], candelaAovMegakernelPrograms[],
     candelaWavefrontPrograms[], candelaRawTracePrograms[], candelaRestirPrograms[];
@@ -44,28 +46,56 @@ OptixPipelineCompileOptions pipelineCompileOptions() {
   return options;
 }
 
-ProgramModules::ProgramModules(OptixDeviceContext context, const std::vector<ProgramModule>& first) {
-  const OptixModuleCompileOptions moduleOptions = moduleCompileOptions();
-  const OptixPipelineCompileOptions pipelineOptions = pipelineCompileOptions();
-  auto start = [&](ProgramModule module, tbb::task_arena& arena) {
-    modules_[size_t(module)] =
-        std::make_unique<ModuleCompilation>(context, moduleOptions, pipelineOptions, moduleIr(module), arena);
-  };
-  for (ProgramModule module : first) start(module, first_);
-  for (size_t m = 0; m < kProgramModuleCount; ++m)
-    if (!modules_[m]) start(ProgramModule(m), rest_);
+ProgramModules::ProgramModules(OptixDeviceContext context) : context_(context) {}
+
+void ProgramModules::start(ProgramModule module, CompilePriority priority) {
+  std::unique_ptr<ModuleCompilation>& compilation = modules_[size_t(module)];
+  if (compilation) return;
+  startedAt_[size_t(module)] = Clock::now();
+  compilation =
+      std::make_unique<ModuleCompilation>(context_, moduleCompileOptions(), pipelineCompileOptions(), moduleIr(module),
+                                          priority == CompilePriority::Needed ? needed_ : prefetch_);
 }
 
-OptixModule ProgramModules::get(ProgramModule module) { return modules_[size_t(module)]->module(); }
+OptixModule ProgramModules::get(ProgramModule module) {
+  start(module, CompilePriority::Needed);
+  return modules_[size_t(module)]->module();
+}
+
+bool ProgramModules::started(ProgramModule module) const { return modules_[size_t(module)] != nullptr; }
+
+bool ProgramModules::finished(const std::vector<ProgramModule>& modules) const {
+  for (ProgramModule module : modules) {
+    if (!started(module)) return false;
+    const CompileTaskCounts counts = modules_[size_t(module)]->tasks();
+    if (counts.done != counts.known) return false;
+  }
+  return true;
+}
+
+std::vector<ProgramModule> ProgramModules::startedModules() const {
+  std::vector<ProgramModule> begun;
+  for (size_t m = 0; m < kProgramModuleCount; ++m)
+    if (modules_[m]) begun.push_back(ProgramModule(m));
+  return begun;
+}
 
 CompileTaskCounts ProgramModules::tasks(const std::vector<ProgramModule>& modules) const {
   CompileTaskCounts sum;
   for (ProgramModule module : modules) {
+    if (!started(module)) continue;
     const CompileTaskCounts counts = modules_[size_t(module)]->tasks();
     sum.done += counts.done;
     sum.known += counts.known;
   }
   return sum;
+}
+
+double ProgramModules::secondsCompiling(const std::vector<ProgramModule>& modules) const {
+  std::optional<Clock::time_point> first;
+  for (ProgramModule module : modules)
+    if (started(module) && (!first || startedAt_[size_t(module)] < *first)) first = startedAt_[size_t(module)];
+  return first ? std::chrono::duration<double>(Clock::now() - *first).count() : 0.0;
 }
 
 }  // namespace candela::optix

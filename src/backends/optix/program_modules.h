@@ -1,13 +1,14 @@
 #pragma once
 // The device programs' OptiX modules: each .cu file of device/ is compiled to OptiX-IR at build time, embedded in
-// the binary, and compiled for the GPU here, in the background from the start (ModuleCompilation). Each pipeline's
-// raygen programs are modules of their own (pipeline.h says which), so that the pipelines a first frame needs wait
-// only for theirs: those come first, in a task arena of their own; the others compile in a low-priority arena
-// meanwhile, and are waited for where first used.
+// the binary, and compiled for the GPU here, in the background, only once something asks for it (ModuleCompilation).
+// Each pipeline's raygen programs are modules of their own (pipeline.h says which), so that a frame waits only for
+// the modules of its pipelines, and a run compiles only the modules of what it renders: a first start on a
+// machine, whose OptiX disk cache is empty, need not compile ReSTIR's programs to show a frame without it.
 #include <optix_types.h>
 #include <tbb/task_arena.h>
 
 #include <array>
+#include <chrono>
 #include <memory>
 #include <vector>
 
@@ -16,6 +17,7 @@
 
 namespace candela::optix {
 
+// A new module is an entry here and its OptiX-IR's in program_modules.cpp (moduleIr).
 enum class ProgramModule {
   Rays,           // closest-hit, any-hit and miss programs, which every pipeline holds (device/ray_programs.cu)
   Megakernel,     // device/megakernel_programs.cu
@@ -24,24 +26,45 @@ enum class ProgramModule {
   RawTrace,       // device/raw_trace_programs.cu
   Restir,         // device/restir_programs.cu
 };
-constexpr size_t kProgramModuleCount = 6;
+constexpr size_t kProgramModuleCount = size_t(ProgramModule::Restir) + 1;
 
 // Options every module and every pipeline over them must be created with.
 OptixPipelineCompileOptions pipelineCompileOptions();
 
+// How a compile shares the processor's threads.
+enum class CompilePriority {
+  Needed,    // a frame waits for it
+  Prefetch,  // likely needed later: it takes only the threads the needed compiles leave
+};
+
 class ProgramModules {
  public:
-  // Starts compiling every module, those of `first` ahead of the others.
-  ProgramModules(OptixDeviceContext context, const std::vector<ProgramModule>& first);
+  // Compiles nothing yet.
+  explicit ProgramModules(OptixDeviceContext context);
 
-  // The compiled module: waits for its compile, taking part. Throws OptixError with OptiX's log when it failed.
+  // Begins compiling `module` in the background, unless it has begun. A begun compile keeps its priority: OptiX's
+  // tasks cannot move to another arena (nor be cancelled), though a thread that waits for them (get) takes part.
+  void start(ProgramModule module, CompilePriority priority);
+  // The compiled module: starts its compile where it has not begun, and waits for it, taking part. Throws
+  // OptixError with OptiX's log when it failed.
   OptixModule get(ProgramModule module);
-  // The tasks of the modules' compiles, summed.
+
+  bool started(ProgramModule module) const;
+  // Whether every one of `modules` has begun and ended (compiled or failed): get() then does not wait.
+  bool finished(const std::vector<ProgramModule>& modules) const;
+  std::vector<ProgramModule> startedModules() const;
+  // The tasks of the modules' compiles, summed (none for a module not begun).
   CompileTaskCounts tasks(const std::vector<ProgramModule>& modules) const;
+  // Since the first of the modules began compiling; 0 where none has.
+  double secondsCompiling(const std::vector<ProgramModule>& modules) const;
 
  private:
-  tbb::task_arena first_;
-  tbb::task_arena rest_{tbb::task_arena::automatic, 1, tbb::task_arena::priority::low};
+  using Clock = std::chrono::steady_clock;
+
+  OptixDeviceContext context_;
+  tbb::task_arena needed_;
+  tbb::task_arena prefetch_{tbb::task_arena::automatic, 1, tbb::task_arena::priority::low};
+  std::array<Clock::time_point, kProgramModuleCount> startedAt_{};
   std::array<std::unique_ptr<ModuleCompilation>, kProgramModuleCount> modules_;  // ended before the arenas
 };
 

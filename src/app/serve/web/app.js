@@ -190,6 +190,11 @@ function showStatus(h) {
     ? `H.264 up to ${(h.kilobits_per_second / 1000).toFixed(1)} Mbit/s, rate factor ${h.rate_factor.toFixed(0)}, ${link}`
     : `JPEG q${h.quality}, ${h.stripes} stripes, ${link}`;
   $('camera').textContent = `${vector(h.camera.position)} looking ${vector(h.camera.forward)}`;
+  // The CPU renders while the GPU programs compile (a first start on the machine); then the GPU takes over.
+  $('backend').textContent = h.backend;
+  $('device').textContent = h.device;
+  $('starting').textContent = h.starting ? h.starting.note : '';
+  $('starting').hidden = !h.starting;
   showControls(h.controls);
 }
 

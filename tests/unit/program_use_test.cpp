@@ -1,0 +1,54 @@
+// Which of the GPU backend's pipelines a frame needs and which it compiles ahead (backends/optix/program_use.h):
+// a first start compiles only these, so a wrong answer either stalls a frame or compiles what nothing runs.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "backends/optix/program_use.h"
+
+namespace candela::optix {
+namespace {
+
+using Kinds = std::vector<PipelineKind>;
+
+TEST(ProgramUse, AutoScheduleNeedsTheProbeAndItsLikelyChoice) {
+  EXPECT_EQ(pipelinesNeeded({}), (Kinds{PipelineKind::Megakernel, PipelineKind::Wavefront}));
+}
+
+TEST(ProgramUse, ADecidedScheduleNeedsItsPipelineOnly) {
+  EXPECT_EQ(pipelinesNeeded({PathSchedule::Megakernel, false, false}), Kinds{PipelineKind::Megakernel});
+  EXPECT_EQ(pipelinesNeeded({PathSchedule::Wavefront, false, false}), Kinds{PipelineKind::Wavefront});
+}
+
+TEST(ProgramUse, AovsNeedTheAovPathTracerWhateverTheSchedule) {
+  for (PathSchedule schedule : {PathSchedule::Auto, PathSchedule::Megakernel, PathSchedule::Wavefront})
+    EXPECT_EQ(pipelinesNeeded({schedule, true, false}), Kinds{PipelineKind::AovMegakernel});
+}
+
+TEST(ProgramUse, RestirNeedsItsOwnPipelineWithOrWithoutAovs) {
+  EXPECT_EQ(pipelinesNeeded({PathSchedule::Auto, false, true}), Kinds{PipelineKind::Restir});
+  EXPECT_EQ(pipelinesNeeded({PathSchedule::Megakernel, true, true}), Kinds{PipelineKind::Restir});
+}
+
+TEST(ProgramUse, NothingNeedsTheRawTrace) {
+  for (bool aovs : {false, true})
+    for (bool restir : {false, true})
+      for (PathSchedule schedule : {PathSchedule::Auto, PathSchedule::Megakernel, PathSchedule::Wavefront}) {
+        const ProgramUse use{schedule, aovs, restir};
+        for (const Kinds& kinds : {pipelinesNeeded(use), pipelinesLikely(use)})
+          for (PipelineKind kind : kinds) EXPECT_NE(kind, PipelineKind::RawTrace);
+      }
+}
+
+TEST(ProgramUse, ADenoiserIsLikelyAndSoIsSwitchingItOff) {
+  EXPECT_EQ(pipelinesLikely({PathSchedule::Wavefront, false, false}), Kinds{PipelineKind::AovMegakernel});
+  EXPECT_EQ(pipelinesLikely({PathSchedule::Wavefront, true, false}), Kinds{PipelineKind::Wavefront});
+}
+
+TEST(ProgramUse, RestirPrefetchesNothing) {
+  EXPECT_TRUE(pipelinesLikely({PathSchedule::Auto, false, true}).empty());
+  EXPECT_TRUE(pipelinesLikely({PathSchedule::Auto, true, true}).empty());
+}
+
+}  // namespace
+}  // namespace candela::optix
