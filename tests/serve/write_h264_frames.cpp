@@ -39,7 +39,8 @@ int main(int argc, char** argv) {
   const uint32_t width = uint32_t(std::atoi(argv[2])), height = uint32_t(std::atoi(argv[3]));
   const uint32_t frames = uint32_t(std::atoi(argv[4]));
   candela::H264Encoder encoder;
-  const candela::H264Settings settings = candela::StreamQuality().videoSettings(/*moving=*/false);
+  const candela::H264Settings settings =
+      candela::StreamQuality().videoSettings(/*moving=*/false, /*framesPerSecond=*/60.0);
   for (uint32_t i = 0; i < frames; ++i) {
     const std::vector<uint8_t> rgb = pattern(width, height, i);
     const candela::H264Frame frame = encoder.encode(rgb.data(), width, height, settings, false);

@@ -172,13 +172,13 @@ void ServeLoop::act(uint64_t client, ActionMessage::Kind kind) {
   }
 }
 
-// A slow connection shrinks the preview further (stream_quality.h).
+// A slow connection shrinks the preview further (stream_quality.h); the video's rate holds at the frame rate sent.
 void ServeLoop::adjustPlan(FramePlan& plan) {
   const uint32_t divisor = quality_.resolutionDivisor(plan.preview);
   plan.width = std::max(plan.width / divisor, kMinViewSide);
   plan.height = std::max(plan.height / divisor, kMinViewSide);
   jpegQuality_ = quality_.jpegQuality(plan.preview);
-  videoSettings_ = quality_.videoSettings(plan.preview);
+  videoSettings_ = quality_.videoSettings(plan.preview, msPerFrame_ > 0.0 ? 1000.0 / msPerFrame_ : 0.0);
 }
 
 void ServeLoop::present(FrameImages& frame) {
