@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "app/denoising/denoiser_choice.h"
 #include "app/interactive/viewer_files.h"
 
 namespace candela {
@@ -40,7 +41,7 @@ void ServeLoop::greet(uint64_t client) {
   for (const OverrideParameter& p : overrideParameters())
     overrides.push_back({{"name", p.name}, {"min", p.min}, {"max", p.max}});
   Json denoisers = Json::array({"none", "atrous"});
-  if (ViewerDenoiser::optixInThisBuild()) denoisers.push_back("optix");
+  if (inThisBuild(DenoiserChoice::Optix)) denoisers.push_back("optix");
   // The page's animation controls: one entry per clip, none where nothing is animated.
   Json animations = Json::array();
   if (const SceneAnimation& animation = session.scene().animation; !animation.empty())
