@@ -80,7 +80,7 @@ Json ServeLoop::controlsJson() const {
       {"accumulate", controls.accumulate},
       {"env_intensity", controls.environmentScale},
       {"env_rotation", controls.environmentRotation},
-      {"shading", shadingName(controls.materials.shading)},
+      {"shading", shadingModelName(controls.materials.shading)},
       {"overrides", overrides},
       {"exposure", controls.post.display.exposure},
       {"tonemap", toneMapperName(controls.post.display.toneMapper)},
