@@ -93,9 +93,10 @@ struct H264Encoder::State {
     const uint64_t measured = std::max(1u, s.framesPerSecond);
     param.rc.i_rc_method = X264_RC_CRF;
     param.rc.f_rf_constant = s.rateFactor;
-    param.rc.i_vbv_max_bitrate = int(std::max<uint64_t>(1, s.maxKilobitsPerSecond * param.i_fps_num / measured));
+    param.rc.i_vbv_max_bitrate =
+        int(std::max<uint64_t>(1, uint64_t(s.maxKilobitsPerSecond) * param.i_fps_num / measured));
     // A buffer of two frames at the rate: no frame much larger than its share, which would arrive late.
-    param.rc.i_vbv_buffer_size = int(std::max<uint64_t>(1, 2 * s.maxKilobitsPerSecond / measured));
+    param.rc.i_vbv_buffer_size = int(std::max<uint64_t>(1, 2 * uint64_t(s.maxKilobitsPerSecond) / measured));
     settings = s;
   }
 
