@@ -133,7 +133,7 @@ int main(int argc, char** argv) {
       // mean size as a rate at 60 frames a second.
       for (bool moving : {false, true}) {
         H264Encoder video;
-        const H264Settings videoSettings = StreamQuality().videoSettings(moving);
+        const H264Settings videoSettings = StreamQuality().videoSettings(moving, 60.0);
         std::vector<double> milliseconds;
         double bytes = 0.0;
         const int frames = repeats + 3;

@@ -19,9 +19,9 @@
 #include "app/camera_path_render.h"
 #include "app/checkpoint/duration.h"
 #include "app/checkpoint/stop_signals.h"
+#include "app/denoising/denoiser_choice.h"
 #include "app/distributed/mpi_launch.h"
 #include "app/interactive/interactive_cli.h"
-#include "app/interactive/viewer_denoiser.h"
 #include "app/render_job.h"
 #include "app/scene_loading.h"
 #include "app/serve/serve.h"
@@ -577,10 +577,7 @@ void addInteractiveCommandOptions(CLI::App& cmd, InteractiveOptions& options) {
 // Fails early, before the window opens or the port is bound, on what the shared options cannot do.
 void checkInteractiveOptions(const InteractiveOptions& options) {
   if (!options.screenshot.empty()) checkOutputPath(options.screenshot);
-  if (options.post.denoiser == DenoiserChoice::Optix && !ViewerDenoiser::optixInThisBuild())
-    throw std::runtime_error(
-        "--denoise optix needs the OptiX backend, which is not in this build (see README, "
-        "'GPU backend')");
+  if (!inThisBuild(options.post.denoiser)) throw std::runtime_error(notInThisBuild(options.post.denoiser));
 }
 
 void addViewOptions(CLI::App& cmd, ViewerOptions& options) {

@@ -52,6 +52,13 @@ constexpr std::array<MaterialModelNames, kShadingChoiceCount> kShadingChoices = 
   return choices;
 }();
 
+// ShadingModel's names in its order.
+constexpr std::array<const char*, kShadingChoiceCount + 1> kShadingModelNames = [] {
+  std::array<const char*, kShadingChoiceCount + 1> names{"own"};
+  for (size_t i = 0; i < kShadingChoiceCount; ++i) names[i + 1] = kShadingChoices[i].shadingName;
+  return names;
+}();
+
 MaterialType modelType(ShadingModel model) {
   if (model == ShadingModel::Own) throw std::logic_error("no material type for the material's own model");
   return kShadingChoices[size_t(model) - 1].type;
@@ -70,6 +77,10 @@ std::string shadingNameList() {
 }  // namespace
 
 std::span<const OverrideParameter> overrideParameters() { return kParameters; }
+
+std::span<const char* const> shadingModelNames() { return kShadingModelNames; }
+
+const char* shadingModelName(ShadingModel model) { return kShadingModelNames[size_t(model)]; }
 
 void setOverride(MaterialOverrides& overrides, const std::string& name, float value) {
   for (const OverrideParameter& p : kParameters) {

@@ -36,6 +36,9 @@ void setOverride(MaterialOverrides& overrides, const std::string& name, float va
 void parseOverride(MaterialOverrides& overrides, const std::string& assignment);
 // "phong", "pbr" or "disney"; throws std::invalid_argument otherwise.
 ShadingModel parseShadingModel(const std::string& name);
+// The name of each ShadingModel, in its order: "own", then those parseShadingModel takes.
+std::span<const char* const> shadingModelNames();
+const char* shadingModelName(ShadingModel model);
 
 // The material as rendered under `overrides`. Mirrors and smooth glass keep their model and parameters: they
 // have no lobes to switch. Switching to Blinn-Phong derives kd = (1 - metallic) baseColor, ks = lerp(metallic,

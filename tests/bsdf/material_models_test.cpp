@@ -61,6 +61,7 @@ TEST(MaterialModels, EveryShadingNameSelectsItsModel) {
     MaterialOverrides overrides;
     overrides.shading = parseShadingModel(model.shadingName);
     EXPECT_NE(overrides.shading, ShadingModel::Own);
+    EXPECT_STREQ(shadingModelName(overrides.shading), model.shadingName) << "the name the page and checkpoints use";
     Material m;
     m.type = MaterialType::Pbr;
     EXPECT_EQ(applyOverrides(m, overrides).type, model.type) << model.shadingName;
@@ -69,6 +70,8 @@ TEST(MaterialModels, EveryShadingNameSelectsItsModel) {
   EXPECT_EQ(parseShadingModel("phong"), ShadingModel::BlinnPhong);
   EXPECT_EQ(parseShadingModel("pbr"), ShadingModel::Pbr);
   EXPECT_EQ(parseShadingModel("disney"), ShadingModel::Disney);
+  EXPECT_STREQ(shadingModelName(ShadingModel::Own), "own");
+  EXPECT_EQ(shadingModelNames().size(), size_t(ShadingModel::Disney) + 1);
   try {
     parseShadingModel("glass");
     ADD_FAILURE() << "glass is not a shading choice";

@@ -43,23 +43,59 @@ TEST(H264Encoder, KeyFramesWhereDueAndAnnexBAccessUnits) {
   EXPECT_THROW(encode(1, 38, 0, false), std::invalid_argument);
 }
 
+// Frames of noise, new every frame, which take all the rate the encoder allows.
+class NoiseFrames {
+ public:
+  const std::vector<uint8_t>& next() {
+    for (uint8_t& b : rgb_) b = uint8_t((state_ = state_ * 1664525u + 1013904223u) >> 24);
+    return rgb_;
+  }
+  static constexpr uint32_t kWidth = 320, kHeight = 240;
+
+ private:
+  std::vector<uint8_t> rgb_ = std::vector<uint8_t>(size_t(kWidth) * kHeight * 3);
+  uint32_t state_ = 1;
+};
+
+// The stream's rate in the second after `settings.framesPerSecond` frames encoded with `settings`, following
+// `opening` frames encoded with `openedAt` (which open the stream).
+double kilobitsPerSecond(const H264Settings& openedAt, uint32_t opening, const H264Settings& settings) {
+  H264Encoder encoder(2);
+  NoiseFrames noise;
+  for (uint32_t frame = 0; frame < opening; ++frame)
+    encoder.encode(noise.next().data(), NoiseFrames::kWidth, NoiseFrames::kHeight, openedAt, false);
+  size_t bytes = 0;
+  for (uint32_t frame = 0; frame < 2 * settings.framesPerSecond; ++frame) {
+    const H264Frame encoded =
+        encoder.encode(noise.next().data(), NoiseFrames::kWidth, NoiseFrames::kHeight, settings, false);
+    if (frame >= settings.framesPerSecond) bytes += encoded.bytes.size();
+  }
+  return double(bytes) * 8.0 / 1000.0;
+}
+
 // The rate control keeps a noisy picture's frames near the rate it is given.
 TEST(H264Encoder, TheRateStaysNearItsLimit) {
-  H264Encoder encoder(2);
   H264Settings settings;
   settings.maxKilobitsPerSecond = 2000;
   settings.framesPerSecond = 30;
-  std::vector<uint8_t> rgb(size_t(320) * 240 * 3);
-  uint32_t state = 1;
-  size_t bytes = 0;
-  for (int frame = 0; frame < 60; ++frame) {
-    for (uint8_t& b : rgb) b = uint8_t((state = state * 1664525u + 1013904223u) >> 24);
-    const H264Frame encoded = encoder.encode(rgb.data(), 320, 240, settings, false);
-    if (frame >= 30) bytes += encoded.bytes.size();
+  const double rate = kilobitsPerSecond(settings, 0, settings);
+  EXPECT_LT(rate, 1.5 * settings.maxKilobitsPerSecond);
+  EXPECT_GT(rate, 0.3 * settings.maxKilobitsPerSecond) << "noise takes what the rate allows";
+}
+
+// A stream opened at 60 frames a second whose frames then come at 150 (or 20) keeps to the rate: x264 cannot
+// change the frame rate it was opened with, so the limits follow the measured one.
+TEST(H264Encoder, TheRateHoldsAtTheMeasuredFrameRate) {
+  H264Settings opened;
+  opened.maxKilobitsPerSecond = 2000;
+  opened.framesPerSecond = 60;
+  for (const uint32_t framesPerSecond : {150u, 20u}) {
+    H264Settings measured = opened;
+    measured.framesPerSecond = framesPerSecond;
+    const double rate = kilobitsPerSecond(opened, 10, measured);
+    EXPECT_LT(rate, 1.1 * opened.maxKilobitsPerSecond) << framesPerSecond << " frames a second";
+    EXPECT_GT(rate, 0.5 * opened.maxKilobitsPerSecond) << framesPerSecond << " frames a second";
   }
-  const double kilobitsPerSecond = double(bytes) * 8.0 / 1000.0;  // 30 frames: one second
-  EXPECT_LT(kilobitsPerSecond, 1.5 * settings.maxKilobitsPerSecond);
-  EXPECT_GT(kilobitsPerSecond, 0.3 * settings.maxKilobitsPerSecond) << "noise takes what the rate allows";
 }
 
 }  // namespace

@@ -26,5 +26,14 @@ TEST(StreamQuality, DeliveriesAtRestLeaveTheMovingSettingsAlone) {
   EXPECT_EQ(q.jpegQuality(true), start);
 }
 
+TEST(StreamQuality, TheVideoTakesTheMeasuredFrameRateRoundedUpToAStep) {
+  const StreamQuality q;
+  EXPECT_EQ(q.videoSettings(false, 0.0).framesPerSecond, H264Settings().framesPerSecond) << "not measured yet";
+  EXPECT_EQ(q.videoSettings(false, 113.2).framesPerSecond, 115u);
+  EXPECT_EQ(q.videoSettings(true, 115.0).framesPerSecond, 115u);
+  EXPECT_EQ(q.videoSettings(true, 0.2).framesPerSecond, StreamQuality::kFrameRateStep);
+  EXPECT_EQ(q.videoSettings(false, 1e9).framesPerSecond, StreamQuality::kMaxFrameRate);
+}
+
 }  // namespace
 }  // namespace candela

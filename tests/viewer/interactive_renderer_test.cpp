@@ -107,7 +107,7 @@ TEST(InteractiveRenderer, TheBilateralFilterKeepsTheEmissionApart) {
 }
 
 TEST(InteractiveRenderer, AnOptixDenoiserThisBuildLacksIsReportedAndTurnedOff) {
-  if (ViewerDenoiser::optixInThisBuild()) GTEST_SKIP() << "this build has the OptiX AI denoiser";
+  if (inThisBuild(DenoiserChoice::Optix)) GTEST_SKIP() << "this build has the OptiX AI denoiser";
   InteractiveOptions options = cpuOptions("cornell-box");
   options.post.denoiser = DenoiserChoice::Optix;
   InteractiveRenderer renderer(options);

@@ -79,7 +79,7 @@ TEST_F(ViewerDenoiserTest, TheOptixDenoiserIsUsedOnlyOncePrepared) {
 }
 
 TEST_F(ViewerDenoiserTest, WithoutOptixInTheBuildItSaysSo) {
-  if (ViewerDenoiser::optixInThisBuild()) GTEST_SKIP() << "this build has the OptiX AI denoiser";
+  if (inThisBuild(DenoiserChoice::Optix)) GTEST_SKIP() << "this build has the OptiX AI denoiser";
   try {
     denoiser.prepareOptix();
     FAIL() << "a build without OptiX prepared the OptiX AI denoiser";
@@ -91,7 +91,7 @@ TEST_F(ViewerDenoiserTest, WithoutOptixInTheBuildItSaysSo) {
 }
 
 TEST_F(ViewerDenoiserTest, TheOptixDenoiserRunsOrSaysWhyNotInOneSentence) {
-  if (!ViewerDenoiser::optixInThisBuild()) GTEST_SKIP() << "no OptiX in this build";
+  if (!inThisBuild(DenoiserChoice::Optix)) GTEST_SKIP() << "no OptiX in this build";
   try {
     denoiser.prepareOptix();
   } catch (const std::runtime_error& e) {

@@ -10,6 +10,8 @@
 #include <tuple>
 #include <vector>
 
+#include "scene/material_overrides.h"
+
 namespace candela {
 
 namespace {
@@ -23,18 +25,8 @@ std::string fileIdentity(const std::string& spec) {
   return ec ? spec : absolute.string();
 }
 
-std::string shadingName(ShadingModel model) {
-  switch (model) {
-    case ShadingModel::BlinnPhong: return "phong";
-    case ShadingModel::Pbr: return "pbr";
-    case ShadingModel::Disney: return "disney";
-    case ShadingModel::Own: break;
-  }
-  return "own";
-}
-
 std::string overridesText(const MaterialOverrides& overrides) {
-  std::string text = "shading=" + shadingName(overrides.shading);
+  std::string text = std::string("shading=") + shadingModelName(overrides.shading);
   for (const OverrideParameter& p : overrideParameters())
     if (const std::optional<float>& value = overrides.*p.field) {
       char number[32];

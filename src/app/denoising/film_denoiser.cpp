@@ -3,18 +3,13 @@
 #include <cstdio>
 #include <stdexcept>
 
-#if CANDELA_HAS_OPTIX
-#include "backends/optix/optix_denoiser.h"
-#endif
-
 namespace candela {
 
 FilmDenoiser::FilmDenoiser(DenoiserChoice choice, const DenoiserParams& params) : choice_(choice), params_(params) {
   if (!inThisBuild(choice)) throw std::runtime_error(notInThisBuild(choice));
 }
 
-Image FilmDenoiser::apply(const Backend& backend, const Camera& camera, bool filmContinues,
-                          [[maybe_unused]] const AovImages* aovs) {
+Image FilmDenoiser::apply(const Backend& backend, const Camera& camera, bool filmContinues, const AovImages* aovs) {
   switch (choice_) {
     case DenoiserChoice::None: return backend.readImage();
     case DenoiserChoice::Atrous: return backend.filters().atrous(params_.atrous);
@@ -29,21 +24,14 @@ Image FilmDenoiser::apply(const Backend& backend, const Camera& camera, bool fil
   }
   const Image image = backend.readImage();
   if (optixFailed_) return image;
-#if CANDELA_HAS_OPTIX
   try {
-    if (!optix_) {
-      auto denoiser = std::make_shared<OptixImageDenoiser>(DenoiserGuideKinds{true, true});
-      optix_ = [denoiser](const Image& beauty, const AovImages& guides) {
-        return denoiser->denoise(beauty, {&guides.albedo, &guides.normal});
-      };
-    }
+    if (!optix_) optix_ = makeOptixAiDenoiser();
     if (aovs) return optix_(image, *aovs);
     return optix_(image, backend.readAovs());
   } catch (const std::runtime_error& e) {
     std::fprintf(stderr, "candela: %s; the image is kept without denoising\n", e.what());
     optixFailed_ = true;
   }
-#endif
   return image;
 }
 

@@ -1,8 +1,8 @@
 #pragma once
-#include <functional>
 #include <memory>
 
 #include "app/denoising/denoiser_choice.h"
+#include "app/denoising/optix_ai_denoiser.h"
 #include "backends/backend.h"
 #include "backends/film_filters.h"
 
@@ -37,7 +37,7 @@ class FilmDenoiser {
   DenoiserParams params_;
   std::unique_ptr<TemporalDenoiser> temporal_;
   const Backend* temporalBackend_ = nullptr;  // the one temporal_ filters
-  std::function<Image(const Image&, const AovImages&)> optix_;
+  OptixAiDenoise optix_;
   bool optixFailed_ = false;
 };
 

@@ -1,34 +1,11 @@
 #include "app/interactive/viewer_denoiser.h"
 
-#include <memory>
 #include <stdexcept>
-
-#if CANDELA_HAS_OPTIX
-#include "backends/optix/optix_denoiser.h"
-#endif
 
 namespace candela {
 
-bool ViewerDenoiser::optixInThisBuild() {
-#if CANDELA_HAS_OPTIX
-  return true;
-#else
-  return false;
-#endif
-}
-
 void ViewerDenoiser::prepareOptix() {
-  if (optix_) return;
-#if CANDELA_HAS_OPTIX
-  auto denoiser = std::make_shared<OptixImageDenoiser>(DenoiserGuideKinds{true, true});
-  optix_ = [denoiser](const Image& beauty, const AovImages& aovs) {
-    return denoiser->denoise(beauty, {&aovs.albedo, &aovs.normal});
-  };
-#else
-  throw std::runtime_error(
-      "the OptiX AI denoiser comes with the OptiX backend, which is not in this build (see "
-      "README, 'GPU backend')");
-#endif
+  if (!optix_) optix_ = makeOptixAiDenoiser();
 }
 
 std::string ViewerDenoiser::prepareOrTurnOff(DenoiserChoice& choice) {

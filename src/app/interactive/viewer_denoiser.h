@@ -1,8 +1,8 @@
 #pragma once
-#include <functional>
 #include <memory>
 #include <string>
 
+#include "app/denoising/optix_ai_denoiser.h"
 #include "app/interactive/post_settings.h"
 #include "app/interactive/render_session.h"
 #include "backends/film_display.h"
@@ -14,9 +14,6 @@ namespace candela {
 // asked for and kept for the frames after, so that its model and memory are not made again every frame.
 class ViewerDenoiser {
  public:
-  // Whether this build has the OptiX AI denoiser (it comes with the OptiX backend).
-  static bool optixInThisBuild();
-
   // Makes the OptiX AI denoiser unless it is made already. Throws std::runtime_error with one sentence where it
   // cannot run: not in this build, no usable GPU, or no denoiser weights in the driver (OptiX error 7990).
   void prepareOptix();
@@ -41,7 +38,7 @@ class ViewerDenoiser {
   bool temporalActive() const { return temporalActive_; }
 
  private:
-  std::function<Image(const Image&, const AovImages&)> optix_;
+  OptixAiDenoise optix_;
   std::unique_ptr<TemporalDenoiser> temporal_;
   const Backend* temporalBackend_ = nullptr;  // the one temporal_ reads
   bool haveFrame_ = false, temporalActive_ = false;

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <iterator>
+#include <span>
 #include <string_view>
 
 #include "io/load_diagnostics.h"
@@ -59,12 +60,11 @@ struct Reader {
     return true;
   }
   // One of `names`, as its index.
-  template <size_t N>
-  bool choice(const char* field, const char* const (&names)[N], std::optional<int>& out) {
+  bool choice(const char* field, std::span<const char* const> names, std::optional<int>& out) {
     if (!json.contains(field)) return true;
     if (!json[field].is_string()) return fail(field, "is not a string");
     const std::string value = json[field].get<std::string>();
-    for (size_t i = 0; i < N; ++i)
+    for (size_t i = 0; i < names.size(); ++i)
       if (value == names[i]) {
         out = int(i);
         return true;
@@ -73,7 +73,6 @@ struct Reader {
   }
 };
 
-constexpr const char* kShadingNames[] = {"own", "phong", "pbr", "disney"};
 constexpr const char* kToneMapperNames[] = {"aces", "clamp", "reinhard"};  // ToneMapper's order
 constexpr const char* kDenoiserNames[] = {"none", "atrous", "optix"};      // kViewerDenoiserChoices' order
 static_assert(std::size(kDenoiserNames) == std::size(kViewerDenoiserChoices));
@@ -138,7 +137,7 @@ std::optional<ClientMessage> settings(Reader& r) {
       !r.integer("samples_per_frame", 1, kMaxSamplesPerFrame, m.samplesPerFrame) ||
       !r.boolean("accumulate", m.accumulate) || !r.floating("env_intensity", 0.0, 16.0, m.environmentScale) ||
       !r.floating("env_rotation", -180.0, 180.0, m.environmentRotation) ||
-      !r.choice("shading", kShadingNames, shading) || !overrides(r, m) ||
+      !r.choice("shading", shadingModelNames(), shading) || !overrides(r, m) ||
       !r.floating("exposure", -10.0, 10.0, m.exposure) || !r.choice("tonemap", kToneMapperNames, toneMapper) ||
       !r.choice("denoiser", kDenoiserNames, denoiser) || !r.integer("atrous_passes", 1, kMaxAtrousPasses, passes) ||
       !r.boolean("bilateral", m.bilateral) || !r.boolean("playing", m.playing) ||
@@ -153,8 +152,6 @@ std::optional<ClientMessage> settings(Reader& r) {
 }
 
 }  // namespace
-
-const char* shadingName(ShadingModel model) { return kShadingNames[int(model)]; }
 
 const char* streamName(FrameStream stream) { return kStreamNames[int(stream)]; }
 

@@ -85,7 +85,6 @@ constexpr size_t kMaxQuotedClientBytes = 40;
 std::string quotedClientText(std::string_view text);
 
 // The names the page and the messages use.
-const char* shadingName(ShadingModel model);  // "own", "phong", "pbr", "disney"
-const char* streamName(FrameStream stream);   // "jpeg", "h264"
+const char* streamName(FrameStream stream);  // "jpeg", "h264"
 
 }  // namespace candela

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "app/denoising/denoiser_choice.h"
 #include "app/interactive/viewer_files.h"
 
 namespace candela {
@@ -51,7 +52,7 @@ void ServeLoop::greet(uint64_t client) {
   for (const OverrideParameter& p : overrideParameters())
     overrides.push_back({{"name", p.name}, {"min", p.min}, {"max", p.max}});
   Json denoisers = Json::array({"none", "atrous"});
-  if (ViewerDenoiser::optixInThisBuild()) denoisers.push_back("optix");
+  if (inThisBuild(DenoiserChoice::Optix)) denoisers.push_back("optix");
   // The page's animation controls: one entry per clip, none where nothing is animated.
   Json animations = Json::array();
   if (const SceneAnimation& animation = session.scene().animation; !animation.empty())
@@ -90,7 +91,7 @@ Json ServeLoop::controlsJson() const {
       {"accumulate", controls.accumulate},
       {"env_intensity", controls.environmentScale},
       {"env_rotation", controls.environmentRotation},
-      {"shading", shadingName(controls.materials.shading)},
+      {"shading", shadingModelName(controls.materials.shading)},
       {"overrides", overrides},
       {"exposure", controls.post.display.exposure},
       {"tonemap", toneMapperName(controls.post.display.toneMapper)},
@@ -183,13 +184,13 @@ void ServeLoop::act(uint64_t client, ActionMessage::Kind kind) {
   }
 }
 
-// A slow connection shrinks the preview further (stream_quality.h).
+// A slow connection shrinks the preview further (stream_quality.h); the video's rate holds at the frame rate sent.
 void ServeLoop::adjustPlan(FramePlan& plan) {
   const uint32_t divisor = quality_.resolutionDivisor(plan.preview);
   plan.width = std::max(plan.width / divisor, kMinViewSide);
   plan.height = std::max(plan.height / divisor, kMinViewSide);
   jpegQuality_ = quality_.jpegQuality(plan.preview);
-  videoSettings_ = quality_.videoSettings(plan.preview);
+  videoSettings_ = quality_.videoSettings(plan.preview, msPerFrame_ > 0.0 ? 1000.0 / msPerFrame_ : 0.0);
 }
 
 void ServeLoop::present(FrameImages& frame) {

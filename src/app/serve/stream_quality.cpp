@@ -23,8 +23,11 @@ void StreamQuality::recordDelivery(size_t bytes, double seconds, bool moving) {
   }
 }
 
-H264Settings StreamQuality::videoSettings(bool moving) const {
+H264Settings StreamQuality::videoSettings(bool moving, double framesPerSecond) const {
   H264Settings settings;
+  if (framesPerSecond > 0.0)
+    settings.framesPerSecond =
+        kFrameRateStep * uint32_t(std::ceil(std::min(framesPerSecond, double(kMaxFrameRate)) / kFrameRateStep));
   // What the link carried, with room left for the other messages and the variation between frames.
   const double linkKilobits = 0.8 * 8.0 * bytesPerSecond_ / 1000.0;
   settings.maxKilobitsPerSecond =

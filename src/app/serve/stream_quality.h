@@ -11,7 +11,7 @@ namespace candela {
 // JPEG quality step by step, and once it is at its floor, halve the preview's resolution; quick ones raise them
 // back. Frames at rest always go at full quality and resolution: there the picture matters more than the rate.
 // The H.264 stream follows the same steps (its rate factor rises as the JPEG quality falls) and keeps its rate
-// under what the link delivered.
+// under what the link delivered, at the frame rate measured.
 class StreamQuality {
  public:
   explicit StreamQuality(double frameBudgetSeconds = 1.0 / 30.0) : budget_(frameBudgetSeconds) {}
@@ -20,7 +20,10 @@ class StreamQuality {
   int jpegQuality(bool moving) const { return moving ? movingQuality_ : kRestQuality; }
   uint32_t resolutionDivisor(bool moving) const { return moving ? movingDivisor_ : 1; }
   double bytesPerSecond() const { return bytesPerSecond_; }  // smoothed; 0 until measured
-  H264Settings videoSettings(bool moving) const;
+  // `framesPerSecond`: the rate frames are sent at, 0 where not measured yet (then H264Settings' default). It is
+  // rounded up to a multiple of kFrameRateStep, so that the cap holds and the encoder is not reconfigured for every
+  // small change.
+  H264Settings videoSettings(bool moving, double framesPerSecond) const;
 
   static constexpr int kRestQuality = 92;
   static constexpr int kMaxMovingQuality = 80;
@@ -31,6 +34,8 @@ class StreamQuality {
   static constexpr float kMovingRateFactor = 22.0f;  // at the best moving JPEG quality; 9 more at the worst
   static constexpr uint32_t kMaxVideoKilobits = 20000;
   static constexpr uint32_t kMinVideoKilobits = 1000;
+  static constexpr uint32_t kFrameRateStep = 5;
+  static constexpr uint32_t kMaxFrameRate = 1000;
 
  private:
   double budget_;

@@ -6,7 +6,7 @@
 #include <optional>
 #include <span>
 
-#include "app/interactive/viewer_denoiser.h"
+#include "app/denoising/denoiser_choice.h"
 
 namespace candela {
 
@@ -94,7 +94,7 @@ void drawPost(PostSettings& post) {
   int denoiser = int(post.denoiser);
   ImGui::SetNextItemWidth(kDenoiserComboWidth);
   const char* const choices =
-      ViewerDenoiser::optixInThisBuild() ? "No denoiser\0A-trous\0OptiX AI\0" : "No denoiser\0A-trous\0";
+      inThisBuild(DenoiserChoice::Optix) ? "No denoiser\0A-trous\0OptiX AI\0" : "No denoiser\0A-trous\0";
   if (ImGui::Combo("##denoiser", &denoiser, choices)) post.denoiser = DenoiserChoice(denoiser);
   ImGui::SameLine();
   ImGui::BeginDisabled(post.denoiser != DenoiserChoice::Atrous);

@@ -62,20 +62,25 @@ class CombiningTemporalDenoiser : public TemporalDenoiser {
 
 }  // namespace
 
+// What reads the film, filters it or writes from it runs on the first device, once the other devices' films are
+// added to its own, with that device current.
+template <typename Task>
+auto MultiGpuBackend::onMergedFilm(Task&& task) const {
+  mergeFilms();
+  CurrentDevice device(ordinals_[0]);
+  return task(*devices_[0]);
+}
+
 // The first device's filters, each run once the other devices' films are added to its own.
 class MultiGpuBackend::CombinedFilmFilters final : public FilmFilters {
  public:
   explicit CombinedFilmFilters(const MultiGpuBackend& backend) : backend_(backend) {}
 
   Image atrous(const AtrousParams& params) const override {
-    backend_.mergeFilms();
-    CurrentDevice device(backend_.ordinals_[0]);
-    return backend_.devices_[0]->filters().atrous(params);
+    return backend_.onMergedFilm([&](const OptixBackend& first) { return first.filters().atrous(params); });
   }
   Image bilateral(const BilateralParams& params) const override {
-    backend_.mergeFilms();
-    CurrentDevice device(backend_.ordinals_[0]);
-    return backend_.devices_[0]->filters().bilateral(params);
+    return backend_.onMergedFilm([&](const OptixBackend& first) { return first.filters().bilateral(params); });
   }
   std::unique_ptr<TemporalDenoiser> temporal(const TemporalParams& params) const override {
     CurrentDevice device(backend_.ordinals_[0]);
@@ -100,9 +105,8 @@ class MultiGpuBackend::CombinedFilmDisplay final : public FilmDisplay {
       if (!combining) throw std::invalid_argument("a display frame through a temporal filter of another backend");
       temporal->denoiser = combining->first();
     }
-    backend_.mergeFilms();
-    CurrentDevice device(backend_.ordinals_[0]);
-    DisplayFrame frame = backend_.devices_[0]->display().read(onFirst);
+    DisplayFrame frame =
+        backend_.onMergedFilm([&](const OptixBackend& first) { return first.display().read(onFirst); });
     frame.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return frame;
   }
@@ -267,34 +271,24 @@ void MultiGpuBackend::mergeFilms() const {
 }
 
 FilmSums MultiGpuBackend::readFilm() const {
-  mergeFilms();
-  CurrentDevice device(ordinals_[0]);
-  return devices_[0]->readFilm();
+  return onMergedFilm([](const OptixBackend& first) { return first.readFilm(); });
 }
 
 // After the merge the other devices' films are clear, so the loaded sums are all there is.
 void MultiGpuBackend::loadFilm(const FilmSums& film) {
-  mergeFilms();
-  CurrentDevice device(ordinals_[0]);
-  devices_[0]->loadFilm(film);
+  onMergedFilm([&](OptixBackend& first) { first.loadFilm(film); });
 }
 
 Image MultiGpuBackend::readImage() const {
-  mergeFilms();
-  CurrentDevice device(ordinals_[0]);
-  return devices_[0]->readImage();
+  return onMergedFilm([](const OptixBackend& first) { return first.readImage(); });
 }
 
 Image MultiGpuBackend::readEmission() const {
-  mergeFilms();
-  CurrentDevice device(ordinals_[0]);
-  return devices_[0]->readEmission();
+  return onMergedFilm([](const OptixBackend& first) { return first.readEmission(); });
 }
 
 AovImages MultiGpuBackend::readAovs() const {
-  mergeFilms();
-  CurrentDevice device(ordinals_[0]);
-  return devices_[0]->readAovs();
+  return onMergedFilm([](const OptixBackend& first) { return first.readAovs(); });
 }
 
 const FilmFilters& MultiGpuBackend::filters() const { return *filters_; }
@@ -304,9 +298,7 @@ const FilmDisplay& MultiGpuBackend::display() const { return *display_; }
 std::array<unsigned char, 16> MultiGpuBackend::deviceUuid() const { return devices_[0]->deviceUuid(); }
 
 void MultiGpuBackend::writeImageToDevice(Vec3* destination) const {
-  mergeFilms();
-  CurrentDevice device(ordinals_[0]);
-  devices_[0]->writeImageToDevice(destination);
+  onMergedFilm([&](const OptixBackend& first) { first.writeImageToDevice(destination); });
 }
 
 RawTraceTiming MultiGpuBackend::timeRawTrace(uint32_t warmup, uint32_t frames) {

@@ -83,6 +83,9 @@ class MultiGpuBackend final : public Backend, public DeviceImage {
   void restart();
   // Moves the rows the other devices rendered since the last merge into the first device's film.
   void mergeFilms() const;
+  // Returns task(first device's backend) run after mergeFilms(), with the first device current.
+  template <typename Task>
+  auto onMergedFilm(Task&& task) const;
 
   struct RowRange {
     uint32_t first = 0, end = 0;  // empty when first == end

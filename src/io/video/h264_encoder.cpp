@@ -86,14 +86,17 @@ struct H264Encoder::State {
     pictureAllocated = false;
   }
 
+  // The rate control counts time in frames of the opened frame rate: at `s.framesPerSecond` frames a second, a
+  // frame's share of the rate is maxKilobitsPerSecond / s.framesPerSecond, which a limit scaled by the ratio of
+  // the two rates gives it.
   void applyRate(const H264Settings& s) {
-    param.i_fps_num = s.framesPerSecond;
-    param.i_fps_den = 1;
+    const uint64_t measured = std::max(1u, s.framesPerSecond);
     param.rc.i_rc_method = X264_RC_CRF;
     param.rc.f_rf_constant = s.rateFactor;
-    param.rc.i_vbv_max_bitrate = int(s.maxKilobitsPerSecond);
+    param.rc.i_vbv_max_bitrate =
+        int(std::max<uint64_t>(1, uint64_t(s.maxKilobitsPerSecond) * param.i_fps_num / measured));
     // A buffer of two frames at the rate: no frame much larger than its share, which would arrive late.
-    param.rc.i_vbv_buffer_size = int(std::max(1u, 2 * s.maxKilobitsPerSecond / std::max(1u, s.framesPerSecond)));
+    param.rc.i_vbv_buffer_size = int(std::max<uint64_t>(1, 2 * uint64_t(s.maxKilobitsPerSecond) / measured));
     settings = s;
   }
 
@@ -117,6 +120,8 @@ struct H264Encoder::State {
     param.vui.i_transfer = 2;
     param.vui.i_colmatrix = 1;  // BT.709
     param.vui.b_fullrange = 0;
+    param.i_fps_num = std::max(1u, s.framesPerSecond);
+    param.i_fps_den = 1;
     applyRate(s);
     if (x264_param_apply_profile(&param, "high") < 0) throw std::runtime_error("x264: the high profile is refused");
     encoder = x264_encoder_open(&param);

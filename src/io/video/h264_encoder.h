@@ -18,7 +18,8 @@ struct H264Settings {
   // lower is better; 18 is close to transparent).
   uint32_t maxKilobitsPerSecond = 20000;
   float rateFactor = 20.0f;
-  // The frame rate the rate control assumes; frames may come slower.
+  // The rate the frames come at, as measured: the rate cap holds at it. x264 keeps the frame rate the stream was
+  // opened with (x264_encoder_reconfig cannot change it), so a later rate scales the rate control's limits instead.
   uint32_t framesPerSecond = 60;
 };
 
