@@ -1,7 +1,8 @@
 // restir_convergence: error against samples and time with and without ReSTIR DI (--restir), on the generated town at
-// night with thousands of small lights (many_lights_scene.h) or any scene.
+// night with thousands of small lights (many_lights_scene.h), on the tests' floor under many small lights
+// (tests/support/many_small_lights.h: --scene many-small-lights, --lights of them, two triangles each) or any scene.
 //   restir_convergence [--blocks 12] [--backend cpu] [--width 160] [--height 90] [--reference-spp 2048]
-//                      [--max-spp 64] [--seeds 2] [--max-depth 8] [--scene FILE]
+//                      [--max-spp 64] [--seeds 2] [--max-depth 8] [--scene FILE] [--lights 300]
 // Renders a reference without ReSTIR (independent sampler, a seed of its own) at --reference-spp, then for each mode
 // (off, di, di-biased) and each power of two up to --max-spp the mean relMSE over --seeds renders (Sobol sampler)
 // against it, and the fastest time of one render at that count. Prints one JSON object per line: the curves, the
@@ -18,6 +19,7 @@
 #include "app/scene_loading.h"
 #include "convergence.h"
 #include "many_lights_scene.h"
+#include "support/many_small_lights.h"
 
 namespace candela {
 namespace {
@@ -27,6 +29,7 @@ using bench::Point;
 struct Options : bench::ConvergenceOptions {
   std::string scene = "night-town";
   uint32_t blocks = 12;
+  uint32_t lights = 300;
   uint32_t maxDepth = RenderSettings{}.maxDepth;  // 1: the direct light alone, all of which ReSTIR estimates
 
   Options() {
@@ -49,7 +52,9 @@ double imageMean(const Image& image) {
 }
 
 int run(const Options& options) {
-  Scene scene = options.scene == "night-town" ? makeNightTown(options.blocks, 1) : loadScene(options.scene, {});
+  Scene scene = options.scene == "night-town"          ? makeNightTown(options.blocks, 1)
+                : options.scene == "many-small-lights" ? test::makeManySmallLights(options.lights, 5)
+                                                       : loadScene(options.scene, {});
   bench::Renderer renderer = bench::Renderer::of(scene, options);
   renderer.settings.maxDepth = options.maxDepth;
   double referenceMs = 0.0;
@@ -115,10 +120,14 @@ int run(const Options& options) {
 int main(int argc, char** argv) {
   candela::Options options;
   CLI::App app{"Error against samples and time with and without ReSTIR DI"};
-  app.add_option("--scene", options.scene, "night-town (generated), or a scene file or built-in scene")
+  app.add_option("--scene", options.scene,
+                 "night-town or many-small-lights (generated), or a scene file or built-in scene")
       ->capture_default_str();
   app.add_option("--blocks", options.blocks, "night-town: blocks per side")
       ->check(CLI::Range(1u, 200u))
+      ->capture_default_str();
+  app.add_option("--lights", options.lights, "many-small-lights: lights (two emissive triangles each)")
+      ->check(CLI::Range(1u, 100000u))
       ->capture_default_str();
   app.add_option("--max-depth", options.maxDepth, "Bounces after the camera ray (1: direct light only)")
       ->check(CLI::Range(1u, 1024u))

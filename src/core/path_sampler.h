@@ -37,7 +37,7 @@ class PathSampler {
     if (kind_ == SamplerKind::Independent) return randomUniform(pixel_, sampleIndex_, dimension, seed_);
     Uint4 seeds = dimensionSeeds(dimension);
     uint32_t index = owenScramble(sampleIndex_ >> 1, seeds.x);
-    return bitsToUnitFloat(owenScramble(sobolDimension0(index), seeds.y));
+    return reversedBitsToUnitFloat(owenHash(index, seeds.y));
   }
 
   CANDELA_FN Vec2 next2D() {
@@ -48,8 +48,8 @@ class PathSampler {
     Uint4 seeds = dimensionSeeds(dimension_);
     dimension_ += 2;
     uint32_t index = owenScramble(sampleIndex_ >> 1, seeds.x);
-    return {bitsToUnitFloat(owenScramble(sobolDimension0(index), seeds.y)),
-            bitsToUnitFloat(owenScramble(sobolDimension1(index), seeds.z))};
+    return {reversedBitsToUnitFloat(owenHash(index, seeds.y)),
+            reversedBitsToUnitFloat(owenHash(sobolDimension1Reversed(index), seeds.z))};
   }
 
   // The next dimension, and the way back to it: a path whose vertices are shaded in separate launches keeps it
@@ -61,6 +61,14 @@ class PathSampler {
   CANDELA_FN uint32_t nextBits() { return pcg4d({pixel_, sampleIndex_, dimension_++, seed_}).x; }
 
  private:
+  // bitsToUnitFloat(reverseBits(bits)). A Sobol number is owenScramble(sobolDimensionK(index), seed), where
+  // owenScramble reverses, hashes and reverses again and sobolDimensionK ends with a reversal: the two reversals in
+  // the middle cancel, and of the last one only the 24 bits that reach the float are needed. These are the numbers
+  // of the definition (tests/kernel/path_sampler_test.cpp compares them), with two reversals fewer per number.
+  CANDELA_FN static float reversedBitsToUnitFloat(uint32_t bits) {
+    return float(reverseBitsHigh24(bits)) * (1.0f / 16777216.0f);
+  }
+
   // The Sobol seeds of a dimension in the sample's half; the constant keeps them apart from the white-noise numbers
   // of the same inputs.
   CANDELA_FN Uint4 dimensionSeeds(uint32_t dimension) const {

@@ -72,6 +72,84 @@ TEST(SobolSequence, SecondDimensionMatchesItsGeneratorMatrix) {
   }
 }
 
+// The Sobol sampler's numbers by their definition, written as plainly as possible: bits reversed one at a time, the
+// second dimension from its generator matrix's columns, Owen scrambling as reverse, hash (Burley 2020), reverse, and
+// the top 24 bits as the float. The sampler computes them with reversals that cancel taken out (and a table on the
+// host), so it is held to draw exactly these numbers.
+uint32_t reverseBitsOneByOne(uint32_t v) {
+  uint32_t r = 0;
+  for (int bit = 0; bit < 32; ++bit) r |= ((v >> bit) & 1u) << (31 - bit);
+  return r;
+}
+
+uint32_t owenScrambleByDefinition(uint32_t v, uint32_t seed) {
+  uint32_t r = reverseBitsOneByOne(v) + seed;
+  r ^= r * 0x6c50b47cu;
+  r ^= r * 0xb82f1e52u;
+  r ^= r * 0xc7afe638u;
+  r ^= r * 0x8d22f6e6u;
+  return reverseBitsOneByOne(r);
+}
+
+float unitFloatByDefinition(uint32_t bits) { return float(bits >> 8) / 16777216.0f; }
+
+struct SobolSamplerByDefinition {
+  uint32_t pixel, sampleIndex, seed;
+  uint32_t dimension = 0;
+
+  // The dimension's seeds in the sample's half (even or odd sample index), and the point's scrambled index there.
+  Uint4 seedsOf(uint32_t d) const { return pcg4d({pixel, d, seed, 0x50B01u + (sampleIndex & 1u)}); }
+
+  float next1D() {
+    const Uint4 seeds = seedsOf(dimension++);
+    const uint32_t index = owenScrambleByDefinition(sampleIndex / 2, seeds.x);
+    return unitFloatByDefinition(owenScrambleByDefinition(reverseBitsOneByOne(index), seeds.y));
+  }
+
+  Vec2 next2D() {
+    const Uint4 seeds = seedsOf(dimension);
+    dimension += 2;
+    const uint32_t index = owenScrambleByDefinition(sampleIndex / 2, seeds.x);
+    return {unitFloatByDefinition(owenScrambleByDefinition(reverseBitsOneByOne(index), seeds.y)),
+            unitFloatByDefinition(owenScrambleByDefinition(sobolDimension1ByColumns(index), seeds.z))};
+  }
+};
+
+TEST(SobolSequence, ReversalsMatchTheOneBitAtATimeReversal) {
+  uint32_t v = 1;
+  for (uint32_t i = 0; i < 200000; ++i, v = v * 1664525u + 1013904223u)
+    for (uint32_t value : {i, v, ~i, 1u << (i % 32)}) {
+      ASSERT_EQ(reverseBits(value), reverseBitsOneByOne(value)) << value;
+      ASSERT_EQ(reverseBitsHigh24(value), reverseBitsOneByOne(value) >> 8) << value;
+      ASSERT_EQ(owenScramble(value, v), owenScrambleByDefinition(value, v)) << value;
+    }
+}
+
+// Every number the sampler draws, 1D and 2D calls mixed, at small and large sample indices (each half, all 32 bits of
+// the index), many pixels, seeds and path lengths, is the number of the definition, bit for bit.
+TEST(SobolSampler, DrawsTheNumbersOfItsDefinition) {
+  uint32_t state = 12345;
+  auto next = [&state] { return state = state * 1664525u + 1013904223u; };
+  for (uint32_t trial = 0; trial < 20000; ++trial) {
+    const uint32_t pixel = next(), seed = trial % 5 == 0 ? 0u : next();
+    const uint32_t sampleIndex = trial % 2 == 0 ? trial / 2 : next();
+    const uint32_t pattern = next();
+    PathSampler sampler(pixel, sampleIndex, seed, SamplerKind::Sobol);
+    SobolSamplerByDefinition reference{pixel, sampleIndex, seed};
+    for (uint32_t call = 0; call < 32; ++call) {
+      const uint32_t d = reference.dimension;
+      if ((pattern >> call) & 1u) {
+        const Vec2 got = sampler.next2D(), expected = reference.next2D();
+        ASSERT_EQ(got.x, expected.x) << "pixel " << pixel << ", sample " << sampleIndex << ", dimension " << d;
+        ASSERT_EQ(got.y, expected.y) << "pixel " << pixel << ", sample " << sampleIndex << ", dimension " << d + 1;
+      } else {
+        ASSERT_EQ(sampler.next1D(), reference.next1D())
+            << "pixel " << pixel << ", sample " << sampleIndex << ", dimension " << d;
+      }
+    }
+  }
+}
+
 TEST(SobolSequence, OwenScramblingKeepsLeadingBitsTogether) {
   // Values that share their top k bits still share them after scrambling, whatever the seed.
   for (uint32_t seed : {0u, 1u, 0xDEADBEEFu}) {

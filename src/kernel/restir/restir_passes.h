@@ -24,13 +24,18 @@
 
 namespace candela {
 
+// The counts and sizes below are measured choices (docs/performance.md, 'ReSTIR DI'): each light candidate costs a
+// walk down the light BVH and a BSDF evaluation, each spatial neighbour a rebuilt BSDF and two shadow rays; 4 and 2 of
+// them cost markedly less than 8 and 3 for nearly the same error per sample.
 // Light-sampling candidates per pixel and sample (plus one BSDF sample).
-constexpr uint32_t kRestirLightCandidates = 8;
-// Spatial reuse: neighbours tried, within this radius in pixels.
-constexpr uint32_t kRestirSpatialNeighbours = 3;
-constexpr float kRestirSpatialRadius = 24.0f;
-// The previous sample's reservoir counts for at most this many times the current initial one.
-constexpr float kRestirHistoryCap = 20.0f;
+constexpr uint32_t kRestirLightCandidates = 4;
+// Spatial reuse: neighbours tried, within this radius in pixels (closer neighbours share more of their lights).
+constexpr uint32_t kRestirSpatialNeighbours = 2;
+constexpr float kRestirSpatialRadius = 8.0f;
+// The previous sample's reservoir counts for at most this many times the current initial one. A long history ties
+// a pixel's successive samples to the same light points, so that the mean over a still's samples converges slowly;
+// a cap of 1 keeps the temporal reuse's gain at the first samples without that.
+constexpr float kRestirHistoryCap = 1.0f;
 // Reuse only between surfaces whose shading normals are this close (cosine) and whose distances from their cameras
 // differ by at most this fraction.
 constexpr float kRestirNormalSimilarity = 0.9f;
@@ -323,6 +328,17 @@ CANDELA_FN uint32_t restirCandidatePass(const SceneView& scene, const Tracer& tr
   return rays;
 }
 
+// Whether the ray that the primary vertex's BSDF sample would trace can add nothing, and is not traced: at the last
+// bounce (maxDepth 1) a ray off a non-delta lobe ends at a vertex that neither samples lights nor scatters, and
+// whatever emission it finds the reservoir has counted (kDirectLightCounted gives it weight 0), unless the path still
+// has its denoiser guides to record there. Only a delta lobe's ray, whose emission counts in full, is traced.
+template <bool kWithAovs>
+CANDELA_FN bool lastRayFindsNothing(const RenderSettings& settings, const VertexScatter& scatter,
+                                    const PathAovState& a) {
+  return settings.maxDepth == 1 && scatter.directFromReservoir && !scatter.sample.isDelta &&
+         !(kWithAovs && a.aovsPending);
+}
+
 // Pass 2 of a sample: spatial reuse at pixel (x, y), the result kept as the next sample's history, and the pixel's
 // path, its primary vertex lit by the reservoir (shadeVertex's directFromReservoir says why nothing is counted twice).
 template <bool kWithAovs, class Tracer>
@@ -383,7 +399,8 @@ CANDELA_FN PathResult restirShadePass(const SceneView& scene, const Tracer& trac
     }
     if (!isBlack(shadow.contribution) && !tracer.occluded(shadow.ray, shadow.bits)) s.radiance += shadow.contribution;
     uint32_t bits = 0;
-    if (more && continuePath<kWithAovs>(scene, settings, s, a, sampler, scatter, ray, bits))
+    if (more && !lastRayFindsNothing<kWithAovs>(settings, scatter, a) &&
+        continuePath<kWithAovs>(scene, settings, s, a, sampler, scatter, ray, bits))
       followPath<kWithAovs, false>(scene, tracer, settings, s, a, sampler, ray, bits);
   }
   PathResult result;
