@@ -78,11 +78,16 @@ struct LaunchResult {
 
 struct OptixBackend::State {
   State(int deviceIndex, ProgramCompileListener listener, ProgramStart programs)
-      : context(deviceIndex), compileListener(std::move(listener)), programStart(programs) {}
+      : context(deviceIndex),
+        compileListener(std::move(listener)),
+        programStart(programs),
+        startDeferred(programs == ProgramStart::AtFirstFrame) {}
 
   OptixContext context;
   ProgramCompileListener compileListener;
   ProgramStart programStart;
+  // ProgramStart::AtFirstFrame before the first frame: what it renders may still change, so nothing compiles yet.
+  bool startDeferred;
   // Each compiled once something needs it (startNeeded), in the background.
   ProgramModules modules{context.get()};
   std::array<std::unique_ptr<Pipeline>, kPipelineKinds> pipelines;  // made when first needed (makePipelines)
@@ -157,7 +162,16 @@ struct OptixBackend::State {
   // Begins compiling the modules the next frame needs, where they have not begun: called wherever what it renders
   // may have changed, so that the compile runs while the caller sets up the rest (or renders on the CPU).
   void startNeeded() {
+    if (startDeferred) return;
     for (ProgramModule module : neededModules()) modules.start(module, CompilePriority::Needed);
+  }
+
+  // Compiles the modules of the next frame's pipelines, all at once (each pipeline waits for its own, one after the
+  // other), and makes the pipelines.
+  void prepareNextFrame() {
+    startDeferred = false;
+    startNeeded();
+    makePipelines(pipelinesNeeded(use()));
   }
 
   // An interactive session (ProgramStart::InBackground) also compiles, after its first frame on the GPU, the
@@ -457,7 +471,7 @@ OptixBackend::OptixBackend(int deviceIndex, ProgramCompileListener compileProgre
       display_(std::make_unique<DeviceFilmDisplay>(*this)) {
   std::fprintf(stderr, "optix: %s\n", deviceDescription().c_str());
   setSettings(RenderSettings{});  // begins compiling the modules of a first frame of these settings
-  if (start == ProgramStart::Wait) state_->makePipelines(pipelinesNeeded(state_->use()));
+  if (start == ProgramStart::Wait) state_->prepareNextFrame();
 }
 
 OptixBackend::~OptixBackend() {
@@ -546,6 +560,7 @@ FrameStats OptixBackend::renderRows(uint32_t samplesPerPixel, uint32_t firstRow,
   if (!s.hasScene) throw std::logic_error("OptixBackend::render before setScene");
   if (size_t(firstRow) + rows > s.settings.height) throw std::logic_error("OptixBackend::renderRows past the image");
   if (rows == 0) return {};
+  if (s.startDeferred) s.prepareNextFrame();
   // Per-pixel ray counts are 32-bit: long requests are split into launches that cannot overflow them.
   const uint32_t maxPerLaunch = std::max(1u, 0xFFFFFFFFu / rayBoundPerSample(s.settings));
   FrameStats stats;
@@ -616,6 +631,12 @@ std::optional<ProgramCompileStatus> OptixBackend::startingCompile() const {
   if (s.modules.finished(needed)) return std::nullopt;
   const CompileTaskCounts tasks = s.modules.tasks(needed);
   return ProgramCompileStatus{tasks.done, tasks.known, s.modules.secondsCompiling(needed)};
+}
+
+double OptixBackend::preparePrograms() {
+  const auto start = std::chrono::steady_clock::now();
+  state_->prepareNextFrame();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 bool OptixBackend::aovsEnabled() const { return state_->aovsEnabled; }
