@@ -4,8 +4,8 @@
 # generated town as glTF, then runs `candela bench` on the OptiX backend twice, lit by the environment map, at
 # 1920x1080, depth 8, one sample per pixel per launch, median of 50 CUDA-event launches after 5: the first run
 # reads the glTF and writes the scene cache, the second reads the cache. Each run prints its JSON line (with
-# load_seconds, backend_start_seconds, and first_frame_seconds: acceleration structures and uploads up to the
-# end of the first launch) and the most GPU memory in use meanwhile, as nvidia-smi saw it every 50 ms.
+# load_seconds, backend_start_seconds, and first_frame_seconds: acceleration structures, uploads and the programs'
+# compile, program_compile_seconds of it, up to the end of the first launch) and the most GPU memory in use meanwhile, as nvidia-smi saw it every 50 ms.
 set -euo pipefail
 if [ $# -lt 4 ]; then
   echo "usage: gpu_scale_bench.sh <candela> <candela-generate-scene> <environment .hdr> <work dir> [triangles ...]" >&2

@@ -91,9 +91,10 @@ std::unique_ptr<Backend> createBackend(const std::string& name, std::string& why
 }
 
 std::unique_ptr<Backend> createBackend(const std::string& name, std::string& why, [[maybe_unused]] int deviceIndex,
-                                       [[maybe_unused]] const ProgramCompileListener& compileProgress) {
+                                       [[maybe_unused]] const ProgramCompileListener& compileProgress,
+                                       [[maybe_unused]] ProgramStart start) {
 #if CANDELA_HAS_OPTIX
-  return create(name, why, true, [&] { return std::make_unique<OptixBackend>(deviceIndex, compileProgress); });
+  return create(name, why, true, [&] { return std::make_unique<OptixBackend>(deviceIndex, compileProgress, start); });
 #else
   return create(name, why, true, [] { return std::unique_ptr<Backend>(); });
 #endif

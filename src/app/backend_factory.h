@@ -20,13 +20,15 @@ std::string availableBackends();
 // start on a machine compiles its programs for the GPU, which takes a while: `compileProgress` hears how it goes
 // (backends/optix/compile_progress.h), there and where a later launch waits for programs still compiling. With
 // `start` InBackground the OptiX backend on one GPU returns before its first frame's programs are compiled
-// (Backend::startingCompile); on several GPUs it always waits for them.
+// (Backend::startingCompile), and with AtFirstFrame it compiles nothing until the first frame (or
+// Backend::preparePrograms); on several GPUs it always waits for a first frame's programs of default settings.
 std::unique_ptr<Backend> createBackend(const std::string& name, std::string& why, const DeviceRequest& devices = {},
                                        const ProgramCompileListener& compileProgress = compileProgressOnStderr(),
                                        ProgramStart start = ProgramStart::Wait);
 // The same on the one GPU `deviceIndex` modulo the GPUs it sees (the processes of a distributed render on one
 // node take one each).
 std::unique_ptr<Backend> createBackend(const std::string& name, std::string& why, int deviceIndex,
-                                       const ProgramCompileListener& compileProgress = compileProgressOnStderr());
+                                       const ProgramCompileListener& compileProgress = compileProgressOnStderr(),
+                                       ProgramStart start = ProgramStart::Wait);
 
 }  // namespace candela

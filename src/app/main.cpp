@@ -500,6 +500,7 @@ int runBench(const RenderJob& job) {
       {"median_ms_per_frame", median(outcome.frameMilliseconds)},
       {"load_seconds", outcome.loadSeconds},
       {"backend_start_seconds", outcome.backendStartSeconds},
+      {"program_compile_seconds", outcome.programCompileSeconds},
       {"first_frame_seconds", outcome.firstFrameSeconds},
   };
   // GPU backends time every launch with device events: frame rate and throughput from the median launch.

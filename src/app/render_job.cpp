@@ -123,8 +123,11 @@ RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool s
     if (job.team && job.devices.given)
       throw std::runtime_error("--devices does not apply under mpirun: each rank renders on the GPU of its local rank");
     created = agreedStep(job.team, [&] {
-      return job.team ? createBackend(job.backend, why, job.team->localIndex())
-                      : createBackend(job.backend, why, job.devices);
+      // The programs compile at the first frame, when what it renders is known (ProgramStart::AtFirstFrame).
+      return job.team
+                 ? createBackend(job.backend, why, job.team->localIndex(), compileProgressOnStderr(),
+                                 ProgramStart::AtFirstFrame)
+                 : createBackend(job.backend, why, job.devices, compileProgressOnStderr(), ProgramStart::AtFirstFrame);
     });
     if (!job.team || job.team->writes()) std::fprintf(stderr, "%s\n", why.c_str());
   }
@@ -138,6 +141,7 @@ RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool s
   backend->setAovsEnabled(needsAovs(job));
   const Camera camera = scene.camera.toCamera(float(job.settings.width) / float(job.settings.height));
   backend->setCamera(camera);
+  outcome.programCompileSeconds = backend->preparePrograms();
   // render() returns when its launch has finished, on either backend.
   auto renderFrame = [&] {
     FrameStats frame = backend->render(1);

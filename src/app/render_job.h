@@ -57,11 +57,14 @@ struct RenderOutcome {
   AovImages aovs;  // when RenderJob::aovs is not empty
   FrameStats stats;
   double seconds = 0.0;  // rendering only: scene loading and acceleration-structure builds excluded
-  // Until the first image: reading the scene (runRenderJob only), starting the backend (device and programs),
-  // and from handing it the scene to the end of its first launch (acceleration structures, uploads).
+  // Until the first image: reading the scene (runRenderJob only), starting the backend (its device), and from
+  // handing it the scene to the end of its first launch (acceleration structures, uploads, and the wait for the
+  // programs that launch needs, compiled once scene, settings and AOVs are set: programCompileSeconds, part of
+  // firstFrameSeconds; 0 for a backend with no programs to compile, and for one that compiled them at its start).
   double loadSeconds = 0.0;
   double backendStartSeconds = 0.0;
   double firstFrameSeconds = 0.0;
+  double programCompileSeconds = 0.0;
   std::string backendName;
   std::string deviceName;
   std::string sceneName;

@@ -114,6 +114,10 @@ class Backend {
   // While the programs the next frame needs are still compiling: how far that has got (render() would wait for
   // it). Nothing where there is nothing to wait for, as for a backend that compiles nothing.
   virtual std::optional<ProgramCompileStatus> startingCompile() const { return std::nullopt; }
+  // Compiles the programs the next frame needs, all at once, and returns once they are ready, as that frame's
+  // render() would, for a caller that times the wait apart from the frame: the seconds it waited. 0 where there is
+  // nothing to compile.
+  virtual double preparePrograms() { return 0.0; }
   // Where a backend renders on several devices: how long the last read that found samples on the others took to
   // add them to the film it reads (milliseconds); 0 otherwise.
   virtual double lastCombineMilliseconds() const { return 0.0; }

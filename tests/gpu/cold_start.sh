@@ -2,12 +2,13 @@
 # cold_start.sh [candela binary] [runs]: the GPU backend's time to its first frame on a GPU machine, with OptiX's
 # disk cache empty (cold: the first start on a machine, which compiles the GPU programs) and holding the programs
 # (warm), `runs` times each (default 3). Each run is `candela bench` of the Cornell box at 1920x1080, one launch
-# of one sample per pixel, and prints bench's backend_start_seconds (CUDA and OptiX contexts, the programs of a
-# first frame compiled and linked into pipelines) and first_frame_seconds (scene upload, the schedule's probe,
-# the first launch), the process's wall time, and the compile's last line. A cold run also times `candela render
-# --denoise atrous` (wall time: its first frame launches the AOV path tracer, whose programs begin compiling when
-# the render enables AOVs, after the start's) in a cache of its own. Only the programs a run uses are compiled, so
-# a cold bench compiles neither ReSTIR's nor the AOV path tracer's.
+# of one sample per pixel, and prints the time to its first frame (bench's backend_start_seconds, the CUDA and
+# OptiX contexts, plus first_frame_seconds, the scene upload, the programs' compile, the schedule's probe and the
+# first launch), of which program_compile_seconds waited for the first frame's programs, the process's wall time,
+# and the compile's last line. A cold run also times `candela render --denoise atrous` (wall time: its first frame
+# compiles the AOV path tracer's programs and the ray programs, nothing else) in a cache of its own. Only the
+# programs a run uses are compiled, all at once when its first frame is known, so a cold bench compiles neither
+# ReSTIR's nor the AOV path tracer's.
 #
 # Cold is a fresh empty folder in CANDELA_OPTIX_CACHE, where the backend points OptiX's disk cache
 # (optixDeviceContextSetCacheLocation): OptiX then neither reads nor writes its default one (/var/tmp/OptixCache_$USER),
@@ -57,9 +58,13 @@ bench_run() {
   local wall json
   wall=$(timed "$cache" "$log" "${bench[@]}")
   json=$(tail -1 "$log.out")
-  printf '%s: backend_start_seconds %s, first_frame_seconds %s, wall %s s; %s\n' "$label" \
-    "$(json_number backend_start_seconds "$json")" "$(json_number first_frame_seconds "$json")" "$wall" \
-    "$(compiles "$log.err")"
+  local start first programs total
+  start=$(json_number backend_start_seconds "$json")
+  first=$(json_number first_frame_seconds "$json")
+  programs=$(json_number program_compile_seconds "$json")
+  total=$(awk -v a="$start" -v b="$first" 'BEGIN {printf "%.2f", a + b}')
+  echo "$label: first frame after $total s (backend_start_seconds $start + first_frame_seconds $first, of which" \
+    "program_compile_seconds $programs), wall $wall s; $(compiles "$log.err")"
   if [ "$label" = "cold 1" ]; then grep -m1 '^optix: .* driver ' "$log.err" || true; fi
 }
 

@@ -10,6 +10,10 @@ namespace candela::optix {
 namespace {
 
 using Kinds = std::vector<PipelineKind>;
+using Modules = std::vector<ProgramModule>;
+
+// What `render` and `bench` compile before their first frame: the modules of the pipelines that frame needs.
+Modules firstFrameModules(const ProgramUse& use) { return modulesOf(pipelinesNeeded(use)); }
 
 TEST(ProgramUse, AutoScheduleNeedsTheProbeAndItsLikelyChoice) {
   EXPECT_EQ(pipelinesNeeded({}), (Kinds{PipelineKind::Megakernel, PipelineKind::Wavefront}));
@@ -48,6 +52,34 @@ TEST(ProgramUse, ADenoiserIsLikelyAndSoIsSwitchingItOff) {
 TEST(ProgramUse, RestirPrefetchesNothing) {
   EXPECT_TRUE(pipelinesLikely({PathSchedule::Auto, false, true}).empty());
   EXPECT_TRUE(pipelinesLikely({PathSchedule::Auto, true, true}).empty());
+}
+
+TEST(ProgramUse, ADenoisedRenderCompilesTheAovPathTracerAndTheRayProgramsOnly) {
+  for (PathSchedule schedule : {PathSchedule::Auto, PathSchedule::Megakernel, PathSchedule::Wavefront})
+    EXPECT_EQ(firstFrameModules({schedule, true, false}), (Modules{ProgramModule::Rays, ProgramModule::AovMegakernel}));
+}
+
+TEST(ProgramUse, ARestirRenderCompilesRestirsModuleAndTheRayProgramsOnly) {
+  for (bool aovs : {false, true})
+    EXPECT_EQ(firstFrameModules({PathSchedule::Megakernel, aovs, true}),
+              (Modules{ProgramModule::Rays, ProgramModule::Restir}));
+}
+
+TEST(ProgramUse, AForcedScheduleCompilesItsModuleOnly) {
+  EXPECT_EQ(firstFrameModules({PathSchedule::Megakernel, false, false}),
+            (Modules{ProgramModule::Rays, ProgramModule::Megakernel}));
+  EXPECT_EQ(firstFrameModules({PathSchedule::Wavefront, false, false}),
+            (Modules{ProgramModule::Rays, ProgramModule::Wavefront}));
+}
+
+TEST(ProgramUse, TheAutoScheduleCompilesTheProbesModuleAndTheWavefrontsTogether) {
+  EXPECT_EQ(firstFrameModules({}), (Modules{ProgramModule::Rays, ProgramModule::Megakernel, ProgramModule::Wavefront}));
+}
+
+TEST(ProgramUse, EveryProgramIsLaunchedByThePipelineThatHoldsIt) {
+  for (size_t k = 0; k < kPipelineKinds; ++k)
+    for (RaygenProgram program : pipelinePrograms(PipelineKind(k)))
+      EXPECT_EQ(pipelineLaunching(program), PipelineKind(k));
 }
 
 }  // namespace

@@ -27,10 +27,14 @@ struct ProgramCompileProgress {
 
 constexpr double kProgramCompileQuietSeconds = 0.5;
 
-// When a GPU backend's constructor returns: once the programs of a first frame are compiled (Wait: render and
-// bench, which time the GPU), or at once, compiling them in the background (InBackground: the interactive front
-// ends, which render on the CPU meanwhile; Backend::startingCompile says how the compile goes).
-enum class ProgramStart { Wait, InBackground };
+// When a GPU backend compiles the programs of its first frame, and when its constructor returns:
+// - Wait: the constructor compiles those of a first frame of default settings and returns once they are compiled.
+// - InBackground: the constructor begins compiling them and returns at once (the interactive front ends, which
+//   render on the CPU meanwhile; Backend::startingCompile says how the compile goes).
+// - AtFirstFrame: the constructor compiles nothing; the first frame (or Backend::preparePrograms before it), when
+//   scene, settings and AOVs are final, compiles all the programs it needs at once and waits for them (render and
+//   bench, which time the GPU and would otherwise compile programs of settings they never render).
+enum class ProgramStart { Wait, InBackground, AtFirstFrame };
 
 // Called on a thread of the backend's, one call at a time; it must not throw.
 using ProgramCompileListener = std::function<void(const ProgramCompileProgress&)>;

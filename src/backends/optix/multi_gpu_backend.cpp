@@ -171,6 +171,12 @@ void MultiGpuBackend::onEveryDevice(const std::function<void(OptixBackend&)>& ta
   });
 }
 
+double MultiGpuBackend::preparePrograms() {
+  const auto start = std::chrono::steady_clock::now();
+  onEveryDevice([](OptixBackend& device) { device.preparePrograms(); });
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 void MultiGpuBackend::restart() {
   accumulated_ = 0;
   nextSample_ = 0;

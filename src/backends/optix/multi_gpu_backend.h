@@ -54,6 +54,8 @@ class MultiGpuBackend final : public Backend, public DeviceImage {
   Image readEmission() const override;
   void setAovsEnabled(bool enabled) override;
   bool aovsEnabled() const override;
+  // Every GPU's, at the same time.
+  double preparePrograms() override;
   AovImages readAovs() const override;
   // The first device's filters, on the combined film.
   const FilmFilters& filters() const override;

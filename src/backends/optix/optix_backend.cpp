@@ -60,50 +60,6 @@ class CudaEvent {
   cudaEvent_t event_ = nullptr;
 };
 
-// Which raygen programs share a pipeline: the path tracer runs much faster beside the record program than alone
-// or beside the raw-trace program (docs/performance-log.md, 'GPU (OptiX)'). OptiX decides per pipeline how to
-// compile traversal around each trace call, and does not document it, so this grouping is what the measurement
-// chose. The AOV path tracer gets a pipeline of its own, shaped
-// like the path tracer's (beside a copy of the record program), so that it leaves the path tracer's alone.
-// ReSTIR's launches have a pipeline of their own. Which of them a frame needs: program_use.h.
-
-const std::vector<RaygenProgram>& pipelinePrograms(PipelineKind kind) {
-  static const std::array<std::vector<RaygenProgram>, kPipelineKinds> programs = {{
-      {RaygenProgram::Render, RaygenProgram::Record},
-      {RaygenProgram::RawTrace},
-      {RaygenProgram::RenderWithAovs, RaygenProgram::Record},
-      {RaygenProgram::PathTrace, RaygenProgram::PathShade, RaygenProgram::PathTail, RaygenProgram::PathFinish},
-      {RaygenProgram::RestirCandidates, RaygenProgram::RestirShade, RaygenProgram::RestirShadeWithAovs},
-  }};
-  return programs[size_t(kind)];
-}
-
-// The pipeline that launches `program` (the record program's copy beside the AOV path tracer only shapes that
-// pipeline).
-PipelineKind pipelineLaunching(RaygenProgram program) {
-  switch (program) {
-    case RaygenProgram::Render:
-    case RaygenProgram::Record: return PipelineKind::Megakernel;
-    case RaygenProgram::RawTrace: return PipelineKind::RawTrace;
-    case RaygenProgram::RenderWithAovs: return PipelineKind::AovMegakernel;
-    case RaygenProgram::PathTrace:
-    case RaygenProgram::PathShade:
-    case RaygenProgram::PathTail:
-    case RaygenProgram::PathFinish: return PipelineKind::Wavefront;
-    case RaygenProgram::RestirCandidates:
-    case RaygenProgram::RestirShade:
-    case RaygenProgram::RestirShadeWithAovs: return PipelineKind::Restir;
-  }
-  throw std::logic_error("no pipeline launches the raygen program");
-}
-
-std::vector<RaygenProgram> programsOf(const std::vector<PipelineKind>& kinds) {
-  std::vector<RaygenProgram> programs;
-  for (PipelineKind kind : kinds)
-    programs.insert(programs.end(), pipelinePrograms(kind).begin(), pipelinePrograms(kind).end());
-  return programs;
-}
-
 // CANDELA_GPU_SCHEDULE: auto (the default), megakernel or wavefront (backends/path_schedule.h).
 PathSchedule requestedSchedule() {
   const char* text = std::getenv("CANDELA_GPU_SCHEDULE");
@@ -122,11 +78,16 @@ struct LaunchResult {
 
 struct OptixBackend::State {
   State(int deviceIndex, ProgramCompileListener listener, ProgramStart programs)
-      : context(deviceIndex), compileListener(std::move(listener)), programStart(programs) {}
+      : context(deviceIndex),
+        compileListener(std::move(listener)),
+        programStart(programs),
+        startDeferred(programs == ProgramStart::AtFirstFrame) {}
 
   OptixContext context;
   ProgramCompileListener compileListener;
   ProgramStart programStart;
+  // ProgramStart::AtFirstFrame before the first frame: what it renders may still change, so nothing compiles yet.
+  bool startDeferred;
   // Each compiled once something needs it (startNeeded), in the background.
   ProgramModules modules{context.get()};
   std::array<std::unique_ptr<Pipeline>, kPipelineKinds> pipelines;  // made when first needed (makePipelines)
@@ -185,7 +146,7 @@ struct OptixBackend::State {
 
   // Makes the pipelines of `kinds` not made yet, once their modules are compiled.
   void makePipelines(const std::vector<PipelineKind>& kinds) {
-    whileCompiling(modulesOf(programsOf(kinds)), [&] {
+    whileCompiling(modulesOf(kinds), [&] {
       for (PipelineKind kind : kinds)
         if (!pipelines[size_t(kind)])
           pipelines[size_t(kind)] = std::make_unique<Pipeline>(context.get(), modules, pipelinePrograms(kind));
@@ -196,20 +157,28 @@ struct OptixBackend::State {
   ProgramUse use() const {
     return {schedule.decided() ? schedule.next() : PathSchedule::Auto, aovsEnabled, settings.restir != RestirMode::Off};
   }
-  std::vector<ProgramModule> neededModules() const { return modulesOf(programsOf(pipelinesNeeded(use()))); }
+  std::vector<ProgramModule> neededModules() const { return modulesOf(pipelinesNeeded(use())); }
 
   // Begins compiling the modules the next frame needs, where they have not begun: called wherever what it renders
   // may have changed, so that the compile runs while the caller sets up the rest (or renders on the CPU).
   void startNeeded() {
+    if (startDeferred) return;
     for (ProgramModule module : neededModules()) modules.start(module, CompilePriority::Needed);
+  }
+
+  // Compiles the modules of the next frame's pipelines, all at once (each pipeline waits for its own, one after the
+  // other), and makes the pipelines.
+  void prepareNextFrame() {
+    startDeferred = false;
+    startNeeded();
+    makePipelines(pipelinesNeeded(use()));
   }
 
   // An interactive session (ProgramStart::InBackground) also compiles, after its first frame on the GPU, the
   // modules of what a control is likely to switch to, at low priority, so that the switch does not wait long.
   void prefetchLikely() {
     if (programStart != ProgramStart::InBackground) return;
-    for (ProgramModule module : modulesOf(programsOf(pipelinesLikely(use()))))
-      modules.start(module, CompilePriority::Prefetch);
+    for (ProgramModule module : modulesOf(pipelinesLikely(use()))) modules.start(module, CompilePriority::Prefetch);
   }
 
   // Waits for the compiles that have begun, which cannot be cancelled (OptiX destroys no module while its tasks
@@ -502,7 +471,7 @@ OptixBackend::OptixBackend(int deviceIndex, ProgramCompileListener compileProgre
       display_(std::make_unique<DeviceFilmDisplay>(*this)) {
   std::fprintf(stderr, "optix: %s\n", deviceDescription().c_str());
   setSettings(RenderSettings{});  // begins compiling the modules of a first frame of these settings
-  if (start == ProgramStart::Wait) state_->makePipelines(pipelinesNeeded(state_->use()));
+  if (start == ProgramStart::Wait) state_->prepareNextFrame();
 }
 
 OptixBackend::~OptixBackend() {
@@ -591,6 +560,7 @@ FrameStats OptixBackend::renderRows(uint32_t samplesPerPixel, uint32_t firstRow,
   if (!s.hasScene) throw std::logic_error("OptixBackend::render before setScene");
   if (size_t(firstRow) + rows > s.settings.height) throw std::logic_error("OptixBackend::renderRows past the image");
   if (rows == 0) return {};
+  if (s.startDeferred) s.prepareNextFrame();
   // Per-pixel ray counts are 32-bit: long requests are split into launches that cannot overflow them.
   const uint32_t maxPerLaunch = std::max(1u, 0xFFFFFFFFu / rayBoundPerSample(s.settings));
   FrameStats stats;
@@ -661,6 +631,12 @@ std::optional<ProgramCompileStatus> OptixBackend::startingCompile() const {
   if (s.modules.finished(needed)) return std::nullopt;
   const CompileTaskCounts tasks = s.modules.tasks(needed);
   return ProgramCompileStatus{tasks.done, tasks.known, s.modules.secondsCompiling(needed)};
+}
+
+double OptixBackend::preparePrograms() {
+  const auto start = std::chrono::steady_clock::now();
+  state_->prepareNextFrame();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 bool OptixBackend::aovsEnabled() const { return state_->aovsEnabled; }

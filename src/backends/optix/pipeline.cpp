@@ -19,7 +19,8 @@ namespace {
 const char* raygenName(RaygenProgram program) {
   switch (program) {
     case RaygenProgram::Render: return "__raygen__render";
-    case RaygenProgram::Record: return "__raygen__record";
+    case RaygenProgram::Record:
+    case RaygenProgram::RecordBesideAovs: return "__raygen__record";
     case RaygenProgram::RawTrace: return "__raygen__rawTrace";
     case RaygenProgram::RenderWithAovs: return "__raygen__renderWithAovs";
     case RaygenProgram::PathTrace: return "__raygen__pathTrace";
@@ -33,36 +34,11 @@ const char* raygenName(RaygenProgram program) {
   throw std::logic_error("no such raygen program");
 }
 
-ProgramModule moduleHolding(RaygenProgram program) {
-  switch (program) {
-    case RaygenProgram::Render:
-    case RaygenProgram::Record: return ProgramModule::Megakernel;
-    case RaygenProgram::RawTrace: return ProgramModule::RawTrace;
-    case RaygenProgram::RenderWithAovs: return ProgramModule::AovMegakernel;
-    case RaygenProgram::PathTrace:
-    case RaygenProgram::PathShade:
-    case RaygenProgram::PathTail:
-    case RaygenProgram::PathFinish: return ProgramModule::Wavefront;
-    case RaygenProgram::RestirCandidates:
-    case RaygenProgram::RestirShade:
-    case RaygenProgram::RestirShadeWithAovs: return ProgramModule::Restir;
-  }
-  throw std::logic_error("no such raygen program");
-}
-
 struct alignas(OPTIX_SBT_RECORD_ALIGNMENT) HeaderOnlyRecord {
   char header[OPTIX_SBT_RECORD_HEADER_SIZE];
 };
 
 }  // namespace
-
-std::vector<ProgramModule> modulesOf(const std::vector<RaygenProgram>& programs) {
-  std::vector<ProgramModule> modules{ProgramModule::Rays};
-  for (RaygenProgram program : programs)
-    if (std::find(modules.begin(), modules.end(), moduleHolding(program)) == modules.end())
-      modules.push_back(moduleHolding(program));
-  return modules;
-}
 
 Pipeline::Pipeline(OptixDeviceContext context, ProgramModules& modules, const std::vector<RaygenProgram>& programs)
     : programs_(programs) {

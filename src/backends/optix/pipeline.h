@@ -7,27 +7,9 @@
 
 #include "backends/optix/device_buffer.h"
 #include "backends/optix/program_modules.h"
+#include "backends/optix/program_use.h"
 
 namespace candela::optix {
-
-enum class RaygenProgram {
-  Render,
-  Record,
-  RawTrace,
-  RenderWithAovs,
-  // The wavefront schedule's (backends/optix/wavefront_schedule.h)
-  PathTrace,
-  PathShade,
-  PathTail,
-  PathFinish,
-  // ReSTIR DI's two launches per sample (kernel/restir/restir_passes.h)
-  RestirCandidates,
-  RestirShade,
-  RestirShadeWithAovs,
-};
-
-// The modules a pipeline of these raygen programs is made of: the ray programs' and each raygen program's, once.
-std::vector<ProgramModule> modulesOf(const std::vector<RaygenProgram>& programs);
 
 // A pipeline holding some of the raygen programs, with one shader binding table for each; the tables share
 // the miss and hit-group records.

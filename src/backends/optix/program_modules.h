@@ -14,19 +14,9 @@
 
 #include "backends/optix/compile_progress.h"
 #include "backends/optix/module_compilation.h"
+#include "backends/optix/program_use.h"
 
 namespace candela::optix {
-
-// A new module is an entry here and its OptiX-IR's in program_modules.cpp (moduleIr).
-enum class ProgramModule {
-  Rays,           // closest-hit, any-hit and miss programs, which every pipeline holds (device/ray_programs.cu)
-  Megakernel,     // device/megakernel_programs.cu
-  AovMegakernel,  // device/aov_megakernel_programs.cu
-  Wavefront,      // device/wavefront_programs.cu
-  RawTrace,       // device/raw_trace_programs.cu
-  Restir,         // device/restir_programs.cu
-};
-constexpr size_t kProgramModuleCount = size_t(ProgramModule::Restir) + 1;
 
 // Options every module and every pipeline over them must be created with.
 OptixPipelineCompileOptions pipelineCompileOptions();

@@ -1,6 +1,72 @@
 #include "backends/optix/program_use.h"
 
+#include <algorithm>
+#include <array>
+#include <stdexcept>
+
 namespace candela::optix {
+
+// Which raygen programs share a pipeline: the path tracer runs much faster beside the record program than alone
+// or beside the raw-trace program (docs/performance-log.md, 'GPU (OptiX)'). OptiX decides per pipeline how to
+// compile traversal around each trace call, and does not document it, so this grouping is what the measurement
+// chose. The AOV path tracer gets a pipeline of its own, shaped like the path tracer's (beside a copy of the record
+// program, compiled in its own module so that a render with AOVs does not compile the path tracer's module too),
+// so that it leaves the path tracer's alone. ReSTIR's launches have a pipeline of their own.
+const std::vector<RaygenProgram>& pipelinePrograms(PipelineKind kind) {
+  static const std::array<std::vector<RaygenProgram>, kPipelineKinds> programs = {{
+      {RaygenProgram::Render, RaygenProgram::Record},
+      {RaygenProgram::RawTrace},
+      {RaygenProgram::RenderWithAovs, RaygenProgram::RecordBesideAovs},
+      {RaygenProgram::PathTrace, RaygenProgram::PathShade, RaygenProgram::PathTail, RaygenProgram::PathFinish},
+      {RaygenProgram::RestirCandidates, RaygenProgram::RestirShade, RaygenProgram::RestirShadeWithAovs},
+  }};
+  return programs[size_t(kind)];
+}
+
+PipelineKind pipelineLaunching(RaygenProgram program) {
+  switch (program) {
+    case RaygenProgram::Render:
+    case RaygenProgram::Record: return PipelineKind::Megakernel;
+    case RaygenProgram::RawTrace: return PipelineKind::RawTrace;
+    case RaygenProgram::RenderWithAovs:
+    case RaygenProgram::RecordBesideAovs: return PipelineKind::AovMegakernel;
+    case RaygenProgram::PathTrace:
+    case RaygenProgram::PathShade:
+    case RaygenProgram::PathTail:
+    case RaygenProgram::PathFinish: return PipelineKind::Wavefront;
+    case RaygenProgram::RestirCandidates:
+    case RaygenProgram::RestirShade:
+    case RaygenProgram::RestirShadeWithAovs: return PipelineKind::Restir;
+  }
+  throw std::logic_error("no pipeline launches the raygen program");
+}
+
+ProgramModule moduleHolding(RaygenProgram program) {
+  switch (program) {
+    case RaygenProgram::Render:
+    case RaygenProgram::Record: return ProgramModule::Megakernel;
+    case RaygenProgram::RawTrace: return ProgramModule::RawTrace;
+    case RaygenProgram::RenderWithAovs:
+    case RaygenProgram::RecordBesideAovs: return ProgramModule::AovMegakernel;
+    case RaygenProgram::PathTrace:
+    case RaygenProgram::PathShade:
+    case RaygenProgram::PathTail:
+    case RaygenProgram::PathFinish: return ProgramModule::Wavefront;
+    case RaygenProgram::RestirCandidates:
+    case RaygenProgram::RestirShade:
+    case RaygenProgram::RestirShadeWithAovs: return ProgramModule::Restir;
+  }
+  throw std::logic_error("no module holds the raygen program");
+}
+
+std::vector<ProgramModule> modulesOf(const std::vector<PipelineKind>& kinds) {
+  std::vector<ProgramModule> modules{ProgramModule::Rays};
+  for (PipelineKind kind : kinds)
+    for (RaygenProgram program : pipelinePrograms(kind))
+      if (std::find(modules.begin(), modules.end(), moduleHolding(program)) == modules.end())
+        modules.push_back(moduleHolding(program));
+  return modules;
+}
 
 std::vector<PipelineKind> pipelinesNeeded(const ProgramUse& use) {
   if (use.restir) return {PipelineKind::Restir};  // with or without AOVs

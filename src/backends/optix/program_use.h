@@ -1,7 +1,7 @@
 #pragma once
-// Which of the GPU backend's pipelines its next frame needs, and which it will likely need soon, from what it
-// renders: their modules are what the backend compiles (program_modules.h), the needed ones at once, the likely
-// ones in the background. Free of OptiX types, so that it is tested without a GPU.
+// Which of the GPU backend's pipelines, and so which of its modules, its next frame needs, and which it will likely
+// need soon, from what it renders: those modules are what the backend compiles (program_modules.h), the needed ones
+// at once, the likely ones in the background. Free of OptiX types, so that it is tested without a GPU.
 #include <cstddef>
 #include <vector>
 
@@ -9,10 +9,47 @@
 
 namespace candela::optix {
 
-// Which raygen programs share a pipeline (optix_backend.cpp says why they are grouped so). ReSTIR's launches, the
+// The modules of the device programs: each .cu file of device/ is one (program_modules.h). A new module is an entry
+// here and its OptiX-IR's in program_modules.cpp (moduleIr).
+enum class ProgramModule {
+  Rays,           // closest-hit, any-hit and miss programs, which every pipeline holds (device/ray_programs.cu)
+  Megakernel,     // device/megakernel_programs.cu
+  AovMegakernel,  // device/aov_megakernel_programs.cu
+  Wavefront,      // device/wavefront_programs.cu
+  RawTrace,       // device/raw_trace_programs.cu
+  Restir,         // device/restir_programs.cu
+};
+constexpr size_t kProgramModuleCount = size_t(ProgramModule::Restir) + 1;
+
+enum class RaygenProgram {
+  Render,
+  Record,
+  // The record program's copy in the AOV path tracer's module: it only shapes that pipeline (program_use.cpp).
+  RecordBesideAovs,
+  RawTrace,
+  RenderWithAovs,
+  // The wavefront schedule's (backends/optix/wavefront_schedule.h)
+  PathTrace,
+  PathShade,
+  PathTail,
+  PathFinish,
+  // ReSTIR DI's two launches per sample (kernel/restir/restir_passes.h)
+  RestirCandidates,
+  RestirShade,
+  RestirShadeWithAovs,
+};
+
+// Which raygen programs share a pipeline (program_use.cpp says why they are grouped so). ReSTIR's launches, the
 // AOV path tracer and the raw trace each have a pipeline of their own.
 enum class PipelineKind { Megakernel, RawTrace, AovMegakernel, Wavefront, Restir };
 constexpr size_t kPipelineKinds = 5;
+
+const std::vector<RaygenProgram>& pipelinePrograms(PipelineKind kind);
+// The pipeline that launches `program`.
+PipelineKind pipelineLaunching(RaygenProgram program);
+ProgramModule moduleHolding(RaygenProgram program);
+// The modules the pipelines of `kinds` are made of: the ray programs' and each raygen program's, once.
+std::vector<ProgramModule> modulesOf(const std::vector<PipelineKind>& kinds);
 
 // What the next frames render.
 struct ProgramUse {
