@@ -65,7 +65,8 @@ class CudaEvent {
 // compile traversal around each trace call, and does not document it, so this grouping is what the measurement
 // chose. The AOV path tracer gets a pipeline of its own, shaped
 // like the path tracer's (beside a copy of the record program), so that it leaves the path tracer's alone.
-// ReSTIR's launches have a pipeline of their own. Which of them a frame needs: program_use.h.
+// ReSTIR's launches have a pipeline of their own, and so has the megakernel of scenes with participating media.
+// Which of them a frame needs: program_use.h.
 
 const std::vector<RaygenProgram>& pipelinePrograms(PipelineKind kind) {
   static const std::array<std::vector<RaygenProgram>, kPipelineKinds> programs = {{
@@ -74,6 +75,7 @@ const std::vector<RaygenProgram>& pipelinePrograms(PipelineKind kind) {
       {RaygenProgram::RenderWithAovs, RaygenProgram::Record},
       {RaygenProgram::PathTrace, RaygenProgram::PathShade, RaygenProgram::PathTail, RaygenProgram::PathFinish},
       {RaygenProgram::RestirCandidates, RaygenProgram::RestirShade, RaygenProgram::RestirShadeWithAovs},
+      {RaygenProgram::RenderMedia, RaygenProgram::RenderMediaWithAovs},
   }};
   return programs[size_t(kind)];
 }
@@ -93,6 +95,8 @@ PipelineKind pipelineLaunching(RaygenProgram program) {
     case RaygenProgram::RestirCandidates:
     case RaygenProgram::RestirShade:
     case RaygenProgram::RestirShadeWithAovs: return PipelineKind::Restir;
+    case RaygenProgram::RenderMedia:
+    case RaygenProgram::RenderMediaWithAovs: return PipelineKind::Media;
   }
   throw std::logic_error("no pipeline launches the raygen program");
 }
@@ -194,7 +198,8 @@ struct OptixBackend::State {
 
   // What the next frame renders, and so which pipelines it launches (program_use.h).
   ProgramUse use() const {
-    return {schedule.decided() ? schedule.next() : PathSchedule::Auto, aovsEnabled, settings.restir != RestirMode::Off};
+    return {schedule.decided() ? schedule.next() : PathSchedule::Auto, aovsEnabled, settings.restir != RestirMode::Off,
+            !flat.media.empty()};
   }
   std::vector<ProgramModule> neededModules() const { return modulesOf(programsOf(pipelinesNeeded(use()))); }
 
@@ -594,6 +599,13 @@ FrameStats OptixBackend::renderRows(uint32_t samplesPerPixel, uint32_t firstRow,
   // Per-pixel ray counts are 32-bit: long requests are split into launches that cannot overflow them.
   const uint32_t maxPerLaunch = std::max(1u, 0xFFFFFFFFu / rayBoundPerSample(s.settings));
   FrameStats stats;
+  // Scenes with participating media render on a megakernel of their own (device/media_programs.cu).
+  const bool media = !s.flat.media.empty();
+  if (media && s.settings.restir != RestirMode::Off)
+    throw std::invalid_argument("--restir does not render participating media: use --restir off");
+  if (media && s.schedule.requested() == PathSchedule::Wavefront)
+    throw std::invalid_argument(
+        "the wavefront schedule does not render participating media: unset CANDELA_GPU_SCHEDULE=wavefront");
   if (s.settings.restir != RestirMode::Off) {
     // Spatial reuse reads the neighbours' reservoirs of the same launch: a band of rows would read rows no launch
     // of this device wrote.
@@ -615,7 +627,10 @@ FrameStats OptixBackend::renderRows(uint32_t samplesPerPixel, uint32_t firstRow,
     p.firstSample = s.nextSample;
     p.samplesPerPixel = std::min(samplesPerPixel - done, maxPerLaunch);
     p.firstRow = firstRow;
-    LaunchResult r = s.aovsEnabled ? s.launch(RaygenProgram::RenderWithAovs, p, rows) : s.launchPaths(p, rows);
+    LaunchResult r =
+        media ? s.launch(s.aovsEnabled ? RaygenProgram::RenderMediaWithAovs : RaygenProgram::RenderMedia, p, rows)
+        : s.aovsEnabled ? s.launch(RaygenProgram::RenderWithAovs, p, rows)
+                        : s.launchPaths(p, rows);
     stats.rays += r.totals.rays;
     stats.invalidSamples += r.totals.invalidSamples;
     stats.deviceMilliseconds += r.milliseconds;

@@ -29,6 +29,8 @@ const char* raygenName(RaygenProgram program) {
     case RaygenProgram::RestirCandidates: return "__raygen__restirCandidates";
     case RaygenProgram::RestirShade: return "__raygen__restirShade";
     case RaygenProgram::RestirShadeWithAovs: return "__raygen__restirShadeWithAovs";
+    case RaygenProgram::RenderMedia: return "__raygen__renderMedia";
+    case RaygenProgram::RenderMediaWithAovs: return "__raygen__renderMediaWithAovs";
   }
   throw std::logic_error("no such raygen program");
 }
@@ -46,6 +48,8 @@ ProgramModule moduleHolding(RaygenProgram program) {
     case RaygenProgram::RestirCandidates:
     case RaygenProgram::RestirShade:
     case RaygenProgram::RestirShadeWithAovs: return ProgramModule::Restir;
+    case RaygenProgram::RenderMedia:
+    case RaygenProgram::RenderMediaWithAovs: return ProgramModule::Media;
   }
   throw std::logic_error("no such raygen program");
 }

@@ -24,6 +24,9 @@ enum class RaygenProgram {
   RestirCandidates,
   RestirShade,
   RestirShadeWithAovs,
+  // The megakernel of scenes with participating media, without and with the AOVs
+  RenderMedia,
+  RenderMediaWithAovs,
 };
 
 // The modules a pipeline of these raygen programs is made of: the ray programs' and each raygen program's, once.

@@ -25,8 +25,9 @@ enum class ProgramModule {
   Wavefront,      // device/wavefront_programs.cu
   RawTrace,       // device/raw_trace_programs.cu
   Restir,         // device/restir_programs.cu
+  Media,          // device/media_programs.cu
 };
-constexpr size_t kProgramModuleCount = size_t(ProgramModule::Restir) + 1;
+constexpr size_t kProgramModuleCount = size_t(ProgramModule::Media) + 1;
 
 // Options every module and every pipeline over them must be created with.
 OptixPipelineCompileOptions pipelineCompileOptions();

@@ -3,6 +3,7 @@
 namespace candela::optix {
 
 std::vector<PipelineKind> pipelinesNeeded(const ProgramUse& use) {
+  if (use.media) return {PipelineKind::Media};    // with or without AOVs
   if (use.restir) return {PipelineKind::Restir};  // with or without AOVs
   if (use.aovs) return {PipelineKind::AovMegakernel};
   switch (use.schedule) {
@@ -14,7 +15,7 @@ std::vector<PipelineKind> pipelinesNeeded(const ProgramUse& use) {
 }
 
 std::vector<PipelineKind> pipelinesLikely(const ProgramUse& use) {
-  if (use.restir) return {};
+  if (use.restir || use.media) return {};
   if (use.aovs) return pipelinesNeeded({use.schedule, false, false});
   return {PipelineKind::AovMegakernel};
 }

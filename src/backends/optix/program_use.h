@@ -10,9 +10,10 @@
 namespace candela::optix {
 
 // Which raygen programs share a pipeline (optix_backend.cpp says why they are grouped so). ReSTIR's launches, the
-// AOV path tracer and the raw trace each have a pipeline of their own.
-enum class PipelineKind { Megakernel, RawTrace, AovMegakernel, Wavefront, Restir };
-constexpr size_t kPipelineKinds = 5;
+// AOV path tracer, the raw trace and the path tracer of scenes with participating media (with and without AOVs)
+// each have a pipeline of their own.
+enum class PipelineKind { Megakernel, RawTrace, AovMegakernel, Wavefront, Restir, Media };
+constexpr size_t kPipelineKinds = 6;
 
 // What the next frames render.
 struct ProgramUse {
@@ -21,6 +22,7 @@ struct ProgramUse {
   PathSchedule schedule = PathSchedule::Auto;
   bool aovs = false;
   bool restir = false;
+  bool media = false;  // the scene has participating media: their megakernel renders, whatever the schedule
 };
 
 // The pipelines the next frame launches.
