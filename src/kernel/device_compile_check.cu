@@ -17,6 +17,14 @@ __global__ void compileKernelForDevice(SceneView scene, Camera camera, RenderSet
   out[y * settings.width + x] = r.radiance;
 }
 
+// The path through participating media (kernel/media/volume_path.h), with the denoisers' guides.
+__global__ void compileMediaPathForDevice(SceneView scene, Camera camera, RenderSettings settings, Vec3* out) {
+  uint32_t x = blockIdx.x * blockDim.x + threadIdx.x, y = blockIdx.y * blockDim.y + threadIdx.y;
+  if (x >= settings.width || y >= settings.height) return;
+  PathResult r = renderPixelSample<true, true>(scene, MissEverythingTracer{}, camera, settings, x, y, 0);
+  out[y * settings.width + x] = r.radiance;
+}
+
 // ReSTIR DI's two passes (kernel/restir/restir_passes.h), each as one launch over the image would run it.
 __global__ void compileRestirCandidatesForDevice(SceneView scene, Camera camera, RenderSettings settings,
                                                  RestirView restir, uint32_t* rays) {

@@ -1,5 +1,6 @@
 #pragma once
 #include "kernel/camera.h"
+#include "kernel/media/volume_path.h"
 #include "kernel/path_vertex.h"
 
 namespace candela {
@@ -46,12 +47,19 @@ CANDELA_FN_ALWAYS_INLINE void followPath(const SceneView& scene, const Tracer& t
 // compiled in, so paths that do not need the guides pay nothing for them.
 // `cone` is the pixel's footprint about `ray`; textures are filtered over it as long as the path follows it
 // through delta bounces (kernel/ray_cone.h). A zero cone reads the finest texture level everywhere.
-template <bool kWithAovs = false, class Tracer>
+// With kWithMedia the path follows the participating media the camera and the instances' interfaces put its rays
+// in (kernel/media/volume_path.h); scenes without media (SceneView::mediumCount 0) are rendered without, so that
+// they do not compile that code.
+template <bool kWithAovs = false, bool kWithMedia = false, class Tracer>
 CANDELA_HD PathResult tracePath(const SceneView& scene, const Tracer& tracer, Ray ray, PathSampler& sampler,
                                 const RenderSettings& settings, RayCone cone = {}) {
   PathState s = startPath(cone);
   PathAovState a;
-  followPath<kWithAovs, false>(scene, tracer, settings, s, a, sampler, ray, passThroughBits(scene, sampler));
+  if constexpr (kWithMedia)
+    followPathInMedia<kWithAovs>(scene, tracer, settings, s, a, sampler, ray, passThroughBits(scene, sampler),
+                                 scene.cameraMedium);
+  else
+    followPath<kWithAovs, false>(scene, tracer, settings, s, a, sampler, ray, passThroughBits(scene, sampler));
   PathResult result;
   result.radiance = s.radiance;
   result.rays = s.rays;
@@ -84,13 +92,14 @@ CANDELA_FN PathResult droppedSample() {
 }
 
 // One sample of pixel (x, y): a jittered camera ray, then the path.
-template <bool kWithAovs = false, class Tracer>
+template <bool kWithAovs = false, bool kWithMedia = false, class Tracer>
 CANDELA_HD PathResult renderPixelSample(const SceneView& scene, const Tracer& tracer, const Camera& camera,
                                         const RenderSettings& settings, uint32_t x, uint32_t y, uint32_t sampleIndex) {
   PathSampler sampler(y * settings.width + x, sampleIndex, settings.seed, settings.sampler);
   const Ray ray = pixelSampleRay(camera, settings, x, y, sampler);
   if (!isTraceableCameraRay(ray)) return droppedSample();
-  return tracePath<kWithAovs>(scene, tracer, ray, sampler, settings, cameraRayCone(camera, settings.height));
+  return tracePath<kWithAovs, kWithMedia>(scene, tracer, ray, sampler, settings,
+                                          cameraRayCone(camera, settings.height));
 }
 
 }  // namespace candela

@@ -94,6 +94,12 @@ struct Material {
   // none, as for a thin-walled surface.
   Vec3 absorption{0.0f, 0.0f, 0.0f};
 
+  // pbrt's `interface` material: the surface only bounds participating media (the instances' MediumInterface) and
+  // rays cross it unchanged. Its coverage is an alpha mask of opacity 0, so that the backends ask passesThrough
+  // about it: where a scene has no media it is a cut-out that lets every ray through; in a scene with media the
+  // integrator meets it and crosses it into the medium on the far side (kernel/pass_through.h).
+  uint32_t interfaceOnly = 0;
+
   // Coverage.
   AlphaMode alphaMode = AlphaMode::Opaque;
   float opacity = 1.0f;

@@ -32,12 +32,16 @@ CANDELA_FN bool meetsBackFace(const SceneView& scene, const Hit& hit, Vec3 direc
 // material (`backFace()` says whether the ray meets one; it is asked only for such materials), a texel under
 // the alpha cutoff, or (alpha blending) with probability 1 - alpha, which is stochastic transparency:
 // unbiased for the blended result.
+// A medium's boundary (Material::interfaceOnly, an alpha mask, so that the backends ask here) passes where the
+// scene has no media; in a scene with media the integrator needs the hit, to follow the ray into the medium
+// beyond (kernel/media/volume_path.h).
 // `randomBits` are drawn once per ray query; hashed with the hit's ids they give each surface the ray meets
 // its own decision, and the same one however often and in whatever order traversal reports the hit.
 template <class BackFace>
 CANDELA_FN bool passesThrough(const SceneView& scene, const Hit& hit, BackFace&& backFace, uint32_t randomBits) {
   const HitTriangle tri = hitTriangle(scene, hit);
   const Material& m = scene.materials[scene.triangleMaterials[tri.triangle]];
+  if (m.interfaceOnly) return scene.mediumCount == 0;
   if (cullsBackFaces(m) && backFace()) return true;
   if (!usesAlpha(m)) return false;
   const Vec2 uv = tri.mesh->hasUvs ? interpolate(scene.uvs, tri) : Vec2{};

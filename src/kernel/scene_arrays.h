@@ -41,6 +41,8 @@
   X(MeshRecord, meshes, WithScene, uncounted, "mesh records")                                            \
   X(InstanceRecord, instances, WithInstances, uncounted, "instance records")                             \
   X(Material, materials, WithMaterials, uncounted, "materials")                                          \
+  /* homogeneous participating media, which instances' MediumInterface and the camera name by index */   \
+  X(Medium, media, WithScene, counted(mediumCount), "the participating media")                           \
   /* the emissive triangles that emit something on average, in world space */                            \
   X(LightTriangle, lights, WithInstances, counted(lightCount), "the light table")                        \
   /* the point and spot lights first, then the directional ones (SceneView) */                           \

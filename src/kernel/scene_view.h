@@ -6,6 +6,7 @@
 #include "kernel/environment.h"
 #include "kernel/light_bounds.h"
 #include "kernel/material.h"
+#include "kernel/media/medium.h"
 #include "kernel/scene_arrays.h"
 #include "kernel/texture.h"
 
@@ -26,7 +27,8 @@ struct MeshRecord {
 struct InstanceRecord {
   uint32_t meshId = 0;
   Affine3x4 objectToWorld;
-  Affine3x4 normalToWorld;  // inverse transpose of objectToWorld's linear part
+  Affine3x4 normalToWorld;     // inverse transpose of objectToWorld's linear part
+  MediumInterface media = {};  // indices into SceneView::media
 };
 
 // One emissive triangle, in world space, for next-event estimation.
@@ -89,6 +91,7 @@ struct SceneView {
   float directionalSelectProbability = 0.0f;  // of each directional light
   float boundedSelectProbability = 0.0f;      // of the bounded lights together
   EnvironmentView environment;
+  uint32_t cameraMedium = kNoMedium;  // the medium camera rays start in
 };
 
 // Sets the length SceneView holds of a listed array, where it holds one (CANDELA_SCENE_ARRAY_COUNT_FIELD).

@@ -268,7 +268,9 @@ FlatScene FlatScene::build(const Scene& scene) {
                                   mesh.triangleMaterials.end());
   }
   for (const Instance& inst : scene.instances)
-    flat.instances.push_back({inst.meshId, inst.objectToWorld, normalTransform(inst.objectToWorld)});
+    flat.instances.push_back({inst.meshId, inst.objectToWorld, normalTransform(inst.objectToWorld), inst.media});
+  flat.media = scene.media;
+  flat.cameraMedium = scene.cameraMedium;
   collectPunctualLights(scene, flat);
   packTextures(scene, flat);
   buildLightTable(scene, flat);
@@ -347,6 +349,7 @@ SceneView FlatScene::hostView() const {
   v.directionalSelectProbability = directionalSelectProbability;
   v.boundedSelectProbability = boundedSelectProbability;
   v.environment = environment;
+  v.cameraMedium = cameraMedium;
   if (!environmentTexels.empty()) {
     v.environment.texels = environmentTexels.data();
     environmentDistribution.attach(v.environment);

@@ -20,6 +20,7 @@ struct FlatScene {
   std::vector<uint8_t> texelBytes;  // every 8-bit texture back to back, each with its mip levels
   std::vector<float> texelFloats;   // every float texture back to back, each with its mip levels
   bool hasCutouts = false;
+  uint32_t cameraMedium = kNoMedium;       // into `media`
   uint32_t boundedPunctualLightCount = 0;  // the point and spot lights at the front of punctualLights
   float inverseLightPower = 0.0f;
   float environmentSelectProbability = 0.0f;

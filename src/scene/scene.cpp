@@ -66,8 +66,17 @@ void validateScene(const Scene& scene) {
     for (Vec3 p : mesh.positions)
       if (!finite(p)) fail("mesh '" + mesh.name + "' has a non-finite vertex position");
   }
-  for (const Instance& inst : scene.instances)
+  auto mediumExists = [&](uint32_t medium) { return medium == kNoMedium || medium < scene.media.size(); };
+  for (const Instance& inst : scene.instances) {
     if (inst.meshId >= scene.meshes.size()) fail("an instance refers to a missing mesh");
+    if (!mediumExists(inst.media.inside) || !mediumExists(inst.media.outside))
+      fail("an instance bounds a missing medium");
+  }
+  if (!mediumExists(scene.cameraMedium)) fail("the camera is in a missing medium");
+  auto nonNegative = [](Vec3 v) { return finite(v) && v.x >= 0.0f && v.y >= 0.0f && v.z >= 0.0f; };
+  for (const Medium& m : scene.media)
+    if (!nonNegative(m.sigmaA) || !nonNegative(m.sigmaS) || !nonNegative(m.emission) || !(std::fabs(m.g) < 1.0f))
+      fail("a medium has negative or non-finite coefficients or emission, or |g| not below 1");
   bool anyMix = false;
   for (const Material& m : scene.materials) {
     if (!finite(m.baseColor) || !finite(m.emission)) fail("a material has non-finite parameters");

@@ -30,6 +30,7 @@ struct Mesh {
 struct Instance {
   uint32_t meshId = 0;
   Affine3x4 objectToWorld;
+  MediumInterface media = {};  // into Scene::media; none on either side by default
 };
 
 // How a camera projects the scene onto the image. A byte, so that any value read from a cache file is defined.
@@ -101,7 +102,9 @@ struct Scene {
   std::vector<Texture> textures;
   Environment environment;
   std::vector<PunctualLight> punctualLights;  // in world space
+  std::vector<Medium> media;                  // homogeneous participating media
   CameraDescription camera;
+  uint32_t cameraMedium = kNoMedium;  // the medium the camera is in, an index into `media`
   RenderHints renderHints;
   bool cameraMissing = false;        // the input had no camera: `camera` is to be framed around the scene's bounds
   std::vector<NamedCamera> cameras;  // every camera the input defines, in order

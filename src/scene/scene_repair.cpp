@@ -316,7 +316,7 @@ void repairInstances(Scene& scene, const std::vector<MeshRepair>& repairs, const
       if (!newInstanceIndex.empty()) newInstanceIndex[i] = ~0u;
       continue;
     }
-    scene.instances[out++] = {mesh, inst.objectToWorld};
+    scene.instances[out++] = {mesh, inst.objectToWorld, inst.media};
   }
   scene.instances.resize(out);
   if (!newInstanceIndex.empty()) scene.animation.renumberInstances(newInstanceIndex);

@@ -34,6 +34,15 @@ TEST(ProgramUse, RestirNeedsItsOwnPipelineWithOrWithoutAovs) {
   EXPECT_EQ(pipelinesNeeded({PathSchedule::Megakernel, true, true}), Kinds{PipelineKind::Restir});
 }
 
+TEST(ProgramUse, MediaNeedTheirOwnPipelineAndPrefetchNothing) {
+  for (bool aovs : {false, true})
+    for (PathSchedule schedule : {PathSchedule::Auto, PathSchedule::Megakernel, PathSchedule::Wavefront}) {
+      const ProgramUse use{schedule, aovs, false, true};
+      EXPECT_EQ(pipelinesNeeded(use), Kinds{PipelineKind::Media});
+      EXPECT_TRUE(pipelinesLikely(use).empty());
+    }
+}
+
 TEST(ProgramUse, NothingNeedsTheRawTrace) {
   for (bool aovs : {false, true})
     for (bool restir : {false, true})

@@ -95,9 +95,14 @@ void CpuBackend::restart(bool keepRestirHistory) {
 }
 
 FrameStats CpuBackend::render(uint32_t samplesPerPixel) {
+  const bool media = !flat_.media.empty();
+  if (settings_.restir != RestirMode::Off && media)
+    throw std::invalid_argument("--restir does not render participating media: use --restir off");
   if (settings_.restir != RestirMode::Off)
     return aovsEnabled_ ? renderRestirSamples<true>(samplesPerPixel) : renderRestirSamples<false>(samplesPerPixel);
-  return aovsEnabled_ ? renderSamples<true>(samplesPerPixel) : renderSamples<false>(samplesPerPixel);
+  if (media)
+    return aovsEnabled_ ? renderSamples<true, true>(samplesPerPixel) : renderSamples<false, true>(samplesPerPixel);
+  return aovsEnabled_ ? renderSamples<true, false>(samplesPerPixel) : renderSamples<false, false>(samplesPerPixel);
 }
 
 // The film holds `samplesPerPixel` more samples; the threads' counts of them, summed.
@@ -112,7 +117,7 @@ FrameStats CpuBackend::finishSamples(uint32_t samplesPerPixel, tbb::combinable<F
   return total;
 }
 
-template <bool kWithAovs>
+template <bool kWithAovs, bool kWithMedia>
 FrameStats CpuBackend::renderSamples(uint32_t samplesPerPixel) {
   const SceneView scene = flat_.hostView();
   const EmbreeTracer tracer(embree_.topLevel(), scene);
@@ -126,7 +131,8 @@ FrameStats CpuBackend::renderSamples(uint32_t samplesPerPixel) {
                         for (uint32_t x = tile.cols().begin(); x < tile.cols().end(); ++x) {
                           const PixelTally tally = accumulatePixel<kWithAovs>(
                               film, size_t(y) * settings_.width + x, firstSample, samplesPerPixel, [&](uint32_t s) {
-                                return renderPixelSample<kWithAovs>(scene, tracer, camera_, settings_, x, y, s);
+                                return renderPixelSample<kWithAovs, kWithMedia>(scene, tracer, camera_, settings_, x, y,
+                                                                                s);
                               });
                           local.rays += tally.rays;
                           local.invalidSamples += tally.invalidSamples;

@@ -47,7 +47,9 @@ class CpuBackend final : public Backend {
  private:
   // Restarts the film; ReSTIR's history survives only a camera move (setCamera), which its temporal reuse follows.
   void restart(bool keepRestirHistory = false);
-  template <bool kWithAovs>
+  // kWithMedia: the scene has participating media, whose path (kernel/media/volume_path.h) scenes without them
+  // do not run.
+  template <bool kWithAovs, bool kWithMedia>
   FrameStats renderSamples(uint32_t samplesPerPixel);
   template <bool kWithAovs>
   FrameStats renderRestirSamples(uint32_t samplesPerPixel);

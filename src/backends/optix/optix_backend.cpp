@@ -155,7 +155,8 @@ struct OptixBackend::State {
 
   // What the next frame renders, and so which pipelines it launches (program_use.h).
   ProgramUse use() const {
-    return {schedule.decided() ? schedule.next() : PathSchedule::Auto, aovsEnabled, settings.restir != RestirMode::Off};
+    return {schedule.decided() ? schedule.next() : PathSchedule::Auto, aovsEnabled, settings.restir != RestirMode::Off,
+            !flat.media.empty()};
   }
   std::vector<ProgramModule> neededModules() const { return modulesOf(pipelinesNeeded(use())); }
 
@@ -564,6 +565,13 @@ FrameStats OptixBackend::renderRows(uint32_t samplesPerPixel, uint32_t firstRow,
   // Per-pixel ray counts are 32-bit: long requests are split into launches that cannot overflow them.
   const uint32_t maxPerLaunch = std::max(1u, 0xFFFFFFFFu / rayBoundPerSample(s.settings));
   FrameStats stats;
+  // Scenes with participating media render on a megakernel of their own (device/media_programs.cu).
+  const bool media = !s.flat.media.empty();
+  if (media && s.settings.restir != RestirMode::Off)
+    throw std::invalid_argument("--restir does not render participating media: use --restir off");
+  if (media && s.schedule.requested() == PathSchedule::Wavefront)
+    throw std::invalid_argument(
+        "the wavefront schedule does not render participating media: unset CANDELA_GPU_SCHEDULE=wavefront");
   if (s.settings.restir != RestirMode::Off) {
     // Spatial reuse reads the neighbours' reservoirs of the same launch: a band of rows would read rows no launch
     // of this device wrote.
@@ -585,7 +593,10 @@ FrameStats OptixBackend::renderRows(uint32_t samplesPerPixel, uint32_t firstRow,
     p.firstSample = s.nextSample;
     p.samplesPerPixel = std::min(samplesPerPixel - done, maxPerLaunch);
     p.firstRow = firstRow;
-    LaunchResult r = s.aovsEnabled ? s.launch(RaygenProgram::RenderWithAovs, p, rows) : s.launchPaths(p, rows);
+    LaunchResult r =
+        media ? s.launch(s.aovsEnabled ? RaygenProgram::RenderMediaWithAovs : RaygenProgram::RenderMedia, p, rows)
+        : s.aovsEnabled ? s.launch(RaygenProgram::RenderWithAovs, p, rows)
+                        : s.launchPaths(p, rows);
     stats.rays += r.totals.rays;
     stats.invalidSamples += r.totals.invalidSamples;
     stats.deviceMilliseconds += r.milliseconds;

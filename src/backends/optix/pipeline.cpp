@@ -30,6 +30,8 @@ const char* raygenName(RaygenProgram program) {
     case RaygenProgram::RestirCandidates: return "__raygen__restirCandidates";
     case RaygenProgram::RestirShade: return "__raygen__restirShade";
     case RaygenProgram::RestirShadeWithAovs: return "__raygen__restirShadeWithAovs";
+    case RaygenProgram::RenderMedia: return "__raygen__renderMedia";
+    case RaygenProgram::RenderMediaWithAovs: return "__raygen__renderMediaWithAovs";
   }
   throw std::logic_error("no such raygen program");
 }

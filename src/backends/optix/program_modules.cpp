@@ -4,9 +4,9 @@
 
 // The device programs as OptiX-IR, embedded at build time (CMakeLists.txt).
 extern const unsigned char candelaRayPrograms[], candelaMegakernelPrograms[], candelaAovMegakernelPrograms[],
-    candelaWavefrontPrograms[], candelaRawTracePrograms[], candelaRestirPrograms[];
+    candelaWavefrontPrograms[], candelaRawTracePrograms[], candelaRestirPrograms[], candelaMediaPrograms[];
 extern const size_t candelaRayProgramsSize, candelaMegakernelProgramsSize, candelaAovMegakernelProgramsSize,
-    candelaWavefrontProgramsSize, candelaRawTraceProgramsSize, candelaRestirProgramsSize;
+    candelaWavefrontProgramsSize, candelaRawTraceProgramsSize, candelaRestirProgramsSize, candelaMediaProgramsSize;
 
 namespace candela::optix {
 
@@ -20,6 +20,7 @@ EmbeddedIr moduleIr(ProgramModule module) {
     case ProgramModule::Wavefront: return {candelaWavefrontPrograms, candelaWavefrontProgramsSize};
     case ProgramModule::RawTrace: return {candelaRawTracePrograms, candelaRawTraceProgramsSize};
     case ProgramModule::Restir: return {candelaRestirPrograms, candelaRestirProgramsSize};
+    case ProgramModule::Media: return {candelaMediaPrograms, candelaMediaProgramsSize};
   }
   return {nullptr, 0};
 }

@@ -11,7 +11,8 @@ namespace candela::optix {
 // compile traversal around each trace call, and does not document it, so this grouping is what the measurement
 // chose. The AOV path tracer gets a pipeline of its own, shaped like the path tracer's (beside a copy of the record
 // program, compiled in its own module so that a render with AOVs does not compile the path tracer's module too),
-// so that it leaves the path tracer's alone. ReSTIR's launches have a pipeline of their own.
+// so that it leaves the path tracer's alone. ReSTIR's launches have a pipeline of their own, and so has the megakernel
+// of scenes with participating media.
 const std::vector<RaygenProgram>& pipelinePrograms(PipelineKind kind) {
   static const std::array<std::vector<RaygenProgram>, kPipelineKinds> programs = {{
       {RaygenProgram::Render, RaygenProgram::Record},
@@ -19,6 +20,7 @@ const std::vector<RaygenProgram>& pipelinePrograms(PipelineKind kind) {
       {RaygenProgram::RenderWithAovs, RaygenProgram::RecordBesideAovs},
       {RaygenProgram::PathTrace, RaygenProgram::PathShade, RaygenProgram::PathTail, RaygenProgram::PathFinish},
       {RaygenProgram::RestirCandidates, RaygenProgram::RestirShade, RaygenProgram::RestirShadeWithAovs},
+      {RaygenProgram::RenderMedia, RaygenProgram::RenderMediaWithAovs},
   }};
   return programs[size_t(kind)];
 }
@@ -37,6 +39,8 @@ PipelineKind pipelineLaunching(RaygenProgram program) {
     case RaygenProgram::RestirCandidates:
     case RaygenProgram::RestirShade:
     case RaygenProgram::RestirShadeWithAovs: return PipelineKind::Restir;
+    case RaygenProgram::RenderMedia:
+    case RaygenProgram::RenderMediaWithAovs: return PipelineKind::Media;
   }
   throw std::logic_error("no pipeline launches the raygen program");
 }
@@ -55,6 +59,8 @@ ProgramModule moduleHolding(RaygenProgram program) {
     case RaygenProgram::RestirCandidates:
     case RaygenProgram::RestirShade:
     case RaygenProgram::RestirShadeWithAovs: return ProgramModule::Restir;
+    case RaygenProgram::RenderMedia:
+    case RaygenProgram::RenderMediaWithAovs: return ProgramModule::Media;
   }
   throw std::logic_error("no module holds the raygen program");
 }
@@ -69,6 +75,7 @@ std::vector<ProgramModule> modulesOf(const std::vector<PipelineKind>& kinds) {
 }
 
 std::vector<PipelineKind> pipelinesNeeded(const ProgramUse& use) {
+  if (use.media) return {PipelineKind::Media};    // with or without AOVs
   if (use.restir) return {PipelineKind::Restir};  // with or without AOVs
   if (use.aovs) return {PipelineKind::AovMegakernel};
   switch (use.schedule) {
@@ -80,7 +87,7 @@ std::vector<PipelineKind> pipelinesNeeded(const ProgramUse& use) {
 }
 
 std::vector<PipelineKind> pipelinesLikely(const ProgramUse& use) {
-  if (use.restir) return {};
+  if (use.restir || use.media) return {};
   if (use.aovs) return pipelinesNeeded({use.schedule, false, false});
   return {PipelineKind::AovMegakernel};
 }

@@ -18,8 +18,9 @@ enum class ProgramModule {
   Wavefront,      // device/wavefront_programs.cu
   RawTrace,       // device/raw_trace_programs.cu
   Restir,         // device/restir_programs.cu
+  Media,          // device/media_programs.cu
 };
-constexpr size_t kProgramModuleCount = size_t(ProgramModule::Restir) + 1;
+constexpr size_t kProgramModuleCount = size_t(ProgramModule::Media) + 1;
 
 enum class RaygenProgram {
   Render,
@@ -37,12 +38,16 @@ enum class RaygenProgram {
   RestirCandidates,
   RestirShade,
   RestirShadeWithAovs,
+  // The megakernel of scenes with participating media, without and with the AOVs
+  RenderMedia,
+  RenderMediaWithAovs,
 };
 
 // Which raygen programs share a pipeline (program_use.cpp says why they are grouped so). ReSTIR's launches, the
-// AOV path tracer and the raw trace each have a pipeline of their own.
-enum class PipelineKind { Megakernel, RawTrace, AovMegakernel, Wavefront, Restir };
-constexpr size_t kPipelineKinds = 5;
+// AOV path tracer, the raw trace and the path tracer of scenes with participating media (with and without AOVs)
+// each have a pipeline of their own.
+enum class PipelineKind { Megakernel, RawTrace, AovMegakernel, Wavefront, Restir, Media };
+constexpr size_t kPipelineKinds = 6;
 
 const std::vector<RaygenProgram>& pipelinePrograms(PipelineKind kind);
 // The pipeline that launches `program`.
@@ -58,6 +63,7 @@ struct ProgramUse {
   PathSchedule schedule = PathSchedule::Auto;
   bool aovs = false;
   bool restir = false;
+  bool media = false;  // the scene has participating media: their megakernel renders, whatever the schedule
 };
 
 // The pipelines the next frame launches.

@@ -72,6 +72,7 @@ void checkMaterials(const Scene& scene) {
     if (uint32_t(m.type) > uint32_t(MaterialType::Mix)) fail("a material has an unknown type");
     if (uint32_t(m.alphaMode) > uint32_t(AlphaMode::Blend)) fail("a material has an unknown alpha mode");
     if (m.doubleSided > 1) fail("a material's double-sided flag is neither 0 nor 1");
+    if (m.interfaceOnly > 1) fail("a material's interface flag is neither 0 nor 1");
     if (!finite(m.baseColor) || !finite(m.emission) || !finite(m.specularColor))
       fail("a material has non-finite colours");
     for (float x : {m.shininess, m.metallic, m.roughness, m.anisotropic, m.specular, m.specularTint, m.subsurface,

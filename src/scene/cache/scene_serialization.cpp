@@ -18,7 +18,7 @@ CANDELA_MESH_ARRAYS(CANDELA_CHECK_MESH_MEMBER)
 static_assert(std::is_trivially_copyable_v<Material> && std::is_trivially_copyable_v<Instance> &&
               std::is_trivially_copyable_v<CameraDescription> && std::is_trivially_copyable_v<AnimationNode> &&
               std::is_trivially_copyable_v<AnimatedInstance> && std::is_trivially_copyable_v<AnimatedCamera> &&
-              std::is_trivially_copyable_v<AnimatedLight>);
+              std::is_trivially_copyable_v<AnimatedLight> && std::is_trivially_copyable_v<Medium>);
 
 void writeTexture(BinaryWriter& out, const Texture& t) {
   out.string(t.name);
@@ -185,7 +185,9 @@ void writeScene(BinaryWriter& out, const Scene& s) {
   out.value(s.environment.rotationDegrees);
   out.value(uint8_t(s.environment.visibleToCamera));
   out.array(s.punctualLights);
+  out.array(s.media);
   out.value(s.camera);
+  out.value(s.cameraMedium);
   writeOptional(out, s.renderHints.width);
   writeOptional(out, s.renderHints.height);
   writeOptional(out, s.renderHints.samplesPerPixel);
@@ -225,7 +227,9 @@ bool readScene(BinaryReader& in, Scene& s) {
   in.value(flag);
   s.environment.visibleToCamera = flag != 0;
   in.array(s.punctualLights);
+  in.array(s.media);
   in.value(s.camera);
+  in.value(s.cameraMedium);
   readOptional(in, s.renderHints.width);
   readOptional(in, s.renderHints.height);
   readOptional(in, s.renderHints.samplesPerPixel);

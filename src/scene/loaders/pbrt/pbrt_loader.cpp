@@ -14,6 +14,7 @@
 #include "scene/loaders/pbrt/pbrt_film.h"
 #include "scene/loaders/pbrt/pbrt_lights.h"
 #include "scene/loaders/pbrt/pbrt_materials.h"
+#include "scene/loaders/pbrt/pbrt_media.h"
 #include "scene/loaders/pbrt/pbrt_parameters.h"
 #include "scene/loaders/pbrt/pbrt_shape_key.h"
 #include "scene/loaders/pbrt/pbrt_shapes.h"
@@ -49,12 +50,16 @@ struct GraphicsState {
   std::optional<PbrtMaterial> material;  // none: pbrt's default diffuse, or the material named below
   std::string materialName;              // a NamedMaterial not made yet: pbrt-v4 resolves names once the scene is read
   std::optional<PbrtAreaLight> areaLight;
+  // MediumInterface: the slots (PbrtMedia) of the media inside and outside the shapes that follow; the camera is
+  // in the outside one when it is declared.
+  MediumInterface media;
 };
 
 // A shape of an object definition (ObjectBegin): its mesh and its transform when the object was defined.
 struct ObjectShape {
   uint32_t meshId;
   glm::mat4 worldFromShape;
+  MediumInterface media;  // medium slots, as the definition declared them
 };
 
 // The texture and value of a shape's `alpha`, which candela keeps in the material.
@@ -98,7 +103,7 @@ struct PendingShape {
 class PbrtReader {
  public:
   PbrtReader(const std::string& file, LoadWarnings& warnings, OutsidePaths outside)
-      : context_(file, warnings, outside), textures_(context_), materials_(context_, textures_) {}
+      : context_(file, warnings, outside), textures_(context_), materials_(context_, textures_), media_(context_) {}
 
   void readFile(const std::string& path, int depth) {
     if (depth > kMaxIncludeDepth) failLoad(path, "included more than " + std::to_string(kMaxIncludeDepth) + " deep");
@@ -163,6 +168,7 @@ class PbrtReader {
     scene.renderHints.width = film.width;
     scene.renderHints.height = film.height;
     scaleSceneLights(scene, film.imagingRatio);
+    placeMedia(scene);
     if (camera_) {
       scene.camera = makePbrtCamera(cameraType_, *camera_, cameraFromWorld_, film, mirrorX_, context_);
       context_.warnUnused("camera '" + cameraType_ + "'", *camera_);
@@ -312,6 +318,7 @@ class PbrtReader {
         camera_ = parsePbrtParameters(tokens);
         camera_->line = t.line;  // the camera's errors name the directive's line, also when it has no parameters
         cameraFromWorld_ = state_.ctm;
+        cameraMedium_ = state_.media.outside;
         // As in every pbrt, "camera" names the camera's frame in the world: what is placed in it after
         // CoordSysTransform "camera" moves with the camera (a headlight).
         glm::mat4 worldFromCamera = glm::inverse(state_.ctm);
@@ -338,13 +345,15 @@ class PbrtReader {
         parsePbrtParameters(tokens);
         context_.warn("pixel filter", "the pixel filter is noted but candela's own is used (docs/pbrt-v4.md)");
       } else if (d == "MakeNamedMedium") {
-        readString(tokens, d);
-        parsePbrtParameters(tokens);
-        context_.warn("media", "participating media are ignored");
+        std::string name = readString(tokens, d);
+        PbrtParameters params = readParametersWithSpectra(tokens);
+        media_.define(name, params);
+        context_.warnUnused("medium '" + params.getString("type", "") + "'", params);
       } else if (d == "MediumInterface") {
-        readString(tokens, d);
-        if (tokens.peek().kind == PbrtToken::Kind::String) tokens.next();
-        context_.warn("media", "participating media are ignored");
+        // One name: the same medium on both sides; two: inside, then outside.
+        std::string inside = readString(tokens, d);
+        std::string outside = tokens.peek().kind == PbrtToken::Kind::String ? readString(tokens, d) : inside;
+        state_.media = {media_.slot(inside, tokens.file(), t.line), media_.slot(outside, tokens.file(), t.line)};
       } else if (d == "WorldBegin") {
         state_.ctm = glm::mat4(1.0f);
         namedFrames_["world"] = state_.ctm;
@@ -573,9 +582,9 @@ class PbrtReader {
   // A mesh where `ctm` puts it: in the object being defined, or in the scene.
   void putMesh(uint32_t meshId, const glm::mat4& ctm, const std::string& file, size_t line) {
     if (currentObject_)
-      objects_[*currentObject_].push_back({meshId, ctm});
+      objects_[*currentObject_].push_back({meshId, ctm, state_.media});
     else
-      addInstance(meshId, toAffine(worldFromPbrt_ * ctm), file, line);
+      addInstance(meshId, toAffine(worldFromPbrt_ * ctm), state_.media, file, line);
   }
 
   // The materials of a shape's `triangles` (and of their reversed copies after them, for two-sided lights), with
@@ -599,10 +608,24 @@ class PbrtReader {
     pendingShapes_.clear();
   }
 
-  void addInstance(uint32_t meshId, const Affine3x4& toWorld, const std::string& file, size_t line) {
+  // `media` holds medium slots (PbrtMedia), which placeMedia turns into indices once the scene is read.
+  void addInstance(uint32_t meshId, const Affine3x4& toWorld, MediumInterface media, const std::string& file,
+                   size_t line) {
     if (context_.scene.instances.size() >= kMaxInstances)
       failLoad(file, line, "more than " + std::to_string(kMaxInstances) + " shape instances");
-    context_.scene.instances.push_back({meshId, toWorld});
+    context_.scene.instances.push_back({meshId, toWorld, media});
+  }
+
+  // The media into the scene, and the instances' and the camera's medium slots into indices of them.
+  void placeMedia(Scene& scene) {
+    const std::vector<uint32_t> index = media_.finish(scene);
+    auto place = [&](uint32_t& slot) { slot = slot == kNoMedium ? kNoMedium : index[slot]; };
+    for (Instance& instance : scene.instances) {
+      place(instance.media.inside);
+      place(instance.media.outside);
+    }
+    scene.cameraMedium = cameraMedium_;
+    place(scene.cameraMedium);
   }
 
   void instantiate(const std::string& name, PbrtTokenizer& tokens, size_t line) {
@@ -615,12 +638,14 @@ class PbrtReader {
       return;
     }
     for (const ObjectShape& shape : found->second)
-      addInstance(shape.meshId, toAffine(worldFromPbrt_ * state_.ctm * shape.worldFromShape), tokens.file(), line);
+      addInstance(shape.meshId, toAffine(worldFromPbrt_ * state_.ctm * shape.worldFromShape), shape.media,
+                  tokens.file(), line);
   }
 
   PbrtContext context_;
   PbrtTextures textures_;
   PbrtMaterials materials_;
+  PbrtMedia media_;
   GraphicsState state_;
   std::vector<std::pair<GraphicsState, bool>> stack_;  // saved state, and whether only its transform returns
   std::map<std::string, glm::mat4> namedFrames_;
@@ -634,6 +659,7 @@ class PbrtReader {
   std::optional<PbrtParameters> camera_, film_;
   std::string cameraType_;
   glm::mat4 cameraFromWorld_{1.0f};
+  uint32_t cameraMedium_ = kNoMedium;  // a slot of media_
   std::optional<uint32_t> samplerSamples_;
   uint32_t maxDepth_ = 5;
   bool worldBegun_ = false, mirrorX_ = true, activeEndOnly_ = false, environmentSet_ = false, textOnly_ = false;

@@ -152,8 +152,10 @@ Material PbrtMaterials::translate(const std::string& type, const PbrtParameters&
     colour("reflectance", {0.25f, 0.25f, 0.25f});
     context_.warn("material diffusetransmission", "'diffusetransmission' is rendered as diffuse reflection only");
   } else if (type == "interface" || type.empty() || type == "none") {
+    // The boundary of participating media (MediumInterface), which rays cross unchanged.
+    m.interfaceOnly = 1;
     m.alphaMode = AlphaMode::Mask;
-    m.opacity = 0.0f;  // an invisible boundary of participating media, which candela does not render
+    m.opacity = 0.0f;
   } else if (type == "matte" || type == "plastic" || type == "uber" || type == "substrate" || type == "translucent") {
     // pbrt-v3's materials, by their diffuse colour; plastic with its specular layer as coateddiffuse does.
     colour("Kd", {0.5f, 0.5f, 0.5f});

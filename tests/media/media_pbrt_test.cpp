@@ -1,0 +1,131 @@
+// pbrt-v4's media directives (MakeNamedMedium, MediumInterface, the camera's medium, the interface material) as
+// the loader reads them, and a pbrt scene with a medium rendered against its closed-form answer.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "backends/cpu/cpu_backend.h"
+#include "io/load_diagnostics.h"
+#include "media/media_scenes.h"
+#include "scene/loaders/pbrt/pbrt_loader.h"
+#include "scene/scene_repair.h"
+#include "support/render_statistics.h"
+
+namespace candela::test {
+namespace {
+
+Scene loadText(const std::string& text, LoadWarnings* warningsOut = nullptr) {
+  LoadWarnings warnings;
+  Scene scene = loadPbrtText("test.pbrt", text, warnings);
+  if (warningsOut) *warningsOut = warnings;
+  return scene;
+}
+
+std::string loadError(const std::string& text) {
+  try {
+    loadText(text);
+  } catch (const LoadError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+// A box [-50, 50] x [-50, 50] x [0, depth] as a pbrt trianglemesh, wound outwards.
+std::string pbrtBox(float depth) {
+  Mesh box;
+  appendBox(box, {-50, -50, 0}, {50, 50, depth}, 0);
+  std::ostringstream text;
+  text << "Shape \"trianglemesh\" \"point3 P\" [";
+  for (Vec3 p : box.positions) text << ' ' << p.x << ' ' << p.y << ' ' << p.z;
+  text << " ] \"integer indices\" [";
+  for (uint32_t i : box.indices) text << ' ' << i;
+  text << " ]\n";
+  return text.str();
+}
+
+constexpr const char* kOrthographicView =
+    "LookAt 0 0 -2  0 0 0  0 1 0\nCamera \"orthographic\"\nFilm \"rgb\" \"integer xresolution\" 16 "
+    "\"integer yresolution\" 16\nWorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\n";
+
+// A slab of absorbing fog (scale 2, so sigma_a = 1 2 4) half a unit deep, bounded by an interface box.
+std::string absorbingSlab() {
+  return std::string(kOrthographicView) +
+         "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\" \"rgb sigma_a\" [0.5 1 2] \"rgb sigma_s\" [0 0 0] "
+         "\"float scale\" 2 \"float g\" 0.25 \"rgb Le\" [0 0 0]\n"
+         "AttributeBegin\nMaterial \"interface\"\nMediumInterface \"fog\" \"\"\n" +
+         pbrtBox(0.5f) + "AttributeEnd\n";
+}
+
+TEST(PbrtMedia, HomogeneousMediaAndInterfacesAreRead) {
+  LoadWarnings warnings;
+  const Scene scene = loadText(absorbingSlab(), &warnings);
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages[0];
+  ASSERT_EQ(scene.media.size(), 1u);
+  EXPECT_FLOAT_EQ(scene.media[0].sigmaA.z, 4.0f);
+  EXPECT_FLOAT_EQ(scene.media[0].sigmaS.x, 0.0f);
+  EXPECT_FLOAT_EQ(scene.media[0].g, 0.25f);
+  ASSERT_EQ(scene.instances.size(), 1u);
+  EXPECT_EQ(scene.instances[0].media.inside, 0u);
+  EXPECT_EQ(scene.instances[0].media.outside, kNoMedium);
+  EXPECT_EQ(scene.cameraMedium, kNoMedium);
+  EXPECT_EQ(scene.materials[scene.meshes[0].triangleMaterials[0]].interfaceOnly, 1u);
+}
+
+// The camera is in the outside medium current at the Camera directive; a name may be used before it is defined
+// (pbrt resolves names at the end), one medium type that is not rendered warns once and is vacuum, and a name
+// never defined is an error at its first use.
+TEST(PbrtMedia, CameraMediumForwardNamesAndUnrenderedTypes) {
+  LoadWarnings warnings;
+  const Scene scene = loadText(
+      "MediumInterface \"\" \"air\"\nCamera \"perspective\"\nWorldBegin\n"
+      "MakeNamedMedium \"smoke\" \"string type\" \"nanovdb\" \"string filename\" \"smoke.nvdb\"\n"
+      "MakeNamedMedium \"air\" \"string type\" \"homogeneous\" \"rgb sigma_s\" [0.1 0.1 0.1]\n"
+      "MediumInterface \"smoke\" \"air\"\nShape \"sphere\"\n",
+      &warnings);
+  ASSERT_EQ(scene.media.size(), 1u);
+  EXPECT_EQ(scene.cameraMedium, 0u);
+  EXPECT_FLOAT_EQ(scene.media[0].sigmaA.x, 1.0f);  // pbrt's default
+  EXPECT_EQ(scene.instances[0].media.inside, kNoMedium);
+  EXPECT_EQ(scene.instances[0].media.outside, 0u);
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_NE(warnings.messages[0].find("'nanovdb' media are not rendered"), std::string::npos) << warnings.messages[0];
+
+  EXPECT_NE(loadError("WorldBegin\nMediumInterface \"fog\"\nShape \"sphere\"\n")
+                .find("test.pbrt:2: medium 'fog' is not defined"),
+            std::string::npos);
+  EXPECT_NE(loadError("WorldBegin\nMakeNamedMedium \"fog\" \"string type\" \"homogeneous\" \"float g\" 1\n")
+                .find("test.pbrt:2: medium: 'g' must lie between -1 and 1"),
+            std::string::npos);
+  EXPECT_NE(loadError("WorldBegin\nMakeNamedMedium \"fog\" \"string type\" \"homogeneous\" \"rgb sigma_a\" [1 -1 1]\n")
+                .find("'sigma_a' must be finite and not negative"),
+            std::string::npos);
+  EXPECT_NE(
+      loadError("WorldBegin\nMakeNamedMedium \"fog\" \"string type\" \"jelly\"\n").find("unknown medium type 'jelly'"),
+      std::string::npos);
+}
+
+// The slab above renders as its closed form: exp(-sigma_a d) per channel in every pixel, after the repairs every
+// loaded scene goes through (which renumber the instances, and must keep their media).
+TEST(PbrtMedia, SlabSceneRendersItsTransmittance) {
+  Scene scene = loadText(absorbingSlab());
+  LoadWarnings warnings;
+  repairScene(scene, "test.pbrt", warnings);
+  CpuBackend backend;
+  backend.setScene(scene);
+  RenderSettings settings;
+  settings.width = settings.height = 16;
+  settings.sampler = SamplerKind::Independent;
+  backend.setSettings(settings);
+  backend.setCamera(scene.camera.toCamera(1.0f));
+  constexpr uint32_t kBatches = 32;
+  const PixelStatistics stats = renderBatches(backend, kBatches, 8);
+  const Vec3 expected{std::exp(-0.5f), std::exp(-1.0f), std::exp(-2.0f)};
+  std::string worst;
+  EXPECT_EQ(countRejectedPixels(stats, expected, kBatches, 0.01, worst), 0u) << worst;
+  EXPECT_EQ(stats.invalidSamples, 0u);
+}
+
+}  // namespace
+}  // namespace candela::test
