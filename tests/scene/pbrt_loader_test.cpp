@@ -852,6 +852,14 @@ TEST(PbrtLoader, MixTextureImagesKeepToTheTextureSizeLimit) {
   EXPECT_EQ(scene.textures[size_t(m.baseColorTexture)].height, 64u);
 }
 
+// A number beyond a float's range is refused: as pbrt's float it would be infinite (a fuzzing input's sphere of
+// radius 8.9e81 had bounds of not-a-number, which its tessellation then turned into an integer).
+TEST(PbrtLoader, NumbersBeyondTheRangeOfAFloatAreRefused) {
+  const std::string error = loadError(std::string(kMirroredCamera) + "Shape \"sphere\" \"float radius\" 8.9e81\n");
+  EXPECT_EQ(error, "test.pbrt:4: '8.9e81' is beyond the range of a float (value of 'radius')");
+  EXPECT_EQ(loadText(std::string(kMirroredCamera) + "Shape \"sphere\" \"float radius\" 3e38\n").meshes.size(), 1u);
+}
+
 // The same mix under two names is one image; a roughness made from a mix reads the mix's baked texels.
 TEST(PbrtLoader, IdenticalMixTexturesShareOneImage) {
   TempFolder folder;
