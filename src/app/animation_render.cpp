@@ -134,8 +134,10 @@ int runAnimatedRender(const RenderJob& job, const AnimationRequest& request, con
     std::fflush(stdout);
   };
   if (request.frames) {
-    for (int64_t f = request.frames->first; f <= request.frames->last; ++f)
+    for (int64_t f = request.frames->first; f <= request.frames->last; ++f) {
+      if (team && team->released()) break;  // the writer renders the remaining frames alone
       renderAt(double(f) / request.framesPerSecond, frameFileName(output, f), f == request.frames->first);
+    }
   } else {
     renderAt(*request.time, output, true);
   }

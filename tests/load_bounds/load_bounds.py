@@ -134,6 +134,39 @@ def case_unused_mix_textures(candela, workdir):
     return "bounded", "mix.pbrt"
 
 
+def case_used_mix_textures(candela, workdir):
+    """200 distinct mixes that materials use: refused when their bakes are charged, before any is baked."""
+    write(os.path.join(workdir, "a.png"), png_bytes(4096, 4096))
+    write(os.path.join(workdir, "b.png"), png_bytes(4096, 4096))
+    lines = [SCENE_HEAD]
+    for i in range(200):
+        lines.append('Texture "a%d" "spectrum" "imagemap" "string filename" "a.png" "float uscale" %d\n' % (i, i + 1))
+        lines.append('Texture "b%d" "spectrum" "imagemap" "string filename" "b.png"\n' % i)
+        lines.append('Texture "m%d" "spectrum" "mix" "texture tex1" "a%d" "texture tex2" "b%d"\n' % (i, i, i))
+        lines.append('Material "diffuse" "texture reflectance" "m%d"\nShape "sphere"\n' % i)
+    write(os.path.join(workdir, "used-mix.pbrt"), "".join(lines))
+    # A budget of about 2 GiB: ten bakes of 192 MiB would fit it, and break the bound on memory, if the mixes
+    # were baked before the refusal.
+    return ("refused", "used-mix.pbrt", ["--max-memory", "4G"],
+            r"used-mix\.pbrt:\d+: mix texture 'm\d+' baked at 4096x4096 texels needs about 192 MiB")
+
+
+def case_shared_mix_textures(candela, workdir):
+    """The same mix defined under 200 names, each used by a material: one bake."""
+    write(os.path.join(workdir, "a.png"), png_bytes(2048, 2048))
+    write(os.path.join(workdir, "b.png"), png_bytes(2048, 2048))
+    for count in (1, 200):
+        lines = [SCENE_HEAD,
+                 'Texture "a" "spectrum" "imagemap" "string filename" "a.png"\n'
+                 'Texture "b" "spectrum" "imagemap" "string filename" "b.png"\n']
+        for i in range(count):
+            lines.append('Texture "m%d" "spectrum" "mix" "texture tex1" "a" "texture tex2" "b"\n' % i)
+            lines.append('Material "diffuse" "texture reflectance" "m%d"\n' % i)
+        lines.append('Shape "sphere"\n')  # one shape: spheres of 200 materials would be 200 meshes
+        write(os.path.join(workdir, "mix-%d.pbrt" % count), "".join(lines))
+    return "shared", "mix-1.pbrt", "mix-200.pbrt"
+
+
 def case_tall_pfm(candela, workdir):
     write(os.path.join(workdir, "tall.pfm"), pfm_bytes(1, 1000000))
     write(os.path.join(workdir, "tall-pfm.pbrt"),

@@ -3,11 +3,14 @@
 #include <nlohmann/json.hpp>
 
 #include <cstring>
+#include <filesystem>
 #include <limits>
 #include <set>
 
 #include "app/scene_loading.h"
+#include "io/available_memory.h"
 #include "io/file_bytes.h"
+#include "io/load_budget.h"
 #include "kernel/bsdf/ggx.h"
 #include "scene/loaders/gltf/gltf_draco.h"
 #include "scene/loaders/gltf/gltf_loader.h"
@@ -382,6 +385,46 @@ TEST(GltfLoader, BufferWithoutUriInAGltfIsNamedSo) {
   } catch (const LoadError& e) {
     EXPECT_NE(std::string(e.what()).find("no-uri.gltf: a buffer has no 'uri'"), std::string::npos) << e.what();
   }
+}
+
+// Buffers are charged to the load's memory budget at their byteLength before tinygltf reads any of them: a file
+// that claims more than the load may use is refused in one line naming the buffer, with nothing allocated.
+TEST(GltfLoader, BuffersBeyondTheLoadBudgetAreRefusedBeforeTheyAreRead) {
+  setProcessMemoryLimit(uint64_t(1) << 30);
+  beginLoadBudget();
+  const uint64_t left = loadMemoryLeft();
+  load(triangleGltf());
+  EXPECT_EQ(loadMemoryLeft(), left);  // a loaded model's buffers are given back with the model
+
+  // An external buffer of 2 GiB (a sparse file: no disk taken), more than the budget of half of --max-memory.
+  TempFolder dir;
+  const std::string bin = dir.write("large.bin", "");
+  std::filesystem::resize_file(bin, uint64_t(2) << 30);
+  json g = triangleGltf();
+  g["buffers"].push_back({{"byteLength", uint64_t(2) << 30}, {"uri", "large.bin"}});
+  LoadWarnings warnings;
+  std::string error = "(no error)";
+  try {
+    loadGltf(dir.write("large.gltf", g.dump()), warnings);
+  } catch (const LoadError& e) {
+    error = e.what();
+  }
+  EXPECT_NE(error.find("large.gltf: buffers[1] needs about 2.0 GiB"), std::string::npos) << error;
+  EXPECT_NE(error.find("--max-memory"), std::string::npos) << error;
+
+  // A data: URI that claims a terabyte.
+  g = triangleGltf();
+  g["buffers"][0]["byteLength"] = uint64_t(1) << 40;
+  error = errorOf(g);
+  EXPECT_NE(error.find("test.gltf: buffers[0] (a data: URI) needs about 1024.0 GiB"), std::string::npos) << error;
+
+  // With no room at all, even the triangle's own data: URI is refused.
+  setProcessMemoryLimit(1);
+  beginLoadBudget();
+  error = errorOf(triangleGltf());
+  EXPECT_NE(error.find("test.gltf: buffers[0] (a data: URI) needs about"), std::string::npos) << error;
+  setProcessMemoryLimit(0);
+  beginLoadBudget();
 }
 
 // A .glb whose BIN buffer has a byteLength of 0: tinygltf reads the first byte of the empty buffer, which throws;

@@ -11,6 +11,8 @@
 
 #include "app/render_job.h"
 #include "app/scene_loading.h"
+#include "io/available_memory.h"
+#include "io/load_budget.h"
 #include "io/load_diagnostics.h"
 #include "scene/builtin_scenes.h"
 #include "scene/loaders/pbrt/pbrt_lights.h"
@@ -849,6 +851,64 @@ TEST(PbrtLoader, MixTextureImagesKeepToTheTextureSizeLimit) {
   ASSERT_NE(m.baseColorTexture, kNoTexture);
   EXPECT_EQ(scene.textures[size_t(m.baseColorTexture)].width, 64u);
   EXPECT_EQ(scene.textures[size_t(m.baseColorTexture)].height, 64u);
+}
+
+// A number beyond a float's range is refused: as pbrt's float it would be infinite (a fuzzing input's sphere of
+// radius 8.9e81 had bounds of not-a-number, which its tessellation then turned into an integer).
+TEST(PbrtLoader, NumbersBeyondTheRangeOfAFloatAreRefused) {
+  const std::string error = loadError(std::string(kMirroredCamera) + "Shape \"sphere\" \"float radius\" 8.9e81\n");
+  EXPECT_EQ(error, "test.pbrt:4: '8.9e81' is beyond the range of a float (value of 'radius')");
+  EXPECT_EQ(loadText(std::string(kMirroredCamera) + "Shape \"sphere\" \"float radius\" 3e38\n").meshes.size(), 1u);
+}
+
+// The same mix under two names is one image; a roughness made from a mix reads the mix's baked texels.
+TEST(PbrtLoader, IdenticalMixTexturesShareOneImage) {
+  TempFolder folder;
+  folder.write("grey.pfm", std::string("Pf\n2 1\n-1.0\n") + std::string("\0\0\0\x3f\0\0\x80\x3f", 8));
+  const std::string mix = "\"spectrum\" \"mix\" \"texture tex1\" \"g\" \"rgb tex2\" [0 0 0]\n";
+  std::string path =
+      folder.write("scene.pbrt",
+                   std::string(kMirroredCamera) +
+                       "Texture \"g\" \"spectrum\" \"imagemap\" \"string filename\" \"grey.pfm\"\n"
+                       "Texture \"m1\" " +
+                       mix + "Texture \"m2\" " + mix + "Material \"diffuse\" \"texture reflectance\" \"m1\"\n" +
+                       kTriangle + "Material \"diffuse\" \"texture reflectance\" \"m2\"\n" + kTriangle +
+                       "Material \"conductor\" \"texture roughness\" \"m2\" \"bool remaproughness\" false\n" +
+                       kTriangle);
+  LoadWarnings warnings;
+  Scene scene = loadPbrt(path, warnings);
+  ASSERT_EQ(scene.meshes.size(), 3u);
+  const Material& first = scene.materials[scene.meshes[0].triangleMaterials[0]];
+  const Material& second = scene.materials[scene.meshes[1].triangleMaterials[0]];
+  ASSERT_NE(first.baseColorTexture, kNoTexture);
+  EXPECT_EQ(first.baseColorTexture, second.baseColorTexture);
+  EXPECT_EQ(scene.textures.size(), 3u);  // the image, the mix and the roughness
+  const Texture& baked = scene.textures[size_t(first.baseColorTexture)];
+  ASSERT_EQ(baked.floats.size(), size_t(baked.width) * baked.height * 3);
+  EXPECT_FLOAT_EQ(baked.floats[0], 0.25f);  // half of the first texel, 0.5
+  const Material& rough = scene.materials[scene.meshes[2].triangleMaterials[0]];
+  ASSERT_NE(rough.roughnessTexture, kNoTexture);
+  const Texture& roughness = scene.textures[size_t(rough.roughnessTexture)];
+  ASSERT_EQ(roughness.floats.size(), 2u);
+  EXPECT_FLOAT_EQ(roughness.floats[0], std::sqrt(0.25f));  // candela's roughness is sqrt(alpha)
+}
+
+// A mix that would not fit the load's budget is refused in one line naming where it is defined, before it (or
+// any other mix) is baked.
+TEST(PbrtLoader, MixTexturesBeyondTheLoadBudgetAreRefusedNamingTheTexture) {
+  const std::string text =
+      std::string(kMirroredCamera) +
+      "Texture \"c\" \"spectrum\" \"checkerboard\" \"rgb tex1\" [1 1 1] \"float uscale\" 64 \"float vscale\" 64\n"
+      "Texture \"m\" \"spectrum\" \"mix\" \"texture tex1\" \"c\" \"rgb tex2\" [0 0 0]\n"
+      "Material \"diffuse\" \"texture reflectance\" \"m\"\n" +
+      kTriangle;
+  setProcessMemoryLimit(uint64_t(1) << 20);  // the budget of a process already past its limit: nothing
+  beginLoadBudget();
+  const std::string error = loadError(text);
+  setProcessMemoryLimit(0);
+  beginLoadBudget();
+  EXPECT_NE(error.find("test.pbrt:5: mix texture 'm' baked at 2048x2048 texels needs about 48 MiB"), std::string::npos)
+      << error;
 }
 
 TEST(PbrtLoader, RoughnessTexturesBecomeCandelasRoughness) {

@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <thread>
+
 #include "app/serve/client_hub.h"
 
 namespace candela {
@@ -117,7 +120,7 @@ TEST(ClientHub, VideoIsRefusedWhereItIsNotOffered) {
 
 // A flood of screenshot requests costs one screenshot per batch of messages, not one per request.
 TEST(ClientHub, ARequestThatStillWaitsIsNotQueuedAgain) {
-  ClientHub hub;
+  ClientHub hub(false, std::chrono::milliseconds(0));  // no interval between screenshots (tested below)
   const uint64_t ida = hub.attach(std::make_shared<RecordingConnection>());
   const uint64_t idb = hub.attach(std::make_shared<RecordingConnection>());
   for (int i = 0; i < 100; ++i) {
@@ -128,6 +131,33 @@ TEST(ClientHub, ARequestThatStillWaitsIsNotQueuedAgain) {
   EXPECT_EQ(hub.takeMessages().size(), 3u);
   hub.receive(ida, ActionMessage{ActionMessage::Kind::Screenshot});
   EXPECT_EQ(hub.takeMessages().size(), 1u) << "once taken, a request is queued again";
+}
+
+// A client's screenshots are at least the interval apart: one asked for sooner is dropped with a reply to that
+// client alone, and other clients are not held back by it.
+TEST(ClientHub, AClientsScreenshotsAreAtLeastTheIntervalApart) {
+  ClientHub hub;  // one second
+  auto a = std::make_shared<RecordingConnection>(), b = std::make_shared<RecordingConnection>();
+  const uint64_t ida = hub.attach(a), idb = hub.attach(b);
+  const size_t aMessages = a->messages.size(), bMessages = b->messages.size();
+  hub.receive(ida, ActionMessage{ActionMessage::Kind::Screenshot});
+  EXPECT_EQ(hub.takeMessages().size(), 1u);
+  hub.receive(ida, ActionMessage{ActionMessage::Kind::Screenshot});
+  EXPECT_TRUE(hub.takeMessages().empty()) << "a second screenshot within the interval was queued";
+  ASSERT_EQ(a->messages.size(), aMessages + 1);
+  EXPECT_NE(a->messages.back().find("\"type\":\"message\""), std::string::npos) << a->messages.back();
+  EXPECT_NE(a->messages.back().find("no screenshot: one every 1 s at most"), std::string::npos) << a->messages.back();
+  hub.receive(idb, ActionMessage{ActionMessage::Kind::Screenshot});
+  EXPECT_EQ(hub.takeMessages().size(), 1u) << "another client's screenshot waits for nobody";
+  EXPECT_EQ(b->messages.size(), bMessages);
+
+  ClientHub quick(false, std::chrono::milliseconds(20));
+  const uint64_t id = quick.attach(std::make_shared<RecordingConnection>());
+  quick.receive(id, ActionMessage{ActionMessage::Kind::Screenshot});
+  EXPECT_EQ(quick.takeMessages().size(), 1u);
+  std::this_thread::sleep_for(std::chrono::milliseconds(30));
+  quick.receive(id, ActionMessage{ActionMessage::Kind::Screenshot});
+  EXPECT_EQ(quick.takeMessages().size(), 1u) << "a screenshot after the interval was dropped";
 }
 
 }  // namespace

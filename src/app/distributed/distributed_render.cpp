@@ -73,7 +73,14 @@ int runDistributedSequence(RenderJob job, double rankTimeoutSeconds,
   int status = 0;
   const std::optional<int> failed =
       renderAsTeam(job, session, team, [&](const RenderJob& teamJob) { status = renderSequence(teamJob); });
-  return failed ? *failed : status;
+  if (failed) status = *failed;
+  // As for one image: a rank given up for lost would hold MPI's end up for ever.
+  if (team.ranksLost()) {
+    std::fflush(stdout);
+    std::fflush(stderr);
+    session.abort(status);
+  }
+  return status;
 }
 
 }  // namespace candela

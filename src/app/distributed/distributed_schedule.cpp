@@ -55,12 +55,14 @@ class CoordinatorSchedule final : public SampleSchedule {
   CoordinatorSchedule(const SampleDispenser& dispenser, int ranks, bool showProgress, double timeoutSeconds,
                       bool& ranksLost)
       : dispenser_(dispenser),
-        workers_(size_t(ranks - 1)),
+        workers_(size_t(ranks - 1), Worker{.released = ranksLost, .batches = {}}),
         first_(dispenser.next()),
         showProgress_(showProgress),
         timeout_(timeoutSeconds),
         ranksLost_(ranksLost),
-        progress_("rendering on " + std::to_string(ranks) + " ranks", dispenser.remaining()) {}
+        alone_(ranksLost),
+        progress_(ranksLost ? "rendering on rank 0 alone" : "rendering on " + std::to_string(ranks) + " ranks",
+                  dispenser.remaining()) {}
 
   Assignment next(double secondsPerSample) override {
     secondsPerSample_ = secondsPerSample;
@@ -119,7 +121,9 @@ class CoordinatorSchedule final : public SampleSchedule {
       progress_.update(dispenser_.next() - first_);
       progress_.finish();
       // What the scaling model of docs/performance.md needs: the time to add up the films.
-      if (ranksLost_)
+      if (alone_)
+        std::fprintf(stderr, "rank 0 rendered the %u samples per pixel alone\n", dispenser_.next() - first_);
+      else if (ranksLost_)
         std::fprintf(stderr, "rank 0 rendered %u of the %u samples per pixel, with the films the other ranks sent\n",
                      ownDone_, dispenser_.next() - first_);
       else
@@ -271,6 +275,7 @@ class CoordinatorSchedule final : public SampleSchedule {
   double secondsPerSample_ = 0.0;
   uint32_t ownDone_ = 0;
   bool& ranksLost_;
+  const bool alone_;  // made once ranks were lost: every worker was let go before this schedule began
   std::vector<std::pair<uint32_t, uint32_t>> reissued_;  // batches of ranks given up for lost, to render here
   FilmSums received_;                                    // the films of the ranks that stopped with their films
   FrameStats receivedStats_;
@@ -279,7 +284,7 @@ class CoordinatorSchedule final : public SampleSchedule {
 
 class WorkerSchedule final : public SampleSchedule {
  public:
-  explicit WorkerSchedule(double timeoutSeconds) : timeout_(timeoutSeconds) {}
+  WorkerSchedule(double timeoutSeconds, bool& released) : timeout_(timeoutSeconds), stopped_(released) {}
 
   Assignment next(double secondsPerSample) override {
     if (stopped_) return {Assignment::Kind::End};
@@ -340,7 +345,7 @@ class WorkerSchedule final : public SampleSchedule {
   Answer answer_;
   MPI_Request reply_ = MPI_REQUEST_NULL;
   bool asked_ = false;
-  bool stopped_ = false;  // rank 0 renders the rest alone
+  bool& stopped_;  // rank 0 renders the rest alone (the team's `released`)
   uint32_t done_ = 0, completed_ = 0;
   RenderEnd end_ = RenderEnd::Complete;
 };
@@ -352,8 +357,8 @@ std::unique_ptr<SampleSchedule> makeCoordinatorSchedule(const SampleDispenser& d
   return std::make_unique<CoordinatorSchedule>(dispenser, ranks, showProgress, timeoutSeconds, ranksLost);
 }
 
-std::unique_ptr<SampleSchedule> makeWorkerSchedule(double timeoutSeconds) {
-  return std::make_unique<WorkerSchedule>(timeoutSeconds);
+std::unique_ptr<SampleSchedule> makeWorkerSchedule(double timeoutSeconds, bool& released) {
+  return std::make_unique<WorkerSchedule>(timeoutSeconds, released);
 }
 
 }  // namespace candela

@@ -15,9 +15,11 @@ namespace candela {
 // A rank that has not finished its batches when the others have paused, within `timeoutSeconds` (a stopped
 // process, a hung GPU, a dead node), is given up: the ranks that paused send rank 0 their films and stop, rank 0
 // renders the lost rank's batches since the last checkpoint again and the rest of the render alone, with a
-// warning, and sets `ranksLost` (the lost rank cannot end MPI with the others).
+// warning, and sets `ranksLost` (the lost rank cannot end MPI with the others); each rank let go sets its
+// `released`. A coordinator's schedule made once `ranksLost` is set (the next frame of a sequence) renders alone
+// from its start, answering only a lost rank that comes back (with the end of its work).
 std::unique_ptr<SampleSchedule> makeCoordinatorSchedule(const SampleDispenser& dispenser, int ranks, bool showProgress,
                                                         double timeoutSeconds, bool& ranksLost);
-std::unique_ptr<SampleSchedule> makeWorkerSchedule(double timeoutSeconds);
+std::unique_ptr<SampleSchedule> makeWorkerSchedule(double timeoutSeconds, bool& released);
 
 }  // namespace candela

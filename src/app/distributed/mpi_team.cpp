@@ -2,6 +2,7 @@
 
 #include <climits>
 #include <cstdint>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -57,6 +58,7 @@ std::string firstDifference(const ExrAttributes& writer, const ExrAttributes& mi
 }  // namespace
 
 void MpiTeam::checkSameRender(const ExrAttributes& identity) {
+  if (ranksLost_) return;  // rank 0 renders alone
   const std::string mine = encode(identity);
   std::string writers = mine;
   uint64_t length = writers.size();
@@ -75,6 +77,10 @@ void MpiTeam::checkSameRender(const ExrAttributes& identity) {
 
 void MpiTeam::agree(std::exception_ptr failure) {
   const int rank = session_.rank();
+  if (ranksLost_) {  // rank 0, alone: its failure is the team's
+    if (failure) throw AgreedFailure("rank 0 of " + std::to_string(session_.size()) + ": " + messageOf(failure));
+    return;
+  }
   int mine = failure ? rank : INT_MAX, first = INT_MAX;
   MPI_Request request;
   checkMpi(MPI_Iallreduce(&mine, &first, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD, &request), "agreeing on the start");
@@ -99,8 +105,14 @@ void MpiTeam::agree(std::exception_ptr failure) {
 }
 
 std::unique_ptr<SampleSchedule> MpiTeam::schedule(const SampleDispenser& dispenser, bool showProgress) {
-  if (writes()) return makeCoordinatorSchedule(dispenser, session_.size(), showProgress, timeout_, ranksLost_);
-  return makeWorkerSchedule(timeout_);
+  if (!writes()) return makeWorkerSchedule(timeout_, released_);
+  if (ranksLost_ && !warnedAlone_) {
+    std::fprintf(stderr,
+                 "candela: warning: the other ranks were let go when a rank stopped answering; rank 0 "
+                 "renders the remaining frames alone\n");
+    warnedAlone_ = true;
+  }
+  return makeCoordinatorSchedule(dispenser, session_.size(), showProgress, timeout_, ranksLost_);
 }
 
 }  // namespace candela

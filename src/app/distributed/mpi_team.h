@@ -15,13 +15,17 @@ class MpiTeam final : public RenderTeam {
   void agree(std::exception_ptr failure) override;
   void checkSameRender(const ExrAttributes& identity) override;
   std::unique_ptr<SampleSchedule> schedule(const SampleDispenser& dispenser, bool showProgress) override;
+  bool released() const override { return released_; }
   // Whether rank 0 gave up a rank that stopped answering (distributed_schedule.h) and rendered on without it.
+  // From then on rank 0 is the team: it agrees with itself, and renders every later frame of a sequence alone.
   bool ranksLost() const { return ranksLost_; }
 
  private:
   const MpiSession& session_;
   double timeout_;
-  bool ranksLost_ = false;
+  bool ranksLost_ = false;    // on rank 0
+  bool released_ = false;     // on the other ranks
+  bool warnedAlone_ = false;  // rank 0 said that it renders the remaining frames alone
 };
 
 }  // namespace candela

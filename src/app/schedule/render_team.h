@@ -35,6 +35,10 @@ class RenderTeam {
   virtual void checkSameRender(const ExrAttributes& identity) = 0;
   // The schedule of this process; the writer's hands out `dispenser`'s indices to all.
   virtual std::unique_ptr<SampleSchedule> schedule(const SampleDispenser& dispenser, bool showProgress) = 0;
+  // Whether the writer has let this process go: it was given up for lost, or the writer took its film when
+  // another process stopped answering and renders the rest alone (distributed/distributed_schedule.h). A process
+  // that was let go renders no further frame of a sequence.
+  virtual bool released() const = 0;
 };
 
 // Runs `step`, a start-up step that may fail on some processes of `team`, and returns its result; with a team,

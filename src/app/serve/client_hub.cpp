@@ -79,6 +79,19 @@ void ClientHub::receive(uint64_t client, ClientMessage message) {
       if (const auto* same = std::get_if<ActionMessage>(&waiting.message);
           waiting.client == client && same && same->kind == action->kind)
         return;
+  if (action && action->kind == ActionMessage::Kind::Screenshot) {
+    Client& c = it->second;
+    const auto now = std::chrono::steady_clock::now();
+    if (c.screenshotAt && now - *c.screenshotAt < screenshotInterval_) {
+      char text[96];
+      std::snprintf(text, sizeof text, "no screenshot: one every %g s at most, and the last was asked for sooner",
+                    std::chrono::duration<double>(screenshotInterval_).count());
+      const nlohmann::json reply = {{"type", "message"}, {"text", text}, {"error", false}};
+      c.connection->sendMessage(std::make_shared<const std::string>(reply.dump()), false);
+      return;
+    }
+    c.screenshotAt = now;
+  }
   messages_.push_back({client, std::move(message)});
   work_.notify_all();
 }

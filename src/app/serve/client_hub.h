@@ -5,6 +5,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -65,8 +66,14 @@ class ClientHub {
   // a frame now and then and cannot stall anyone.
   static constexpr std::chrono::seconds kAckTimeout{5};
 
+  // A client's screenshots are at least this far apart: each is a lossless image of the whole view, encoded on
+  // the render loop's thread, so a client asking for them without pause would slow every client's frames. A
+  // request sooner than that after the client's last one is dropped, with a message telling it so.
+  static constexpr std::chrono::milliseconds kScreenshotInterval{1000};
+
   // `videoOffered`: clients may choose the H.264 stream (StreamMessage); where not, such a choice is dropped.
-  explicit ClientHub(bool videoOffered = false) : videoOffered_(videoOffered) {}
+  explicit ClientHub(bool videoOffered = false, std::chrono::milliseconds screenshotInterval = kScreenshotInterval)
+      : videoOffered_(videoOffered), screenshotInterval_(screenshotInterval) {}
   ClientHub(const ClientHub&) = delete;
   ClientHub& operator=(const ClientHub&) = delete;
 
@@ -77,7 +84,8 @@ class ClientHub {
   // Lets every connection go (the network thread has stopped).
   void detachAll();
   // A valid message from `client`. Input from a client without control is dropped, and so is a request for a
-  // screenshot or a view file while the same request of the same client still waits.
+  // screenshot or a view file while the same request of the same client still waits, and a screenshot asked for
+  // within the screenshot interval of the client's last one (with a reply).
   void receive(uint64_t client, ClientMessage message);
   // An invalid or unwelcome message: logged once per kind of problem, then dropped silently.
   void dropped(uint64_t client, const std::string& problem);
@@ -113,6 +121,7 @@ class ClientHub {
     bool video = false;           // takes the H.264 stream
     uint64_t videoFrameSent = 0;  // the last access unit it was sent
     std::chrono::steady_clock::time_point sentAt;
+    std::optional<std::chrono::steady_clock::time_point> screenshotAt;  // its last screenshot request queued
   };
   bool readyLocked(const Client& client, std::chrono::steady_clock::time_point now) const;
   void droppedLocked(uint64_t client, const std::string& problem);
@@ -121,6 +130,7 @@ class ClientHub {
 
   std::mutex mutex_;
   bool videoOffered_;
+  std::chrono::milliseconds screenshotInterval_;
   std::condition_variable work_;
   std::map<uint64_t, Client> clients_;  // ordered by id: the oldest first
   uint64_t nextId_ = 1;

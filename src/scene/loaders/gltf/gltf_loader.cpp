@@ -25,6 +25,7 @@
 #include "scene/animation_player.h"
 #include "scene/loaders/gltf/gltf_accessors.h"
 #include "scene/loaders/gltf/gltf_animation.h"
+#include "scene/loaders/gltf/gltf_buffer_charge.h"
 #include "scene/loaders/gltf/gltf_buffer_uris.h"
 #include "scene/loaders/gltf/gltf_byte_ranges.h"
 #include "scene/loaders/gltf/gltf_deformation.h"
@@ -959,6 +960,7 @@ Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, c
     std::tie(json, jsonSize) = binary ? glbJson(data, size) : std::pair{reinterpret_cast<const char*>(data), size};
   }
 
+  const GltfBufferCharge bufferCharge(data, size, name);  // kept until the model that holds the buffers is gone
   tinygltf::TinyGLTF loader;
   FileAccess access{baseDir, files, json ? std::string_view(json, jsonSize) : std::string_view(), {}, {}, {}};
   loader.SetFsCallbacks({&fileExists, &expandFilePath, &readWholeFile, &writeWholeFile, &access});

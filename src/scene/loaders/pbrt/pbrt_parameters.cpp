@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <limits>
 
 #include "io/load_diagnostics.h"
 #include "scene/loaders/pbrt/pbrt_spectra.h"
@@ -42,6 +43,10 @@ void addValue(const PbrtToken& token, PbrtParameter& p, const std::string& file)
   auto [end, error] = std::from_chars(first, last, value);
   if (error != std::errc() || end != last || !std::isfinite(value))
     failLoad(file, token.line, "'" + token.text + "' is not a number (value of '" + p.name + "')");
+  // pbrt reads its numbers as floats: one beyond their range would become infinite (a sphere of infinite radius,
+  // whose bounds are then not-a-number).
+  if (std::fabs(value) > double(std::numeric_limits<float>::max()))
+    failLoad(file, token.line, "'" + token.text + "' is beyond the range of a float (value of '" + p.name + "')");
   p.numbers.push_back(value);
 }
 

@@ -46,7 +46,20 @@ Vec3 PbrtTextures::colourAt(const PbrtTexture& t, float u, float v) const {
   return t.factor * texelAt(image, t.uvScale.x * u + t.uvOffset.x, t.uvScale.y * v + t.uvOffset.y);
 }
 
-int32_t PbrtTextures::mixedImage(const PbrtTexture& first, const PbrtTexture& second, const PbrtTexture& amount) {
+int32_t PbrtTextures::mixedImage(const PbrtTexture& first, const PbrtTexture& second, const PbrtTexture& amount,
+                                 const std::string& where, const std::string& name) {
+  // A key of every number the image depends on; numbers that are not finite would break its ordering, and such a
+  // mix is not shared.
+  std::array<float, 24> key{};
+  bool finite = true;
+  size_t at = 0;
+  for (const PbrtTexture* t : {&first, &second, &amount})
+    for (float v : {t->factor.x, t->factor.y, t->factor.z, float(t->image), t->uvScale.x, t->uvScale.y, t->uvOffset.x,
+                    t->uvOffset.y}) {
+      finite = finite && std::isfinite(v);
+      key[at++] = v;
+    }
+  if (auto found = finite ? mixes_.find(key) : mixes_.end(); found != mixes_.end()) return found->second;
   // As fine as the finest input over pbrt's unit square, each input's repetitions counted, within the texture
   // size limit (--max-texture-size) and 4096 texels a side.
   const float side = float(std::min<uint32_t>(4096, textureLimits().maxSize));
@@ -57,26 +70,41 @@ int32_t PbrtTextures::mixedImage(const PbrtTexture& first, const PbrtTexture& se
     width = std::max(width, uint32_t(std::min(side, std::ceil(float(image.width) * std::fabs(t->uvScale.x)))));
     height = std::max(height, uint32_t(std::min(side, std::ceil(float(image.height) * std::fabs(t->uvScale.y)))));
   }
-  chargeLoadMemory(uint64_t(width) * height * 3 * sizeof(float), context_.mainFile,
-                   "a mix texture baked at " + std::to_string(width) + "x" + std::to_string(height) + " texels");
+  chargeLoadMemory(uint64_t(width) * height * 3 * sizeof(float), where,
+                   "mix texture '" + name + "' baked at " + std::to_string(width) + "x" + std::to_string(height) +
+                       " texels");
   Texture out;
   out.name = "mix texture";
   out.width = width;
   out.height = height;
   out.channels = 3;
-  out.floats.resize(size_t(width) * height * 3);
-  for (uint32_t y = 0; y < height; ++y)
-    for (uint32_t x = 0; x < width; ++x) {
-      const float u = (float(x) + 0.5f) / float(width), v = 1.0f - (float(y) + 0.5f) / float(height);
-      const Vec3 c = lerp(colourAt(amount, u, v).x, colourAt(first, u, v), colourAt(second, u, v));
-      float* texel = out.floats.data() + (size_t(y) * width + x) * 3;
-      texel[0] = c.x;
-      texel[1] = c.y;
-      texel[2] = c.z;
-    }
   const int32_t index = int32_t(context_.scene.textures.size());
   context_.scene.textures.push_back(std::move(out));
+  unbakedMixes_[index] = {first, second, amount};
+  if (finite) mixes_[key] = index;
   return index;
+}
+
+void PbrtTextures::bakeMixesThrough(int32_t image) {
+  while (!unbakedMixes_.empty() && unbakedMixes_.begin()->first <= image) {
+    const auto [index, mix] = *unbakedMixes_.begin();
+    unbakedMixes_.erase(unbakedMixes_.begin());
+    Texture& out = context_.scene.textures[size_t(index)];
+    const uint32_t width = out.width, height = out.height;
+    noteLoadProgress(context_.mainFile,
+                     "baking a mix texture of " + std::to_string(width) + "x" + std::to_string(height) + " texels");
+    std::vector<float> texels(size_t(width) * height * 3);
+    for (uint32_t y = 0; y < height; ++y)
+      for (uint32_t x = 0; x < width; ++x) {
+        const float u = (float(x) + 0.5f) / float(width), v = 1.0f - (float(y) + 0.5f) / float(height);
+        const Vec3 c = lerp(colourAt(mix.amount, u, v).x, colourAt(mix.first, u, v), colourAt(mix.second, u, v));
+        float* texel = texels.data() + (size_t(y) * width + x) * 3;
+        texel[0] = c.x;
+        texel[1] = c.y;
+        texel[2] = c.z;
+      }
+    out.floats = std::move(texels);
+  }
 }
 
 int32_t PbrtTextures::loadImage(const std::string& path, bool srgb, const std::string& file, size_t line) {
@@ -193,6 +221,7 @@ int32_t PbrtTextures::checkerboardImage(Vec3 first, Vec3 second) {
 int32_t PbrtTextures::mappedImage(int32_t image, const std::string& key, const std::function<float(float)>& map) {
   auto cacheKey = std::make_pair(image, key);
   if (auto found = mapped_.find(cacheKey); found != mapped_.end()) return found->second;
+  bakeMixesThrough(image);
   const Texture& source = context_.scene.textures[size_t(image)];
   chargeLoadMemory(uint64_t(source.width) * source.height * sizeof(float), source.name, "its " + key + " copy");
   Texture out;
@@ -320,7 +349,7 @@ PbrtTexture PbrtTextures::make(const Definition& definition) {
     if (a.image == kNoTexture && b.image == kNoTexture && amount.image == kNoTexture)
       t.factor = lerp(amount.factor.x, a.factor, b.factor);
     else
-      t.image = mixedImage(a, b, amount);
+      t.image = mixedImage(a, b, amount, params.file + ":" + std::to_string(params.line), name);
   } else if (className == "checkerboard") {
     PbrtTexture a = value(params, "tex1", {1, 1, 1}), b = value(params, "tex2", {0, 0, 0});
     t.factor = 0.5f * (meanOf(a) + meanOf(b));

@@ -1,4 +1,6 @@
 #pragma once
+#include <array>
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
@@ -43,8 +45,13 @@ class PbrtTextures {
   int32_t checkerboardImage(Vec3 first, Vec3 second);
   // An image of (1 - amount) first + amount second over pbrt's unit (u, v) square, each input looked up (nearest
   // texel) through its own uv mapping, as fine as the finest input there (at most 4096 texels a side, and
-  // within --max-texture-size).
-  int32_t mixedImage(const PbrtTexture& first, const PbrtTexture& second, const PbrtTexture& amount);
+  // within --max-texture-size). Identical mixes share one image. The image is charged to the load's budget now
+  // (a refusal names `where`, "file:line", and the texture's `name`) but baked only by bakeMixes, or when its
+  // texels are needed first: a scene whose mixes would not fit is refused before the time of baking any of them.
+  int32_t mixedImage(const PbrtTexture& first, const PbrtTexture& second, const PbrtTexture& amount,
+                     const std::string& where, const std::string& name);
+  // Bakes every mix image not baked yet; the loader calls it once the scene is read.
+  void bakeMixes() { bakeMixesThrough(INT32_MAX); }
 
  private:
   // A Texture directive, kept until something uses it, with the definitions its texture parameters named then.
@@ -61,6 +68,8 @@ class PbrtTextures {
   PbrtTexture input(const Definition& definition, const std::string& name, Vec3 fallback);
   // The linear colour of `t` at pbrt's (u, v): its factor, times its image's nearest texel through its uv mapping.
   Vec3 colourAt(const PbrtTexture& t, float u, float v) const;
+  // Bakes the mix images charged so far up to scene texture `image`, in order: a mix's inputs come before it.
+  void bakeMixesThrough(int32_t image);
   // A float copy of an image with its colour channels (as linear values) turned into 1 - value, for `invert`.
   int32_t invertedImage(int32_t image);
 
@@ -71,6 +80,11 @@ class PbrtTextures {
   static constexpr size_t kMaxCheckerboardImages = 1024;
   std::map<std::tuple<float, float, float, float, float, float>, int32_t> checkerboards_;
   std::map<std::pair<int32_t, std::string>, int32_t> mapped_;
+  struct Mix {
+    PbrtTexture first, second, amount;
+  };
+  std::map<int32_t, Mix> unbakedMixes_;  // by the index of the image each fills
+  std::map<std::array<float, 24>, int32_t> mixes_;
 };
 
 }  // namespace candela

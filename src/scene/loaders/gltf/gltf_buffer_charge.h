@@ -1,0 +1,26 @@
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+namespace candela {
+
+// The load's memory budget (io/load_budget.h) charged for a glTF file's buffers before tinygltf reads them.
+// tinygltf holds every buffer at its byteLength, however it comes (a copy of a .glb's BIN chunk, a data: URI
+// decoded, an external file read whole), and a data: URI's text is copied and decoded on the way: a file that
+// claims more than the load may use is refused in one line naming the buffer, before any of it is allocated.
+// The charge is returned when the object goes, with the model that held the buffers. A file whose JSON cannot be
+// read is charged nothing (tinygltf reports it).
+class GltfBufferCharge {
+ public:
+  // `data`, `size`: the file as tinygltf will read it.
+  GltfBufferCharge(const uint8_t* data, size_t size, const std::string& file);
+  ~GltfBufferCharge();
+  GltfBufferCharge(const GltfBufferCharge&) = delete;
+  GltfBufferCharge& operator=(const GltfBufferCharge&) = delete;
+
+ private:
+  uint64_t charged_ = 0;
+};
+
+}  // namespace candela
