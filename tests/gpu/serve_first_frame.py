@@ -1,0 +1,79 @@
+#!/usr/bin/env python3
+"""Times candela serve's first frames from the moment it is started: the first frame a browser gets, and the
+first one the GPU renders (while the GPU programs compile, serve renders on the CPU meanwhile).
+
+    serve_first_frame.py CANDELA [--seconds 90] [--width 1920] [--height 1080] -- SERVE ARGUMENTS...
+
+Starts `CANDELA serve --port 0 SERVE ARGUMENTS...`, reads the address it prints, connects as
+measure_client.py does (take control, resize, acknowledge every frame) and prints one JSON object: the seconds from
+the start to the address, to the first frame and to the first frame of another backend than the first one's (the
+handover), with each one's backend and device, the frames rendered before the handover and the compile's progress
+as the last CPU frame reported it. Ends serve when the handover was seen or after --seconds.
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import time
+
+# measure_client.py is in tests/serve, or beside this script in a bundle (bundle.sh).
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path[:0] = [here, os.path.join(here, "..", "serve")]
+from measure_client import WebSocket, frame_header  # noqa: E402
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("candela")
+    parser.add_argument("--seconds", type=float, default=90.0, help="the longest wait for the handover")
+    parser.add_argument("--width", type=int, default=1920)
+    parser.add_argument("--height", type=int, default=1080)
+    parser.add_argument("serve_args", nargs="*")
+    args = parser.parse_args()
+
+    start = time.monotonic()
+    serve = subprocess.Popen([args.candela, "serve", "--port", "0", *args.serve_args], stdout=subprocess.PIPE,
+                             stderr=subprocess.DEVNULL, text=True)
+    result = {"command": " ".join(["serve", *args.serve_args])}
+    try:
+        line = serve.stdout.readline()
+        if "open " not in line:
+            raise RuntimeError(f"serve printed no address: {line!r}")
+        result["address_seconds"] = round(time.monotonic() - start, 3)
+        ws = WebSocket(line.split("open ", 1)[1].strip())
+        ws.send({"type": "action", "name": "take_control"})
+        ws.send({"type": "resize", "width": args.width, "height": args.height})
+        first, frames, starting = None, 0, None
+        while time.monotonic() - start < args.seconds:
+            opcode, payload = ws.receive()
+            if opcode != 0x2:
+                continue
+            header, _ = frame_header(payload)
+            if header.get("kind") != "frame":
+                continue
+            ws.send({"type": "frame_ack", "frame": header["frame"]})
+            now = round(time.monotonic() - start, 3)
+            seen = {"seconds": now, "backend": header.get("backend"), "device": header.get("device")}
+            if first is None:
+                first = seen
+                result["first_frame"] = first
+            if header.get("backend") != first["backend"]:
+                result["handover"] = seen
+                break
+            frames += 1
+            starting = header.get("starting")
+        result["frames_before_handover"] = frames
+        result["last_starting"] = starting
+    finally:
+        serve.terminate()
+        serve.wait(timeout=30)
+    print(json.dumps(result))
+
+
+if __name__ == "__main__":
+    try:
+        main()
+    except (RuntimeError, OSError) as e:
+        print(f"serve_first_frame: {e}", file=sys.stderr)
+        sys.exit(1)
