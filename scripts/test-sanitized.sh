@@ -15,7 +15,7 @@ source scripts/run-step.sh
 generator=()
 command -v ninja >/dev/null && generator=(-G Ninja)
 step cmake -S . -B build-sanitize "${generator[@]}" -DCANDELA_SANITIZE=ON -DCANDELA_WERROR=ON \
-  -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g1" -DCANDELA_BUILD_BENCHMARKS=OFF "$@"
+  -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g1" -DCANDELA_BUILD_BENCHMARKS=OFF -DCANDELA_DEVICE_COMPILE_CHECK=OFF "$@"
 step cmake --build build-sanitize --parallel "$(nproc)"
 export ASAN_OPTIONS="${ASAN_OPTIONS:-strict_string_checks=1:check_initialization_order=1}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1}"
