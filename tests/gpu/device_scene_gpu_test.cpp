@@ -12,7 +12,8 @@
 namespace candela {
 namespace {
 
-// Two triangles with every per-mesh array, one of them a lamp, and a point light: no listed array is empty.
+// Two triangles with every per-mesh array, one of them a lamp, a point light, and a medium behind the second:
+// no listed array is empty.
 Scene sceneWithEveryArray() {
   Scene scene;
   Material lamp;
@@ -31,6 +32,11 @@ Scene sceneWithEveryArray() {
     scene.meshes.push_back(m);
   }
   scene.instances = {{0, Affine3x4{}}, {1, Affine3x4{}}};
+  Medium fog;
+  fog.sigmaA = {0.1f, 0.1f, 0.1f};
+  fog.sigmaS = {0.5f, 0.5f, 0.5f};
+  scene.media = {fog};
+  scene.instances[1].media.inside = 0;
   PunctualLight light;
   light.position = {0, 2, 0};
   light.intensity = {1, 1, 1};
