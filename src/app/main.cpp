@@ -700,6 +700,7 @@ int main(int argc, char** argv) {
 
   RenderJob benchJob;
   benchJob.samplesPerPixel = 16;
+  benchJob.steadyTimedFrames = true;
   CLI::App* bench = app.add_subcommand("bench", "Time a render and print the numbers as one JSON object");
   addRenderOptions(*bench, benchJob);
   bench->add_option("--warmup", benchJob.warmupFrames, "Untimed launches before the timed ones")->capture_default_str();

@@ -154,6 +154,10 @@ RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool s
   // Warm-up launches take the first sample indices, and the timed ones continue after them.
   const uint32_t first = loadResumedFilm(job, *backend, identity) + job.warmupFrames;
   for (uint32_t w = 0; w < job.warmupFrames; ++w) renderFrame();
+  if (job.steadyTimedFrames) {
+    const double waited = backend->preparePrograms(ProgramWait::EveryFrame);
+    if (outcome.firstFrameSeconds == 0.0) outcome.programCompileSeconds += waited;
+  }
   auto start = Clock::now();
   ScheduledRenderResult rendered = accumulateSamples(job, *backend, first, job.samplesPerPixel + job.warmupFrames,
                                                      identity, showProgress, renderFrame);

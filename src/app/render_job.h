@@ -37,7 +37,10 @@ struct RenderJob {
   DeviceRequest devices;  // the GPUs of the optix backend
   MaterialOverrides materialOverrides;
   uint32_t warmupFrames = 0;  // untimed launches before the timed ones
-  bool rawTrace = false;      // also time the backend's raw-trace mode (optix only)
+  // A benchmark's: the timed launches wait for every program of the settings, so that each is by the schedule in
+  // which the render settles (ProgramWait::EveryFrame); the warm-up launches may come sooner, by a stand-in.
+  bool steadyTimedFrames = false;
+  bool rawTrace = false;  // also time the backend's raw-trace mode (optix only)
   DenoiserChoice denoiser = DenoiserChoice::None;
   AtrousParams atrous;
   BilateralParams bilateral;

@@ -41,6 +41,12 @@ struct ProgramCompileStatus {
   double seconds = 0.0;                    // since it began
 };
 
+// What Backend::preparePrograms waits for: the programs of the next frame, or those of every frame of the
+// current settings. They differ where a GPU backend's first frames render by the megakernel while the wavefront
+// schedule's programs compile (backends/optix/program_use.h, pipelinesAwaited): a benchmark's timed frames wait
+// for the schedule they measure.
+enum class ProgramWait { NextFrame, EveryFrame };
+
 // A renderer of one scene: owns traversal structures, memory and launches; shading is the shared kernel code.
 // Every render() call adds samples to a progressive film; changing the camera or the settings restarts it.
 class Backend {
@@ -114,10 +120,10 @@ class Backend {
   // While the programs the next frame needs are still compiling: how far that has got (render() would wait for
   // it). Nothing where there is nothing to wait for, as for a backend that compiles nothing.
   virtual std::optional<ProgramCompileStatus> startingCompile() const { return std::nullopt; }
-  // Compiles the programs the next frame needs, all at once, and returns once they are ready, as that frame's
-  // render() would, for a caller that times the wait apart from the frame: the seconds it waited. 0 where there is
-  // nothing to compile.
-  virtual double preparePrograms() { return 0.0; }
+  // Compiles the programs the next frame needs (with EveryFrame: those of every frame of these settings), all at
+  // once, and returns once they are ready, as that frame's render() would, for a caller that times the wait apart
+  // from the frame: the seconds it waited. 0 where there is nothing to compile.
+  virtual double preparePrograms(ProgramWait /*wait*/ = ProgramWait::NextFrame) { return 0.0; }
   // Where a backend renders on several devices: how long the last read that found samples on the others took to
   // add them to the film it reads (milliseconds); 0 otherwise.
   virtual double lastCombineMilliseconds() const { return 0.0; }

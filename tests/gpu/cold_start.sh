@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # cold_start.sh [candela binary] [runs]: the GPU backend's time to its first frame on a GPU machine, with OptiX's
 # disk cache empty (cold: the first start on a machine, which compiles the GPU programs) and holding the programs
-# (warm), `runs` times each (default 3). Each run is `candela bench` of the Cornell box at 1920x1080, one launch
-# of one sample per pixel, and prints the time to its first frame (bench's backend_start_seconds, the CUDA and
-# OptiX contexts, plus first_frame_seconds, the scene upload, the programs' compile, the schedule's probe and the
-# first launch), of which program_compile_seconds waited for the first frame's programs, the process's wall time,
-# and the compile's last line. A cold run also times `candela render --denoise atrous` (wall time: its first frame
+# (warm), `runs` times each (default 3). Each run is `candela bench` of the Cornell box at 1920x1080, one warm-up
+# launch and one timed launch of one sample per pixel, and prints the time to its first frame (bench's
+# backend_start_seconds, the CUDA and OptiX contexts, plus first_frame_seconds, the scene upload, the programs'
+# compile, the schedule's probe and the first launch), of which program_compile_seconds waited for the first
+# frame's programs (the warm-up launch is the first frame, and may be the megakernel's while the wavefront's
+# programs compile; the timed one waits for them), the process's wall time, and the compile's last lines. A cold run also times `candela render --denoise atrous` (wall time: its first frame
 # compiles the AOV path tracer's programs and the ray programs, nothing else) in a cache of its own. Only the
 # programs a run uses are compiled, all at once when its first frame is known, so a cold bench compiles neither
 # ReSTIR's nor the AOV path tracer's.
@@ -23,7 +24,7 @@ runs=${2:-3}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 unset OPTIX_CACHE_PATH OPTIX_CACHE_MAXSIZE
-bench=(bench cornell-box --backend optix --width 1920 --height 1080 --spp 1 --warmup 0)
+bench=(bench cornell-box --backend optix --width 1920 --height 1080 --spp 1 --warmup 1)
 
 # json_number <key> <json line>
 json_number() { grep -o "\"$1\":[-0-9.e+]*" <<<"$2" | cut -d: -f2; }

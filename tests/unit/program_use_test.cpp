@@ -85,6 +85,27 @@ TEST(ProgramUse, TheAutoScheduleCompilesTheProbesModuleAndTheWavefrontsTogether)
   EXPECT_EQ(firstFrameModules({}), (Modules{ProgramModule::Rays, ProgramModule::Megakernel, ProgramModule::Wavefront}));
 }
 
+// The first frame waits for the megakernel alone where the schedule is Auto's, decided or not: the wavefront's
+// module compiles beside it and takes over when done.
+TEST(ProgramUse, TheMegakernelStandsInForAutosWavefront) {
+  EXPECT_EQ(pipelinesAwaited({}), Kinds{PipelineKind::Megakernel});
+  EXPECT_EQ(pipelinesAwaited({PathSchedule::Wavefront, false, false}), Kinds{PipelineKind::Megakernel});
+  EXPECT_EQ(pipelinesAwaited({PathSchedule::Megakernel, false, false}), Kinds{PipelineKind::Megakernel});
+}
+
+TEST(ProgramUse, ARequestedWavefrontIsAwaited) {
+  const ProgramUse requested{PathSchedule::Wavefront, false, false, false, false};
+  EXPECT_EQ(pipelinesAwaited(requested), Kinds{PipelineKind::Wavefront});
+}
+
+TEST(ProgramUse, NothingStandsInForTheOtherPipelines) {
+  for (PathSchedule schedule : {PathSchedule::Auto, PathSchedule::Wavefront}) {
+    EXPECT_EQ(pipelinesAwaited({schedule, true, false}), Kinds{PipelineKind::AovMegakernel});
+    EXPECT_EQ(pipelinesAwaited({schedule, false, true}), Kinds{PipelineKind::Restir});
+    EXPECT_EQ(pipelinesAwaited({schedule, false, false, true}), Kinds{PipelineKind::Media});
+  }
+}
+
 TEST(ProgramUse, EveryProgramIsLaunchedByThePipelineThatHoldsIt) {
   for (size_t k = 0; k < kPipelineKinds; ++k)
     for (RaygenProgram program : pipelinePrograms(PipelineKind(k)))

@@ -171,9 +171,9 @@ void MultiGpuBackend::onEveryDevice(const std::function<void(OptixBackend&)>& ta
   });
 }
 
-double MultiGpuBackend::preparePrograms() {
+double MultiGpuBackend::preparePrograms(ProgramWait wait) {
   const auto start = std::chrono::steady_clock::now();
-  onEveryDevice([](OptixBackend& device) { device.preparePrograms(); });
+  onEveryDevice([wait](OptixBackend& device) { device.preparePrograms(wait); });
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 

@@ -55,7 +55,7 @@ class MultiGpuBackend final : public Backend, public DeviceImage {
   void setAovsEnabled(bool enabled) override;
   bool aovsEnabled() const override;
   // Every GPU's, at the same time.
-  double preparePrograms() override;
+  double preparePrograms(ProgramWait wait = ProgramWait::NextFrame) override;
   AovImages readAovs() const override;
   // The first device's filters, on the combined film.
   const FilmFilters& filters() const override;

@@ -156,9 +156,10 @@ struct OptixBackend::State {
   // What the next frame renders, and so which pipelines it launches (program_use.h).
   ProgramUse use() const {
     return {schedule.decided() ? schedule.next() : PathSchedule::Auto, aovsEnabled, settings.restir != RestirMode::Off,
-            !flat.media.empty()};
+            !flat.media.empty(), schedule.requested() == PathSchedule::Auto};
   }
   std::vector<ProgramModule> neededModules() const { return modulesOf(pipelinesNeeded(use())); }
+  std::vector<ProgramModule> awaitedModules() const { return modulesOf(pipelinesAwaited(use())); }
 
   // Begins compiling the modules the next frame needs, where they have not begun: called wherever what it renders
   // may have changed, so that the compile runs while the caller sets up the rest (or renders on the CPU).
@@ -167,12 +168,12 @@ struct OptixBackend::State {
     for (ProgramModule module : neededModules()) modules.start(module, CompilePriority::Needed);
   }
 
-  // Compiles the modules of the next frame's pipelines, all at once (each pipeline waits for its own, one after the
-  // other), and makes the pipelines.
-  void prepareNextFrame() {
+  // Compiles the modules of the next frame's pipelines (or of every frame's), all at once (each pipeline waits for
+  // its own, one after the other), and makes the pipelines.
+  void preparePrograms(ProgramWait wait) {
     startDeferred = false;
     startNeeded();
-    makePipelines(pipelinesNeeded(use()));
+    makePipelines(wait == ProgramWait::EveryFrame ? pipelinesNeeded(use()) : pipelinesAwaited(use()));
   }
 
   // An interactive session (ProgramStart::InBackground) also compiles, after its first frame on the GPU, the
@@ -242,6 +243,9 @@ struct OptixBackend::State {
   LaunchResult launchPaths(LaunchParameters& p, uint32_t rows) {
     if (!schedule.decided()) probeSchedule();
     startNeeded();  // the schedule decided may need another pipeline than the probe's
+    const bool standIn = schedule.next() == PathSchedule::Wavefront && !wavefrontCompiled();
+    report(standIn);
+    if (standIn) return launch(RaygenProgram::Render, p, rows);
     if (schedule.next() == PathSchedule::Wavefront) {
       try {
         wavefront.reserve(size_t(settings.width) * rows);
@@ -273,9 +277,17 @@ struct OptixBackend::State {
     report();
   }
 
-  // Says which schedule renders, when that changed.
-  void report() {
-    const std::string line = schedule.describe();
+  // Whether the wavefront can launch without waiting, or must, where it was requested rather than Auto's choice.
+  bool wavefrontCompiled() const {
+    if (schedule.requested() == PathSchedule::Wavefront || pipelines[size_t(PipelineKind::Wavefront)]) return true;
+    return modules.finished(modulesOf({PipelineKind::Wavefront}));
+  }
+
+  // Says which schedule renders, when that changed; `standIn`: the megakernel renders while the wavefront that Auto
+  // chose compiles.
+  void report(bool standIn = false) {
+    const std::string line =
+        schedule.describe() + (standIn ? "; the megakernel renders until the wavefront's programs have compiled" : "");
     if (line != reportedSchedule) std::fprintf(stderr, "optix: %s\n", line.c_str());
     reportedSchedule = line;
   }
@@ -472,7 +484,7 @@ OptixBackend::OptixBackend(int deviceIndex, ProgramCompileListener compileProgre
       display_(std::make_unique<DeviceFilmDisplay>(*this)) {
   std::fprintf(stderr, "optix: %s\n", deviceDescription().c_str());
   setSettings(RenderSettings{});  // begins compiling the modules of a first frame of these settings
-  if (start == ProgramStart::Wait) state_->prepareNextFrame();
+  if (start == ProgramStart::Wait) state_->preparePrograms(ProgramWait::NextFrame);
 }
 
 OptixBackend::~OptixBackend() {
@@ -561,7 +573,7 @@ FrameStats OptixBackend::renderRows(uint32_t samplesPerPixel, uint32_t firstRow,
   if (!s.hasScene) throw std::logic_error("OptixBackend::render before setScene");
   if (size_t(firstRow) + rows > s.settings.height) throw std::logic_error("OptixBackend::renderRows past the image");
   if (rows == 0) return {};
-  if (s.startDeferred) s.prepareNextFrame();
+  if (s.startDeferred) s.preparePrograms(ProgramWait::NextFrame);
   // Per-pixel ray counts are 32-bit: long requests are split into launches that cannot overflow them.
   const uint32_t maxPerLaunch = std::max(1u, 0xFFFFFFFFu / rayBoundPerSample(s.settings));
   FrameStats stats;
@@ -638,15 +650,15 @@ void OptixBackend::setAovsEnabled(bool enabled) {
 
 std::optional<ProgramCompileStatus> OptixBackend::startingCompile() const {
   const State& s = *state_;
-  const std::vector<ProgramModule> needed = s.neededModules();
-  if (s.modules.finished(needed)) return std::nullopt;
-  const CompileTaskCounts tasks = s.modules.tasks(needed);
-  return ProgramCompileStatus{tasks.done, tasks.known, s.modules.secondsCompiling(needed)};
+  const std::vector<ProgramModule> awaited = s.awaitedModules();
+  if (s.modules.finished(awaited)) return std::nullopt;
+  const CompileTaskCounts tasks = s.modules.tasks(awaited);
+  return ProgramCompileStatus{tasks.done, tasks.known, s.modules.secondsCompiling(awaited)};
 }
 
-double OptixBackend::preparePrograms() {
+double OptixBackend::preparePrograms(ProgramWait wait) {
   const auto start = std::chrono::steady_clock::now();
-  state_->prepareNextFrame();
+  state_->preparePrograms(wait);
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 

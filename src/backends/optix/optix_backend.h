@@ -24,9 +24,10 @@ class OptixBackend final : public Backend, public DeviceImage {
   // timeRawTrace. With ProgramStart::Wait it returns once the first frame's are compiled; with InBackground at
   // once (startingCompile() says how the compile goes), and after its first frame also compiles, at low priority,
   // the programs a control is likely to switch to; with AtFirstFrame it compiles nothing until the first frame
-  // (or preparePrograms), which compiles what that frame needs, all at once. A launch waits for the programs it needs,
-  // and the destructor for every compile begun. `compileProgress` hears of these waits while they last longer than a
-  // moment: a first start on the machine, when OptiX's disk cache does not hold the programs.
+  // (or preparePrograms), which compiles what that frame needs, all at once. A launch waits for the programs it needs
+  // (where the schedule is Auto's, the megakernel renders while the wavefront's compile: program_use.h,
+  // pipelinesAwaited), and the destructor for every compile begun. `compileProgress` hears of these waits while they
+  // last longer than a moment: a first start on the machine, when OptiX's disk cache does not hold the programs.
   explicit OptixBackend(int deviceIndex = 0, ProgramCompileListener compileProgress = {},
                         ProgramStart start = ProgramStart::Wait);
   ~OptixBackend() override;
@@ -65,7 +66,7 @@ class OptixBackend final : public Backend, public DeviceImage {
   bool aovsEnabled() const override;
   // The compile of the programs the next frame needs, while it runs.
   std::optional<ProgramCompileStatus> startingCompile() const override;
-  double preparePrograms() override;
+  double preparePrograms(ProgramWait wait = ProgramWait::NextFrame) override;
   AovImages readAovs() const override;
   // The CUDA versions of the CPU filters, run on the film in device memory; only the result comes back.
   // The CUDA version of the temporal filter, its history kept in device memory; only the result comes back.

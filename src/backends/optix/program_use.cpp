@@ -86,6 +86,11 @@ std::vector<PipelineKind> pipelinesNeeded(const ProgramUse& use) {
   return {PipelineKind::Megakernel, PipelineKind::Wavefront};
 }
 
+std::vector<PipelineKind> pipelinesAwaited(const ProgramUse& use) {
+  if (!use.media && !use.restir && !use.aovs && use.megakernelMayStandIn) return {PipelineKind::Megakernel};
+  return pipelinesNeeded(use);
+}
+
 std::vector<PipelineKind> pipelinesLikely(const ProgramUse& use) {
   if (use.restir || use.media) return {};
   if (use.aovs) return pipelinesNeeded({use.schedule, false, false});

@@ -64,10 +64,18 @@ struct ProgramUse {
   bool aovs = false;
   bool restir = false;
   bool media = false;  // the scene has participating media: their megakernel renders, whatever the schedule
+  // The schedule is Auto's (undecided, or its decision) rather than requested: the megakernel may then render in
+  // the wavefront's place while the wavefront's programs compile, since both draw the same samples
+  // (backends/path_schedule.h).
+  bool megakernelMayStandIn = true;
 };
 
-// The pipelines the next frame launches.
+// The pipelines the next frames launch, whose modules compile at once.
 std::vector<PipelineKind> pipelinesNeeded(const ProgramUse& use);
+// The pipelines the next frame waits for: those it needs, but the megakernel's alone where it may stand in for the
+// wavefront. On a first start its module compiles in about half the wavefront's time (docs/performance.md,
+// 'The first start'), so the first image comes that much sooner, and the wavefront takes over once compiled.
+std::vector<PipelineKind> pipelinesAwaited(const ProgramUse& use);
 // The pipelines an interactive session will likely switch to: the AOV path tracer, which each denoiser and the
 // bilateral filter turn on, and back from it the plain path tracer. Never ReSTIR's, which is chosen at start.
 std::vector<PipelineKind> pipelinesLikely(const ProgramUse& use);
