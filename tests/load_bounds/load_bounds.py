@@ -10,6 +10,7 @@ the bounds; a case of shared data also renders the scene with one reference and 
 cost no more than 1.2 times its memory."""
 
 import gzip
+import json
 import os
 import re
 import struct
@@ -238,6 +239,42 @@ def case_max_memory(candela, workdir):
     write(os.path.join(workdir, "budget.png"), png_bytes(8192, 8192, 4))
     sphere_scene(workdir, "budget.pbrt", texture="budget.png")
     return "refused", "budget.pbrt", ["--max-memory", "200M"], "budget.png: an image decoded at 8192x8192 pixels needs about 256 MiB.*--max-memory"
+
+
+def glb_bytes(document, binary):
+    """A .glb of a JSON document and a BIN chunk, each padded to four bytes."""
+    text = json.dumps(document).encode()
+    text += b" " * (-len(text) % 4)
+    binary += b"\0" * (-len(binary) % 4)
+    total = 12 + 8 + len(text) + 8 + len(binary)
+    return (struct.pack("<4sII", b"glTF", 2, total) + struct.pack("<I4s", len(text), b"JSON") + text +
+            struct.pack("<I4s", len(binary), b"BIN\0") + binary)
+
+
+def case_meshopt_decoded_size(candela, workdir):
+    """A triangle whose positions are an EXT_meshopt_compression stream of 8 MiB (zeros, no valid stream) that
+    claims 2 GiB decoded, within the 256 times its bytes that the codec allows: refused by the load budget before
+    the decoded buffer is allocated."""
+    compressed, stride = 8 << 20, 256
+    count = compressed * 256 // stride
+    stream = {"buffer": 0, "byteLength": compressed, "byteStride": stride, "count": count, "mode": "ATTRIBUTES"}
+    document = {
+        "asset": {"version": "2.0"},
+        "buffers": [{"byteLength": compressed},
+                    {"byteLength": stride * count, "extensions": {"EXT_meshopt_compression": {"fallback": True}}}],
+        "bufferViews": [{"buffer": 1, "byteLength": stride * count,
+                         "extensions": {"EXT_meshopt_compression": stream}}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                       "min": [0, 0, 0], "max": [1, 1, 0]}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+        "nodes": [{"mesh": 0}],
+        "scenes": [{"nodes": [0]}],
+        "extensionsUsed": ["EXT_meshopt_compression"],
+        "extensionsRequired": ["EXT_meshopt_compression"],
+    }
+    write(os.path.join(workdir, "meshopt.glb"), glb_bytes(document, b"\0" * compressed))
+    return ("refused", "meshopt.glb", ["--max-memory", "1G"],
+            r"meshopt\.glb: bufferViews\[0\] decoded from EXT_meshopt_compression needs about 2\.0 GiB.*--max-memory")
 
 
 CASES = {name[len("case_"):]: f for name, f in globals().items() if name.startswith("case_")}

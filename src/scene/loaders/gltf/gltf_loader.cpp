@@ -959,7 +959,7 @@ Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, c
   }
 
   const GltfBufferList buffers(json ? std::string_view(json, jsonSize) : std::string_view());
-  const GltfBufferCharge bufferCharge(buffers, name);  // kept until the model that holds the buffers is gone
+  GltfBufferCharge bufferCharge(buffers, name);  // kept until the model that holds the buffers is gone
   tinygltf::TinyGLTF loader;
   FileAccess access{baseDir, files, buffers, {}, {}};
   loader.SetFsCallbacks({&fileExists, &expandFilePath, &readWholeFile, &writeWholeFile, &access});
@@ -991,7 +991,7 @@ Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, c
     if (!firstLine(line).empty()) warnings.add(name, firstLine(line));
   checkGltfExtensions(model, name, warnings);
   decodeDracoPrimitives(model, name);
-  decodeMeshoptBufferViews(model, name);
+  decodeMeshoptBufferViews(model, name, bufferCharge);
   Scene scene = GltfSceneBuilder(model, name, files, warnings, sharedTextures).build();
   scene.inputFiles.insert(scene.inputFiles.begin(), access.filesRead.begin(), access.filesRead.end());
   return scene;
