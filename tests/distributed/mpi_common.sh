@@ -13,19 +13,19 @@ enter_folder() {
   rm -rf ./*
 }
 
-# stop_rank_one <name> <file> <delay> <text> <mpirun arguments...>: runs `mpirun <mpirun arguments...>` in the
+# stop_rank_one <name> <when> <delay> <text> <mpirun arguments...>: runs `mpirun <mpirun arguments...>` in the
 # background under `timeout`, so that a job that hangs ends the test, with its standard output in <name>.out and
-# its errors in <name>.log. Once <file> exists and <delay> more seconds have passed, stops (SIGSTOP) rank 1 of the
-# job: the process whose command line holds <text> (a path of this test's folder, which no other job names) and
-# whose Open MPI rank is 1. Waits for the job, lets the stopped rank go (SIGCONT) and fails unless the job ended
-# with exit status 0.
+# its errors in <name>.log. Once the command <when> succeeds (`[ -e stall.exr ]`, asked every 0.05 s) and <delay>
+# more seconds have passed, stops (SIGSTOP) rank 1 of the job: the process whose command line holds <text> (a path
+# of this test's folder, which no other job names) and whose Open MPI rank is 1. Waits for the job, lets the
+# stopped rank go (SIGCONT) and fails unless the job ended with exit status 0.
 stop_rank_one() {
-  local name=$1 file=$2 delay=$3 text=$4
+  local name=$1 when=$2 delay=$3 text=$4
   shift 4
   timeout 120 "${mpirun[@]}" "$@" >"$name.out" 2>"$name.log" &
-  local launcher=$! stopped='' pid
-  for _ in $(seq 600); do [ -e "$file" ] && break; sleep 0.1; done
-  [ -e "$file" ] || fail "no $file: $(cat "$name.log")"
+  local launcher=$! stopped='' pid ready=''
+  for _ in $(seq 1200); do eval "$when" && ready=1 && break; sleep 0.05; done
+  [ -n "$ready" ] || fail "never $when: $(cat "$name.log")"
   sleep "$delay"
   for pid in $(pgrep -f "$text"); do
     [ "$(tr '\0' '\n' <"/proc/$pid/environ" 2>/dev/null | sed -n 's/^OMPI_COMM_WORLD_RANK=//p')" = 1 ] && stopped=$pid

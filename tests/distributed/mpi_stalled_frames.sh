@@ -13,8 +13,8 @@ scene=$("$writer" scene) || fail "writing the animated glTF"
 args=("$scene" --no-cache --backend cpu --threads 1 --width 32 --height 24 --seed 3 --fps 2 --spp 1500
       --frames 0:3)
 
-stop_rank_one stall stall_00.exr 0.7 "$out/stall_##.exr" -n 2 "$candela" render "${args[@]}" --rank-timeout 2s \
-  -o "$out/stall_##.exr"
+stop_rank_one stall "[ -e stall_00.exr ]" 0.7 "$out/stall_##.exr" -n 2 "$candela" render "${args[@]}" \
+  --rank-timeout 2s -o "$out/stall_##.exr"
 expect_line stall.log "candela: warning: rank 1 did not finish its batches within 2 s (--rank-timeout); rank 0 renders its samples again and the rest of the render alone"
 expect_line stall.log "candela: warning: the other ranks were let go when a rank stopped answering; rank 0 renders the remaining frames alone"
 "$candela" render "${args[@]}" -o single_##.exr >single.out 2>single.log || fail "single process: $(cat single.log)"

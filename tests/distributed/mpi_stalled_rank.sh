@@ -10,7 +10,7 @@ enter_folder "$out"
 args=(render cornell-box --backend cpu --threads 1 --width 32 --height 24 --spp 1500 --seed 3)
 
 # Rank 1 is stopped when the first checkpoint is written.
-stop_rank_one stall stall.exr 0 "$out/stall.exr" -n 3 "$candela" "${args[@]}" --rank-timeout 3s \
+stop_rank_one stall "[ -e stall.exr ]" 0 "$out/stall.exr" -n 3 "$candela" "${args[@]}" --rank-timeout 3s \
   --checkpoint "$out/stall.exr" --checkpoint-every 0.5s -o "$out/stall-image.exr"
 expect_line stall.log "candela: warning: rank 1 did not finish its batches within 3 s (--rank-timeout); rank 0 renders its samples again and the rest of the render alone"
 [ -s stall-image.exr ] || fail "no image: $(cat stall.log)"
