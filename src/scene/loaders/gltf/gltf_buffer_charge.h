@@ -17,12 +17,12 @@ class GltfBufferCharge {
  public:
   GltfBufferCharge(const GltfBufferList& buffers, const std::string& file);
   ~GltfBufferCharge();
+  GltfBufferCharge(const GltfBufferCharge&) = delete;
+  GltfBufferCharge& operator=(const GltfBufferCharge&) = delete;
 
   // Charges `bytes` that `element` of the file is about to take in the model (chargeLoadMemory's LoadBudgetError
   // when they do not fit).
   void charge(uint64_t bytes, const std::string& element);
-  GltfBufferCharge(const GltfBufferCharge&) = delete;
-  GltfBufferCharge& operator=(const GltfBufferCharge&) = delete;
 
  private:
   std::string file_;
