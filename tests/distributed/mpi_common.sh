@@ -1,8 +1,45 @@
-# Sourced by the mpirun tests: the launcher's command line, failing, and the check of a rank without the scene.
+# Sourced by the mpirun tests: the launcher's command line, failing, the test's folder, a rank stopped in the middle
+# of a job, and the check of a rank without the scene.
 command -v mpirun >/dev/null || { echo "mpirun not found: skipped"; exit 77; }
 mpirun=(mpirun --oversubscribe)
 [ "$(id -u)" -eq 0 ] && mpirun+=(--allow-run-as-root)
 fail() { echo "FAILED: $*"; exit 1; }
+
+# enter_folder <folder>: makes <folder> (the test's own, under the build folder) the working directory, with
+# nothing left in it from an earlier run.
+enter_folder() {
+  mkdir -p "$1" || fail "cannot make $1"
+  cd "$1" || fail "cannot enter $1"
+  rm -rf ./*
+}
+
+# stop_rank_one <name> <when> <delay> <text> <mpirun arguments...>: runs `mpirun <mpirun arguments...>` in the
+# background under `timeout`, so that a job that hangs ends the test, with its standard output in <name>.out and
+# its errors in <name>.log. Once the command <when> succeeds (`[ -e stall.exr ]`, asked every 0.05 s) and <delay>
+# more seconds have passed, stops (SIGSTOP) rank 1 of the job: the process whose command line holds <text> (a path
+# of this test's folder, which no other job names) and whose Open MPI rank is 1. Waits for the job, lets the
+# stopped rank go (SIGCONT) and fails unless the job ended with exit status 0.
+stop_rank_one() {
+  local name=$1 when=$2 delay=$3 text=$4
+  shift 4
+  timeout 120 "${mpirun[@]}" "$@" >"$name.out" 2>"$name.log" &
+  local launcher=$! stopped='' pid ready=''
+  for _ in $(seq 1200); do eval "$when" && ready=1 && break; sleep 0.05; done
+  [ -n "$ready" ] || fail "never $when: $(cat "$name.log")"
+  sleep "$delay"
+  for pid in $(pgrep -f "$text"); do
+    [ "$(tr '\0' '\n' <"/proc/$pid/environ" 2>/dev/null | sed -n 's/^OMPI_COMM_WORLD_RANK=//p')" = 1 ] && stopped=$pid
+  done
+  [ -n "$stopped" ] || fail "rank 1 not found"
+  kill -STOP "$stopped"
+  wait "$launcher"
+  local status=$?
+  kill -CONT "$stopped" 2>/dev/null
+  [ "$status" -eq 0 ] || fail "exit status $status: $(cat "$name.log")"
+}
+
+# expect_line <file> <line>: fails unless <file> has the line <line>, whole.
+expect_line() { grep -qxF "$2" "$1" || fail "no line '$2': $(cat "$1")"; }
 
 # rank_without_scene <folder> <scene file> <output> <candela> <render arguments...>: the scene is on one node's
 # disk only. Copies <scene file> (and its .bin, if any) into <folder>/here, where rank 0 starts; rank 1 starts in

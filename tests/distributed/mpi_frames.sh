@@ -6,7 +6,7 @@
 set -u
 candela=$1 compare=$2 writer=$3 out=$4
 source "$(dirname "$0")/mpi_common.sh"
-mkdir -p "$out" && cd "$out" && rm -rf ./*.exr ./*.log ./*.out ./*.png scene here elsewhere
+enter_folder "$out"
 scene=$("$writer" scene) || fail "writing the animated glTF"
 args=("$scene" --no-cache --backend cpu --threads 1 --width 32 --height 24 --seed 3 --aov albedo,normal,depth --fps 2)
 

@@ -6,7 +6,7 @@
 set -u
 candela=$1 out=$2
 source "$(dirname "$0")/mpi_common.sh"
-mkdir -p "$out" && cd "$out" && rm -rf ./*.png here elsewhere
+enter_folder "$out"
 common=(render --backend cpu --threads 1 --height 12 --spp 4 --rank-timeout 60s)
 
 # refused <expected line> <rank 0's arguments> -- <rank 1's arguments>

@@ -5,7 +5,7 @@
 set -u
 candela=$1 compare=$2 out=$3
 source "$(dirname "$0")/mpi_common.sh"
-mkdir -p "$out" && cd "$out" && rm -rf ./*.exr ./*.log here elsewhere
+enter_folder "$out"
 args=(cornell-box --backend cpu --threads 1 --width 32 --height 24 --spp 24 --seed 3 --aov albedo,normal,depth)
 
 "$candela" render "${args[@]}" --checkpoint single.exr -o single-image.exr >/dev/null 2>&1 || fail "single render"

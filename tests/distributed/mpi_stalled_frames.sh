@@ -2,39 +2,21 @@
 # mpi_stalled_frames.sh <candela> <compare_exr> <write_animated_gltf> <folder>: a rank stopped (SIGSTOP) in the
 # middle of a sequence (`--frames`) on two ranks loses no frame: after --rank-timeout rank 0 warns, renders the
 # stopped rank's samples of that frame again and the remaining frames alone, and writes every frame once, each
-# the same as a single process's up to the order of the additions. The launcher runs under `timeout`, so that a
-# job that hangs ends the test. Skips (77) without mpirun.
+# the same as a single process's up to the order of the additions. Skips (77) without mpirun.
 set -u
 candela=$1 compare=$2 writer=$3 out=$4
 source "$(dirname "$0")/mpi_common.sh"
-mkdir -p "$out" && cd "$out" && rm -rf ./*.exr ./*.log ./*.out scene
+enter_folder "$out"
 scene=$("$writer" scene) || fail "writing the animated glTF"
 # Frames of about two seconds on two ranks (on a busy two-core machine): rank 1 is stopped 0.7 s into the second
 # frame, while it renders.
 args=("$scene" --no-cache --backend cpu --threads 1 --width 32 --height 24 --seed 3 --fps 2 --spp 1500
       --frames 0:3)
 
-timeout 120 "${mpirun[@]}" -n 2 "$candela" render "${args[@]}" --rank-timeout 2s -o "$out/stall_##.exr" \
-  >stall.out 2>stall.log &
-launcher=$!
-for _ in $(seq 600); do [ -e stall_00.exr ] && break; sleep 0.1; done
-[ -e stall_00.exr ] || fail "no first frame: $(cat stall.log)"
-sleep 0.7
-# Rank 1 of this job (the one with this folder's output on its command line).
-stopped=
-for pid in $(pgrep -f "$out/stall_##.exr"); do
-  [ "$(tr '\0' '\n' <"/proc/$pid/environ" 2>/dev/null | sed -n 's/^OMPI_COMM_WORLD_RANK=//p')" = 1 ] && stopped=$pid
-done
-[ -n "$stopped" ] || fail "rank 1 not found"
-kill -STOP "$stopped"
-wait $launcher
-status=$?
-kill -CONT "$stopped" 2>/dev/null
-[ "$status" -eq 0 ] || fail "exit status $status: $(cat stall.log)"
-grep -q "^candela: warning: rank 1 did not finish its batches within 2 s (--rank-timeout); rank 0 renders its samples again and the rest of the render alone$" stall.log ||
-  fail "no warning of the stopped rank: $(cat stall.log)"
-grep -q "^candela: warning: the other ranks were let go when a rank stopped answering; rank 0 renders the remaining frames alone$" stall.log ||
-  fail "no warning of the frames rendered alone: $(cat stall.log)"
+stop_rank_one stall "[ -e stall_00.exr ]" 0.7 "$out/stall_##.exr" -n 2 "$candela" render "${args[@]}" \
+  --rank-timeout 2s -o "$out/stall_##.exr"
+expect_line stall.log "candela: warning: rank 1 did not finish its batches within 2 s (--rank-timeout); rank 0 renders its samples again and the rest of the render alone"
+expect_line stall.log "candela: warning: the other ranks were let go when a rank stopped answering; rank 0 renders the remaining frames alone"
 "$candela" render "${args[@]}" -o single_##.exr >single.out 2>single.log || fail "single process: $(cat single.log)"
 for f in 00 01 02 03; do
   written=$(grep -c "/stall_$f\.exr\$" stall.out)

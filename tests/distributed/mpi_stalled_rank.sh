@@ -6,27 +6,13 @@
 set -u
 candela=$1 compare=$2 out=$3
 source "$(dirname "$0")/mpi_common.sh"
-mkdir -p "$out" && cd "$out" && rm -f ./*.exr ./*.log
+enter_folder "$out"
 args=(render cornell-box --backend cpu --threads 1 --width 32 --height 24 --spp 1500 --seed 3)
 
-"${mpirun[@]}" -n 3 "$candela" "${args[@]}" --rank-timeout 3s --checkpoint "$out/stall.exr" --checkpoint-every 0.5s \
-  -o "$out/stall-image.exr" >stall.log 2>&1 &
-launcher=$!
-for _ in $(seq 300); do [ -e stall.exr ] && break; sleep 0.1; done
-[ -e stall.exr ] || fail "no checkpoint: $(cat stall.log)"
-# Rank 1 of this job (the one with this folder's checkpoint on its command line).
-stopped=
-for pid in $(pgrep -f "$out/stall.exr"); do
-  [ "$(tr '\0' '\n' <"/proc/$pid/environ" 2>/dev/null | sed -n 's/^OMPI_COMM_WORLD_RANK=//p')" = 1 ] && stopped=$pid
-done
-[ -n "$stopped" ] || fail "rank 1 not found"
-kill -STOP "$stopped"
-wait $launcher
-status=$?
-kill -CONT "$stopped" 2>/dev/null
-[ "$status" -eq 0 ] || fail "exit status $status: $(cat stall.log)"
-grep -q "^candela: warning: rank 1 did not finish its batches within 3 s (--rank-timeout); rank 0 renders its samples again and the rest of the render alone$" stall.log ||
-  fail "no warning: $(cat stall.log)"
+# Rank 1 is stopped when the first checkpoint is written.
+stop_rank_one stall "[ -e stall.exr ]" 0 "$out/stall.exr" -n 3 "$candela" "${args[@]}" --rank-timeout 3s \
+  --checkpoint "$out/stall.exr" --checkpoint-every 0.5s -o "$out/stall-image.exr"
+expect_line stall.log "candela: warning: rank 1 did not finish its batches within 3 s (--rank-timeout); rank 0 renders its samples again and the rest of the render alone"
 [ -s stall-image.exr ] || fail "no image: $(cat stall.log)"
 "$candela" "${args[@]}" --checkpoint "$out/single.exr" -o "$out/single-image.exr" >/dev/null 2>&1 || fail "single render"
 "$compare" single.exr stall.exr 1e-4 >compare.log || fail "films: $(cat compare.log)"

@@ -4,9 +4,9 @@ first one the GPU renders (while the GPU programs compile, serve renders on the 
 
     serve_first_frame.py CANDELA [--seconds 90] [--width 1920] [--height 1080] -- SERVE ARGUMENTS...
 
-Starts `CANDELA serve --port 0 SERVE ARGUMENTS...`, reads the address it prints, connects as
-measure_client.py does (take control, resize, acknowledge every frame) and prints one JSON object: the seconds from
-the start to the address, to the first frame and to the first frame of another backend than the first one's (the
+Starts `CANDELA serve --port 0 SERVE ARGUMENTS...`, reads the address it prints, connects as a browser does
+(tests/serve/serve_client.py: take control, resize, acknowledge every frame) and prints one JSON object: the seconds
+from the start to the address, to the first frame and to the first frame of another backend than the first one's (the
 handover), with each one's backend and device, the frames rendered before the handover and the compile's progress
 as the last CPU frame reported it. Ends serve when the handover was seen or after --seconds.
 """
@@ -17,10 +17,10 @@ import subprocess
 import sys
 import time
 
-# measure_client.py is in tests/serve, or beside this script in a bundle (bundle.sh).
+# serve_client.py is in tests/serve, or beside this script in a bundle (bundle.sh).
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path[:0] = [here, os.path.join(here, "..", "serve")]
-from measure_client import WebSocket, frame_header  # noqa: E402
+from serve_client import connect, frames  # noqa: E402
 
 
 def main():
@@ -41,29 +41,22 @@ def main():
         if "open " not in line:
             raise RuntimeError(f"serve printed no address: {line!r}")
         result["address_seconds"] = round(time.monotonic() - start, 3)
-        ws = WebSocket(line.split("open ", 1)[1].strip())
-        ws.send({"type": "action", "name": "take_control"})
-        ws.send({"type": "resize", "width": args.width, "height": args.height})
-        first, frames, starting = None, 0, None
-        while time.monotonic() - start < args.seconds:
-            opcode, payload = ws.receive()
-            if opcode != 0x2:
-                continue
-            header, _ = frame_header(payload)
-            if header.get("kind") != "frame":
-                continue
-            ws.send({"type": "frame_ack", "frame": header["frame"]})
-            now = round(time.monotonic() - start, 3)
-            seen = {"seconds": now, "backend": header.get("backend"), "device": header.get("device")}
+        ws = connect(line.split("open ", 1)[1].strip(), args.width, args.height)
+        first, before_handover, starting = None, 0, None
+        for header, _, arrival in frames(ws):
+            if arrival - start >= args.seconds:
+                break
+            seen = {"seconds": round(arrival - start, 3), "backend": header.get("backend"),
+                    "device": header.get("device")}
             if first is None:
                 first = seen
                 result["first_frame"] = first
             if header.get("backend") != first["backend"]:
                 result["handover"] = seen
                 break
-            frames += 1
+            before_handover += 1
             starting = header.get("starting")
-        result["frames_before_handover"] = frames
+        result["frames_before_handover"] = before_handover
         result["last_starting"] = starting
     finally:
         serve.terminate()

@@ -10,6 +10,7 @@ the bounds; a case of shared data also renders the scene with one reference and 
 cost no more than 1.2 times its memory."""
 
 import gzip
+import json
 import os
 import re
 import struct
@@ -78,14 +79,17 @@ def ply_grid(cells):
     return header + vertices + faces
 
 
-SCENE_HEAD = ('LookAt 0 0 -5  0 0 0  0 1 0\nCamera "perspective" "float fov" 45\nWorldBegin\n'
-              'LightSource "infinite" "rgb L" [1 1 1]\n')
+CAMERA = 'LookAt 0 0 -5  0 0 0  0 1 0\nCamera "perspective" "float fov" 45\nWorldBegin\n'
+SCENE_HEAD = CAMERA + 'LightSource "infinite" "rgb L" [1 1 1]\n'
 
 
 def shapes_scene(count, shape):
+    """A pbrt scene of `count` shapes on a grid of 60 columns; `shape` is the shape's line, or a function that
+    gives the line of the i-th."""
     lines = [SCENE_HEAD]
     for i in range(count):
-        lines.append("AttributeBegin\nTranslate %g %g 0\n%s\nAttributeEnd\n" % (i % 60 * 0.1, i // 60 * 0.1, shape))
+        line = shape if isinstance(shape, str) else shape(i)
+        lines.append("AttributeBegin\nTranslate %g %g 0\n%s\nAttributeEnd\n" % (i % 60 * 0.1, i // 60 * 0.1, line))
     return "".join(lines)
 
 
@@ -113,38 +117,48 @@ def case_include_many(candela, workdir):
 
 def case_spheres(candela, workdir):
     write(os.path.join(workdir, "spheres-1.pbrt"), shapes_scene(1, 'Shape "sphere" "float radius" 0.04'))
-    lines = [SCENE_HEAD]
-    for i in range(3600):
-        lines.append('AttributeBegin\nTranslate %g %g 0\nShape "sphere" "float radius" %g\nAttributeEnd\n'
-                     % (i % 60 * 0.1, i // 60 * 0.1, 0.01 + 0.00001 * i))
-    write(os.path.join(workdir, "spheres-3600.pbrt"), "".join(lines))
+    write(os.path.join(workdir, "spheres-3600.pbrt"),
+          shapes_scene(3600, lambda i: 'Shape "sphere" "float radius" %g' % (0.01 + 0.00001 * i)))
     return "shared", "spheres-1.pbrt", "spheres-3600.pbrt"
 
 
-def case_unused_mix_textures(candela, workdir):
-    write(os.path.join(workdir, "a.png"), png_bytes(4096, 4096))
-    write(os.path.join(workdir, "b.png"), png_bytes(4096, 4096))
+def mix_textures_scene(workdir, name, count, image_size, shared_images, materials, shape_per_material):
+    """A pbrt scene of `count` mix textures of two PNG images of image_size^2 zero pixels, written to workdir/name.
+    shared_images: every mix blends the same two image textures, else each its own pair (one of them scaled, so
+    that no two are alike); materials: a material names each mix; shape_per_material: a sphere follows each
+    material, else one sphere ends the scene."""
+    write(os.path.join(workdir, "a.png"), png_bytes(image_size, image_size))
+    write(os.path.join(workdir, "b.png"), png_bytes(image_size, image_size))
     lines = [SCENE_HEAD]
-    for i in range(200):
-        lines.append('Texture "a%d" "spectrum" "imagemap" "string filename" "a.png" "float uscale" %d\n' % (i, i + 1))
-        lines.append('Texture "b%d" "spectrum" "imagemap" "string filename" "b.png"\n' % i)
-        lines.append('Texture "m%d" "spectrum" "mix" "texture tex1" "a%d" "texture tex2" "b%d"\n' % (i, i, i))
-    lines.append('Shape "sphere"\n')
-    write(os.path.join(workdir, "mix.pbrt"), "".join(lines))
+    if shared_images:
+        lines.append('Texture "a" "spectrum" "imagemap" "string filename" "a.png"\n'
+                     'Texture "b" "spectrum" "imagemap" "string filename" "b.png"\n')
+    for i in range(count):
+        a, b = ("a", "b") if shared_images else ("a%d" % i, "b%d" % i)
+        if not shared_images:
+            lines.append('Texture "%s" "spectrum" "imagemap" "string filename" "a.png" "float uscale" %d\n'
+                         % (a, i + 1))
+            lines.append('Texture "%s" "spectrum" "imagemap" "string filename" "b.png"\n' % b)
+        lines.append('Texture "m%d" "spectrum" "mix" "texture tex1" "%s" "texture tex2" "%s"\n' % (i, a, b))
+        if materials:
+            lines.append('Material "diffuse" "texture reflectance" "m%d"\n' % i)
+        if shape_per_material:
+            lines.append('Shape "sphere"\n')
+    if not shape_per_material:
+        lines.append('Shape "sphere"\n')
+    write(os.path.join(workdir, name), "".join(lines))
+
+
+def case_unused_mix_textures(candela, workdir):
+    mix_textures_scene(workdir, "mix.pbrt", 200, 4096, shared_images=False, materials=False,
+                       shape_per_material=False)
     return "bounded", "mix.pbrt"
 
 
 def case_used_mix_textures(candela, workdir):
     """200 distinct mixes that materials use: refused when their bakes are charged, before any is baked."""
-    write(os.path.join(workdir, "a.png"), png_bytes(4096, 4096))
-    write(os.path.join(workdir, "b.png"), png_bytes(4096, 4096))
-    lines = [SCENE_HEAD]
-    for i in range(200):
-        lines.append('Texture "a%d" "spectrum" "imagemap" "string filename" "a.png" "float uscale" %d\n' % (i, i + 1))
-        lines.append('Texture "b%d" "spectrum" "imagemap" "string filename" "b.png"\n' % i)
-        lines.append('Texture "m%d" "spectrum" "mix" "texture tex1" "a%d" "texture tex2" "b%d"\n' % (i, i, i))
-        lines.append('Material "diffuse" "texture reflectance" "m%d"\nShape "sphere"\n' % i)
-    write(os.path.join(workdir, "used-mix.pbrt"), "".join(lines))
+    mix_textures_scene(workdir, "used-mix.pbrt", 200, 4096, shared_images=False, materials=True,
+                       shape_per_material=True)
     # A budget of about 2 GiB: ten bakes of 192 MiB would fit it, and break the bound on memory, if the mixes
     # were baked before the refusal.
     return ("refused", "used-mix.pbrt", ["--max-memory", "4G"],
@@ -153,27 +167,29 @@ def case_used_mix_textures(candela, workdir):
 
 def case_shared_mix_textures(candela, workdir):
     """The same mix defined under 200 names, each used by a material: one bake."""
-    write(os.path.join(workdir, "a.png"), png_bytes(2048, 2048))
-    write(os.path.join(workdir, "b.png"), png_bytes(2048, 2048))
     for count in (1, 200):
-        lines = [SCENE_HEAD,
-                 'Texture "a" "spectrum" "imagemap" "string filename" "a.png"\n'
-                 'Texture "b" "spectrum" "imagemap" "string filename" "b.png"\n']
-        for i in range(count):
-            lines.append('Texture "m%d" "spectrum" "mix" "texture tex1" "a" "texture tex2" "b"\n' % i)
-            lines.append('Material "diffuse" "texture reflectance" "m%d"\n' % i)
-        lines.append('Shape "sphere"\n')  # one shape: spheres of 200 materials would be 200 meshes
-        write(os.path.join(workdir, "mix-%d.pbrt" % count), "".join(lines))
+        # One shape: spheres of 200 materials would be 200 meshes.
+        mix_textures_scene(workdir, "mix-%d.pbrt" % count, count, 2048, shared_images=True, materials=True,
+                           shape_per_material=False)
     return "shared", "mix-1.pbrt", "mix-200.pbrt"
+
+
+def sphere_scene(workdir, name, texture=None, environment=None, shape='Shape "sphere"'):
+    """A pbrt scene of one shape (a sphere unless `shape` says otherwise) under an infinite light, written to
+    workdir/name: the sphere's reflectance is the image file `texture`, the light's radiance the image file
+    `environment` (else white)."""
+    lines = [SCENE_HEAD if environment is None
+             else CAMERA + 'LightSource "infinite" "string filename" "%s"\n' % environment]
+    if texture is not None:
+        lines.append('Texture "t" "spectrum" "imagemap" "string filename" "%s"\n'
+                     'Material "diffuse" "texture reflectance" "t"\n' % texture)
+    lines.append(shape + "\n")
+    write(os.path.join(workdir, name), "".join(lines))
 
 
 def case_tall_pfm(candela, workdir):
     write(os.path.join(workdir, "tall.pfm"), pfm_bytes(1, 1000000))
-    write(os.path.join(workdir, "tall-pfm.pbrt"),
-          'LookAt 0 0 -5  0 0 0  0 1 0\nCamera "perspective"\nWorldBegin\n'
-          'LightSource "infinite" "string filename" "tall.pfm"\n'
-          'Texture "t" "spectrum" "imagemap" "string filename" "tall.pfm"\n'
-          'Material "diffuse" "texture reflectance" "t"\nShape "sphere"\n')
+    sphere_scene(workdir, "tall-pfm.pbrt", texture="tall.pfm", environment="tall.pfm")
     return "bounded", "tall-pfm.pbrt"
 
 
@@ -194,15 +210,13 @@ def gzip_bomb(workdir, encoding):
     block = b"\0" * (1 << 20)
     data = compressor.compress(header) + b"".join(compressor.compress(block) for _ in range(1024))
     write(os.path.join(workdir, "bomb.ply.gz"), data + compressor.flush())
-    write(os.path.join(workdir, "bomb.pbrt"), SCENE_HEAD + 'Shape "plymesh" "string filename" "bomb.ply.gz"\n')
+    sphere_scene(workdir, "bomb.pbrt", shape='Shape "plymesh" "string filename" "bomb.ply.gz"')
     return "bounded", "bomb.pbrt"
 
 
 def case_large_png(candela, workdir):
     write(os.path.join(workdir, "large.png"), png_bytes(16000, 16000))
-    write(os.path.join(workdir, "large-png.pbrt"), SCENE_HEAD +
-          'Texture "t" "spectrum" "imagemap" "string filename" "large.png"\n'
-          'Material "diffuse" "texture reflectance" "t"\nShape "sphere"\n')
+    sphere_scene(workdir, "large-png.pbrt", texture="large.png")
     return "bounded", "large-png.pbrt"
 
 
@@ -217,18 +231,50 @@ def case_obj_face_corners(candela, workdir):
 
 def case_thin_environment(candela, workdir):
     write(os.path.join(workdir, "thin.pfm"), pfm_bytes(1, 8192))
-    write(os.path.join(workdir, "thin-env.pbrt"),
-          'LookAt 0 0 -5  0 0 0  0 1 0\nCamera "perspective"\nWorldBegin\n'
-          'LightSource "infinite" "string filename" "thin.pfm"\nShape "sphere"\n')
+    sphere_scene(workdir, "thin-env.pbrt", environment="thin.pfm")
     return "bounded", "thin-env.pbrt"
 
 
 def case_max_memory(candela, workdir):
     write(os.path.join(workdir, "budget.png"), png_bytes(8192, 8192, 4))
-    write(os.path.join(workdir, "budget.pbrt"), SCENE_HEAD +
-          'Texture "t" "spectrum" "imagemap" "string filename" "budget.png"\n'
-          'Material "diffuse" "texture reflectance" "t"\nShape "sphere"\n')
+    sphere_scene(workdir, "budget.pbrt", texture="budget.png")
     return "refused", "budget.pbrt", ["--max-memory", "200M"], "budget.png: an image decoded at 8192x8192 pixels needs about 256 MiB.*--max-memory"
+
+
+def glb_bytes(document, binary):
+    """A .glb of a JSON document and a BIN chunk, each padded to four bytes."""
+    text = json.dumps(document).encode()
+    text += b" " * (-len(text) % 4)
+    binary += b"\0" * (-len(binary) % 4)
+    total = 12 + 8 + len(text) + 8 + len(binary)
+    return (struct.pack("<4sII", b"glTF", 2, total) + struct.pack("<I4s", len(text), b"JSON") + text +
+            struct.pack("<I4s", len(binary), b"BIN\0") + binary)
+
+
+def case_meshopt_decoded_size(candela, workdir):
+    """A triangle whose positions are an EXT_meshopt_compression stream of 8 MiB (zeros, no valid stream) that
+    claims 2 GiB decoded, within the 256 times its bytes that the codec allows: refused by the load budget before
+    the decoded buffer is allocated."""
+    compressed, stride = 8 << 20, 256
+    count = compressed * 256 // stride
+    stream = {"buffer": 0, "byteLength": compressed, "byteStride": stride, "count": count, "mode": "ATTRIBUTES"}
+    document = {
+        "asset": {"version": "2.0"},
+        "buffers": [{"byteLength": compressed},
+                    {"byteLength": stride * count, "extensions": {"EXT_meshopt_compression": {"fallback": True}}}],
+        "bufferViews": [{"buffer": 1, "byteLength": stride * count,
+                         "extensions": {"EXT_meshopt_compression": stream}}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                       "min": [0, 0, 0], "max": [1, 1, 0]}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+        "nodes": [{"mesh": 0}],
+        "scenes": [{"nodes": [0]}],
+        "extensionsUsed": ["EXT_meshopt_compression"],
+        "extensionsRequired": ["EXT_meshopt_compression"],
+    }
+    write(os.path.join(workdir, "meshopt.glb"), glb_bytes(document, b"\0" * compressed))
+    return ("refused", "meshopt.glb", ["--max-memory", "1G"],
+            r"meshopt\.glb: bufferViews\[0\] decoded from EXT_meshopt_compression needs about 2\.0 GiB.*--max-memory")
 
 
 CASES = {name[len("case_"):]: f for name, f in globals().items() if name.startswith("case_")}

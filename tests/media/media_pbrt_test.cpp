@@ -9,28 +9,15 @@
 #include "backends/cpu/cpu_backend.h"
 #include "io/load_diagnostics.h"
 #include "media/media_scenes.h"
-#include "scene/loaders/pbrt/pbrt_loader.h"
 #include "scene/scene_repair.h"
+#include "support/pbrt_text.h"
 #include "support/render_statistics.h"
 
 namespace candela::test {
 namespace {
 
-Scene loadText(const std::string& text, LoadWarnings* warningsOut = nullptr) {
-  LoadWarnings warnings;
-  Scene scene = loadPbrtText("test.pbrt", text, warnings);
-  if (warningsOut) *warningsOut = warnings;
-  return scene;
-}
-
-std::string loadError(const std::string& text) {
-  try {
-    loadText(text);
-  } catch (const LoadError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using pbrt::loadError;
+using pbrt::loadText;
 
 // A box [-50, 50] x [-50, 50] x [0, depth] as a pbrt trianglemesh, wound outwards.
 std::string pbrtBox(float depth) {

@@ -7,6 +7,8 @@
 #include <array>
 #include <cstring>
 
+#include "io/available_memory.h"
+#include "io/load_budget.h"
 #include "io/load_diagnostics.h"
 #include "scene/loaders/gltf/gltf_loader.h"
 #include "support/glb_file.h"
@@ -179,6 +181,34 @@ TEST(GltfMeshopt, RepeatedStreamsAreDecodedOnceAndDistinctOnesBounded) {
             std::string::npos)
       << error;
   EXPECT_NE(error.find("more than 256 times the"), std::string::npos) << error;
+}
+
+// A stream's decoded bytes are charged to the load's budget before it is decoded: a view that claims more than the
+// load may use, though within what its compressed bytes could hold, is refused in one line with nothing allocated.
+// A file that fits gives its charge back with the model.
+TEST(GltfMeshopt, DecodedBytesBeyondTheLoadBudgetAreRefusedBeforeDecoding) {
+  setProcessMemoryLimit(uint64_t(1) << 30);  // a budget of at most 512 MiB
+  beginLoadBudget();
+  const uint64_t left = loadMemoryLeft();
+  LoadWarnings warnings;
+  EXPECT_EQ(load(compressedQuad(), warnings).triangleCount(), 2u);
+  EXPECT_EQ(loadMemoryLeft(), left);
+
+  // 4 MiB of compressed bytes (no valid stream: nothing reads them) that claim 1 GiB decoded.
+  CompressedQuad quad = compressedQuad();
+  quad.bin.assign(size_t(4) << 20, 0);
+  quad.gltf["buffers"][0]["byteLength"] = quad.bin.size();
+  json& stream = quad.gltf["bufferViews"][0]["extensions"]["EXT_meshopt_compression"];
+  stream["byteLength"] = quad.bin.size();
+  stream["byteStride"] = 256;
+  stream["count"] = 4 << 20;
+  const std::string error = errorOf(quad);
+  setProcessMemoryLimit(0);
+  beginLoadBudget();
+  EXPECT_NE(error.find("quad.glb: bufferViews[0] decoded from EXT_meshopt_compression needs about 1.0 GiB"),
+            std::string::npos)
+      << error;
+  EXPECT_NE(error.find("--max-memory"), std::string::npos) << error;
 }
 
 }  // namespace

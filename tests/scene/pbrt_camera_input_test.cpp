@@ -8,6 +8,7 @@
 #include "io/load_diagnostics.h"
 #include "scene/loaders/pbrt/pbrt_loader.h"
 #include "scene/scene_test_files.h"
+#include "support/pbrt_text.h"
 
 namespace candela {
 namespace {
@@ -15,15 +16,7 @@ namespace {
 constexpr const char* kTriangle =
     "Shape \"trianglemesh\" \"point3 P\" [0 0 0  1 0 0  0 1 0] \"integer indices\" [0 1 2]\n";
 
-std::string loadError(const std::string& text) {
-  LoadWarnings warnings;
-  try {
-    loadPbrtText("test.pbrt", text, warnings);
-  } catch (const LoadError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using test::pbrt::loadError;
 
 TEST(PbrtCameraInput, ALookAtWithoutADirectionIsRefusedNamingTheLine) {
   EXPECT_EQ(loadError("\nLookAt 1 2 3  1 2 3  0 1 0\nCamera \"perspective\"\nWorldBegin\n"),

@@ -21,27 +21,14 @@
 #include "scene/loaders/pbrt/pbrt_tokenizer.h"
 #include "scene/loaders/texture_limits.h"
 #include "scene/scene_test_files.h"
+#include "support/pbrt_text.h"
 
 namespace candela {
 namespace {
 
 using test::TempFolder;
-
-Scene loadText(const std::string& text, LoadWarnings* warningsOut = nullptr) {
-  LoadWarnings warnings;
-  Scene scene = loadPbrtText("test.pbrt", text, warnings);
-  if (warningsOut) *warningsOut = warnings;
-  return scene;
-}
-
-std::string loadError(const std::string& text) {
-  try {
-    loadText(text);
-  } catch (const LoadError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using test::pbrt::loadError;
+using test::pbrt::loadText;
 
 void expectNear(Vec3 a, Vec3 b, float tolerance = 1e-4f) {
   EXPECT_NEAR(a.x, b.x, tolerance);

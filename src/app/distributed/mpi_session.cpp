@@ -38,18 +38,18 @@ void MpiSession::abort(int status) const {
 
 namespace {
 
-// Tests `request` until it completes, sleeping `pause` between the tests (doubling up to a millisecond) or not
-// at all.
-void wait(MPI_Request& request, double timeoutSeconds, const std::string& what, std::chrono::microseconds pause) {
+// Tests `request` until it completes, `timeoutSeconds` pass or `stopWaiting` returns true, sleeping `pause`
+// between the tests (doubling up to a millisecond) or not at all.
+WaitEnd wait(MPI_Request& request, double timeoutSeconds, const std::string& what, std::chrono::microseconds pause,
+             const std::function<bool()>& stopWaiting) {
   using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
   for (;;) {
     int done = 0;
     checkMpi(MPI_Test(&request, &done, MPI_STATUS_IGNORE), what.c_str());
-    if (done) return;
-    if (std::chrono::duration<double>(Clock::now() - start).count() > timeoutSeconds)
-      throw std::runtime_error(what + ": no answer for " + std::to_string(int(timeoutSeconds)) +
-                               " s (--rank-timeout); a rank has stopped or hangs");
+    if (done) return WaitEnd::Completed;
+    if (stopWaiting && stopWaiting()) return WaitEnd::Stopped;
+    if (std::chrono::duration<double>(Clock::now() - start).count() > timeoutSeconds) return WaitEnd::TimedOut;
     if (pause.count() == 0) continue;
     std::this_thread::sleep_for(pause);
     pause = std::min(pause * 2, std::chrono::microseconds(1000));
@@ -58,13 +58,25 @@ void wait(MPI_Request& request, double timeoutSeconds, const std::string& what, 
 
 }  // namespace
 
+std::runtime_error rankTimeoutError(double timeoutSeconds, const std::string& what) {
+  return std::runtime_error(what + ": no answer for " + std::to_string(int(timeoutSeconds)) +
+                            " s (--rank-timeout); a rank has stopped or hangs");
+}
+
 void waitPolitely(MPI_Request& request, double timeoutSeconds, const std::string& what) {
+  if (waitPolitelyUntil(request, timeoutSeconds, what) != WaitEnd::Completed)
+    throw rankTimeoutError(timeoutSeconds, what);
+}
+
+WaitEnd waitPolitelyUntil(MPI_Request& request, double timeoutSeconds, const std::string& what,
+                          const std::function<bool()>& stopWaiting) {
   // Short sleeps at first: a reply is usually there at once.
-  wait(request, timeoutSeconds, what, std::chrono::microseconds(20));
+  return wait(request, timeoutSeconds, what, std::chrono::microseconds(20), stopWaiting);
 }
 
 void waitActively(MPI_Request& request, double timeoutSeconds, const std::string& what) {
-  wait(request, timeoutSeconds, what, std::chrono::microseconds(0));
+  if (wait(request, timeoutSeconds, what, std::chrono::microseconds(0), {}) != WaitEnd::Completed)
+    throw rankTimeoutError(timeoutSeconds, what);
 }
 
 }  // namespace candela

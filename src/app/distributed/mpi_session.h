@@ -1,6 +1,8 @@
 #pragma once
 #include <mpi.h>
 
+#include <functional>
+#include <stdexcept>
 #include <string>
 
 namespace candela {
@@ -32,6 +34,14 @@ void checkMpi(int code, const char* what);
 // Waits for `request` to complete, sleeping between tests so that a waiting rank leaves its core to the
 // rendering ranks; throws std::runtime_error naming `what` after `timeoutSeconds`.
 void waitPolitely(MPI_Request& request, double timeoutSeconds, const std::string& what);
+// The same, but returns how the wait ended instead of throwing after `timeoutSeconds`, and stops waiting as soon
+// as `stopWaiting` (asked between the tests, when given) returns true. The request is left as it is unless it
+// completed.
+enum class WaitEnd { Completed, TimedOut, Stopped };
+// The error of a wait for `what` that timed out after `timeoutSeconds`.
+std::runtime_error rankTimeoutError(double timeoutSeconds, const std::string& what);
+WaitEnd waitPolitelyUntil(MPI_Request& request, double timeoutSeconds, const std::string& what,
+                          const std::function<bool()>& stopWaiting = {});
 // The same without sleeping, for transfers under way between ranks that are all there: MPI moves a large
 // message only while a rank calls it, so sleeps would slow it down many times.
 void waitActively(MPI_Request& request, double timeoutSeconds, const std::string& what);

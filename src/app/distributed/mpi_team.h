@@ -1,4 +1,7 @@
 #pragma once
+#include <cstdint>
+#include <string>
+
 #include "app/distributed/mpi_session.h"
 #include "app/schedule/render_team.h"
 
@@ -21,11 +24,26 @@ class MpiTeam final : public RenderTeam {
   bool ranksLost() const { return ranksLost_; }
 
  private:
+  // Waits for a collective step of the team (`what`, for a timeout's message). Until the team has rendered, a
+  // rank that does not come within the timeout ends the job (the error is thrown). Between the frames of a
+  // sequence, rank 0 instead gives the others up, as it does for a rank that stops within a frame: it tells them
+  // so, warns, and renders the remaining frames alone; a rank it lets go stops waiting. Returns whether the step
+  // completed; when not, ranksLost_ is set (on rank 0) or released_ (on the others), and the step's request is
+  // left pending: its buffers are members, which outlive it.
+  bool awaitTeam(MPI_Request& request, const char* what);
+  void goOnAlone();
+  bool releaseArrived();
+
   const MpiSession& session_;
   double timeout_;
   bool ranksLost_ = false;    // on rank 0
   bool released_ = false;     // on the other ranks
   bool warnedAlone_ = false;  // rank 0 said that it renders the remaining frames alone
+  bool rendered_ = false;     // the team has made a schedule: a frame was rendered or is being rendered
+  // The buffers of the collective steps (checkSameRender, agree).
+  uint64_t identityLength_ = 0;
+  std::string writersIdentity_;
+  int failingRank_ = 0, firstFailingRank_ = 0;
 };
 
 }  // namespace candela

@@ -26,7 +26,7 @@
 #include "scene/loaders/gltf/gltf_accessors.h"
 #include "scene/loaders/gltf/gltf_animation.h"
 #include "scene/loaders/gltf/gltf_buffer_charge.h"
-#include "scene/loaders/gltf/gltf_buffer_uris.h"
+#include "scene/loaders/gltf/gltf_buffer_list.h"
 #include "scene/loaders/gltf/gltf_byte_ranges.h"
 #include "scene/loaders/gltf/gltf_deformation.h"
 #include "scene/loaders/gltf/gltf_draco.h"
@@ -116,8 +116,7 @@ std::string firstLine(const std::string& s) {
 struct FileAccess {
   std::string baseDir;  // empty: nothing outside the given bytes may be read
   PathRule rule;
-  std::string_view json;  // the glTF's JSON, read for its buffer URIs when the first one is asked about
-  std::optional<GltfBufferUris> bufferUris;
+  const GltfBufferList& buffers;       // the buffers as the glTF's JSON writes them
   std::vector<std::string> filesRead;  // buffers, for Scene::inputFiles
   std::string refusal;                 // why the last path asked about may not be read
 
@@ -130,8 +129,7 @@ struct FileAccess {
       refusal = "a buffer has no 'uri' (only the first buffer of a .glb may leave it out)";
       return std::nullopt;
     }
-    if (!bufferUris) bufferUris.emplace(json);
-    std::optional<std::string> reference = bufferUris->pathFor(decoded);
+    std::optional<std::string> reference = buffers.pathFor(decoded);
     if (!reference) {
       refusal = "buffer '" + decoded + "' names no file (a relative path with valid %-escapes)";
       return std::nullopt;
@@ -960,9 +958,10 @@ Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, c
     std::tie(json, jsonSize) = binary ? glbJson(data, size) : std::pair{reinterpret_cast<const char*>(data), size};
   }
 
-  const GltfBufferCharge bufferCharge(data, size, name);  // kept until the model that holds the buffers is gone
+  const GltfBufferList buffers(json ? std::string_view(json, jsonSize) : std::string_view());
+  GltfBufferCharge bufferCharge(buffers, name);  // kept until the model that holds the buffers is gone
   tinygltf::TinyGLTF loader;
-  FileAccess access{baseDir, files, json ? std::string_view(json, jsonSize) : std::string_view(), {}, {}, {}};
+  FileAccess access{baseDir, files, buffers, {}, {}};
   loader.SetFsCallbacks({&fileExists, &expandFilePath, &readWholeFile, &writeWholeFile, &access});
   loader.SetImageLoader(&keepEncodedImage, nullptr);
   tinygltf::Model model;
@@ -992,7 +991,7 @@ Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, c
     if (!firstLine(line).empty()) warnings.add(name, firstLine(line));
   checkGltfExtensions(model, name, warnings);
   decodeDracoPrimitives(model, name);
-  decodeMeshoptBufferViews(model, name);
+  decodeMeshoptBufferViews(model, name, bufferCharge);
   Scene scene = GltfSceneBuilder(model, name, files, warnings, sharedTextures).build();
   scene.inputFiles.insert(scene.inputFiles.begin(), access.filesRead.begin(), access.filesRead.end());
   return scene;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "io/load_diagnostics.h"
+#include "scene/loaders/gltf/gltf_buffer_charge.h"
 #include "scene/loaders/gltf/gltf_glb.h"
 
 namespace candela {
@@ -68,7 +69,7 @@ std::optional<std::vector<uint8_t>> withMeshoptPlaceholderBuffers(const uint8_t*
 
 #ifndef CANDELA_HAS_MESHOPT
 
-void decodeMeshoptBufferViews(tinygltf::Model&, const std::string&) {}
+void decodeMeshoptBufferViews(tinygltf::Model&, const std::string&, GltfBufferCharge&) {}
 
 #else
 
@@ -150,10 +151,11 @@ std::vector<unsigned char> decode(const tinygltf::Model& model, const Stream& s,
 
 }  // namespace
 
-void decodeMeshoptBufferViews(tinygltf::Model& model, const std::string& file) {
+void decodeMeshoptBufferViews(tinygltf::Model& model, const std::string& file, GltfBufferCharge& charge) {
   const std::string name(kExtension);
-  // Every stream is read and the decoded sizes of the distinct ones added up before any is decoded: bufferViews
-  // that name overlapping compressed bytes could otherwise claim any multiple of the file.
+  // Every stream is read, and the decoded sizes of the distinct ones added up and charged, before any is decoded:
+  // bufferViews that name overlapping compressed bytes could otherwise claim any multiple of the file, and streams
+  // within that bound may still decode to more than the machine has.
   std::vector<std::pair<size_t, Stream>> views;  // (bufferView, its stream)
   std::map<Stream, std::optional<uint32_t>> decodedBuffers;
   std::set<size_t> sourceBuffers;
@@ -171,6 +173,7 @@ void decodeMeshoptBufferViews(tinygltf::Model& model, const std::string& file) {
       failLoad(file, where + ": the compressed bufferViews up to this one decode to " + std::to_string(decodedBytes) +
                          " bytes, more than " + std::to_string(kMaxExpansion) + " times the " +
                          std::to_string(compressedBytes) + " bytes of the buffers they read");
+    charge.charge(s.decodedSize(), "bufferViews[" + std::to_string(i) + "] decoded from " + name);
   }
   for (const auto& [index, s] : views) {
     std::optional<uint32_t>& buffer = decodedBuffers[s];

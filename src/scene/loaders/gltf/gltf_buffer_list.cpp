@@ -1,4 +1,4 @@
-#include "scene/loaders/gltf/gltf_buffer_uris.h"
+#include "scene/loaders/gltf/gltf_buffer_list.h"
 
 #include <nlohmann/json.hpp>
 
@@ -32,24 +32,33 @@ std::string tinygltfDecoded(const std::string& uri) {
   return out;
 }
 
-// A SAX reader that keeps the strings at buffers[*].uri and builds nothing else.
-class BufferUriCollector {
+// A SAX reader that keeps, per object of the root's "buffers" array, its byteLength and its uri (only the length
+// of a data: URI), and builds nothing else.
+class BufferCollector {
  public:
-  explicit BufferUriCollector(std::vector<std::string>& uris) : uris_(uris) {}
+  explicit BufferCollector(std::vector<GltfBufferEntry>& buffers) : buffers_(buffers) {}
 
   bool null() { return true; }
   bool boolean(bool) { return true; }
   bool number_integer(json::number_integer_t) { return true; }
-  bool number_unsigned(json::number_unsigned_t) { return true; }
+  bool number_unsigned(json::number_unsigned_t value) {
+    if (inBufferMember("byteLength")) buffers_.back().byteLength = value;
+    return true;
+  }
   bool number_float(json::number_float_t, const std::string&) { return true; }
   bool binary(json::binary_t&) { return true; }
   bool string(std::string& value) {
-    // The root object's "buffers", an array, one of its objects, its "uri".
-    if (levels_.size() == 3 && levels_[0].key == "buffers" && levels_[1].isArray && levels_[2].key == "uri")
-      uris_.push_back(value);
+    if (!inBufferMember("uri")) return true;
+    if (value.compare(0, 5, "data:") == 0)
+      buffers_.back().dataUriBytes = value.size();
+    else
+      buffers_.back().uri = std::move(value);
     return true;
   }
-  bool start_object(std::size_t) { return open(false); }
+  bool start_object(std::size_t) {
+    if (levels_.size() == 2 && levels_[0].key == "buffers" && levels_[1].isArray) buffers_.emplace_back();
+    return open(false);
+  }
   bool start_array(std::size_t) { return open(true); }
   bool end_object() { return close(); }
   bool end_array() { return close(); }
@@ -64,6 +73,10 @@ class BufferUriCollector {
     bool isArray;
     std::string key;  // of the member being read, in an object of the first three levels
   };
+  // Whether the value being read is `member` of an object of the root's "buffers" array.
+  bool inBufferMember(const char* member) const {
+    return levels_.size() == 3 && levels_[0].key == "buffers" && levels_[1].isArray && levels_[2].key == member;
+  }
   bool open(bool isArray) {
     levels_.push_back({isArray, {}});
     return true;
@@ -73,22 +86,23 @@ class BufferUriCollector {
     return true;
   }
 
-  std::vector<std::string>& uris_;
+  std::vector<GltfBufferEntry>& buffers_;
   std::vector<Level> levels_;
 };
 
 }  // namespace
 
-GltfBufferUris::GltfBufferUris(std::string_view text) {
-  BufferUriCollector collector(uris_);
-  if (!json::sax_parse(text, &collector)) uris_.clear();
+GltfBufferList::GltfBufferList(std::string_view text) {
+  BufferCollector collector(buffers_);
+  if (!json::sax_parse(text, &collector)) buffers_.clear();
 }
 
-std::optional<std::string> GltfBufferUris::pathFor(const std::string& decoded) const {
+std::optional<std::string> GltfBufferList::pathFor(const std::string& decoded) const {
   std::optional<std::string> found;
-  for (const std::string& uri : uris_) {
-    if (tinygltfDecoded(uri) != decoded) continue;
-    std::optional<std::string> path = uriToPath(uri);
+  for (const GltfBufferEntry& buffer : buffers_) {
+    // (A data: URI is kept as no URI: tinygltf decodes it itself and never asks for it as a file.)
+    if (buffer.uri.empty() || tinygltfDecoded(buffer.uri) != decoded) continue;
+    std::optional<std::string> path = uriToPath(buffer.uri);
     if (!path || (found && *found != *path)) return std::nullopt;
     found = path;
   }
