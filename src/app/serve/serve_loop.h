@@ -67,10 +67,22 @@ class ServeLoop : private FrontEnd {
   int jpegQuality_ = 0;
   H264Settings videoSettings_;
   uint64_t lastVideoFrame_ = 0;
+  // At rest the video goes at StreamQuality::kRestFrameRate at most: the frames rendered sooner than that after
+  // the last access unit add their samples but are not encoded, unless input came since (then a frame goes at
+  // once, as while moving).
+  std::optional<double> lastVideoTime_;
+  bool inputSinceVideo_ = true;
+  bool holdVideo_ = false;  // the frame being made
   PresentedFrame presented_;
   bool firstFrame_ = true;
-  double lastFrameTime_ = 0.0;
-  double msPerFrame_ = 0.0;  // between frames sent, smoothed
+  double frameTime_ = 0.0;      // of the frame being made
+  double lastFrameTime_ = 0.0;  // of the last frame rendered
+  std::optional<double> lastSentTime_;
+  bool lastSentMoving_ = false;
+  // Between frames sent, smoothed: all of them (the frame header's rate, and the video's at rest), and those
+  // between two moving frames (the video's while moving, which the slower frames at rest must not lower).
+  double msPerFrame_ = 0.0;
+  double msPerMovingFrame_ = 0.0;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
