@@ -77,10 +77,9 @@ class VideoBrowser {
 TEST(ServeVideoAtRest, FewerFramesEachWithTheSamplesRenderedSinceTheLast) {
   // A frame this small renders and encodes in well under the rest rate's interval: without the hold at rest the
   // frames would come as fast as the browser acknowledges them, one sample apart.
-  ServeProcess server(CANDELA_EXECUTABLE,
-                      {"cornell-box", "--backend", "cpu", "--port", "0", "--width", "64", "--height", "64",
-                       "--max-depth", "2"},
-                      120.0);
+  ServeProcess server(
+      CANDELA_EXECUTABLE,
+      {"cornell-box", "--backend", "cpu", "--port", "0", "--width", "64", "--height", "64", "--max-depth", "2"}, 120.0);
   VideoBrowser browser(server);
   if (!browser.chooseVideo()) GTEST_SKIP() << "this build's serve offers no H.264 stream";
   browser.next();  // the key frame

@@ -225,6 +225,7 @@ void ServeLoop::renderFrame(double now) {
   const FramePlan& plan = outcome.plan;
   lastFrameTime_ = now;
   firstFrame_ = false;
+  ++framesRendered_;
   if (!presented_.jpeg && !presented_.video) return;  // held back (adjustPlan)
 
   const auto smooth = [](double& average, double ms) {
@@ -310,7 +311,7 @@ void ServeLoop::run(const std::atomic<bool>& stop) {
     for (const FrameDelivery& d : hub_.takeDeliveries()) quality_.recordDelivery(d.bytes, d.seconds, d.moving);
     if (stop || !hub_.anyReady()) continue;
     renderFrame(std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count());
-    if (options_.frames > 0 && framesSent_ >= options_.frames) break;
+    if (options_.frames > 0 && framesRendered_ >= options_.frames) break;
   }
 }
 

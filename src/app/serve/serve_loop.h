@@ -22,7 +22,8 @@ class ServeLoop : private FrontEnd {
  public:
   // Loads the scene and makes the backend; throws std::runtime_error with one sentence when either fails.
   ServeLoop(const InteractiveOptions& options, ClientHub& hub);
-  // Runs until `stop` becomes true, or until options.frames frames have been sent.
+  // Runs until `stop` becomes true, or until options.frames frames have been rendered (as candela view renders
+  // them: the frames the video holds back at rest count, so that both make the same image).
   void run(const std::atomic<bool>& stop);
   // Writes the --screenshot once run() has returned; throws std::runtime_error when it cannot (no frame was
   // rendered, or the file cannot be written).
@@ -52,6 +53,7 @@ class ServeLoop : private FrontEnd {
   bool environmentEdited_ = false;   // since the backend last got the environment
   bool materialsEdited_ = false;
   uint64_t controlChanges_ = 0;
+  uint64_t framesRendered_ = 0;
   uint64_t framesSent_ = 0;
   // The frame present() made, for renderFrame to send: as JPEG stripes, as the video's next access unit, or both,
   // as the clients ready for it need (ClientHub::frameNeeds).
