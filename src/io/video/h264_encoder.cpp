@@ -86,7 +86,8 @@ struct H264Encoder::State {
     pictureAllocated = false;
   }
 
-  // The rate control counts time in frames of the opened frame rate: at `s.framesPerSecond` frames a second, a
+  // The settings x264_encoder_reconfig takes from one frame to the next: the deblocking filter and the rate. The
+  // rate control counts time in frames of the opened frame rate: at `s.framesPerSecond` frames a second, a
   // frame's share of the rate is maxKilobitsPerSecond / s.framesPerSecond, which a limit scaled by the ratio of
   // the two rates gives it.
   void applySettings(const H264Settings& s) {
