@@ -74,14 +74,15 @@ function withQuery(url, name, value) {
 }
 
 // The canvas when the first frame at rest with `samples` samples per pixel is drawn, and the stream it came by.
-async function canvasAtSamples(args, stream, samples) {
+// With `orMore`, the first with at least that many: the video stream at rest does not send every frame.
+async function canvasAtSamples(args, stream, samples, orMore = false) {
   let captured = null;
   await withPage(args, async (page, server) => {
-    await page.addInitScript((wanted) => {
+    await page.addInitScript(({ wanted, orMore }) => {
       window.captured = new Promise((resolve) => {
         window.addEventListener('candela-frame', (event) => {
           const h = event.detail;
-          if (h.samples !== wanted || h.preview) return;
+          if (h.preview || (orMore ? h.samples < wanted : h.samples !== wanted)) return;
           const c = document.getElementById('image');
           const data = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
           const decodes = typeof VideoDecoder !== 'undefined';
@@ -89,7 +90,7 @@ async function canvasAtSamples(args, stream, samples) {
                     data: Array.from(data) });
         });
       });
-    }, samples);
+    }, { wanted: samples, orMore });
     await page.goto(withQuery(server.url, 'stream', stream));
     captured = await until(`a frame of ${samples} samples`, () => page.evaluate(() =>
       Promise.race([window.captured, new Promise((r) => setTimeout(() => r(null), 200))])));
@@ -109,7 +110,7 @@ function psnr(a, b) {
 }
 
 // How close the video stream's pictures must come to the JPEG stripes' (each at its rest quality, JPEG q92 and
-// H.264 rate factor 18, against each other; 36.2 dB measured at 48 samples, 199 x 300): a frame drawn one pixel
+// H.264 rate factor 12, against each other; 37.3 dB measured at 48 samples, 199 x 300): a frame drawn one pixel
 // off costs 12 dB, a wrong colour matrix or range as much. The colours against the source: video_decode.mjs.
 const kVideoMinPsnr = 33;
 
@@ -118,12 +119,12 @@ const tests = {
   // picture of the same frame (the same samples, the same seed).
   async video() {
     const samples = 48;
-    const video = await canvasAtSamples(['--seed', '7'], 'auto', samples);
+    const video = await canvasAtSamples(['--seed', '7'], 'auto', samples, true);
     if (!video.decodes) {
       console.log('skipped: this Chromium has no WebCodecs VideoDecoder');
       process.exit(77);
     }
-    const jpeg = await canvasAtSamples(['--seed', '7'], 'jpeg', samples);
+    const jpeg = await canvasAtSamples(['--seed', '7'], 'jpeg', video.header.samples);
     assert.equal(video.stream, 'h264', 'the page takes the video stream');
     assert.equal(video.header.format, 'h264');
     assert.match(video.header.codec, /^avc1\.[0-9A-F]{6}$/);

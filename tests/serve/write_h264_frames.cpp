@@ -3,9 +3,11 @@
 //   write_h264_frames <folder> <width> <height> <frames>   a moving test pattern, at the stream's rest settings
 //   write_h264_frames <folder> rest|moving <frame.png>...  rendered frames, at the settings the stream has on a
 //                                                          fast link at rest or while the camera moves
-// Both at 60 frames a second. The last line gives the size, the count and the rate of the frames after the first
-// (the key frame, which a stream sends once): "<width> <height> <frames> frames, <rate> Mbit/s at 60 frames a
-// second after the key frame".
+// Both at the frame rate the stream has there, on a link that delivers 60 frames a second: 60 moving,
+// StreamQuality::kRestFrameRate at rest (each rest frame stands for that much time: of a still camera's
+// accumulation, take every third frame of one sample). The last line gives the size, the count and the rate of the
+// frames after the first (the key frame, which a stream sends once): "<width> <height> <frames> frames, <rate>
+// Mbit/s at <fps> frames a second after the key frame".
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -22,7 +24,8 @@
 
 namespace {
 
-constexpr double kFramesPerSecond = 60.0;
+// The rate a fast link takes frames at, as serve measures it; the stream at rest goes slower (StreamQuality).
+constexpr double kMeasuredFramesPerSecond = 60.0;
 
 struct Frame {
   uint32_t width = 0, height = 0;
@@ -61,7 +64,7 @@ Frame readPng(const std::string& path) {
 candela::H264Settings fastLinkSettings(bool moving) {
   candela::StreamQuality quality;
   for (int i = 0; i < 20; ++i) quality.recordDelivery(1000000, 0.001, true);
-  return quality.videoSettings(moving, kFramesPerSecond);
+  return quality.videoSettings(moving, kMeasuredFramesPerSecond);
 }
 
 }  // namespace
@@ -78,7 +81,7 @@ int main(int argc, char** argv) try {
   const uint32_t frames = pngs ? uint32_t(argc - 3) : uint32_t(std::atoi(argv[4]));
   const candela::H264Settings settings =
       pngs ? fastLinkSettings(std::string(argv[2]) == "moving")
-           : candela::StreamQuality().videoSettings(/*moving=*/false, kFramesPerSecond);
+           : candela::StreamQuality().videoSettings(/*moving=*/false, kMeasuredFramesPerSecond);
   candela::H264Encoder encoder;
   size_t bytesAfterKey = 0;
   Frame frame;
@@ -93,9 +96,12 @@ int main(int argc, char** argv) try {
                 encoded.bytes.size());
     if (i > 0) bytesAfterKey += encoded.bytes.size();
   }
-  std::printf("rate factor %.1f, at most %u kbit/s\n", double(settings.rateFactor), settings.maxKilobitsPerSecond);
-  std::printf("%u %u %u frames, %.2f Mbit/s at 60 frames a second after the key frame\n", frame.width, frame.height,
-              frames, frames > 1 ? double(bytesAfterKey) * 8.0 * kFramesPerSecond / double(frames - 1) / 1e6 : 0.0);
+  const double framesPerSecond = settings.framesPerSecond;
+  std::printf("rate factor %.1f, at most %u kbit/s, deblocking %s\n", double(settings.rateFactor),
+              settings.maxKilobitsPerSecond, settings.deblocking ? "on" : "off");
+  std::printf("%u %u %u frames, %.2f Mbit/s at %.0f frames a second after the key frame\n", frame.width, frame.height,
+              frames, frames > 1 ? double(bytesAfterKey) * 8.0 * framesPerSecond / double(frames - 1) / 1e6 : 0.0,
+              framesPerSecond);
   return 0;
 } catch (const std::exception& e) {
   std::fprintf(stderr, "write_h264_frames: %s\n", e.what());

@@ -110,6 +110,7 @@ void ServeLoop::report(const std::string& message, bool isError) {
 }
 
 void ServeLoop::handle(const IncomingMessage& incoming) {
+  inputSinceVideo_ = true;
   std::visit(
       [&](const auto& m) {
         using T = std::decay_t<decltype(m)>;
@@ -185,20 +186,27 @@ void ServeLoop::act(uint64_t client, ActionMessage::Kind kind) {
 }
 
 // A slow connection shrinks the preview further (stream_quality.h); the video's rate holds at the frame rate sent.
+// At rest the video's frames come StreamQuality::kRestFrameRate a second at most; a client that needs a key frame
+// gets one at once.
 void ServeLoop::adjustPlan(FramePlan& plan) {
   const uint32_t divisor = quality_.resolutionDivisor(plan.preview);
   plan.width = std::max(plan.width / divisor, kMinViewSide);
   plan.height = std::max(plan.height / divisor, kMinViewSide);
   jpegQuality_ = quality_.jpegQuality(plan.preview);
-  videoSettings_ = quality_.videoSettings(plan.preview, msPerFrame_ > 0.0 ? 1000.0 / msPerFrame_ : 0.0);
+  const double ms = plan.preview ? msPerMovingFrame_ : msPerFrame_;
+  videoSettings_ = quality_.videoSettings(plan.preview, ms > 0.0 ? 1000.0 / ms : 0.0);
+  holdVideo_ = needs_.video && !plan.preview && !needs_.videoKey && !inputSinceVideo_ && lastVideoTime_ &&
+               frameTime_ - *lastVideoTime_ < 1.0 / StreamQuality::kRestFrameRate;
 }
 
 void ServeLoop::present(FrameImages& frame) {
-  const DisplayFrame pixels = frame.display();
   presented_ = {};
+  const bool video = needs_.video && !holdVideo_;
+  if (!needs_.jpeg && !video) return;  // the samples accumulate for the next frame sent
+  const DisplayFrame pixels = frame.display();
   presented_.postMilliseconds = pixels.milliseconds;
   if (needs_.jpeg) presented_.jpeg = jpegEncoder_.encode(pixels.rgb, pixels.width, pixels.height, jpegQuality_);
-  if (!needs_.video) return;
+  if (!video) return;
   try {
     presented_.video = videoEncoder_.encode(pixels.rgb, pixels.width, pixels.height, videoSettings_, needs_.videoKey);
   } catch (const std::exception& e) {
@@ -211,14 +219,25 @@ void ServeLoop::present(FrameImages& frame) {
 
 void ServeLoop::renderFrame(double now) {
   needs_ = hub_.frameNeeds(lastVideoFrame_);
+  frameTime_ = now;
   const double sinceLast = firstFrame_ ? 0.0 : now - lastFrameTime_;
   const FrameOutcome outcome = renderer_.step({viewWidth_, viewHeight_, now, sinceLast}, *this);
   const FramePlan& plan = outcome.plan;
+  lastFrameTime_ = now;
+  firstFrame_ = false;
+  ++framesRendered_;
+  if (!presented_.jpeg && !presented_.video) return;  // held back (adjustPlan)
 
-  if (!firstFrame_) {
-    const double ms = 1000.0 * sinceLast;
-    msPerFrame_ = msPerFrame_ == 0.0 ? ms : (1.0 - kTimingSmoothing) * msPerFrame_ + kTimingSmoothing * ms;
+  const auto smooth = [](double& average, double ms) {
+    average = average == 0.0 ? ms : (1.0 - kTimingSmoothing) * average + kTimingSmoothing * ms;
+  };
+  if (lastSentTime_) {
+    const double ms = 1000.0 * (now - *lastSentTime_);
+    smooth(msPerFrame_, ms);
+    if (plan.preview && lastSentMoving_) smooth(msPerMovingFrame_, ms);
   }
+  lastSentTime_ = now;
+  lastSentMoving_ = plan.preview;
   ++framesSent_;
   const RenderSession& session = renderer_.session();
   const Json header = {
@@ -266,10 +285,10 @@ void ServeLoop::renderFrame(double now) {
               {"encode_ms", video->milliseconds}});
     videoMessage = binaryMessage(h, video->bytes);
     lastVideoFrame_ = framesSent_;
+    lastVideoTime_ = now;
+    inputSinceVideo_ = false;
   }
   hub_.publishFrame(framesSent_, {jpegMessage, videoMessage}, plan.preview);
-  lastFrameTime_ = now;
-  firstFrame_ = false;
 }
 
 void ServeLoop::run(const std::atomic<bool>& stop) {
@@ -292,7 +311,7 @@ void ServeLoop::run(const std::atomic<bool>& stop) {
     for (const FrameDelivery& d : hub_.takeDeliveries()) quality_.recordDelivery(d.bytes, d.seconds, d.moving);
     if (stop || !hub_.anyReady()) continue;
     renderFrame(std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count());
-    if (options_.frames > 0 && framesSent_ >= options_.frames) break;
+    if (options_.frames > 0 && framesRendered_ >= options_.frames) break;
   }
 }
 

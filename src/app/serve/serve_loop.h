@@ -22,7 +22,8 @@ class ServeLoop : private FrontEnd {
  public:
   // Loads the scene and makes the backend; throws std::runtime_error with one sentence when either fails.
   ServeLoop(const InteractiveOptions& options, ClientHub& hub);
-  // Runs until `stop` becomes true, or until options.frames frames have been sent.
+  // Runs until `stop` becomes true, or until options.frames frames have been rendered (as candela view renders
+  // them: the frames the video holds back at rest count, so that both make the same image).
   void run(const std::atomic<bool>& stop);
   // Writes the --screenshot once run() has returned; throws std::runtime_error when it cannot (no frame was
   // rendered, or the file cannot be written).
@@ -52,6 +53,7 @@ class ServeLoop : private FrontEnd {
   bool environmentEdited_ = false;   // since the backend last got the environment
   bool materialsEdited_ = false;
   uint64_t controlChanges_ = 0;
+  uint64_t framesRendered_ = 0;
   uint64_t framesSent_ = 0;
   // The frame present() made, for renderFrame to send: as JPEG stripes, as the video's next access unit, or both,
   // as the clients ready for it need (ClientHub::frameNeeds).
@@ -67,10 +69,22 @@ class ServeLoop : private FrontEnd {
   int jpegQuality_ = 0;
   H264Settings videoSettings_;
   uint64_t lastVideoFrame_ = 0;
+  // At rest the video goes at StreamQuality::kRestFrameRate at most: the frames rendered sooner than that after
+  // the last access unit add their samples but are not encoded, unless input came since (then a frame goes at
+  // once, as while moving).
+  std::optional<double> lastVideoTime_;
+  bool inputSinceVideo_ = true;
+  bool holdVideo_ = false;  // the frame being made
   PresentedFrame presented_;
   bool firstFrame_ = true;
-  double lastFrameTime_ = 0.0;
-  double msPerFrame_ = 0.0;  // between frames sent, smoothed
+  double frameTime_ = 0.0;      // of the frame being made
+  double lastFrameTime_ = 0.0;  // of the last frame rendered
+  std::optional<double> lastSentTime_;
+  bool lastSentMoving_ = false;
+  // Between frames sent, smoothed: all of them (the frame header's rate, and the video's at rest), and those
+  // between two moving frames (the video's while moving, which the slower frames at rest must not lower).
+  double msPerFrame_ = 0.0;
+  double msPerMovingFrame_ = 0.0;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 

@@ -28,6 +28,8 @@ H264Settings StreamQuality::videoSettings(bool moving, double framesPerSecond) c
   if (framesPerSecond > 0.0)
     settings.framesPerSecond =
         kFrameRateStep * uint32_t(std::ceil(std::min(framesPerSecond, double(kMaxFrameRate)) / kFrameRateStep));
+  if (!moving) settings.framesPerSecond = std::min(settings.framesPerSecond, kRestFrameRate);
+  settings.deblocking = !moving;
   // What the link carried, with room left for the other messages and the variation between frames.
   const double linkKilobits = 0.8 * 8.0 * bytesPerSecond_ / 1000.0;
   settings.maxKilobitsPerSecond =

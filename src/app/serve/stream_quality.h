@@ -12,6 +12,13 @@ namespace candela {
 // back. Frames at rest always go at full quality and resolution: there the picture matters more than the rate.
 // The H.264 stream follows the same steps (its rate factor rises as the JPEG quality falls) and keeps its rate
 // under what the link delivered, at the frame rate measured.
+//
+// At rest the video's frames differ from one another only by the accumulation's shrinking noise: sent 60 times a
+// second, they spend the rate on that noise and each gets too few bits to sharpen the picture (DamagedHelmet at
+// 1080p: 35.9 dB PSNR at 18.8 Mbit/s). So at rest the stream goes at kRestFrameRate frames a second at most
+// (ServeLoop holds the others back, and sends a frame at once when input comes), each with the rate's share at
+// that rate, a lower rate factor to spend it, and the deblocking filter (docs/performance.md, 'The video stream's
+// quality on rendered frames').
 class StreamQuality {
  public:
   explicit StreamQuality(double frameBudgetSeconds = 1.0 / 30.0) : budget_(frameBudgetSeconds) {}
@@ -22,7 +29,7 @@ class StreamQuality {
   double bytesPerSecond() const { return bytesPerSecond_; }  // smoothed; 0 until measured
   // `framesPerSecond`: the rate frames are sent at, 0 where not measured yet (then H264Settings' default). It is
   // rounded up to a multiple of kFrameRateStep, so that the cap holds and the encoder is not reconfigured for every
-  // small change.
+  // small change; at rest it is kRestFrameRate at most.
   H264Settings videoSettings(bool moving, double framesPerSecond) const;
 
   static constexpr int kRestQuality = 92;
@@ -30,7 +37,8 @@ class StreamQuality {
   static constexpr int kMinMovingQuality = 35;
   static constexpr int kQualityStep = 10;
   static constexpr uint32_t kMaxExtraDivisor = 4;
-  static constexpr float kRestRateFactor = 18.0f;
+  static constexpr float kRestRateFactor = 12.0f;
+  static constexpr uint32_t kRestFrameRate = 20;
   static constexpr float kMovingRateFactor = 22.0f;  // at the best moving JPEG quality; 9 more at the worst
   static constexpr uint32_t kMaxVideoKilobits = 20000;
   static constexpr uint32_t kMinVideoKilobits = 1000;

@@ -86,10 +86,12 @@ struct H264Encoder::State {
     pictureAllocated = false;
   }
 
-  // The rate control counts time in frames of the opened frame rate: at `s.framesPerSecond` frames a second, a
+  // The settings x264_encoder_reconfig takes from one frame to the next: the deblocking filter and the rate. The
+  // rate control counts time in frames of the opened frame rate: at `s.framesPerSecond` frames a second, a
   // frame's share of the rate is maxKilobitsPerSecond / s.framesPerSecond, which a limit scaled by the ratio of
   // the two rates gives it.
-  void applyRate(const H264Settings& s) {
+  void applySettings(const H264Settings& s) {
+    param.b_deblocking_filter = s.deblocking ? 1 : 0;
     const uint64_t measured = std::max(1u, s.framesPerSecond);
     param.rc.i_rc_method = X264_RC_CRF;
     param.rc.f_rf_constant = s.rateFactor;
@@ -122,7 +124,7 @@ struct H264Encoder::State {
     param.vui.b_fullrange = 0;
     param.i_fps_num = std::max(1u, s.framesPerSecond);
     param.i_fps_den = 1;
-    applyRate(s);
+    applySettings(s);
     if (x264_param_apply_profile(&param, "high") < 0) throw std::runtime_error("x264: the high profile is refused");
     encoder = x264_encoder_open(&param);
     if (!encoder)
@@ -149,10 +151,9 @@ H264Frame H264Encoder::encode(const uint8_t* rgb, uint32_t width, uint32_t heigh
   const bool reopen = !s.encoder || s.frameWidth != width || s.frameHeight != height;
   if (reopen) {
     s.open(width, height, settings, threads_);
-  } else if (settings.maxKilobitsPerSecond != s.settings.maxKilobitsPerSecond ||
-             settings.rateFactor != s.settings.rateFactor || settings.framesPerSecond != s.settings.framesPerSecond) {
-    s.applyRate(settings);
-    if (x264_encoder_reconfig(s.encoder, &s.param) < 0) throw std::runtime_error("x264 refused the new rate");
+  } else if (settings != s.settings) {
+    s.applySettings(settings);
+    if (x264_encoder_reconfig(s.encoder, &s.param) < 0) throw std::runtime_error("x264 refused the new settings");
   }
   convertToI420(rgb, width, height, s.picture.img);
   s.picture.i_type = key || reopen ? X264_TYPE_IDR : X264_TYPE_AUTO;
