@@ -39,8 +39,8 @@ CANDELA_FN RestirLightAt restirLightAt(const SceneView& scene, const RestirSampl
     if (!(dist2 > 0.0f)) return at;
     at.distance = sqrtf(dist2);
     at.wi = toLight / at.distance;
-    const Vec3 n = normalize(cross(light.edge1, light.edge2)) * light.frontSign;
-    const float cosAtLight = -dot(n, at.wi);
+    // The unit normal is cross(edge1, edge2) over twice the area: no square root per evaluation.
+    const float cosAtLight = -dot(cross(light.edge1, light.edge2), at.wi) * (light.frontSign * 0.5f / light.area);
     if (!(cosAtLight > 0.0f)) return at;  // emitters are one-sided
     LightSample ls;
     ls.lightIndex = sample.light;
@@ -132,27 +132,5 @@ struct RestirVertex {
     return built;
   }
 };
-
-// Solid-angle density with which next-event estimation's light sampling (sampleLight) picks the light sample seen
-// as `light` from ctx; a punctual light's probability.
-CANDELA_FN float restirLightPdf(const SceneView& scene, LightSamplerKind kind, LightSampleContext ctx,
-                                const RestirSample& sample, const RestirLightAt& light) {
-  if (sample.light == kRestirEnvironment) return environmentPdf(scene, light.wi);
-  if (sample.light < scene.lightCount) {
-    const LightTriangle& triangle = scene.lights[sample.light];
-    const float selectPmf =
-        kind == LightSamplerKind::Power ? powerTablePmf(scene, triangle) : lightBvhPmf(scene, ctx, sample.light);
-    const float cosAtLight = light.jacobian * light.distance * light.distance;
-    return scene.boundedSelectProbability * trianglePointPdf(triangle, selectPmf,
-                                                             sphericalSamplingSolidAngle(triangle, ctx.p),
-                                                             light.distance, cosAtLight);
-  }
-  const uint32_t punctual = sample.light - scene.lightCount;
-  if (punctual >= scene.boundedPunctualLightCount) return scene.directionalSelectProbability;
-  const float selectPmf = kind == LightSamplerKind::Power
-                              ? scene.inverseLightPower * punctualLightPower(scene.punctualLights[punctual])
-                              : lightBvhPmf(scene, ctx, sample.light);
-  return scene.boundedSelectProbability * selectPmf;
-}
 
 }  // namespace candela
