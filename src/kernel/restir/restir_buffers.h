@@ -54,14 +54,24 @@ struct PrimarySurface {
 constexpr uint32_t kRestirTileSize = 8;
 constexpr uint32_t kRestirPresampledLights = kRestirTileSize * kRestirTileSize;
 
+// A point on an emissive triangle as any shading point sees it (kernel/restir/restir_target.h, restirLightPoint):
+// where it is, the triangle's unit front normal, and the radiance it emits there (its emission texture applied).
+struct RestirLightPoint {
+  Vec3 position;
+  Vec3 normal;
+  Vec3 radiance;
+};
+
 // A presampled bounded light (kernel/restir/restir_presampling.h): `light` as RestirSample::light numbers it, the point
-// on a triangle as the barycentrics of its vertices 1 and 2, and `pdf`, the density with which the tile's
-// presampling picks it: in area measure on a triangle (the choice of the triangle included), a punctual light's
-// probability; neither includes the probability of the bounded lights among all lights.
+// on a triangle as the barycentrics of its vertices 1 and 2 and as `point` (so that a candidate reads neither the
+// light table nor the emission texture), and `pdf`, the density with which the tile's presampling picks it: in area
+// measure on a triangle (the choice of the triangle included), a punctual light's probability; neither includes the
+// probability of the bounded lights among all lights.
 struct PresampledLight {
   uint32_t light = kRestirNoLight;
   Vec2 barycentrics;
   float pdf = 0.0f;
+  RestirLightPoint point;
 };
 
 // A screen tile's presampled lights, and the region of its pixels' primary surfaces for which they were drawn.

@@ -138,7 +138,8 @@ CANDELA_FN Reservoir initialReservoir(const SceneView& scene, const Tracer& trac
       if (presampled.light == kRestirNoLight) continue;
       sample.light = presampled.light;
       sample.coordinates = {presampled.barycentrics.x, presampled.barycentrics.y, 0.0f};
-      light = restirLightAt(scene, sample, vertex.position);
+      light = sample.light < scene.lightCount ? restirLightAt(presampled.point, vertex.position)
+                                              : restirLightAt(scene, sample, vertex.position);
       lightPdf = presampledCandidatePdf(scene, sample.light, presampled.pdf, light);
     }
     Vec3 value;

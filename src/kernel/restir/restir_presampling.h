@@ -97,6 +97,7 @@ CANDELA_FN PresampledLight presampleLight(const SceneView& scene, LightSamplerKi
   }
   presampled.barycentrics = sampleUniformTriangle(uPoint);
   presampled.pdf = picked.pmf / scene.lights[picked.index].area;
+  presampled.point = restirLightPoint(scene, picked.index, presampled.barycentrics);
   return presampled;
 }
 
