@@ -25,12 +25,27 @@ __global__ void compileMediaPathForDevice(SceneView scene, Camera camera, Render
   out[y * settings.width + x] = r.radiance;
 }
 
-// ReSTIR DI's two passes (kernel/restir/restir_passes.h), each as one launch over the image would run it.
-__global__ void compileRestirCandidatesForDevice(SceneView scene, Camera camera, RenderSettings settings,
-                                                 RestirView restir, uint32_t* rays) {
+// ReSTIR DI's four passes (kernel/restir/restir_passes.h), each as one launch over the image would run it (the
+// presampling with one thread per pixel, each presampling its pixel's light of its tile).
+__global__ void compileRestirPrimaryForDevice(SceneView scene, Camera camera, RenderSettings settings,
+                                              RestirView restir, uint32_t* rays) {
   uint32_t x = blockIdx.x * blockDim.x + threadIdx.x, y = blockIdx.y * blockDim.y + threadIdx.y;
   if (x >= settings.width || y >= settings.height) return;
-  rays[y * settings.width + x] = restirCandidatePass(scene, MissEverythingTracer{}, camera, settings, restir, x, y, 0);
+  rays[y * settings.width + x] = restirPrimaryPass(scene, MissEverythingTracer{}, camera, settings, restir, x, y, 0);
+}
+
+__global__ void compileRestirPresamplingForDevice(SceneView scene, RenderSettings settings, RestirView restir) {
+  uint32_t x = blockIdx.x * blockDim.x + threadIdx.x, y = blockIdx.y * blockDim.y + threadIdx.y;
+  if (x >= settings.width || y >= settings.height) return;
+  const uint32_t light = restirIndexInTile(settings, x, y);
+  restirPresamplePass(scene, settings, restir, restirTileOf(settings, x, y), light, light + 1, 0);
+}
+
+__global__ void compileRestirCandidatesForDevice(SceneView scene, RenderSettings settings, RestirView restir,
+                                                 uint32_t* rays) {
+  uint32_t x = blockIdx.x * blockDim.x + threadIdx.x, y = blockIdx.y * blockDim.y + threadIdx.y;
+  if (x >= settings.width || y >= settings.height) return;
+  rays[y * settings.width + x] = restirCandidatePass(scene, MissEverythingTracer{}, settings, restir, x, y, 0);
 }
 
 __global__ void compileRestirShadingForDevice(SceneView scene, Camera camera, RenderSettings settings,

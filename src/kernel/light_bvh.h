@@ -31,11 +31,11 @@ CANDELA_FN SampledLight sampleLightBvh(const SceneView& scene, LightSampleContex
     float pFirst = first / (first + second);
     if (u < pFirst) {
       nodeIndex = nodeIndex + 1;
-      u = fminf(u / pFirst, 0.99999994f);
+      u = detail::smallerOf(u / pFirst, 0.99999994f);
       pmf *= pFirst;
     } else {
       nodeIndex = node.childOrLight;
-      u = fminf((u - pFirst) / (1.0f - pFirst), 0.99999994f);
+      u = detail::smallerOf((u - pFirst) / (1.0f - pFirst), 0.99999994f);
       // Not 1 - pFirst, which loses the digits of a rare second child: as lightBvhPmf() computes it.
       pmf *= second / (first + second);
     }

@@ -88,6 +88,31 @@ CANDELA_FN float sphericalSamplingSolidAngle(const LightTriangle& light, Vec3 p)
   return sphericalSampling(light, p).area;
 }
 
+// The probability with which the power table picks the bounded light `index` (a triangle below lightCount, then the
+// bounded punctual lights).
+CANDELA_FN float boundedLightPowerPmf(const SceneView& scene, uint32_t index) {
+  return index < scene.lightCount
+             ? powerTablePmf(scene, scene.lights[index])
+             : scene.inverseLightPower * punctualLightPower(scene.punctualLights[index - scene.lightCount]);
+}
+
+// Picks one of the bounded lights for ctx as `kind` says, with u: by the power table, or down the light BVH; pmf 0
+// where none can be picked.
+CANDELA_FN SampledLight sampleBoundedLight(const SceneView& scene, LightSamplerKind kind, LightSampleContext ctx,
+                                           float u) {
+  if (kind != LightSamplerKind::Power) return sampleLightBvh(scene, ctx, u);
+  SampledLight picked;
+  picked.index = uint32_t(findInterval(scene.lightCdf, int(boundedLightCount(scene)), u));
+  picked.pmf = boundedLightPowerPmf(scene, picked.index);
+  return picked;
+}
+
+// The probability with which sampleBoundedLight() picks the bounded light `index` for ctx.
+CANDELA_FN float boundedLightPmf(const SceneView& scene, LightSamplerKind kind, LightSampleContext ctx,
+                                 uint32_t index) {
+  return kind == LightSamplerKind::Power ? boundedLightPowerPmf(scene, index) : lightBvhPmf(scene, ctx, index);
+}
+
 // Solid-angle density of a point on `light`, chosen with probability selectPmf, at `distance` and seen at
 // cosAtLight from its normal: uniform over the solid angle where sphericalSamplingSolidAngle gave one, else
 // uniform over the area.
@@ -106,7 +131,7 @@ CANDELA_FN float triangleLightPdf(const SceneView& scene, LightSamplerKind kind,
   uint32_t index = findLightIndex(scene, hit.instanceId, hit.primitiveId);
   if (index == scene.lightCount) return 0.0f;
   const LightTriangle& light = scene.lights[index];
-  float selectPmf = kind == LightSamplerKind::Power ? powerTablePmf(scene, light) : lightBvhPmf(scene, ctx, index);
+  float selectPmf = boundedLightPmf(scene, kind, ctx, index);
   return scene.boundedSelectProbability *
          trianglePointPdf(light, selectPmf, sphericalSamplingSolidAngle(light, ctx.p), distance, cosAtLight);
 }
@@ -171,19 +196,10 @@ CANDELA_FN LightSample sampleLight(const SceneView& scene, LightSamplerKind kind
     return ls;
   }
   float uBounded = fminf((uSelect - pEnv - pDirectional) / pBounded, 0.99999994f);
-  uint32_t index;
-  float selectPmf;
-  if (kind == LightSamplerKind::Power) {
-    index = uint32_t(findInterval(scene.lightCdf, int(boundedLightCount(scene)), uBounded));
-    selectPmf = index < scene.lightCount
-                    ? powerTablePmf(scene, scene.lights[index])
-                    : scene.inverseLightPower * punctualLightPower(scene.punctualLights[index - scene.lightCount]);
-  } else {
-    SampledLight picked = sampleLightBvh(scene, ctx, uBounded);
-    if (picked.pmf == 0.0f) return ls;
-    index = picked.index;
-    selectPmf = picked.pmf;
-  }
+  const SampledLight picked = sampleBoundedLight(scene, kind, ctx, uBounded);
+  if (picked.pmf == 0.0f) return ls;
+  const uint32_t index = picked.index;
+  const float selectPmf = picked.pmf;
   if (index >= scene.lightCount) {
     ls = samplePunctualLight(scene.punctualLights[index - scene.lightCount], ctx.p, pBounded * selectPmf);
     ls.lightIndex = index;

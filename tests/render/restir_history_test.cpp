@@ -48,10 +48,10 @@ TEST(RestirHistory, CameraMovingPastAnOccluderReusesNoHistoryAcrossTheDisocclusi
 
   const size_t pixels = size_t(settings.width) * settings.height;
   auto render = [&](const Camera& camera, uint32_t sample) {
-    const RestirView restir = buffers.view();
+    const RestirView restir = buffers.view(true);
     for (uint32_t y = 0; y < settings.height; ++y)
       for (uint32_t x = 0; x < settings.width; ++x)
-        restirCandidatePass(view, tracer, camera, settings, restir, x, y, sample);
+        restirPrimaryPass(view, tracer, camera, settings, restir, x, y, sample);
     Frame frame;
     frame.surfaces.assign(restir.surfaces, restir.surfaces + pixels);
     for (const PrimarySurface& s : frame.surfaces) frame.points.push_back(s.ray.origin + s.ray.direction * s.hit.t);
@@ -62,7 +62,7 @@ TEST(RestirHistory, CameraMovingPastAnOccluderReusesNoHistoryAcrossTheDisocclusi
   const Camera after = Camera::lookAt({0.8f, 6, 6}, {0.8f, 0, 0}, {0, 1, 0}, 50.0f, aspect);
   const Frame first = render(before, 0);
   buffers.endSample(before);
-  const RestirView restir = buffers.view();
+  const RestirView restir = buffers.view(true);
   const Frame second = render(after, 1);
 
   size_t reused = 0, uncovered = 0, uncoveredRejected = 0;

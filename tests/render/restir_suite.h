@@ -32,8 +32,13 @@ struct Batches {
   uint64_t invalidSamples = 0;
 };
 
+// How a batch's samples are rendered: into one film (a still: the temporal reuse does not run), or each into a film
+// of its own, as a camera that moves restarts the film (each sample after the batch's first reuses the history).
+enum class Films { One, OnePerSample };
+
 template <class BackendType>
-Batches renderBatches(const Scene& scene, RenderSettings settings, uint32_t batches, uint32_t samplesPerBatch) {
+Batches renderBatches(const Scene& scene, RenderSettings settings, uint32_t batches, uint32_t samplesPerBatch,
+                      Films films = Films::One) {
   BackendType backend;
   backend.setScene(scene);
   const Camera camera = scene.camera.toCamera(float(settings.width) / float(settings.height));
@@ -43,8 +48,20 @@ Batches renderBatches(const Scene& scene, RenderSettings settings, uint32_t batc
     backend.setSettings(settings);  // drops the film and ReSTIR's history
     backend.setCamera(camera);
     backend.setNextSampleIndex(b * samplesPerBatch);
-    out.invalidSamples += backend.render(samplesPerBatch).invalidSamples;
-    means.push_back(backend.readImage());
+    if (films == Films::One) {
+      out.invalidSamples += backend.render(samplesPerBatch).invalidSamples;
+      means.push_back(backend.readImage());
+    } else {
+      Image sum(settings.width, settings.height);
+      for (uint32_t s = 0; s < samplesPerBatch; ++s) {
+        backend.setCamera(camera);  // a new film; the history stays
+        backend.setNextSampleIndex(b * samplesPerBatch + s);
+        out.invalidSamples += backend.render(1).invalidSamples;
+        const Image frame = backend.readImage();
+        for (size_t i = 0; i < sum.pixels.size(); ++i) sum.pixels[i] += frame.pixels[i] / float(samplesPerBatch);
+      }
+      means.push_back(sum);
+    }
     out.imageMeans.push_back(imageMean(means.back()).mean);
   }
   const size_t n = means[0].pixels.size();
@@ -127,8 +144,9 @@ inline RenderSettings settingsFor(RestirMode mode, uint32_t width, uint32_t heig
 template <class BackendType>
 class RestirScenes : public ::testing::Test {
  protected:
-  static Batches render(const Scene& scene, RenderSettings settings, uint32_t batches, uint32_t samplesPerBatch) {
-    return renderBatches<BackendType>(scene, settings, batches, samplesPerBatch);
+  static Batches render(const Scene& scene, RenderSettings settings, uint32_t batches, uint32_t samplesPerBatch,
+                        Films films = Films::One) {
+    return renderBatches<BackendType>(scene, settings, batches, samplesPerBatch, films);
   }
 };
 
@@ -205,7 +223,28 @@ TYPED_TEST_P(RestirScenes, ManyLightsAgreeWithoutRestir) {
   EXPECT_TRUE(imageMeansDiffer(biased, off, 2.0));
 }
 
+// The same where every sample is a film of its own (a moving camera's frames), so that the temporal reuse runs: its
+// samples still agree with the render without ReSTIR, and the biased mode's still do not.
+TYPED_TEST_P(RestirScenes, ManyLightsAgreeWithoutRestirWhenEverySampleReusesTheHistory) {
+  const Scene scene = makeManySmallLights(300, 5);
+  const uint32_t batches = 24, spp = 8;
+  const Batches restir =
+      TestFixture::render(scene, settingsFor(RestirMode::Di, 32, 24, 3), batches, spp, Films::OnePerSample);
+  const Batches off = TestFixture::render(scene, settingsFor(RestirMode::Off, 32, 24, 3), batches, spp);
+  std::string worst;
+  EXPECT_EQ(countDisagreeingPixels(restir, off, batches, worst), 0u) << worst;
+  const MeanAndError withRestir = batchMean(restir.imageMeans), without = batchMean(off.imageMeans);
+  EXPECT_FALSE(imageMeansDiffer(restir, off, 2.0)) << withRestir.mean << " +- " << withRestir.standardError
+                                                   << " against " << without.mean << " +- " << without.standardError;
+  EXPECT_TRUE(imageMeansDiffer(restir, off, 2.0, 0.97));
+  EXPECT_EQ(restir.invalidSamples, 0u);
+  const Batches biased =
+      TestFixture::render(scene, settingsFor(RestirMode::DiBiased, 32, 24, 3), batches, spp, Films::OnePerSample);
+  EXPECT_TRUE(imageMeansDiffer(biased, off, 2.0));
+}
+
 REGISTER_TYPED_TEST_SUITE_P(RestirScenes, ClosedEmissiveSphereEveryPixelIsTheAnswer, WhiteFurnaceEveryPixelIsOne,
-                            PunctualLightsGiveTheAnswers, ManyLightsAgreeWithoutRestir);
+                            PunctualLightsGiveTheAnswers, ManyLightsAgreeWithoutRestir,
+                            ManyLightsAgreeWithoutRestirWhenEverySampleReusesTheHistory);
 
 }  // namespace candela::test::restir

@@ -242,6 +242,45 @@ TEST_P(LightBvhTest, PmfsSumToAtMostOneAndNoReachableLightIsLeftOut) {
   }
 }
 
+// A region of shading points (a context with a radius and a cone of normals, as ReSTIR's presampling gives a screen
+// tile): every light that can reach some point of it keeps a positive pmf, so that a candidate drawn for the region
+// can be any light that reaches any of its pixels. The region's centre alone (radius 0, its axis as the normal)
+// leaves some of them out, so the test can fail.
+TEST_P(LightBvhTest, RegionContextsLeaveOutNoLightThatReachesAPointOfTheRegion) {
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<float> radii(0.2f, 4.0f), spreads(0.0f, 1.4f), uniform(0.0f, 1.0f);
+  uint32_t reachable = 0, missedByTheCentre = 0;
+  int r = 0;
+  for (const LightSampleContext& at : randomContexts(60, 22)) {
+    LightSampleContext region{at.p, {0, 0, 0}, radii(rng)};
+    float spread = 0.0f;
+    if (r++ % 2 == 1) {  // every other region with a cone of normals
+      spread = spreads(rng);
+      region.n = randomDirection(rng);
+      region.cosNormalSpread = std::cos(spread);
+      region.sinNormalSpread = std::sin(spread);
+    }
+    const LightSampleContext centre{region.p, region.n};
+    for (int k = 0; k < 20; ++k) {
+      LightSampleContext point{region.p + randomDirection(rng) * (region.radius * float(k) / 20.0f), {0, 0, 0}};
+      if (!isBlack(region.n)) {
+        // A normal within the cone: the axis turned towards a random direction by up to the spread.
+        const Vec3 side = normalize(cross(region.n, randomDirection(rng)));
+        const float angle = spread * uniform(rng);
+        point.n = region.n * std::cos(angle) + side * std::sin(angle);
+      }
+      for (uint32_t i = 0; i < boundedLightCount(view_); ++i) {
+        if (!canReach(view_, i, point)) continue;
+        ++reachable;
+        EXPECT_GT(lightBvhPmf(view_, region, i), 0.0f) << "light " << i;
+        if (lightBvhPmf(view_, centre, i) == 0.0f) ++missedByTheCentre;
+      }
+    }
+  }
+  EXPECT_GT(reachable, 10000u);
+  EXPECT_GT(missedByTheCentre, 100u);
+}
+
 // Pearson's chi-square test of the picks' frequencies against the pmf (and of picking nothing against what the
 // pmfs leave), lights expecting fewer than 5 picks pooled.
 TEST_P(LightBvhTest, PickFrequenciesFollowThePmf) {

@@ -141,8 +141,8 @@ FrameStats CpuBackend::renderSamples(uint32_t samplesPerPixel) {
   return finishSamples(samplesPerPixel, stats);
 }
 
-// Each sample index is two passes over the whole image (kernel/restir/restir_passes.h): the second reads the
-// reservoirs the first wrote at other pixels.
+// Each sample index is four passes over the whole image (kernel/restir/restir_passes.h): each reads what the one
+// before wrote at other pixels (the presampling the surfaces of a tile, the spatial reuse the neighbours' reservoirs).
 template <bool kWithAovs>
 FrameStats CpuBackend::renderRestirSamples(uint32_t samplesPerPixel) {
   const SceneView scene = flat_.hostView();
@@ -152,12 +152,23 @@ FrameStats CpuBackend::renderRestirSamples(uint32_t samplesPerPixel) {
   tbb::combinable<FrameStats> stats;
   for (uint32_t i = 0; i < samplesPerPixel; ++i) {
     const uint32_t sample = nextSample_ + i;
-    const RestirView restir = restir_.view();
+    const RestirView restir = restir_.view(accumulated_ + i == 0);
     tbb::parallel_for(image, [&](const tbb::blocked_range2d<uint32_t>& tile) {
       FrameStats& local = stats.local();
       for (uint32_t y = tile.rows().begin(); y < tile.rows().end(); ++y)
         for (uint32_t x = tile.cols().begin(); x < tile.cols().end(); ++x)
-          local.rays += restirCandidatePass(scene, tracer, camera_, settings_, restir, x, y, sample);
+          local.rays += restirPrimaryPass(scene, tracer, camera_, settings_, restir, x, y, sample);
+    });
+    tbb::parallel_for(tbb::blocked_range<uint32_t>(0, uint32_t(restirTileCount(settings_.width, settings_.height))),
+                      [&](const tbb::blocked_range<uint32_t>& tiles) {
+                        for (uint32_t t = tiles.begin(); t < tiles.end(); ++t)
+                          restirPresamplePass(scene, settings_, restir, t, 0, kRestirPresampledLights, sample);
+                      });
+    tbb::parallel_for(image, [&](const tbb::blocked_range2d<uint32_t>& tile) {
+      FrameStats& local = stats.local();
+      for (uint32_t y = tile.rows().begin(); y < tile.rows().end(); ++y)
+        for (uint32_t x = tile.cols().begin(); x < tile.cols().end(); ++x)
+          local.rays += restirCandidatePass(scene, tracer, settings_, restir, x, y, sample);
     });
     tbb::parallel_for(image, [&](const tbb::blocked_range2d<uint32_t>& tile) {
       FrameStats& local = stats.local();

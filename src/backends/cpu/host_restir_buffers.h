@@ -11,23 +11,23 @@ namespace candela {
 // with the history's camera.
 class HostRestirBuffers {
  public:
+  // view(firstSampleOfFilm): RestirView::hasHistory says when a sample reuses the history.
   // Buffers for a width x height image, with no history.
   void reset(uint32_t width, uint32_t height) {
-    const size_t pixels = size_t(width) * height;
-#define CANDELA_RESIZE_RESTIR_BUFFER(Type, name, description) name##_.assign(pixels, Type{});
+#define CANDELA_RESIZE_RESTIR_BUFFER(Type, name, count, description) name##_.assign(count(width, height), Type{});
     CANDELA_RESTIR_BUFFERS(CANDELA_RESIZE_RESTIR_BUFFER)
 #undef CANDELA_RESIZE_RESTIR_BUFFER
     hasHistory_ = false;
   }
   void dropHistory() { hasHistory_ = false; }
 
-  RestirView view() {
+  RestirView view(bool firstSampleOfFilm) {
     RestirView v;
-#define CANDELA_POINT_AT_RESTIR_BUFFER(Type, name, description) v.name = name##_.data();
+#define CANDELA_POINT_AT_RESTIR_BUFFER(Type, name, count, description) v.name = name##_.data();
     CANDELA_RESTIR_BUFFERS(CANDELA_POINT_AT_RESTIR_BUFFER)
 #undef CANDELA_POINT_AT_RESTIR_BUFFER
     v.previousCamera = previousCamera_;
-    v.hasHistory = hasHistory_ ? 1u : 0u;
+    v.hasHistory = hasHistory_ && firstSampleOfFilm ? 1u : 0u;
     return v;
   }
 
@@ -39,7 +39,7 @@ class HostRestirBuffers {
   }
 
  private:
-#define CANDELA_RESTIR_BUFFER_MEMBER(Type, name, description) std::vector<Type> name##_;
+#define CANDELA_RESTIR_BUFFER_MEMBER(Type, name, count, description) std::vector<Type> name##_;
   CANDELA_RESTIR_BUFFERS(CANDELA_RESTIR_BUFFER_MEMBER)
 #undef CANDELA_RESTIR_BUFFER_MEMBER
   Camera previousCamera_;

@@ -12,25 +12,25 @@ namespace candela::optix {
 // they need no clearing.
 class DeviceRestirBuffers {
  public:
+  // view(firstSampleOfFilm): RestirView::hasHistory says when a sample reuses the history.
   // Buffers for a width x height image (none for 0 x 0), with no history.
   void reset(uint32_t width, uint32_t height) {
-    const size_t pixels = size_t(width) * height;
-#define CANDELA_ALLOCATE_RESTIR_BUFFER(Type, name, description) \
-  name##_ = DeviceBuffer();                                     \
-  if (pixels > 0) name##_ = DeviceBuffer(pixels * sizeof(Type), description);
+#define CANDELA_ALLOCATE_RESTIR_BUFFER(Type, name, count, description) \
+  name##_ = DeviceBuffer();                                            \
+  if (count(width, height) > 0) name##_ = DeviceBuffer(count(width, height) * sizeof(Type), description);
     CANDELA_RESTIR_BUFFERS(CANDELA_ALLOCATE_RESTIR_BUFFER)
 #undef CANDELA_ALLOCATE_RESTIR_BUFFER
     hasHistory_ = false;
   }
   void dropHistory() { hasHistory_ = false; }
 
-  RestirView view() const {
+  RestirView view(bool firstSampleOfFilm) const {
     RestirView v;
-#define CANDELA_POINT_AT_RESTIR_BUFFER(Type, name, description) v.name = name##_.as<Type>();
+#define CANDELA_POINT_AT_RESTIR_BUFFER(Type, name, count, description) v.name = name##_.as<Type>();
     CANDELA_RESTIR_BUFFERS(CANDELA_POINT_AT_RESTIR_BUFFER)
 #undef CANDELA_POINT_AT_RESTIR_BUFFER
     v.previousCamera = previousCamera_;
-    v.hasHistory = hasHistory_ ? 1u : 0u;
+    v.hasHistory = hasHistory_ && firstSampleOfFilm ? 1u : 0u;
     return v;
   }
 
@@ -42,7 +42,7 @@ class DeviceRestirBuffers {
   }
 
  private:
-#define CANDELA_RESTIR_BUFFER_MEMBER(Type, name, description) DeviceBuffer name##_;
+#define CANDELA_RESTIR_BUFFER_MEMBER(Type, name, count, description) DeviceBuffer name##_;
   CANDELA_RESTIR_BUFFERS(CANDELA_RESTIR_BUFFER_MEMBER)
 #undef CANDELA_RESTIR_BUFFER_MEMBER
   Camera previousCamera_;

@@ -310,20 +310,24 @@ struct OptixBackend::State {
     if (!keepRestirHistory) restir.dropHistory();
   }
 
-  // One sample per pixel of the whole image by ReSTIR DI's two launches (kernel/restir/restir_passes.h), sample
+  // One sample per pixel of the whole image by ReSTIR DI's four launches (kernel/restir/restir_passes.h), sample
   // index `sample`; the wavefront schedule does not run them.
   LaunchResult launchRestir(uint32_t sample) {
     LaunchParameters p = baseParameters();
-    p.restir = restir.view();
+    p.restir = restir.view(accumulated == 0);
     p.firstSample = sample;
     p.samplesPerPixel = 1;
-    const LaunchResult candidates = launch(RaygenProgram::RestirCandidates, p, settings.height);
-    LaunchResult shaded =
-        launch(aovsEnabled ? RaygenProgram::RestirShadeWithAovs : RaygenProgram::RestirShade, p, settings.height);
+    LaunchResult total;
+    for (RaygenProgram program :
+         {RaygenProgram::RestirPrimary, RaygenProgram::RestirPresample, RaygenProgram::RestirCandidates,
+          aovsEnabled ? RaygenProgram::RestirShadeWithAovs : RaygenProgram::RestirShade}) {
+      const LaunchResult r = launch(program, p, settings.height);
+      total.totals.rays += r.totals.rays;
+      total.totals.invalidSamples += r.totals.invalidSamples;
+      total.milliseconds += r.milliseconds;
+    }
     restir.endSample(camera);
-    shaded.totals.rays += candidates.totals.rays;
-    shaded.milliseconds += candidates.milliseconds;
-    return shaded;
+    return total;
   }
 
   Vec3* filterOutput() {

@@ -27,6 +27,8 @@ const char* raygenName(RaygenProgram program) {
     case RaygenProgram::PathShade: return "__raygen__pathShade";
     case RaygenProgram::PathTail: return "__raygen__pathTail";
     case RaygenProgram::PathFinish: return "__raygen__pathFinish";
+    case RaygenProgram::RestirPrimary: return "__raygen__restirPrimary";
+    case RaygenProgram::RestirPresample: return "__raygen__restirPresample";
     case RaygenProgram::RestirCandidates: return "__raygen__restirCandidates";
     case RaygenProgram::RestirShade: return "__raygen__restirShade";
     case RaygenProgram::RestirShadeWithAovs: return "__raygen__restirShadeWithAovs";

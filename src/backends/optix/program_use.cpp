@@ -19,7 +19,8 @@ const std::vector<RaygenProgram>& pipelinePrograms(PipelineKind kind) {
       {RaygenProgram::RawTrace},
       {RaygenProgram::RenderWithAovs, RaygenProgram::RecordBesideAovs},
       {RaygenProgram::PathTrace, RaygenProgram::PathShade, RaygenProgram::PathTail, RaygenProgram::PathFinish},
-      {RaygenProgram::RestirCandidates, RaygenProgram::RestirShade, RaygenProgram::RestirShadeWithAovs},
+      {RaygenProgram::RestirPrimary, RaygenProgram::RestirPresample, RaygenProgram::RestirCandidates,
+       RaygenProgram::RestirShade, RaygenProgram::RestirShadeWithAovs},
       {RaygenProgram::RenderMedia, RaygenProgram::RenderMediaWithAovs},
   }};
   return programs[size_t(kind)];
@@ -36,6 +37,8 @@ PipelineKind pipelineLaunching(RaygenProgram program) {
     case RaygenProgram::PathShade:
     case RaygenProgram::PathTail:
     case RaygenProgram::PathFinish: return PipelineKind::Wavefront;
+    case RaygenProgram::RestirPrimary:
+    case RaygenProgram::RestirPresample:
     case RaygenProgram::RestirCandidates:
     case RaygenProgram::RestirShade:
     case RaygenProgram::RestirShadeWithAovs: return PipelineKind::Restir;
@@ -56,6 +59,8 @@ ProgramModule moduleHolding(RaygenProgram program) {
     case RaygenProgram::PathShade:
     case RaygenProgram::PathTail:
     case RaygenProgram::PathFinish: return ProgramModule::Wavefront;
+    case RaygenProgram::RestirPrimary:
+    case RaygenProgram::RestirPresample:
     case RaygenProgram::RestirCandidates:
     case RaygenProgram::RestirShade:
     case RaygenProgram::RestirShadeWithAovs: return ProgramModule::Restir;

@@ -34,7 +34,9 @@ enum class RaygenProgram {
   PathShade,
   PathTail,
   PathFinish,
-  // ReSTIR DI's two launches per sample (kernel/restir/restir_passes.h)
+  // ReSTIR DI's four launches per sample (kernel/restir/restir_passes.h)
+  RestirPrimary,
+  RestirPresample,
   RestirCandidates,
   RestirShade,
   RestirShadeWithAovs,

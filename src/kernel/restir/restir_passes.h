@@ -1,12 +1,14 @@
 #pragma once
-// ReSTIR DI (Bitterli et al. 2020) for the direct light of each pixel's primary vertex, as two passes over the image
-// per sample index, which a backend launches one after the other (every pixel of the first before any of the
-// second) on the buffers of kernel/restir/restir_buffers.h:
+// ReSTIR DI (Bitterli et al. 2020) for the direct light of each pixel's primary vertex, as four passes over the
+// image per sample index, which a backend launches one after the other (every pixel or tile of one before any of the
+// next) on the buffers of kernel/restir/restir_buffers.h:
 //
-//   restirCandidatePass  traces the camera ray and keeps the primary surface; resamples initial candidates (light
-//                        samples from the light BVH or power table, the environment among them, and one BSDF
-//                        sample) into a reservoir, tests its sample's visibility once, and reuses the previous
-//                        sample's reservoir at the reprojected pixel (temporal reuse);
+//   restirPrimaryPass    traces the camera ray and keeps the primary surface;
+//   restirPresamplePass  presamples each screen tile's bounded lights for the region of its primary surfaces
+//                        (kernel/restir/restir_presampling.h);
+//   restirCandidatePass  resamples initial candidates (light samples: the tile's presampled lights, the environment
+//                        and directional lights; and one BSDF sample) into a reservoir, tests its sample's visibility
+//                        once, and reuses the previous sample's reservoir at the reprojected pixel (temporal reuse);
 //   restirShadePass      reuses the reservoirs of a few nearby pixels (spatial reuse), keeps the result as the next
 //                        sample's history, and traces the path: the primary vertex takes its direct light from the
 //                        reservoir, every later vertex is shaded as without ReSTIR (kernel/path_vertex.h).
@@ -20,31 +22,31 @@
 // re-evaluations at the neighbours nor their visibility rays; its bias is measured in docs/performance.md.
 #include "kernel/camera.h"
 #include "kernel/integrator.h"
+#include "kernel/restir/restir_presampling.h"
+#include "kernel/restir/restir_random.h"
 #include "kernel/restir/restir_target.h"
 
 namespace candela {
 
-// The counts and sizes below are measured choices (docs/performance.md, 'ReSTIR DI'): each light candidate costs a
-// walk down the light BVH and a BSDF evaluation, each spatial neighbour a rebuilt BSDF and two shadow rays; 4 and 2 of
-// them cost markedly less than 8 and 3 for nearly the same error per sample.
+// The counts and sizes below are measured choices (docs/performance.md, 'ReSTIR DI'): a light candidate costs its
+// target (a BSDF evaluation) and no walk down the light BVH (the tile's presampled lights have walked it), each
+// spatial neighbour a rebuilt BSDF and two shadow rays.
 // Light-sampling candidates per pixel and sample (plus one BSDF sample).
-constexpr uint32_t kRestirLightCandidates = 4;
+constexpr uint32_t kRestirLightCandidates = 16;
 // Spatial reuse: neighbours tried, within this radius in pixels (closer neighbours share more of their lights).
 constexpr uint32_t kRestirSpatialNeighbours = 2;
 constexpr float kRestirSpatialRadius = 8.0f;
-// The previous sample's reservoir counts for at most this many times the current initial one. A long history ties
-// a pixel's successive samples to the same light points, so that the mean over a still's samples converges slowly;
-// a cap of 1 keeps the temporal reuse's gain at the first samples without that.
+// The previous sample's reservoir counts for at most this many times the current initial one (the temporal reuse
+// runs only where the film does not average the samples: RestirView::hasHistory).
 constexpr float kRestirHistoryCap = 1.0f;
 // Reuse only between surfaces whose shading normals are this close (cosine) and whose distances from their cameras
 // differ by at most this fraction.
 constexpr float kRestirNormalSimilarity = 0.9f;
 constexpr float kRestirDepthSimilarity = 0.1f;
 
-// Random numbers of ReSTIR's own decisions, apart from the path's (whose numbers stay those of RestirMode::Off):
-// white noise, keyed by the pass.
-CANDELA_FN PathSampler restirSampler(uint32_t pixel, uint32_t sampleIndex, uint32_t seed, uint32_t pass) {
-  return PathSampler(pixel, sampleIndex, seed ^ (0x9E3779B9u * (pass + 1u)), SamplerKind::Independent);
+// Random bits for a ReSTIR ray's pass-through decisions; scenes without cut-outs never ask for them.
+CANDELA_FN uint32_t passThroughBits(const SceneView& scene, RestirRandom& random) {
+  return scene.hasCutouts ? random.nextBits() : 0u;
 }
 
 // Weighted reservoir sampling of a stream of candidates: keeps one with probability proportional to its resampling
@@ -93,7 +95,7 @@ CANDELA_FN RestirSample restirSampleOf(const LightSample& ls) {
 // Whether the light seen as `light` from `vertex` is unoccluded.
 template <class Tracer>
 CANDELA_FN bool restirVisible(const SceneView& scene, const Tracer& tracer, const RestirVertex& vertex,
-                              const RestirLightAt& light, PathSampler& random, uint32_t& rays) {
+                              const RestirLightAt& light, RestirRandom& random, uint32_t& rays) {
   ++rays;
   return !tracer.occluded(vertex.shadowRay(light), passThroughBits(scene, random));
 }
@@ -101,29 +103,51 @@ CANDELA_FN bool restirVisible(const SceneView& scene, const Tracer& tracer, cons
 // Resamples kRestirLightCandidates light samples and one BSDF sample at `vertex` with the target function, each
 // candidate weighted by the balance heuristic over the two strategies (with the light strategy's count): its
 // resampling weight is then target / (M p_light + p_bsdf), both densities in solid angle (the measure's Jacobian
-// cancels), and a punctual light, which the BSDF cannot sample, has target / (M p_light). The kept sample's
-// visibility is tested once: where it is occluded the reservoir keeps nothing (its confidence stays 1).
+// cancels), and a punctual light, which the BSDF cannot sample, has target / (M p_light). The light strategy is
+// sampleLight()'s choice between the environment, the directional and the bounded lights, and a bounded light is one
+// of the pixel's tile's presampled lights (kernel/restir/restir_presampling.h): the candidates take them at evenly
+// spaced places from a random start, so that they differ, each one uniformly picked. The kept sample's visibility is
+// tested once: where it is occluded the reservoir keeps nothing (its confidence stays 1).
 template <class Tracer>
 CANDELA_FN Reservoir initialReservoir(const SceneView& scene, const Tracer& tracer, const RenderSettings& settings,
-                                      const RestirVertex& vertex, PathSampler& random, uint32_t& rays) {
+                                      const RestirLightTile& tile, uint32_t tilePixels, const RestirVertex& vertex,
+                                      RestirRandom& random, uint32_t& rays) {
   if (!vertex.usable) return {};
   ReservoirStream stream;
   const LightSampleContext ctx{vertex.position, vertex.bsdf.normal()};
   const float candidates = float(kRestirLightCandidates);
+  const float pOthers =
+      scene.environmentSelectProbability +
+      scene.directionalSelectProbability * float(scene.punctualLightCount - scene.boundedPunctualLightCount);
+  const bool anyBounded = scene.boundedSelectProbability > 0.0f;
+  const uint32_t start = uint32_t(random.next1D() * float(tilePixels)) % tilePixels;
   for (uint32_t i = 0; i < kRestirLightCandidates; ++i) {
     const float uSelect = random.next1D();
-    const Vec2 uLight = random.next2D();
     const float uKeep = random.next1D();
-    const LightSample ls = sampleLight(scene, settings.lightSampler, ctx, uSelect, uLight);
-    if (!ls.valid) continue;
-    const RestirSample sample = restirSampleOf(ls);
-    const RestirLightAt light = restirLightAt(scene, sample, vertex.position);
+    RestirSample sample;
+    RestirLightAt light;
+    float lightPdf;
+    if (uSelect < pOthers || !anyBounded) {
+      const LightSample ls = sampleLight(scene, settings.lightSampler, ctx, uSelect, random.next2D());
+      if (!ls.valid) continue;
+      sample = restirSampleOf(ls);
+      light = restirLightAt(scene, sample, vertex.position);
+      lightPdf = ls.pdf;
+    } else {
+      const PresampledLight& presampled = tile.lights[(start + i * tilePixels / kRestirLightCandidates) % tilePixels];
+      if (presampled.light == kRestirNoLight) continue;
+      sample.light = presampled.light;
+      sample.coordinates = {presampled.barycentrics.x, presampled.barycentrics.y, 0.0f};
+      light = sample.light < scene.lightCount ? restirLightAt(presampled.point, vertex.position)
+                                              : restirLightAt(scene, sample, vertex.position);
+      lightPdf = presampledCandidatePdf(scene, sample.light, presampled.pdf, light);
+    }
     Vec3 value;
     const BsdfEval e = vertex.contribution(light, value);
     const float target = luminance(value);
     if (!(target > 0.0f)) continue;
     const float bsdfPdf = light.isPunctual ? 0.0f : e.pdf;
-    stream.add(sample, target / (candidates * ls.pdf + bsdfPdf), target * light.jacobian, uKeep);
+    stream.add(sample, target / (candidates * lightPdf + bsdfPdf), target * light.jacobian, uKeep);
   }
 
   const float uChoice = random.next1D();
@@ -147,7 +171,7 @@ CANDELA_FN Reservoir initialReservoir(const SceneView& scene, const Tracer& trac
       const BsdfEval e = vertex.contribution(light, value);
       const float target = luminance(value);
       if (target > 0.0f) {
-        const float lightPdf = restirLightPdf(scene, settings.lightSampler, ctx, sample, light);
+        const float lightPdf = restirLightPdf(scene, settings.lightSampler, tile.region, sample, light);
         stream.add(sample, target / (candidates * lightPdf + e.pdf), target * light.jacobian, uKeep);
       }
     }
@@ -181,14 +205,14 @@ struct ReservoirReuse {
   float canonicalTarget = 0.0f;  // p-hat_c(y_c)
   float neighbours;
   bool biased;
-  PathSampler& random;
+  RestirRandom& random;
   uint32_t& rays;
   ReservoirStream stream;
   float canonicalMis = 0.0f;
   float confidence;
 
   CANDELA_FN ReservoirReuse(const SceneView& s, const Tracer& t, const RestirVertex& c, const Reservoir& own,
-                            uint32_t neighbourCount, bool biasedWeights, PathSampler& rng, uint32_t& rayCount)
+                            uint32_t neighbourCount, bool biasedWeights, RestirRandom& rng, uint32_t& rayCount)
       : scene(s),
         tracer(t),
         centre(c),
@@ -292,12 +316,12 @@ CANDELA_FN uint32_t temporalHistoryPixel(const RenderSettings& settings, const R
   return restirSimilar(surface, before, length(position - before.ray.origin)) ? previous : kNoHistory;
 }
 
-// Pass 1 of a sample: pixel (x, y)'s camera ray, its primary surface, initial candidates, visibility, temporal
-// reuse. Writes restir.surfaces and restir.reservoirs at the pixel; returns the rays traced.
+// Pass 1 of a sample: pixel (x, y)'s camera ray and its primary surface, written to restir.surfaces; returns the
+// rays traced.
 template <class Tracer>
-CANDELA_FN uint32_t restirCandidatePass(const SceneView& scene, const Tracer& tracer, const Camera& camera,
-                                        const RenderSettings& settings, const RestirView& restir, uint32_t x,
-                                        uint32_t y, uint32_t sampleIndex) {
+CANDELA_FN uint32_t restirPrimaryPass(const SceneView& scene, const Tracer& tracer, const Camera& camera,
+                                      const RenderSettings& settings, const RestirView& restir, uint32_t x, uint32_t y,
+                                      uint32_t sampleIndex) {
   const uint32_t pixel = y * settings.width + x;
   PathSampler sampler(pixel, sampleIndex, settings.seed, settings.sampler);
   PrimarySurface surface;
@@ -311,10 +335,28 @@ CANDELA_FN uint32_t restirCandidatePass(const SceneView& scene, const Tracer& tr
     ++rays;
   }
   const RestirVertex vertex(scene, settings, surface);
-  if (vertex.usable) surface.normal = vertex.bsdf.normal();
+  if (vertex.usable) {
+    surface.normal = vertex.bsdf.normal();
+    surface.position = vertex.position;
+  }
   restir.surfaces[pixel] = surface;
-  PathSampler random = restirSampler(pixel, sampleIndex, settings.seed, 0);
-  Reservoir r = initialReservoir(scene, tracer, settings, vertex, random, rays);
+  return rays;
+}
+
+// Pass 3 of a sample, after the primary pass and the presampling (restirPresamplePass) over the whole image: pixel
+// (x, y)'s initial candidates, visibility, temporal reuse. Writes restir.reservoirs at the pixel; returns the rays
+// traced.
+template <class Tracer>
+CANDELA_FN uint32_t restirCandidatePass(const SceneView& scene, const Tracer& tracer, const RenderSettings& settings,
+                                        const RestirView& restir, uint32_t x, uint32_t y, uint32_t sampleIndex) {
+  const uint32_t pixel = y * settings.width + x;
+  const PrimarySurface& surface = restir.surfaces[pixel];
+  const RestirVertex vertex(scene, settings, surface);
+  RestirRandom random(pixel, sampleIndex, settings.seed, uint32_t(RestirPass::Candidates));
+  const uint32_t tile = restirTileOf(settings, x, y);
+  uint32_t rays = 0;
+  Reservoir r = initialReservoir(scene, tracer, settings, restir.lightTiles[tile], restirTilePixels(settings, tile),
+                                 vertex, random, rays);
 
   const uint32_t previous = temporalHistoryPixel(settings, restir, surface, vertex.position);
   if (previous != kNoHistory) {
@@ -339,7 +381,7 @@ CANDELA_FN bool lastRayFindsNothing(const RenderSettings& settings, const Vertex
          !(kWithAovs && a.aovsPending);
 }
 
-// Pass 2 of a sample: spatial reuse at pixel (x, y), the result kept as the next sample's history, and the pixel's
+// Pass 4 of a sample: spatial reuse at pixel (x, y), the result kept as the next sample's history, and the pixel's
 // path, its primary vertex lit by the reservoir (shadeVertex's directFromReservoir says why nothing is counted twice).
 template <bool kWithAovs, class Tracer>
 CANDELA_FN PathResult restirShadePass(const SceneView& scene, const Tracer& tracer, const Camera& camera,
@@ -356,7 +398,7 @@ CANDELA_FN PathResult restirShadePass(const SceneView& scene, const Tracer& trac
   Reservoir r = restir.reservoirs[pixel];
   uint32_t restirRays = 0;
   if (vertex.usable) {
-    PathSampler random = restirSampler(pixel, sampleIndex, settings.seed, 1);
+    RestirRandom random(pixel, sampleIndex, settings.seed, uint32_t(RestirPass::Shade));
     uint32_t chosen[kRestirSpatialNeighbours];
     uint32_t count = 0;
     for (uint32_t i = 0; i < kRestirSpatialNeighbours; ++i) {

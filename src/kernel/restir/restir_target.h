@@ -22,6 +22,38 @@ struct RestirLightAt {
   bool isPunctual = false;  // counting measure: no BSDF sample can find it
 };
 
+// The point with barycentrics b (of vertices 1 and 2) on the emissive triangle lights[index].
+CANDELA_FN RestirLightPoint restirLightPoint(const SceneView& scene, uint32_t index, Vec2 b) {
+  const LightTriangle& light = scene.lights[index];
+  RestirLightPoint point;
+  point.position = light.p0 + light.edge1 * b.x + light.edge2 * b.y;
+  // The unit normal is cross(edge1, edge2) over twice the area.
+  point.normal = cross(light.edge1, light.edge2) * (light.frontSign * 0.5f / light.area);
+  LightSample ls;
+  ls.lightIndex = index;
+  ls.barycentrics = b;
+  ls.radiance = light.radiance;
+  point.radiance = texturedLightRadiance(scene, ls);
+  return point;
+}
+
+// A point on an emissive triangle seen from p.
+CANDELA_FN RestirLightAt restirLightAt(const RestirLightPoint& point, Vec3 p) {
+  RestirLightAt at;
+  const Vec3 toLight = point.position - p;
+  const float dist2 = dot(toLight, toLight);
+  if (!(dist2 > 0.0f)) return at;
+  at.distance = sqrtf(dist2);
+  at.wi = toLight / at.distance;
+  const float cosAtLight = -dot(point.normal, at.wi);
+  if (!(cosAtLight > 0.0f)) return at;  // emitters are one-sided
+  at.radiance = point.radiance;
+  at.jacobian = cosAtLight / dist2;
+  at.valid = !isBlack(at.radiance);
+  return at;
+}
+
+// `sample` seen from p.
 CANDELA_FN RestirLightAt restirLightAt(const SceneView& scene, const RestirSample& sample, Vec3 p) {
   RestirLightAt at;
   if (sample.light == kRestirEnvironment) {
@@ -31,26 +63,8 @@ CANDELA_FN RestirLightAt restirLightAt(const SceneView& scene, const RestirSampl
     at.valid = !isBlack(at.radiance);
     return at;
   }
-  if (sample.light < scene.lightCount) {
-    const LightTriangle& light = scene.lights[sample.light];
-    const Vec3 y = light.p0 + light.edge1 * sample.coordinates.x + light.edge2 * sample.coordinates.y;
-    const Vec3 toLight = y - p;
-    const float dist2 = dot(toLight, toLight);
-    if (!(dist2 > 0.0f)) return at;
-    at.distance = sqrtf(dist2);
-    at.wi = toLight / at.distance;
-    const Vec3 n = normalize(cross(light.edge1, light.edge2)) * light.frontSign;
-    const float cosAtLight = -dot(n, at.wi);
-    if (!(cosAtLight > 0.0f)) return at;  // emitters are one-sided
-    LightSample ls;
-    ls.lightIndex = sample.light;
-    ls.barycentrics = {sample.coordinates.x, sample.coordinates.y};
-    ls.radiance = light.radiance;
-    at.radiance = texturedLightRadiance(scene, ls);
-    at.jacobian = cosAtLight / dist2;
-    at.valid = !isBlack(at.radiance);
-    return at;
-  }
+  if (sample.light < scene.lightCount)
+    return restirLightAt(restirLightPoint(scene, sample.light, {sample.coordinates.x, sample.coordinates.y}), p);
   if (sample.light - scene.lightCount < scene.punctualLightCount) {
     const LightSample ls = samplePunctualLight(scene.punctualLights[sample.light - scene.lightCount], p, 1.0f);
     at.wi = ls.wi;
@@ -132,27 +146,5 @@ struct RestirVertex {
     return built;
   }
 };
-
-// Solid-angle density with which next-event estimation's light sampling (sampleLight) picks the light sample seen
-// as `light` from ctx; a punctual light's probability.
-CANDELA_FN float restirLightPdf(const SceneView& scene, LightSamplerKind kind, LightSampleContext ctx,
-                                const RestirSample& sample, const RestirLightAt& light) {
-  if (sample.light == kRestirEnvironment) return environmentPdf(scene, light.wi);
-  if (sample.light < scene.lightCount) {
-    const LightTriangle& triangle = scene.lights[sample.light];
-    const float selectPmf =
-        kind == LightSamplerKind::Power ? powerTablePmf(scene, triangle) : lightBvhPmf(scene, ctx, sample.light);
-    const float cosAtLight = light.jacobian * light.distance * light.distance;
-    return scene.boundedSelectProbability * trianglePointPdf(triangle, selectPmf,
-                                                             sphericalSamplingSolidAngle(triangle, ctx.p),
-                                                             light.distance, cosAtLight);
-  }
-  const uint32_t punctual = sample.light - scene.lightCount;
-  if (punctual >= scene.boundedPunctualLightCount) return scene.directionalSelectProbability;
-  const float selectPmf = kind == LightSamplerKind::Power
-                              ? scene.inverseLightPower * punctualLightPower(scene.punctualLights[punctual])
-                              : lightBvhPmf(scene, ctx, sample.light);
-  return scene.boundedSelectProbability * selectPmf;
-}
 
 }  // namespace candela
