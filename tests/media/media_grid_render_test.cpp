@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <sstream>
 #include <string>
 
@@ -10,6 +12,7 @@
 #include "io/load_diagnostics.h"
 #include "media/media_grids.h"
 #include "media/media_scenes.h"
+#include "scene/cache/scene_serialization.h"
 #include "scene/loaders/pbrt/pbrt_loader.h"
 #include "support/render_statistics.h"
 
@@ -227,6 +230,32 @@ TEST(PbrtGridMedia, AGridPastItsSamplesFailsValidation) {
   EXPECT_NO_THROW(validateScene(scene));
   scene.mediumGrids[0].nx = 1'000'000;
   EXPECT_THROW(validateScene(scene), std::runtime_error);
+}
+
+// The scene cache's layout carries grid media whole: grids, samples and majorant grids read back as written.
+TEST(PbrtGridMedia, TheSceneCacheKeepsGrids) {
+  const Scene scene = loadText(std::string(kOrthographicView) + uniformGrid("\"float Lescale\" [1 2 3 4 5 6 7 8]") +
+                               pbrtInterfaceBox("smoke", 0.5f));
+  std::FILE* file = std::tmpfile();
+  ASSERT_NE(file, nullptr);
+  {
+    BinaryWriter out(file);
+    writeScene(out, scene);
+    ASSERT_TRUE(out.ok());
+  }
+  const long size = std::ftell(file);
+  std::rewind(file);
+  Scene read;
+  {
+    BinaryReader in(file, uint64_t(size));
+    ASSERT_TRUE(readScene(in, read));
+  }
+  std::fclose(file);
+  ASSERT_EQ(read.mediumGrids.size(), 1u);
+  EXPECT_EQ(std::memcmp(&read.mediumGrids[0], &scene.mediumGrids[0], sizeof(MediumGrid)), 0);
+  EXPECT_EQ(read.mediumGridValues, scene.mediumGridValues);
+  EXPECT_EQ(read.media[0].grid, 0u);
+  EXPECT_NO_THROW(validateScene(read));
 }
 
 }  // namespace
