@@ -218,6 +218,8 @@ TEST(PbrtGridMedia, HostileGridsAreRefused) {
   EXPECT_NE(loadError(grid(two + " \"point3 p0\" [0 0 0] \"point3 p1\" [1 0 1]", eight)).find("not empty"),
             std::string::npos);
   EXPECT_NE(loadError(grid(two, "")).find("needs \"density\""), std::string::npos);
+  // So dense that tracking a ray through it would take some 1e30 steps.
+  EXPECT_NE(loadError(grid(two, "1 1 1 1 1 1 1 1e30")).find("too dense to track"), std::string::npos);
   EXPECT_NE(loadError(std::string(kOrthographicView) + "MakeNamedMedium \"g\" \"string type\" \"rgbgrid\"\n")
                 .find("needs 'sigma_a' or 'sigma_s'"),
             std::string::npos);

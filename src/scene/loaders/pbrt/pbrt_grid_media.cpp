@@ -1,9 +1,11 @@
 #include "scene/loaders/pbrt/pbrt_grid_media.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 
+#include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
 #include "io/load_budget.h"
@@ -13,6 +15,9 @@
 namespace candela {
 
 namespace {
+
+// The largest optical depth (sigma_t x length) along a grid medium's box diagonal that is tracked.
+constexpr double kMaxOpticalDepth = 1e6;
 
 // sigma_a or sigma_s (pbrt's default 1) or another colour, finite and not negative.
 Vec3 colour(const PbrtParameters& params, const char* name, Vec3 fallback) {
@@ -152,9 +157,17 @@ Medium readPbrtGridMedium(const std::string& type, const std::string& name, cons
   if (!isFinite(m.sigmaA) || !isFinite(m.sigmaS) || !isFinite(m.emission))
     params.fail("medium: its coefficients or emission overflow");
   buildMajorantGrid(m, grid, scene.mediumGridValues);
+  // Tracking takes about (majorant x length) steps along a ray: bound it, so that a file cannot make one ray
+  // endless. No medium that transmits anything comes near the limit (exp(-1e6)).
+  float majorant = 0.0f;
   for (uint32_t i = 0; i < grid.mx * grid.my * grid.mz; ++i)
-    if (!std::isfinite(scene.mediumGridValues[grid.majorants + i]))
-      params.fail("medium '" + name + "': its coefficients overflow");
+    majorant = std::max(majorant, scene.mediumGridValues[grid.majorants + i]);
+  const glm::vec4 diagonal =
+      worldFromMedium * glm::vec4(grid.p1.x - grid.p0.x, grid.p1.y - grid.p0.y, grid.p1.z - grid.p0.z, 0.0f);
+  const double depth = double(majorant) * double(glm::length(glm::vec3(diagonal)));
+  if (!(depth <= kMaxOpticalDepth))
+    params.fail("medium '" + name + "' is too dense to track: its largest sigma_t times its size is " +
+                std::to_string(depth) + ", above " + std::to_string(int(kMaxOpticalDepth)));
   m.grid = uint32_t(scene.mediumGrids.size());
   scene.mediumGrids.push_back(grid);
   return m;
