@@ -162,6 +162,20 @@ TEST(PbrtGridMedia, TheMediumTransformPlacesTheGrid) {
   EXPECT_NEAR(m.point({0, 4, 3}).y, 1.0f, 1e-6f);
 }
 
+// A temperature grid is not rendered: one warning says so, and its parameters are not reported one by one.
+TEST(PbrtGridMedia, TemperatureGridsWarnOnce) {
+  LoadWarnings warnings;
+  const Scene scene = loadText(std::string(kOrthographicView) +
+                                   uniformGrid("\"float temperature\" [1 2 3 4 5 6 7 8] \"float temperaturescale\" 100 "
+                                               "\"float temperatureoffset\" 1") +
+                                   pbrtInterfaceBox("smoke", 0.5f),
+                               &warnings);
+  EXPECT_EQ(scene.mediumGrids.size(), 1u);
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_NE(warnings.messages[0].find("'temperature' grids are not rendered"), std::string::npos)
+      << warnings.messages[0];
+}
+
 // rgbgrid and cloud media load with their parameters and render without an invalid sample; each attenuates the
 // environment behind it somewhere.
 TEST(PbrtGridMedia, RgbGridAndCloudLoadAndRender) {

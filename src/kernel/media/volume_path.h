@@ -1,21 +1,20 @@
 #pragma once
-// The path loop of scenes with participating media (pbrt-v4's VolPathIntegrator): the loop
-// of kernel/integrator.h with the medium each ray travels in. Scenes without media never compile it
-// (tracePath's kWithMedia), so their paths stay as they were.
+// The path loop of scenes with participating media (pbrt-v4's VolPathIntegrator): the loop of kernel/integrator.h
+// with the medium each ray travels in. Scenes without media never compile it (tracePath's kWithMedia), so their
+// paths stay as they were.
 //
 // A ray in a medium first samples where it collides (medium_queries.h: exactly in a homogeneous medium, by delta
-// tracking in a grid). A collision before the surface the ray
-// found adds the medium's emission and scatters there: next-event estimation with the phase function, MIS
-// against phase sampling, then a direction from the phase function. Otherwise the ray reaches the surface, whose
-// vertex is a surface vertex as elsewhere (shadeVertex, continuePath), except that its shadow ray is attenuated
-// by the media it crosses. Rays cross `interface` surfaces unchanged, into the medium on the far side; a direction
-// leaving any surface travels in the medium on its side of the surface's MediumInterface, or stays in the ray's
-// medium where the surface bounds none.
+// tracking in a grid). A collision before the surface the ray found adds the medium's emission and scatters there:
+// next-event estimation with the phase function, MIS against phase sampling, then a direction from the phase
+// function. Otherwise the ray reaches the surface, whose vertex is a surface vertex as elsewhere (shadeVertex,
+// continuePath), except that its shadow ray is attenuated by the media it crosses. Rays cross `interface` surfaces
+// unchanged, into the medium on the far side; a direction leaving any surface travels in the medium on its side
+// of the surface's MediumInterface, or stays in the ray's medium where the surface bounds none.
 //
 // The numbers a path draws: in a medium, 2 for the collision (channel and distance; a grid's tracking seeds its
-// own numbers with them) before anything else at each segment; at a collision the light (1D, 2D), the shadow ray's
-// pass-through bits (cut-out scenes, only where it carries light), the phase direction (2D), Russian roulette (1D) and
-// the next ray's bits (cut-out scenes). Rays outside media draw as in scenes without media.
+// own numbers with them) before anything else at each segment; at a collision the light (1D, 2D), the shadow
+// ray's pass-through bits (cut-out scenes, only where it carries light), the phase direction (2D), Russian
+// roulette (1D) and the next ray's bits (cut-out scenes). Rays outside media draw as in scenes without media.
 #include "kernel/media/henyey_greenstein.h"
 #include "kernel/media/medium_queries.h"
 #include "kernel/path_vertex.h"

@@ -61,8 +61,9 @@ void PbrtMedia::define(const std::string& name, const PbrtParameters& params, co
     return;
   }
   if (isPbrtGridMedium(type)) {
-    if (const PbrtParameter* temperature = params.find("temperature")) {
-      temperature->used = true;
+    if (params.find("temperature")) {
+      for (const char* unrendered : {"temperature", "temperaturecutoff", "temperatureoffset", "temperaturescale"})
+        if (const PbrtParameter* p = params.find(unrendered)) p->used = true;
       context_.warn("medium temperature",
                     "uniformgrid 'temperature' grids are not rendered: the medium emits only 'Le'");
     }
