@@ -41,8 +41,12 @@
   X(MeshRecord, meshes, WithScene, uncounted, "mesh records")                                            \
   X(InstanceRecord, instances, WithInstances, uncounted, "instance records")                             \
   X(Material, materials, WithMaterials, uncounted, "materials")                                          \
-  /* homogeneous participating media, which instances' MediumInterface and the camera name by index */   \
+  /* participating media, which instances' MediumInterface and the camera name by index */               \
   X(Medium, media, WithScene, counted(mediumCount), "the participating media")                           \
+  /* the heterogeneous media's grids (kernel/media/medium_grid.h), named by Medium::grid */              \
+  X(MediumGrid, mediumGrids, WithScene, uncounted, "the media's grids")                                  \
+  /* their samples and majorant grids, named by offset */                                                \
+  X(float, mediumGridValues, WithScene, uncounted, "the media's grid samples")                           \
   /* the emissive triangles that emit something on average, in world space */                            \
   X(LightTriangle, lights, WithInstances, counted(lightCount), "the light table")                        \
   /* the point and spot lights first, then the directional ones (SceneView) */                           \

@@ -7,6 +7,7 @@
 #include "kernel/light_bounds.h"
 #include "kernel/material.h"
 #include "kernel/media/medium.h"
+#include "kernel/media/medium_grid.h"
 #include "kernel/scene_arrays.h"
 #include "kernel/texture.h"
 

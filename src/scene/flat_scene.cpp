@@ -270,6 +270,8 @@ FlatScene FlatScene::build(const Scene& scene) {
   for (const Instance& inst : scene.instances)
     flat.instances.push_back({inst.meshId, inst.objectToWorld, normalTransform(inst.objectToWorld), inst.media});
   flat.media = scene.media;
+  flat.mediumGrids = scene.mediumGrids;
+  flat.mediumGridValues = scene.mediumGridValues;
   flat.cameraMedium = scene.cameraMedium;
   collectPunctualLights(scene, flat);
   packTextures(scene, flat);

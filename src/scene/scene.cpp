@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "scene/medium_grids.h"
+
 namespace candela {
 
 size_t Scene::triangleCount() const {
@@ -20,6 +22,7 @@ size_t sceneMemoryBytes(const Scene& scene) {
     n += bytes(m.positions) + bytes(m.normals) + bytes(m.uvs) + bytes(m.tangents) + bytes(m.colors) + bytes(m.indices) +
          bytes(m.triangleMaterials);
   for (const Texture& t : scene.textures) n += bytes(t.bytes) + bytes(t.floats);
+  n += bytes(scene.mediumGrids) + bytes(scene.mediumGridValues);
   return n + bytes(scene.environment.map.floats);
 }
 
@@ -77,6 +80,11 @@ void validateScene(const Scene& scene) {
   for (const Medium& m : scene.media)
     if (!nonNegative(m.sigmaA) || !nonNegative(m.sigmaS) || !nonNegative(m.emission) || !(std::fabs(m.g) < 1.0f))
       fail("a medium has negative or non-finite coefficients or emission, or |g| not below 1");
+  for (const Medium& m : scene.media)
+    if (m.grid != kHomogeneous && m.grid >= scene.mediumGrids.size()) fail("a medium names a missing grid");
+  for (const MediumGrid& grid : scene.mediumGrids)
+    if (std::string problem = mediumGridProblem(grid, scene.mediumGridValues.size()); !problem.empty()) fail(problem);
+  if (std::string problem = mediumGridValuesProblem(scene.mediumGridValues); !problem.empty()) fail(problem);
   bool anyMix = false;
   for (const Material& m : scene.materials) {
     if (!finite(m.baseColor) || !finite(m.emission)) fail("a material has non-finite parameters");

@@ -102,7 +102,9 @@ struct Scene {
   std::vector<Texture> textures;
   Environment environment;
   std::vector<PunctualLight> punctualLights;  // in world space
-  std::vector<Medium> media;                  // homogeneous participating media
+  std::vector<Medium> media;                  // participating media
+  std::vector<MediumGrid> mediumGrids;        // the grids of heterogeneous media (kernel/media/medium_grid.h)
+  std::vector<float> mediumGridValues;        // their samples and majorant grids
   CameraDescription camera;
   uint32_t cameraMedium = kNoMedium;  // the medium the camera is in, an index into `media`
   RenderHints renderHints;

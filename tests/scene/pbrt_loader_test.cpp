@@ -681,8 +681,8 @@ TEST(PbrtLoader, UnsupportedFeaturesWarnOncePerFeature) {
   Scene scene = loadText(std::string(kMirroredCamera) +
                              "Shape \"curve\" \"point3 P\" [0 0 0 1 1 1 2 2 2 3 3 3]\nShape \"curve\" \"point3 P\" "
                              "[0 0 0 1 1 1 2 2 2 3 3 3]\nLightSource \"goniometric\" \"rgb I\" [1 1 1]\n"
-                             "MakeNamedMedium \"smoke\" \"string type\" \"uniformgrid\"\n"
-                             "MakeNamedMedium \"cloud\" \"string type\" \"uniformgrid\"\n" +
+                             "MakeNamedMedium \"smoke\" \"string type\" \"nanovdb\"\n"
+                             "MakeNamedMedium \"cloud\" \"string type\" \"nanovdb\"\n" +
                              kTriangle,
                          &warnings);
   EXPECT_EQ(scene.meshes.size(), 1u);

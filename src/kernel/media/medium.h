@@ -1,7 +1,8 @@
 #pragma once
-// A homogeneous participating medium (pbrt-v4's HomogeneousMedium): absorption and scattering coefficients per
+// A participating medium. Homogeneous (pbrt-v4's HomogeneousMedium): absorption and scattering coefficients per
 // unit of world length, per RGB channel, an isotropic emitted radiance and a Henyey-Greenstein asymmetry g. pbrt's
-// `scale` is folded into the coefficients and `Lescale` into the emission when a scene is loaded.
+// `scale` is folded into the coefficients and `Lescale` into the emission when a scene is loaded. A medium that
+// names a grid (medium_grid.h) is heterogeneous: its coefficients and emission are these times the grid's factors.
 #include <cstdint>
 
 #include "core/math.h"
@@ -10,12 +11,15 @@ namespace candela {
 
 // A ray, instance side or camera in no medium: vacuum.
 constexpr uint32_t kNoMedium = 0xffffffffu;
+// A medium that is the same everywhere.
+constexpr uint32_t kHomogeneous = 0xffffffffu;
 
 struct Medium {
-  Vec3 sigmaA;     // absorption coefficient
-  Vec3 sigmaS;     // scattering coefficient
-  Vec3 emission;   // radiance emitted per unit of absorption (pbrt-v4: sigma_a x Le is the source term)
-  float g = 0.0f;  // Henyey-Greenstein asymmetry in (-1, 1): positive scatters forwards
+  Vec3 sigmaA;                   // absorption coefficient
+  Vec3 sigmaS;                   // scattering coefficient
+  Vec3 emission;                 // radiance emitted per unit of absorption (pbrt-v4: sigma_a x Le is the source term)
+  float g = 0.0f;                // Henyey-Greenstein asymmetry in (-1, 1): positive scatters forwards
+  uint32_t grid = kHomogeneous;  // or its entry of the scene's mediumGrids
 };
 
 // The media on the two sides of a surface, as pbrt-v4's MediumInterface: `outside` where its geometric normal (as

@@ -1,22 +1,22 @@
 #pragma once
-// The path loop of scenes with participating media (pbrt-v4's VolPathIntegrator, for homogeneous media): the loop
-// of kernel/integrator.h with the medium each ray travels in. Scenes without media never compile it
-// (tracePath's kWithMedia), so their paths stay as they were.
+// The path loop of scenes with participating media (pbrt-v4's VolPathIntegrator): the loop of kernel/integrator.h
+// with the medium each ray travels in. Scenes without media never compile it (tracePath's kWithMedia), so their
+// paths stay as they were.
 //
-// A ray in a medium first samples where it collides (distance_sampling.h). A collision before the surface the ray
-// found adds the medium's emission and scatters there: next-event estimation with the phase function, MIS
-// against phase sampling, then a direction from the phase function. Otherwise the ray reaches the surface, whose
-// vertex is a surface vertex as elsewhere (shadeVertex, continuePath), except that its shadow ray is attenuated
-// by the media it crosses. Rays cross `interface` surfaces unchanged, into the medium on the far side; a direction
-// leaving any surface travels in the medium on its side of the surface's MediumInterface, or stays in the ray's
-// medium where the surface bounds none.
+// A ray in a medium first samples where it collides (medium_queries.h: exactly in a homogeneous medium, by delta
+// tracking in a grid). A collision before the surface the ray found adds the medium's emission and scatters there:
+// next-event estimation with the phase function, MIS against phase sampling, then a direction from the phase
+// function. Otherwise the ray reaches the surface, whose vertex is a surface vertex as elsewhere (shadeVertex,
+// continuePath), except that its shadow ray is attenuated by the media it crosses. Rays cross `interface` surfaces
+// unchanged, into the medium on the far side; a direction leaving any surface travels in the medium on its side
+// of the surface's MediumInterface, or stays in the ray's medium where the surface bounds none.
 //
-// The numbers a path draws: in a medium, 2 for the collision (channel, distance) before anything else at each
-// segment; at a collision the light (1D, 2D), the shadow ray's pass-through bits (cut-out scenes, only where it
-// carries light), the phase direction (2D), Russian roulette (1D) and the next ray's bits (cut-out scenes). Rays
-// outside media draw as in scenes without media.
-#include "kernel/media/distance_sampling.h"
+// The numbers a path draws: in a medium, 2 for the collision (channel and distance; a grid's tracking seeds its
+// own numbers with them) before anything else at each segment; at a collision the light (1D, 2D), the shadow
+// ray's pass-through bits (cut-out scenes, only where it carries light), the phase direction (2D), Russian
+// roulette (1D) and the next ray's bits (cut-out scenes). Rays outside media draw as in scenes without media.
 #include "kernel/media/henyey_greenstein.h"
+#include "kernel/media/medium_queries.h"
 #include "kernel/path_vertex.h"
 
 namespace candela {
@@ -40,8 +40,8 @@ CANDELA_FN bool hitsInterface(const SceneView& scene, const Hit& hit) {
 }
 
 // The fraction of light that travels along the shadow ray `ray` (pass-through bits `bits`), which starts in
-// `medium`: the media's exact transmittance over each piece between interfaces (ratio tracking is exact in a
-// homogeneous medium), 0 where any other surface blocks it. Adds the rays traced after the first to `rays`.
+// `medium`: the media's transmittance over each piece between interfaces (exact in a homogeneous medium, ratio
+// tracking in a grid), 0 where any other surface blocks it. Adds the rays traced after the first to `rays`.
 template <class Tracer>
 CANDELA_FN Vec3 shadowTransmittance(const SceneView& scene, const Tracer& tracer, Ray ray, uint32_t bits,
                                     uint32_t medium, uint32_t& rays) {
@@ -52,7 +52,7 @@ CANDELA_FN Vec3 shadowTransmittance(const SceneView& scene, const Tracer& tracer
     const bool found = tracer.intersect(ray, hit, bits);
     if (found && !hitsInterface(scene, hit)) return {};
     const float length = found ? hit.t : ray.tMax;
-    if (medium != kNoMedium) transmittance *= mediumTransmittance(scene.media[medium], length);
+    if (medium != kNoMedium) transmittance *= mediumSegmentTransmittance(scene, medium, ray, length);
     if (!found || isBlack(transmittance)) return transmittance;
     const SurfaceInteraction si = makeInteraction(scene, hit);
     medium = mediumBeyond(scene, hit.instanceId, si.geometricNormal, ray.direction, medium);
@@ -118,13 +118,12 @@ CANDELA_FN void followPathInMedia(const SceneView& scene, const Tracer& tracer, 
     Hit hit;
     const bool found = tracer.intersect(ray, hit, bits);
     if (medium != kNoMedium) {
-      const Medium& m = scene.media[medium];
-      const Vec2 u = sampler.next2D();
-      const MediumStep step = sampleMediumDistance(m, found ? hit.t : kInf, u.x, u.y);
+      const MediumStep step = sampleMediumCollision(scene, medium, ray, found ? hit.t : kInf, sampler.next2D());
       if (step.scattered) {
         s.radiance += s.beta * step.emission;
         if (kWithAovs && a.aovsPending) {
-          const Vec3 sigmaT = mediumSigmaT(m);
+          const MediumPoint m = mediumAt(scene, medium, ray.origin + ray.direction * step.t);
+          const Vec3 sigmaT = m.sigmaA + m.sigmaS;
           a.aovs.albedo = s.beta * Vec3{sigmaT.x > 0.0f ? m.sigmaS.x / sigmaT.x : 0.0f,
                                         sigmaT.y > 0.0f ? m.sigmaS.y / sigmaT.y : 0.0f,
                                         sigmaT.z > 0.0f ? m.sigmaS.z / sigmaT.z : 0.0f};

@@ -18,7 +18,8 @@ CANDELA_MESH_ARRAYS(CANDELA_CHECK_MESH_MEMBER)
 static_assert(std::is_trivially_copyable_v<Material> && std::is_trivially_copyable_v<Instance> &&
               std::is_trivially_copyable_v<CameraDescription> && std::is_trivially_copyable_v<AnimationNode> &&
               std::is_trivially_copyable_v<AnimatedInstance> && std::is_trivially_copyable_v<AnimatedCamera> &&
-              std::is_trivially_copyable_v<AnimatedLight> && std::is_trivially_copyable_v<Medium>);
+              std::is_trivially_copyable_v<AnimatedLight> && std::is_trivially_copyable_v<Medium> &&
+              std::is_trivially_copyable_v<MediumGrid>);
 
 void writeTexture(BinaryWriter& out, const Texture& t) {
   out.string(t.name);
@@ -186,6 +187,8 @@ void writeScene(BinaryWriter& out, const Scene& s) {
   out.value(uint8_t(s.environment.visibleToCamera));
   out.array(s.punctualLights);
   out.array(s.media);
+  out.array(s.mediumGrids);
+  out.array(s.mediumGridValues);
   out.value(s.camera);
   out.value(s.cameraMedium);
   writeOptional(out, s.renderHints.width);
@@ -228,6 +231,8 @@ bool readScene(BinaryReader& in, Scene& s) {
   s.environment.visibleToCamera = flag != 0;
   in.array(s.punctualLights);
   in.array(s.media);
+  in.array(s.mediumGrids);
+  in.array(s.mediumGridValues);
   in.value(s.camera);
   in.value(s.cameraMedium);
   readOptional(in, s.renderHints.width);

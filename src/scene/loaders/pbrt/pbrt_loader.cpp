@@ -348,7 +348,7 @@ class PbrtReader {
       } else if (d == "MakeNamedMedium") {
         std::string name = readString(tokens, d);
         PbrtParameters params = readParametersWithSpectra(tokens);
-        media_.define(name, params);
+        media_.define(name, params, worldFromPbrt_ * state_.ctm);
         context_.warnUnused("medium '" + params.getString("type", "") + "'", params);
       } else if (d == "MediumInterface") {
         // One name: the same medium on both sides; two: inside, then outside.

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "io/load_diagnostics.h"
+#include "scene/loaders/pbrt/pbrt_grid_media.h"
 
 namespace candela {
 
@@ -45,19 +46,28 @@ uint32_t PbrtMedia::slotOf(const std::string& name) {
   return found->second;
 }
 
-void PbrtMedia::define(const std::string& name, const PbrtParameters& params) {
+void PbrtMedia::define(const std::string& name, const PbrtParameters& params, const glm::mat4& worldFromMedium) {
   const std::string type = params.getString("type", "");
   if (name.empty()) params.fail("MakeNamedMedium: a medium needs a name");
   Slot& slot = slots_[slotOf(name)];
   if (slot.defined) context_.warn("medium " + name, "medium '" + name + "' is defined again: the last one is used");
   slot.defined = true;
-  slot.rendered = type == "homogeneous";
+  slot.rendered = type == "homogeneous" || isPbrtGridMedium(type);
   if (type.empty()) params.fail("MakeNamedMedium '" + name + "' needs a \"string type\"");
   if (!slot.rendered) {
-    if (type != "uniformgrid" && type != "rgbgrid" && type != "nanovdb" && type != "cloud")
-      params.fail("MakeNamedMedium: unknown medium type '" + type + "'");
+    if (type != "nanovdb") params.fail("MakeNamedMedium: unknown medium type '" + type + "'");
     params.markAllUsed();
     context_.warn("medium " + type, "'" + type + "' media are not rendered: rays cross them as vacuum");
+    return;
+  }
+  if (isPbrtGridMedium(type)) {
+    if (params.find("temperature")) {
+      for (const char* unrendered : {"temperature", "temperaturecutoff", "temperatureoffset", "temperaturescale"})
+        if (const PbrtParameter* p = params.find(unrendered)) p->used = true;
+      context_.warn("medium temperature",
+                    "uniformgrid 'temperature' grids are not rendered: the medium emits only 'Le'");
+    }
+    slot.medium = readPbrtGridMedium(type, name, params, worldFromMedium, context_.scene);
     return;
   }
   if (params.find("preset"))

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/mat4x4.hpp>
+
 #include "kernel/media/medium.h"
 #include "scene/loaders/pbrt/pbrt_context.h"
 #include "scene/loaders/pbrt/pbrt_parameters.h"
@@ -13,14 +15,14 @@ namespace candela {
 // pbrt-v4's named media: MakeNamedMedium defines them, MediumInterface and the camera refer to them by name, and
 // pbrt resolves the names once the whole scene is read, so a name may be used before its definition. Each name
 // gets a slot when first defined or used; `finish` turns the slots into the scene's media and says where each
-// slot went. Only `homogeneous` media are rendered: the other types (uniformgrid, rgbgrid, nanovdb, cloud) are
-// read as vacuum, with one warning.
+// slot went. `homogeneous`, `uniformgrid`, `rgbgrid` and `cloud` media are rendered (pbrt_grid_media.h); `nanovdb`
+// is read as vacuum, with one warning.
 class PbrtMedia {
  public:
   explicit PbrtMedia(PbrtContext& context) : context_(context) {}
 
-  // MakeNamedMedium `name` with its parameters (`type` among them).
-  void define(const std::string& name, const PbrtParameters& params);
+  // MakeNamedMedium `name` with its parameters (`type` among them), under the transform `worldFromMedium`.
+  void define(const std::string& name, const PbrtParameters& params, const glm::mat4& worldFromMedium);
   // The slot of medium `name`, used at file:line; kNoMedium for "" (vacuum).
   uint32_t slot(const std::string& name, const std::string& file, size_t line);
   // Moves the rendered media into the scene; returns, per slot, the index in Scene::media or kNoMedium. Throws
@@ -33,7 +35,7 @@ class PbrtMedia {
     std::string file;  // where it was first used, for the error if it is never defined
     size_t line = 0;
     bool defined = false;
-    bool rendered = false;  // homogeneous: `medium` holds it; else vacuum
+    bool rendered = false;  // `medium` holds it; else vacuum
     Medium medium;
   };
   uint32_t slotOf(const std::string& name);

@@ -1,0 +1,278 @@
+// Grid media rendered whole on the CPU backend, and read from pbrt-v4 scenes (uniformgrid, rgbgrid, cloud),
+// against answers known another way: the homogeneous medium they must equal, the furnace, a slab's transmittance.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <sstream>
+#include <string>
+
+#include "backends/cpu/cpu_backend.h"
+#include "io/load_diagnostics.h"
+#include "media/media_grids.h"
+#include "media/media_scenes.h"
+#include "scene/cache/scene_serialization.h"
+#include "scene/loaders/pbrt/pbrt_loader.h"
+#include "support/render_statistics.h"
+
+namespace candela::test {
+namespace {
+
+constexpr uint32_t kBatches = 32;
+constexpr uint32_t kSamplesPerBatch = 8;
+constexpr double kAlpha = 0.01;
+
+PixelStatistics render(const Scene& scene, uint32_t size) {
+  CpuBackend backend;
+  backend.setScene(scene);
+  RenderSettings settings;
+  settings.sampler = SamplerKind::Independent;
+  settings.width = settings.height = size;
+  settings.maxDepth = 1000;
+  settings.rouletteDepth = 1;
+  settings.seed = 5;
+  backend.setSettings(settings);
+  backend.setCamera(scene.camera.toCamera(1.0f));
+  return renderBatches(backend, kBatches, kSamplesPerBatch);
+}
+
+// A slab of medium m as makeMediumSlab's, the medium a uniformgrid of density 1 whose box is twice the slab's:
+// 2 samples per axis put the samples' centres on the slab's faces or beyond, so the lookup is 1 all through it.
+Scene constantGridSlab(const Medium& m, float depth) {
+  Scene scene = makeMediumSlab(m, depth);
+  scene.media.clear();
+  addDensityGrid(scene, m.sigmaA, m.sigmaS, 2, 2, 2, std::vector<float>(8, 1.0f), {-100, -100, -depth},
+                 {100, 100, 2.0f * depth});
+  return scene;
+}
+
+// A uniform grid of constant density renders as the homogeneous medium it equals: the same image mean within
+// 4 standard errors of the difference, for a medium that scatters and absorbs each channel differently.
+TEST(GridMediaRender, ConstantGridRendersAsTheHomogeneousMedium) {
+  Medium m;
+  m.sigmaA = {0.2f, 0.5f, 0.1f};
+  m.sigmaS = {0.8f, 0.4f, 1.6f};
+  m.g = 0.3f;
+  const PixelStatistics homogeneous = render(makeMediumSlab(m, 1.0f), 32);
+  Scene gridScene = constantGridSlab(m, 1.0f);
+  gridScene.media[0].g = m.g;
+  const PixelStatistics grid = render(gridScene, 32);
+  EXPECT_EQ(grid.invalidSamples, 0u);
+  const ImageMean a = imageMean(homogeneous), b = imageMean(grid);
+  const double error = std::sqrt(a.standardError * a.standardError + b.standardError * b.standardError);
+  EXPECT_LT(std::fabs(a.mean - b.mean), 4.0 * error) << a.mean << " vs " << b.mean << " +- " << error;
+  // The test resolves a slab 20% thicker.
+  const ImageMean thicker = imageMean(render(makeMediumSlab(m, 1.2f), 32));
+  const double thickerError =
+      std::sqrt(thicker.standardError * thicker.standardError + b.standardError * b.standardError);
+  EXPECT_GT(std::fabs(thicker.mean - b.mean), 4.0 * thickerError);
+}
+
+// A furnace (media_scenes.h) filled with a grid of densities from 0.2 to 3 and albedo 1: the radiance is 1
+// everywhere, whatever the density. Grey: every pixel; channels scattering differently: the image mean.
+TEST(GridMediaRender, FurnaceOfAVaryingGridIsOneEverywhere) {
+  const uint32_t n = 6;
+  std::vector<float> density(n * n * n);
+  for (uint32_t i = 0; i < density.size(); ++i) density[i] = 0.2f + 2.8f * bitsToUnitFloat(pcg4d({i, 3, 4, 5}).x);
+  for (Vec3 sigmaS : {Vec3{2, 2, 2}, Vec3{1, 2, 4}}) {
+    Scene scene = makeMediumFurnace(Medium{});
+    scene.media.clear();
+    addDensityGrid(scene, {0, 0, 0}, sigmaS, n, n, n, density, {-1.2f, -1.2f, -1.2f}, {1.2f, 1.2f, 1.2f});
+    const PixelStatistics stats = render(scene, 8);
+    EXPECT_EQ(stats.invalidSamples, 0u);
+    const ImageMean mean = imageMean(stats);
+    EXPECT_LT(std::fabs(mean.mean - 1.0), 4.0 * mean.standardError) << mean.mean << " +- " << mean.standardError;
+    if (sigmaS.x == sigmaS.z) {
+      std::string worst;
+      EXPECT_EQ(countRejectedPixels(stats, {1, 1, 1}, kBatches, kAlpha, worst), 0u) << worst;
+    }
+  }
+}
+
+Scene loadText(const std::string& text, LoadWarnings* warningsOut = nullptr) {
+  LoadWarnings warnings;
+  Scene scene = loadPbrtText("test.pbrt", text, warnings);
+  if (warningsOut) *warningsOut = warnings;
+  return scene;
+}
+
+std::string loadError(const std::string& text) {
+  try {
+    loadText(text);
+  } catch (const LoadError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+// A box [-50, 50] x [-50, 50] x [0, depth] as a pbrt trianglemesh bounding medium `name` as an interface.
+std::string pbrtInterfaceBox(const std::string& name, float depth) {
+  Mesh box;
+  appendBox(box, {-50, -50, 0}, {50, 50, depth}, 0);
+  std::ostringstream text;
+  text << "AttributeBegin\nMaterial \"interface\"\nMediumInterface \"" << name << "\" \"\"\n"
+       << "Shape \"trianglemesh\" \"point3 P\" [";
+  for (Vec3 p : box.positions) text << ' ' << p.x << ' ' << p.y << ' ' << p.z;
+  text << " ] \"integer indices\" [";
+  for (uint32_t i : box.indices) text << ' ' << i;
+  text << " ]\nAttributeEnd\n";
+  return text.str();
+}
+
+constexpr const char* kOrthographicView =
+    "LookAt 0 0 -2  0 0 0  0 1 0\nCamera \"orthographic\"\nFilm \"rgb\" \"integer xresolution\" 16 "
+    "\"integer yresolution\" 16\nWorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\n";
+
+std::string uniformGrid(const std::string& extra) {
+  return "MakeNamedMedium \"smoke\" \"string type\" \"uniformgrid\" \"integer nx\" 2 \"integer ny\" 2 "
+         "\"integer nz\" 2 \"float density\" [1 1 1 1 1 1 1 1] \"point3 p0\" [-100 -100 -0.5] "
+         "\"point3 p1\" [100 100 1] \"rgb sigma_a\" [0.5 1 2] \"rgb sigma_s\" [0 0 0] \"float scale\" 2 " +
+         extra + "\n";
+}
+
+// A uniformgrid slab of constant density half a unit deep (its samples' centres beyond the slab's faces), purely
+// absorbing with sigma_a x scale = 1 2 4: every pixel is exp(-sigma_a x 0.5), and a slab 40% thicker is rejected
+// (delta tracking's estimate in a purely absorbing medium is 0 or 1, noisier than the homogeneous medium's exact
+// one).
+TEST(PbrtGridMedia, UniformGridSlabTransmitsItsAbsorption) {
+  const Scene scene = loadText(std::string(kOrthographicView) + uniformGrid("") + pbrtInterfaceBox("smoke", 0.5f));
+  ASSERT_EQ(scene.media.size(), 1u);
+  ASSERT_EQ(scene.mediumGrids.size(), 1u);
+  EXPECT_EQ(scene.media[0].grid, 0u);
+  EXPECT_EQ(scene.mediumGrids[0].kind, MediumGridKind::Density);
+  EXPECT_EQ(scene.mediumGrids[0].nx, 2u);
+  const PixelStatistics stats = render(scene, 16);
+  auto transmittance = [](float d) { return Vec3{std::exp(-1.0f * d), std::exp(-2.0f * d), std::exp(-4.0f * d)}; };
+  std::string worst;
+  EXPECT_EQ(countRejectedPixels(stats, transmittance(0.5f), kBatches, kAlpha, worst), 0u) << worst;
+  EXPECT_GT(countRejectedPixels(stats, transmittance(0.7f), kBatches, kAlpha, worst), 0u);
+  EXPECT_EQ(stats.invalidSamples, 0u);
+}
+
+// The transform in effect at MakeNamedMedium places the grid: its inverse takes world points into the medium.
+TEST(PbrtGridMedia, TheMediumTransformPlacesTheGrid) {
+  const Scene scene = loadText(std::string(kOrthographicView) + "AttributeBegin\nTranslate 0 2 3\nScale 2 2 2\n" +
+                               uniformGrid("") + "AttributeEnd\n" + pbrtInterfaceBox("smoke", 0.5f));
+  const Affine3x4& m = scene.mediumGrids[0].mediumFromWorld;
+  const Vec3 p = m.point({0, 2, 3});
+  EXPECT_NEAR(p.x, 0.0f, 1e-6f);
+  EXPECT_NEAR(p.y, 0.0f, 1e-6f);
+  EXPECT_NEAR(p.z, 0.0f, 1e-6f);
+  EXPECT_NEAR(m.point({0, 4, 3}).y, 1.0f, 1e-6f);
+}
+
+// A temperature grid is not rendered: one warning says so, and its parameters are not reported one by one.
+TEST(PbrtGridMedia, TemperatureGridsWarnOnce) {
+  LoadWarnings warnings;
+  const Scene scene = loadText(std::string(kOrthographicView) +
+                                   uniformGrid("\"float temperature\" [1 2 3 4 5 6 7 8] \"float temperaturescale\" 100 "
+                                               "\"float temperatureoffset\" 1") +
+                                   pbrtInterfaceBox("smoke", 0.5f),
+                               &warnings);
+  EXPECT_EQ(scene.mediumGrids.size(), 1u);
+  ASSERT_EQ(warnings.messages.size(), 1u);
+  EXPECT_NE(warnings.messages[0].find("'temperature' grids are not rendered"), std::string::npos)
+      << warnings.messages[0];
+}
+
+// rgbgrid and cloud media load with their parameters and render without an invalid sample; each attenuates the
+// environment behind it somewhere.
+TEST(PbrtGridMedia, RgbGridAndCloudLoadAndRender) {
+  std::string rgb =
+      "MakeNamedMedium \"tint\" \"string type\" \"rgbgrid\" \"integer nx\" 2 \"point3 p0\" [-2 -2 0] "
+      "\"point3 p1\" [2 2 0.5] \"rgb sigma_a\" [1 0 0  0 2 0] \"rgb sigma_s\" [0.5 0.5 0.5  1 1 1] "
+      "\"rgb Le\" [0 0 0  0.5 0.5 0.5] \"float Lescale\" 2 \"float scale\" 3\n";
+  std::string cloud =
+      "MakeNamedMedium \"tint\" \"string type\" \"cloud\" \"point3 p0\" [-1 -1 0] \"point3 p1\" "
+      "[1 1 0.5] \"rgb sigma_a\" [0.5 0.5 0.5] \"rgb sigma_s\" [4 4 4] \"float density\" 2 "
+      "\"float wispiness\" 0.5 \"float frequency\" 3 \"float g\" 0.5\n";
+  for (const std::string& medium : {rgb, cloud}) {
+    SCOPED_TRACE(medium);
+    LoadWarnings warnings;
+    const Scene scene = loadText(std::string(kOrthographicView) + medium + pbrtInterfaceBox("tint", 0.5f), &warnings);
+    ASSERT_EQ(scene.mediumGrids.size(), 1u);
+    const MediumGrid& grid = scene.mediumGrids[0];
+    if (grid.kind == MediumGridKind::Rgb) {
+      EXPECT_EQ(grid.nx, 2u);
+      EXPECT_NE(grid.sigmaA, kNoGridValues);
+      EXPECT_NE(grid.emission, kNoGridValues);
+      EXPECT_FLOAT_EQ(scene.media[0].sigmaA.x, 3.0f);
+      EXPECT_FLOAT_EQ(scene.media[0].emission.x, 2.0f);
+    } else {
+      EXPECT_EQ(grid.kind, MediumGridKind::Cloud);
+      EXPECT_FLOAT_EQ(grid.frequency, 3.0f);
+      EXPECT_FLOAT_EQ(scene.media[0].g, 0.5f);
+    }
+    for (const std::string& w : warnings.messages) EXPECT_EQ(w.find("medium"), std::string::npos) << w;
+    const PixelStatistics stats = render(scene, 8);
+    EXPECT_EQ(stats.invalidSamples, 0u);
+    const ImageMean mean = imageMean(stats);
+    EXPECT_LT(mean.mean, 0.95);
+    EXPECT_GT(mean.mean, 0.0);
+  }
+}
+
+// Grids that cannot be what they say are refused in one line naming the directive.
+TEST(PbrtGridMedia, HostileGridsAreRefused) {
+  auto grid = [](const std::string& sizes, const std::string& density) {
+    return std::string(kOrthographicView) + "MakeNamedMedium \"g\" \"string type\" \"uniformgrid\" " + sizes +
+           " \"float density\" [" + density + "]\n" + pbrtInterfaceBox("g", 0.5f);
+  };
+  const std::string eight = "1 1 1 1 1 1 1 1";
+  const std::string two = "\"integer nx\" 2 \"integer ny\" 2 \"integer nz\" 2";
+  EXPECT_NE(loadError(grid(two, "1 1 1 1 1 1 1")).find("7 values where nx*ny*nz = 8"), std::string::npos);
+  EXPECT_NE(loadError(grid("\"integer nx\" -2", eight)).find("between 1 and 2^20"), std::string::npos);
+  EXPECT_NE(loadError(grid("\"integer nx\" 1073741824 \"integer ny\" 1073741824", eight)).find("between 1 and 2^20"),
+            std::string::npos);
+  EXPECT_NE(loadError(grid(two, "1 1 1 1 1 1 1 -1")).find("negative or non-finite"), std::string::npos);
+  // The parser refuses what no float holds before the grid sees it.
+  EXPECT_NE(loadError(grid(two, "1 1 1 1 1 1 1 1e39")).find("beyond the range of a float"), std::string::npos);
+  EXPECT_NE(loadError(grid(two, "1 1 1 nan 1 1 1 1")).find("'nan' is not a number"), std::string::npos);
+  EXPECT_NE(loadError(grid(two + " \"point3 p0\" [0 0 0] \"point3 p1\" [1 0 1]", eight)).find("not empty"),
+            std::string::npos);
+  EXPECT_NE(loadError(grid(two, "")).find("needs \"density\""), std::string::npos);
+  // So dense that tracking a ray through it would take some 1e30 steps.
+  EXPECT_NE(loadError(grid(two, "1 1 1 1 1 1 1 1e30")).find("too dense to track"), std::string::npos);
+  EXPECT_NE(loadError(std::string(kOrthographicView) + "MakeNamedMedium \"g\" \"string type\" \"rgbgrid\"\n")
+                .find("needs 'sigma_a' or 'sigma_s'"),
+            std::string::npos);
+  EXPECT_EQ(loadError(grid(two, "1 1 1 1 1 1 1")), "test.pbrt:6: medium: 'density' has 7 values where nx*ny*nz = 8");
+}
+
+// A scene whose grid names samples it does not have (a damaged scene cache) fails validation.
+TEST(PbrtGridMedia, AGridPastItsSamplesFailsValidation) {
+  Scene scene = loadText(std::string(kOrthographicView) + uniformGrid("") + pbrtInterfaceBox("smoke", 0.5f));
+  EXPECT_NO_THROW(validateScene(scene));
+  scene.mediumGrids[0].nx = 1'000'000;
+  EXPECT_THROW(validateScene(scene), std::runtime_error);
+}
+
+// The scene cache's layout carries grid media whole: grids, samples and majorant grids read back as written.
+TEST(PbrtGridMedia, TheSceneCacheKeepsGrids) {
+  const Scene scene = loadText(std::string(kOrthographicView) + uniformGrid("\"float Lescale\" [1 2 3 4 5 6 7 8]") +
+                               pbrtInterfaceBox("smoke", 0.5f));
+  std::FILE* file = std::tmpfile();
+  ASSERT_NE(file, nullptr);
+  {
+    BinaryWriter out(file);
+    writeScene(out, scene);
+    ASSERT_TRUE(out.ok());
+  }
+  const long size = std::ftell(file);
+  std::rewind(file);
+  Scene read;
+  {
+    BinaryReader in(file, uint64_t(size));
+    ASSERT_TRUE(readScene(in, read));
+  }
+  std::fclose(file);
+  ASSERT_EQ(read.mediumGrids.size(), 1u);
+  EXPECT_EQ(std::memcmp(&read.mediumGrids[0], &scene.mediumGrids[0], sizeof(MediumGrid)), 0);
+  EXPECT_EQ(read.mediumGridValues, scene.mediumGridValues);
+  EXPECT_EQ(read.media[0].grid, 0u);
+  EXPECT_NO_THROW(validateScene(read));
+}
+
+}  // namespace
+}  // namespace candela::test
