@@ -2,6 +2,7 @@
 // nothing returns all the light it takes in.
 #include <gtest/gtest.h>
 
+#include <stdexcept>
 #include <string>
 
 #include "backends/cpu/cpu_backend.h"
@@ -85,6 +86,23 @@ TEST(SubsurfaceRender, AbsorptionDarkensTheWalk) {
     EXPECT_EQ(stats.invalidSamples, 0u);
     previous = mean.mean;
   }
+}
+
+// A scene that reaches the backends from elsewhere than a loader (the API, a cache) is validated: a negative
+// transmittance would make a lobe's choice probability negative, a subsurface flag other than 0 or 1 is no
+// scene's.
+TEST(SubsurfaceRender, ValidationRefusesWhatNoLoaderMakes) {
+  Medium interior;
+  interior.sigmaS = {1, 1, 1};
+  interior.subsurface = 1;
+  Scene scene = makeSubsurfaceFurnace(interior, 1.33f);
+  EXPECT_NO_THROW(validateScene(scene));
+  scene.media[0].subsurface = 2;
+  EXPECT_THROW(validateScene(scene), std::runtime_error);
+  scene.media[0].subsurface = 1;
+  scene.materials[0].type = MaterialType::DiffuseTransmission;
+  scene.materials[0].transmittance = {0.5f, -0.1f, 0.5f};
+  EXPECT_THROW(validateScene(scene), std::runtime_error);
 }
 
 }  // namespace
