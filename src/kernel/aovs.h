@@ -19,6 +19,7 @@ struct PathAovs {
 CANDELA_FN Vec3 materialAlbedo(const Material& m) {
   Vec3 a = m.baseColor;
   if (m.type == MaterialType::BlinnPhong) a += m.specularColor;
+  if (m.type == MaterialType::DiffuseTransmission) a += m.transmittance;
   return {clampf(a.x, 0.0f, 1.0f), clampf(a.y, 0.0f, 1.0f), clampf(a.z, 0.0f, 1.0f)};
 }
 

@@ -25,7 +25,8 @@ namespace candela {
   X(Pbr, PbrBsdf, "pbr", "pbr")                         \
   X(Disney, DisneyBsdf, "disney", "disney")             \
   X(Mirror, MirrorBsdf, "mirror", nullptr)              \
-  X(Glass, SmoothDielectricBsdf, "glass", nullptr)
+  X(Glass, SmoothDielectricBsdf, "glass", nullptr)      \
+  X(DiffuseTransmission, DiffuseTransmissionBsdf, "diffuse-transmission", nullptr)
 
 // A model is plain data (the Bsdf keeps one in a union) working in the local shading frame, with
 //   static constexpr bool kDelta;                   only delta lobes, which light sampling cannot reach
@@ -93,6 +94,10 @@ struct Material {
   // light decays between entering and leaving a closed object (Beer-Lambert; kernel/volume_absorption.h). Zero:
   // none, as for a thin-walled surface.
   Vec3 absorption{0.0f, 0.0f, 0.0f};
+
+  // Diffuse transmission: the Lambertian transmittance to the far side (baseColor is the reflectance); zero, a
+  // diffuse reflector.
+  Vec3 transmittance{0.0f, 0.0f, 0.0f};
 
   // pbrt's `interface` material: the surface only bounds participating media (the instances' MediumInterface) and
   // rays cross it unchanged. Its coverage is an alpha mask of opacity 0, so that the backends ask passesThrough

@@ -85,11 +85,14 @@ void validateScene(const Scene& scene) {
   for (const MediumGrid& grid : scene.mediumGrids)
     if (std::string problem = mediumGridProblem(grid, scene.mediumGridValues.size()); !problem.empty()) fail(problem);
   if (std::string problem = mediumGridValuesProblem(scene.mediumGridValues); !problem.empty()) fail(problem);
+  if (m.subsurface > 1) fail("a medium's subsurface flag is neither 0 nor 1");
   bool anyMix = false;
   for (const Material& m : scene.materials) {
     if (!finite(m.baseColor) || !finite(m.emission)) fail("a material has non-finite parameters");
     if (!finite(m.absorption) || m.absorption.x < 0.0f || m.absorption.y < 0.0f || m.absorption.z < 0.0f)
       fail("a material has an invalid absorption");
+    if (!finite(m.transmittance) || m.transmittance.x < 0.0f || m.transmittance.y < 0.0f || m.transmittance.z < 0.0f)
+      fail("a material has an invalid transmittance");
     for (int32_t t :
          {m.baseColorTexture, m.metallicRoughnessTexture, m.roughnessTexture, m.metallicTexture, m.emissionTexture,
           m.normalTexture, m.opacityTexture, m.mixAmountTexture, m.iridescenceTexture, m.iridescenceThicknessTexture})

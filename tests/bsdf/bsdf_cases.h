@@ -2,6 +2,7 @@
 #include <cmath>
 #include <functional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "kernel/bsdf/bsdf.h"
@@ -16,6 +17,7 @@ struct BsdfCase {
   std::function<BsdfEval(Vec3, Vec3)> evalPdf;
   std::function<BsdfSample(Vec3, float, Vec2)> sample;
   bool reciprocal = true;  // f(wo, wi) == f(wi, wo) for wi on wo's side
+  bool refracts = true;    // its transmission bends light (a sample's eta is not 1)
 };
 
 template <class Model>
@@ -65,6 +67,12 @@ inline std::vector<BsdfCase> casesAtRoughness(float r) {
   // 3.2e5, a 0.003-radian lobe) is tested at the exponent 1000 (0.04 radians) instead.
   float exponent = std::fmin(roughnessToPhongExponent(r), 1000.0f);
   cases.push_back(makeCase("Lambertian", LambertianBsdf{color}));
+  // Reflection and transmission in proportions unlike their colours', and transmission alone.
+  for (auto [name, reflectance, transmittance] : {std::tuple{"DiffuseTransmission", color, Vec3{0.3f, 0.5f, 0.2f}},
+                                                  std::tuple{"DiffuseTransmissionOnly", Vec3{0, 0, 0}, color}}) {
+    cases.push_back(makeCase(name, DiffuseTransmissionBsdf{reflectance, transmittance}));
+    cases.back().refracts = false;
+  }
   cases.push_back(makeCase("BlinnPhongSpecular", BlinnPhongSpecular{color, exponent}));
   cases.push_back(makeCase("BlinnPhong", BlinnPhongBsdf(color, {0.3f, 0.3f, 0.3f}, exponent)));
   cases.push_back(makeCase("GgxReflection", GgxReflection{GgxDistribution::isotropic(r), color}));

@@ -49,7 +49,7 @@ TEST(MaterialModels, EveryNameRoundTripsThroughItsType) {
   EXPECT_EQ(materialTypeName(MaterialType::Mix), nullptr);
   EXPECT_EQ(materialTypeNamed("mix"), std::nullopt);
   EXPECT_EQ(materialTypeNamed("velvet"), std::nullopt);
-  EXPECT_EQ(materialTypeNameList(), "diffuse, blinn-phong, pbr, disney, mirror, glass");
+  EXPECT_EQ(materialTypeNameList(), "diffuse, blinn-phong, pbr, disney, mirror, glass, diffuse-transmission");
 }
 
 // Each model --shading offers is chosen by its shading name and switches a material to its type.

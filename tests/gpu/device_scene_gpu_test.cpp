@@ -12,8 +12,8 @@
 namespace candela {
 namespace {
 
-// Two triangles with every per-mesh array, one of them a lamp, a point light, and a medium behind the second:
-// no listed array is empty.
+// Two triangles with every per-mesh array, one of them a lamp, a point light, and a grid medium behind the
+// second: no listed array is empty.
 Scene sceneWithEveryArray() {
   Scene scene;
   Material lamp;
@@ -35,7 +35,13 @@ Scene sceneWithEveryArray() {
   Medium fog;
   fog.sigmaA = {0.1f, 0.1f, 0.1f};
   fog.sigmaS = {0.5f, 0.5f, 0.5f};
+  fog.grid = 0;
+  MediumGrid grid;  // one density sample and its majorant
+  grid.density = 0;
+  grid.majorants = 1;
   scene.media = {fog};
+  scene.mediumGrids = {grid};
+  scene.mediumGridValues = {0.5f, 0.5f};
   scene.instances[1].media.inside = 0;
   PunctualLight light;
   light.position = {0, 2, 0};

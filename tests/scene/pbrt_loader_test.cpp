@@ -241,8 +241,9 @@ TEST(PbrtLoader, MoreMaterialConversions) {
   EXPECT_EQ(materialOf(1).type, MaterialType::Mirror);
   EXPECT_EQ(materialOf(1).alphaMode, AlphaMode::Blend);
   EXPECT_NEAR(materialOf(1).opacity, 2.0f * 0.04f / 1.04f, 1e-5f);
-  EXPECT_EQ(materialOf(2).type, MaterialType::Diffuse);
+  EXPECT_EQ(materialOf(2).type, MaterialType::DiffuseTransmission);
   expectNear(materialOf(2).baseColor, {0.3f, 0.3f, 0.3f});
+  expectNear(materialOf(2).transmittance, {0.25f, 0.25f, 0.25f});
   // Without remapping, the mean of u and v roughness is alpha itself: candela's roughness is its square root.
   EXPECT_EQ(materialOf(3).type, MaterialType::Pbr);
   EXPECT_NEAR(materialOf(3).roughness, std::sqrt(0.02f), 1e-5f);
@@ -251,7 +252,7 @@ TEST(PbrtLoader, MoreMaterialConversions) {
   std::string all;
   for (const std::string& w : warnings.messages) all += w + "\n";
   EXPECT_NE(all.find("thindielectric"), std::string::npos) << all;
-  EXPECT_NE(all.find("diffusetransmission"), std::string::npos) << all;
+  EXPECT_EQ(all.find("diffusetransmission"), std::string::npos) << all;
 }
 
 TEST(PbrtLoader, ConstantScaleMixAndCheckerboardTextures) {

@@ -183,6 +183,23 @@ TEST(SceneFile, ErrorsNameTheJsonPathOrLine) {
             std::string::npos);
 }
 
+// A material override can make a diffuse transmitter: `base_color` reflects, `transmittance` transmits.
+TEST(SceneFile, OverridesMakeDiffuseTransmission) {
+  TempFolder dir;
+  dir.write("t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  LoadWarnings warnings;
+  Scene s = loadSceneFile(dir.write("s.json", R"({"models": [{"file": "t.obj", "materials": {"default":
+      {"type": "diffuse-transmission", "base_color": [0.2, 0.3, 0.4], "transmittance": [0.5, 0.4, 0.3]}}}]})"),
+                          &loadModel, warnings);
+  ASSERT_FALSE(s.materials.empty());
+  const Material& m = s.materials[s.meshes[0].triangleMaterials[0]];
+  EXPECT_EQ(m.type, MaterialType::DiffuseTransmission);
+  EXPECT_EQ(m.transmittance.y, 0.4f);
+  EXPECT_NE(errorOf(dir, R"({"models": [{"file": "t.obj", "materials": {"default": {"transmittance": [1, -1, 1]}}}]})")
+                .find("colours must not be negative"),
+            std::string::npos);
+}
+
 // Rays through one film point from anywhere on the lens meet on the focus plane; a pinhole ignores the lens.
 TEST(ThinLensCamera, RaysMeetOnTheFocusPlane) {
   Camera c = Camera::lookAt({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 40.0f, 1.5f);

@@ -4,6 +4,7 @@
 // Each question is a chain `type == A && A's answer || type == B && B's answer || ...`, in which the models'
 // constant answers fold away: `type == Mirror || type == Glass` for isDeltaModel, as written by hand.
 #include "kernel/bsdf/blinn_phong.h"
+#include "kernel/bsdf/diffuse_transmission.h"
 #include "kernel/bsdf/disney.h"
 #include "kernel/bsdf/lambertian.h"
 #include "kernel/bsdf/pbr.h"

@@ -20,6 +20,8 @@ struct Medium {
   Vec3 emission;                 // radiance emitted per unit of absorption (pbrt-v4: sigma_a x Le is the source term)
   float g = 0.0f;                // Henyey-Greenstein asymmetry in (-1, 1): positive scatters forwards
   uint32_t grid = kHomogeneous;  // or its entry of the scene's mediumGrids
+  // 1: the interior of a subsurface material, in which paths take a random walk (kernel/media/subsurface_walk.h).
+  uint32_t subsurface = 0;
 };
 
 // The media on the two sides of a surface, as pbrt-v4's MediumInterface: `outside` where its geometric normal (as

@@ -14,9 +14,11 @@
 // The numbers a path draws: in a medium, 2 for the collision (channel and distance; a grid's tracking seeds its
 // own numbers with them) before anything else at each segment; at a collision the light (1D, 2D), the shadow
 // ray's pass-through bits (cut-out scenes, only where it carries light), the phase direction (2D), Russian
-// roulette (1D) and the next ray's bits (cut-out scenes). Rays outside media draw as in scenes without media.
+// roulette (1D) and the next ray's bits (cut-out scenes); at a step of a subsurface walk only the phase direction
+// and the next ray's bits. Rays outside media draw as in scenes without media.
 #include "kernel/media/henyey_greenstein.h"
 #include "kernel/media/medium_queries.h"
+#include "kernel/media/subsurface_walk.h"
 #include "kernel/path_vertex.h"
 
 namespace candela {
@@ -64,11 +66,27 @@ CANDELA_FN Vec3 shadowTransmittance(const SceneView& scene, const Tracer& tracer
 
 // A collision at `p` in medium `medium` (the ray arrived along -wo): next-event estimation with the phase function
 // and a direction sampled from it, into `ray` (with pass-through bits `bits`). Returns false where the path ends
-// here: at the maximum depth, or by Russian roulette.
+// here: at the maximum depth, or by Russian roulette. In a subsurface medium it is one step of a random walk
+// (subsurface_walk.h), counted in `walkSteps`.
 template <bool kWithAovs, class Tracer>
 CANDELA_FN bool scatterInMedium(const SceneView& scene, const Tracer& tracer, const RenderSettings& settings,
                                 PathState& s, PathAovState& a, PathSampler& sampler, uint32_t medium, Vec3 p, Vec3 wo,
-                                Ray& ray, uint32_t& bits) {
+                                Ray& ray, uint32_t& bits, uint32_t& walkSteps) {
+  const bool walk = isSubsurfaceWalk(scene.media[medium]);
+  if (walk) {
+    if (++walkSteps > kMaxSubsurfaceSteps) return false;
+    const PhaseSample phase = sampleHenyeyGreenstein(wo, scene.media[medium].g, sampler.next2D());
+    s.bsdfPdf = phase.pdf;
+    s.lastScatter = p;
+    s.lastNormal = {};
+    s.bounceFlags = kDeltaBounce;  // no light was sampled here: emission the walk finds takes its full weight
+    s.cone = RayCone{};
+    if (kWithAovs) a.cameraChain = false;
+    ray = {p, phase.wi, 0.0f, kInf};
+    ++s.rays;
+    bits = passThroughBits(scene, sampler);
+    return true;
+  }
   if (s.depth >= settings.maxDepth) return false;
   const float g = scene.media[medium].g;
   const float uSelect = sampler.next1D();
@@ -114,6 +132,7 @@ CANDELA_FN void followPathInMedia(const SceneView& scene, const Tracer& tracer, 
                                   PathState& s, PathAovState& a, PathSampler& sampler, Ray ray, uint32_t bits,
                                   uint32_t medium) {
   uint32_t crossings = 0;
+  uint32_t walkSteps = 0;  // collisions since the path last left a surface (subsurface_walk.h)
   for (;;) {
     Hit hit;
     const bool found = tracer.intersect(ray, hit, bits);
@@ -135,7 +154,8 @@ CANDELA_FN void followPathInMedia(const SceneView& scene, const Tracer& tracer, 
         if (isBlack(s.beta)) return;
         crossings = 0;
         const Vec3 p = ray.origin + ray.direction * step.t;
-        if (!scatterInMedium<kWithAovs>(scene, tracer, settings, s, a, sampler, medium, p, -ray.direction, ray, bits))
+        if (!scatterInMedium<kWithAovs>(scene, tracer, settings, s, a, sampler, medium, p, -ray.direction, ray, bits,
+                                        walkSteps))
           return;
         continue;
       }
@@ -163,6 +183,7 @@ CANDELA_FN void followPathInMedia(const SceneView& scene, const Tracer& tracer, 
           shadow.contribution * shadowTransmittance(scene, tracer, shadow.ray, shadow.bits, shadowMedium, s.rays);
     }
     if (!continuePath<kWithAovs>(scene, settings, s, a, sampler, scatter, ray, bits)) return;
+    walkSteps = 0;
     medium = mediumBeyond(scene, hit.instanceId, scatter.geometricNormal, ray.direction, medium);
   }
 }

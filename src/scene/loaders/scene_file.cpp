@@ -125,8 +125,8 @@ MaterialType materialType(const Node& n) {
 }
 
 void overrideMaterial(Material& m, const Node& o, LoadWarnings& warnings) {
-  o.expectObject({"type", "base_color", "emission", "roughness", "metallic", "ior", "specular_transmission", "opacity",
-                  "double_sided"},
+  o.expectObject({"type", "base_color", "emission", "roughness", "metallic", "ior", "specular_transmission",
+                  "transmittance", "opacity", "double_sided"},
                  warnings);
   if (o.has("type")) m.type = materialType(o["type"]);
   if (o.has("base_color")) m.baseColor = o["base_color"].vec3();
@@ -135,10 +135,11 @@ void overrideMaterial(Material& m, const Node& o, LoadWarnings& warnings) {
   if (o.has("metallic")) m.metallic = o["metallic"].number(0, 1);
   if (o.has("ior")) m.ior = o["ior"].number(1, 10);
   if (o.has("specular_transmission")) m.specTrans = o["specular_transmission"].number(0, 1);
+  if (o.has("transmittance")) m.transmittance = o["transmittance"].vec3();
   if (o.has("opacity")) m.opacity = o["opacity"].number(0, 1);
   if (o.has("double_sided")) m.doubleSided = o["double_sided"].boolean() ? 1u : 0u;
   if (m.baseColor.x < 0 || m.baseColor.y < 0 || m.baseColor.z < 0 || m.emission.x < 0 || m.emission.y < 0 ||
-      m.emission.z < 0)
+      m.emission.z < 0 || m.transmittance.x < 0 || m.transmittance.y < 0 || m.transmittance.z < 0)
     o.fail("colours must not be negative");
 }
 

@@ -475,6 +475,7 @@ class PbrtReader {
     context_.scene.materials.push_back(m);
     context_.scene.materialNames.push_back(context_.scene.materialNames[base]);
     variants_[key] = id;
+    materials_.noteVariant(base, id);
     return id;
   }
 
@@ -627,6 +628,24 @@ class PbrtReader {
     }
     scene.cameraMedium = cameraMedium_;
     place(scene.cameraMedium);
+    placeSubsurfaceInteriors(scene);
+  }
+
+  // The medium inside each shape of a `subsurface` material (PbrtMaterials::interior), one per material: its
+  // instances' inside, the side its surfaces face away from. What a MediumInterface put inside gives way to it.
+  void placeSubsurfaceInteriors(Scene& scene) {
+    std::map<uint32_t, uint32_t> mediumOfMaterial;
+    for (Instance& instance : scene.instances) {
+      const std::vector<uint32_t>& materials = scene.meshes[instance.meshId].triangleMaterials;
+      const Medium* interior = materials.empty() ? nullptr : materials_.interior(materials[0]);
+      if (!interior) continue;
+      auto [found, added] = mediumOfMaterial.try_emplace(materials[0], uint32_t(scene.media.size()));
+      if (added) scene.media.push_back(*interior);
+      if (instance.media.inside != instance.media.outside && instance.media.inside != kNoMedium)
+        context_.warn("subsurface inside a medium interface",
+                      "a subsurface shape's MediumInterface 'inside' gives way to the material's own medium");
+      instance.media.inside = found->second;
+    }
   }
 
   void instantiate(const std::string& name, PbrtTokenizer& tokens, size_t line) {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "scene/loaders/pbrt/pbrt_spectra.h"
+#include "scene/loaders/pbrt/pbrt_subsurface.h"
 
 namespace candela {
 
@@ -29,6 +30,12 @@ float scalarIor(const PbrtParameters& params, const std::string& name, float fal
   return fallback;
 }
 
+// A reflectance or transmittance, pbrt's colour times `scale`, clamped to [0, 1] as pbrt-v4 clamps them.
+Vec3 unitColour(Vec3 c, const PbrtParameters& params, const std::string& what) {
+  if (!isFinite(c)) params.fail(what + " is not finite");
+  return {std::clamp(c.x, 0.0f, 1.0f), std::clamp(c.y, 0.0f, 1.0f), std::clamp(c.z, 0.0f, 1.0f)};
+}
+
 }  // namespace
 
 uint32_t PbrtMaterials::add(const Material& m, const std::string& name, const PbrtTexture* baseTexture) {
@@ -37,6 +44,15 @@ uint32_t PbrtMaterials::add(const Material& m, const std::string& name, const Pb
   context_.scene.materialNames.push_back(name);
   if (baseTexture && baseTexture->image != kNoTexture) uvMappings_[id] = {baseTexture->uvScale, baseTexture->uvOffset};
   return id;
+}
+
+const Medium* PbrtMaterials::interior(uint32_t materialId) const {
+  auto found = interiors_.find(materialId);
+  return found == interiors_.end() ? nullptr : &found->second;
+}
+
+void PbrtMaterials::noteVariant(uint32_t base, uint32_t variant) {
+  if (const Medium* medium = interior(base)) interiors_[variant] = *medium;
 }
 
 std::pair<Vec2, Vec2> PbrtMaterials::uvMapping(uint32_t materialId) const {
@@ -92,6 +108,20 @@ Material PbrtMaterials::translate(const std::string& type, const PbrtParameters&
                               [=](float v) { return candelaRoughness(scale * v, remap); });
     return 1.0f;
   };
+  // pbrt's DielectricBxDF of index `eta`: smooth glass, or the Disney model's rough transmission.
+  auto dielectric = [&](float eta) {
+    float r = roughness("", 0.0f);
+    m.baseColor = {1, 1, 1};
+    m.ior = eta;
+    if (r == 0.0f) {
+      m.type = MaterialType::Glass;
+    } else {
+      m.type = MaterialType::Disney;
+      m.specTrans = 1.0f;
+      m.metallic = 0.0f;
+      m.roughness = r;
+    }
+  };
   if (params.getTexture("interface.roughness"))
     context_.warn("textured coat roughness", "a textured 'interface.roughness' is not supported: 0 is used");
 
@@ -125,17 +155,13 @@ Material PbrtMaterials::translate(const std::string& type, const PbrtParameters&
     m.clearcoatGloss = 1.0f - candelaRoughness(params, "interface.", 0.0f);
   } else if (type == "dielectric") {
     float eta = scalarIor(params, "eta", 1.5f);
-    float r = roughness("", 0.0f);
-    m.baseColor = {1, 1, 1};
-    m.ior = eta > 0.0f ? eta : 1.5f;
-    if (r == 0.0f) {
-      m.type = MaterialType::Glass;
-    } else {
-      m.type = MaterialType::Disney;
-      m.specTrans = 1.0f;
-      m.metallic = 0.0f;
-      m.roughness = r;
-    }
+    dielectric(eta > 0.0f ? eta : 1.5f);
+  } else if (type == "subsurface") {
+    // A dielectric boundary around the medium of a random walk (kernel/media/subsurface_walk.h).
+    const float eta = params.getFloat("eta", 1.33f);
+    if (!(eta > 0.0f) || !std::isfinite(eta)) params.fail("subsurface: 'eta' must be finite and positive");
+    dielectric(eta);
+    pendingInterior_ = pbrtSubsurfaceInterior(params, textures_, context_);
   } else if (type == "thindielectric") {
     // A thin sheet reflects 2R/(1+R) of the light at normal incidence and lets the rest through undeviated:
     // a white mirror that rays pass with the transmitted probability.
@@ -149,8 +175,23 @@ Material PbrtMaterials::translate(const std::string& type, const PbrtParameters&
                   "'thindielectric' is rendered with its reflectance at normal incidence "
                   "at every angle");
   } else if (type == "diffusetransmission") {
+    // pbrt-v4's DiffuseTransmissionMaterial: both colours (0.25 by default) times `scale`, clamped to [0, 1].
+    const float scale = params.getFloat("scale", 1.0f);
+    if (!(scale >= 0.0f) || !std::isfinite(scale))
+      params.fail("diffusetransmission: 'scale' must be finite and not negative");
+    m.type = MaterialType::DiffuseTransmission;
     colour("reflectance", {0.25f, 0.25f, 0.25f});
-    context_.warn("material diffusetransmission", "'diffusetransmission' is rendered as diffuse reflection only");
+    // A texture's texels multiply the factor, which pbrt's clamp of the product cannot bound beforehand.
+    m.baseColor = m.baseColorTexture == kNoTexture
+                      ? unitColour(m.baseColor * scale, params, "diffusetransmission: 'reflectance'")
+                      : m.baseColor * scale;
+    if (!isFinite(m.baseColor)) params.fail("diffusetransmission: 'reflectance' is not finite");
+    const PbrtTexture transmittance = textures_.value(params, "transmittance", {0.25f, 0.25f, 0.25f});
+    if (transmittance.image != kNoTexture)
+      context_.warn("textured transmittance",
+                    "a textured diffusetransmission 'transmittance' is rendered with its mean colour");
+    m.transmittance =
+        unitColour(textures_.meanColour(transmittance) * scale, params, "diffusetransmission: 'transmittance'");
   } else if (type == "interface" || type.empty() || type == "none") {
     // The boundary of participating media (MediumInterface), which rays cross unchanged.
     m.interfaceOnly = 1;
@@ -205,6 +246,10 @@ PbrtMaterial PbrtMaterials::makeMix(const PbrtParameters& params) {
                         "' lets light through ('interface', 'thindielectric'), which a mix "
                         "does not choose per point: in the mix it is opaque ('interface' a grey diffuse, "
                         "'thindielectric' a mirror)");
+    if (interior(id))
+      context_.warn("mix of subsurface material", "'" + names->strings[i] +
+                                                      "' is a subsurface material, which a mix renders as its "
+                                                      "dielectric boundary without the medium inside");
     auto found = mixDepths_.find(id);
     if (found != mixDepths_.end()) depth = std::max(depth, found->second + 1);
     m.mixedMaterials[i] = id;
@@ -230,7 +275,10 @@ PbrtMaterial PbrtMaterials::make(const std::string& type, const PbrtParameters& 
   const PbrtTexture* baseTexture = nullptr;
   Material m = translate(type, params, baseTexture);
   std::string name = pendingName_.empty() ? "pbrt " + type : pendingName_;
-  return PbrtMaterial{add(m, name, baseTexture)};
+  const uint32_t id = add(m, name, baseTexture);
+  if (pendingInterior_) interiors_[id] = *pendingInterior_;
+  pendingInterior_.reset();
+  return PbrtMaterial{id};
 }
 
 void PbrtMaterials::defineNamed(const std::string& name, const PbrtParameters& params) {

@@ -4,6 +4,7 @@
 #include <string>
 #include <utility>
 
+#include "kernel/media/medium.h"
 #include "scene/loaders/pbrt/pbrt_context.h"
 #include "scene/loaders/pbrt/pbrt_parameters.h"
 #include "scene/loaders/pbrt/pbrt_textures.h"
@@ -30,6 +31,12 @@ class PbrtMaterials {
   // The uv mapping of a material's base colour texture, to be applied to the coordinates of its meshes.
   std::pair<Vec2, Vec2> uvMapping(uint32_t materialId) const;
 
+  // The medium inside a `subsurface` material (pbrt_subsurface.h), which the loader puts inside the shapes of the
+  // material (their MediumInterface's inside); null for other materials.
+  const Medium* interior(uint32_t materialId) const;
+  // `variant` is a copy of material `base` with another emission or alpha: it has base's interior.
+  void noteVariant(uint32_t base, uint32_t variant);
+
  private:
   uint32_t add(const Material& m, const std::string& name, const PbrtTexture* baseTexture = nullptr);
   Material translate(const std::string& type, const PbrtParameters& params, const PbrtTexture*& baseTexture);
@@ -39,6 +46,8 @@ class PbrtMaterials {
   PbrtTextures& textures_;
   std::map<std::string, PbrtMaterial> named_;
   std::map<uint32_t, std::pair<Vec2, Vec2>> uvMappings_;
+  std::map<uint32_t, Medium> interiors_;
+  std::optional<Medium> pendingInterior_;   // translate's subsurface interior, for make to key by the material's id
   std::map<uint32_t, uint32_t> mixDepths_;  // per mix: the most mixes a chain from it passes (kMaxMixDepth bounds it)
   std::optional<uint32_t> fallback_;
   std::string pendingName_;

@@ -245,6 +245,24 @@ int32_t PbrtTextures::mappedImage(int32_t image, const std::string& key, const s
   return index;
 }
 
+Vec3 PbrtTextures::meanColour(const PbrtTexture& texture) {
+  if (texture.image == kNoTexture) return texture.factor;
+  bakeMixesThrough(texture.image);
+  const Texture& image = context_.scene.textures[size_t(texture.image)];
+  const size_t pixels = size_t(image.width) * image.height;
+  if (pixels == 0 || image.channels == 0) return texture.factor;
+  double sum[3] = {0, 0, 0};
+  for (size_t i = 0; i < pixels; ++i)
+    for (uint32_t c = 0; c < 3; ++c) {
+      const size_t at = i * image.channels + (image.channels < 3 ? 0 : c);  // grey (and alpha): one channel
+      float v = image.floats.empty() ? float(image.bytes[at]) / 255.0f : image.floats[at];
+      if (image.floats.empty() && image.srgb) v = srgbToLinear(v);
+      sum[c] += v;
+    }
+  const double n = double(pixels);
+  return texture.factor * Vec3{float(sum[0] / n), float(sum[1] / n), float(sum[2] / n)};
+}
+
 PbrtTexture PbrtTextures::value(const PbrtParameters& params, const std::string& name, Vec3 fallback) {
   if (std::optional<std::string> texture = params.getTexture(name)) {
     auto found = named_.find(*texture);

@@ -40,6 +40,9 @@ class PbrtTextures {
   // A one-channel float image of `map` applied to the first channel (as a linear value) of `image`: the form a
   // material needs where its parameter is not linear in pbrt's texture value (roughness). Cached by `key`.
   int32_t mappedImage(int32_t image, const std::string& key, const std::function<float(float)>& map);
+  // The mean colour of `texture`: its factor times the mean of its image's texels (linear), for a material
+  // parameter that takes one colour.
+  Vec3 meanColour(const PbrtTexture& texture);
   // A 64 x 64 image of one period of a 2D checkerboard of two colours (the first where pbrt's tex1 goes), shared
   // by every checkerboard of the same colours; kNoTexture (after a warning) beyond kMaxCheckerboardImages.
   int32_t checkerboardImage(Vec3 first, Vec3 second);
