@@ -80,12 +80,13 @@ void validateScene(const Scene& scene) {
   for (const Medium& m : scene.media)
     if (!nonNegative(m.sigmaA) || !nonNegative(m.sigmaS) || !nonNegative(m.emission) || !(std::fabs(m.g) < 1.0f))
       fail("a medium has negative or non-finite coefficients or emission, or |g| not below 1");
-  for (const Medium& m : scene.media)
+  for (const Medium& m : scene.media) {
     if (m.grid != kHomogeneous && m.grid >= scene.mediumGrids.size()) fail("a medium names a missing grid");
+    if (m.subsurface > 1) fail("a medium's subsurface flag is neither 0 nor 1");
+  }
   for (const MediumGrid& grid : scene.mediumGrids)
     if (std::string problem = mediumGridProblem(grid, scene.mediumGridValues.size()); !problem.empty()) fail(problem);
   if (std::string problem = mediumGridValuesProblem(scene.mediumGridValues); !problem.empty()) fail(problem);
-  if (m.subsurface > 1) fail("a medium's subsurface flag is neither 0 nor 1");
   bool anyMix = false;
   for (const Material& m : scene.materials) {
     if (!finite(m.baseColor) || !finite(m.emission)) fail("a material has non-finite parameters");
