@@ -98,9 +98,11 @@ TEST(ServeVideoAtRest, FewerFramesEachWithTheSamplesRenderedSinceTheLast) {
       << "the frames held back at rest add their samples to the next one sent";
 
   // A change of the exposure at rest, sent as soon as a frame came: its frame goes at once. At the rest rate it
-  // would come an interval after the last one; the quickest of a few tries must come well before that.
+  // would come an interval after the last one (47 ms measured with the rule taken out, against 50); the quickest of
+  // ten tries must come well before that, with room for a loaded machine (33 ms seen under ASan beside two busy
+  // processes, against a few without load).
   double quickest = 1e9;
-  for (int trial = 0; trial < 5; ++trial) {
+  for (int trial = 0; trial < 10; ++trial) {
     const VideoFrame before = browser.next();
     const double exposure = 0.25 * (trial + 1);
     browser.send(R"({"type":"settings","exposure":)" + std::to_string(exposure) + "}");
@@ -108,7 +110,7 @@ TEST(ServeVideoAtRest, FewerFramesEachWithTheSamplesRenderedSinceTheLast) {
     while (after.exposure != exposure) after = browser.next();
     quickest = std::min(quickest, secondsBetween(before.arrived, after.arrived));
   }
-  EXPECT_LT(quickest, 0.5 / StreamQuality::kRestFrameRate) << "input at rest waited for the rest rate's interval";
+  EXPECT_LT(quickest, 0.75 / StreamQuality::kRestFrameRate) << "input at rest waited for the rest rate's interval";
   EXPECT_EQ(server.stop(30.0), 0) << server.stderrText();
 }
 
