@@ -13,7 +13,7 @@
 #include "media/media_grids.h"
 #include "media/media_scenes.h"
 #include "scene/cache/scene_serialization.h"
-#include "scene/loaders/pbrt/pbrt_loader.h"
+#include "support/pbrt_text.h"
 #include "support/render_statistics.h"
 
 namespace candela::test {
@@ -90,21 +90,8 @@ TEST(GridMediaRender, FurnaceOfAVaryingGridIsOneEverywhere) {
   }
 }
 
-Scene loadText(const std::string& text, LoadWarnings* warningsOut = nullptr) {
-  LoadWarnings warnings;
-  Scene scene = loadPbrtText("test.pbrt", text, warnings);
-  if (warningsOut) *warningsOut = warnings;
-  return scene;
-}
-
-std::string loadError(const std::string& text) {
-  try {
-    loadText(text);
-  } catch (const LoadError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using pbrt::loadError;
+using pbrt::loadText;
 
 // A box [-50, 50] x [-50, 50] x [0, depth] as a pbrt trianglemesh bounding medium `name` as an interface.
 std::string pbrtInterfaceBox(const std::string& name, float depth) {

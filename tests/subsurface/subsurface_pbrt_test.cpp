@@ -8,25 +8,17 @@
 
 #include "backends/cpu/cpu_backend.h"
 #include "io/load_diagnostics.h"
-#include "scene/loaders/pbrt/pbrt_loader.h"
 #include "scene/scene_repair.h"
 #include "scene/subsurface_albedo.h"
+#include "support/pbrt_text.h"
 #include "support/render_statistics.h"
 
 namespace candela::test {
 namespace {
 
-Scene loadText(const std::string& text, LoadWarnings& warnings) { return loadPbrtText("test.pbrt", text, warnings); }
+using pbrt::loadError;
 
-std::string loadError(const std::string& text) {
-  try {
-    LoadWarnings warnings;
-    loadText(text, warnings);
-  } catch (const LoadError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+Scene loadText(const std::string& text, LoadWarnings& warnings) { return pbrt::loadText(text, &warnings); }
 
 // A scene of one sphere of the material `material` (a Material directive's type and parameters).
 std::string sphereOf(const std::string& material) {
