@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <sstream>
 #include <string>
 
 #include "backends/cpu/cpu_backend.h"
@@ -95,21 +94,9 @@ using pbrt::loadText;
 
 // A box [-50, 50] x [-50, 50] x [0, depth] as a pbrt trianglemesh bounding medium `name` as an interface.
 std::string pbrtInterfaceBox(const std::string& name, float depth) {
-  Mesh box;
-  appendBox(box, {-50, -50, 0}, {50, 50, depth}, 0);
-  std::ostringstream text;
-  text << "AttributeBegin\nMaterial \"interface\"\nMediumInterface \"" << name << "\" \"\"\n"
-       << "Shape \"trianglemesh\" \"point3 P\" [";
-  for (Vec3 p : box.positions) text << ' ' << p.x << ' ' << p.y << ' ' << p.z;
-  text << " ] \"integer indices\" [";
-  for (uint32_t i : box.indices) text << ' ' << i;
-  text << " ]\nAttributeEnd\n";
-  return text.str();
+  return "AttributeBegin\nMaterial \"interface\"\nMediumInterface \"" + name + "\" \"\"\n" + pbrtBox(depth) +
+         "AttributeEnd\n";
 }
-
-constexpr const char* kOrthographicView =
-    "LookAt 0 0 -2  0 0 0  0 1 0\nCamera \"orthographic\"\nFilm \"rgb\" \"integer xresolution\" 16 "
-    "\"integer yresolution\" 16\nWorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\n";
 
 std::string uniformGrid(const std::string& extra) {
   return "MakeNamedMedium \"smoke\" \"string type\" \"uniformgrid\" \"integer nx\" 2 \"integer ny\" 2 "

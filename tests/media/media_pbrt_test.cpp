@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <sstream>
 #include <string>
 
 #include "backends/cpu/cpu_backend.h"
@@ -18,23 +17,6 @@ namespace {
 
 using pbrt::loadError;
 using pbrt::loadText;
-
-// A box [-50, 50] x [-50, 50] x [0, depth] as a pbrt trianglemesh, wound outwards.
-std::string pbrtBox(float depth) {
-  Mesh box;
-  appendBox(box, {-50, -50, 0}, {50, 50, depth}, 0);
-  std::ostringstream text;
-  text << "Shape \"trianglemesh\" \"point3 P\" [";
-  for (Vec3 p : box.positions) text << ' ' << p.x << ' ' << p.y << ' ' << p.z;
-  text << " ] \"integer indices\" [";
-  for (uint32_t i : box.indices) text << ' ' << i;
-  text << " ]\n";
-  return text.str();
-}
-
-constexpr const char* kOrthographicView =
-    "LookAt 0 0 -2  0 0 0  0 1 0\nCamera \"orthographic\"\nFilm \"rgb\" \"integer xresolution\" 16 "
-    "\"integer yresolution\" 16\nWorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\n";
 
 // A slab of absorbing fog (scale 2, so sigma_a = 1 2 4) half a unit deep, bounded by an interface box.
 std::string absorbingSlab() {

@@ -1,5 +1,8 @@
 #pragma once
 // Scenes with participating media whose answers are known, for tests/media.
+#include <sstream>
+#include <string>
+
 #include "scene/mesh_builders.h"
 #include "scene/scene.h"
 
@@ -28,6 +31,24 @@ inline void appendBox(Mesh& mesh, Vec3 lo, Vec3 hi, uint32_t materialId) {
   face({lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, lo.y, hi.z}, {lo.x, lo.y, hi.z});
   face({lo.x, hi.y, lo.z}, {hi.x, hi.y, lo.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z});
 }
+
+// The box [-50, 50] x [-50, 50] x [0, depth] as a pbrt trianglemesh, wound outwards.
+inline std::string pbrtBox(float depth) {
+  Mesh box;
+  appendBox(box, {-50, -50, 0}, {50, 50, depth}, 0);
+  std::ostringstream text;
+  text << "Shape \"trianglemesh\" \"point3 P\" [";
+  for (Vec3 p : box.positions) text << ' ' << p.x << ' ' << p.y << ' ' << p.z;
+  text << " ] \"integer indices\" [";
+  for (uint32_t i : box.indices) text << ' ' << i;
+  text << " ]\n";
+  return text.str();
+}
+
+// A 16 x 16 orthographic view down the z axis under a white environment, up to WorldBegin and the light.
+constexpr const char* kOrthographicView =
+    "LookAt 0 0 -2  0 0 0  0 1 0\nCamera \"orthographic\"\nFilm \"rgb\" \"integer xresolution\" 16 "
+    "\"integer yresolution\" 16\nWorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\n";
 
 // An orthographic camera looks along +z through a slab, `depth` thick between z = 0 and z = depth and far wider
 // than the image, of `medium`, bounded by an interface box, at an environment of radiance 1 behind it. Every
