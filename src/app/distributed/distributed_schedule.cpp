@@ -19,11 +19,12 @@ namespace candela {
 
 namespace {
 
-constexpr int kRequestTag = 101, kAssignmentTag = 102, kCombineTag = 105;
+constexpr int kRequestTag = 101, kAssignmentTag = 102, kCombineTag = 105, kReadyTag = 107;
 
-// How a rank that was told of a pause combines its film (rank 0 says so once the rank is in combine()): with all
-// the others (reduceFilm), or, once a rank has stopped answering, sent to rank 0 alone, after which this rank is
-// done; or not at all (it was given up for lost, and its samples are rendered again).
+// How a rank that was told of a pause combines its film (rank 0 says so once the rank is ready, in combine(), with
+// its batches rendered and its film read): with all the others (reduceFilm), or, once a rank has stopped
+// answering, sent to rank 0 alone, after which this rank is done; or not at all (it was given up for lost, and its
+// samples are rendered again).
 enum class Combine : uint32_t { Reduce, SendAndStop, DiscardAndStop };
 
 // A worker's request: what it has done and how fast, and whether it was asked to stop.
@@ -79,11 +80,12 @@ class CoordinatorSchedule final : public SampleSchedule {
     // Before a checkpoint, rank 0 goes on rendering while the others finish their batches, within the rank
     // timeout; the samples stay a prefix of the indices, as rank 0's own are done when it stops. An end waits
     // idle: it is due now.
-    if (pause_ == SampleDispenser::Pause::Checkpoint && dispenser_.remaining() > 0 && !allPaused() &&
+    if (pause_ == SampleDispenser::Pause::Checkpoint && dispenser_.remaining() > 0 && !allReady() &&
         secondsPaused() < timeout_)
       return {Assignment::Kind::Samples, dispenser_.take(1), 1};
-    // Every worker learns of the pause at its next request, after its batches.
-    while (!allPaused()) {
+    // Every worker learns of the pause at its next request (sent as it starts its last batch) and is ready once it
+    // has rendered that batch.
+    while (!allReady()) {
       if (!answerRequests()) std::this_thread::sleep_for(std::chrono::microseconds(500));
       if (secondsPaused() > timeout_) {
         continueAlone();
@@ -135,7 +137,7 @@ class CoordinatorSchedule final : public SampleSchedule {
     }
     pause_ = SampleDispenser::Pause::None;
     for (Worker& w : workers_) {
-      w.paused = false;
+      w.ready = false;
       w.batches.clear();  // in the film now
     }
     return true;
@@ -148,7 +150,7 @@ class CoordinatorSchedule final : public SampleSchedule {
  private:
   struct Worker {
     uint32_t done = 0;
-    bool paused = false;    // told of the current pause
+    bool ready = false;     // in combine(): its batches rendered, waiting to be told how to combine
     bool released = false;  // rendering no more: its film was received, or it was given up for lost
     std::vector<std::pair<uint32_t, uint32_t>> batches;  // first and count of each handed out since the last combine
   };
@@ -161,8 +163,8 @@ class CoordinatorSchedule final : public SampleSchedule {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - pausedAt_).count();
   }
 
-  bool allPaused() const {
-    return std::all_of(workers_.begin(), workers_.end(), [](const Worker& w) { return w.paused || w.released; });
+  bool allReady() const {
+    return std::all_of(workers_.begin(), workers_.end(), [](const Worker& w) { return w.ready || w.released; });
   }
 
   // Some ranks did not finish their batches within the rank timeout (stopped, hung, or on a dead node): no
@@ -179,7 +181,7 @@ class CoordinatorSchedule final : public SampleSchedule {
     for (size_t i = 0; i < workers_.size(); ++i) {
       Worker& w = workers_[i];
       if (w.released) continue;
-      if (w.paused) {
+      if (w.ready) {
         tellCombine(int(i + 1), Combine::SendAndStop, timeout_);
         addFilmFromRank(int(i + 1), received_, receivedStats_, timeout_);
       } else {
@@ -193,7 +195,7 @@ class CoordinatorSchedule final : public SampleSchedule {
 
   int silentCount() const {
     return int(
-        std::count_if(workers_.begin(), workers_.end(), [](const Worker& w) { return !w.paused && !w.released; }));
+        std::count_if(workers_.begin(), workers_.end(), [](const Worker& w) { return !w.ready && !w.released; }));
   }
 
   uint64_t samplesDone() const {
@@ -207,7 +209,7 @@ class CoordinatorSchedule final : public SampleSchedule {
     std::string ranks;
     int count = 0;
     for (size_t i = 0; i < workers_.size(); ++i)
-      if (!workers_[i].paused && !workers_[i].released) ranks += (count++ ? ", " : "") + std::to_string(i + 1);
+      if (!workers_[i].ready && !workers_[i].released) ranks += (count++ ? ", " : "") + std::to_string(i + 1);
     return (count == 1 ? "rank " : "ranks ") + ranks;
   }
 
@@ -221,9 +223,9 @@ class CoordinatorSchedule final : public SampleSchedule {
     return uint32_t(std::clamp(std::min(byTime, share), 1.0, 65536.0));
   }
 
-  // Answers the requests that have arrived; returns whether there were any.
+  // Answers the requests that have arrived and notes the ranks that became ready; returns whether there were any.
   bool answerRequests() {
-    bool any = false;
+    bool any = noteReadyRanks();
     for (;;) {
       int arrived = 0;
       MPI_Status status;
@@ -235,11 +237,10 @@ class CoordinatorSchedule final : public SampleSchedule {
                         MPI_STATUS_IGNORE),
                "receiving a request");
       Worker& worker = workers_[size_t(status.MPI_SOURCE - 1)];
-      if (worker.released) {  // a rank given up for lost that answers after all: its samples are rendered again
+      if (worker.released) {  // a rank given up for lost that answers after all: it ends (noteReadyRanks)
         const Answer end{uint32_t(Assignment::Kind::End), dispenser_.next(), uint32_t(RenderEnd::Complete)};
         checkMpi(MPI_Send(&end, sizeof end, MPI_BYTE, status.MPI_SOURCE, kAssignmentTag, MPI_COMM_WORLD),
                  "sending an assignment");
-        tellCombine(status.MPI_SOURCE, Combine::DiscardAndStop, timeout_);
         continue;
       }
       worker.done = request.samplesDone;
@@ -258,10 +259,32 @@ class CoordinatorSchedule final : public SampleSchedule {
             uint32_t(pause_ == SampleDispenser::Pause::End ? Assignment::Kind::End : Assignment::Kind::Checkpoint);
         answer.first = dispenser_.next();
         answer.count = uint32_t(dispenser_.end());
-        worker.paused = true;
       }
       checkMpi(MPI_Send(&answer, sizeof answer, MPI_BYTE, status.MPI_SOURCE, kAssignmentTag, MPI_COMM_WORLD),
                "sending an assignment");
+    }
+  }
+
+  // Notes the workers that arrived in combine() since the last call; returns whether there were any. A rank
+  // given up for lost that arrives after all is told to discard its film: its samples are rendered again.
+  bool noteReadyRanks() {
+    bool any = false;
+    for (;;) {
+      int arrived = 0;
+      MPI_Status status;
+      checkMpi(MPI_Iprobe(MPI_ANY_SOURCE, kReadyTag, MPI_COMM_WORLD, &arrived, &status), "waiting for the ranks");
+      if (!arrived) return any;
+      any = true;
+      uint32_t samplesDone = 0;
+      checkMpi(MPI_Recv(&samplesDone, 1, MPI_UINT32_T, status.MPI_SOURCE, kReadyTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
+               "receiving a rank's readiness");
+      Worker& worker = workers_[size_t(status.MPI_SOURCE - 1)];
+      if (worker.released) {
+        tellCombine(status.MPI_SOURCE, Combine::DiscardAndStop, timeout_);
+        continue;
+      }
+      worker.done = samplesDone;
+      worker.ready = true;
     }
   }
 
@@ -307,12 +330,17 @@ class WorkerSchedule final : public SampleSchedule {
 
   bool combine(Backend& backend, FrameStats& stats) override {
     if (stopped_) return false;
+    // The film is read before rank 0 hears that this rank is ready: from then on rank 0 counts on it, and a rank
+    // that stopped later would end the job.
+    FilmSums film = backend.readFilm();
     uint32_t how = 0;
     MPI_Request request;
     checkMpi(MPI_Irecv(&how, 1, MPI_UINT32_T, 0, kCombineTag, MPI_COMM_WORLD, &request), "starting to add up");
+    MPI_Request ready;
+    checkMpi(MPI_Isend(&done_, 1, MPI_UINT32_T, 0, kReadyTag, MPI_COMM_WORLD, &ready), "starting to add up");
+    waitPolitely(ready, timeout_, "telling rank 0 that the batches are done");
     // Rank 0 may first wait up to the timeout for a silent rank, after its own sample.
     waitPolitely(request, 3.0 * timeout_, "waiting for rank 0 to add up the films");
-    FilmSums film = backend.readFilm();
     if (Combine(how) == Combine::Reduce)
       reduceFilm(film, stats, timeout_);
     else if (Combine(how) == Combine::SendAndStop)

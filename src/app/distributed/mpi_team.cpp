@@ -12,7 +12,8 @@ namespace candela {
 
 namespace {
 
-constexpr int kFailureTag = 103, kReleaseTag = 106;  // beside distributed_schedule.cpp's 101, 102, 104 and 105
+constexpr int kFailureTag = 103,
+              kReleaseTag = 106;  // beside distributed_schedule.cpp's 101, 102, 105, 107 and film_reduction.cpp's 104
 
 std::string messageOf(const std::exception_ptr& failure) {
   try {
