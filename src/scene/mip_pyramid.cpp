@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
 
 #include "kernel/texture.h"
 
@@ -41,10 +42,10 @@ uint32_t alphaChannel(uint32_t channels) { return channels == 4 ? 3u : (channels
 // One step down from a source whose rows `decodeRow(y, out)` writes as linear values: each target row is built
 // from the few source rows under it, filtered across as they are needed, so the source is never held whole in
 // floats (an 8-bit texture's finest level is read straight from its bytes). Target rows are independent and are
-// computed in parallel.
-template <class DecodeRow>
-std::vector<float> downsampleRows(const DecodeRow& decodeRow, uint32_t sourceWidth, uint32_t sourceHeight,
-                                  uint32_t targetWidth, uint32_t targetHeight, uint32_t channels) {
+// computed in parallel. The channel count is a constant, so that a texel's channels stay in registers.
+template <uint32_t channels, class DecodeRow>
+std::vector<float> downsampleRowsOf(const DecodeRow& decodeRow, uint32_t sourceWidth, uint32_t sourceHeight,
+                                    uint32_t targetWidth, uint32_t targetHeight) {
   const std::vector<Taps> columns = axisTaps(sourceWidth, targetWidth), rows = axisTaps(sourceHeight, targetHeight);
   std::vector<float> target(size_t(targetWidth) * targetHeight * channels, 0.0f);
   tbb::parallel_for(tbb::blocked_range<uint32_t>(0, targetHeight), [&](const tbb::blocked_range<uint32_t>& range) {
@@ -54,20 +55,32 @@ std::vector<float> downsampleRows(const DecodeRow& decodeRow, uint32_t sourceWid
       float* out = &target[size_t(y) * targetWidth * channels];
       for (uint32_t k = 0; k < down.count; ++k) {
         decodeRow(down.first + k, sourceRow.data());
-        std::fill(across.begin(), across.end(), 0.0f);
         for (uint32_t x = 0; x < targetWidth; ++x) {
           const Taps& t = columns[x];
-          float* texel = &across[size_t(x) * channels];
+          float texel[channels] = {};
           for (uint32_t j = 0; j < t.count; ++j) {
             const float* in = &sourceRow[size_t(t.first + j) * channels];
             for (uint32_t c = 0; c < channels; ++c) texel[c] += t.weights[j] * in[c];
           }
+          std::copy_n(texel, channels, &across[size_t(x) * channels]);
         }
         for (size_t i = 0; i < across.size(); ++i) out[i] += down.weights[k] * across[i];
       }
     }
   });
   return target;
+}
+
+template <class DecodeRow>
+std::vector<float> downsampleRows(const DecodeRow& decodeRow, uint32_t sourceWidth, uint32_t sourceHeight,
+                                  uint32_t targetWidth, uint32_t targetHeight, uint32_t channels) {
+  switch (channels) {
+    case 1: return downsampleRowsOf<1>(decodeRow, sourceWidth, sourceHeight, targetWidth, targetHeight);
+    case 2: return downsampleRowsOf<2>(decodeRow, sourceWidth, sourceHeight, targetWidth, targetHeight);
+    case 3: return downsampleRowsOf<3>(decodeRow, sourceWidth, sourceHeight, targetWidth, targetHeight);
+    case 4: return downsampleRowsOf<4>(decodeRow, sourceWidth, sourceHeight, targetWidth, targetHeight);
+    default: throw std::invalid_argument("a texture has 1 to 4 channels");
+  }
 }
 
 // Calls `emit(level, values)` with each level below the finest as linear values, the finest read through
@@ -133,16 +146,27 @@ void writeCoarserMipLevels(const uint8_t* level0, uint32_t width, uint32_t heigh
   static const SrgbTables tables;
   const uint32_t alpha = alphaChannel(channels);
   const size_t rowLength = size_t(width) * channels;
+  // Each byte of a row decodes by its channel's table: sRGB, or linear for alpha and non-colour data.
+  std::array<float, 256> linear{};
+  for (int i = 0; i < 256; ++i) linear[size_t(i)] = float(i) / 255.0f;
+  std::array<const float*, 4> tableOf{};
+  for (uint32_t c = 0; c < 4; ++c) tableOf[c] = srgb && c != alpha ? tables.decode.data() : linear.data();
   auto decodeRow = [&](uint32_t y, float* row) {
     const uint8_t* in = level0 + y * rowLength;
     for (size_t texel = 0; texel < rowLength; texel += channels)
-      for (uint32_t c = 0; c < channels; ++c)
-        row[texel + c] = srgb && c != alpha ? tables.decode[in[texel + c]] : float(in[texel + c]) / 255.0f;
+      for (uint32_t c = 0; c < channels; ++c) row[texel + c] = tableOf[c][in[texel + c]];
   };
   forEachCoarserLevel(decodeRow, width, height, channels, [&](const std::vector<float>& level) {
-    for (size_t texel = 0; texel < level.size(); texel += channels)
-      for (uint32_t c = 0; c < channels; ++c)
-        *out++ = srgb && c != alpha ? tables.encode(level[texel + c]) : toUnorm8(level[texel + c]);
+    // Through local copies: a byte store may alias anything, and would make the compiler load them again.
+    const float* values = level.data();
+    const size_t count = level.size();
+    const uint32_t n = channels, alphaAt = alpha;
+    const bool colour = srgb;
+    uint8_t* bytes = out;
+    for (size_t texel = 0; texel < count; texel += n)
+      for (uint32_t c = 0; c < n; ++c)
+        *bytes++ = colour && c != alphaAt ? tables.encode(values[texel + c]) : toUnorm8(values[texel + c]);
+    out = bytes;
   });
 }
 

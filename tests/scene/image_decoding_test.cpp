@@ -17,6 +17,8 @@
 #include <fstream>
 #include <functional>
 #include <iterator>
+#include <random>
+#include <type_traits>
 
 #include "app/scene_loading.h"
 #include "io/file_bytes.h"
@@ -441,6 +443,41 @@ TEST(AreaDownscaler, MeansOfTheCoveredPixels) {
   const float row[6] = {1, 2, 3, 4, 10, 20};
   uneven.addRow(row);
   EXPECT_EQ(uneven.finish(), (std::vector<float>{2, 3, 10, 20}));
+}
+
+// Each target pixel against the mean of its source pixels summed here one by one, over sizes whose ratios are
+// not whole numbers, every channel count, and 8-bit and float samples.
+template <typename Sample>
+void expectMeansOfCoveredPixels(uint32_t seed) {
+  std::mt19937 engine(seed);
+  auto random = [&] { return uint32_t(engine()); };
+  for (int trial = 0; trial < 40; ++trial) {
+    const uint32_t sw = 1 + random() % 97, sh = 1 + random() % 61, channels = 1 + random() % 4;
+    const uint32_t tw = 1 + random() % sw, th = 1 + random() % sh;
+    std::vector<Sample> source(size_t(sw) * sh * channels);
+    for (Sample& v : source) v = Sample(random() % 256);
+    AreaDownscaler<Sample> target(sw, sh, tw, th, channels);
+    for (uint32_t y = 0; y < sh; ++y) target.addRow(&source[size_t(y) * sw * channels]);
+    const std::vector<Sample> result = target.finish();
+    std::vector<double> sums(size_t(tw) * th * channels, 0.0), counts(size_t(tw) * th, 0.0);
+    for (uint32_t y = 0; y < sh; ++y)
+      for (uint32_t x = 0; x < sw; ++x) {
+        const size_t t = size_t(uint64_t(y) * th / sh) * tw + uint64_t(x) * tw / sw;
+        counts[t] += 1.0;
+        for (uint32_t c = 0; c < channels; ++c)
+          sums[t * channels + c] += double(source[(size_t(y) * sw + x) * channels + c]);
+      }
+    for (size_t i = 0; i < result.size(); ++i) {
+      const double mean = sums[i] / counts[i / channels];
+      EXPECT_NEAR(double(result[i]), mean, std::is_integral_v<Sample> ? 0.5 : 1e-4 * mean)
+          << sw << "x" << sh << " to " << tw << "x" << th << ", " << channels << " channels, value " << i;
+    }
+  }
+}
+
+TEST(AreaDownscaler, EveryTargetPixelIsTheMeanOfItsSourcePixels) {
+  expectMeansOfCoveredPixels<uint8_t>(1);
+  expectMeansOfCoveredPixels<float>(2);
 }
 
 TEST(TextureLimits, FitSizeThenMemory) {
