@@ -10,6 +10,8 @@
 #include <cstring>
 #include <tuple>
 
+#include "io/available_memory.h"
+#include "io/load_budget.h"
 #include "scene/loaders/gltf/gltf_accessors.h"
 #include "scene/loaders/gltf/gltf_draco.h"
 #include "scene/loaders/gltf/gltf_loader.h"
@@ -273,6 +275,78 @@ TEST(GltfDraco, LengthsBeyondTheFileAreRefused) {
 
 // Attributes the loader does not read itself (skin joints and weights) are decoded into their accessors' own
 // component types, for whatever reads them.
+// A grid of `cells` x `cells` squares, positions only, quantised: a few kilobytes that decode to megabytes.
+std::vector<uint8_t> encodedGrid(int cells, int& positionId) {
+  draco::TriangleSoupMeshBuilder builder;
+  builder.Start(2 * cells * cells);
+  const int position = builder.AddAttribute(draco::GeometryAttribute::POSITION, 3, draco::DT_FLOAT32);
+  int face = 0;
+  for (int j = 0; j < cells; ++j)
+    for (int i = 0; i < cells; ++i) {
+      auto p = [&](int di, int dj) { return std::array<float, 3>{float(i + di), float(j + dj), 0.0f}; };
+      const auto a = p(0, 0), b = p(1, 0), c = p(1, 1), d = p(0, 1);
+      builder.SetAttributeValuesForFace(position, draco::FaceIndex(face++), a.data(), b.data(), c.data());
+      builder.SetAttributeValuesForFace(position, draco::FaceIndex(face++), a.data(), c.data(), d.data());
+    }
+  std::unique_ptr<draco::Mesh> mesh = builder.Finalize();
+  EXPECT_TRUE(mesh);
+  positionId = int(mesh->attribute(position)->unique_id());
+  draco::Encoder encoder;
+  encoder.SetAttributeQuantization(draco::GeometryAttribute::POSITION, 11);
+  draco::EncoderBuffer out;
+  EXPECT_TRUE(encoder.EncodeMeshToBuffer(*mesh, &out).ok());
+  return std::vector<uint8_t>(out.data(), out.data() + out.size());
+}
+
+// Each primitive's decoded buffer is charged to the load's budget before it is filled: a file of many different
+// compressed meshes, each small, that together decode to more than the load may use is refused in one line
+// naming the primitive; without the limit the same file loads.
+TEST(GltfDraco, DecodedBytesBeyondTheLoadBudgetAreRefused) {
+  int positionId = 0;
+  const std::vector<uint8_t> grid = encodedGrid(200, positionId);
+  const uint64_t decodedPerPrimitive = 201 * 201 * 12 + 2 * 200 * 200 * 12;  // at least: Draco may split points
+  // The smallest limit (above what the test process holds) that leaves the load a budget of 4 MiB or more.
+  uint64_t limit = uint64_t(16) << 20;
+  for (;; limit *= 2) {
+    setProcessMemoryLimit(limit);
+    beginLoadBudget();
+    if (loadMemoryLeft() >= (uint64_t(4) << 20)) break;
+  }
+  const int meshes = int(loadMemoryLeft() / decodedPerPrimitive) * 3 / 2 + 2;
+  std::vector<uint8_t> bin;
+  json views = json::array(), gltfMeshes = json::array(), nodes = json::array(), roots = json::array();
+  for (int m = 0; m < meshes; ++m) {  // each mesh its own copy of the bytes: different streams, each decoded
+    views.push_back({{"buffer", 0}, {"byteOffset", bin.size()}, {"byteLength", grid.size()}});
+    bin.insert(bin.end(), grid.begin(), grid.end());
+    bin.resize((bin.size() + 3) / 4 * 4);
+    json primitive = {
+        {"attributes", {{"POSITION", 0}}},
+        {"extensions",
+         {{"KHR_draco_mesh_compression", {{"bufferView", m}, {"attributes", {{"POSITION", positionId}}}}}}}};
+    gltfMeshes.push_back({{"primitives", {primitive}}});
+    nodes.push_back({{"mesh", m}});
+    roots.push_back(m);
+  }
+  json g = {{"asset", {{"version", "2.0"}}},
+            {"extensionsUsed", {"KHR_draco_mesh_compression"}},
+            {"extensionsRequired", {"KHR_draco_mesh_compression"}},
+            {"buffers", {{{"byteLength", bin.size()}}}},
+            {"bufferViews", views},
+            {"accessors", {{{"componentType", 5126}, {"count", 201 * 201}, {"type", "VEC3"}}}},
+            {"meshes", gltfMeshes},
+            {"nodes", nodes},
+            {"scenes", {{{"nodes", roots}}}}};
+  const std::vector<uint8_t> file = test::glbFile(g, bin);
+  const std::string error = errorOf(file);
+  setProcessMemoryLimit(0);
+  beginLoadBudget();
+  EXPECT_NE(error.find("test.glb: meshes["), std::string::npos) << error;
+  EXPECT_NE(error.find("].primitives[0] decoded from KHR_draco_mesh_compression needs about "), std::string::npos)
+      << error;
+  EXPECT_NE(error.find("--max-memory"), std::string::npos) << error;
+  EXPECT_EQ(load(file).meshes.size(), size_t(meshes));
+}
+
 TEST(GltfDraco, JointsAndWeightsKeepTheirAccessorTypes) {
   draco::TriangleSoupMeshBuilder builder;
   builder.Start(1);
@@ -317,7 +391,8 @@ TEST(GltfDraco, JointsAndWeightsKeepTheirAccessorTypes) {
   model.meshes.resize(1);
   model.meshes[0].primitives.push_back(primitive);
 
-  decodeDracoPrimitives(model, "test.glb");
+  GltfBufferCharge charge(GltfBufferList(""), "test.glb");
+  decodeDracoPrimitives(model, "test.glb", charge);
   const tinygltf::Primitive& decoded = model.meshes[0].primitives[0];
   EXPECT_EQ(model.accessors[size_t(decoded.attributes.at("JOINTS_0"))].componentType,
             TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE);

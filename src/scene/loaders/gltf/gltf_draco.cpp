@@ -53,7 +53,7 @@ std::optional<std::vector<uint8_t>> withoutDracoIndices(const uint8_t* data, siz
 
 #ifndef CANDELA_HAS_DRACO
 
-void decodeDracoPrimitives(tinygltf::Model&, const std::string&) {}
+void decodeDracoPrimitives(tinygltf::Model&, const std::string&, GltfBufferCharge&) {}
 
 #else
 
@@ -85,8 +85,14 @@ bool convertPoints(const draco::PointAttribute& a, size_t points, int components
 
 class DracoPrimitiveDecoder {
  public:
-  DracoPrimitiveDecoder(tinygltf::Model& model, const std::string& file, std::string where)
-      : model_(model), file_(file), where_(std::move(where)) {}
+  // `primitive` is the primitive's JSON path ("meshes[2].primitives[0]").
+  DracoPrimitiveDecoder(tinygltf::Model& model, const std::string& file, const std::string& primitive,
+                        GltfBufferCharge& charge)
+      : model_(model),
+        file_(file),
+        primitive_(primitive),
+        where_(primitive + ".extensions." + std::string(kExtension)),
+        charge_(charge) {}
 
   void decode(tinygltf::Primitive& primitive, const tinygltf::Value& extension) {
     if (!extension.IsObject()) fail("", "expected an object");
@@ -94,6 +100,7 @@ class DracoPrimitiveDecoder {
     const size_t points = mesh->num_points();
     const tinygltf::Value& attributes = extension.Get("attributes");
     if (!attributes.IsObject()) fail(".attributes", "expected an object of Draco attribute ids");
+    charge_.charge(decodedBytes(primitive, attributes, *mesh), primitive_ + " decoded from " + std::string(kExtension));
     tinygltf::Buffer decoded;
     for (const std::string& name : attributes.Keys()) {
       const std::string at = ".attributes." + name;
@@ -114,6 +121,24 @@ class DracoPrimitiveDecoder {
  private:
   [[noreturn]] void fail(const std::string& at, const std::string& what) const {
     failLoad(file_, where_ + at + ": " + what);
+  }
+
+  // The bytes decode() appends for the mesh: each named attribute at its accessor's layout (3 bytes of alignment
+  // at most before each) and the indices. Attributes the checks below refuse count as nothing.
+  uint64_t decodedBytes(const tinygltf::Primitive& primitive, const tinygltf::Value& attributes,
+                        const draco::Mesh& mesh) const {
+    uint64_t bytes = uint64_t(mesh.num_faces()) * 3 * 4;
+    for (const std::string& name : attributes.Keys()) {
+      auto used = primitive.attributes.find(name);
+      if (used == primitive.attributes.end() || used->second < 0 || size_t(used->second) >= model_.accessors.size())
+        continue;
+      const tinygltf::Accessor& a = model_.accessors[size_t(used->second)];
+      const int components = tinygltf::GetNumComponentsInType(uint32_t(a.type));
+      const int componentSize = tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType));
+      if (components > 0 && componentSize > 0)
+        bytes += uint64_t(mesh.num_points()) * uint64_t(components) * uint64_t(componentSize) + 3;
+    }
+    return bytes;
   }
 
   std::unique_ptr<draco::Mesh> decodeMesh(const tinygltf::Value& extension) const {
@@ -202,7 +227,8 @@ class DracoPrimitiveDecoder {
 
   tinygltf::Model& model_;
   const std::string& file_;
-  std::string where_;
+  std::string primitive_, where_;
+  GltfBufferCharge& charge_;
 };
 
 // What identifies the result of decoding a Draco primitive: the compressed bytes, and each attribute's name,
@@ -244,7 +270,7 @@ std::optional<DracoStream> streamOf(const tinygltf::Model& model, const tinygltf
 
 }  // namespace
 
-void decodeDracoPrimitives(tinygltf::Model& model, const std::string& file) {
+void decodeDracoPrimitives(tinygltf::Model& model, const std::string& file, GltfBufferCharge& charge) {
   // Primitives that decode the same bytes into the same accessors share what the first of them decoded.
   std::map<DracoStream, DecodedPrimitive> decoded;
   for (size_t m = 0; m < model.meshes.size(); ++m)
@@ -254,8 +280,7 @@ void decodeDracoPrimitives(tinygltf::Model& model, const std::string& file) {
       if (extension == primitive.extensions.end()) continue;
       // Points and lines are left out by the loader; Draco stores them as point clouds, which are not decoded.
       if (primitive.mode >= 0 && primitive.mode < TINYGLTF_MODE_TRIANGLES) continue;
-      const std::string where = "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) + "].extensions." +
-                                std::string(kExtension);
+      const std::string path = "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) + "]";
       const std::optional<DracoStream> stream = streamOf(model, primitive, extension->second);
       if (auto it = stream ? decoded.find(*stream) : decoded.end(); it != decoded.end()) {
         for (const auto& [name, accessor] : it->second.attributes) primitive.attributes[name] = accessor;
@@ -263,7 +288,7 @@ void decodeDracoPrimitives(tinygltf::Model& model, const std::string& file) {
         primitive.mode = TINYGLTF_MODE_TRIANGLES;
         continue;
       }
-      DracoPrimitiveDecoder(model, file, where).decode(primitive, extension->second);
+      DracoPrimitiveDecoder(model, file, path, charge).decode(primitive, extension->second);
       if (!stream) continue;
       DecodedPrimitive& shared = decoded[*stream];
       for (const auto& name : extension->second.Get("attributes").Keys())

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "scene/loaders/gltf/gltf_buffer_charge.h"
+
 namespace candela {
 
 // KHR_draco_mesh_compression through Google's Draco library, where candela is built with it (libdraco-dev;
@@ -22,8 +24,9 @@ std::optional<std::vector<uint8_t>> withoutDracoIndices(const uint8_t* data, siz
 // Decodes every Draco-compressed triangle primitive of `model` into a new buffer with a bufferView and a new
 // accessor per attribute and for the indices, which the primitive then names: the loader reads them as any
 // others. Each attribute keeps its accessor's type, component type and normalisation and takes its values
-// from the Draco attribute whose unique id the extension's `attributes` give it. Corrupt or inconsistent Draco
-// data throws LoadError naming the file and the primitive's JSON path.
-void decodeDracoPrimitives(tinygltf::Model& model, const std::string& file);
+// from the Draco attribute whose unique id the extension's `attributes` give it. Each decoded primitive's buffer
+// is charged to `charge` (the load's budget) before it is filled. Corrupt or inconsistent Draco data throws
+// LoadError naming the file and the primitive's JSON path.
+void decodeDracoPrimitives(tinygltf::Model& model, const std::string& file, GltfBufferCharge& charge);
 
 }  // namespace candela

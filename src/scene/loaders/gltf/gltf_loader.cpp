@@ -990,7 +990,7 @@ Scene loadFromBytes(const std::string& name, const uint8_t* data, size_t size, c
   while (std::getline(lines, line))
     if (!firstLine(line).empty()) warnings.add(name, firstLine(line));
   checkGltfExtensions(model, name, warnings);
-  decodeDracoPrimitives(model, name);
+  decodeDracoPrimitives(model, name, bufferCharge);
   decodeMeshoptBufferViews(model, name, bufferCharge);
   Scene scene = GltfSceneBuilder(model, name, files, warnings, sharedTextures).build();
   scene.inputFiles.insert(scene.inputFiles.begin(), access.filesRead.begin(), access.filesRead.end());
