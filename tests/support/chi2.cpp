@@ -156,4 +156,23 @@ Chi2Result chi2TestSphere(const DirectionSampler& sample, const DirectionPdf& pd
   return chi2TestSquare(toSquare, squareDensity, options);
 }
 
+DiscreteChi2 chi2Discrete(const std::vector<double>& observed, const std::vector<double>& expected) {
+  DiscreteChi2 r;
+  for (size_t i = 0; i < expected.size(); ++i) {
+    if (expected[i] < 5.0) {
+      r.pooledExpected += expected[i];
+      r.pooledObserved += observed[i];
+      continue;
+    }
+    r.statistic += (observed[i] - expected[i]) * (observed[i] - expected[i]) / expected[i];
+    ++r.cells;
+  }
+  if (r.pooledExpected >= 5.0) {
+    r.statistic += (r.pooledObserved - r.pooledExpected) * (r.pooledObserved - r.pooledExpected) / r.pooledExpected;
+    ++r.cells;
+  }
+  r.pValue = r.cells > 1 ? upperIncompleteGammaQ(0.5 * (r.cells - 1), 0.5 * r.statistic) : 1.0;
+  return r;
+}
+
 }  // namespace candela::test

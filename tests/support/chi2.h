@@ -2,6 +2,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/math.h"
 
@@ -38,6 +39,17 @@ Chi2Result chi2TestSquare(const SquareSampler& sample, const SquareDensity& dens
 using DirectionSampler = std::function<std::optional<Vec3>(double u1, double u2, double u3)>;
 using DirectionPdf = std::function<double(Vec3 direction)>;
 Chi2Result chi2TestSphere(const DirectionSampler& sample, const DirectionPdf& pdf, const Chi2Options& options);
+
+// Pearson's statistic of counts in discrete cells (lights, for example) against their expected counts: the cells
+// expecting fewer than 5 are pooled into one, which counts as a cell when it expects 5 or more. The p-value is
+// for cells - 1 degrees of freedom.
+struct DiscreteChi2 {
+  double statistic = 0.0;
+  int cells = 0;
+  double pooledExpected = 0.0, pooledObserved = 0.0;
+  double pValue = 1.0;
+};
+DiscreteChi2 chi2Discrete(const std::vector<double>& observed, const std::vector<double>& expected);
 
 // Regularised upper incomplete gamma function Q(a, x); the chi-square survival function is Q(k/2, x/2).
 double upperIncompleteGammaQ(double a, double x);
