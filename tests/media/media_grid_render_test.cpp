@@ -7,34 +7,20 @@
 #include <cstring>
 #include <string>
 
-#include "backends/cpu/cpu_backend.h"
 #include "io/load_diagnostics.h"
 #include "media/media_grids.h"
+#include "media/media_render.h"
 #include "media/media_scenes.h"
 #include "scene/cache/scene_serialization.h"
 #include "support/pbrt_text.h"
-#include "support/render_statistics.h"
 
 namespace candela::test {
 namespace {
 
-constexpr uint32_t kBatches = 32;
-constexpr uint32_t kSamplesPerBatch = 8;
+constexpr uint32_t kBatches = kMediaBatches;
 constexpr double kAlpha = 0.01;
 
-PixelStatistics render(const Scene& scene, uint32_t size) {
-  CpuBackend backend;
-  backend.setScene(scene);
-  RenderSettings settings;
-  settings.sampler = SamplerKind::Independent;
-  settings.width = settings.height = size;
-  settings.maxDepth = 1000;
-  settings.rouletteDepth = 1;
-  settings.seed = 5;
-  backend.setSettings(settings);
-  backend.setCamera(scene.camera.toCamera(1.0f));
-  return renderBatches(backend, kBatches, kSamplesPerBatch);
-}
+PixelStatistics render(const Scene& scene, uint32_t size) { return renderMediaScene(scene, size, 5); }
 
 // A slab of medium m as makeMediumSlab's, the medium a uniformgrid of density 1 whose box is twice the slab's:
 // 2 samples per axis put the samples' centres on the slab's faces or beyond, so the lookup is 1 all through it.

@@ -5,29 +5,18 @@
 #include <string>
 
 #include "backends/cpu/cpu_backend.h"
+#include "media/media_render.h"
 #include "media/media_scenes.h"
 #include "scene/builtin_scenes.h"
-#include "support/render_statistics.h"
 
 namespace candela::test {
 namespace {
 
-constexpr uint32_t kBatches = 32;
-constexpr uint32_t kSamplesPerBatch = 8;
+constexpr uint32_t kBatches = kMediaBatches;
 constexpr double kAlpha = 0.01;
 
 PixelStatistics render(const Scene& scene, uint32_t size, SamplerKind sampler = SamplerKind::Independent) {
-  CpuBackend backend;
-  backend.setScene(scene);
-  RenderSettings settings;
-  settings.sampler = sampler;
-  settings.width = settings.height = size;
-  settings.maxDepth = 1000;
-  settings.rouletteDepth = 1;
-  settings.seed = 11;
-  backend.setSettings(settings);
-  backend.setCamera(scene.camera.toCamera(1.0f));
-  return renderBatches(backend, kBatches, kSamplesPerBatch);
+  return renderMediaScene(scene, size, 11, sampler);
 }
 
 Vec3 expTransmittance(Vec3 sigmaT, float d) {
