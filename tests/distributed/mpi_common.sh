@@ -38,6 +38,22 @@ stop_rank_one() {
   [ "$status" -eq 0 ] || fail "exit status $status: $(cat "$name.log")"
 }
 
+# frames_as_one_process <name> <first:last> <candela> <compare_exr> <render arguments...>: renders the frames
+# first..last (two digits each) as one process, into single_##.exr, and fails unless the job whose standard output
+# is <name>.out wrote each frame <name>_##.exr once, the same as the single process's up to the order of the
+# additions.
+frames_as_one_process() {
+  local name=$1 frames=$2 candela=$3 compare=$4 f written
+  shift 4
+  "$candela" render "$@" --frames "$frames" -o single_##.exr >single.out 2>single.log ||
+    fail "single process: $(cat single.log)"
+  for f in $(seq -f %02g "${frames%%:*}" "${frames##*:}"); do
+    written=$(grep -c "/${name}_$f\.exr\$" "$name.out")
+    [ "$written" -eq 1 ] || fail "frame $f written $written times: $(cat "$name.out") $(cat "$name.log")"
+    "$compare" "single_$f.exr" "${name}_$f.exr" 1e-4 >"compare_$f.log" || fail "frame $f: $(cat "compare_$f.log")"
+  done
+}
+
 # expect_line <file> <line>: fails unless <file> has the line <line>, whole.
 expect_line() { grep -qxF "$2" "$1" || fail "no line '$2': $(cat "$1")"; }
 
