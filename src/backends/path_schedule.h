@@ -48,6 +48,9 @@ class PathScheduleChoice {
   // One line for the log: the schedule and why.
   std::string describe() const;
 
+  // Equal choices describe themselves alike.
+  bool operator==(const PathScheduleChoice&) const = default;
+
  private:
   PathSchedule requested_;
   std::optional<PathSchedule> decided_;

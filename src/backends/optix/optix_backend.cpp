@@ -116,6 +116,7 @@ struct OptixBackend::State {
   DeviceRestirBuffers restir;
   PathScheduleChoice schedule{requestedSchedule()};
   std::string reportedSchedule;
+  std::optional<std::pair<PathScheduleChoice, bool>> reported;  // the choice and stand-in of reportedSchedule
 
   uint32_t pixelCount() const { return settings.width * settings.height; }
 
@@ -285,11 +286,14 @@ struct OptixBackend::State {
 
   // Says which schedule renders, when that changed; `standIn`: the megakernel renders while the wavefront that Auto
   // chose compiles.
+  // The line is made only when the choice or the stand-in changed, not at every launch.
   void report(bool standIn = false) {
+    if (reported && reported->first == schedule && reported->second == standIn) return;
     const std::string line =
         schedule.describe() + (standIn ? "; the megakernel renders until the wavefront's programs have compiled" : "");
     if (line != reportedSchedule) std::fprintf(stderr, "optix: %s\n", line.c_str());
     reportedSchedule = line;
+    reported.emplace(schedule, standIn);
   }
 
   // The film and the per-pixel counters for the current size; the film with AOV sums while they are enabled.
