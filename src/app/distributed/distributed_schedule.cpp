@@ -223,69 +223,70 @@ class CoordinatorSchedule final : public SampleSchedule {
     return uint32_t(std::clamp(std::min(byTime, share), 1.0, 65536.0));
   }
 
-  // Answers the requests that have arrived and notes the ranks that became ready; returns whether there were any.
-  bool answerRequests() {
-    bool any = noteReadyRanks();
+  // Receives every message of type T with `tag` that has arrived, from any worker, and calls `received(rank,
+  // message)` with each; returns whether there were any.
+  template <class T, class Received>
+  static bool receiveArrived(int tag, const Received& received) {
+    bool any = false;
     for (;;) {
       int arrived = 0;
       MPI_Status status;
-      checkMpi(MPI_Iprobe(MPI_ANY_SOURCE, kRequestTag, MPI_COMM_WORLD, &arrived, &status), "waiting for requests");
+      checkMpi(MPI_Iprobe(MPI_ANY_SOURCE, tag, MPI_COMM_WORLD, &arrived, &status), "waiting for the ranks");
       if (!arrived) return any;
       any = true;
-      Request request;
-      checkMpi(MPI_Recv(&request, sizeof request, MPI_BYTE, status.MPI_SOURCE, kRequestTag, MPI_COMM_WORLD,
-                        MPI_STATUS_IGNORE),
-               "receiving a request");
-      Worker& worker = workers_[size_t(status.MPI_SOURCE - 1)];
-      if (worker.released) {  // a rank given up for lost that answers after all: it ends (noteReadyRanks)
-        const Answer end{uint32_t(Assignment::Kind::End), dispenser_.next(), uint32_t(RenderEnd::Complete)};
-        checkMpi(MPI_Send(&end, sizeof end, MPI_BYTE, status.MPI_SOURCE, kAssignmentTag, MPI_COMM_WORLD),
-                 "sending an assignment");
-        continue;
-      }
-      worker.done = request.samplesDone;
-      if (request.stopSignal != 0) StopOnSignals::forward(int(request.stopSignal));
-      const uint32_t count = batchSize(request.secondsPerSample);
-      // The rank renders its current batch before this one: the time limit must allow for both.
-      if (pause_ == SampleDispenser::Pause::None) setPause(dispenser_.pause(2.0 * count * request.secondsPerSample));
-      Answer answer;
-      if (pause_ == SampleDispenser::Pause::None) {
-        answer.kind = uint32_t(Assignment::Kind::Samples);
-        answer.first = dispenser_.take(count);
-        answer.count = dispenser_.next() - answer.first;
-        if (answer.count > 0) worker.batches.emplace_back(answer.first, answer.count);
-      } else {
-        answer.kind =
-            uint32_t(pause_ == SampleDispenser::Pause::End ? Assignment::Kind::End : Assignment::Kind::Checkpoint);
-        answer.first = dispenser_.next();
-        answer.count = uint32_t(dispenser_.end());
-      }
-      checkMpi(MPI_Send(&answer, sizeof answer, MPI_BYTE, status.MPI_SOURCE, kAssignmentTag, MPI_COMM_WORLD),
-               "sending an assignment");
+      T message;
+      checkMpi(MPI_Recv(&message, sizeof message, MPI_BYTE, status.MPI_SOURCE, tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
+               "receiving a rank's message");
+      received(status.MPI_SOURCE, message);
     }
+  }
+
+  // Answers the requests that have arrived and notes the ranks that became ready; returns whether there were any.
+  bool answerRequests() {
+    const bool ready = noteReadyRanks();
+    return receiveArrived<Request>(kRequestTag, [&](int rank, const Request& request) { answer(rank, request); }) ||
+           ready;
+  }
+
+  void answer(int rank, const Request& request) {
+    Worker& worker = workers_[size_t(rank - 1)];
+    if (worker.released) {  // a rank given up for lost that answers after all: it ends (noteReadyRanks)
+      const Answer end{uint32_t(Assignment::Kind::End), dispenser_.next(), uint32_t(RenderEnd::Complete)};
+      checkMpi(MPI_Send(&end, sizeof end, MPI_BYTE, rank, kAssignmentTag, MPI_COMM_WORLD), "sending an assignment");
+      return;
+    }
+    worker.done = request.samplesDone;
+    if (request.stopSignal != 0) StopOnSignals::forward(int(request.stopSignal));
+    const uint32_t count = batchSize(request.secondsPerSample);
+    // The rank renders its current batch before this one: the time limit must allow for both.
+    if (pause_ == SampleDispenser::Pause::None) setPause(dispenser_.pause(2.0 * count * request.secondsPerSample));
+    Answer answer;
+    if (pause_ == SampleDispenser::Pause::None) {
+      answer.kind = uint32_t(Assignment::Kind::Samples);
+      answer.first = dispenser_.take(count);
+      answer.count = dispenser_.next() - answer.first;
+      if (answer.count > 0) worker.batches.emplace_back(answer.first, answer.count);
+    } else {
+      answer.kind =
+          uint32_t(pause_ == SampleDispenser::Pause::End ? Assignment::Kind::End : Assignment::Kind::Checkpoint);
+      answer.first = dispenser_.next();
+      answer.count = uint32_t(dispenser_.end());
+    }
+    checkMpi(MPI_Send(&answer, sizeof answer, MPI_BYTE, rank, kAssignmentTag, MPI_COMM_WORLD), "sending an assignment");
   }
 
   // Notes the workers that arrived in combine() since the last call; returns whether there were any. A rank
   // given up for lost that arrives after all is told to discard its film: its samples are rendered again.
   bool noteReadyRanks() {
-    bool any = false;
-    for (;;) {
-      int arrived = 0;
-      MPI_Status status;
-      checkMpi(MPI_Iprobe(MPI_ANY_SOURCE, kReadyTag, MPI_COMM_WORLD, &arrived, &status), "waiting for the ranks");
-      if (!arrived) return any;
-      any = true;
-      uint32_t samplesDone = 0;
-      checkMpi(MPI_Recv(&samplesDone, 1, MPI_UINT32_T, status.MPI_SOURCE, kReadyTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
-               "receiving a rank's readiness");
-      Worker& worker = workers_[size_t(status.MPI_SOURCE - 1)];
+    return receiveArrived<uint32_t>(kReadyTag, [&](int rank, uint32_t samplesDone) {
+      Worker& worker = workers_[size_t(rank - 1)];
       if (worker.released) {
-        tellCombine(status.MPI_SOURCE, Combine::DiscardAndStop, timeout_);
-        continue;
+        tellCombine(rank, Combine::DiscardAndStop, timeout_);
+        return;
       }
       worker.done = samplesDone;
       worker.ready = true;
-    }
+    });
   }
 
   SampleDispenser dispenser_;
@@ -337,7 +338,7 @@ class WorkerSchedule final : public SampleSchedule {
     MPI_Request request;
     checkMpi(MPI_Irecv(&how, 1, MPI_UINT32_T, 0, kCombineTag, MPI_COMM_WORLD, &request), "starting to add up");
     MPI_Request ready;
-    checkMpi(MPI_Isend(&done_, 1, MPI_UINT32_T, 0, kReadyTag, MPI_COMM_WORLD, &ready), "starting to add up");
+    checkMpi(MPI_Isend(&done_, sizeof done_, MPI_BYTE, 0, kReadyTag, MPI_COMM_WORLD, &ready), "starting to add up");
     waitPolitely(ready, timeout_, "telling rank 0 that the batches are done");
     // Rank 0 may first wait up to the timeout for a silent rank, after its own sample.
     waitPolitely(request, 3.0 * timeout_, "waiting for rank 0 to add up the films");
