@@ -17,9 +17,9 @@ namespace candela {
 //
 // The fibre runs along the local frame's x axis (the surface's tangent). Angles are pbrt's: theta from the plane
 // normal to the fibre (sin theta = w.x) and phi around the fibre (atan2(w.z, w.y)); h in [-1, 1] is where the
-// light meets the fibre across its width. Scattering covers the whole sphere, so that the lobe transmits in the
-// local frame's terms; f is divided by |cos| to the normal, as every BSDF's, so that f |cos| is the fibre's
-// scattering function, and light is not bent (a sample's eta is 1).
+// light meets the fibre across its width. Scattering covers the whole sphere (on a surface, the model transmits);
+// f is divided by |cos| to the normal, as every BSDF's, so that f |cos| is the fibre's scattering function; light
+// is not bent (a sample's eta is 1).
 struct HairBsdf {
   static constexpr int kPMax = 3;
 
