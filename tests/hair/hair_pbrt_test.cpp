@@ -7,6 +7,7 @@
 
 #include "backends/cpu/cpu_backend.h"
 #include "io/load_diagnostics.h"
+#include "kernel/aovs.h"
 #include "kernel/bsdf/hair.h"
 #include "scene/scene_repair.h"
 #include "support/pbrt_text.h"
@@ -79,6 +80,8 @@ TEST(PbrtHair, EachFormOfAbsorption) {
     const Vec3 expected = HairBsdf::absorptionOfReflectance({0.2f, 0.4f, 0.6f}, 0.4f);
     expectNear(m.fibreAbsorption, expected, 1e-5f);
     expectNear(HairBsdf::reflectanceOfAbsorption(m.fibreAbsorption, 0.4f), {0.2f, 0.4f, 0.6f}, 1e-5f);
+    // The denoisers' albedo guide takes the colour back.
+    expectNear(materialAlbedo(m), {0.2f, 0.4f, 0.6f}, 1e-5f);
     // pbrt-v4's fit at beta_n 0.4: (ln 0.2 / 5.74660)^2.
     EXPECT_NEAR(m.fibreAbsorption.x, std::pow(std::log(0.2) / 5.74660, 2.0), 1e-5);
   }
