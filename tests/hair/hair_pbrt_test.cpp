@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iterator>
 #include <string>
 
 #include "backends/cpu/cpu_backend.h"
@@ -105,6 +106,19 @@ TEST(PbrtHair, NamedHairMaterial) {
   const Material& m = scene.materials[scene.meshes[0].triangleMaterials[0]];
   EXPECT_EQ(m.type, MaterialType::Hair);
   expectNear(m.fibreAbsorption, Vec3{0.419f, 0.697f, 1.37f} * 0.3f, 1e-5f);
+}
+
+// The offset across the fibre is pbrt-v4's -1 + 2v of the file's v, whichever way candela stores v.
+TEST(PbrtHair, OffsetAcrossTheFibreIsPbrts) {
+  const Scene scene = pbrt::loadText(patchOf("\"hair\""));
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  const Mesh& mesh = scene.meshes[0];
+  const Material& m = scene.materials[mesh.triangleMaterials[0]];
+  const float pbrtV[] = {0, 0, 1, 1};  // the patch's "point2 uv"
+  ASSERT_EQ(mesh.uvs.size(), std::size(pbrtV));
+  for (size_t i = 0; i < mesh.uvs.size(); ++i)
+    EXPECT_FLOAT_EQ(HairBsdf::fromMaterial(m, 1.0f, mesh.uvs[i]).h, -1.0f + 2.0f * pbrtV[i]) << i;
+  EXPECT_FLOAT_EQ(HairBsdf::fromMaterial(m, 1.0f, {0.3f, 0.25f}).h, 0.5f) << "candela's v 0.25 is pbrt's 0.75";
 }
 
 TEST(PbrtHair, HostileParametersAreRefusedInOneLine) {
