@@ -19,14 +19,15 @@ namespace candela {
 // material override's "type"); its name for --shading and the viewers' shading choice, or nullptr where they do
 // not offer it (scene/material_overrides.h). The order gives MaterialType's values, which the scene cache and
 // device buffers store: a new model goes last (a cache is read only by the build that wrote it).
-#define CANDELA_MATERIAL_MODELS(X)                      \
-  X(Diffuse, LambertianBsdf, "diffuse", nullptr)        \
-  X(BlinnPhong, BlinnPhongBsdf, "blinn-phong", "phong") \
-  X(Pbr, PbrBsdf, "pbr", "pbr")                         \
-  X(Disney, DisneyBsdf, "disney", "disney")             \
-  X(Mirror, MirrorBsdf, "mirror", nullptr)              \
-  X(Glass, SmoothDielectricBsdf, "glass", nullptr)      \
-  X(DiffuseTransmission, DiffuseTransmissionBsdf, "diffuse-transmission", nullptr)
+#define CANDELA_MATERIAL_MODELS(X)                                                 \
+  X(Diffuse, LambertianBsdf, "diffuse", nullptr)                                   \
+  X(BlinnPhong, BlinnPhongBsdf, "blinn-phong", "phong")                            \
+  X(Pbr, PbrBsdf, "pbr", "pbr")                                                    \
+  X(Disney, DisneyBsdf, "disney", "disney")                                        \
+  X(Mirror, MirrorBsdf, "mirror", nullptr)                                         \
+  X(Glass, SmoothDielectricBsdf, "glass", nullptr)                                 \
+  X(DiffuseTransmission, DiffuseTransmissionBsdf, "diffuse-transmission", nullptr) \
+  X(Hair, HairBsdf, "hair", nullptr)
 
 // A model is plain data (the Bsdf keeps one in a union) working in the local shading frame, with
 //   static constexpr bool kDelta;                   only delta lobes, which light sampling cannot reach
@@ -35,8 +36,10 @@ namespace candela {
 //                                                   its other side: rays then meet both sides (pass_through.h)
 //   static bool orientedByTangent(const Material&); whether its lobes turn with the surface's tangent, which the
 //                                                   scene then provides (anisotropy)
-//   static Model fromMaterial(const Material&, float eta);  the model of a material with its textures applied,
-//                                                   eta the relative index across the surface seen from wo
+//   static Model fromMaterial(const Material&, float eta, Vec2 uv);  the model of a material with its textures
+//                                                   applied, eta the relative index across the surface seen from
+//                                                   wo, uv the surface's texture coordinates at the point (which
+//                                                   hair takes its offset across the fibre from)
 //   eval, pdf, evalPdf and sample, as LambertianBsdf's.
 
 // The models of the list, then Mix; kernel code dispatches on this tag with a switch.
@@ -98,6 +101,13 @@ struct Material {
   // Diffuse transmission: the Lambertian transmittance to the far side (baseColor is the reflectance); zero, a
   // diffuse reflector.
   Vec3 transmittance{0.0f, 0.0f, 0.0f};
+
+  // Hair (kernel/bsdf/hair.h), with `ior` the fibre's index and `roughness` its longitudinal roughness beta_m:
+  // the absorption inside the fibre per unit of its radius (pbrt-v4's sigma_a; by default pbrt's brown hair,
+  // eumelanin 1.3), the azimuthal roughness beta_n and the tilt of the cuticle's scales in degrees (alpha).
+  Vec3 fibreAbsorption{0.5447f, 0.9061f, 1.781f};
+  float azimuthalRoughness = 0.3f;
+  float scaleTilt = 2.0f;
 
   // pbrt's `interface` material: the surface only bounds participating media (the instances' MediumInterface) and
   // rays cross it unchanged. Its coverage is an alpha mask of opacity 0, so that the backends ask passesThrough

@@ -94,6 +94,9 @@ void validateScene(const Scene& scene) {
       fail("a material has an invalid absorption");
     if (!finite(m.transmittance) || m.transmittance.x < 0.0f || m.transmittance.y < 0.0f || m.transmittance.z < 0.0f)
       fail("a material has an invalid transmittance");
+    if (!finite(m.fibreAbsorption) || m.fibreAbsorption.x < 0.0f || m.fibreAbsorption.y < 0.0f ||
+        m.fibreAbsorption.z < 0.0f)
+      fail("a material has an invalid fibre absorption");
     for (int32_t t :
          {m.baseColorTexture, m.metallicRoughnessTexture, m.roughnessTexture, m.metallicTexture, m.emissionTexture,
           m.normalTexture, m.opacityTexture, m.mixAmountTexture, m.iridescenceTexture, m.iridescenceThicknessTexture})

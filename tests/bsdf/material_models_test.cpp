@@ -49,7 +49,7 @@ TEST(MaterialModels, EveryNameRoundTripsThroughItsType) {
   EXPECT_EQ(materialTypeName(MaterialType::Mix), nullptr);
   EXPECT_EQ(materialTypeNamed("mix"), std::nullopt);
   EXPECT_EQ(materialTypeNamed("velvet"), std::nullopt);
-  EXPECT_EQ(materialTypeNameList(), "diffuse, blinn-phong, pbr, disney, mirror, glass, diffuse-transmission");
+  EXPECT_EQ(materialTypeNameList(), "diffuse, blinn-phong, pbr, disney, mirror, glass, diffuse-transmission, hair");
 }
 
 // Each model --shading offers is chosen by its shading name and switches a material to its type.
@@ -102,9 +102,10 @@ void expectBsdfIsModel(MaterialType type) {
   SurfaceInteraction si;
   si.geometricNormal = si.shadingNormal = {0, 0, 1};
   si.tangent = {1, 0, 0};
+  si.uv = {0.3f, 0.7f};
   const Vec3 wo = normalize(Vec3{0.3f, -0.2f, 0.9f});
   const Bsdf bsdf(m, si, wo);  // the local frame is the world's
-  const Model model = Model::fromMaterial(m, m.ior);
+  const Model model = Model::fromMaterial(m, m.ior, si.uv);
 
   EXPECT_EQ(bsdf.isDelta(), Model::kDelta);
   EXPECT_EQ(bsdf.hasTransmission(), model.hasTransmission());
@@ -134,7 +135,8 @@ TEST(MaterialModels, EveryTypeBuildsItsModelWithItsFlags) {
 #undef EXPECT_BSDF_IS_MODEL
 }
 
-// The flags of today's models, as the kernel relies on them.
+// The flags of today's models, as the kernel relies on them. A hair fibre scatters all round, so a surface of it
+// always lets light through.
 TEST(MaterialModels, DeltaAndTransmittingModels) {
   for (uint32_t t = 0; t < kMaterialModelCount; ++t) {
     const MaterialType type = MaterialType(t);
@@ -142,8 +144,10 @@ TEST(MaterialModels, DeltaAndTransmittingModels) {
     EXPECT_EQ(isDeltaModel(type), mirrorOrGlass) << materialTypeName(type);
     Material opaque = materialOfType(type);
     opaque.specTrans = 0.0f;
-    EXPECT_EQ(isTransmissive(opaque), type == MaterialType::Glass) << materialTypeName(type);
-    EXPECT_EQ(isTransmissive(materialOfType(type)), type == MaterialType::Glass || type == MaterialType::Disney)
+    EXPECT_EQ(isTransmissive(opaque), type == MaterialType::Glass || type == MaterialType::Hair)
+        << materialTypeName(type);
+    EXPECT_EQ(isTransmissive(materialOfType(type)),
+              type == MaterialType::Glass || type == MaterialType::Disney || type == MaterialType::Hair)
         << materialTypeName(type);
   }
   EXPECT_FALSE(isDeltaModel(MaterialType::Mix));

@@ -11,6 +11,7 @@
 
 #include "app/scene_loading.h"
 #include "gpu_render.h"
+#include "kernel/bsdf/hair.h"
 #include "many_lights_scene.h"
 #include "render_comparison.h"
 #include "support/cutout_screen.h"
@@ -219,6 +220,34 @@ TEST(GpuIridescentFilms, AgreeWithTheCpuBackend) {
   textured.iridescenceTexture = textured.iridescenceThicknessTexture = int32_t(scene.textures.size() - 1);
   textured.iridescenceThicknessMinimum = 100.0f;
   expectBackendsAgree(scene, 141);
+}
+
+// Hair (pbrt-v4's HairBxDF, kernel/bsdf/hair.h): the gallery's Disney spheres become fibres wound round them, of
+// absorptions from none to dark brown and roughnesses of their own. The spheres get texture coordinates (u round
+// the vertical axis, v from pole to pole), from which the scene generates the tangents the fibres run along and
+// the kernel takes each point's offset across its fibre.
+TEST(GpuHair, AgreesWithTheCpuBackend) {
+  Scene scene = makeMaterialGallery();
+  size_t hair = 0;
+  for (size_t i = 0; i < scene.materials.size(); ++i) {
+    Material& m = scene.materials[i];
+    if (m.type != MaterialType::Disney) continue;
+    m.type = MaterialType::Hair;
+    m.fibreAbsorption = HairBsdf::absorptionOfMelanin(0.4f * float(i % 5), 0.3f * float(i % 3));
+    m.roughness = 0.2f + 0.15f * float(i % 4);
+    m.azimuthalRoughness = 0.25f + 0.2f * float(i % 3);
+    m.scaleTilt = i % 2 == 0 ? 2.0f : 0.0f;
+    m.ior = 1.55f;
+    ++hair;
+  }
+  ASSERT_GT(hair, 2u);
+  for (Mesh& mesh : scene.meshes) {
+    if (scene.materials[mesh.triangleMaterials[0]].type != MaterialType::Hair) continue;
+    mesh.uvs.clear();
+    for (Vec3 n : mesh.normals)
+      mesh.uvs.push_back({0.5f + std::atan2(n.z, n.x) / (2.0f * kPi), std::acos(std::clamp(n.y, -1.0f, 1.0f)) / kPi});
+  }
+  expectBackendsAgree(scene, 161);
 }
 
 // Khronos sample models for what the kernel does beyond the core model: normal maps steep enough that

@@ -65,7 +65,7 @@ struct BlinnPhongBsdf {
   CANDELA_FN bool hasTransmission() const { return false; }
   CANDELA_FN static bool transmits(const Material&) { return false; }
   CANDELA_FN static bool orientedByTangent(const Material&) { return false; }
-  CANDELA_FN static BlinnPhongBsdf fromMaterial(const Material& m, float /*eta*/) {
+  CANDELA_FN static BlinnPhongBsdf fromMaterial(const Material& m, float /*eta*/, Vec2 /*uv*/) {
     return {m.baseColor, m.specularColor, m.shininess};
   }
 

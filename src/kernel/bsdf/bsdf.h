@@ -26,14 +26,14 @@ class Bsdf {
 #define CANDELA_BUILD_MODEL_CASE(type, Model, name, shadingName) \
   case MaterialType::type:                                       \
     if (MaterialType::type == kFallbackType) break;              \
-    model_.as##type = Model::fromMaterial(m, eta);               \
+    model_.as##type = Model::fromMaterial(m, eta, si.uv);        \
     return;
       CANDELA_MATERIAL_MODELS(CANDELA_BUILD_MODEL_CASE)
 #undef CANDELA_BUILD_MODEL_CASE
       case MaterialType::Mix: break;  // never built: evaluateSurfaceMaterial resolves a mix first
     }
     type_ = kFallbackType;
-    model_.asDiffuse = LambertianBsdf::fromMaterial(m, eta);
+    model_.asDiffuse = LambertianBsdf::fromMaterial(m, eta, si.uv);
   }
 
   CANDELA_FN Vec3 toLocal(Vec3 w) const { return frame_.toLocal(w); }

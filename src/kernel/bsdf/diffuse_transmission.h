@@ -18,7 +18,7 @@ struct DiffuseTransmissionBsdf {
   CANDELA_FN bool hasTransmission() const { return maxComponent(transmittance) > 0.0f; }
   CANDELA_FN static bool transmits(const Material& m) { return maxComponent(m.transmittance) > 0.0f; }
   CANDELA_FN static bool orientedByTangent(const Material&) { return false; }
-  CANDELA_FN static DiffuseTransmissionBsdf fromMaterial(const Material& m, float /*eta*/) {
+  CANDELA_FN static DiffuseTransmissionBsdf fromMaterial(const Material& m, float /*eta*/, Vec2 /*uv*/) {
     return {m.baseColor, m.transmittance};
   }
 

@@ -13,7 +13,7 @@ struct LambertianBsdf {
   CANDELA_FN bool hasTransmission() const { return false; }
   CANDELA_FN static bool transmits(const Material&) { return false; }
   CANDELA_FN static bool orientedByTangent(const Material&) { return false; }
-  CANDELA_FN static LambertianBsdf fromMaterial(const Material& m, float /*eta*/) { return {m.baseColor}; }
+  CANDELA_FN static LambertianBsdf fromMaterial(const Material& m, float /*eta*/, Vec2 /*uv*/) { return {m.baseColor}; }
 
   CANDELA_FN Vec3 eval(Vec3 wo, Vec3 wi) const {
     return (wo.z > 0.0f && wi.z > 0.0f) ? albedo * kInvPi : Vec3{0, 0, 0};

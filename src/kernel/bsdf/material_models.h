@@ -6,6 +6,7 @@
 #include "kernel/bsdf/blinn_phong.h"
 #include "kernel/bsdf/diffuse_transmission.h"
 #include "kernel/bsdf/disney.h"
+#include "kernel/bsdf/hair.h"
 #include "kernel/bsdf/lambertian.h"
 #include "kernel/bsdf/pbr.h"
 #include "kernel/bsdf/specular.h"

@@ -17,7 +17,7 @@ struct MirrorBsdf {
   CANDELA_FN bool hasTransmission() const { return false; }
   CANDELA_FN static bool transmits(const Material&) { return false; }
   CANDELA_FN static bool orientedByTangent(const Material&) { return false; }
-  CANDELA_FN static MirrorBsdf fromMaterial(const Material& m, float /*eta*/) { return {m.specularColor}; }
+  CANDELA_FN static MirrorBsdf fromMaterial(const Material& m, float /*eta*/, Vec2 /*uv*/) { return {m.specularColor}; }
 
   CANDELA_FN Vec3 eval(Vec3, Vec3) const { return {0, 0, 0}; }
   CANDELA_FN float pdf(Vec3, Vec3) const { return 0.0f; }
@@ -47,7 +47,7 @@ struct SmoothDielectricBsdf {
   CANDELA_FN static bool orientedByTangent(const Material&) { return false; }
   // Tinted by the square root of the base colour at each crossing, so that a closed object transmits the base
   // colour.
-  CANDELA_FN static SmoothDielectricBsdf fromMaterial(const Material& m, float eta) {
+  CANDELA_FN static SmoothDielectricBsdf fromMaterial(const Material& m, float eta, Vec2 /*uv*/) {
     const Vec3 c = m.baseColor;
     return {eta, {sqrtf(fmaxf(0.0f, c.x)), sqrtf(fmaxf(0.0f, c.y)), sqrtf(fmaxf(0.0f, c.z))}};
   }

@@ -73,11 +73,30 @@ void checkMaterials(const Scene& scene) {
     if (uint32_t(m.alphaMode) > uint32_t(AlphaMode::Blend)) fail("a material has an unknown alpha mode");
     if (m.doubleSided > 1) fail("a material's double-sided flag is neither 0 nor 1");
     if (m.interfaceOnly > 1) fail("a material's interface flag is neither 0 nor 1");
-    if (!finite(m.baseColor) || !finite(m.emission) || !finite(m.specularColor) || !finite(m.transmittance))
+    if (!finite(m.baseColor) || !finite(m.emission) || !finite(m.specularColor) || !finite(m.transmittance) ||
+        !finite(m.fibreAbsorption))
       fail("a material has non-finite colours");
-    for (float x : {m.shininess, m.metallic, m.roughness, m.anisotropic, m.specular, m.specularTint, m.subsurface,
-                    m.sheen, m.sheenTint, m.clearcoat, m.clearcoatGloss, m.specTrans, m.ior, m.opacity, m.alphaCutoff,
-                    m.iridescence, m.iridescenceIor, m.iridescenceThickness, m.iridescenceThicknessMinimum})
+    for (float x : {m.shininess,
+                    m.metallic,
+                    m.roughness,
+                    m.anisotropic,
+                    m.specular,
+                    m.specularTint,
+                    m.subsurface,
+                    m.sheen,
+                    m.sheenTint,
+                    m.clearcoat,
+                    m.clearcoatGloss,
+                    m.specTrans,
+                    m.ior,
+                    m.opacity,
+                    m.alphaCutoff,
+                    m.iridescence,
+                    m.iridescenceIor,
+                    m.iridescenceThickness,
+                    m.iridescenceThicknessMinimum,
+                    m.azimuthalRoughness,
+                    m.scaleTilt})
       if (!finite(x)) fail("a material has non-finite parameters");
   }
   if (!scene.materialNames.empty() && scene.materialNames.size() != scene.materials.size())

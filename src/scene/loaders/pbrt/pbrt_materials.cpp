@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "scene/loaders/pbrt/pbrt_hair.h"
 #include "scene/loaders/pbrt/pbrt_spectra.h"
 #include "scene/loaders/pbrt/pbrt_subsurface.h"
 
@@ -192,6 +193,8 @@ Material PbrtMaterials::translate(const std::string& type, const PbrtParameters&
                     "a textured diffusetransmission 'transmittance' is rendered with its mean colour");
     m.transmittance =
         unitColour(textures_.meanColour(transmittance) * scale, params, "diffusetransmission: 'transmittance'");
+  } else if (type == "hair") {
+    m = pbrtHairMaterial(params, textures_, context_);
   } else if (type == "interface" || type.empty() || type == "none") {
     // The boundary of participating media (MediumInterface), which rays cross unchanged.
     m.interfaceOnly = 1;
