@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <random>
 #include <string>
 
 #include "io/load_diagnostics.h"
@@ -252,12 +253,47 @@ TEST(NanoVdbMedia, HostileFilesAreRefusedInOneLine) {
       {patched(good, grid + 296 + 88, std::nan("")), "has a non-finite index-to-world map"},
       {patched(good, firstValueAt, -1.0f), "has a negative or non-finite value (-1.0"},
       {corruptZip, "does not decompress"},
+      {patched(nanoVdbFile({varyingGrid()}, true), 16, uint64_t(1) << 32), "compressed bytes can hold"},
   };
   for (const auto& c : cases) {
     const std::string message = loadError(folder, c.file, c.reference);
     EXPECT_NE(message.find(c.expected), std::string::npos) << c.expected << ": " << message;
     EXPECT_NE(message.find("main.pbrt:"), std::string::npos) << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+}
+
+// Files damaged at random where their sizes and offsets are (headers, descriptions, GridData, the tree's and the
+// root's fields, node headers), in both codecs, are read or refused with a LoadError, never anything else; the
+// sanitizer builds check that no byte outside them is read.
+TEST(NanoVdbMedia, DamagedFilesAreReadOrRefused) {
+  TempFolder folder;
+  std::mt19937_64 random(11);
+  for (bool zip : {false, true}) {
+    const std::string original = nanoVdbFile({varyingGrid(), constantSlabGrid()}, zip);
+    for (int trial = 0; trial < 150; ++trial) {
+      std::string damaged = original;
+      for (int edit = 0, edits = 1 + int(random() % 6); edit < edits; ++edit) {
+        const size_t at = random() % std::min<size_t>(damaged.size(), 2048);
+        if (random() % 3 == 0 && at + 8 <= damaged.size()) {
+          const uint64_t v = random() >> (random() % 64);
+          std::memcpy(damaged.data() + at, &v, sizeof(v));
+        } else if (random() % 8 == 0) {
+          damaged.resize(at + 1);
+        } else {
+          damaged[at] = char(random());
+        }
+      }
+      const std::string path = folder.write("damaged.nvdb", damaged);
+      try {
+        const NanoVdbFile file(path);
+        for (const NanoVdbGridEntry& grid : file.grids()) {
+          std::vector<float> values;
+          appendNanoVdbDenseGrid(file.gridBytes(grid), path, grid.name, 16, values);
+        }
+      } catch (const LoadError&) {
+      }
+    }
   }
 }
 

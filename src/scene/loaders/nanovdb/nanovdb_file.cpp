@@ -16,6 +16,7 @@ constexpr uint64_t kHeaderBytes = 16;
 constexpr uint64_t kGridDescriptionBytes = 176;
 // The longest grid name NanoVDB writes (GridData's 256 characters) and a little room.
 constexpr uint32_t kMaxNameBytes = 1024;
+constexpr uint64_t kMaxDeflateRatio = 1032;
 
 template <typename T>
 T readAt(const std::vector<uint8_t>& bytes, uint64_t at) {
@@ -131,6 +132,10 @@ std::vector<uint8_t> NanoVdbFile::gridBytes(const NanoVdbGridEntry& grid) const 
   std::memcpy(&compressed, stored, 8);
   if (compressed > grid.storedBytes - 8)
     failLoad(path_, what + ": its compressed data runs beyond the grid's bytes: the file is corrupt");
+  // Deflate expands at most 1032 times (zlib's FAQ): a stated size beyond that is a lie, not to be allocated.
+  if (grid.gridBytes > compressed * kMaxDeflateRatio + 1024)
+    failLoad(path_, what + " states " + std::to_string(grid.gridBytes) + " bytes, more than its " +
+                        std::to_string(compressed) + " compressed bytes can hold");
   chargeLoadMemory(grid.gridBytes, path_, what);
   charged_.bytes += grid.gridBytes;
   std::vector<uint8_t> out(grid.gridBytes);

@@ -45,8 +45,9 @@ class NanoVdbFile {
   // The first grid named `name`, or nullptr.
   const NanoVdbGridEntry* find(const std::string& name) const;
   // The bytes of `grid` (a grid buffer: NanoVDB's GridData, tree and nodes), decompressed, their size charged to
-  // the load's memory budget first (as the file's are, until this object goes). Throws LoadError for a Blosc-compressed
-  // grid (no Blosc here) or a ZIP stream that does not decompress to the size its description states.
+  // the load's memory budget first (as the file's are, until this object goes). Throws LoadError for a
+  // Blosc-compressed grid (no Blosc here), or a ZIP stream that states more bytes than deflate can expand it to
+  // or does not decompress to the size its description states.
   std::vector<uint8_t> gridBytes(const NanoVdbGridEntry& grid) const;
 
   const std::string& path() const { return path_; }
