@@ -3,7 +3,8 @@
 // were written with), read without NanoVDB itself: a file is segments, each a 16-byte header (magic "NanoVDB0" or
 // "NanoVDB2", version, grid count, codec), then per grid a 176-byte description and its name, then the grids'
 // bytes (uncompressed, or each one zlib stream after its 8-byte size for the ZIP codec). Every size a file states
-// is checked against its length before anything is read or allocated.
+// is checked against its length before anything is read or allocated. Its own reader rather than NanoVDB's:
+// Debian packages no NanoVDB, and NanoVDB's io and tree accessors follow the offsets a file states unchecked.
 #include <cstdint>
 #include <string>
 #include <vector>
