@@ -43,23 +43,27 @@ TEST(PbrtMedia, HomogeneousMediaAndInterfacesAreRead) {
 }
 
 // The camera is in the outside medium current at the Camera directive; a name may be used before it is defined
-// (pbrt resolves names at the end), one medium type that is not rendered warns once and is vacuum, and a name
-// never defined is an error at its first use.
-TEST(PbrtMedia, CameraMediumForwardNamesAndUnrenderedTypes) {
+// (pbrt resolves names at the end), and a name never defined is an error at its first use.
+TEST(PbrtMedia, CameraMediumAndForwardNames) {
   LoadWarnings warnings;
   const Scene scene = loadText(
       "MediumInterface \"\" \"air\"\nCamera \"perspective\"\nWorldBegin\n"
-      "MakeNamedMedium \"smoke\" \"string type\" \"nanovdb\" \"string filename\" \"smoke.nvdb\"\n"
+      "MakeNamedMedium \"smoke\" \"string type\" \"homogeneous\" \"rgb sigma_a\" [0.5 0.5 0.5]\n"
       "MakeNamedMedium \"air\" \"string type\" \"homogeneous\" \"rgb sigma_s\" [0.1 0.1 0.1]\n"
       "MediumInterface \"smoke\" \"air\"\nShape \"sphere\"\n",
       &warnings);
-  ASSERT_EQ(scene.media.size(), 1u);
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages[0];
+  ASSERT_EQ(scene.media.size(), 2u);
   EXPECT_EQ(scene.cameraMedium, 0u);
   EXPECT_FLOAT_EQ(scene.media[0].sigmaA.x, 1.0f);  // pbrt's default
-  EXPECT_EQ(scene.instances[0].media.inside, kNoMedium);
+  EXPECT_FLOAT_EQ(scene.media[1].sigmaA.x, 0.5f);
+  EXPECT_EQ(scene.instances[0].media.inside, 1u);
   EXPECT_EQ(scene.instances[0].media.outside, 0u);
-  ASSERT_EQ(warnings.messages.size(), 1u);
-  EXPECT_NE(warnings.messages[0].find("'nanovdb' media are not rendered"), std::string::npos) << warnings.messages[0];
+  // A nanovdb medium names a file, which a scene read from memory may not.
+  EXPECT_NE(loadError("WorldBegin\nMakeNamedMedium \"smoke\" \"string type\" \"nanovdb\" \"string filename\" "
+                      "\"smoke.nvdb\"\n")
+                .find("test.pbrt:2: 'smoke.nvdb': a scene read from memory cannot refer to files"),
+            std::string::npos);
 
   EXPECT_NE(loadError("WorldBegin\nMediumInterface \"fog\"\nShape \"sphere\"\n")
                 .find("test.pbrt:2: medium 'fog' is not defined"),

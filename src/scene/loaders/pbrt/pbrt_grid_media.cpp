@@ -9,6 +9,7 @@
 #include <glm/matrix.hpp>
 
 #include "io/load_budget.h"
+#include "scene/loaders/pbrt/pbrt_nanovdb_medium.h"
 #include "scene/medium_grids.h"
 #include "scene/transform.h"
 
@@ -35,8 +36,8 @@ float nonNegative(const PbrtParameters& params, const char* name, float fallback
   return v;
 }
 
-// Where the grid sits: its box, in the medium's own space, and the transform into it.
-void placeGrid(const PbrtParameters& params, const glm::mat4& worldFromMedium, MediumGrid& grid) {
+// The box the grid fills in the medium's own space, pbrt's p0 and p1.
+void readBox(const PbrtParameters& params, MediumGrid& grid) {
   auto point = [&](const char* name, Vec3 fallback) {
     std::vector<Vec3> p = params.getVec3s(name);
     if (p.size() > 1) params.fail(std::string("medium: '") + name + "' needs one point");
@@ -44,12 +45,17 @@ void placeGrid(const PbrtParameters& params, const glm::mat4& worldFromMedium, M
   };
   grid.p0 = point("p0", {0, 0, 0});
   grid.p1 = point("p1", {1, 1, 1});
+}
+
+// Where the grid sits: its box must be finite and not empty, and the transform from world space into the box's
+// space must exist.
+void placeGrid(const PbrtParameters& params, const glm::mat4& worldFromGrid, MediumGrid& grid) {
   const Vec3 extent = grid.p1 - grid.p0;
   if (!isFinite(grid.p0) || !isFinite(grid.p1) || !(extent.x > 0.0f && extent.y > 0.0f && extent.z > 0.0f))
     params.fail("medium: its box from 'p0' to 'p1' must be finite and not empty");
-  const float det = glm::determinant(worldFromMedium);
+  const float det = glm::determinant(worldFromGrid);
   if (!(std::fabs(det) > 0.0f) || !std::isfinite(det)) params.fail("medium: its transform cannot be inverted");
-  grid.mediumFromWorld = toAffine(glm::inverse(worldFromMedium));
+  grid.mediumFromWorld = toAffine(glm::inverse(worldFromGrid));
   for (float v : grid.mediumFromWorld.m)
     if (!std::isfinite(v)) params.fail("medium: its transform cannot be inverted");
 }
@@ -101,15 +107,28 @@ std::vector<double> rgbNumbers(const PbrtParameters& params, const char* name) {
 
 }  // namespace
 
-bool isPbrtGridMedium(const std::string& type) { return type == "uniformgrid" || type == "rgbgrid" || type == "cloud"; }
+bool isPbrtGridMedium(const std::string& type) {
+  return type == "uniformgrid" || type == "rgbgrid" || type == "cloud" || type == "nanovdb";
+}
 
 Medium readPbrtGridMedium(const std::string& type, const std::string& name, const PbrtParameters& params,
-                          const glm::mat4& worldFromMedium, Scene& scene) {
+                          const glm::mat4& worldFromMedium, PbrtContext& context) {
+  Scene& scene = context.scene;
   Medium m;
   m.g = params.getFloat("g", 0.0f);
   if (!(std::fabs(m.g) < 1.0f)) params.fail("medium: 'g' must lie between -1 and 1");
   MediumGrid grid;
-  placeGrid(params, worldFromMedium, grid);
+  // A nanovdb grid's box is in its file's index space, the others' in the medium's space.
+  glm::mat4 worldFromGrid = worldFromMedium;
+  if (type == "nanovdb") {
+    const float scale = nonNegative(params, "scale", 1.0f);
+    m.sigmaA = colour(params, "sigma_a", {1, 1, 1}) * scale;
+    m.sigmaS = colour(params, "sigma_s", {1, 1, 1}) * scale;
+    worldFromGrid = worldFromMedium * readPbrtNanoVdbDensity(name, params, context, grid);
+  } else {
+    readBox(params, grid);
+  }
+  placeGrid(params, worldFromGrid, grid);
   if (type == "cloud") {
     // pbrt's CloudMedium takes no `scale`.
     grid.kind = MediumGridKind::Cloud;
@@ -135,7 +154,7 @@ Medium readPbrtGridMedium(const std::string& type, const std::string& name, cons
                     " values where nx*ny*nz = " + std::to_string(density.size()));
       grid.emission = appendSamples(params, name, "Lescale", leScale, scene);
     }
-  } else {
+  } else if (type == "rgbgrid") {
     grid.kind = MediumGridKind::Rgb;
     const float scale = nonNegative(params, "scale", 1.0f);
     m.sigmaA = m.sigmaS = Vec3{scale, scale, scale};
@@ -163,7 +182,7 @@ Medium readPbrtGridMedium(const std::string& type, const std::string& name, cons
   for (uint32_t i = 0; i < grid.mx * grid.my * grid.mz; ++i)
     majorant = std::max(majorant, scene.mediumGridValues[grid.majorants + i]);
   const glm::vec4 diagonal =
-      worldFromMedium * glm::vec4(grid.p1.x - grid.p0.x, grid.p1.y - grid.p0.y, grid.p1.z - grid.p0.z, 0.0f);
+      worldFromGrid * glm::vec4(grid.p1.x - grid.p0.x, grid.p1.y - grid.p0.y, grid.p1.z - grid.p0.z, 0.0f);
   const double depth = double(majorant) * double(glm::length(glm::vec3(diagonal)));
   if (!(depth <= kMaxOpticalDepth))
     params.fail("medium '" + name + "' is too dense to track: its largest sigma_t times its size is " +

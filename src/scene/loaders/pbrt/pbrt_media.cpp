@@ -52,14 +52,9 @@ void PbrtMedia::define(const std::string& name, const PbrtParameters& params, co
   Slot& slot = slots_[slotOf(name)];
   if (slot.defined) context_.warn("medium " + name, "medium '" + name + "' is defined again: the last one is used");
   slot.defined = true;
-  slot.rendered = type == "homogeneous" || isPbrtGridMedium(type);
   if (type.empty()) params.fail("MakeNamedMedium '" + name + "' needs a \"string type\"");
-  if (!slot.rendered) {
-    if (type != "nanovdb") params.fail("MakeNamedMedium: unknown medium type '" + type + "'");
-    params.markAllUsed();
-    context_.warn("medium " + type, "'" + type + "' media are not rendered: rays cross them as vacuum");
-    return;
-  }
+  if (type != "homogeneous" && !isPbrtGridMedium(type))
+    params.fail("MakeNamedMedium: unknown medium type '" + type + "'");
   if (isPbrtGridMedium(type)) {
     if (params.find("temperature")) {
       for (const char* unrendered : {"temperature", "temperaturecutoff", "temperatureoffset", "temperaturescale"})
@@ -67,7 +62,7 @@ void PbrtMedia::define(const std::string& name, const PbrtParameters& params, co
       context_.warn("medium temperature",
                     "uniformgrid 'temperature' grids are not rendered: the medium emits only 'Le'");
     }
-    slot.medium = readPbrtGridMedium(type, name, params, worldFromMedium, context_.scene);
+    slot.medium = readPbrtGridMedium(type, name, params, worldFromMedium, context_);
     return;
   }
   if (params.find("preset"))
@@ -86,11 +81,10 @@ uint32_t PbrtMedia::slot(const std::string& name, const std::string& file, size_
 }
 
 std::vector<uint32_t> PbrtMedia::finish(Scene& scene) {
-  std::vector<uint32_t> index(slots_.size(), kNoMedium);
+  std::vector<uint32_t> index(slots_.size());
   for (size_t i = 0; i < slots_.size(); ++i) {
     const Slot& slot = slots_[i];
     if (!slot.defined) failLoad(slot.file, slot.line, "medium '" + slot.name + "' is not defined");
-    if (!slot.rendered) continue;
     index[i] = uint32_t(scene.media.size());
     scene.media.push_back(slot.medium);
   }

@@ -15,8 +15,7 @@ namespace candela {
 // pbrt-v4's named media: MakeNamedMedium defines them, MediumInterface and the camera refer to them by name, and
 // pbrt resolves the names once the whole scene is read, so a name may be used before its definition. Each name
 // gets a slot when first defined or used; `finish` turns the slots into the scene's media and says where each
-// slot went. `homogeneous`, `uniformgrid`, `rgbgrid` and `cloud` media are rendered (pbrt_grid_media.h); `nanovdb`
-// is read as vacuum, with one warning.
+// slot went: `homogeneous`, `uniformgrid`, `rgbgrid`, `cloud` and `nanovdb` media (pbrt_grid_media.h).
 class PbrtMedia {
  public:
   explicit PbrtMedia(PbrtContext& context) : context_(context) {}
@@ -25,7 +24,7 @@ class PbrtMedia {
   void define(const std::string& name, const PbrtParameters& params, const glm::mat4& worldFromMedium);
   // The slot of medium `name`, used at file:line; kNoMedium for "" (vacuum).
   uint32_t slot(const std::string& name, const std::string& file, size_t line);
-  // Moves the rendered media into the scene; returns, per slot, the index in Scene::media or kNoMedium. Throws
+  // Moves the media into the scene; returns, per slot, the index in Scene::media. Throws
   // LoadError naming the first use of a medium never defined.
   std::vector<uint32_t> finish(Scene& scene);
 
@@ -35,7 +34,6 @@ class PbrtMedia {
     std::string file;  // where it was first used, for the error if it is never defined
     size_t line = 0;
     bool defined = false;
-    bool rendered = false;  // `medium` holds it; else vacuum
     Medium medium;
   };
   uint32_t slotOf(const std::string& name);
