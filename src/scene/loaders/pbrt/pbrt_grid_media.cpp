@@ -124,7 +124,7 @@ Medium readPbrtGridMedium(const std::string& type, const std::string& name, cons
     const float scale = nonNegative(params, "scale", 1.0f);
     m.sigmaA = colour(params, "sigma_a", {1, 1, 1}) * scale;
     m.sigmaS = colour(params, "sigma_s", {1, 1, 1}) * scale;
-    worldFromGrid = worldFromMedium * readPbrtNanoVdbDensity(name, params, context, grid);
+    worldFromGrid = worldFromMedium * readPbrtNanoVdbGrids(name, params, context, m, grid);
   } else {
     readBox(params, grid);
   }
