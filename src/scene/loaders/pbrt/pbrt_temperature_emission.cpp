@@ -31,8 +31,7 @@ Vec3 temperatureEmissionRgb(double kelvin) {
   // NaN falls here too.
   if (!(kelvin > kEmissionCutoffKelvin)) return {0, 0, 0};
   const std::vector<Vec3>& table = emissionTable();
-  const double at =
-      std::log2(std::min(kelvin, kEmissionMaxKelvin) / kEmissionCutoffKelvin) / kOctaves * double(kSteps);
+  const double at = std::log2(std::min(kelvin, kEmissionMaxKelvin) / kEmissionCutoffKelvin) / kOctaves * double(kSteps);
   const size_t i = std::min(size_t(at), kSteps - 1);
   const float f = float(std::min(at - double(i), 1.0));
   return table[i] * (1.0f - f) + table[i + 1] * f;
