@@ -10,6 +10,7 @@
 #include <random>
 #include <string>
 
+#include "app/scene_loading.h"
 #include "io/load_diagnostics.h"
 #include "media/media_render.h"
 #include "media/media_scenes.h"
@@ -277,6 +278,7 @@ TEST(NanoVdbMedia, ConstantTemperatureEmitsItsBlackbody) {
   EXPECT_TRUE(warnings.messages.empty()) << warnings.messages[0];
   ASSERT_EQ(scene.mediumGrids.size(), 1u);
   EXPECT_EQ(scene.mediumGrids[0].kind, MediumGridKind::Rgb);
+  EXPECT_TRUE(hasLightSource(scene));  // no warning that the image will be black
   const PixelStatistics stats = renderMediaScene(scene, 16, 9);
   EXPECT_EQ(stats.invalidSamples, 0u);
   auto expected = [&](float leScale, double kelvin) {
@@ -315,6 +317,7 @@ TEST(NanoVdbMedia, TemperaturesAtTheCutoffDoNotEmit) {
     EXPECT_TRUE(warnings.messages.empty()) << c.parameters << ": " << warnings.messages[0];
     ASSERT_EQ(scene.mediumGrids.size(), 1u);
     EXPECT_EQ(scene.mediumGrids[0].kind, c.emits ? MediumGridKind::Rgb : MediumGridKind::Density) << c.parameters;
+    EXPECT_EQ(hasLightSource(scene), c.emits) << c.parameters;
     if (c.emits) continue;
     EXPECT_EQ(scene.mediumGridValues.size(), 16u * 8 * 8 + 16 * 16 * 16) << "density and majorants alone";
     const ImageMean mean = imageMean(renderMediaScene(scene, 16, 3));
