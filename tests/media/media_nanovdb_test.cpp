@@ -439,8 +439,15 @@ TEST(NanoVdbMedia, OddTemperatureGridsAreRefusedOrDocumented) {
   EXPECT_EQ(huge.mediumGridValues[huge.mediumGrids[0].emission + 2], temperatureEmissionRgb(kEmissionMaxKelvin).z);
   EXPECT_TRUE(warnings.messages.empty()) << warnings.messages[0];
 
+  // A map that differs in the last digits places the voxels where the density's does; one that moves them by
+  // 1/50 of a voxel (at the box's far corner) does not.
+  TestNanoVdbGrid close = constantTemperatureGrid(3000.0f);
+  close.voxelSize[0] *= 1.0 + 1e-9;
+  close.translation[2] += 1e-9;
+  EXPECT_EQ(load({constantSlabGrid(), close}, "", warnings).mediumGrids[0].kind, MediumGridKind::Rgb);
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages[0];
   TestNanoVdbGrid moved = constantTemperatureGrid(3000.0f);
-  moved.translation[2] += 0.01;
+  moved.voxelSize[0] *= 1.0 + 0.02 / 15;
   LoadWarnings movedWarnings;
   EXPECT_EQ(load({constantSlabGrid(), moved}, "", movedWarnings).mediumGrids[0].kind, MediumGridKind::Density);
   ASSERT_EQ(movedWarnings.messages.size(), 1u);

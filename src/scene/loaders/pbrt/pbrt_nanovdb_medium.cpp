@@ -1,6 +1,11 @@
 #include "scene/loaders/pbrt/pbrt_nanovdb_medium.h"
 
 #include <algorithm>
+#include <cmath>
+
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+#include <glm/vec3.hpp>
 
 #include "io/load_budget.h"
 #include "io/load_diagnostics.h"
@@ -21,6 +26,29 @@ std::string gridNames(const NanoVdbFile& file) {
   std::string names;
   for (const NanoVdbGridEntry& g : file.grids()) names += (names.empty() ? "'" : ", '") + g.name + "'";
   return names;
+}
+
+// Whether the index-to-world map `other` puts every voxel of `dense`'s index box within a hundredth of a voxel of
+// where `dense`'s own map puts it (checked at the box's corners: the maps are affine).
+bool sameVoxels(const NanoVdbDenseGrid& dense, const double (&other)[12]) {
+  const auto linear = [](const double(&m)[12]) {
+    return glm::dmat3(m[0], m[4], m[8], m[1], m[5], m[9], m[2], m[6], m[10]);  // column by column
+  };
+  const auto translation = [](const double(&m)[12]) { return glm::dvec3(m[3], m[7], m[11]); };
+  const glm::dmat3 otherLinear = linear(other);
+  const double det = glm::determinant(otherLinear);
+  if (!(std::fabs(det) > 0.0) || !std::isfinite(det)) return false;
+  const glm::dmat3 otherInverse = glm::inverse(otherLinear);
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::dvec3 index((corner & 1) ? dense.indexMax[0] : dense.indexMin[0],
+                           (corner & 2) ? dense.indexMax[1] : dense.indexMin[1],
+                           (corner & 4) ? dense.indexMax[2] : dense.indexMin[2]);
+    const glm::dvec3 world = linear(dense.worldFromIndex) * index + translation(dense.worldFromIndex);
+    const glm::dvec3 there = otherInverse * (world - translation(other));
+    for (int a = 0; a < 3; ++a)
+      if (!(std::fabs(there[a] - index[a]) <= 0.01)) return false;
+  }
+  return true;
 }
 
 // Offsets are 32-bit, and the majorant grid follows the grid's samples.
@@ -97,10 +125,9 @@ glm::mat4 readPbrtNanoVdbGrids(const std::string& name, const PbrtParameters& pa
                            " values; only float temperatures are read");
       const NanoVdbDenseGrid sampled = appendNanoVdbDenseGridLike(file.gridBytes(*temperature), path, temperatureName,
                                                                   dense, NanoVdbValues::Finite, temperatures);
-      // Both grids are read over the density's index box: that takes their voxels to the same places only where
-      // their maps are one.
-      if (!std::equal(std::begin(sampled.worldFromIndex), std::end(sampled.worldFromIndex),
-                      std::begin(dense.worldFromIndex))) {
+      // Both grids are read over the density's index box, which takes the temperature's voxels to where its own
+      // map puts them only where the two maps agree.
+      if (!sameVoxels(dense, sampled.worldFromIndex)) {
         context.warn(
             "nanovdb temperature " + name,
             "nanovdb medium '" + name + "': its grids '" + gridName + "' and '" + temperatureName +
