@@ -10,8 +10,9 @@ namespace candela {
 // pbrt-v4's cutoff: a medium at or below this temperature (after offset and scale) emits nothing.
 constexpr double kEmissionCutoffKelvin = 100.0;
 // The hottest temperature whose blackbody is evaluated: hotter samples, up to the largest float and beyond,
-// glow as a blackbody of this temperature does (pbrt-v4 evaluates Planck's law in float, which overflows near
-// here). Its peak lies at 29 nm, so its emission in the visible is faint and blue.
+// glow as a blackbody of this temperature does (pbrt-v4 evaluates Planck's law in float, whose wavelength^5 at
+// the peak leaves float's normal range about here). Its peak lies at 29 nm, so its emission in the visible is faint and
+// blue.
 constexpr double kEmissionMaxKelvin = 1e5;
 
 // How a medium's temperatures map to kelvins: pbrt-v4's `temperatureoffset` (which defaults to
