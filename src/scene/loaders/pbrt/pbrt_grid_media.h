@@ -15,8 +15,8 @@ namespace candela {
 // `worldFromMedium` is the transform in effect at MakeNamedMedium. A nanovdb medium's density and emission are its
 // file's grids as dense grids (pbrt_nanovdb_medium.h). Throws LoadError (one line, at the directive) for a grid whose
 // size disagrees with its data, absurd sizes, a negative or non-finite sample or parameter, an empty box, or a
-// density too high to track (an optical depth above 1e6 across the box).
-// A uniformgrid's `temperature` grid is left to the caller (it is not rendered).
+// density too high to track (an optical depth above 1e6 across the box). A uniformgrid's `temperature` grid emits
+// as pbrt-v4's GridMedium's does (pbrt_temperature_emission.h).
 Medium readPbrtGridMedium(const std::string& type, const std::string& name, const PbrtParameters& params,
                           const glm::mat4& worldFromMedium, PbrtContext& context);
 
