@@ -117,9 +117,7 @@ void readTemperatureGrid(const PbrtParameters& params, const std::string& name, 
   if (temperature.size() != density.size())
     params.fail("uniformgrid medium: 'temperature' has " + std::to_string(temperature.size()) +
                 " values where nx*ny*nz = " + std::to_string(density.size()));
-  TemperatureToKelvin toKelvin;
-  toKelvin.offset = params.getFloat("temperatureoffset", params.getFloat("temperaturecutoff", 0.0f));
-  toKelvin.scale = params.getFloat("temperaturescale", 1.0f);
+  const TemperatureToKelvin toKelvin = readTemperatureToKelvin(params);
   const bool emits = std::any_of(temperature.begin(), temperature.end(),
                                  [&](double t) { return toKelvin(float(t)) > kEmissionCutoffKelvin; });
   if (!emits) {

@@ -96,10 +96,7 @@ glm::mat4 readPbrtNanoVdbGrids(const std::string& name, const PbrtParameters& pa
   const std::string temperatureName = params.getString("temperaturename", "temperature");
   const float leScale = params.getFloat("Lescale", 1.0f);
   if (leScale < 0.0f) params.fail("nanovdb medium '" + name + "': 'Lescale' must not be negative");
-  // As pbrt-v4: `temperaturecutoff` is the offset where `temperatureoffset` is not given.
-  TemperatureToKelvin toKelvin;
-  toKelvin.offset = params.getFloat("temperatureoffset", params.getFloat("temperaturecutoff", 0.0f));
-  toKelvin.scale = params.getFloat("temperaturescale", 1.0f);
+  const TemperatureToKelvin toKelvin = readTemperatureToKelvin(params);
   const std::string path = context.resolve(reference, params.file, params.line);
   Scene& scene = context.scene;
   NanoVdbDenseGrid dense;

@@ -27,6 +27,13 @@ const std::vector<Vec3>& emissionTable() {
 
 }  // namespace
 
+TemperatureToKelvin readTemperatureToKelvin(const PbrtParameters& params) {
+  TemperatureToKelvin toKelvin;
+  toKelvin.offset = params.getFloat("temperatureoffset", params.getFloat("temperaturecutoff", 0.0f));
+  toKelvin.scale = params.getFloat("temperaturescale", 1.0f);
+  return toKelvin;
+}
+
 Vec3 temperatureEmissionRgb(double kelvin) {
   // NaN falls here too.
   if (!(kelvin > kEmissionCutoffKelvin)) return {0, 0, 0};

@@ -4,6 +4,7 @@
 // BlackbodySpectrum at T (1 at its peak wavelength; pbrt_spectra.h) times `Lescale`. candela turns each sample of
 // the grid into its RGB emission once, when the scene is loaded.
 #include "core/math.h"
+#include "scene/loaders/pbrt/pbrt_parameters.h"
 
 namespace candela {
 
@@ -22,6 +23,10 @@ struct TemperatureToKelvin {
   double scale = 1.0;
   double operator()(float temperature) const { return (double(temperature) - offset) * scale; }
 };
+
+// A medium's `temperatureoffset` (default: its `temperaturecutoff`, default 0, as pbrt-v4 reads them: the cutoff is
+// no cutoff) and `temperaturescale` (default 1).
+TemperatureToKelvin readTemperatureToKelvin(const PbrtParameters& params);
 
 // The linear sRGB emission (before `Lescale`) of a blackbody at `kelvin`: 0 at or below the cutoff, the
 // blackbody at kEmissionMaxKelvin above that, else pbrt's blackbody, interpolated in a table of 512 temperatures
