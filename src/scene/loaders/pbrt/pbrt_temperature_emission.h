@@ -1,8 +1,8 @@
 #pragma once
-// Emission from temperature, as pbrt-v4's NanoVDBMedium computes it at a point: the temperature t read from the
-// grid becomes T = (t - offset) x scale kelvins; at or below 100 K the medium emits nothing, above it Le is pbrt's
-// BlackbodySpectrum at T (1 at its peak wavelength; pbrt_spectra.h) times `Lescale`. candela turns each sample of
-// the grid into its RGB emission once, when the scene is loaded.
+// Emission from temperature, as pbrt-v4's NanoVDBMedium and GridMedium compute it at a point: the temperature t read
+// from the grid becomes T = (t - offset) x scale kelvins; at or below 100 K the medium emits nothing, above it Le is
+// pbrt's BlackbodySpectrum at T (1 at its peak wavelength; pbrt_spectra.h) times `Lescale`. candela turns each sample
+// of the grid into its RGB emission once, when the scene is loaded.
 #include "core/math.h"
 #include "scene/loaders/pbrt/pbrt_parameters.h"
 
@@ -10,10 +10,9 @@ namespace candela {
 
 // pbrt-v4's cutoff: a medium at or below this temperature (after offset and scale) emits nothing.
 constexpr double kEmissionCutoffKelvin = 100.0;
-// The hottest temperature whose blackbody is evaluated: hotter samples, up to the largest float and beyond,
-// glow as a blackbody of this temperature does (pbrt-v4 evaluates Planck's law in float, whose wavelength^5 at
-// the peak leaves float's normal range about here). Its peak lies at 29 nm, so its emission in the visible is faint and
-// blue.
+// The hottest temperature whose blackbody is evaluated: hotter samples, up to the largest float and beyond, glow as
+// a blackbody of this temperature does (pbrt-v4 evaluates Planck's law in float, whose wavelength^5 at the peak
+// leaves float's normal range about here). Its peak lies at 29 nm: its emission in the visible is faint and blue.
 constexpr double kEmissionMaxKelvin = 1e5;
 
 // How a medium's temperatures map to kelvins: pbrt-v4's `temperatureoffset` (which defaults to
