@@ -120,6 +120,8 @@ bool hasLightSource(const Scene& scene) {
   if (env.intensity > 0.0f && (env.hasMap() || !isBlack(env.radiance))) return true;
   for (const PunctualLight& light : scene.punctualLights)
     if (!isBlack(light.intensity)) return true;
+  for (const Medium& medium : scene.media)
+    if (!isBlack(medium.emission)) return true;
   std::vector<bool> emissive(scene.materials.size());
   for (size_t m = 0; m < scene.materials.size(); ++m) emissive[m] = !isBlack(scene.materials[m].emission);
   std::vector<bool> instanced(scene.meshes.size());
@@ -211,7 +213,7 @@ Scene loadScene(const std::string& spec, const SceneLoadOptions& options) {
   repairScene(scene, spec, warnings);
   if (!hasLightSource(scene))
     warnings.add(spec,
-                 "the scene has no light source (no emissive surface, punctual light or environment): the "
+                 "the scene has no light source (no emissive surface or medium, punctual light or environment): the "
                  "image will be black; light it with --env");
   if (options.printWarnings)
     for (const std::string& w : warnings.messages)

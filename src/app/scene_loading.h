@@ -27,7 +27,7 @@ struct SceneLoadOptions {
 // of memory included.
 Scene loadScene(const std::string& spec, const SceneLoadOptions& options = {});
 
-// Whether anything in the scene emits: an emissive material, a punctual light or the environment.
+// Whether anything in the scene emits: an emissive material, a punctual light, the environment or a medium.
 bool hasLightSource(const Scene& scene);
 
 // Places the camera outside the scene's bounds, looking at their centre slightly from above, far enough back

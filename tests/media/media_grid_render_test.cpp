@@ -12,6 +12,7 @@
 #include "media/media_render.h"
 #include "media/media_scenes.h"
 #include "scene/cache/scene_serialization.h"
+#include "scene/loaders/pbrt/pbrt_spectra.h"
 #include "support/pbrt_text.h"
 
 namespace candela::test {
@@ -122,18 +123,53 @@ TEST(PbrtGridMedia, TheMediumTransformPlacesTheGrid) {
   EXPECT_NEAR(m.point({0, 4, 3}).y, 1.0f, 1e-6f);
 }
 
-// A temperature grid is not rendered: one warning says so, and its parameters are not reported one by one.
-TEST(PbrtGridMedia, TemperatureGridsWarnOnce) {
+// A uniformgrid with a temperature grid emits as pbrt-v4's GridMedium: in the dark, a slab of constant density
+// and temperature that only absorbs is Lescale x the blackbody of (t - offset) x scale x (1 - exp(-sigma_a d)) in
+// every pixel and channel, the same test rejecting the scale left out.
+TEST(PbrtGridMedia, TemperatureGridsEmitTheirBlackbody) {
+  std::string dark = kOrthographicView;
+  const std::string light = "LightSource \"infinite\" \"rgb L\" [1 1 1]\n";
+  dark.replace(dark.find(light), light.size(), "");
   LoadWarnings warnings;
-  const Scene scene = loadText(std::string(kOrthographicView) +
-                                   uniformGrid("\"float temperature\" [1 2 3 4 5 6 7 8] \"float temperaturescale\" 100 "
-                                               "\"float temperatureoffset\" 1") +
+  const Scene scene = loadText(dark +
+                                   uniformGrid("\"float temperature\" [8 8 8 8 8 8 8 8] \"float temperaturescale\" 400 "
+                                               "\"float temperatureoffset\" 1 \"float Lescale\" [3 3 3 3 3 3 3 3]") +
                                    pbrtInterfaceBox("smoke", 0.5f),
                                &warnings);
-  EXPECT_EQ(scene.mediumGrids.size(), 1u);
-  ASSERT_EQ(warnings.messages.size(), 1u);
-  EXPECT_NE(warnings.messages[0].find("'temperature' grids are not rendered"), std::string::npos)
-      << warnings.messages[0];
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages[0];
+  ASSERT_EQ(scene.mediumGrids.size(), 1u);
+  EXPECT_EQ(scene.mediumGrids[0].kind, MediumGridKind::Rgb);
+  const PixelStatistics stats = render(scene, 16);
+  EXPECT_EQ(stats.invalidSamples, 0u);
+  auto expected = [](double kelvin) {
+    const Vec3 le = peakNormalisedBlackbodyRgb(kelvin) * 3.0f;
+    return Vec3{le.x * (1.0f - std::exp(-1.0f * 0.5f)), le.y * (1.0f - std::exp(-2.0f * 0.5f)),
+                le.z * (1.0f - std::exp(-4.0f * 0.5f))};
+  };
+  std::string worst;
+  EXPECT_EQ(countRejectedPixels(stats, expected((8 - 1) * 400), kBatches, kAlpha, worst), 0u) << worst;
+  EXPECT_GT(countRejectedPixels(stats, expected(8 * 400), kBatches, kAlpha, worst), 0u);
+
+  // Colder than the cutoff: no emission, the density grid alone. `Le` beside a temperature grid, or a grid of
+  // another size, is refused as pbrt-v4 refuses it.
+  const Scene cold =
+      loadText(dark + uniformGrid("\"float temperature\" [8 8 8 8 8 8 8 8]") + pbrtInterfaceBox("smoke", 0.5f));
+  EXPECT_EQ(cold.mediumGrids[0].kind, MediumGridKind::Density);
+  EXPECT_EQ(cold.media[0].emission.x, 0.0f);
+  for (const auto& [extra, expectedError] :
+       {std::pair<std::string, std::string>{"\"float temperature\" [8 8 8 8 8 8 8 8] \"rgb Le\" [1 1 1]",
+                                            "'Le' and 'temperature' are both given"},
+        {"\"float temperature\" [8 8 8]", "'temperature' has 3 values where nx*ny*nz = 8"},
+        {"\"float temperature\" [800 8 8 8 8 8 8 8] \"float Lescale\" [1 1 1 1 1 1 1 -1]",
+         "'Lescale' has a negative value"}}) {
+    std::string message = "(no error)";
+    try {
+      loadText(dark + uniformGrid(extra) + pbrtInterfaceBox("smoke", 0.5f));
+    } catch (const LoadError& e) {
+      message = e.what();
+    }
+    EXPECT_NE(message.find(expectedError), std::string::npos) << message;
+  }
 }
 
 // rgbgrid and cloud media load with their parameters and render without an invalid sample; each attenuates the

@@ -1,13 +1,16 @@
 // pbrt-v4's `nanovdb` medium: .nvdb files written here (media/nanovdb_files.h) read into the dense grid of
-// uniformgrid media, rendered against the homogeneous medium they equal, downsampled keeping their mean, and
-// hostile files refused in one line.
+// uniformgrid media, rendered against the homogeneous medium they equal, downsampled keeping their mean, emitting
+// from their temperature grids as pbrt-v4's blackbody, and hostile files refused in one line.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <string>
 
+#include "app/scene_loading.h"
 #include "io/load_diagnostics.h"
 #include "media/media_render.h"
 #include "media/media_scenes.h"
@@ -15,6 +18,8 @@
 #include "scene/loaders/nanovdb/nanovdb_dense_grid.h"
 #include "scene/loaders/nanovdb/nanovdb_file.h"
 #include "scene/loaders/pbrt/pbrt_loader.h"
+#include "scene/loaders/pbrt/pbrt_spectra.h"
+#include "scene/loaders/pbrt/pbrt_temperature_emission.h"
 #include "scene/scene_test_files.h"
 
 namespace candela::test {
@@ -192,20 +197,276 @@ TEST(NanoVdbMedia, DownsamplingKeepsTheMean) {
       << warnings.messages[0];
 }
 
-// A temperature grid beside the density is not rendered: one warning says so.
-TEST(NanoVdbMedia, TemperatureGridsWarnOnce) {
+// The slab scene of slabScene in the dark: no light, so that what reaches the camera is the medium's emission.
+std::string darkSlabScene(const std::string& medium, float depth) {
+  std::string scene = slabScene(medium, depth);
+  const std::string light = "LightSource \"infinite\" \"rgb L\" [1 1 1]\n";
+  return scene.replace(scene.find(light), light.size(), "");
+}
+
+// constantSlabGrid's voxels, all at `temperature`, as the grid "temperature".
+TestNanoVdbGrid constantTemperatureGrid(float temperature) {
+  TestNanoVdbGrid g = constantSlabGrid();
+  g.name = "temperature";
+  g.values.assign(g.values.size(), temperature);
+  return g;
+}
+
+// pbrt-v4's blackbody, 1 at its peak, against Planck's law integrated here against Wyman, Sloan and Shirley's fit
+// of the CIE y curve (its luminance; its colour is a blackbody light's), and the table the
+// loader reads it from within 1e-4 of it where it is not negligible; 0 at and below 100 K, finite and the blackbody
+// of 1e5 K beyond that.
+TEST(TemperatureEmission, IsPbrtsBlackbodyOnePeak) {
+  // (Below about 1900 K the colour lies outside sRGB's gamut: its negative channels are clamped.)
+  for (double kelvin : {2000.0, 3000.0, 5000.0, 6500.0, 10000.0, 30000.0}) {
+    double y = 0.0, ySum = 0.0;
+    const double peak = 2.8977721e6 / kelvin, c2 = 1.4387769e7;
+    for (double lambda = 360.0; lambda <= 830.0; lambda += 1.0) {
+      auto lobe = [&](double mu, double below, double above) {
+        const double t = (lambda - mu) / (lambda < mu ? below : above);
+        return std::exp(-0.5 * t * t);
+      };
+      const double match = 0.821 * lobe(568.8, 46.9, 40.5) + 0.286 * lobe(530.9, 16.3, 31.1);
+      y += match * std::pow(peak / lambda, 5.0) * std::expm1(c2 / 2.8977721e6) / std::expm1(c2 / (lambda * kelvin));
+      ySum += match;
+    }
+    const Vec3 rgb = peakNormalisedBlackbodyRgb(kelvin);
+    EXPECT_NEAR(luminance(rgb), y / ySum, 2e-3 * y / ySum) << kelvin << " K";
+    // The colour of a blackbody light (luminance 1) at the same temperature.
+    const Vec3 light = blackbodyRgb(float(kelvin)) * luminance(rgb);
+    EXPECT_NEAR(rgb.x, light.x, 2e-3f * light.x) << kelvin << " K";
+    EXPECT_NEAR(rgb.z, light.z, 2e-3f * light.x) << kelvin << " K";
+  }
+  double worst = 0.0;
+  for (double kelvin = 101.0; kelvin < 1.2e5; kelvin *= 1.0123) {
+    const Vec3 exact = peakNormalisedBlackbodyRgb(std::min(kelvin, kEmissionMaxKelvin)),
+               table = temperatureEmissionRgb(kelvin);
+    for (auto channel : {&Vec3::x, &Vec3::y, &Vec3::z}) {
+      const double e = exact.*channel, t = table.*channel;
+      worst = std::max(worst, std::fabs(t - e) / std::max(e, 1e-3));
+    }
+  }
+  EXPECT_LT(worst, 1e-4);
+  for (double cold : {-5.0, 0.0, 50.0, 100.0, double(std::nan(""))}) {
+    const Vec3 none = temperatureEmissionRgb(cold);
+    EXPECT_EQ(none.x + none.y + none.z, 0.0f) << cold;
+  }
+  const Vec3 hottest = peakNormalisedBlackbodyRgb(kEmissionMaxKelvin);
+  for (double hot : {2e5, 1e30, double(std::numeric_limits<float>::max()) * 1e10}) {
+    const Vec3 capped = temperatureEmissionRgb(hot);
+    EXPECT_TRUE(isFinite(capped));
+    EXPECT_NEAR(capped.z, hottest.z, 1e-7f);
+  }
+  EXPECT_GT(hottest.z, hottest.x);
+}
+
+// A slab of constant density and temperature that only absorbs and emits, in the dark, is the emission-absorption
+// solution in every pixel and channel: Lescale x the blackbody of (t - offset) x scale x (1 - exp(-sigma_a d)). The
+// same test rejects the images of the offset, the scale or Lescale left out.
+TEST(NanoVdbMedia, ConstantTemperatureEmitsItsBlackbody) {
   TempFolder folder;
-  TestNanoVdbGrid temperature = varyingGrid();
-  temperature.name = "temperature";
+  const Vec3 sigmaA{0.5f, 1.0f, 2.0f};
+  const float depth = 0.5f;
   LoadWarnings warnings;
   const Scene scene =
       loadWithFile(folder,
-                   slabScene(nanoVdbMedium("smoke.nvdb", "\"float Lescale\" 2 \"float temperaturescale\" 3"), 0.5f),
-                   nanoVdbFile({varyingGrid(), temperature}), &warnings);
-  EXPECT_EQ(scene.mediumGrids.size(), 1u);
-  ASSERT_EQ(warnings.messages.size(), 1u);
-  EXPECT_NE(warnings.messages[0].find("nanovdb 'temperature' grids are not rendered"), std::string::npos)
-      << warnings.messages[0];
+                   darkSlabScene(nanoVdbMedium("smoke.nvdb",
+                                               "\"rgb sigma_a\" [0.5 1 2] \"rgb sigma_s\" [0 0 0] \"float Lescale\" 2 "
+                                               "\"float temperatureoffset\" 500 \"float temperaturescale\" 5"),
+                                 depth),
+                   nanoVdbFile({constantSlabGrid(), constantTemperatureGrid(1100.0f)}), &warnings);
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages[0];
+  ASSERT_EQ(scene.mediumGrids.size(), 1u);
+  EXPECT_EQ(scene.mediumGrids[0].kind, MediumGridKind::Rgb);
+  EXPECT_TRUE(hasLightSource(scene));  // no warning that the image will be black
+  const PixelStatistics stats = renderMediaScene(scene, 16, 9);
+  EXPECT_EQ(stats.invalidSamples, 0u);
+  auto expected = [&](float leScale, double kelvin) {
+    const Vec3 le = peakNormalisedBlackbodyRgb(kelvin) * leScale;
+    return Vec3{le.x * (1.0f - std::exp(-sigmaA.x * depth)), le.y * (1.0f - std::exp(-sigmaA.y * depth)),
+                le.z * (1.0f - std::exp(-sigmaA.z * depth))};
+  };
+  std::string worst;
+  EXPECT_EQ(countRejectedPixels(stats, expected(2.0f, (1100.0 - 500.0) * 5.0), kMediaBatches, 0.01, worst), 0u)
+      << worst;
+  EXPECT_GT(countRejectedPixels(stats, expected(2.0f, 1100.0 * 5.0), kMediaBatches, 0.01, worst), 0u);
+  EXPECT_GT(countRejectedPixels(stats, expected(2.0f, 1100.0 - 500.0), kMediaBatches, 0.01, worst), 0u);
+  EXPECT_GT(countRejectedPixels(stats, expected(1.0f, (1100.0 - 500.0) * 5.0), kMediaBatches, 0.01, worst), 0u);
+}
+
+// As pbrt-v4: at or below 100 K after offset and scale a medium emits nothing (and keeps its density grid alone),
+// and `temperaturecutoff` is the offset where `temperatureoffset` is not given.
+TEST(NanoVdbMedia, TemperaturesAtTheCutoffDoNotEmit) {
+  TempFolder folder;
+  const std::string file = nanoVdbFile({constantSlabGrid(), constantTemperatureGrid(1100.0f)});
+  const struct {
+    std::string parameters;
+    bool emits;
+  } cases[] = {
+      {"\"float temperatureoffset\" 1000", false},
+      {"\"float temperatureoffset\" 999", true},
+      {"\"float temperaturecutoff\" 1000", false},
+      {"\"float temperaturecutoff\" 1000 \"float temperatureoffset\" 0", true},
+      {"\"float temperaturescale\" 0.09", false},
+      {"\"float Lescale\" 0", false},
+  };
+  for (const auto& c : cases) {
+    LoadWarnings warnings;
+    const Scene scene =
+        loadWithFile(folder, darkSlabScene(nanoVdbMedium("smoke.nvdb", c.parameters), 0.5f), file, &warnings);
+    EXPECT_TRUE(warnings.messages.empty()) << c.parameters << ": " << warnings.messages[0];
+    ASSERT_EQ(scene.mediumGrids.size(), 1u);
+    EXPECT_EQ(scene.mediumGrids[0].kind, c.emits ? MediumGridKind::Rgb : MediumGridKind::Density) << c.parameters;
+    EXPECT_EQ(hasLightSource(scene), c.emits) << c.parameters;
+    if (c.emits) continue;
+    EXPECT_EQ(scene.mediumGridValues.size(), 16u * 8 * 8 + 16 * 16 * 16) << "density and majorants alone";
+    const ImageMean mean = imageMean(renderMediaScene(scene, 16, 3));
+    EXPECT_EQ(mean.mean, 0.0) << c.parameters;
+  }
+}
+
+// Emission is sigma_a x Le, as in pbrt-v4: a hot grid where the density is 0 stays dark. A file with a temperature
+// grid but no density is refused, as pbrt-v4 refuses it.
+TEST(NanoVdbMedia, TemperatureWithoutDensityDoesNotEmit) {
+  TempFolder folder;
+  TestNanoVdbGrid empty = constantSlabGrid();
+  empty.values.assign(empty.values.size(), 0.0f);
+  const Scene scene = loadWithFile(folder, darkSlabScene(nanoVdbMedium("smoke.nvdb"), 0.5f),
+                                   nanoVdbFile({empty, constantTemperatureGrid(3000.0f)}));
+  EXPECT_EQ(scene.mediumGrids[0].kind, MediumGridKind::Rgb);
+  EXPECT_EQ(imageMean(renderMediaScene(scene, 16, 3)).mean, 0.0);
+  EXPECT_NE(loadError(folder, nanoVdbFile({constantTemperatureGrid(3000.0f)}))
+                .find("has no grid named 'density' (its grids: 'temperature')"),
+            std::string::npos);
+}
+
+// The temperature is read over the density's cells: where its own box is elsewhere, its voxels land on the
+// density's samples of the same index, its background elsewhere; downsampled, it is averaged over the same cells.
+TEST(NanoVdbMedia, TemperatureIsSampledOverTheDensitysCells) {
+  TempFolder folder;
+  TestNanoVdbGrid temperature = varyingGrid();  // 5 x 3 x 4 from (-3, 2, 7)
+  temperature.name = "temperature";
+  temperature.origin = {-1, 2, 7};
+  temperature.size = {2, 1, 1};
+  temperature.values = {2000.0f, 4000.0f};
+  temperature.background = 500.0f;
+  const Scene scene =
+      loadWithFile(folder, slabScene(nanoVdbMedium("smoke.nvdb"), 0.5f), nanoVdbFile({varyingGrid(), temperature}));
+  const MediumGrid& grid = scene.mediumGrids[0];
+  ASSERT_EQ(grid.kind, MediumGridKind::Rgb);
+  ASSERT_EQ(grid.nx, 5u);
+  const float* density = scene.mediumGridValues.data() + grid.sigmaA;
+  const float* emission = scene.mediumGridValues.data() + grid.emission;
+  for (size_t i = 0; i < varyingGrid().values.size(); ++i) {
+    ASSERT_EQ(density[3 * i], varyingGrid().values[i]);
+    ASSERT_EQ(density[3 * i + 2], varyingGrid().values[i]);
+    // Sample i is voxel (-3 + x, 2 + y, 7 + z).
+    const size_t x = i % 5, y = (i / 5) % 3, z = i / 15;
+    const double kelvin = (y == 0 && z == 0 && x == 2) ? 2000.0 : (y == 0 && z == 0 && x == 3) ? 4000.0 : 500.0;
+    const Vec3 le = temperatureEmissionRgb(kelvin);
+    EXPECT_EQ(emission[3 * i], le.x) << i;
+    EXPECT_EQ(emission[3 * i + 2], le.z) << i;
+  }
+  EXPECT_EQ(scene.mediumGrids[0].sigmaS, grid.sigmaA);
+
+  // Downsampled, it averages as a grid of the density's box with the same values would.
+  const std::string path = folder.write("both.nvdb", nanoVdbFile({varyingGrid(), temperature}));
+  const NanoVdbFile file(path);
+  std::vector<float> densities, temperatures, reference;
+  const NanoVdbDenseGrid dense = appendNanoVdbDenseGrid(file.gridBytes(file.grids()[0]), path, "density", 2, densities);
+  const NanoVdbDenseGrid sampled = appendNanoVdbDenseGridLike(file.gridBytes(file.grids()[1]), path, "temperature",
+                                                              dense, NanoVdbValues::Finite, temperatures);
+  EXPECT_EQ(sampled.nx, dense.nx);
+  EXPECT_EQ(sampled.indexMin[0], dense.indexMin[0]);
+  // The same voxels as a grid over the density's whole box, background included, read on its own.
+  TestNanoVdbGrid whole = varyingGrid();
+  for (uint32_t i = 0; i < whole.values.size(); ++i) {
+    const uint32_t x = i % 5, y = (i / 5) % 3, z = i / 15;
+    whole.values[i] = (y == 0 && z == 0 && x == 2) ? 2000.0f : (y == 0 && z == 0 && x == 3) ? 4000.0f : 500.0f;
+  }
+  const std::string wholePath = folder.write("whole.nvdb", nanoVdbFile({whole}));
+  const NanoVdbFile wholeFile(wholePath);
+  appendNanoVdbDenseGrid(wholeFile.gridBytes(wholeFile.grids()[0]), wholePath, "density", 2, reference);
+  ASSERT_EQ(temperatures.size(), reference.size());
+  for (size_t i = 0; i < reference.size(); ++i) EXPECT_NEAR(temperatures[i], reference[i], 1e-3f) << i;
+}
+
+// Temperature grids that cannot be read as such refuse the file in one line; those that can but say odd things
+// load as documented: negative temperatures are colder than the cutoff, huge ones glow as 1e5 K, a grid placed by
+// another map than the density's or a missing grid named by the scene leave the medium dark with a warning, a
+// missing grid of the default name leaves it dark silently (as pbrt-v4).
+TEST(NanoVdbMedia, OddTemperatureGridsAreRefusedOrDocumented) {
+  TempFolder folder;
+  TestNanoVdbGrid vectors = constantTemperatureGrid(1000.0f);
+  vectors.valueType = 6;
+  TestNanoVdbGrid levelSet = constantTemperatureGrid(1000.0f);
+  levelSet.gridClass = 1;
+  TestNanoVdbGrid notANumber = constantTemperatureGrid(1000.0f);
+  notANumber.values[5] = std::nanf("");
+  const struct {
+    std::string file, expected, parameters = "";
+  } refused[] = {
+      {nanoVdbFile({constantSlabGrid(), vectors}), "grid 'temperature' holds Vec3f values; only float temperatures"},
+      {nanoVdbFile({constantSlabGrid(), levelSet}), "grid 'temperature' is a level set, not a fog volume"},
+      {nanoVdbFile({constantSlabGrid(), notANumber}), "grid 'temperature' has a non-finite value (nan)"},
+      {nanoVdbFile({constantSlabGrid()}), "'Lescale' must not be negative", "\"float Lescale\" -1"},
+  };
+  for (const auto& c : refused) {
+    std::string message = "(no error)";
+    try {
+      loadWithFile(folder, slabScene(nanoVdbMedium("smoke.nvdb", c.parameters), 0.5f), c.file);
+    } catch (const LoadError& e) {
+      message = e.what();
+    }
+    EXPECT_NE(message.find(c.expected), std::string::npos) << c.expected << ": " << message;
+    EXPECT_NE(message.find("main.pbrt:"), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+
+  auto load = [&](const std::vector<TestNanoVdbGrid>& grids, const std::string& parameters, LoadWarnings& warnings) {
+    return loadWithFile(folder, slabScene(nanoVdbMedium("smoke.nvdb", parameters), 0.5f), nanoVdbFile(grids),
+                        &warnings);
+  };
+  LoadWarnings warnings;
+  EXPECT_EQ(load({constantSlabGrid(), constantTemperatureGrid(-3000.0f)}, "", warnings).mediumGrids[0].kind,
+            MediumGridKind::Density);
+  const Scene negativeOffset =
+      load({constantSlabGrid(), constantTemperatureGrid(-3000.0f)}, "\"float temperatureoffset\" -6000", warnings);
+  EXPECT_EQ(negativeOffset.mediumGrids[0].kind, MediumGridKind::Rgb);
+  EXPECT_EQ(negativeOffset.mediumGridValues[negativeOffset.mediumGrids[0].emission], temperatureEmissionRgb(3000).x);
+  const Scene huge =
+      load({constantSlabGrid(), constantTemperatureGrid(3e38f)}, "\"float temperaturescale\" 1e38", warnings);
+  EXPECT_EQ(huge.mediumGridValues[huge.mediumGrids[0].emission + 2], temperatureEmissionRgb(kEmissionMaxKelvin).z);
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages[0];
+
+  // A map that differs in the last digits places the voxels where the density's does; one that moves them by
+  // 1/50 of a voxel (at the box's far corner) does not.
+  TestNanoVdbGrid close = constantTemperatureGrid(3000.0f);
+  close.voxelSize[0] *= 1.0 + 1e-9;
+  close.translation[2] += 1e-9;
+  EXPECT_EQ(load({constantSlabGrid(), close}, "", warnings).mediumGrids[0].kind, MediumGridKind::Rgb);
+  EXPECT_TRUE(warnings.messages.empty()) << warnings.messages[0];
+  TestNanoVdbGrid moved = constantTemperatureGrid(3000.0f);
+  moved.voxelSize[0] *= 1.0 + 0.02 / 15;
+  LoadWarnings movedWarnings;
+  EXPECT_EQ(load({constantSlabGrid(), moved}, "", movedWarnings).mediumGrids[0].kind, MediumGridKind::Density);
+  ASSERT_EQ(movedWarnings.messages.size(), 1u);
+  EXPECT_NE(movedWarnings.messages[0].find("'density' and 'temperature' have different index-to-world maps"),
+            std::string::npos)
+      << movedWarnings.messages[0];
+
+  LoadWarnings missing;
+  EXPECT_EQ(load({constantSlabGrid()}, "", missing).mediumGrids[0].kind, MediumGridKind::Density);
+  EXPECT_TRUE(missing.messages.empty()) << missing.messages[0];
+  EXPECT_EQ(load({constantSlabGrid(), constantTemperatureGrid(3000.0f)}, "\"string temperaturename\" \"heat\"", missing)
+                .mediumGrids[0]
+                .kind,
+            MediumGridKind::Density);
+  ASSERT_EQ(missing.messages.size(), 1u);
+  EXPECT_NE(missing.messages[0].find("has no grid named 'heat' (its grids: 'density', 'temperature'): the medium "
+                                     "does not emit"),
+            std::string::npos)
+      << missing.messages[0];
 }
 
 template <typename T>

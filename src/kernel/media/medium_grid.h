@@ -1,16 +1,16 @@
 #pragma once
-// Heterogeneous media: pbrt-v4's GridMedium (`uniformgrid`), RGBGridMedium (`rgbgrid`) and CloudMedium (`cloud`).
-// A Medium whose `grid` names a MediumGrid varies over the box [p0, p1] of its own space (the transform in effect
-// where the scene defined it) and is vacuum outside; its coefficients at a point are the Medium's times the grid's
-// factors there:
+// Heterogeneous media: pbrt-v4's GridMedium (`uniformgrid`; NanoVDBMedium, `nanovdb`, is made one when loaded),
+// RGBGridMedium (`rgbgrid`) and CloudMedium (`cloud`). A Medium whose `grid` names a MediumGrid varies over the box
+// [p0, p1] of its own space (the transform in effect where the scene defined it) and is vacuum outside; its
+// coefficients at a point are the Medium's times the grid's factors there:
 //   uniformgrid: sigma_a = Medium::sigmaA x density(p), sigma_s likewise (pbrt's `scale` folded into the Medium),
 //                Le = Medium::emission x Lescale(p) (a grid, or 1 where the file gives none);
 //   rgbgrid:     sigma_a = Medium::sigmaA x its RGB grid (1 where absent), sigma_s likewise, Le = Medium::emission
-//                x its RGB grid (0 where absent); the Medium holds `scale` and `Lescale` as greys;
+//                x its RGB grid (0 where absent); the Medium holds `scale` and `Lescale` as greys. Media that emit
+//                from a temperature are this kind too: density a grey grid, Le each sample's blackbody at load;
 //   cloud:       sigma_a and sigma_s times pbrt's procedural density (cloud_density.h), no emission.
 // The samples live in the scene's one `mediumGridValues` array; a grid names its pieces by offset. Lookups are
 // trilinear between samples at voxel centres and fall to 0 outside them, as pbrt's SampledGrid.
-//
 // Each grid also has a majorant grid over the same box (pbrt's MajorantGrid: 16^3 voxels, 1 for the cloud): a
 // voxel holds a bound of every channel of sigma_t anywhere inside it, one grey number, which the tracking
 // (grid_tracking.h) samples against.

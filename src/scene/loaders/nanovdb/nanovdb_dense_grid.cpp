@@ -71,23 +71,31 @@ struct AxisCells {
 
 class DenseGridWalk {
  public:
-  DenseGridWalk(const std::vector<uint8_t>& bytes, const std::string& file, const std::string& gridName)
-      : bytes_(bytes), file_(file), grid_(gridName) {}
+  DenseGridWalk(const std::vector<uint8_t>& bytes, const std::string& file, const std::string& gridName,
+                NanoVdbValues accepted)
+      : bytes_(bytes), file_(file), grid_(gridName), accepted_(accepted) {}
 
-  NanoVdbDenseGrid run(uint32_t maxResolution, std::vector<float>& values) {
+  // The samples over the grid's own index box (`like` null), or over the cells of `like`, another grid's.
+  NanoVdbDenseGrid run(const NanoVdbDenseGrid* like, uint32_t maxResolution, std::vector<float>& values) {
     NanoVdbDenseGrid dense;
     readHeader(dense);
     const uint64_t rootAt = readTree();
+    const uint32_t likeCells[3] = {like ? like->nx : 0, like ? like->ny : 0, like ? like->nz : 0};
     for (int a = 0; a < 3; ++a) {
-      dense.indexMin[a] = read<int32_t>(rootAt + 4 * uint64_t(a));
-      dense.indexMax[a] = read<int32_t>(rootAt + 12 + 4 * uint64_t(a));
+      if (like) {
+        dense.indexMin[a] = like->indexMin[a];
+        dense.indexMax[a] = like->indexMax[a];
+      } else {
+        dense.indexMin[a] = read<int32_t>(rootAt + 4 * uint64_t(a));
+        dense.indexMax[a] = read<int32_t>(rootAt + 12 + 4 * uint64_t(a));
+      }
       lo_[a] = dense.indexMin[a];
       if (lo_[a] > int64_t(dense.indexMax[a])) fail("has no active voxels");
       if (std::max(-lo_[a], int64_t(dense.indexMax[a])) > kMaxIndex) fail("has voxels beyond 2^24 from its origin");
       const int64_t n = int64_t(dense.indexMax[a]) - lo_[a] + 1;
       if (n > kMaxVoxelsPerSide) fail("has a bounding box of " + std::to_string(n) + " voxels a side, more than 2^20");
       hi_[a] = int64_t(dense.indexMax[a]) + 1;
-      const uint64_t m = std::min<uint64_t>(uint64_t(n), maxResolution);
+      const uint64_t m = std::min<uint64_t>(uint64_t(n), like ? std::max<uint32_t>(likeCells[a], 1) : maxResolution);
       axes_.emplace_back(uint64_t(n), m);
       dense.downsampled = dense.downsampled || m < uint64_t(n);
     }
@@ -118,10 +126,14 @@ class DenseGridWalk {
     return v;
   }
 
-  // A value the dense grid takes in: a fog volume's densities are finite and not negative.
-  float density(uint64_t at) const {
+  // A value the dense grid takes in: finite, and not negative for a density.
+  float value(uint64_t at) const {
     const float v = read<float>(at);
-    if (!std::isfinite(v) || v < 0.0f) fail("has a negative or non-finite value (" + std::to_string(v) + ")");
+    if (accepted_ == NanoVdbValues::Finite) {
+      if (!std::isfinite(v)) fail("has a non-finite value (" + std::to_string(v) + ")");
+    } else if (!std::isfinite(v) || v < 0.0f) {
+      fail("has a negative or non-finite value (" + std::to_string(v) + ")");
+    }
     return v;
   }
 
@@ -133,7 +145,7 @@ class DenseGridWalk {
     if (read<uint64_t>(kGridSizeAt) > bytes_.size()) fail("states more bytes than it has");
     const uint32_t type = read<uint32_t>(kGridTypeAt), gridClass = read<uint32_t>(kGridClassAt);
     if (type != kNanoVdbFloat) fail("holds " + nanoVdbTypeName(type) + " values; only float grids are read");
-    // As pbrt-v4: a density is a fog volume (or a grid of no stated class).
+    // As pbrt-v4: the grids of a medium are fog volumes (or grids of no stated class).
     if (gridClass != kNanoVdbClassFogVolume && gridClass != kNanoVdbClassUnknown)
       fail("is a " + gridClassName(gridClass) + ", not a fog volume");
     for (int row = 0; row < 3; ++row) {
@@ -237,7 +249,7 @@ class DenseGridWalk {
     const uint32_t tiles = read<uint32_t>(rootAt + 24);
     // Where no root tile is, the grid is its background value: added over the whole box, taken back under the
     // tiles, which say what is there.
-    const float background = density(rootAt + kRootBackgroundAt);
+    const float background = value(rootAt + kRootBackgroundAt);
     const int64_t whole[3] = {lo_[0], lo_[1], lo_[2]};
     addCube(whole, kMaxVoxelsPerSide, background);
     std::vector<uint64_t> keys(tiles);
@@ -255,7 +267,7 @@ class DenseGridWalk {
       addCube(origin, kRootTileVoxels, -background);
       const int64_t offset = read<int64_t>(tileAt + 8);
       if (offset == 0)
-        addCube(origin, kRootTileVoxels, density(tileAt + kRootTileValueAt));
+        addCube(origin, kRootTileVoxels, value(tileAt + kRootTileValueAt));
       else
         walkUpper(child(rootAt, offset, upper_, "upper node"), origin);
     }
@@ -271,7 +283,7 @@ class DenseGridWalk {
       const uint64_t entry = at + kUpperTableAt + 8 * uint64_t(n);
       const bool isChild = (read<uint32_t>(at + kUpperChildMaskAt + 4 * uint64_t(n >> 5)) >> (n & 31)) & 1;
       if (!isChild) {
-        if (touchesBox(o, kUpperTileVoxels)) addCube(o, kUpperTileVoxels, density(entry));
+        if (touchesBox(o, kUpperTileVoxels)) addCube(o, kUpperTileVoxels, value(entry));
         continue;
       }
       const uint64_t lowerAt = child(at, read<int64_t>(entry), lower_, "lower node");
@@ -287,7 +299,7 @@ class DenseGridWalk {
       const uint64_t entry = at + kLowerTableAt + 8 * uint64_t(n);
       const bool isChild = (read<uint32_t>(at + kLowerChildMaskAt + 4 * uint64_t(n >> 5)) >> (n & 31)) & 1;
       if (!isChild) {
-        if (touchesBox(o, kLowerTileVoxels)) addCube(o, kLowerTileVoxels, density(entry));
+        if (touchesBox(o, kLowerTileVoxels)) addCube(o, kLowerTileVoxels, value(entry));
         continue;
       }
       const uint64_t leafAt = child(at, read<int64_t>(entry), leaves_, "leaf");
@@ -295,7 +307,7 @@ class DenseGridWalk {
       for (uint32_t v = 0; v < 512; ++v) {
         const int64_t x = o[0] + (v >> 6), y = o[1] + ((v >> 3) & 7), z = o[2] + (v & 7);
         if (x < lo_[0] || y < lo_[1] || z < lo_[2] || x >= hi_[0] || y >= hi_[1] || z >= hi_[2]) continue;
-        addVoxel(x, y, z, density(leafAt + kLeafValuesAt + 4 * uint64_t(v)));
+        addVoxel(x, y, z, value(leafAt + kLeafValuesAt + 4 * uint64_t(v)));
       }
     }
   }
@@ -303,6 +315,7 @@ class DenseGridWalk {
   const std::vector<uint8_t>& bytes_;
   const std::string& file_;
   const std::string& grid_;
+  const NanoVdbValues accepted_;
   NodeLevel upper_, lower_, leaves_;
   int64_t lo_[3] = {0, 0, 0}, hi_[3] = {0, 0, 0};  // the index box, [lo, hi)
   std::vector<AxisCells> axes_;
@@ -314,7 +327,14 @@ class DenseGridWalk {
 NanoVdbDenseGrid appendNanoVdbDenseGrid(const std::vector<uint8_t>& grid, const std::string& file,
                                         const std::string& gridName, uint32_t maxResolution,
                                         std::vector<float>& values) {
-  return DenseGridWalk(grid, file, gridName).run(std::max<uint32_t>(maxResolution, 1), values);
+  return DenseGridWalk(grid, file, gridName, NanoVdbValues::NotNegative)
+      .run(nullptr, std::max<uint32_t>(maxResolution, 1), values);
+}
+
+NanoVdbDenseGrid appendNanoVdbDenseGridLike(const std::vector<uint8_t>& grid, const std::string& file,
+                                            const std::string& gridName, const NanoVdbDenseGrid& like,
+                                            NanoVdbValues accepted, std::vector<float>& values) {
+  return DenseGridWalk(grid, file, gridName, accepted).run(&like, 0, values);
 }
 
 }  // namespace candela

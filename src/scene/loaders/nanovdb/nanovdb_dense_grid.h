@@ -22,6 +22,9 @@ struct NanoVdbDenseGrid {
   uint64_t offset = 0;       // where its nx ny nz samples (x fastest) begin in the values appended to
 };
 
+// The values a grid may hold: a density's are finite and not negative, a temperature's finite.
+enum class NanoVdbValues { NotNegative, Finite };
+
 // Appends the dense samples of the float grid in `grid` (the bytes of one grid, NanoVdbFile::gridBytes) to
 // `values`, charged to the load's memory budget before they are allocated. Sample (i, j, k) is the average of the
 // voxels of the index box's cell (i, j, k) when the box is cut into nx ny nz equal cells; without downsampling it
@@ -32,5 +35,13 @@ struct NanoVdbDenseGrid {
 NanoVdbDenseGrid appendNanoVdbDenseGrid(const std::vector<uint8_t>& grid, const std::string& file,
                                         const std::string& gridName, uint32_t maxResolution,
                                         std::vector<float>& values);
+
+// The same for a second grid of a file, sampled over the cells of the first one's dense grid `like`: the same index
+// box cut into the same nx ny nz cells whatever the grid's own box, the grid's background where it has no voxels.
+// The result states `like`'s box and size and the grid's own index-to-world map, which the caller compares with
+// `like`'s. Values are checked as `accepted` says.
+NanoVdbDenseGrid appendNanoVdbDenseGridLike(const std::vector<uint8_t>& grid, const std::string& file,
+                                            const std::string& gridName, const NanoVdbDenseGrid& like,
+                                            NanoVdbValues accepted, std::vector<float>& values);
 
 }  // namespace candela

@@ -10,6 +10,7 @@
 
 #include "io/load_budget.h"
 #include "scene/loaders/pbrt/pbrt_nanovdb_medium.h"
+#include "scene/loaders/pbrt/pbrt_temperature_emission.h"
 #include "scene/medium_grids.h"
 #include "scene/transform.h"
 
@@ -76,22 +77,67 @@ uint64_t readResolution(const PbrtParameters& params, const std::string& what, s
   return samples;
 }
 
-// Appends a parameter's numbers to the scene's grid samples, charged to the load's budget; returns their offset.
-uint32_t appendSamples(const PbrtParameters& params, const std::string& mediumName, const char* parameter,
-                       const std::vector<double>& numbers, Scene& scene) {
+// Appends `count` samples, value(i) each, to the scene's grid samples, charged to the load's budget; returns
+// their offset. `parameter` names them in messages.
+template <typename Value>
+uint32_t appendSamples(const PbrtParameters& params, const std::string& mediumName, const char* parameter, size_t count,
+                       Value value, Scene& scene) {
   // Offsets are 32-bit, and the majorant grid follows.
   const uint64_t majorantRoom = uint64_t(kMajorantGridResolution) * kMajorantGridResolution * kMajorantGridResolution;
-  if (scene.mediumGridValues.size() + numbers.size() + majorantRoom >= uint64_t(kNoGridValues))
+  if (scene.mediumGridValues.size() + count + majorantRoom >= uint64_t(kNoGridValues))
     params.fail("medium '" + mediumName + "': the scene's grids hold more than 2^32 samples");
-  chargeLoadMemory(numbers.size() * sizeof(float), params.file + ":" + std::to_string(params.line),
+  chargeLoadMemory(count * sizeof(float), params.file + ":" + std::to_string(params.line),
                    "medium '" + mediumName + "' " + parameter);
   const uint32_t offset = uint32_t(scene.mediumGridValues.size());
-  for (double v : numbers) {
+  for (size_t i = 0; i < count; ++i) {
+    const double v = value(i);
     if (!std::isfinite(v) || v < 0.0 || v > double(std::numeric_limits<float>::max()))
       params.fail("medium '" + mediumName + "': '" + parameter + "' has a negative or non-finite value");
     scene.mediumGridValues.push_back(float(v));
   }
   return offset;
+}
+
+// Appends a parameter's numbers to the scene's grid samples.
+uint32_t appendSamples(const PbrtParameters& params, const std::string& mediumName, const char* parameter,
+                       const std::vector<double>& numbers, Scene& scene) {
+  return appendSamples(
+      params, mediumName, parameter, numbers.size(), [&](size_t i) { return numbers[i]; }, scene);
+}
+
+// pbrt-v4's GridMedium with a `temperature` grid (as many values as `density`): Le is `Lescale` (a grid, or 1) x
+// the blackbody of each sample's temperature (pbrt_temperature_emission.h: `temperatureoffset` or
+// `temperaturecutoff`, `temperaturescale`). A medium where some sample is hotter than the cutoff takes rgbgrid's
+// form, as an emitting nanovdb medium does (pbrt_nanovdb_medium.h): the density as a grey that sigma_a and sigma_s
+// both scale, then each sample's RGB emission. Otherwise it keeps its density grid alone and does not emit.
+void readTemperatureGrid(const PbrtParameters& params, const std::string& name, const std::vector<double>& density,
+                         const std::vector<double>& temperature, const std::vector<double>& leScale, Medium& m,
+                         MediumGrid& grid, Scene& scene) {
+  if (params.find("Le")) params.fail("uniformgrid medium '" + name + "': 'Le' and 'temperature' are both given");
+  if (temperature.size() != density.size())
+    params.fail("uniformgrid medium: 'temperature' has " + std::to_string(temperature.size()) +
+                " values where nx*ny*nz = " + std::to_string(density.size()));
+  const TemperatureToKelvin toKelvin = readTemperatureToKelvin(params);
+  const bool emits = std::any_of(temperature.begin(), temperature.end(),
+                                 [&](double t) { return toKelvin(float(t)) > kEmissionCutoffKelvin; });
+  if (!emits) {
+    grid.density = appendSamples(params, name, "density", density, scene);
+    return;
+  }
+  for (double s : leScale)
+    if (s < 0.0) params.fail("uniformgrid medium '" + name + "': 'Lescale' has a negative value");
+  grid.kind = MediumGridKind::Rgb;
+  grid.sigmaA = grid.sigmaS = appendSamples(
+      params, name, "density", 3 * density.size(), [&](size_t i) { return density[i / 3]; }, scene);
+  grid.emission = appendSamples(
+      params, name, "temperature", 3 * density.size(),
+      [&](size_t i) {
+        const Vec3 le = temperatureEmissionRgb(toKelvin(float(temperature[i / 3])));
+        const double channel = i % 3 == 0 ? le.x : i % 3 == 1 ? le.y : le.z;
+        return channel * (leScale.empty() ? 1.0 : leScale[i / 3]);
+      },
+      scene);
+  m.emission = Vec3{1, 1, 1};
 }
 
 // An rgb array parameter's numbers (3 per sample), or none where absent.
@@ -124,7 +170,7 @@ Medium readPbrtGridMedium(const std::string& type, const std::string& name, cons
     const float scale = nonNegative(params, "scale", 1.0f);
     m.sigmaA = colour(params, "sigma_a", {1, 1, 1}) * scale;
     m.sigmaS = colour(params, "sigma_s", {1, 1, 1}) * scale;
-    worldFromGrid = worldFromMedium * readPbrtNanoVdbDensity(name, params, context, grid);
+    worldFromGrid = worldFromMedium * readPbrtNanoVdbGrids(name, params, context, m, grid);
   } else {
     readBox(params, grid);
   }
@@ -145,14 +191,17 @@ Medium readPbrtGridMedium(const std::string& type, const std::string& name, cons
     const std::vector<double> density = params.getNumbers("density");
     if (density.empty()) params.fail("uniformgrid medium '" + name + "' needs \"density\" values");
     readResolution(params, "'density'", density.size(), 1, grid);
-    grid.density = appendSamples(params, name, "density", density, scene);
-    m.emission = colour(params, "Le", {0, 0, 0});
     const std::vector<double> leScale = params.getNumbers("Lescale");
-    if (!leScale.empty()) {
-      if (leScale.size() != density.size())
-        params.fail("uniformgrid medium: 'Lescale' has " + std::to_string(leScale.size()) +
-                    " values where nx*ny*nz = " + std::to_string(density.size()));
-      grid.emission = appendSamples(params, name, "Lescale", leScale, scene);
+    if (!leScale.empty() && leScale.size() != density.size())
+      params.fail("uniformgrid medium: 'Lescale' has " + std::to_string(leScale.size()) +
+                  " values where nx*ny*nz = " + std::to_string(density.size()));
+    const std::vector<double> temperature = params.getNumbers("temperature");
+    if (!temperature.empty()) {
+      readTemperatureGrid(params, name, density, temperature, leScale, m, grid, scene);
+    } else {
+      grid.density = appendSamples(params, name, "density", density, scene);
+      m.emission = colour(params, "Le", {0, 0, 0});
+      if (!leScale.empty()) grid.emission = appendSamples(params, name, "Lescale", leScale, scene);
     }
   } else if (type == "rgbgrid") {
     grid.kind = MediumGridKind::Rgb;

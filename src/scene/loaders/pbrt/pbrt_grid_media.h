@@ -12,11 +12,11 @@ namespace candela {
 // pbrt-v4's heterogeneous media, `uniformgrid`, `rgbgrid`, `cloud` and `nanovdb` (MakeNamedMedium `type`), with
 // pbrt's parameter names and defaults: their grid (kernel/media/medium_grid.h) and its samples go into the scene,
 // charged to the load's memory budget, with the majorant grid built; the returned Medium names the grid.
-// `worldFromMedium` is the transform in effect at MakeNamedMedium. A nanovdb medium's density is its file's grid
-// as a dense grid (pbrt_nanovdb_medium.h). Throws LoadError (one line, at the directive) for a grid whose
+// `worldFromMedium` is the transform in effect at MakeNamedMedium. A nanovdb medium's density and emission are its
+// file's grids as dense grids (pbrt_nanovdb_medium.h). Throws LoadError (one line, at the directive) for a grid whose
 // size disagrees with its data, absurd sizes, a negative or non-finite sample or parameter, an empty box, or a
-// density too high to track (an optical depth above 1e6 across the box).
-// A uniformgrid's `temperature` grid is left to the caller (it is not rendered).
+// density too high to track (an optical depth above 1e6 across the box). A uniformgrid's `temperature` grid emits
+// as pbrt-v4's GridMedium's does (pbrt_temperature_emission.h).
 Medium readPbrtGridMedium(const std::string& type, const std::string& name, const PbrtParameters& params,
                           const glm::mat4& worldFromMedium, PbrtContext& context);
 

@@ -56,12 +56,6 @@ void PbrtMedia::define(const std::string& name, const PbrtParameters& params, co
   if (type != "homogeneous" && !isPbrtGridMedium(type))
     params.fail("MakeNamedMedium: unknown medium type '" + type + "'");
   if (isPbrtGridMedium(type)) {
-    if (params.find("temperature")) {
-      for (const char* unrendered : {"temperature", "temperaturecutoff", "temperatureoffset", "temperaturescale"})
-        if (const PbrtParameter* p = params.find(unrendered)) p->used = true;
-      context_.warn("medium temperature",
-                    "uniformgrid 'temperature' grids are not rendered: the medium emits only 'Le'");
-    }
     slot.medium = readPbrtGridMedium(type, name, params, worldFromMedium, context_);
     return;
   }

@@ -1,9 +1,17 @@
 #include "scene/loaders/pbrt/pbrt_nanovdb_medium.h"
 
+#include <algorithm>
+#include <cmath>
+
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+#include <glm/vec3.hpp>
+
 #include "io/load_budget.h"
 #include "io/load_diagnostics.h"
 #include "scene/loaders/nanovdb/nanovdb_dense_grid.h"
 #include "scene/loaders/nanovdb/nanovdb_file.h"
+#include "scene/loaders/pbrt/pbrt_temperature_emission.h"
 
 namespace candela {
 
@@ -13,43 +21,125 @@ std::string size3(uint64_t x, uint64_t y, uint64_t z) {
   return std::to_string(x) + " x " + std::to_string(y) + " x " + std::to_string(z);
 }
 
+// The file's grids' names, quoted, for messages.
+std::string gridNames(const NanoVdbFile& file) {
+  std::string names;
+  for (const NanoVdbGridEntry& g : file.grids()) names += (names.empty() ? "'" : ", '") + g.name + "'";
+  return names;
+}
+
+// Whether the index-to-world map `other` puts every voxel of `dense`'s index box within a hundredth of a voxel of
+// where `dense`'s own map puts it (checked at the box's corners: the maps are affine).
+bool sameVoxels(const NanoVdbDenseGrid& dense, const double (&other)[12]) {
+  const auto linear = [](const double(&m)[12]) {
+    return glm::dmat3(m[0], m[4], m[8], m[1], m[5], m[9], m[2], m[6], m[10]);  // column by column
+  };
+  const auto translation = [](const double(&m)[12]) { return glm::dvec3(m[3], m[7], m[11]); };
+  const glm::dmat3 otherLinear = linear(other);
+  const double det = glm::determinant(otherLinear);
+  if (!(std::fabs(det) > 0.0) || !std::isfinite(det)) return false;
+  const glm::dmat3 otherInverse = glm::inverse(otherLinear);
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::dvec3 index((corner & 1) ? dense.indexMax[0] : dense.indexMin[0],
+                           (corner & 2) ? dense.indexMax[1] : dense.indexMin[1],
+                           (corner & 4) ? dense.indexMax[2] : dense.indexMin[2]);
+    const glm::dvec3 world = linear(dense.worldFromIndex) * index + translation(dense.worldFromIndex);
+    const glm::dvec3 there = otherInverse * (world - translation(other));
+    for (int a = 0; a < 3; ++a)
+      if (!(std::fabs(there[a] - index[a]) <= 0.01)) return false;
+  }
+  return true;
+}
+
+// Offsets are 32-bit, and the majorant grid follows the grid's samples.
+void checkRoom(const PbrtParameters& params, const std::string& name, uint64_t values) {
+  const uint64_t majorantRoom = uint64_t(kMajorantGridResolution) * kMajorantGridResolution * kMajorantGridResolution;
+  if (values + majorantRoom >= uint64_t(kNoGridValues))
+    params.fail("medium '" + name + "': the scene's grids hold more than 2^32 samples");
+}
+
+// Turns the medium's `count` densities, the last samples of `values` from `offset`, into rgbgrid's form (kernel/
+// media/medium_grid.h): each density three times, a grey that sigma_a and sigma_s both scale, then each sample's
+// emission from its temperature. 6 floats a sample where the density took 1, charged to the load's budget first.
+void appendTemperatureEmission(const PbrtParameters& params, const std::string& name, const std::string& path,
+                               const TemperatureToKelvin& toKelvin, const std::vector<float>& temperatures,
+                               uint64_t offset, MediumGrid& grid, std::vector<float>& values) {
+  const uint64_t count = temperatures.size();
+  checkRoom(params, name, values.size() + 5 * count);
+  chargeLoadMemory(5 * count * sizeof(float), path, "medium '" + name + "' emission from temperature");
+  values.resize(offset + 6 * count);
+  // From the last sample down, so that no density is overwritten before it is read.
+  for (uint64_t i = count; i-- > 0;) {
+    const float d = values[offset + i];
+    values[offset + 3 * i] = values[offset + 3 * i + 1] = values[offset + 3 * i + 2] = d;
+  }
+  const uint64_t emission = offset + 3 * count;
+  for (uint64_t i = 0; i < count; ++i) {
+    const Vec3 le = temperatureEmissionRgb(toKelvin(temperatures[i]));
+    values[emission + 3 * i] = le.x;
+    values[emission + 3 * i + 1] = le.y;
+    values[emission + 3 * i + 2] = le.z;
+  }
+  grid.kind = MediumGridKind::Rgb;
+  grid.density = kNoGridValues;
+  grid.sigmaA = grid.sigmaS = uint32_t(offset);
+  grid.emission = uint32_t(emission);
+}
+
 }  // namespace
 
-glm::mat4 readPbrtNanoVdbDensity(const std::string& name, const PbrtParameters& params, PbrtContext& context,
-                                 MediumGrid& grid, uint32_t maxResolution) {
+glm::mat4 readPbrtNanoVdbGrids(const std::string& name, const PbrtParameters& params, PbrtContext& context, Medium& m,
+                               MediumGrid& grid, uint32_t maxResolution) {
   const std::string reference = params.getString("filename", "");
   if (reference.empty()) params.fail("nanovdb medium '" + name + "' needs a \"string filename\"");
   const std::string gridName = params.getString("gridname", "density");
   const std::string temperatureName = params.getString("temperaturename", "temperature");
-  // Emission from temperature is not rendered: its parameters say nothing else.
-  for (const char* unrendered : {"Lescale", "temperaturecutoff", "temperatureoffset", "temperaturescale"})
-    if (const PbrtParameter* p = params.find(unrendered)) p->used = true;
+  const float leScale = params.getFloat("Lescale", 1.0f);
+  if (leScale < 0.0f) params.fail("nanovdb medium '" + name + "': 'Lescale' must not be negative");
+  const TemperatureToKelvin toKelvin = readTemperatureToKelvin(params);
   const std::string path = context.resolve(reference, params.file, params.line);
   Scene& scene = context.scene;
   NanoVdbDenseGrid dense;
+  std::vector<float> temperatures;  // one per dense sample; none where the medium does not emit
   try {
     const NanoVdbFile file(path);
     const NanoVdbGridEntry* entry = file.find(gridName);
-    if (!entry) {
-      std::string names;
-      for (const NanoVdbGridEntry& g : file.grids()) names += (names.empty() ? "'" : ", '") + g.name + "'";
-      failLoad(path, "has no grid named '" + gridName + "' (its grids: " + names + ")");
-    }
+    if (!entry) failLoad(path, "has no grid named '" + gridName + "' (its grids: " + gridNames(file) + ")");
     if (entry->valueType != kNanoVdbFloat)
       failLoad(path, "grid '" + gridName + "' holds " + nanoVdbTypeName(entry->valueType) +
                          " values; only float grids are read");
     dense = appendNanoVdbDenseGrid(file.gridBytes(*entry), path, gridName, maxResolution, scene.mediumGridValues);
-    if (file.find(temperatureName))
-      context.warn("medium temperature",
-                   "nanovdb '" + temperatureName + "' grids are not rendered: the medium does not emit");
+    // As pbrt-v4, a file without the temperature grid, or `Lescale` 0, makes a medium that does not emit; a name
+    // the scene gave itself that the file lacks is most likely a mistake, so it is reported.
+    const NanoVdbGridEntry* temperature = file.find(temperatureName);
+    if (!temperature && params.find("temperaturename"))
+      context.warn("nanovdb temperature " + name, "nanovdb medium '" + name + "': " + path + " has no grid named '" +
+                                                      temperatureName + "' (its grids: " + gridNames(file) +
+                                                      "): the medium does not emit");
+    if (temperature && leScale > 0.0f) {
+      if (temperature->valueType != kNanoVdbFloat)
+        failLoad(path, "grid '" + temperatureName + "' holds " + nanoVdbTypeName(temperature->valueType) +
+                           " values; only float temperatures are read");
+      const NanoVdbDenseGrid sampled = appendNanoVdbDenseGridLike(file.gridBytes(*temperature), path, temperatureName,
+                                                                  dense, NanoVdbValues::Finite, temperatures);
+      // Both grids are read over the density's index box, which takes the temperature's voxels to where its own
+      // map puts them only where the two maps agree.
+      if (!sameVoxels(dense, sampled.worldFromIndex)) {
+        context.warn(
+            "nanovdb temperature " + name,
+            "nanovdb medium '" + name + "': its grids '" + gridName + "' and '" + temperatureName +
+                "' have different index-to-world maps (a temperature is read only under its density's map): the "
+                "medium does not emit");
+        releaseLoadMemory(temperatures.size() * sizeof(float));
+        temperatures = {};
+      }
+    }
   } catch (const LoadBudgetError&) {
     throw;
   } catch (const LoadError& e) {
     params.fail(std::string("nanovdb medium '") + name + "': " + e.what());
   }
-  const uint64_t majorantRoom = uint64_t(kMajorantGridResolution) * kMajorantGridResolution * kMajorantGridResolution;
-  if (scene.mediumGridValues.size() + majorantRoom >= uint64_t(kNoGridValues))
-    params.fail("medium '" + name + "': the scene's grids hold more than 2^32 samples");
+  checkRoom(params, name, scene.mediumGridValues.size());
   if (dense.downsampled) {
     const auto voxels = [&](int a) { return uint64_t(int64_t(dense.indexMax[a]) - dense.indexMin[a] + 1); };
     context.warn("nanovdb resolution " + name,
@@ -62,6 +152,14 @@ glm::mat4 readPbrtNanoVdbDensity(const std::string& name, const PbrtParameters& 
   grid.ny = dense.ny;
   grid.nz = dense.nz;
   grid.density = uint32_t(dense.offset);
+  // Emission only where some sample is hotter than the cutoff: a medium that cannot emit keeps 1 float a sample.
+  const bool emits = std::any_of(temperatures.begin(), temperatures.end(),
+                                 [&](float t) { return toKelvin(t) > kEmissionCutoffKelvin; });
+  if (emits) {
+    appendTemperatureEmission(params, name, path, toKelvin, temperatures, dense.offset, grid, scene.mediumGridValues);
+    m.emission = Vec3{leScale, leScale, leScale};
+  }
+  releaseLoadMemory(temperatures.size() * sizeof(float));
   // The voxels' cells: voxel i's centre, where NanoVDB puts its value, is index i.
   grid.p0 = {float(dense.indexMin[0]) - 0.5f, float(dense.indexMin[1]) - 0.5f, float(dense.indexMin[2]) - 0.5f};
   grid.p1 = {float(dense.indexMax[0]) + 0.5f, float(dense.indexMax[1]) + 0.5f, float(dense.indexMax[2]) + 0.5f};

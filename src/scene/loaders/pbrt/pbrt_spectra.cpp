@@ -76,6 +76,23 @@ Vec3 blackbodyRgb(float kelvin) {
   return clampNegative(xyzToLinearSrgb(xyz / xyz.y));
 }
 
+Vec3 peakNormalisedBlackbodyRgb(double kelvin) {
+  if (!(kelvin > 0.0) || !std::isfinite(kelvin)) return {0, 0, 0};
+  constexpr double c2 = 1.4387769e7;            // second radiation constant in nm K
+  constexpr double wien = 2.8977721e6;          // Wien's displacement constant in nm K
+  const double peak = wien / kelvin;            // the peak wavelength
+  const double atPeak = std::expm1(c2 / wien);  // Planck's denominator there, less the wavelength's power
+  Vec3 xyz{0, 0, 0};
+  double ySum = 0.0;
+  for (double lambda = kFirstWavelength; lambda <= kLastWavelength; lambda += 1.0) {
+    const double ratio = std::pow(peak / lambda, 5.0) * atPeak / std::expm1(c2 / (lambda * kelvin));
+    const Vec3 match = cieXyz(lambda);
+    if (std::isfinite(ratio)) xyz += match * float(ratio);
+    ySum += match.y;
+  }
+  return clampNegative(xyzToLinearSrgb(xyz / float(ySum)));
+}
+
 Vec3 sampledSpectrumRgb(const std::vector<double>& pairs) {
   std::vector<std::pair<double, double>> samples;
   for (size_t i = 0; i + 1 < pairs.size(); i += 2)

@@ -12,6 +12,11 @@ namespace candela {
 // A blackbody at `kelvin`, normalised to luminance 1 (as pbrt-v4 normalises light spectra).
 Vec3 blackbodyRgb(float kelvin);
 
+// pbrt-v4's BlackbodySpectrum at `kelvin` (Planck's law divided by its value at the peak wavelength, so 1 there, as
+// media emit it) in linear sRGB as pbrt-v4's film records an emitted spectrum: its XYZ divided by the integral of
+// y, so that a spectrum of 1 at every wavelength has luminance 1. 0 at or below 0 K.
+Vec3 peakNormalisedBlackbodyRgb(double kelvin);
+
 // A spectrum sampled at (wavelength in nm, value) pairs, projected onto the sRGB colour matching functions and
 // normalised per channel so that a constant spectrum gives a grey of the same value.
 Vec3 sampledSpectrumRgb(const std::vector<double>& wavelengthValuePairs);
