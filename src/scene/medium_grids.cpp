@@ -55,7 +55,7 @@ void buildMajorantGrid(const Medium& m, MediumGrid& grid, std::vector<float>& va
   values.insert(values.end(), majorants.begin(), majorants.end());
 }
 
-std::string mediumGridProblem(const MediumGrid& grid, size_t valueCount) {
+std::string mediumGridProblem(const MediumGrid& grid, const std::vector<float>& values) {
   if (grid.kind != MediumGridKind::Density && grid.kind != MediumGridKind::Rgb && grid.kind != MediumGridKind::Cloud)
     return "a medium grid of unknown kind";
   for (float v : grid.mediumFromWorld.m)
@@ -65,25 +65,41 @@ std::string mediumGridProblem(const MediumGrid& grid, size_t valueCount) {
     return "a medium grid whose box is empty or not finite";
   if (!std::isfinite(grid.cloudDensity) || !std::isfinite(grid.wispiness) || !std::isfinite(grid.frequency))
     return "a cloud medium with non-finite parameters";
-  // Each piece of samples must lie inside the values.
+  if (!std::isfinite(grid.temperatureOffset) || !std::isfinite(grid.temperatureScale))
+    return "a medium grid with a non-finite temperature offset or scale";
+  // Each piece of samples must lie inside the values, and all but temperatures be at least 0.
+  const size_t valueCount = values.size();
   auto fits = [&](uint32_t offset, uint64_t count) {
     return offset == kNoGridValues || (count <= valueCount && offset <= valueCount - count);
   };
+  auto negative = [&](uint32_t offset, uint64_t count) {
+    return offset != kNoGridValues &&
+           std::any_of(values.begin() + offset, values.begin() + offset + count, [](float v) { return v < 0.0f; });
+  };
   if (grid.nx == 0 || grid.ny == 0 || grid.nz == 0) return "a medium grid without samples";
   const uint64_t samples = uint64_t(grid.nx) * grid.ny * grid.nz;
+  const uint64_t emissionCount = (grid.kind == MediumGridKind::Rgb ? 3 : 1) * samples;
+  const uint64_t tableCount = 3 * uint64_t(kBlackbodyTableSize);
   if (!fits(grid.density, samples) || !fits(grid.sigmaA, 3 * samples) || !fits(grid.sigmaS, 3 * samples) ||
-      !fits(grid.emission, (grid.kind == MediumGridKind::Rgb ? 3 : 1) * samples))
+      !fits(grid.emission, emissionCount) || !fits(grid.temperature, samples) || !fits(grid.blackbody, tableCount))
     return "a medium grid names samples past the scene's";
   if (grid.kind == MediumGridKind::Density && grid.density == kNoGridValues) return "a density grid without densities";
+  if ((grid.temperature == kNoGridValues) != (grid.blackbody == kNoGridValues) ||
+      (grid.temperature != kNoGridValues && grid.kind != MediumGridKind::Density))
+    return "a medium grid with temperatures but no blackbody table, or the other way round";
   if (grid.mx == 0 || grid.my == 0 || grid.mz == 0 || grid.majorants == kNoGridValues ||
       !fits(grid.majorants, uint64_t(grid.mx) * grid.my * grid.mz))
     return "a medium grid without its majorant grid";
+  if (negative(grid.density, samples) || negative(grid.sigmaA, 3 * samples) || negative(grid.sigmaS, 3 * samples) ||
+      negative(grid.emission, emissionCount) || negative(grid.blackbody, tableCount) ||
+      negative(grid.majorants, uint64_t(grid.mx) * grid.my * grid.mz))
+    return "a medium grid has a negative sample";
   return "";
 }
 
 std::string mediumGridValuesProblem(const std::vector<float>& values) {
   for (float v : values)
-    if (!std::isfinite(v) || v < 0.0f) return "a medium grid has a negative or non-finite sample";
+    if (!std::isfinite(v)) return "a medium grid has a non-finite sample";
   return "";
 }
 

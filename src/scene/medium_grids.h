@@ -15,11 +15,11 @@ namespace candela {
 // them); one voxel for the cloud, whose density never exceeds 1.
 void buildMajorantGrid(const Medium& m, MediumGrid& grid, std::vector<float>& values);
 
-// What is wrong with `grid` in a scene of `valueCount` grid samples, or "" where nothing is: a kind, size,
-// offset or box out of range, or a non-finite transform or cloud parameter. The samples' own values are checked
-// by mediumGridValuesProblem.
-std::string mediumGridProblem(const MediumGrid& grid, size_t valueCount);
-// Whether the samples are all finite and not negative ("" where they are).
+// What is wrong with `grid` in a scene whose grid samples are `values`, or "" where nothing is: a kind, size,
+// offset or box out of range, a non-finite transform, cloud or temperature parameter, or a negative sample among
+// those it names other than its temperatures. That every sample is finite is mediumGridValuesProblem's check.
+std::string mediumGridProblem(const MediumGrid& grid, const std::vector<float>& values);
+// Whether the samples are all finite ("" where they are).
 std::string mediumGridValuesProblem(const std::vector<float>& values);
 
 }  // namespace candela

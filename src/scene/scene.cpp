@@ -85,7 +85,7 @@ void validateScene(const Scene& scene) {
     if (m.subsurface > 1) fail("a medium's subsurface flag is neither 0 nor 1");
   }
   for (const MediumGrid& grid : scene.mediumGrids)
-    if (std::string problem = mediumGridProblem(grid, scene.mediumGridValues.size()); !problem.empty()) fail(problem);
+    if (std::string problem = mediumGridProblem(grid, scene.mediumGridValues); !problem.empty()) fail(problem);
   if (std::string problem = mediumGridValuesProblem(scene.mediumGridValues); !problem.empty()) fail(problem);
   bool anyMix = false;
   for (const Material& m : scene.materials) {

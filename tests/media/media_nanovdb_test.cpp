@@ -237,23 +237,30 @@ TEST(TemperatureEmission, IsPbrtsBlackbodyOnePeak) {
     EXPECT_NEAR(rgb.x, light.x, 2e-3f * light.x) << kelvin << " K";
     EXPECT_NEAR(rgb.z, light.z, 2e-3f * light.x) << kelvin << " K";
   }
+  std::vector<float> table;
+  for (uint32_t i = 0; i < kBlackbodyTableSize; ++i) {
+    const Vec3 rgb = blackbodyTableEntry(i);
+    table.insert(table.end(), {rgb.x, rgb.y, rgb.z});
+  }
+  EXPECT_GE(double(kBlackbodyCutoffKelvin) * std::exp2(double(kBlackbodyTableSize - 1) / kBlackbodyStepsPerOctave),
+            double(kBlackbodyHottestKelvin));
   double worst = 0.0;
   for (double kelvin = 101.0; kelvin < 1.2e5; kelvin *= 1.0123) {
-    const Vec3 exact = peakNormalisedBlackbodyRgb(std::min(kelvin, kEmissionMaxKelvin)),
-               table = temperatureEmissionRgb(kelvin);
+    const Vec3 exact = peakNormalisedBlackbodyRgb(std::min(kelvin, double(kBlackbodyHottestKelvin))),
+               interpolated = blackbodyEmission(table.data(), float(kelvin));
     for (auto channel : {&Vec3::x, &Vec3::y, &Vec3::z}) {
-      const double e = exact.*channel, t = table.*channel;
+      const double e = exact.*channel, t = interpolated.*channel;
       worst = std::max(worst, std::fabs(t - e) / std::max(e, 1e-3));
     }
   }
   EXPECT_LT(worst, 1e-4);
-  for (double cold : {-5.0, 0.0, 50.0, 100.0, double(std::nan(""))}) {
-    const Vec3 none = temperatureEmissionRgb(cold);
+  for (float cold : {-5.0f, 0.0f, 50.0f, 100.0f, std::nanf("")}) {
+    const Vec3 none = blackbodyEmission(table.data(), cold);
     EXPECT_EQ(none.x + none.y + none.z, 0.0f) << cold;
   }
-  const Vec3 hottest = peakNormalisedBlackbodyRgb(kEmissionMaxKelvin);
-  for (double hot : {2e5, 1e30, double(std::numeric_limits<float>::max()) * 1e10}) {
-    const Vec3 capped = temperatureEmissionRgb(hot);
+  const Vec3 hottest = peakNormalisedBlackbodyRgb(kBlackbodyHottestKelvin);
+  for (float hot : {2e5f, 1e30f, std::numeric_limits<float>::infinity()}) {
+    const Vec3 capped = blackbodyEmission(table.data(), hot);
     EXPECT_TRUE(isFinite(capped));
     EXPECT_NEAR(capped.z, hottest.z, 1e-7f);
   }
@@ -277,7 +284,7 @@ TEST(NanoVdbMedia, ConstantTemperatureEmitsItsBlackbody) {
                    nanoVdbFile({constantSlabGrid(), constantTemperatureGrid(1100.0f)}), &warnings);
   EXPECT_TRUE(warnings.messages.empty()) << warnings.messages[0];
   ASSERT_EQ(scene.mediumGrids.size(), 1u);
-  EXPECT_EQ(scene.mediumGrids[0].kind, MediumGridKind::Rgb);
+  EXPECT_NE(scene.mediumGrids[0].temperature, kNoGridValues);
   EXPECT_TRUE(hasLightSource(scene));  // no warning that the image will be black
   const PixelStatistics stats = renderMediaScene(scene, 16, 9);
   EXPECT_EQ(stats.invalidSamples, 0u);
@@ -316,7 +323,7 @@ TEST(NanoVdbMedia, TemperaturesAtTheCutoffDoNotEmit) {
         loadWithFile(folder, darkSlabScene(nanoVdbMedium("smoke.nvdb", c.parameters), 0.5f), file, &warnings);
     EXPECT_TRUE(warnings.messages.empty()) << c.parameters << ": " << warnings.messages[0];
     ASSERT_EQ(scene.mediumGrids.size(), 1u);
-    EXPECT_EQ(scene.mediumGrids[0].kind, c.emits ? MediumGridKind::Rgb : MediumGridKind::Density) << c.parameters;
+    EXPECT_EQ(scene.mediumGrids[0].temperature != kNoGridValues, c.emits) << c.parameters;
     EXPECT_EQ(hasLightSource(scene), c.emits) << c.parameters;
     if (c.emits) continue;
     EXPECT_EQ(scene.mediumGridValues.size(), 16u * 8 * 8 + 16 * 16 * 16) << "density and majorants alone";
@@ -333,7 +340,7 @@ TEST(NanoVdbMedia, TemperatureWithoutDensityDoesNotEmit) {
   empty.values.assign(empty.values.size(), 0.0f);
   const Scene scene = loadWithFile(folder, darkSlabScene(nanoVdbMedium("smoke.nvdb"), 0.5f),
                                    nanoVdbFile({empty, constantTemperatureGrid(3000.0f)}));
-  EXPECT_EQ(scene.mediumGrids[0].kind, MediumGridKind::Rgb);
+  EXPECT_NE(scene.mediumGrids[0].temperature, kNoGridValues);
   EXPECT_EQ(imageMean(renderMediaScene(scene, 16, 3)).mean, 0.0);
   EXPECT_NE(loadError(folder, nanoVdbFile({constantTemperatureGrid(3000.0f)}))
                 .find("has no grid named 'density' (its grids: 'temperature')"),
@@ -353,21 +360,17 @@ TEST(NanoVdbMedia, TemperatureIsSampledOverTheDensitysCells) {
   const Scene scene =
       loadWithFile(folder, slabScene(nanoVdbMedium("smoke.nvdb"), 0.5f), nanoVdbFile({varyingGrid(), temperature}));
   const MediumGrid& grid = scene.mediumGrids[0];
-  ASSERT_EQ(grid.kind, MediumGridKind::Rgb);
+  ASSERT_NE(grid.temperature, kNoGridValues);
   ASSERT_EQ(grid.nx, 5u);
-  const float* density = scene.mediumGridValues.data() + grid.sigmaA;
-  const float* emission = scene.mediumGridValues.data() + grid.emission;
+  const float* density = scene.mediumGridValues.data() + grid.density;
+  const float* kelvins = scene.mediumGridValues.data() + grid.temperature;
   for (size_t i = 0; i < varyingGrid().values.size(); ++i) {
-    ASSERT_EQ(density[3 * i], varyingGrid().values[i]);
-    ASSERT_EQ(density[3 * i + 2], varyingGrid().values[i]);
+    ASSERT_EQ(density[i], varyingGrid().values[i]);
     // Sample i is voxel (-3 + x, 2 + y, 7 + z).
     const size_t x = i % 5, y = (i / 5) % 3, z = i / 15;
-    const double kelvin = (y == 0 && z == 0 && x == 2) ? 2000.0 : (y == 0 && z == 0 && x == 3) ? 4000.0 : 500.0;
-    const Vec3 le = temperatureEmissionRgb(kelvin);
-    EXPECT_EQ(emission[3 * i], le.x) << i;
-    EXPECT_EQ(emission[3 * i + 2], le.z) << i;
+    const float kelvin = (y == 0 && z == 0 && x == 2) ? 2000.0f : (y == 0 && z == 0 && x == 3) ? 4000.0f : 500.0f;
+    EXPECT_EQ(kelvins[i], kelvin) << i;
   }
-  EXPECT_EQ(scene.mediumGrids[0].sigmaS, grid.sigmaA);
 
   // Downsampled, it averages as a grid of the density's box with the same values would.
   const std::string path = folder.write("both.nvdb", nanoVdbFile({varyingGrid(), temperature}));
@@ -432,11 +435,17 @@ TEST(NanoVdbMedia, OddTemperatureGridsAreRefusedOrDocumented) {
             MediumGridKind::Density);
   const Scene negativeOffset =
       load({constantSlabGrid(), constantTemperatureGrid(-3000.0f)}, "\"float temperatureoffset\" -6000", warnings);
-  EXPECT_EQ(negativeOffset.mediumGrids[0].kind, MediumGridKind::Rgb);
-  EXPECT_EQ(negativeOffset.mediumGridValues[negativeOffset.mediumGrids[0].emission], temperatureEmissionRgb(3000).x);
+  const MediumGrid& lifted = negativeOffset.mediumGrids[0];
+  ASSERT_NE(lifted.temperature, kNoGridValues);
+  EXPECT_EQ(negativeOffset.mediumGridValues[lifted.temperature], -3000.0f);
+  EXPECT_EQ(lifted.temperatureOffset, -6000.0f);
   const Scene huge =
       load({constantSlabGrid(), constantTemperatureGrid(3e38f)}, "\"float temperaturescale\" 1e38", warnings);
-  EXPECT_EQ(huge.mediumGridValues[huge.mediumGrids[0].emission + 2], temperatureEmissionRgb(kEmissionMaxKelvin).z);
+  const MediumGrid& hot = huge.mediumGrids[0];
+  ASSERT_NE(hot.temperature, kNoGridValues);
+  const float kelvin = (huge.mediumGridValues[hot.temperature] - hot.temperatureOffset) * hot.temperatureScale;
+  EXPECT_EQ(blackbodyEmission(huge.mediumGridValues.data() + hot.blackbody, kelvin).z,
+            blackbodyEmission(huge.mediumGridValues.data() + hot.blackbody, kBlackbodyHottestKelvin).z);
   EXPECT_TRUE(warnings.messages.empty()) << warnings.messages[0];
 
   // A map that differs in the last digits places the voxels where the density's does; one that moves them by
@@ -444,19 +453,19 @@ TEST(NanoVdbMedia, OddTemperatureGridsAreRefusedOrDocumented) {
   TestNanoVdbGrid close = constantTemperatureGrid(3000.0f);
   close.voxelSize[0] *= 1.0 + 1e-9;
   close.translation[2] += 1e-9;
-  EXPECT_EQ(load({constantSlabGrid(), close}, "", warnings).mediumGrids[0].kind, MediumGridKind::Rgb);
+  EXPECT_NE(load({constantSlabGrid(), close}, "", warnings).mediumGrids[0].temperature, kNoGridValues);
   EXPECT_TRUE(warnings.messages.empty()) << warnings.messages[0];
   TestNanoVdbGrid moved = constantTemperatureGrid(3000.0f);
   moved.voxelSize[0] *= 1.0 + 0.02 / 15;
   LoadWarnings movedWarnings;
-  EXPECT_EQ(load({constantSlabGrid(), moved}, "", movedWarnings).mediumGrids[0].kind, MediumGridKind::Density);
+  EXPECT_EQ(load({constantSlabGrid(), moved}, "", movedWarnings).mediumGrids[0].temperature, kNoGridValues);
   ASSERT_EQ(movedWarnings.messages.size(), 1u);
   EXPECT_NE(movedWarnings.messages[0].find("'density' and 'temperature' have different index-to-world maps"),
             std::string::npos)
       << movedWarnings.messages[0];
 
   LoadWarnings missing;
-  EXPECT_EQ(load({constantSlabGrid()}, "", missing).mediumGrids[0].kind, MediumGridKind::Density);
+  EXPECT_EQ(load({constantSlabGrid()}, "", missing).mediumGrids[0].temperature, kNoGridValues);
   EXPECT_TRUE(missing.messages.empty()) << missing.messages[0];
   EXPECT_EQ(load({constantSlabGrid(), constantTemperatureGrid(3000.0f)}, "\"string temperaturename\" \"heat\"", missing)
                 .mediumGrids[0]

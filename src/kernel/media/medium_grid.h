@@ -6,8 +6,10 @@
 //   uniformgrid: sigma_a = Medium::sigmaA x density(p), sigma_s likewise (pbrt's `scale` folded into the Medium),
 //                Le = Medium::emission x Lescale(p) (a grid, or 1 where the file gives none);
 //   rgbgrid:     sigma_a = Medium::sigmaA x its RGB grid (1 where absent), sigma_s likewise, Le = Medium::emission
-//                x its RGB grid (0 where absent); the Medium holds `scale` and `Lescale` as greys. Media that emit
-//                from a temperature are this kind too: density a grey grid, Le each sample's blackbody at load;
+//                x its RGB grid (0 where absent); the Medium holds `scale` and `Lescale` as greys;
+//   temperature: a uniformgrid or nanovdb grid may carry a temperature grid: Le is then also times the blackbody
+//                of (temperature(p) - offset) x scale kelvins, the temperature interpolated first, as pbrt-v4 does
+//                (blackbodyEmission below);
 //   cloud:       sigma_a and sigma_s times pbrt's procedural density (cloud_density.h), no emission.
 // The samples live in the scene's one `mediumGridValues` array; a grid names its pieces by offset. Lookups are
 // trilinear between samples at voxel centres and fall to 0 outside them, as pbrt's SampledGrid.
@@ -32,17 +34,30 @@ struct MediumGrid {
   Vec3 p0{0, 0, 0};           // the box the medium fills, in its own space (pbrt's p0, p1)
   Vec3 p1{1, 1, 1};
   MediumGridKind kind = MediumGridKind::Density;
-  uint32_t nx = 1, ny = 1, nz = 1;     // samples per axis (uniformgrid, rgbgrid)
-  uint32_t density = kNoGridValues;    // uniformgrid: nx ny nz densities, x fastest
-  uint32_t sigmaA = kNoGridValues;     // rgbgrid: 3 floats per sample
-  uint32_t sigmaS = kNoGridValues;     // rgbgrid: 3 floats per sample
-  uint32_t emission = kNoGridValues;   // uniformgrid: nx ny nz Lescale values; rgbgrid: 3 floats per sample
-  uint32_t majorants = kNoGridValues;  // mx my mz grey bounds of sigma_t, x fastest
-  uint32_t mx = 1, my = 1, mz = 1;     // majorant voxels per axis
-  float cloudDensity = 1.0f;           // cloud: pbrt's density, wispiness and frequency
+  uint32_t nx = 1, ny = 1, nz = 1;       // samples per axis (uniformgrid, rgbgrid)
+  uint32_t density = kNoGridValues;      // uniformgrid: nx ny nz densities, x fastest
+  uint32_t sigmaA = kNoGridValues;       // rgbgrid: 3 floats per sample
+  uint32_t sigmaS = kNoGridValues;       // rgbgrid: 3 floats per sample
+  uint32_t emission = kNoGridValues;     // uniformgrid: nx ny nz Lescale values; rgbgrid: 3 floats per sample
+  uint32_t majorants = kNoGridValues;    // mx my mz grey bounds of sigma_t, x fastest
+  uint32_t temperature = kNoGridValues;  // uniformgrid: nx ny nz temperatures as the file gives them
+  uint32_t blackbody = kNoGridValues;    // with a temperature: kBlackbodyTableSize RGB emissions (blackbodyEmission)
+  float temperatureOffset = 0.0f;        // kelvins = (temperature - offset) x scale (pbrt's temperatureoffset and
+  float temperatureScale = 1.0f;         // temperaturescale)
+  uint32_t mx = 1, my = 1, mz = 1;       // majorant voxels per axis
+  float cloudDensity = 1.0f;             // cloud: pbrt's density, wispiness and frequency
   float wispiness = 1.0f;
   float frequency = 5.0f;
 };
+
+// Emission from temperature: pbrt-v4's media emit nothing at or below 100 K and a BlackbodySpectrum (1 at its peak)
+// above. Hotter than 1e5 K they glow as at 1e5 K (pbrt evaluates Planck's law in float, whose wavelength^5 at the
+// peak leaves float's range about there). The scene holds the blackbody's linear sRGB at 100 K x 2^(i / 512),
+// i = 0 to kBlackbodyTableSize - 1 (the last one past 1e5 K: 512 log2(1000) = 5102.4).
+constexpr float kBlackbodyCutoffKelvin = 100.0f;
+constexpr float kBlackbodyHottestKelvin = 1e5f;
+constexpr uint32_t kBlackbodyStepsPerOctave = 512;
+constexpr uint32_t kBlackbodyTableSize = 5104;
 
 // pbrt-v4's majorant grid resolution for grid media.
 constexpr uint32_t kMajorantGridResolution = 16;
@@ -76,6 +91,18 @@ CANDELA_FN void sampleGrid(const float* values, uint32_t offset, uint32_t channe
   }
 }
 
+// The RGB emission of a blackbody at `kelvin` from the scene's table (kBlackbodyTableSize entries), interpolated
+// between its temperatures: 0 at or below the cutoff (NaN too).
+CANDELA_FN Vec3 blackbodyEmission(const float* table, float kelvin) {
+  if (!(kelvin > kBlackbodyCutoffKelvin)) return {0.0f, 0.0f, 0.0f};
+  const float at =
+      log2f(fminf(kelvin, kBlackbodyHottestKelvin) / kBlackbodyCutoffKelvin) * float(kBlackbodyStepsPerOctave);
+  const uint32_t i = at < float(kBlackbodyTableSize - 2) ? uint32_t(at) : kBlackbodyTableSize - 2;
+  const float f = fminf(at - float(i), 1.0f);
+  const float* a = table + 3 * size_t(i);
+  return {a[0] + f * (a[3] - a[0]), a[1] + f * (a[4] - a[1]), a[2] + f * (a[5] - a[2])};
+}
+
 // A point of world space in the grid's unit cube (0 at p0, 1 at p1).
 CANDELA_FN Vec3 gridUnitPoint(const MediumGrid& grid, Vec3 mediumPoint) {
   const Vec3 d = grid.p1 - grid.p0;
@@ -104,6 +131,12 @@ CANDELA_FN MediumPoint gridMediumAt(const Medium& m, const MediumGrid& grid, con
     out.sigmaA = m.sigmaA * d;
     out.sigmaS = m.sigmaS * d;
     out.emission = m.emission * le;
+    if (grid.temperature != kNoGridValues) {
+      float t = 0.0f;
+      sampleGrid(values, grid.temperature, 1, grid.nx, grid.ny, grid.nz, u, &t);
+      out.emission = out.emission *
+                     blackbodyEmission(values + grid.blackbody, (t - grid.temperatureOffset) * grid.temperatureScale);
+    }
     return out;
   }
   auto rgb = [&](uint32_t offset, float absent) {

@@ -78,10 +78,11 @@ uint64_t readResolution(const PbrtParameters& params, const std::string& what, s
 }
 
 // Appends `count` samples, value(i) each, to the scene's grid samples, charged to the load's budget; returns
-// their offset. `parameter` names them in messages.
+// their offset. `parameter` names them in messages. Samples below `lowest` are refused (only temperatures may be
+// negative).
 template <typename Value>
 uint32_t appendSamples(const PbrtParameters& params, const std::string& mediumName, const char* parameter, size_t count,
-                       Value value, Scene& scene) {
+                       Value value, Scene& scene, double lowest = 0.0) {
   // Offsets are 32-bit, and the majorant grid follows.
   const uint64_t majorantRoom = uint64_t(kMajorantGridResolution) * kMajorantGridResolution * kMajorantGridResolution;
   if (scene.mediumGridValues.size() + count + majorantRoom >= uint64_t(kNoGridValues))
@@ -91,7 +92,7 @@ uint32_t appendSamples(const PbrtParameters& params, const std::string& mediumNa
   const uint32_t offset = uint32_t(scene.mediumGridValues.size());
   for (size_t i = 0; i < count; ++i) {
     const double v = value(i);
-    if (!std::isfinite(v) || v < 0.0 || v > double(std::numeric_limits<float>::max()))
+    if (!std::isfinite(v) || v < lowest || std::fabs(v) > double(std::numeric_limits<float>::max()))
       params.fail("medium '" + mediumName + "': '" + parameter + "' has a negative or non-finite value");
     scene.mediumGridValues.push_back(float(v));
   }
@@ -106,10 +107,9 @@ uint32_t appendSamples(const PbrtParameters& params, const std::string& mediumNa
 }
 
 // pbrt-v4's GridMedium with a `temperature` grid (as many values as `density`): Le is `Lescale` (a grid, or 1) x
-// the blackbody of each sample's temperature (pbrt_temperature_emission.h: `temperatureoffset` or
-// `temperaturecutoff`, `temperaturescale`). A medium where some sample is hotter than the cutoff takes rgbgrid's
-// form, as an emitting nanovdb medium does (pbrt_nanovdb_medium.h): the density as a grey that sigma_a and sigma_s
-// both scale, then each sample's RGB emission. Otherwise it keeps its density grid alone and does not emit.
+// the blackbody of the temperature at each point (pbrt_temperature_emission.h: `temperatureoffset` or
+// `temperaturecutoff`, `temperaturescale`). A grid whose temperatures cannot exceed the cutoff keeps its density
+// alone and does not emit.
 void readTemperatureGrid(const PbrtParameters& params, const std::string& name, const std::vector<double>& density,
                          const std::vector<double>& temperature, const std::vector<double>& leScale, Medium& m,
                          MediumGrid& grid, Scene& scene) {
@@ -117,26 +117,18 @@ void readTemperatureGrid(const PbrtParameters& params, const std::string& name, 
   if (temperature.size() != density.size())
     params.fail("uniformgrid medium: 'temperature' has " + std::to_string(temperature.size()) +
                 " values where nx*ny*nz = " + std::to_string(density.size()));
+  grid.density = appendSamples(params, name, "density", density, scene);
   const TemperatureToKelvin toKelvin = readTemperatureToKelvin(params);
-  const bool emits = std::any_of(temperature.begin(), temperature.end(),
-                                 [&](double t) { return toKelvin(float(t)) > kEmissionCutoffKelvin; });
-  if (!emits) {
-    grid.density = appendSamples(params, name, "density", density, scene);
-    return;
-  }
-  for (double s : leScale)
-    if (s < 0.0) params.fail("uniformgrid medium '" + name + "': 'Lescale' has a negative value");
-  grid.kind = MediumGridKind::Rgb;
-  grid.sigmaA = grid.sigmaS = appendSamples(
-      params, name, "density", 3 * density.size(), [&](size_t i) { return density[i / 3]; }, scene);
-  grid.emission = appendSamples(
-      params, name, "temperature", 3 * density.size(),
-      [&](size_t i) {
-        const Vec3 le = temperatureEmissionRgb(toKelvin(float(temperature[i / 3])));
-        const double channel = i % 3 == 0 ? le.x : i % 3 == 1 ? le.y : le.z;
-        return channel * (leScale.empty() ? 1.0 : leScale[i / 3]);
-      },
-      scene);
+  for (double t : temperature)
+    if (!std::isfinite(t) || std::fabs(t) > double(std::numeric_limits<float>::max()))
+      params.fail("uniformgrid medium '" + name + "': 'temperature' has a non-finite value");
+  const std::vector<float> temperatures(temperature.begin(), temperature.end());
+  if (!temperaturesEmit(temperatures, toKelvin)) return;
+  if (!leScale.empty()) grid.emission = appendSamples(params, name, "Lescale", leScale, scene);
+  const uint32_t offset = appendSamples(
+      params, name, "temperature", temperature.size(), [&](size_t i) { return temperature[i]; }, scene,
+      -double(std::numeric_limits<float>::max()));
+  emitFromTemperature(offset, toKelvin, grid, scene);
   m.emission = Vec3{1, 1, 1};
 }
 

@@ -1,6 +1,5 @@
 #include "scene/loaders/pbrt/pbrt_nanovdb_medium.h"
 
-#include <algorithm>
 #include <cmath>
 
 #include <glm/mat3x3.hpp>
@@ -56,34 +55,6 @@ void checkRoom(const PbrtParameters& params, const std::string& name, uint64_t v
   const uint64_t majorantRoom = uint64_t(kMajorantGridResolution) * kMajorantGridResolution * kMajorantGridResolution;
   if (values + majorantRoom >= uint64_t(kNoGridValues))
     params.fail("medium '" + name + "': the scene's grids hold more than 2^32 samples");
-}
-
-// Turns the medium's `count` densities, the last samples of `values` from `offset`, into rgbgrid's form (kernel/
-// media/medium_grid.h): each density three times, a grey that sigma_a and sigma_s both scale, then each sample's
-// emission from its temperature. 6 floats a sample where the density took 1, charged to the load's budget first.
-void appendTemperatureEmission(const PbrtParameters& params, const std::string& name, const std::string& path,
-                               const TemperatureToKelvin& toKelvin, const std::vector<float>& temperatures,
-                               uint64_t offset, MediumGrid& grid, std::vector<float>& values) {
-  const uint64_t count = temperatures.size();
-  checkRoom(params, name, values.size() + 5 * count);
-  chargeLoadMemory(5 * count * sizeof(float), path, "medium '" + name + "' emission from temperature");
-  values.resize(offset + 6 * count);
-  // From the last sample down, so that no density is overwritten before it is read.
-  for (uint64_t i = count; i-- > 0;) {
-    const float d = values[offset + i];
-    values[offset + 3 * i] = values[offset + 3 * i + 1] = values[offset + 3 * i + 2] = d;
-  }
-  const uint64_t emission = offset + 3 * count;
-  for (uint64_t i = 0; i < count; ++i) {
-    const Vec3 le = temperatureEmissionRgb(toKelvin(temperatures[i]));
-    values[emission + 3 * i] = le.x;
-    values[emission + 3 * i + 1] = le.y;
-    values[emission + 3 * i + 2] = le.z;
-  }
-  grid.kind = MediumGridKind::Rgb;
-  grid.density = kNoGridValues;
-  grid.sigmaA = grid.sigmaS = uint32_t(offset);
-  grid.emission = uint32_t(emission);
 }
 
 }  // namespace
@@ -152,14 +123,17 @@ glm::mat4 readPbrtNanoVdbGrids(const std::string& name, const PbrtParameters& pa
   grid.ny = dense.ny;
   grid.nz = dense.nz;
   grid.density = uint32_t(dense.offset);
-  // Emission only where some sample is hotter than the cutoff: a medium that cannot emit keeps 1 float a sample.
-  const bool emits = std::any_of(temperatures.begin(), temperatures.end(),
-                                 [&](float t) { return toKelvin(t) > kEmissionCutoffKelvin; });
-  if (emits) {
-    appendTemperatureEmission(params, name, path, toKelvin, temperatures, dense.offset, grid, scene.mediumGridValues);
+  // Emission only where the temperatures can exceed the cutoff: a medium that cannot emit keeps 1 float a sample.
+  if (!temperatures.empty() && temperaturesEmit(temperatures, toKelvin)) {
+    checkRoom(params, name, scene.mediumGridValues.size() + temperatures.size() + 3 * kBlackbodyTableSize);
+    // The temperatures move from their own vector (charged) into the scene's values (charged the same).
+    const uint32_t offset = uint32_t(scene.mediumGridValues.size());
+    scene.mediumGridValues.insert(scene.mediumGridValues.end(), temperatures.begin(), temperatures.end());
+    emitFromTemperature(offset, toKelvin, grid, scene);
     m.emission = Vec3{leScale, leScale, leScale};
+  } else {
+    releaseLoadMemory(temperatures.size() * sizeof(float));
   }
-  releaseLoadMemory(temperatures.size() * sizeof(float));
   // The voxels' cells: voxel i's centre, where NanoVDB puts its value, is index i.
   grid.p0 = {float(dense.indexMin[0]) - 0.5f, float(dense.indexMin[1]) - 0.5f, float(dense.indexMin[2]) - 0.5f};
   grid.p1 = {float(dense.indexMax[0]) + 0.5f, float(dense.indexMax[1]) + 0.5f, float(dense.indexMax[2]) + 0.5f};

@@ -19,9 +19,9 @@ constexpr uint32_t kNanoVdbMaxResolution = 256;
 // grid `temperaturename` ("temperature") where the file has one (pbrt_temperature_emission.h: `Lescale`,
 // `temperatureoffset` or `temperaturecutoff`, `temperaturescale`), sampled over the density's cells. Fills `grid`'s
 // kind, size, samples (appended to the scene's, charged to the load's budget) and box, and m's emission where the
-// medium emits; returns the medium-from-index transform (NanoVDB's index-to-world map). A medium that emits is
-// rgbgrid's kind: its density a grey grid that m's sigma_a and sigma_s scale, its emission an RGB grid that m's
-// emission (`Lescale`) scales. Throws LoadError at the directive for a file that cannot be read as such grids.
+// medium emits; returns the medium-from-index transform (NanoVDB's index-to-world map). A medium that emits keeps its
+// density grid and adds the temperatures (one float a sample), m's emission `Lescale`. Throws LoadError at the
+// directive for a file that cannot be read as such grids.
 glm::mat4 readPbrtNanoVdbGrids(const std::string& name, const PbrtParameters& params, PbrtContext& context, Medium& m,
                                MediumGrid& grid, uint32_t maxResolution = kNanoVdbMaxResolution);
 

@@ -2,46 +2,44 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 
+#include "kernel/media/medium_grid.h"
 #include "scene/loaders/pbrt/pbrt_spectra.h"
 
 namespace candela {
-
-namespace {
-
-// The table's steps: at least 512 an octave, from the cutoff to the hottest temperature evaluated.
-const double kOctaves = std::log2(kEmissionMaxKelvin / kEmissionCutoffKelvin);
-const size_t kSteps = size_t(std::ceil(kOctaves * 512.0));
-
-// The emission at kEmissionCutoffKelvin x 2^(kOctaves x i / kSteps), i = 0 to kSteps (kEmissionMaxKelvin).
-const std::vector<Vec3>& emissionTable() {
-  static const std::vector<Vec3> table = [] {
-    std::vector<Vec3> t(kSteps + 1);
-    for (size_t i = 0; i <= kSteps; ++i)
-      t[i] = peakNormalisedBlackbodyRgb(kEmissionCutoffKelvin * std::exp2(kOctaves * double(i) / double(kSteps)));
-    return t;
-  }();
-  return table;
-}
-
-}  // namespace
 
 TemperatureToKelvin readTemperatureToKelvin(const PbrtParameters& params) {
   TemperatureToKelvin toKelvin;
   toKelvin.offset = params.getFloat("temperatureoffset", params.getFloat("temperaturecutoff", 0.0f));
   toKelvin.scale = params.getFloat("temperaturescale", 1.0f);
+  if (!std::isfinite(toKelvin.offset) || !std::isfinite(toKelvin.scale))
+    params.fail("medium: 'temperatureoffset', 'temperaturecutoff' and 'temperaturescale' must be finite");
   return toKelvin;
 }
 
-Vec3 temperatureEmissionRgb(double kelvin) {
-  // NaN falls here too.
-  if (!(kelvin > kEmissionCutoffKelvin)) return {0, 0, 0};
-  const std::vector<Vec3>& table = emissionTable();
-  const double at = std::log2(std::min(kelvin, kEmissionMaxKelvin) / kEmissionCutoffKelvin) / kOctaves * double(kSteps);
-  const size_t i = std::min(size_t(at), kSteps - 1);
-  const float f = float(std::min(at - double(i), 1.0));
-  return table[i] * (1.0f - f) + table[i + 1] * f;
+bool temperaturesEmit(const std::vector<float>& temperatures, const TemperatureToKelvin& toKelvin) {
+  auto emits = [&](float t) { return toKelvin(t) > double(kBlackbodyCutoffKelvin); };
+  return emits(0.0f) || std::any_of(temperatures.begin(), temperatures.end(), emits);
+}
+
+Vec3 blackbodyTableEntry(uint32_t i) {
+  return peakNormalisedBlackbodyRgb(double(kBlackbodyCutoffKelvin) * std::exp2(double(i) / kBlackbodyStepsPerOctave));
+}
+
+void emitFromTemperature(uint32_t offset, const TemperatureToKelvin& toKelvin, MediumGrid& grid, Scene& scene) {
+  grid.temperature = offset;
+  grid.temperatureOffset = toKelvin.offset;
+  grid.temperatureScale = toKelvin.scale;
+  for (const MediumGrid& other : scene.mediumGrids)
+    if (other.blackbody != kNoGridValues) {
+      grid.blackbody = other.blackbody;
+      return;
+    }
+  grid.blackbody = uint32_t(scene.mediumGridValues.size());
+  for (uint32_t i = 0; i < kBlackbodyTableSize; ++i) {
+    const Vec3 rgb = blackbodyTableEntry(i);
+    scene.mediumGridValues.insert(scene.mediumGridValues.end(), {rgb.x, rgb.y, rgb.z});
+  }
 }
 
 }  // namespace candela

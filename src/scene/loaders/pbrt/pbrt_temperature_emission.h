@@ -1,35 +1,39 @@
 #pragma once
-// Emission from temperature, as pbrt-v4's NanoVDBMedium and GridMedium compute it at a point: the temperature t read
-// from the grid becomes T = (t - offset) x scale kelvins; at or below 100 K the medium emits nothing, above it Le is
-// pbrt's BlackbodySpectrum at T (1 at its peak wavelength; pbrt_spectra.h) times `Lescale`. candela turns each sample
-// of the grid into its RGB emission once, when the scene is loaded.
-#include "core/math.h"
+// Emission from temperature, as pbrt-v4's NanoVDBMedium and GridMedium compute it at a point: the temperature t
+// interpolated from the grid becomes T = (t - offset) x scale kelvins; at or below 100 K the medium emits nothing,
+// above it Le is pbrt's BlackbodySpectrum at T (1 at its peak wavelength; pbrt_spectra.h) times `Lescale`. The
+// kernel does that at every point (kernel/media/medium_grid.h: blackbodyEmission) from the grid's temperatures and
+// a table of the blackbody's colours that the scene holds once.
+#include <cstdint>
+#include <vector>
+
 #include "scene/loaders/pbrt/pbrt_parameters.h"
+#include "scene/scene.h"
 
 namespace candela {
-
-// pbrt-v4's cutoff: a medium at or below this temperature (after offset and scale) emits nothing.
-constexpr double kEmissionCutoffKelvin = 100.0;
-// The hottest temperature whose blackbody is evaluated: hotter samples, up to the largest float and beyond, glow as
-// a blackbody of this temperature does (pbrt-v4 evaluates Planck's law in float, whose wavelength^5 at the peak
-// leaves float's normal range about here). Its peak lies at 29 nm: its emission in the visible is faint and blue.
-constexpr double kEmissionMaxKelvin = 1e5;
 
 // How a medium's temperatures map to kelvins: pbrt-v4's `temperatureoffset` (which defaults to
 // `temperaturecutoff`) and `temperaturescale`.
 struct TemperatureToKelvin {
-  double offset = 0.0;
-  double scale = 1.0;
-  double operator()(float temperature) const { return (double(temperature) - offset) * scale; }
+  float offset = 0.0f;
+  float scale = 1.0f;
+  double operator()(double temperature) const { return (temperature - double(offset)) * double(scale); }
 };
 
 // A medium's `temperatureoffset` (default: its `temperaturecutoff`, default 0, as pbrt-v4 reads them: the cutoff is
 // no cutoff) and `temperaturescale` (default 1).
 TemperatureToKelvin readTemperatureToKelvin(const PbrtParameters& params);
 
-// The linear sRGB emission (before `Lescale`) of a blackbody at `kelvin`: 0 at or below the cutoff, the
-// blackbody at kEmissionMaxKelvin above that, else pbrt's blackbody, interpolated in a table of 512 temperatures
-// per octave (built once, within 1e-4 of peakNormalisedBlackbodyRgb where the emission is not negligible).
-Vec3 temperatureEmissionRgb(double kelvin);
+// Whether a grid of these temperatures emits anywhere: some sample, or the 0 that lookups take beyond the samples
+// (which they mix in within half a voxel of the box's faces), hotter than the cutoff after offset and scale.
+// Interpolation stays between those values, so where none is hotter the medium is dark everywhere.
+bool temperaturesEmit(const std::vector<float>& temperatures, const TemperatureToKelvin& toKelvin);
+
+// Makes `grid` (a density grid whose temperatures start at `offset` of the scene's grid values) emit from them:
+// its offset and scale, and the scene's blackbody table, appended the first time a grid needs it.
+void emitFromTemperature(uint32_t offset, const TemperatureToKelvin& toKelvin, MediumGrid& grid, Scene& scene);
+
+// The blackbody table's entry i (linear sRGB of 100 K x 2^(i / 512): kernel/media/medium_grid.h).
+Vec3 blackbodyTableEntry(uint32_t i);
 
 }  // namespace candela
