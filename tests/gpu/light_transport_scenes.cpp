@@ -88,9 +88,9 @@ constexpr const char* kFog =
     "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\" \"rgb sigma_a\" [0.1 0.2 0.4] \"rgb sigma_s\" "
     "[2.5 1.5 0.8] \"float g\" 0.6\n";
 
-// The fog sphere, in `outside` (a medium's name, or "" for none).
+// The fog sphere, clear of the fog room's smoke box, in `outside` (a medium's name, or "" for none).
 std::string fogSphere(const std::string& outside) {
-  return object("\"interface\"", "\"fog\" \"" + outside + "\"", sphere({-0.4f, 0.6f, 0.2f}, 0.55f));
+  return object("\"interface\"", "\"fog\" \"" + outside + "\"", sphere({-0.45f, 0.55f, 0.2f}, 0.45f));
 }
 
 }  // namespace
