@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "app/scene_loading.h"
 #include "backends/cpu/cpu_backend.h"
 #include "curves/curve_scenes.h"
 #include "support/render_statistics.h"
@@ -51,6 +52,19 @@ TEST(CurveRender, RoundCurvesMatchTriangleTubes) {
       std::fabs(a.mean - b.mean) / std::sqrt(a.standardError * a.standardError + b.standardError * b.standardError);
   EXPECT_LT(z, 4.0) << "curves " << a.mean << " +- " << a.standardError << ", triangles " << b.mean << " +- "
                     << b.standardError;
+}
+
+// A scene without a camera is framed around its curves too.
+TEST(CurveRender, ASceneOfCurvesIsFramedAroundThem) {
+  Scene scene;
+  scene.materials.push_back(Material{});
+  scene.meshes.push_back(straightCurve(CurveType::Cylinder, 1.0f, 0.1f, 5.0f));
+  scene.instances.push_back({0, Affine3x4{}, {}});
+  scene.cameraMissing = true;
+  frameSceneBounds(scene);
+  EXPECT_NEAR(scene.camera.target.x, 0.0f, 1e-5f);
+  EXPECT_NEAR(scene.camera.target.y, 5.0f, 1e-5f);
+  EXPECT_GT(length(scene.camera.eye - scene.camera.target), 1.0f);
 }
 
 }  // namespace
