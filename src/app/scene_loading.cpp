@@ -134,18 +134,22 @@ bool hasLightSource(const Scene& scene) {
 }
 
 void frameSceneBounds(Scene& scene) {
-  // A mesh of one instance contributes its vertices; a mesh of many, the corners of its box at each instance, so
-  // that a mesh instanced thousands of times is framed in time proportional to its size and its instances.
+  // A mesh of one instance contributes its vertices (and its curves' control points); a mesh of many, the corners
+  // of its box at each instance, so that a mesh instanced thousands of times is framed in time proportional to its
+  // size and its instances.
+  auto eachPoint = [](const Mesh& mesh, auto&& take) {
+    for (Vec3 p : mesh.positions) take(p);
+    for (const Vec4& v : mesh.curveVertices) take(Vec3{v.x, v.y, v.z});
+  };
   std::vector<uint32_t> instances(scene.meshes.size());
   for (const Instance& inst : scene.instances) ++instances[inst.meshId];
   std::vector<Bounds3> meshBounds(scene.meshes.size());
   for (size_t m = 0; m < scene.meshes.size(); ++m)
-    if (instances[m] > 1)
-      for (Vec3 p : scene.meshes[m].positions) meshBounds[m].extend(p);
+    if (instances[m] > 1) eachPoint(scene.meshes[m], [&](Vec3 p) { meshBounds[m].extend(p); });
   Bounds3 bounds;
   for (const Instance& inst : scene.instances) {
     if (instances[inst.meshId] == 1) {
-      for (Vec3 p : scene.meshes[inst.meshId].positions) bounds.extend(inst.objectToWorld.point(p));
+      eachPoint(scene.meshes[inst.meshId], [&](Vec3 p) { bounds.extend(inst.objectToWorld.point(p)); });
       continue;
     }
     const Bounds3& box = meshBounds[inst.meshId];

@@ -2,6 +2,7 @@
 #include <cstring>
 
 #include "core/math.h"
+#include "kernel/curve_attributes.h"
 #include "kernel/hit.h"
 #include "kernel/scene_view.h"
 #include "kernel/texture_filtering.h"
@@ -21,7 +22,23 @@ struct SurfaceInteraction {
   TextureFootprint footprint;  // what the material's lookups average over (none: the finest level)
 };
 
-CANDELA_FN SurfaceInteraction makeInteraction(const SceneView& scene, const Hit& hit) {
+// The surface of a curve at `hit`: its tangent runs along the curve (a hair fibre's axis, hair.h) and its uv are
+// u along the curve and v across it (curve_attributes.h).
+CANDELA_FN SurfaceInteraction makeCurveInteraction(const SceneView& scene, const Hit& hit, const Ray& ray) {
+  const CurveHitGeometry g = curveHitGeometry(scene, hit, ray);
+  SurfaceInteraction si;
+  si.position = g.position;
+  si.geometricNormal = g.normal;
+  si.shadingNormal = g.normal;
+  si.tangent = g.dpdu;
+  si.uv = {clampf(hit.b1, 0.0f, 1.0f), 0.5f * (1.0f - g.h)};
+  si.materialId = g.material;
+  return si;
+}
+
+// The surface that `ray` meets at `hit`.
+CANDELA_FN SurfaceInteraction makeInteraction(const SceneView& scene, const Hit& hit, const Ray& ray) {
+  if (isCurveHit(scene, hit)) return makeCurveInteraction(scene, hit, ray);
   const HitTriangle tri = hitTriangle(scene, hit);
   const InstanceRecord& inst = *tri.instance;
   const MeshRecord& mesh = *tri.mesh;
@@ -43,6 +60,12 @@ CANDELA_FN SurfaceInteraction makeInteraction(const SceneView& scene, const Hit&
   if (mesh.hasColors) si.color = interpolate(scene.colors, tri);
   si.materialId = scene.triangleMaterials[tri.triangle];
   return si;
+}
+
+// The material at `hit`, a triangle's or a curve's.
+CANDELA_FN uint32_t hitMaterial(const SceneView& scene, const Hit& hit) {
+  return isCurveHit(scene, hit) ? hitCurveSegment(scene, hit).material
+                                : scene.triangleMaterials[hitTriangle(scene, hit).triangle];
 }
 
 CANDELA_FN int32_t floatAsInt(float f) {

@@ -137,7 +137,7 @@ CANDELA_FN bool shadeVertex(const SceneView& scene, const RenderSettings& settin
     return false;
   }
   if (kWithAovs && a.aovsPending) a.pathLength += hit.t;
-  SurfaceInteraction si = makeInteraction(scene, hit);
+  SurfaceInteraction si = makeInteraction(scene, hit, ray);
   const Material& stored = scene.materials[si.materialId];
   // A segment that ends on a surface's inner side ran inside its material, which may absorb.
   if (absorbs(stored) && dot(ray.direction, si.geometricNormal) > 0.0f) s.beta *= volumeTransmittance(stored, hit.t);

@@ -3,6 +3,7 @@
 // 10(1)): the cone about a path's ray that one pixel spans, followed from the camera through mirror and smooth
 // glass bounces, and the texture footprint it leaves on the surface it hits.
 #include "kernel/camera.h"
+#include "kernel/curve_attributes.h"
 #include "kernel/hit.h"
 #include "kernel/scene_view.h"
 #include "kernel/texture_filtering.h"
@@ -40,7 +41,7 @@ CANDELA_FN RayCone cameraRayCone(const Camera& camera, uint32_t imageHeight) {
 // width long as seen from the ray, as a rasteriser's derivatives span one pixel.
 CANDELA_FN TextureFootprint textureFootprint(const SceneView& scene, const Hit& hit, Vec3 direction, float width,
                                              TextureFilter filter) {
-  if (filter == TextureFilter::Finest || !(width > 0.0f)) return {};
+  if (filter == TextureFilter::Finest || !(width > 0.0f) || isCurveHit(scene, hit)) return {};
   const HitTriangle tri = hitTriangle(scene, hit);
   if (!tri.mesh->hasUvs) return {};
   const Affine3x4& toWorld = tri.instance->objectToWorld;

@@ -33,7 +33,12 @@
   X(Vec3, colors, WithScene, uncounted, "vertex colours")                                      \
   /* mesh-local vertex indices, 3 per triangle */                                              \
   X(uint32_t, indices, WithScene, uncounted, "triangle indices")                               \
-  X(uint32_t, triangleMaterials, WithScene, uncounted, "triangle materials")
+  X(uint32_t, triangleMaterials, WithScene, uncounted, "triangle materials")                   \
+  /* curves (kernel/curve.h): control points in object space, xyz and radius, 4 per segment */ \
+  X(Vec4, curveVertices, WithScene, uncounted, "curve control points")                         \
+  /* one per control point of a mesh of ribbons; none for other meshes */                      \
+  X(Vec3, curveNormals, WithScene, uncounted, "curve normals")                                 \
+  X(CurveSegment, curveSegments, WithScene, uncounted, "curve segments")
 
 // Built by FlatScene::build from the scene as a whole.
 #define CANDELA_BUILT_ARRAYS(X)                                                                          \

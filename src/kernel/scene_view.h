@@ -3,6 +3,7 @@
 #include <cstdint>
 
 #include "core/math.h"
+#include "kernel/curve.h"
 #include "kernel/environment.h"
 #include "kernel/light_bounds.h"
 #include "kernel/material.h"
@@ -23,6 +24,12 @@ struct MeshRecord {
   uint32_t hasUvs = 0;
   uint32_t hasTangents = 0;
   uint32_t hasColors = 0;
+  // Curves (kernel/curve.h): a mesh holds these or triangles, never both.
+  uint32_t firstCurveVertex = 0;  // into curveVertices
+  uint32_t firstCurveNormal = 0;  // into curveNormals, where hasCurveNormals (ribbons)
+  uint32_t firstCurveSegment = 0;
+  uint32_t curveSegmentCount = 0;
+  uint32_t hasCurveNormals = 0;
 };
 
 struct InstanceRecord {

@@ -200,6 +200,18 @@ void packTextures(const Scene& scene, FlatScene& flat) {
   });
 }
 
+// A mesh's curves after the scene's others; only ribbons carry normals.
+void appendCurves(const Mesh& mesh, MeshRecord& record, FlatScene& flat) {
+  record.firstCurveVertex = uint32_t(flat.curveVertices.size());
+  record.firstCurveNormal = uint32_t(flat.curveNormals.size());
+  record.firstCurveSegment = uint32_t(flat.curveSegments.size());
+  record.curveSegmentCount = uint32_t(mesh.curveSegments.size());
+  record.hasCurveNormals = mesh.curveNormals.empty() ? 0u : 1u;
+  flat.curveVertices.insert(flat.curveVertices.end(), mesh.curveVertices.begin(), mesh.curveVertices.end());
+  flat.curveNormals.insert(flat.curveNormals.end(), mesh.curveNormals.begin(), mesh.curveNormals.end());
+  flat.curveSegments.insert(flat.curveSegments.end(), mesh.curveSegments.begin(), mesh.curveSegments.end());
+}
+
 void buildEnvironment(const Environment& env, FlatScene& flat) {
   EnvironmentView& view = flat.environment;
   // Reduced exactly first: a rotation near the largest float would overflow to infinity in radians.
@@ -266,6 +278,7 @@ FlatScene FlatScene::build(const Scene& scene) {
     flat.indices.insert(flat.indices.end(), mesh.indices.begin(), mesh.indices.end());
     flat.triangleMaterials.insert(flat.triangleMaterials.end(), mesh.triangleMaterials.begin(),
                                   mesh.triangleMaterials.end());
+    appendCurves(mesh, flat.meshes.back(), flat);
   }
   for (const Instance& inst : scene.instances)
     flat.instances.push_back({inst.meshId, inst.objectToWorld, normalTransform(inst.objectToWorld), inst.media});

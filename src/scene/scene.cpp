@@ -20,7 +20,7 @@ size_t sceneMemoryBytes(const Scene& scene) {
   size_t n = bytes(scene.instances) + bytes(scene.materials);
   for (const Mesh& m : scene.meshes)
     n += bytes(m.positions) + bytes(m.normals) + bytes(m.uvs) + bytes(m.tangents) + bytes(m.colors) + bytes(m.indices) +
-         bytes(m.triangleMaterials);
+         bytes(m.triangleMaterials) + bytes(m.curveVertices) + bytes(m.curveNormals) + bytes(m.curveSegments);
   for (const Texture& t : scene.textures) n += bytes(t.bytes) + bytes(t.floats);
   n += bytes(scene.mediumGrids) + bytes(scene.mediumGridValues);
   return n + bytes(scene.environment.map.floats);
@@ -40,6 +40,32 @@ bool mixChainsEnd(const std::vector<Material>& materials) {
       if (materials[i].type == MaterialType::Mix)
         mixes[i] = 1 + std::max(mixes[materials[i].mixedMaterials[0]], mixes[materials[i].mixedMaterials[1]]);
   return std::all_of(mixes.begin(), mixes.end(), [](uint32_t n) { return n <= kMaxMixDepth; });
+}
+
+// What is wrong with a mesh's curves, or nothing: a mesh holds triangles or curves of one type, each segment's
+// control points within curveVertices, radii finite and not negative, ribbons with a normal per control point.
+std::string curveProblem(const Mesh& mesh, size_t materials) {
+  if (mesh.curveSegments.empty())
+    return mesh.curveVertices.empty() && mesh.curveNormals.empty() ? "" : "has curve vertices but no curve segments";
+  if (!mesh.indices.empty()) return "holds both triangles and curves";
+  const CurveType type = mesh.curveSegments[0].type;
+  if (uint32_t(type) >= kCurveTypeCount) return "has a curve of unknown type";
+  const bool ribbons = type == CurveType::Ribbon;
+  if (ribbons ? mesh.curveNormals.size() != mesh.curveVertices.size() : !mesh.curveNormals.empty())
+    return "needs one curve normal per control point of its ribbons, and none for other curves";
+  for (const CurveSegment& segment : mesh.curveSegments) {
+    if (segment.type != type) return "mixes curve types";
+    if (segment.firstVertex > mesh.curveVertices.size() ||
+        mesh.curveVertices.size() - segment.firstVertex < kCurveControlPoints)
+      return "has a curve segment past its control points";
+    if (segment.material >= materials) return "uses a missing material";
+  }
+  for (const Vec4& v : mesh.curveVertices)
+    if (!finite(Vec3{v.x, v.y, v.z}) || !std::isfinite(v.w) || v.w < 0.0f)
+      return "has a curve control point that is not finite or has a negative radius";
+  for (Vec3 n : mesh.curveNormals)
+    if (!finite(n)) return "has a non-finite curve normal";
+  return "";
 }
 
 }  // namespace
@@ -68,6 +94,8 @@ void validateScene(const Scene& scene) {
       if (id >= scene.materials.size()) fail("mesh '" + mesh.name + "' uses a missing material");
     for (Vec3 p : mesh.positions)
       if (!finite(p)) fail("mesh '" + mesh.name + "' has a non-finite vertex position");
+    if (std::string problem = curveProblem(mesh, scene.materials.size()); !problem.empty())
+      fail("mesh '" + mesh.name + "' " + problem);
   }
   auto mediumExists = [&](uint32_t medium) { return medium == kNoMedium || medium < scene.media.size(); };
   for (const Instance& inst : scene.instances) {

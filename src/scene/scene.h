@@ -23,6 +23,11 @@ struct Mesh {
   std::vector<Vec3> colors;       // empty, or one per position: linear RGB that multiplies the base colour
   std::vector<uint32_t> indices;  // 3 per triangle
   std::vector<uint32_t> triangleMaterials;  // one per triangle
+  // Or curves instead of triangles (kernel/curve.h), all of one type: 4 control points (xyz, radius) per segment,
+  // the ribbons' normals (empty, or one per control point) and the segments.
+  std::vector<Vec4> curveVertices;
+  std::vector<Vec3> curveNormals;
+  std::vector<CurveSegment> curveSegments;
 
   size_t triangleCount() const { return indices.size() / 3; }
 };

@@ -210,7 +210,7 @@ bool boundsWithinRange(const Bounds3& objectBounds, const Affine3x4& transform) 
 }
 
 Bounds3 meshBounds(const Mesh& mesh) {
-  return tbb::parallel_reduce(
+  Bounds3 bounds = tbb::parallel_reduce(
       tbb::blocked_range<size_t>(0, mesh.positions.size()), Bounds3{},
       [&](const tbb::blocked_range<size_t>& r, Bounds3 b) {
         for (size_t v = r.begin(); v < r.end(); ++v) b.extend(mesh.positions[v]);
@@ -223,6 +223,12 @@ Bounds3 meshBounds(const Mesh& mesh) {
         }
         return a;
       });
+  // A curve lies within its control points' hull, widened by their largest radius.
+  for (const Vec4& v : mesh.curveVertices) {
+    bounds.extend(Vec3{v.x, v.y, v.z} - Vec3{v.w, v.w, v.w});
+    bounds.extend(Vec3{v.x, v.y, v.z} + Vec3{v.w, v.w, v.w});
+  }
+  return bounds;
 }
 
 namespace {
@@ -280,12 +286,12 @@ void repairInstances(Scene& scene, const std::vector<MeshRepair>& repairs, const
   if (scene.instances.size() > kMaxInstances)
     failLoad(file, "has " + std::to_string(scene.instances.size()) + " instances; at most " +
                        std::to_string(kMaxInstances) + " are supported");
-  // Meshes left without triangles go; the instances of the others are renumbered.
+  // Meshes left without triangles or curves go; the instances of the others are renumbered.
   std::vector<uint32_t> newMeshId(scene.meshes.size(), ~0u);
   std::vector<Bounds3> bounds;
   size_t kept = 0;
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
-    if (scene.meshes[m].triangleCount() == 0) continue;
+    if (scene.meshes[m].triangleCount() == 0 && scene.meshes[m].curveSegments.empty()) continue;
     newMeshId[m] = uint32_t(kept);
     bounds.push_back(repairs[m].bounds);
     if (kept != m) scene.meshes[kept] = std::move(scene.meshes[m]);

@@ -29,6 +29,7 @@ constexpr size_t kMaxInstances = 10'000'000;
 bool usableTransform(const Affine3x4& transform);
 // Whether `transform` keeps the corners of `objectBounds` within kMaxSceneCoordinate.
 bool boundsWithinRange(const Bounds3& objectBounds, const Affine3x4& transform);
+// The box around a mesh's vertices and curves (widened by their radii), in object space.
 Bounds3 meshBounds(const Mesh& mesh);
 
 // Zeroes non-finite normals, texture coordinates and tangents, in meshes and in the rest shapes of skinned and

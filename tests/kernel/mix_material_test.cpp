@@ -87,7 +87,7 @@ TEST(MixMaterial, EachTriangleShowsBothMaterials) {
       hit.primitiveId = triangle;
       hit.b1 = float(i % 61) / 128.0f;
       hit.b2 = float(i / 61) / 128.0f;
-      SurfaceInteraction si = makeInteraction(view, hit);
+      SurfaceInteraction si = makeInteraction(view, hit, Ray{});
       second += chooseMixedMaterial(view, si.materialId, si, {0, 1, 0}) == 1;
     }
     expectBinomialShare(second, n, 0.3);
@@ -134,7 +134,7 @@ TEST(MixMaterial, AVertexAlwaysChoosesAlikeAndEmitsAsTheMix) {
     Hit hit;
     hit.b1 = float(i) / 256.0f;
     hit.b2 = 0.25f;
-    SurfaceInteraction si = makeInteraction(view, hit);
+    SurfaceInteraction si = makeInteraction(view, hit, Ray{});
     Vec3 wo = normalize(Vec3{0.1f * float(i % 7), 1.0f, 0.2f});
     Material first = evaluateSurfaceMaterial(view, si, wo);
     for (int repeat = 0; repeat < 3; ++repeat)

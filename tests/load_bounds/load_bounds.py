@@ -244,6 +244,25 @@ def case_max_memory(candela, workdir):
     return "refused", "budget.pbrt", ["--max-memory", "200M"], "budget.png: an image decoded at 8192x8192 pixels needs about 256 MiB.*--max-memory"
 
 
+def case_many_curves(candela, workdir):
+    """A hair model's worth of curves, one directive each (pbrt-v4's hair scenes hold hundreds of thousands)."""
+    lines = [SCENE_HEAD, 'Material "hair"\n']
+    for i in range(200000):
+        x, z = (i % 500) / 250 - 1, (i // 500) / 200 - 1
+        lines.append('Shape "curve" "string type" "cylinder" "point3 P" [%.4f -1 %.4f %.4f -0.3 %.4f %.4f 0.3 %.4f '
+                     '%.4f 1 %.4f] "float width0" 0.004 "float width1" 0.001\n' % (x, z, x + 0.05, z, x - 0.05, z, x, z))
+    write(os.path.join(workdir, "many-curves.pbrt"), "".join(lines))
+    return "bounded", "many-curves.pbrt"
+
+
+def case_curve_max_memory(candela, workdir):
+    """One b-spline of a million control points: its segments are charged before they are made."""
+    points = " ".join("%d 1 2" % (i % 10) for i in range(1000000))
+    write(os.path.join(workdir, "long-curve.pbrt"),
+          SCENE_HEAD + 'Shape "curve" "string basis" "bspline" "point3 P" [%s]\n' % points)
+    return "refused", "long-curve.pbrt", ["--max-memory", "200M"], "long-curve.pbrt:5: shape 'curve' needs about .*--max-memory"
+
+
 def glb_bytes(document, binary):
     """A .glb of a JSON document and a BIN chunk, each padded to four bytes."""
     text = json.dumps(document).encode()

@@ -136,12 +136,12 @@ TEST(Texture, VertexColoursMultiplyTheBaseColour) {
   hit.b1 = 0.25f;
   hit.b2 = 0.5f;
   hit.instanceId = 1;
-  Material e = evaluateMaterial(view, m, makeInteraction(view, hit));
+  Material e = evaluateMaterial(view, m, makeInteraction(view, hit, Ray{}));
   EXPECT_NEAR(e.baseColor.x, 0.5f * 0.25f, 1e-6f);
   EXPECT_NEAR(e.baseColor.y, 0.5f * 0.25f, 1e-6f);
   EXPECT_NEAR(e.baseColor.z, 0.5f * 0.5f, 1e-6f);
   hit.instanceId = 0;
-  e = evaluateMaterial(view, m, makeInteraction(view, hit));
+  e = evaluateMaterial(view, m, makeInteraction(view, hit, Ray{}));
   EXPECT_FLOAT_EQ(e.baseColor.x, 0.5f);
   EXPECT_FLOAT_EQ(e.baseColor.z, 0.5f);
 }

@@ -28,7 +28,7 @@ TEST(FlatScene, LightTableAndInteractionAgreeOnTheFrontUnderMirroring) {
     Hit hit;
     hit.instanceId = i;
     hit.b1 = hit.b2 = 0.25f;
-    Vec3 front = makeInteraction(view, hit).geometricNormal;
+    Vec3 front = makeInteraction(view, hit, Ray{}).geometricNormal;
     Vec3 emitting = cross(flat.lights[i].edge1, flat.lights[i].edge2) * flat.lights[i].frontSign;
     EXPECT_GT(dot(front, emitting), 0.0f) << "instance " << i;
   }

@@ -681,20 +681,20 @@ TEST(PbrtLoader, UnsupportedFeaturesWarnOncePerFeature) {
   LoadWarnings warnings;
   Scene scene =
       loadText(std::string(kMirroredCamera) +
-                   "Shape \"curve\" \"point3 P\" [0 0 0 1 1 1 2 2 2 3 3 3]\nShape \"curve\" \"point3 P\" "
-                   "[0 0 0 1 1 1 2 2 2 3 3 3]\nLightSource \"goniometric\" \"rgb I\" [1 1 1]\n"
+                   "Shape \"hyperboloid\" \"point3 p1\" [0 0 0]\nShape \"hyperboloid\" \"point3 p1\" "
+                   "[1 1 1]\nLightSource \"goniometric\" \"rgb I\" [1 1 1]\n"
                    "MakeNamedMedium \"smoke\" \"string type\" \"homogeneous\" \"string preset\" \"Skin1\"\n"
                    "MakeNamedMedium \"cloud\" \"string type\" \"homogeneous\" \"string preset\" \"Wholemilk\"\n" +
                    kTriangle,
                &warnings);
   EXPECT_EQ(scene.meshes.size(), 1u);
-  int curveWarnings = 0, lightWarnings = 0, mediaWarnings = 0;
+  int shapeWarnings = 0, lightWarnings = 0, mediaWarnings = 0;
   for (const std::string& w : warnings.messages) {
-    curveWarnings += w.find("'curve'") != std::string::npos;
+    shapeWarnings += w.find("'hyperboloid'") != std::string::npos;
     lightWarnings += w.find("'goniometric'") != std::string::npos;
     mediaWarnings += w.find("medium presets") != std::string::npos;
   }
-  EXPECT_EQ(curveWarnings, 1);
+  EXPECT_EQ(shapeWarnings, 1);
   EXPECT_EQ(lightWarnings, 1);
   EXPECT_EQ(mediaWarnings, 1);
 }

@@ -117,21 +117,30 @@ Mesh fullTriangle(uint32_t k) {
   return m;
 }
 
+// A ribbon (a mesh of curves, which holds no triangles) with every curve array given, numbered from `k`.
+Mesh fullRibbon(uint32_t k) {
+  const float f = float(k);
+  Mesh m;
+  m.name = "ribbon" + std::to_string(k);
+  m.curveVertices = {{f, 0, 0, 0.1f}, {f + 1, 1, 0, 0.2f}, {f + 2, -1, 0, 0.3f}, {f + 3, 0, 0, 0.4f}};
+  m.curveNormals = {{0, 0, 1}, {0, 0.6f, 0.8f}, {0, 0.8f, 0.6f}, {0, 1, 0}};
+  m.curveSegments = {{0, k, CurveType::Ribbon}};
+  return m;
+}
+
 // FlatScene::build puts each mesh's arrays back to back, array by array.
 TEST(SceneArrays, TheFlatSceneConcatenatesEveryPerMeshArray) {
   Scene scene;
   scene.materials = {Material{}, Material{}};
-  scene.meshes = {fullTriangle(0), fullTriangle(1)};
-  scene.instances = {{0, Affine3x4{}}, {1, Affine3x4{}}};
+  scene.meshes = {fullTriangle(0), fullRibbon(0), fullTriangle(1), fullRibbon(1)};
+  scene.instances = {{0, Affine3x4{}}, {1, Affine3x4{}}, {2, Affine3x4{}}, {3, Affine3x4{}}};
   const FlatScene flat = FlatScene::build(scene);
-#define CANDELA_EXPECT_CONCATENATED(Type, member, upload, count, description) \
-  {                                                                           \
-    std::vector<Type> expected;                                               \
-    for (const Mesh& m : scene.meshes) {                                      \
-      ASSERT_FALSE(m.member.empty()) << "fullTriangle gives no " #member;     \
-      expected.insert(expected.end(), m.member.begin(), m.member.end());      \
-    }                                                                         \
-    EXPECT_TRUE(sameBytes(flat.member, expected)) << #member;                 \
+#define CANDELA_EXPECT_CONCATENATED(Type, member, upload, count, description)                             \
+  {                                                                                                       \
+    std::vector<Type> expected;                                                                           \
+    for (const Mesh& m : scene.meshes) expected.insert(expected.end(), m.member.begin(), m.member.end()); \
+    ASSERT_FALSE(expected.empty()) << "no mesh here gives " #member;                                      \
+    EXPECT_TRUE(sameBytes(flat.member, expected)) << #member;                                             \
   }
   CANDELA_MESH_ARRAYS(CANDELA_EXPECT_CONCATENATED)
 #undef CANDELA_EXPECT_CONCATENATED

@@ -1,8 +1,10 @@
 #include "backends/cpu/embree_scene.h"
 
+#include <algorithm>
 #include <cstring>
 #include <stdexcept>
 
+#include "backends/cpu/embree_curve_hits.h"
 #include "backends/cpu/embree_errors.h"
 #include "backends/cpu/embree_pass_through.h"
 #include "kernel/pass_through.h"
@@ -27,6 +29,40 @@ std::vector<bool> meshesThatCanPassRays(const FlatScene& flat) {
       result[m] = canPassThrough(flat.materials[flat.triangleMaterials[t]]);
   }
   return result;
+}
+
+// A mesh's curves as one Embree curve geometry of their type; Embree's primitive ids are the mesh's segments.
+// Copied into Embree's own buffers, which carry the padding its SIMD loads need past the last element.
+RTCGeometry newCurveGeometry(RTCDevice device, const FlatScene& flat, const MeshRecord& mesh) {
+  const CurveSegment* segments = flat.curveSegments.data() + mesh.firstCurveSegment;
+  size_t vertexCount = 0;
+  for (uint32_t s = 0; s < mesh.curveSegmentCount; ++s)
+    vertexCount = std::max(vertexCount, size_t(segments[s].firstVertex) + kCurveControlPoints);
+  const CurveType type = segments[0].type;
+  RTCGeometry geometry =
+      rtcNewGeometry(device, type == CurveType::Flat       ? RTC_GEOMETRY_TYPE_FLAT_BEZIER_CURVE
+                             : type == CurveType::Cylinder ? RTC_GEOMETRY_TYPE_ROUND_BEZIER_CURVE
+                                                           : RTC_GEOMETRY_TYPE_NORMAL_ORIENTED_BEZIER_CURVE);
+  auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT,
+                                                                 sizeof(uint32_t), mesh.curveSegmentCount));
+  auto* vertices = static_cast<Vec4*>(
+      rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, sizeof(Vec4), vertexCount));
+  Vec3* normals = nullptr;
+  if (type == CurveType::Ribbon)
+    normals = static_cast<Vec3*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_NORMAL, 0, RTC_FORMAT_FLOAT3, sizeof(Vec3), vertexCount));
+  if (!indices || !vertices || (type == CurveType::Ribbon && !normals)) return geometry;  // the caller checks
+  for (uint32_t s = 0; s < mesh.curveSegmentCount; ++s) indices[s] = segments[s].firstVertex;
+  std::memcpy(vertices, flat.curveVertices.data() + mesh.firstCurveVertex, vertexCount * sizeof(Vec4));
+  if (normals) std::memcpy(normals, flat.curveNormals.data() + mesh.firstCurveNormal, vertexCount * sizeof(Vec3));
+  if (type == CurveType::Cylinder) {
+    rtcSetGeometryIntersectFilterFunction(geometry, rejectCurveInsideHits);
+    rtcSetGeometryOccludedFilterFunction(geometry, rejectCurveInsideHits);
+  } else if (type == CurveType::Flat) {
+    rtcSetGeometryIntersectFilterFunction(geometry, rejectFlatCurveSelfHits);
+    rtcSetGeometryOccludedFilterFunction(geometry, rejectFlatCurveSelfHits);
+  }
+  return geometry;
 }
 
 }  // namespace
@@ -56,6 +92,17 @@ void EmbreeScene::build(const FlatScene& flat) {
   for (size_t m = 0; m < flat.meshes.size(); ++m) {
     const MeshRecord& mesh = flat.meshes[m];
     RTCScene meshScene = rtcNewScene(device_);
+    if (mesh.curveSegmentCount > 0) {
+      RTCGeometry geometry = newCurveGeometry(device_, flat, mesh);
+      check(device_, "setting up a mesh's curves", flat);
+      rtcCommitGeometry(geometry);
+      rtcAttachGeometry(meshScene, geometry);
+      rtcReleaseGeometry(geometry);
+      rtcCommitScene(meshScene);
+      check(device_, "building a curve BVH", flat);
+      meshScenes_.push_back(meshScene);
+      continue;
+    }
     RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
     // Embree's own buffers carry the padding its SIMD loads need past the last vertex.
     auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,

@@ -4,6 +4,7 @@
 #include <optix_stubs.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <cstring>
 #include <unordered_map>
 #include <unordered_set>
@@ -103,6 +104,33 @@ std::vector<uint8_t> sbtIndices(const FlatScene& flat, const MeshRecord& mesh) {
   return indices;
 }
 
+// A mesh's curves as one build input of round cubic Bezier curves, read in place from the device copy of the flat
+// arrays (kernel/curve.h): the control points' xyz and, 12 bytes on, their radii (OptiX's widths), both 16 bytes
+// apart; each segment's first control point, sizeof(CurveSegment) apart. Curves take one SBT record (the
+// curves' hit groups, kCurveSbtOffset) and no any-hit program.
+void setCurveInput(const FlatScene& flat, const MeshRecord& mesh, const SceneView& device, CUdeviceptr& vertices,
+                   CUdeviceptr& widths, OptixBuildInput& input) {
+  uint32_t vertexCount = 0;
+  for (uint32_t s = 0; s < mesh.curveSegmentCount; ++s)
+    vertexCount =
+        std::max(vertexCount, flat.curveSegments[mesh.firstCurveSegment + s].firstVertex + kCurveControlPoints);
+  vertices = CUdeviceptr(device.curveVertices + mesh.firstCurveVertex);
+  widths = vertices + offsetof(Vec4, w);
+  input.type = OPTIX_BUILD_INPUT_TYPE_CURVES;
+  OptixBuildInputCurveArray& curves = input.curveArray;
+  curves.curveType = OPTIX_PRIMITIVE_TYPE_ROUND_CUBIC_BEZIER;
+  curves.numPrimitives = mesh.curveSegmentCount;
+  curves.vertexBuffers = &vertices;
+  curves.numVertices = vertexCount;
+  curves.vertexStrideInBytes = sizeof(Vec4);
+  curves.widthBuffers = &widths;
+  curves.widthStrideInBytes = sizeof(Vec4);
+  curves.indexBuffer = CUdeviceptr(device.curveSegments + mesh.firstCurveSegment) + offsetof(CurveSegment, firstVertex);
+  curves.indexStrideInBytes = sizeof(CurveSegment);
+  curves.flag = OPTIX_GEOMETRY_FLAG_DISABLE_ANYHIT;
+  curves.endcapFlags = OPTIX_CURVE_ENDCAP_DEFAULT;
+}
+
 }  // namespace
 
 uint8_t materialSbtIndex(const Material& m) { return uint8_t((usesAlpha(m) ? 1 : 0) | (cullsBackFaces(m) ? 2 : 0)); }
@@ -124,6 +152,11 @@ void AccelerationStructures::update(OptixDeviceContext context, cudaStream_t str
     s.meshIndex = m;
     s.key = meshKey(flat, mesh);
     s.sbtIndices = sbtIndices(flat, mesh);
+    // Curves are built anew with every update that builds: neither shared nor kept (their key sees no curve).
+    if (mesh.curveSegmentCount > 0) {
+      toBuild.push_back(m);
+      continue;
+    }
     if (mesh.triangleCount == 0) continue;
     auto equals = [&](const MeshStructure& other, const FlatScene& otherScene) {
       return other.sbtIndices == s.sbtIndices && sameTriangles(otherScene, other.meshIndex, flat, m);
@@ -153,11 +186,11 @@ void AccelerationStructures::update(OptixDeviceContext context, cudaStream_t str
   }
 
   std::vector<OptixInstance> instances;
-  auto addInstance = [&](const float(&transform)[12], uint32_t id, OptixTraversableHandle handle) {
+  auto addInstance = [&](const float(&transform)[12], uint32_t id, OptixTraversableHandle handle, uint32_t sbtOffset) {
     OptixInstance instance{};
     std::memcpy(instance.transform, transform, sizeof instance.transform);
     instance.instanceId = id;
-    instance.sbtOffset = 0;
+    instance.sbtOffset = sbtOffset;
     instance.visibilityMask = 0xFF;
     instance.flags = OPTIX_INSTANCE_FLAG_NONE;
     instance.traversableHandle = handle;
@@ -165,15 +198,16 @@ void AccelerationStructures::update(OptixDeviceContext context, cudaStream_t str
   };
   for (size_t i = 0; i < flat.instances.size(); ++i) {
     const InstanceRecord& record = flat.instances[i];
-    // Batched meshes are reached through their batch; meshes without triangles have nothing to hit.
+    // Batched meshes are reached through their batch; meshes without triangles or curves have nothing to hit.
     if (meshes[record.meshId].batch >= 0 || meshes[record.meshId].handle == 0) continue;
-    addInstance(record.objectToWorld.m, uint32_t(i), meshes[record.meshId].handle);
+    addInstance(record.objectToWorld.m, uint32_t(i), meshes[record.meshId].handle,
+                flat.meshes[record.meshId].curveSegmentCount > 0 ? kCurveSbtOffset : 0);
   }
   firstBatchId_ = uint32_t(flat.instances.size());
   const float identity[12] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
   std::vector<uint32_t> batchInstances(batches.size() * kMaxBatchInputs, 0);
   for (size_t b = 0; b < batches.size(); ++b) {
-    addInstance(identity, firstBatchId_ + uint32_t(b), batches[b].handle);
+    addInstance(identity, firstBatchId_ + uint32_t(b), batches[b].handle, 0);
     std::copy(batches[b].instances.begin(), batches[b].instances.end(), batchInstances.begin() + b * kMaxBatchInputs);
   }
   batchInstances_ = DeviceBuffer::fromVector(batchInstances, "the instances of batched meshes");
@@ -214,7 +248,7 @@ std::vector<AccelerationStructures::BuildGroup> AccelerationStructures::groupFor
   // A batch's triangles share one SBT index (geometry flags); culling, where the flags ask for it, is decided by
   // the winding in world space, which a mirroring transform turns over.
   auto batchClass = [&](uint32_t m) -> int {
-    if (instanceCount[m] != 1 || sharedWith[m]) return -1;
+    if (instanceCount[m] != 1 || sharedWith[m] || flat.meshes[m].curveSegmentCount > 0) return -1;
     const int sbtIndex = uniformSbtIndex(meshes[m].sbtIndices);
     if (sbtIndex < 0) return -1;
     if ((sbtIndex & 2) && !(flat.instances[instanceOf[m]].objectToWorld.determinant() > 0.0f)) return -1;
@@ -275,7 +309,7 @@ void AccelerationStructures::buildMeshes(OptixDeviceContext context, cudaStream_
                         std::end(flat.instances[i].objectToWorld.m));
   const DeviceBuffer transformBuffer = DeviceBuffer::fromVector(transforms, "the transforms of batched meshes");
 
-  std::vector<CUdeviceptr> vertexBuffers(inputCount);
+  std::vector<CUdeviceptr> vertexBuffers(inputCount), widthBuffers(inputCount);
   std::vector<OptixBuildInput> inputs(inputCount);
   std::vector<DeviceBuffer> sbtIndexBuffers(inputCount);
   size_t next = 0, nextTransform = 0;
@@ -283,6 +317,10 @@ void AccelerationStructures::buildMeshes(OptixDeviceContext context, cudaStream_
     for (uint32_t m : g.meshes) {
       const size_t b = next++;
       const MeshRecord& mesh = flat.meshes[m];
+      if (mesh.curveSegmentCount > 0) {
+        setCurveInput(flat, mesh, device, vertexBuffers[b], widthBuffers[b], inputs[b]);
+        continue;
+      }
       const std::vector<uint8_t>& sbt = meshes[m].sbtIndices;
       vertexBuffers[b] = CUdeviceptr(device.positions + mesh.firstVertex);
       OptixBuildInput& input = inputs[b];
@@ -315,7 +353,7 @@ void AccelerationStructures::buildMeshes(OptixDeviceContext context, cudaStream_
     }
 
   OptixAccelBuildOptions options{};
-  options.buildFlags = OPTIX_BUILD_FLAG_PREFER_FAST_TRACE | OPTIX_BUILD_FLAG_ALLOW_COMPACTION;
+  options.buildFlags = kMeshBuildFlags;
   options.operation = OPTIX_BUILD_OPERATION_BUILD;
 
   // Sizes first, so that one scratch buffer serves every build on the stream, and one allocation holds every

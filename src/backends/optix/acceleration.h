@@ -19,6 +19,10 @@ namespace candela::optix {
 // The SBT index (launch_params.h) of triangles with this material.
 uint8_t materialSbtIndex(const Material& m);
 
+// How every mesh's GAS is built; the curves' built-in intersection program is made for the same flags
+// (program_modules.h).
+constexpr unsigned int kMeshBuildFlags = OPTIX_BUILD_FLAG_PREFER_FAST_TRACE | OPTIX_BUILD_FLAG_ALLOW_COMPACTION;
+
 class AccelerationStructures {
  public:
   // Brings the structures up to date with `flat`, whose arrays `device` holds on the GPU. `previous` is the

@@ -28,6 +28,10 @@ constexpr uint32_t kGeometrySbtRecords = 4;
 constexpr uint32_t kMaxBatchInputs = 16384;
 constexpr uint32_t kHitRecordSets = kMaxBatchInputs > kGeometrySbtRecords ? kMaxBatchInputs : kGeometrySbtRecords;
 
+// Curves (kernel/curve.h) have hit groups of their own, with the built-in curve intersection program: their two
+// records follow the triangles' sets, and the IAS instance of a mesh of curves starts its SBT there.
+constexpr uint32_t kCurveSbtOffset = kHitRecordSets * kRayTypeCount;
+
 // The radiance payload's instance register holds this when the ray missed.
 constexpr uint32_t kMissedInstance = 0xFFFFFFFFu;
 

@@ -510,6 +510,10 @@ void OptixBackend::setScene(const Scene& scene) {
   State& s = *state_;
   s.hasScene = false;
   FlatScene flat = FlatScene::build(scene);
+  // OptiX's curves are round: flat and ribbon curves have no primitive of their own there (docs/design.md).
+  for (const CurveSegment& segment : flat.curveSegments)
+    if (segment.type != CurveType::Cylinder)
+      throw std::invalid_argument("flat and ribbon curves are rendered by the CPU backend only: use --backend cpu");
   s.scene.upload(flat);
   // s.flat is the scene of the structures' last update until this one succeeds.
   s.acceleration.update(s.context.get(), s.context.stream(), &s.flat, flat, s.scene.view());

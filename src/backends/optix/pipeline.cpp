@@ -49,7 +49,8 @@ Pipeline::Pipeline(OptixDeviceContext context, ProgramModules& modules, const st
   const OptixModule rays = modules.get(ProgramModule::Rays);
   const size_t raygens = programs.size();
   const size_t radianceMiss = raygens, shadowMiss = raygens + 1, radianceHit = raygens + 2, shadowHit = raygens + 3;
-  std::vector<OptixProgramGroupDesc> descriptions(raygens + 4);
+  const size_t curveRadianceHit = raygens + 4, curveShadowHit = raygens + 5;
+  std::vector<OptixProgramGroupDesc> descriptions(raygens + 6);
   for (size_t i = 0; i < raygens; ++i) {
     descriptions[i].kind = OPTIX_PROGRAM_GROUP_KIND_RAYGEN;
     descriptions[i].raygen.module = modules.get(moduleHolding(programs[i]));
@@ -71,6 +72,14 @@ Pipeline::Pipeline(OptixDeviceContext context, ProgramModules& modules, const st
   descriptions[shadowHit].kind = OPTIX_PROGRAM_GROUP_KIND_HITGROUP;
   descriptions[shadowHit].hitgroup.moduleAH = rays;
   descriptions[shadowHit].hitgroup.entryFunctionNameAH = "__anyhit__passThrough";
+  // Curves: OptiX's built-in intersection program, no any-hit (their materials' alpha is not applied).
+  const OptixModule curves = modules.curveIntersection();
+  descriptions[curveRadianceHit].kind = OPTIX_PROGRAM_GROUP_KIND_HITGROUP;
+  descriptions[curveRadianceHit].hitgroup.moduleIS = curves;
+  descriptions[curveRadianceHit].hitgroup.moduleCH = rays;
+  descriptions[curveRadianceHit].hitgroup.entryFunctionNameCH = "__closesthit__curve";
+  descriptions[curveShadowHit].kind = OPTIX_PROGRAM_GROUP_KIND_HITGROUP;
+  descriptions[curveShadowHit].hitgroup.moduleIS = curves;
   groups_.assign(descriptions.size(), nullptr);
   OptixProgramGroupOptions groupOptions{};
   checkWithLog("creating the program groups", [&](char* log, size_t* logSize) {
@@ -103,12 +112,19 @@ Pipeline::Pipeline(OptixDeviceContext context, ProgramModules& modules, const st
              "setting the pipeline's stack size");
 
   // Records carry only their program headers: every program reads scene data through the launch parameters.
-  // The hit-group records repeat once per SBT index a triangle can have (kHitRecordSets: a mesh's cut-out
-  // classes, or a batch's build inputs), which differ only in the geometry flags the build gives them.
-  std::vector<HeaderOnlyRecord> records(groups_.size() + (kHitRecordSets - 1) * kRayTypeCount);
-  for (size_t i = 0; i < groups_.size(); ++i)
+  // The triangles' hit-group records repeat once per SBT index a triangle can have (kHitRecordSets: a mesh's
+  // cut-out classes, or a batch's build inputs), which differ only in the geometry flags the build gives them;
+  // the curves' two follow (kCurveSbtOffset).
+  const size_t triangleHitRecords = kHitRecordSets * kRayTypeCount;
+  std::vector<HeaderOnlyRecord> records(radianceHit + triangleHitRecords + kRayTypeCount);
+  for (size_t i = 0; i < curveRadianceHit; ++i)
     checkOptix(optixSbtRecordPackHeader(groups_[i], &records[i]), "packing a shader binding table record");
-  for (size_t i = groups_.size(); i < records.size(); ++i) records[i] = records[i - kRayTypeCount];
+  for (size_t i = curveRadianceHit; i < radianceHit + triangleHitRecords; ++i) records[i] = records[i - kRayTypeCount];
+  const size_t curveRecords = radianceHit + kCurveSbtOffset;
+  checkOptix(optixSbtRecordPackHeader(groups_[curveRadianceHit], &records[curveRecords + kRadianceRay]),
+             "packing a shader binding table record");
+  checkOptix(optixSbtRecordPackHeader(groups_[curveShadowHit], &records[curveRecords + kShadowRay]),
+             "packing a shader binding table record");
   records_ = DeviceBuffer::fromVector(records, "a shader binding table");
   const CUdeviceptr base = records_.address();
   tables_.resize(raygens);
@@ -120,7 +136,7 @@ Pipeline::Pipeline(OptixDeviceContext context, ProgramModules& modules, const st
     table.missRecordCount = kRayTypeCount;
     table.hitgroupRecordBase = base + radianceHit * sizeof(HeaderOnlyRecord);
     table.hitgroupRecordStrideInBytes = sizeof(HeaderOnlyRecord);
-    table.hitgroupRecordCount = kHitRecordSets * kRayTypeCount;
+    table.hitgroupRecordCount = unsigned(triangleHitRecords + kRayTypeCount);
   }
 }
 

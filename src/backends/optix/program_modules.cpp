@@ -1,6 +1,12 @@
 #include "backends/optix/program_modules.h"
 
+#include <optix.h>
+#include <optix_stubs.h>
+
 #include <optional>
+
+#include "backends/optix/acceleration.h"
+#include "backends/optix/optix_error.h"
 
 // The device programs as OptiX-IR, embedded at build time (CMakeLists.txt).
 extern const unsigned char candelaRayPrograms[], candelaMegakernelPrograms[], candelaAovMegakernelPrograms[],
@@ -40,10 +46,10 @@ OptixPipelineCompileOptions pipelineCompileOptions() {
   options.traversableGraphFlags = OPTIX_TRAVERSABLE_GRAPH_FLAG_ALLOW_SINGLE_LEVEL_INSTANCING;
   // Radiance: random bits in, then t, b1, b2, instance, primitive out; shadow: random bits, occluded.
   options.numPayloadValues = 5;
-  options.numAttributeValues = 2;  // built-in triangle barycentrics
+  options.numAttributeValues = 2;  // built-in triangle barycentrics; a curve's u takes one
   options.exceptionFlags = OPTIX_EXCEPTION_FLAG_NONE;
   options.pipelineLaunchParamsVariableName = "params";
-  options.usesPrimitiveTypeFlags = OPTIX_PRIMITIVE_TYPE_FLAGS_TRIANGLE;
+  options.usesPrimitiveTypeFlags = OPTIX_PRIMITIVE_TYPE_FLAGS_TRIANGLE | OPTIX_PRIMITIVE_TYPE_FLAGS_ROUND_CUBIC_BEZIER;
   return options;
 }
 
@@ -61,6 +67,20 @@ void ProgramModules::start(ProgramModule module, CompilePriority priority) {
 OptixModule ProgramModules::get(ProgramModule module) {
   start(module, CompilePriority::Needed);
   return modules_[size_t(module)]->module();
+}
+
+OptixModule ProgramModules::curveIntersection() {
+  if (curveIntersection_) return curveIntersection_;
+  OptixBuiltinISOptions options{};
+  options.builtinISModuleType = OPTIX_PRIMITIVE_TYPE_ROUND_CUBIC_BEZIER;
+  options.usesMotionBlur = 0;
+  options.buildFlags = kMeshBuildFlags;
+  options.curveEndcapFlags = OPTIX_CURVE_ENDCAP_DEFAULT;
+  const OptixModuleCompileOptions moduleOptions = moduleCompileOptions();
+  const OptixPipelineCompileOptions pipelineOptions = pipelineCompileOptions();
+  checkOptix(optixBuiltinISModuleGet(context_, &moduleOptions, &pipelineOptions, &options, &curveIntersection_),
+             "getting the curves' intersection program");
+  return curveIntersection_;
 }
 
 bool ProgramModules::started(ProgramModule module) const { return modules_[size_t(module)] != nullptr; }

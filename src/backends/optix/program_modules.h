@@ -43,6 +43,9 @@ class ProgramModules {
   // Whether every one of `modules` has begun and ended (compiled or failed): get() then does not wait.
   bool finished(const std::vector<ProgramModule>& modules) const;
   std::vector<ProgramModule> startedModules() const;
+  // The built-in intersection program of round cubic Bezier curves (kernel/curve.h), for the curves' hit groups
+  // (OptiX owns it: it is never destroyed).
+  OptixModule curveIntersection();
   // The tasks of the modules' compiles, summed (none for a module not begun).
   CompileTaskCounts tasks(const std::vector<ProgramModule>& modules) const;
   // Since the first of the modules began compiling; 0 where none has.
@@ -56,6 +59,7 @@ class ProgramModules {
   tbb::task_arena prefetch_{tbb::task_arena::automatic, 1, tbb::task_arena::priority::low};
   std::array<Clock::time_point, kProgramModuleCount> startedAt_{};
   std::array<std::unique_ptr<ModuleCompilation>, kProgramModuleCount> modules_;  // ended before the arenas
+  OptixModule curveIntersection_ = nullptr;
 };
 
 }  // namespace candela::optix

@@ -38,7 +38,7 @@ CANDELA_FN uint32_t mediumBeyond(const SceneView& scene, uint32_t instanceId, Ve
 
 // Whether `hit` is on an interface surface, which only bounds media.
 CANDELA_FN bool hitsInterface(const SceneView& scene, const Hit& hit) {
-  return scene.materials[scene.triangleMaterials[hitTriangle(scene, hit).triangle]].interfaceOnly != 0;
+  return scene.materials[hitMaterial(scene, hit)].interfaceOnly != 0;
 }
 
 // The fraction of light that travels along the shadow ray `ray` (pass-through bits `bits`), which starts in
@@ -56,7 +56,7 @@ CANDELA_FN Vec3 shadowTransmittance(const SceneView& scene, const Tracer& tracer
     const float length = found ? hit.t : ray.tMax;
     if (medium != kNoMedium) transmittance *= mediumSegmentTransmittance(scene, medium, ray, length);
     if (!found || isBlack(transmittance)) return transmittance;
-    const SurfaceInteraction si = makeInteraction(scene, hit);
+    const SurfaceInteraction si = makeInteraction(scene, hit, ray);
     medium = mediumBeyond(scene, hit.instanceId, si.geometricNormal, ray.direction, medium);
     const float left = ray.tMax - hit.t;
     ray = {offsetRayOrigin(si.position, si.geometricNormal, ray.direction), ray.direction, 0.0f, left};
@@ -164,7 +164,7 @@ CANDELA_FN void followPathInMedia(const SceneView& scene, const Tracer& tracer, 
     }
     if (found && hitsInterface(scene, hit)) {
       if (++crossings > kMaxInterfaceCrossings) return;
-      const SurfaceInteraction si = makeInteraction(scene, hit);
+      const SurfaceInteraction si = makeInteraction(scene, hit, ray);
       medium = mediumBeyond(scene, hit.instanceId, si.geometricNormal, ray.direction, medium);
       if (kWithAovs && a.aovsPending) a.pathLength += hit.t;
       s.cone = s.cone.afterDeltaBounce(hit.t);

@@ -128,7 +128,7 @@ struct RestirVertex {
     SurfaceInteraction si;
     Material material;
     if (surface.found) {
-      si = makeInteraction(scene, surface.hit);
+      si = makeInteraction(scene, surface.hit, surface.ray);
       const Material& stored = scene.materials[si.materialId];
       if (hasTextures(stored))
         si.footprint =

@@ -18,8 +18,8 @@ namespace {
 // 5: animations; 6: mix materials; 7: materials' volume absorption; 8: the scene's camera index, skins and morph
 // targets; 9: eight joints per vertex, morph targets' tangent deltas and iridescent materials; 10: participating
 // media, the instances' medium interfaces, the camera's medium and the interface material; 11: grid media;
-// 12: diffuse transmission and subsurface media; 13: hair materials; 14: grid media's temperatures
-constexpr uint32_t kCacheFormatVersion = 14;
+// 12: diffuse transmission and subsurface media; 13: hair materials; 14: grid media's temperatures; 15: curves
+constexpr uint32_t kCacheFormatVersion = 15;
 
 std::string absolutePath(const std::string& path) {
   std::error_code ec;

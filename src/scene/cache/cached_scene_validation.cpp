@@ -15,7 +15,8 @@ namespace {
 [[noreturn]] void fail(const std::string& what) { throw std::runtime_error(what); }
 
 bool finite(float x) { return std::isfinite(x); }
-bool finite(uint32_t) { return true; }  // indices and material ids, whose ranges validateScene checks
+bool finite(uint32_t) { return true; }             // indices and material ids, whose ranges validateScene checks
+bool finite(const CurveSegment&) { return true; }  // validateScene checks its ranges and type
 bool finite(Vec2 v) { return finite(v.x) && finite(v.y); }
 bool finite(Vec3 v) { return finite(v.x) && finite(v.y) && finite(v.z); }
 bool finite(Vec4 v) { return finite(v.x) && finite(v.y) && finite(v.z) && finite(v.w); }

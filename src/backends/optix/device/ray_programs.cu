@@ -1,4 +1,5 @@
-// The programs that answer ray queries, shared by every pipeline: closest-hit, any-hit and the shadow miss. Each
+// The programs that answer ray queries, shared by every pipeline: closest-hit (of triangles and of curves),
+// any-hit and the shadow miss. Each
 // pipeline's raygen programs are modules of their own (the other .cu files here).
 #include "backends/optix/device/program_common.h"
 
@@ -23,6 +24,17 @@ extern "C" __global__ void __closesthit__radiance() {
   optixSetPayload_1(__float_as_uint(barycentrics.x));
   optixSetPayload_2(__float_as_uint(barycentrics.y));
   optixSetPayload_3(hitInstance());
+  optixSetPayload_4(optixGetPrimitiveIndex());
+}
+
+// A curve's (kernel/curve.h): its parameter u along the segment in b1; the kernel rebuilds the rest of the surface
+// from it and the ray (kernel/curve_attributes.h), as it does for Embree's hits. Meshes of curves are never
+// batched, so their IAS instance id is their instance's.
+extern "C" __global__ void __closesthit__curve() {
+  optixSetPayload_0(__float_as_uint(optixGetRayTmax()));
+  optixSetPayload_1(__float_as_uint(optixGetCurveParameter()));
+  optixSetPayload_2(0);
+  optixSetPayload_3(optixGetInstanceId());
   optixSetPayload_4(optixGetPrimitiveIndex());
 }
 

@@ -11,6 +11,7 @@
 #include "io/load_budget.h"
 #include "scene/loaders/pbrt/pbrt_camera.h"
 #include "scene/loaders/pbrt/pbrt_context.h"
+#include "scene/loaders/pbrt/pbrt_curves.h"
 #include "scene/loaders/pbrt/pbrt_film.h"
 #include "scene/loaders/pbrt/pbrt_lights.h"
 #include "scene/loaders/pbrt/pbrt_materials.h"
@@ -240,6 +241,7 @@ class PbrtReader {
       if (t.kind != PbrtToken::Kind::Word) fail(tokens, t.line, "expected a directive, found '" + t.text + "'");
       const std::string& d = t.text;
       if (recording_ && !replayable(d)) recording_->reusable = false;
+      if (d != "Shape") ++curveRun_;  // whatever changes what curves take ends a run of them (readCurve)
       if (d == "Identity") {
         applyTransform(glm::mat4(1.0f), tokens, t.line, true);
       } else if (d == "Translate") {
@@ -366,6 +368,7 @@ class PbrtReader {
         std::string file = readString(tokens, d);
         if (textOnly_) fail(tokens, t.line, d + " of '" + file + "' in a scene read from memory");
         include(context_.resolve(file, tokens.file(), t.line), depth + 1);
+        ++curveRun_;  // its curves and those after it are placed apart (an Include may be placed again)
       } else if (d == "Texture") {
         std::string name = readString(tokens, d), valueType = readString(tokens, d), className = readString(tokens, d);
         PbrtParameters params = readParametersWithSpectra(tokens);
@@ -509,6 +512,7 @@ class PbrtReader {
     noteLoadProgress(params.file + ":" + std::to_string(params.line), "shape '" + type + "'");
     if (!state_.material && !state_.materialName.empty() && materials_.isNamed(state_.materialName))
       state_.material = materials_.named(state_.materialName, params.file, params.line);
+    if (type == "curve") return readCurve(params);
     // A shape equal to one made before shares its mesh, unless it emits: its emission depends on where it is.
     std::optional<PbrtShapeKey> key;
     if (!state_.areaLight) key = pbrtShapeKey(type, params);
@@ -575,6 +579,39 @@ class PbrtReader {
     placeMesh(meshId, key ? key->shapeFromMesh : glm::mat4(1.0f), params.file, params.line);
   }
 
+  // A curve shape. Hair files hold hundreds of thousands of them, one directive each: a run of curves of one type
+  // with no other directive between them (so in the same transform, material, media and object) goes into one
+  // mesh of curves, placed once.
+  void readCurve(const PbrtParameters& params) {
+    chargeLoadMemory(pbrtCurveBytes(params), params.file + ":" + std::to_string(params.line), "shape 'curve'");
+    PbrtCurve curve = makePbrtCurve(params);
+    if (state_.areaLight)
+      context_.warn("curve area light", "curves do not emit light (pbrt-v4 cannot sample them either): left dark");
+    if (state_.reverseOrientation)
+      for (Vec3& n : curve.normals) n = -n;
+    if (!openCurves_ || openCurves_->run != curveRun_ || openCurves_->type != curve.type) {
+      const uint32_t meshId = uint32_t(context_.scene.meshes.size());
+      Mesh mesh;
+      mesh.name = "pbrt curves";
+      context_.scene.meshes.push_back(std::move(mesh));
+      if (!state_.material && !state_.materialName.empty())
+        pendingShapes_.push_back({meshId, state_.materialName, {}, AlphaSpec{}, 0, params.file, params.line});
+      openCurves_ = OpenCurves{curveRun_, curve.type, meshId};
+      placeMesh(meshId, glm::mat4(1.0f), params.file, params.line);
+    }
+    Mesh& mesh = context_.scene.meshes[openCurves_->meshId];
+    const uint32_t material = state_.material               ? state_.material->id
+                              : state_.materialName.empty() ? materials_.fallback().id
+                                                            : 0;  // assigned once the name is made
+    for (size_t v = 0; v < curve.vertices.size(); v += kCurveControlPoints)
+      mesh.curveSegments.push_back({uint32_t(mesh.curveVertices.size() + v), material, curve.type});
+    mesh.curveVertices.insert(mesh.curveVertices.end(), curve.vertices.begin(), curve.vertices.end());
+    mesh.curveNormals.insert(mesh.curveNormals.end(), curve.normals.begin(), curve.normals.end());
+    // pbrt-v4 splits curves this many times for its own intersector; Embree and OptiX take whole segments. Read,
+    // so that it is not reported as left out.
+    params.getInt("splitdepth", 3);
+  }
+
   // A shape's mesh, `shapeFromMesh` in the current transform, recorded for an Include being read.
   void placeMesh(uint32_t meshId, const glm::mat4& shapeFromMesh, const std::string& file, size_t line) {
     if (recording_) recording_->shapes.push_back({meshId, recording_->relative * shapeFromMesh});
@@ -597,6 +634,7 @@ class PbrtReader {
       mesh.triangleMaterials[t] = variant(material.id, emission.empty() ? Vec3{0, 0, 0} : emission[t], alpha);
     for (size_t t = triangles; t < mesh.triangleMaterials.size(); ++t)
       mesh.triangleMaterials[t] = mesh.triangleMaterials[t - triangles];
+    for (CurveSegment& segment : mesh.curveSegments) segment.material = material.id;
     // pbrt's (u, v) through the base colour texture's mapping, then v flipped: candela's v runs down the image.
     auto [scale, offset] = materials_.uvMapping(material.id);
     for (Vec2& uv : mesh.uvs) uv = {scale.x * uv.x + offset.x, 1.0f - (scale.y * uv.y + offset.y)};
@@ -673,6 +711,14 @@ class PbrtReader {
   std::optional<std::string> currentObject_;
   std::vector<PendingShape> pendingShapes_;
   std::map<SharedShapeKey, uint32_t> sharedMeshes_;
+  // The mesh the curves of the current run go into (readCurve); a run ends at any directive but Shape.
+  struct OpenCurves {
+    uint64_t run = 0;
+    CurveType type = CurveType::Flat;
+    uint32_t meshId = 0;
+  };
+  uint64_t curveRun_ = 0;
+  std::optional<OpenCurves> openCurves_;
   std::optional<IncludeRecording> recording_;  // while an included file is read for the first time
   std::map<IncludeKey, IncludeRecording> includes_;
   std::map<std::tuple<uint32_t, float, float, float, float, int32_t>, uint32_t> variants_;
