@@ -1347,6 +1347,39 @@ std::string cornellBoxAsPbrt() {
   return out.str();
 }
 
+// A two-sided light is its triangles twice, one copy per winding, coincident: whichever the traversal reports
+// first, a ray meets the copy that faces it, because each copy's back faces are culled. A camera looking up at a
+// light panel sees its radiance whichever way the file winds it (the copy wound away from the camera came first
+// in one of the two files, and was what the CPU backend's traversal reported before the culling).
+TEST(PbrtLoader, TwoSidedLightsAreSeenFromEitherSideWhateverTheirWinding) {
+  TempFolder folder;
+  for (const char* indices : {"0 1 2 0 2 3", "0 2 1 0 3 2"}) {
+    SCOPED_TRACE(indices);
+    const std::string text =
+        std::string(
+            "LookAt 0 0 0  0 1 0  0 0 1\nCamera \"perspective\" \"float fov\" 20\n"
+            "Film \"rgb\" \"integer xresolution\" 8 \"integer yresolution\" 8\nWorldBegin\n"
+            "AreaLightSource \"diffuse\" \"rgb L\" [4 2 1] \"bool twosided\" true\n"
+            "Shape \"trianglemesh\" \"point3 P\" [-1 1 -1  1 1 -1  1 1 1  -1 1 1] \"integer indices\" [") +
+        indices + "]\n";
+    RenderJob job;
+    job.settings.width = job.settings.height = 8;
+    job.given.width = job.given.height = job.given.samplesPerPixel = true;
+    job.samplesPerPixel = 4;
+    job.backend = "cpu";
+    const Scene scene = loadScene(folder.write("panel.pbrt", text), {});
+    for (const Material& m : scene.materials) EXPECT_TRUE(isBlack(m.emission) || m.doubleSided == 0u);
+    const RenderOutcome outcome = renderLoadedScene(job, scene, false);
+    for (const Vec3& p : outcome.image.pixels) {
+      EXPECT_NEAR(p.x, 4.0f, 1e-3f);
+      EXPECT_NEAR(p.z, 1.0f, 1e-3f);
+    }
+  }
+  // A one-sided light's back stays there for rays (dark, not culled).
+  Scene oneSided = loadText(std::string(kMirroredCamera) + "AreaLightSource \"diffuse\"\n" + kTriangle);
+  EXPECT_EQ(oneSided.materials[oneSided.meshes[0].triangleMaterials[0]].doubleSided, 1u);
+}
+
 TEST(PbrtLoader, CornellBoxRendersLikeTheBuiltInOne) {
   TempFolder folder;
   std::string path = folder.write("cornell.pbrt", cornellBoxAsPbrt());

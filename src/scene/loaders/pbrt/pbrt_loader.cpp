@@ -97,6 +97,7 @@ struct PendingShape {
   std::vector<Vec3> emission;
   AlphaSpec alpha;
   size_t triangles;
+  bool twoSidedLight;
   std::string file;
   size_t line;
 };
@@ -458,17 +459,19 @@ class PbrtReader {
 
   // The material a shape's triangles use: `base` with the shape's emission and alpha (cached: many shapes share
   // one light or cut-out).
-  uint32_t variant(uint32_t base, Vec3 emission, AlphaSpec alpha) {
+  // `singleSided`: the variant's back faces are not there for rays (a two-sided light's two copies, below).
+  uint32_t variant(uint32_t base, Vec3 emission, AlphaSpec alpha, bool singleSided) {
     // Not-a-number (from infinite areas or radiance in a hostile file) would break the ordering of the cache's
     // keys; it emits nothing, and scene repair clamps what is too bright.
     for (float* c : {&emission.x, &emission.y, &emission.z})
       if (std::isnan(*c)) *c = 0.0f;
     if (isBlack(emission) && alpha.value >= 1.0f && alpha.texture == kNoTexture) return base;
-    auto key = std::make_tuple(base, emission.x, emission.y, emission.z, alpha.value, alpha.texture);
+    auto key = std::make_tuple(base, emission.x, emission.y, emission.z, alpha.value, alpha.texture, singleSided);
     auto found = variants_.find(key);
     if (found != variants_.end()) return found->second;
     Material m = context_.scene.materials[base];
     m.emission = emission;
+    if (singleSided) m.doubleSided = 0;
     if (alpha.value < 1.0f || alpha.texture != kNoTexture) {
       m.alphaMode = AlphaMode::Blend;  // pbrt-v4 lets rays through with probability 1 - alpha
       m.opacity *= alpha.value;
@@ -561,17 +564,22 @@ class PbrtReader {
       context_.warn("area light instance", "area lights inside object definitions do not emit (as in pbrt-v4)");
     }
     size_t triangles = mesh.triangleCount();
-    if (state_.areaLight && state_.areaLight->twoSided && !currentObject_) {
+    // A two-sided light is its triangles twice, the second copy wound the other way, each emitting from its front
+    // (so light sampling needs nothing of its own). Each copy's back faces are culled: a ray meets exactly the
+    // copy that faces it, whichever of two coincident triangles its backend's traversal reports first.
+    const bool twoSidedLight = state_.areaLight && state_.areaLight->twoSided && !currentObject_;
+    if (twoSidedLight) {
       for (size_t i = 0; i < 3 * triangles; i += 3)
         mesh.indices.insert(mesh.indices.end(), {mesh.indices[i], mesh.indices[i + 2], mesh.indices[i + 1]});
       mesh.triangleMaterials.resize(2 * triangles);
     }
     uint32_t pendingMesh = uint32_t(context_.scene.meshes.size());
     if (state_.material || state_.materialName.empty()) {
-      assignMaterials(mesh, state_.material ? *state_.material : materials_.fallback(), emission, alpha, triangles);
+      assignMaterials(mesh, state_.material ? *state_.material : materials_.fallback(), emission, alpha, triangles,
+                      twoSidedLight);
     } else {
-      pendingShapes_.push_back(
-          {pendingMesh, state_.materialName, std::move(emission), alpha, triangles, params.file, params.line});
+      pendingShapes_.push_back({pendingMesh, state_.materialName, std::move(emission), alpha, triangles, twoSidedLight,
+                                params.file, params.line});
     }
     uint32_t meshId = uint32_t(context_.scene.meshes.size());
     context_.scene.meshes.push_back(std::move(mesh));
@@ -595,7 +603,7 @@ class PbrtReader {
       mesh.name = "pbrt curves";
       context_.scene.meshes.push_back(std::move(mesh));
       if (!state_.material && !state_.materialName.empty())
-        pendingShapes_.push_back({meshId, state_.materialName, {}, AlphaSpec{}, 0, params.file, params.line});
+        pendingShapes_.push_back({meshId, state_.materialName, {}, AlphaSpec{}, 0, false, params.file, params.line});
       openCurves_ = OpenCurves{curveRun_, curve.type, meshId};
       placeMesh(meshId, glm::mat4(1.0f), params.file, params.line);
     }
@@ -629,9 +637,10 @@ class PbrtReader {
   // The materials of a shape's `triangles` (and of their reversed copies after them, for two-sided lights), with
   // its emission and alpha, and its texture coordinates through the material's uv mapping.
   void assignMaterials(Mesh& mesh, const PbrtMaterial& material, const std::vector<Vec3>& emission, AlphaSpec alpha,
-                       size_t triangles) {
+                       size_t triangles, bool twoSidedLight) {
     for (size_t t = 0; t < triangles; ++t)
-      mesh.triangleMaterials[t] = variant(material.id, emission.empty() ? Vec3{0, 0, 0} : emission[t], alpha);
+      mesh.triangleMaterials[t] =
+          variant(material.id, emission.empty() ? Vec3{0, 0, 0} : emission[t], alpha, twoSidedLight);
     for (size_t t = triangles; t < mesh.triangleMaterials.size(); ++t)
       mesh.triangleMaterials[t] = mesh.triangleMaterials[t - triangles];
     for (CurveSegment& segment : mesh.curveSegments) segment.material = material.id;
@@ -644,7 +653,7 @@ class PbrtReader {
   void assignPendingMaterials() {
     for (PendingShape& p : pendingShapes_)
       assignMaterials(context_.scene.meshes[p.meshId], materials_.named(p.materialName, p.file, p.line), p.emission,
-                      p.alpha, p.triangles);
+                      p.alpha, p.triangles, p.twoSidedLight);
     pendingShapes_.clear();
   }
 
@@ -721,7 +730,7 @@ class PbrtReader {
   std::optional<OpenCurves> openCurves_;
   std::optional<IncludeRecording> recording_;  // while an included file is read for the first time
   std::map<IncludeKey, IncludeRecording> includes_;
-  std::map<std::tuple<uint32_t, float, float, float, float, int32_t>, uint32_t> variants_;
+  std::map<std::tuple<uint32_t, float, float, float, float, int32_t, bool>, uint32_t> variants_;
   std::optional<PbrtParameters> camera_, film_;
   std::string cameraType_;
   glm::mat4 cameraFromWorld_{1.0f};
