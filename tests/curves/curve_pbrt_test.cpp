@@ -8,7 +8,6 @@
 #include <string>
 #include <utility>
 
-#include "backends/cpu/cpu_backend.h"
 #include "io/load_diagnostics.h"
 #include "scene/loaders/pbrt/pbrt_curves.h"
 #include "scene/scene_repair.h"
@@ -215,14 +214,7 @@ TEST(PbrtCurve, HairOnCurvesRenders) {
   ASSERT_EQ(scene.meshes.size(), 1u);
   EXPECT_EQ(scene.meshes[0].curveSegments.size(), 40u);
   EXPECT_EQ(scene.materials[scene.meshes[0].curveSegments[0].material].type, MaterialType::Hair);
-  CpuBackend backend;
-  backend.setScene(scene);
-  RenderSettings settings;
-  settings.width = settings.height = 16;
-  settings.sampler = SamplerKind::Independent;
-  backend.setSettings(settings);
-  backend.setCamera(scene.camera.toCamera(1.0f));
-  const PixelStatistics stats = renderBatches(backend, 4, 8);
+  const PixelStatistics stats = renderOnCpu(scene, 16, 4, 8);
   EXPECT_EQ(stats.invalidSamples, 0u);
   const ImageMean mean = imageMean(stats);
   EXPECT_GT(mean.mean, 0.2) << "not black";

@@ -6,26 +6,18 @@
 #include <stdexcept>
 #include <string>
 
+#include "backend_agreement.h"
 #include "curves/curve_scenes.h"
-#include "gpu_render.h"
 #include "kernel/bsdf/hair.h"
-#include "render_comparison.h"
 
 namespace candela {
 namespace {
 
-constexpr uint32_t kSize = 64;
-constexpr uint32_t kBatches = 32;
-constexpr uint32_t kSamplesPerBatch = 16;
-constexpr uint32_t kBlock = 4;
-constexpr double kAlpha = 0.01;
-
+// Thin curves cover few pixels: half the other agreement tests' samples a batch suffice.
 void expectBackendsAgree(const Scene& scene, uint32_t seed) {
-  const test::PixelStatistics cpu =
-      test::batchStatistics<CpuBackend>(scene, test::squareImage(kSize, seed), kBatches, kSamplesPerBatch);
-  const test::PixelStatistics gpu =
-      test::batchStatistics<OptixBackend>(scene, test::squareImage(kSize, seed + 1), kBatches, kSamplesPerBatch);
-  test::expectRendersAgree(cpu, gpu, kBlock, kBatches, kAlpha);
+  test::AgreementRun run;
+  run.samplesPerBatch = 16;
+  test::expectBackendsAgree(scene, seed, run);
 }
 
 TEST(GpuCurves, RoundCurvesAgreeWithTheCpuBackend) { expectBackendsAgree(test::tubeGrid(true, 0.5f), 171); }

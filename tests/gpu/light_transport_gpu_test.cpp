@@ -7,37 +7,21 @@
 #include <cmath>
 #include <cstdint>
 
-#include "gpu_render.h"
+#include "backend_agreement.h"
 #include "light_transport_scenes.h"
-#include "render_comparison.h"
 
 namespace candela {
 namespace {
 
-constexpr uint32_t kSize = 64;
-constexpr uint32_t kBatches = 32;
-constexpr uint32_t kSamplesPerBatch = 32;
-constexpr uint32_t kBlock = 4;
-constexpr double kAlpha = 0.01;
-
-struct BackendStatistics {
-  test::PixelStatistics cpu, gpu;
-};
-
-// `cpuScene` on the CPU backend and `gpuScene` on the OptiX one, with seeds of their own.
-BackendStatistics renderOnBoth(const Scene& cpuScene, const Scene& gpuScene, uint32_t seed) {
-  const RenderSettings cpuSettings = test::squareImage(kSize, seed), gpuSettings = test::squareImage(kSize, seed + 1);
-  return {test::batchStatistics<CpuBackend>(cpuScene, cpuSettings, kBatches, kSamplesPerBatch),
-          test::batchStatistics<OptixBackend>(gpuScene, gpuSettings, kBatches, kSamplesPerBatch)};
-}
-
+// The backends agree, on a scene that light reaches and without an invalid sample on either.
 void expectBackendsAgree(const Scene& scene, uint32_t seed) {
-  const BackendStatistics s = renderOnBoth(scene, scene, seed);
+  const test::AgreementRun run;
+  const test::BackendStatistics s = test::renderOnBoth(scene, scene, seed, run);
   EXPECT_EQ(s.cpu.invalidSamples, 0u);
   EXPECT_EQ(s.gpu.invalidSamples, 0u);
   // Not black: two renders of a scene that no light reaches would agree whatever the media did.
   EXPECT_GT(test::imageMean(s.cpu).mean, 0.01);
-  test::expectRendersAgree(s.cpu, s.gpu, kBlock, kBatches, kAlpha);
+  test::expectRendersAgree(s.cpu, s.gpu, run.block, run.batches, run.alpha);
 }
 
 // A forward-scattering fog sphere and a backward-scattering smoke box around a diffuse sphere, chromatic both.
@@ -63,14 +47,15 @@ TEST(GpuHomogeneousMedia, CameraInAHazeAgreesWithTheCpuBackend) {
 TEST(GpuHomogeneousMedia, AgreementTestDetectsADenserMedium) {
   test::TempFolder folder;
   const Scene scene = test::makeHazyRoom(folder);
-  const BackendStatistics s = renderOnBoth(scene, test::withDenserHomogeneousMedia(scene, 1.1f), 231);
-  const test::BlockComparison blocks = test::compareBlocks(s.cpu, s.gpu, kBlock, kBatches, kAlpha);
+  const test::AgreementRun run;
+  const test::BackendStatistics s = test::renderOnBoth(scene, test::withDenserHomogeneousMedia(scene, 1.1f), 231, run);
+  const test::BlockComparison blocks = test::compareBlocks(s.cpu, s.gpu, run.block, run.batches, run.alpha);
   EXPECT_GT(blocks.rejected, 0u);
-  Image difference(kSize, kSize);
+  Image difference(run.size, run.size);
   for (size_t i = 0; i < difference.pixels.size(); ++i)
     difference.pixels[i] = s.cpu.mean.pixels[i] - s.gpu.mean.pixels[i];
   const test::ImageMean d = test::imageMean(difference);
-  EXPECT_GT(std::fabs(d.mean), test::twoSidedNormalQuantile(kAlpha) * d.standardError);
+  EXPECT_GT(std::fabs(d.mean), test::twoSidedNormalQuantile(run.alpha) * d.standardError);
 }
 
 // A uniformgrid of varying density with empty regions (skipped by the majorant grid's walk) that emits from its
@@ -94,13 +79,14 @@ TEST(GpuGridMedia, RgbGridAndCloudAgreeWithTheCpuBackend) {
   expectBackendsAgree(scene, 251);
 }
 
-// A nanovdb medium from a .nvdb file whose temperature grid emits a blackbody (made an rgbgrid's emission at load).
+// A nanovdb medium from a .nvdb file whose temperature grid emits a blackbody (interpolated, then looked up in
+// the scene's blackbody table).
 TEST(GpuNanoVdbMedia, TemperatureEmissionAgreesWithTheCpuBackend) {
   test::TempFolder folder;
   const Scene scene = test::makeNanoVdbRoom(folder);
   ASSERT_EQ(scene.mediumGrids.size(), 1u);
-  EXPECT_EQ(scene.mediumGrids[0].kind, MediumGridKind::Rgb);
-  EXPECT_NE(scene.mediumGrids[0].emission, kNoGridValues);
+  EXPECT_EQ(scene.mediumGrids[0].kind, MediumGridKind::Density);
+  EXPECT_NE(scene.mediumGrids[0].temperature, kNoGridValues);
   expectBackendsAgree(scene, 261);
 }
 

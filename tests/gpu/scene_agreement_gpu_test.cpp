@@ -10,20 +10,13 @@
 #include <vector>
 
 #include "app/scene_loading.h"
-#include "gpu_render.h"
+#include "backend_agreement.h"
 #include "kernel/bsdf/hair.h"
 #include "many_lights_scene.h"
-#include "render_comparison.h"
 #include "support/cutout_screen.h"
 
 namespace candela {
 namespace {
-
-constexpr uint32_t kSize = 64;
-constexpr uint32_t kBatches = 32;
-constexpr uint32_t kSamplesPerBatch = 32;
-constexpr uint32_t kBlock = 4;
-constexpr double kAlpha = 0.01;
 
 // `scene` with every instance's mesh cut into meshes of at most `triangles` triangles, each keeping only the
 // vertices it uses and having that instance alone. Each instance's pieces are moved in object space by an
@@ -67,11 +60,9 @@ Scene splitIntoMeshes(const Scene& scene, size_t triangles) {
 }
 
 void expectBackendsAgree(const Scene& scene, uint32_t seed, LightSamplerKind lightSampler = LightSamplerKind::Bvh) {
-  RenderSettings cpuSettings = test::squareImage(kSize, seed), gpuSettings = test::squareImage(kSize, seed + 1);
-  cpuSettings.lightSampler = gpuSettings.lightSampler = lightSampler;
-  test::PixelStatistics cpu = test::batchStatistics<CpuBackend>(scene, cpuSettings, kBatches, kSamplesPerBatch);
-  test::PixelStatistics gpu = test::batchStatistics<OptixBackend>(scene, gpuSettings, kBatches, kSamplesPerBatch);
-  test::expectRendersAgree(cpu, gpu, kBlock, kBatches, kAlpha);
+  test::AgreementRun run;
+  run.lightSampler = lightSampler;
+  test::expectBackendsAgree(scene, seed, run);
 }
 
 // Disney BSDF rows (metallic, sheen, clearcoat, subsurface, transmission) and a diffuse floor and wall.
@@ -125,7 +116,7 @@ TEST(GpuMixedMaterials, AgreeWithTheCpuBackend) {
 TEST(GpuManyMeshes, AgreesWithTheCpuBackend) {
   const Scene split = splitIntoMeshes(makeCornellSpheres(), 64);
   ASSERT_GT(split.meshes.size(), 4000u);
-  auto backend = test::makeBackend<OptixBackend>(split, test::squareImage(kSize, 1));
+  auto backend = test::makeBackend<OptixBackend>(split, test::squareImage(test::AgreementRun{}.size, 1));
   EXPECT_GT(backend->accelerationStatistics().batchedMeshes, 4000u);
   expectBackendsAgree(split, 91);
 }

@@ -6,7 +6,6 @@
 #include <iterator>
 #include <string>
 
-#include "backends/cpu/cpu_backend.h"
 #include "io/load_diagnostics.h"
 #include "kernel/aovs.h"
 #include "kernel/bsdf/hair.h"
@@ -149,15 +148,7 @@ TEST(PbrtHair, WhiteHairPatchRendersNearOne) {
   LoadWarnings warnings;
   Scene scene = pbrt::loadText(patchOf("\"hair\" \"rgb sigma_a\" [0 0 0]"), &warnings);
   repairScene(scene, "test.pbrt", warnings);
-  CpuBackend backend;
-  backend.setScene(scene);
-  RenderSettings settings;
-  settings.width = settings.height = 16;
-  settings.maxDepth = 8;
-  settings.sampler = SamplerKind::Independent;
-  backend.setSettings(settings);
-  backend.setCamera(scene.camera.toCamera(1.0f));
-  const PixelStatistics stats = renderBatches(backend, 16, 8);
+  const PixelStatistics stats = renderOnCpu(scene, 16, 16, 8, 8);
   EXPECT_EQ(stats.invalidSamples, 0u);
   const ImageMean mean = imageMean(stats);
   EXPECT_NEAR(mean.mean, 1.0, 0.03) << mean.mean << " +- " << mean.standardError;
@@ -168,15 +159,7 @@ TEST(PbrtHair, BrownHairPatchIsDarker) {
   LoadWarnings warnings;
   Scene scene = pbrt::loadText(patchOf("\"hair\""), &warnings);
   repairScene(scene, "test.pbrt", warnings);
-  CpuBackend backend;
-  backend.setScene(scene);
-  RenderSettings settings;
-  settings.width = settings.height = 16;
-  settings.maxDepth = 8;
-  settings.sampler = SamplerKind::Independent;
-  backend.setSettings(settings);
-  backend.setCamera(scene.camera.toCamera(1.0f));
-  const PixelStatistics stats = renderBatches(backend, 8, 8);
+  const PixelStatistics stats = renderOnCpu(scene, 16, 8, 8, 8);
   EXPECT_EQ(stats.invalidSamples, 0u);
   EXPECT_LT(imageMean(stats).mean, 0.8);
 }

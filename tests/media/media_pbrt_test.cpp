@@ -5,7 +5,6 @@
 #include <cmath>
 #include <string>
 
-#include "backends/cpu/cpu_backend.h"
 #include "io/load_diagnostics.h"
 #include "media/media_scenes.h"
 #include "scene/scene_repair.h"
@@ -85,15 +84,8 @@ TEST(PbrtMedia, SlabSceneRendersItsTransmittance) {
   Scene scene = loadText(absorbingSlab());
   LoadWarnings warnings;
   repairScene(scene, "test.pbrt", warnings);
-  CpuBackend backend;
-  backend.setScene(scene);
-  RenderSettings settings;
-  settings.width = settings.height = 16;
-  settings.sampler = SamplerKind::Independent;
-  backend.setSettings(settings);
-  backend.setCamera(scene.camera.toCamera(1.0f));
   constexpr uint32_t kBatches = 32;
-  const PixelStatistics stats = renderBatches(backend, kBatches, 8);
+  const PixelStatistics stats = renderOnCpu(scene, 16, kBatches, 8);
   const Vec3 expected{std::exp(-0.5f), std::exp(-1.0f), std::exp(-2.0f)};
   std::string worst;
   EXPECT_EQ(countRejectedPixels(stats, expected, kBatches, 0.01, worst), 0u) << worst;

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <string>
 
-#include "backends/cpu/cpu_backend.h"
 #include "io/load_diagnostics.h"
 #include "scene/scene_repair.h"
 #include "scene/subsurface_albedo.h"
@@ -176,15 +175,7 @@ TEST(PbrtSubsurface, WhiteSubsurfaceSphereRendersNearOne) {
   Scene scene = loadText(sphereOf("\"subsurface\" \"rgb reflectance\" [1 1 1] \"rgb mfp\" [0.5 0.5 0.5]"), warnings);
   repairScene(scene, "test.pbrt", warnings);
   ASSERT_EQ(scene.media.size(), 1u);
-  CpuBackend backend;
-  backend.setScene(scene);
-  RenderSettings settings;
-  settings.width = settings.height = 16;
-  settings.maxDepth = 16;
-  settings.sampler = SamplerKind::Independent;
-  backend.setSettings(settings);
-  backend.setCamera(scene.camera.toCamera(1.0f));
-  const PixelStatistics stats = renderBatches(backend, 16, 8);
+  const PixelStatistics stats = renderOnCpu(scene, 16, 16, 8, 16);
   EXPECT_EQ(stats.invalidSamples, 0u);
   const ImageMean mean = imageMean(stats);
   EXPECT_NEAR(mean.mean, 1.0, 0.03) << mean.mean << " +- " << mean.standardError;

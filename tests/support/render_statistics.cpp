@@ -3,6 +3,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "backends/cpu/cpu_backend.h"
+
 namespace candela::test {
 
 PixelStatistics renderBatches(Backend& backend, uint32_t batches, uint32_t samplesPerBatch) {
@@ -37,6 +39,19 @@ PixelStatistics renderBatches(Backend& backend, uint32_t batches, uint32_t sampl
     stats.varianceOfMean.pixels[i] = squares / float((batches - 1) * batches);
   }
   return stats;
+}
+
+PixelStatistics renderOnCpu(const Scene& scene, uint32_t size, uint32_t batches, uint32_t samplesPerBatch,
+                            uint32_t maxDepth) {
+  CpuBackend backend;
+  backend.setScene(scene);
+  RenderSettings settings;
+  settings.width = settings.height = size;
+  settings.maxDepth = maxDepth;
+  settings.sampler = SamplerKind::Independent;
+  backend.setSettings(settings);
+  backend.setCamera(scene.camera.toCamera(1.0f));
+  return renderBatches(backend, batches, samplesPerBatch);
 }
 
 ImageMean imageMean(const Image& image) {

@@ -19,6 +19,11 @@ struct PixelStatistics {
 // are set, and returns per-pixel statistics over the batch means.
 PixelStatistics renderBatches(Backend& backend, uint32_t batches, uint32_t samplesPerBatch);
 
+// renderBatches of a loaded scene through its own camera on the CPU backend, at size x size pixels, with the
+// independent sampler and paths of at most `maxDepth` bounces.
+PixelStatistics renderOnCpu(const Scene& scene, uint32_t size, uint32_t batches, uint32_t samplesPerBatch,
+                            uint32_t maxDepth = RenderSettings{}.maxDepth);
+
 // Mean over all pixels and channels, and its standard error assuming independent pixels.
 struct ImageMean {
   double mean = 0.0;
