@@ -77,23 +77,31 @@ uint64_t readResolution(const PbrtParameters& params, const std::string& what, s
   return samples;
 }
 
+}  // namespace
+
+void checkGridValuesRoom(const PbrtParameters& params, const std::string& name, uint64_t values) {
+  const uint64_t majorantRoom = uint64_t(kMajorantGridResolution) * kMajorantGridResolution * kMajorantGridResolution;
+  if (values + majorantRoom >= uint64_t(kNoGridValues))
+    params.fail("medium '" + name + "': the scene's grids hold more than 2^32 samples");
+}
+
+namespace {
+
 // Appends `count` samples, value(i) each, to the scene's grid samples, charged to the load's budget; returns
 // their offset. `parameter` names them in messages. Samples below `lowest` are refused (only temperatures may be
 // negative).
 template <typename Value>
 uint32_t appendSamples(const PbrtParameters& params, const std::string& mediumName, const char* parameter, size_t count,
                        Value value, Scene& scene, double lowest = 0.0) {
-  // Offsets are 32-bit, and the majorant grid follows.
-  const uint64_t majorantRoom = uint64_t(kMajorantGridResolution) * kMajorantGridResolution * kMajorantGridResolution;
-  if (scene.mediumGridValues.size() + count + majorantRoom >= uint64_t(kNoGridValues))
-    params.fail("medium '" + mediumName + "': the scene's grids hold more than 2^32 samples");
+  checkGridValuesRoom(params, mediumName, scene.mediumGridValues.size() + count);
   chargeLoadMemory(count * sizeof(float), params.file + ":" + std::to_string(params.line),
                    "medium '" + mediumName + "' " + parameter);
   const uint32_t offset = uint32_t(scene.mediumGridValues.size());
   for (size_t i = 0; i < count; ++i) {
     const double v = value(i);
     if (!std::isfinite(v) || v < lowest || std::fabs(v) > double(std::numeric_limits<float>::max()))
-      params.fail("medium '" + mediumName + "': '" + parameter + "' has a negative or non-finite value");
+      params.fail("medium '" + mediumName + "': '" + parameter + "' has a " +
+                  (lowest < 0.0 ? "non-finite" : "negative or non-finite") + " value");
     scene.mediumGridValues.push_back(float(v));
   }
   return offset;
@@ -118,17 +126,11 @@ void readTemperatureGrid(const PbrtParameters& params, const std::string& name, 
     params.fail("uniformgrid medium: 'temperature' has " + std::to_string(temperature.size()) +
                 " values where nx*ny*nz = " + std::to_string(density.size()));
   grid.density = appendSamples(params, name, "density", density, scene);
-  const TemperatureToKelvin toKelvin = readTemperatureToKelvin(params);
-  for (double t : temperature)
-    if (!std::isfinite(t) || std::fabs(t) > double(std::numeric_limits<float>::max()))
-      params.fail("uniformgrid medium '" + name + "': 'temperature' has a non-finite value");
-  const std::vector<float> temperatures(temperature.begin(), temperature.end());
-  if (!temperaturesEmit(temperatures, toKelvin)) return;
-  if (!leScale.empty()) grid.emission = appendSamples(params, name, "Lescale", leScale, scene);
-  const uint32_t offset = appendSamples(
+  const uint32_t temperatures = appendSamples(
       params, name, "temperature", temperature.size(), [&](size_t i) { return temperature[i]; }, scene,
       -double(std::numeric_limits<float>::max()));
-  emitFromTemperature(offset, toKelvin, grid, scene);
+  if (!emitFromTemperature(params, name, temperatures, readTemperatureToKelvin(params), grid, scene)) return;
+  if (!leScale.empty()) grid.emission = appendSamples(params, name, "Lescale", leScale, scene);
   m.emission = Vec3{1, 1, 1};
 }
 

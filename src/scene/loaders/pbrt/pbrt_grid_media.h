@@ -17,6 +17,10 @@ namespace candela {
 // size disagrees with its data, absurd sizes, a negative or non-finite sample or parameter, an empty box, or a
 // density too high to track (an optical depth above 1e6 across the box). A uniformgrid's `temperature` grid emits
 // as pbrt-v4's GridMedium's does (pbrt_temperature_emission.h).
+// Refuses, in one line naming medium `name`, a scene whose grids would hold `values` samples and leave no room for
+// one more majorant grid within 32-bit offsets.
+void checkGridValuesRoom(const PbrtParameters& params, const std::string& name, uint64_t values);
+
 Medium readPbrtGridMedium(const std::string& type, const std::string& name, const PbrtParameters& params,
                           const glm::mat4& worldFromMedium, PbrtContext& context);
 

@@ -1,6 +1,7 @@
 #include "scene/loaders/pbrt/pbrt_nanovdb_medium.h"
 
 #include <cmath>
+#include <optional>
 
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
@@ -10,6 +11,7 @@
 #include "io/load_diagnostics.h"
 #include "scene/loaders/nanovdb/nanovdb_dense_grid.h"
 #include "scene/loaders/nanovdb/nanovdb_file.h"
+#include "scene/loaders/pbrt/pbrt_grid_media.h"
 #include "scene/loaders/pbrt/pbrt_temperature_emission.h"
 
 namespace candela {
@@ -50,13 +52,6 @@ bool sameVoxels(const NanoVdbDenseGrid& dense, const double (&other)[12]) {
   return true;
 }
 
-// Offsets are 32-bit, and the majorant grid follows the grid's samples.
-void checkRoom(const PbrtParameters& params, const std::string& name, uint64_t values) {
-  const uint64_t majorantRoom = uint64_t(kMajorantGridResolution) * kMajorantGridResolution * kMajorantGridResolution;
-  if (values + majorantRoom >= uint64_t(kNoGridValues))
-    params.fail("medium '" + name + "': the scene's grids hold more than 2^32 samples");
-}
-
 }  // namespace
 
 glm::mat4 readPbrtNanoVdbGrids(const std::string& name, const PbrtParameters& params, PbrtContext& context, Medium& m,
@@ -71,7 +66,7 @@ glm::mat4 readPbrtNanoVdbGrids(const std::string& name, const PbrtParameters& pa
   const std::string path = context.resolve(reference, params.file, params.line);
   Scene& scene = context.scene;
   NanoVdbDenseGrid dense;
-  std::vector<float> temperatures;  // one per dense sample; none where the medium does not emit
+  std::optional<uint32_t> temperatures;  // where the temperatures, one per dense sample, begin in the scene's values
   try {
     const NanoVdbFile file(path);
     const NanoVdbGridEntry* entry = file.find(gridName);
@@ -92,7 +87,8 @@ glm::mat4 readPbrtNanoVdbGrids(const std::string& name, const PbrtParameters& pa
         failLoad(path, "grid '" + temperatureName + "' holds " + nanoVdbTypeName(temperature->valueType) +
                            " values; only float temperatures are read");
       const NanoVdbDenseGrid sampled = appendNanoVdbDenseGridLike(file.gridBytes(*temperature), path, temperatureName,
-                                                                  dense, NanoVdbValues::Finite, temperatures);
+                                                                  dense, NanoVdbValues::Finite, scene.mediumGridValues);
+      temperatures = uint32_t(sampled.offset);
       // Both grids are read over the density's index box, which takes the temperature's voxels to where its own
       // map puts them only where the two maps agree.
       if (!sameVoxels(dense, sampled.worldFromIndex)) {
@@ -101,8 +97,9 @@ glm::mat4 readPbrtNanoVdbGrids(const std::string& name, const PbrtParameters& pa
             "nanovdb medium '" + name + "': its grids '" + gridName + "' and '" + temperatureName +
                 "' have different index-to-world maps (a temperature is read only under its density's map): the "
                 "medium does not emit");
-        releaseLoadMemory(temperatures.size() * sizeof(float));
-        temperatures = {};
+        releaseLoadMemory((scene.mediumGridValues.size() - sampled.offset) * sizeof(float));
+        scene.mediumGridValues.resize(sampled.offset);
+        temperatures.reset();
       }
     }
   } catch (const LoadBudgetError&) {
@@ -110,7 +107,7 @@ glm::mat4 readPbrtNanoVdbGrids(const std::string& name, const PbrtParameters& pa
   } catch (const LoadError& e) {
     params.fail(std::string("nanovdb medium '") + name + "': " + e.what());
   }
-  checkRoom(params, name, scene.mediumGridValues.size());
+  checkGridValuesRoom(params, name, scene.mediumGridValues.size());
   if (dense.downsampled) {
     const auto voxels = [&](int a) { return uint64_t(int64_t(dense.indexMax[a]) - dense.indexMin[a] + 1); };
     context.warn("nanovdb resolution " + name,
@@ -123,17 +120,9 @@ glm::mat4 readPbrtNanoVdbGrids(const std::string& name, const PbrtParameters& pa
   grid.ny = dense.ny;
   grid.nz = dense.nz;
   grid.density = uint32_t(dense.offset);
-  // Emission only where the temperatures can exceed the cutoff: a medium that cannot emit keeps 1 float a sample.
-  if (!temperatures.empty() && temperaturesEmit(temperatures, toKelvin)) {
-    checkRoom(params, name, scene.mediumGridValues.size() + temperatures.size() + 3 * kBlackbodyTableSize);
-    // The temperatures move from their own vector (charged) into the scene's values (charged the same).
-    const uint32_t offset = uint32_t(scene.mediumGridValues.size());
-    scene.mediumGridValues.insert(scene.mediumGridValues.end(), temperatures.begin(), temperatures.end());
-    emitFromTemperature(offset, toKelvin, grid, scene);
+  // A medium whose temperatures cannot exceed the cutoff keeps 1 float a sample.
+  if (temperatures && emitFromTemperature(params, name, *temperatures, toKelvin, grid, scene))
     m.emission = Vec3{leScale, leScale, leScale};
-  } else {
-    releaseLoadMemory(temperatures.size() * sizeof(float));
-  }
   // The voxels' cells: voxel i's centre, where NanoVDB puts its value, is index i.
   grid.p0 = {float(dense.indexMin[0]) - 0.5f, float(dense.indexMin[1]) - 0.5f, float(dense.indexMin[2]) - 0.5f};
   grid.p1 = {float(dense.indexMax[0]) + 0.5f, float(dense.indexMax[1]) + 0.5f, float(dense.indexMax[2]) + 0.5f};

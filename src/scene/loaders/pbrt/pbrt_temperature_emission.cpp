@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "io/load_budget.h"
 #include "kernel/media/medium_grid.h"
+#include "scene/loaders/pbrt/pbrt_grid_media.h"
 #include "scene/loaders/pbrt/pbrt_spectra.h"
 
 namespace candela {
@@ -17,29 +19,34 @@ TemperatureToKelvin readTemperatureToKelvin(const PbrtParameters& params) {
   return toKelvin;
 }
 
-bool temperaturesEmit(const std::vector<float>& temperatures, const TemperatureToKelvin& toKelvin) {
-  auto emits = [&](float t) { return toKelvin(t) > double(kBlackbodyCutoffKelvin); };
-  return emits(0.0f) || std::any_of(temperatures.begin(), temperatures.end(), emits);
-}
-
 Vec3 blackbodyTableEntry(uint32_t i) {
   return peakNormalisedBlackbodyRgb(double(kBlackbodyCutoffKelvin) * std::exp2(double(i) / kBlackbodyStepsPerOctave));
 }
 
-void emitFromTemperature(uint32_t offset, const TemperatureToKelvin& toKelvin, MediumGrid& grid, Scene& scene) {
+bool emitFromTemperature(const PbrtParameters& params, const std::string& name, uint32_t offset,
+                         const TemperatureToKelvin& toKelvin, MediumGrid& grid, Scene& scene) {
+  std::vector<float>& values = scene.mediumGridValues;
+  auto emits = [&](float t) { return toKelvin(t) > double(kBlackbodyCutoffKelvin); };
+  if (!emits(0.0f) && std::none_of(values.begin() + offset, values.end(), emits)) {
+    releaseLoadMemory((values.size() - offset) * sizeof(float));
+    values.resize(offset);
+    return false;
+  }
   grid.temperature = offset;
   grid.temperatureOffset = toKelvin.offset;
   grid.temperatureScale = toKelvin.scale;
   for (const MediumGrid& other : scene.mediumGrids)
     if (other.blackbody != kNoGridValues) {
       grid.blackbody = other.blackbody;
-      return;
+      return true;
     }
-  grid.blackbody = uint32_t(scene.mediumGridValues.size());
+  checkGridValuesRoom(params, name, values.size() + 3 * uint64_t(kBlackbodyTableSize));
+  grid.blackbody = uint32_t(values.size());
   for (uint32_t i = 0; i < kBlackbodyTableSize; ++i) {
     const Vec3 rgb = blackbodyTableEntry(i);
-    scene.mediumGridValues.insert(scene.mediumGridValues.end(), {rgb.x, rgb.y, rgb.z});
+    values.insert(values.end(), {rgb.x, rgb.y, rgb.z});
   }
+  return true;
 }
 
 }  // namespace candela

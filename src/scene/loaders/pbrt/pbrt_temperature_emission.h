@@ -5,7 +5,7 @@
 // kernel does that at every point (kernel/media/medium_grid.h: blackbodyEmission) from the grid's temperatures and
 // a table of the blackbody's colours that the scene holds once.
 #include <cstdint>
-#include <vector>
+#include <string>
 
 #include "scene/loaders/pbrt/pbrt_parameters.h"
 #include "scene/scene.h"
@@ -24,14 +24,14 @@ struct TemperatureToKelvin {
 // no cutoff) and `temperaturescale` (default 1).
 TemperatureToKelvin readTemperatureToKelvin(const PbrtParameters& params);
 
-// Whether a grid of these temperatures emits anywhere: some sample, or the 0 that lookups take beyond the samples
-// (which they mix in within half a voxel of the box's faces), hotter than the cutoff after offset and scale.
-// Interpolation stays between those values, so where none is hotter the medium is dark everywhere.
-bool temperaturesEmit(const std::vector<float>& temperatures, const TemperatureToKelvin& toKelvin);
-
-// Makes `grid` (a density grid whose temperatures start at `offset` of the scene's grid values) emit from them:
-// its offset and scale, and the scene's blackbody table, appended the first time a grid needs it.
-void emitFromTemperature(uint32_t offset, const TemperatureToKelvin& toKelvin, MediumGrid& grid, Scene& scene);
+// Makes `grid`, medium `name`'s density grid, emit from its temperatures: its nx ny nz samples, the last of the
+// scene's grid values from `offset`, charged to the load's budget. Where some temperature, or the 0 that lookups
+// take beyond the samples (mixed in within half a voxel of the box's faces), is hotter than the cutoff after
+// offset and scale, the grid takes them, the offset and scale, and the scene's blackbody table (appended the first
+// time a grid needs it), and this returns true. Otherwise the medium is dark everywhere, since interpolation stays
+// between those values: the temperatures are taken back out of the scene and the budget, and this returns false.
+bool emitFromTemperature(const PbrtParameters& params, const std::string& name, uint32_t offset,
+                         const TemperatureToKelvin& toKelvin, MediumGrid& grid, Scene& scene);
 
 // The blackbody table's entry i (linear sRGB of 100 K x 2^(i / 512): kernel/media/medium_grid.h).
 Vec3 blackbodyTableEntry(uint32_t i);
