@@ -1,5 +1,6 @@
 #pragma once
 #include "kernel/bsdf/material_models.h"
+#include "kernel/kernel_variant.h"
 #include "kernel/material.h"
 
 namespace candela {
@@ -18,8 +19,9 @@ struct PathAovs {
 // clamped to [0, 1]; for hair, the colour its absorption gives (HairBsdf::reflectanceOfAbsorption). Delta
 // materials never reach it (the AOVs follow them).
 CANDELA_FN Vec3 materialAlbedo(const Material& m) {
-  Vec3 a = m.type == MaterialType::Hair ? HairBsdf::reflectanceOfAbsorption(m.fibreAbsorption, m.azimuthalRoughness)
-                                        : m.baseColor;
+  Vec3 a = kernelHasModel(MaterialType::Hair) && m.type == MaterialType::Hair
+               ? HairBsdf::reflectanceOfAbsorption(m.fibreAbsorption, m.azimuthalRoughness)
+               : m.baseColor;
   if (m.type == MaterialType::BlinnPhong) a += m.specularColor;
   if (m.type == MaterialType::DiffuseTransmission) a += m.transmittance;
   return {clampf(a.x, 0.0f, 1.0f), clampf(a.y, 0.0f, 1.0f), clampf(a.z, 0.0f, 1.0f)};

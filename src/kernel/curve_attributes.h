@@ -10,13 +10,15 @@
 #include "core/math.h"
 #include "kernel/curve.h"
 #include "kernel/hit.h"
+#include "kernel/kernel_variant.h"
 #include "kernel/scene_view.h"
 
 namespace candela {
 
-// Whether `hit` is on a curve: on a mesh of curves, which holds no triangles.
+// Whether `hit` is on a curve: on a mesh of curves, which holds no triangles. Never in the lean kernel
+// (kernel/kernel_variant.h), whose scenes have no curves.
 CANDELA_FN bool isCurveHit(const SceneView& scene, const Hit& hit) {
-  return scene.meshes[scene.instances[hit.instanceId].meshId].curveSegmentCount > 0;
+  return !kLeanKernel && scene.meshes[scene.instances[hit.instanceId].meshId].curveSegmentCount > 0;
 }
 
 CANDELA_FN const CurveSegment& hitCurveSegment(const SceneView& scene, const Hit& hit) {
@@ -60,6 +62,20 @@ CANDELA_FN CurveControlPoints curveControlPoints(const SceneView& scene, const M
 // The curve's radius at u, in object space.
 CANDELA_FN float curveRadiusAt(const SceneView& scene, const MeshRecord& mesh, const CurveSegment& segment, float u) {
   return cubicBezier(curveControlPoints(scene, mesh, segment).radius, clampf(u, 0.0f, 1.0f));
+}
+
+// Whether a ray meets a tube's wall from inside at `hit` (its t, segment and u), the ray in the curve's object
+// space: the hit's offset from the centre line, across the curve, points along the ray. Only a ray that starts on
+// the tube can, and it passes (backends/cpu/embree_curve_hits.h says why); Embree's filter tests its own normal,
+// OptiX's any-hit program this one.
+CANDELA_FN bool meetsTubeFromInside(const SceneView& scene, const Hit& hit, Vec3 objectOrigin, Vec3 objectDirection) {
+  const MeshRecord& mesh = scene.meshes[scene.instances[hit.instanceId].meshId];
+  const CurveControlPoints c = curveControlPoints(scene, mesh, hitCurveSegment(scene, hit));
+  const float u = clampf(hit.b1, 0.0f, 1.0f);
+  const Vec3 offset = objectOrigin + objectDirection * hit.t - cubicBezier(c.p, u);
+  const Vec3 dpdu = cubicBezierDerivative(c.p, u);
+  const Vec3 across = dot(dpdu, dpdu) > 0.0f ? offset - dpdu * (dot(offset, dpdu) / dot(dpdu, dpdu)) : offset;
+  return dot(objectDirection, across) > 0.0f;
 }
 
 CANDELA_FN CurveHitGeometry curveHitGeometry(const SceneView& scene, const Hit& hit, const Ray& ray) {

@@ -1,8 +1,9 @@
 // Curves on the OptiX backend: round curves (OptiX's round cubic Bezier primitive) agree with the CPU backend's
-// Embree curves, in diffuse white and as hair, and flat and ribbon curves, which OptiX has no primitive for, are
-// refused in one line.
+// Embree curves, in diffuse white and as hair, a backend switches between the full kernel they need and the lean
+// one, and flat and ribbon curves, which OptiX has no primitive for, are refused in one line.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -22,7 +23,7 @@ void expectBackendsAgree(const Scene& scene, uint32_t seed) {
 
 TEST(GpuCurves, RoundCurvesAgreeWithTheCpuBackend) { expectBackendsAgree(test::tubeGrid(true, 0.5f), 171); }
 
-TEST(GpuCurves, HairOnCurvesAgreesWithTheCpuBackend) {
+Scene hairOnCurves() {
   Scene scene = test::tubeGrid(true, 0.5f, 9, 0.2f, 0.05f);
   Material& m = scene.materials[0];
   m.type = MaterialType::Hair;
@@ -31,7 +32,41 @@ TEST(GpuCurves, HairOnCurvesAgreesWithTheCpuBackend) {
   m.azimuthalRoughness = 0.3f;
   m.scaleTilt = 2.0f;
   m.ior = 1.55f;
-  expectBackendsAgree(scene, 181);
+  return scene;
+}
+
+TEST(GpuCurves, HairOnCurvesAgreesWithTheCpuBackend) { expectBackendsAgree(hairOnCurves(), 181); }
+
+// A scene of curves needs the full kernel and one of triangles does not (backends/optix/program_use.h): a backend
+// that switches between them renders each as a fresh backend does, sample for sample.
+TEST(GpuCurves, SwitchingBetweenTheLeanAndTheFullKernelGivesTheImagesOfAFreshBackend) {
+  const Scene lean = test::tubeGrid(false, 0.5f), full = hairOnCurves();
+  const RenderSettings settings = test::squareImage(32, 191);
+  auto render = [&](OptixBackend& backend, const Scene& scene) {
+    backend.setScene(scene);
+    backend.setCamera(scene.camera.toCamera(1.0f));
+    backend.setPathSchedule(PathSchedule::Megakernel);  // the same programs on both sides
+    backend.render(8);
+    return backend.readImage();
+  };
+  auto fresh = [&](const Scene& scene) {
+    OptixBackend backend;
+    backend.setSettings(settings);
+    return render(backend, scene);
+  };
+  const Image freshLean = fresh(lean), freshFull = fresh(full);
+  OptixBackend switching;
+  switching.setSettings(settings);
+  for (const Scene* scene : {&lean, &full, &lean}) {
+    const Image image = render(switching, *scene);
+    const Image& expected = scene == &lean ? freshLean : freshFull;
+    ASSERT_EQ(image.pixels.size(), expected.pixels.size());
+    for (size_t i = 0; i < image.pixels.size(); ++i) {
+      const Vec3 a = image.pixels[i], b = expected.pixels[i];
+      ASSERT_LE(fmaxf(fabsf(a.x - b.x), fmaxf(fabsf(a.y - b.y), fabsf(a.z - b.z))), 1e-5f * (1.0f + maxComponent(b)))
+          << scene->name << ", pixel " << i;
+    }
+  }
 }
 
 TEST(GpuCurves, FlatAndRibbonCurvesAreRefused) {

@@ -12,8 +12,8 @@
 namespace candela {
 namespace {
 
-// Two triangles with every per-mesh array, one of them a lamp, a point light, and a grid medium behind the
-// second: no listed array is empty.
+// Two triangles with every per-mesh array, one of them a lamp, a ribbon curve, a point light, and a grid medium
+// behind the second triangle: no listed array is empty.
 Scene sceneWithEveryArray() {
   Scene scene;
   Material lamp;
@@ -31,7 +31,12 @@ Scene sceneWithEveryArray() {
     m.triangleMaterials = {k};
     scene.meshes.push_back(m);
   }
-  scene.instances = {{0, Affine3x4{}}, {1, Affine3x4{}}};
+  Mesh ribbon;  // a curve segment with normals
+  for (int i = 0; i < 4; ++i) ribbon.curveVertices.push_back({float(i), 2, 0, 0.1f});
+  ribbon.curveNormals.assign(4, Vec3{0, 0, -1});
+  ribbon.curveSegments.push_back({0, 1, CurveType::Ribbon});
+  scene.meshes.push_back(ribbon);
+  scene.instances = {{0, Affine3x4{}}, {1, Affine3x4{}}, {2, Affine3x4{}}};
   Medium fog;
   fog.sigmaA = {0.1f, 0.1f, 0.1f};
   fog.sigmaS = {0.5f, 0.5f, 0.5f};

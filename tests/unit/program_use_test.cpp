@@ -5,6 +5,8 @@
 #include <vector>
 
 #include "backends/optix/program_use.h"
+#include "curves/curve_scenes.h"
+#include "kernel/bsdf/material_models.h"
 
 namespace candela::optix {
 namespace {
@@ -13,7 +15,7 @@ using Kinds = std::vector<PipelineKind>;
 using Modules = std::vector<ProgramModule>;
 
 // What `render` and `bench` compile before their first frame: the modules of the pipelines that frame needs.
-Modules firstFrameModules(const ProgramUse& use) { return modulesOf(pipelinesNeeded(use)); }
+Modules firstFrameModules(const ProgramUse& use) { return modulesOf(pipelinesNeeded(use), use.lean); }
 
 TEST(ProgramUse, AutoScheduleNeedsTheProbeAndItsLikelyChoice) {
   EXPECT_EQ(pipelinesNeeded({}), (Kinds{PipelineKind::Megakernel, PipelineKind::Wavefront}));
@@ -65,7 +67,8 @@ TEST(ProgramUse, RestirPrefetchesNothing) {
 
 TEST(ProgramUse, ADenoisedRenderCompilesTheAovPathTracerAndTheRayProgramsOnly) {
   for (PathSchedule schedule : {PathSchedule::Auto, PathSchedule::Megakernel, PathSchedule::Wavefront})
-    EXPECT_EQ(firstFrameModules({schedule, true, false}), (Modules{ProgramModule::Rays, ProgramModule::AovMegakernel}));
+    EXPECT_EQ(firstFrameModules({schedule, true, false}),
+              (Modules{ProgramModule::Rays, ProgramModule::LeanAovMegakernel}));
 }
 
 TEST(ProgramUse, ARestirRenderCompilesRestirsModuleAndTheRayProgramsOnly) {
@@ -76,13 +79,14 @@ TEST(ProgramUse, ARestirRenderCompilesRestirsModuleAndTheRayProgramsOnly) {
 
 TEST(ProgramUse, AForcedScheduleCompilesItsModuleOnly) {
   EXPECT_EQ(firstFrameModules({PathSchedule::Megakernel, false, false}),
-            (Modules{ProgramModule::Rays, ProgramModule::Megakernel}));
+            (Modules{ProgramModule::Rays, ProgramModule::LeanMegakernel}));
   EXPECT_EQ(firstFrameModules({PathSchedule::Wavefront, false, false}),
-            (Modules{ProgramModule::Rays, ProgramModule::Wavefront}));
+            (Modules{ProgramModule::Rays, ProgramModule::LeanWavefront}));
 }
 
 TEST(ProgramUse, TheAutoScheduleCompilesTheProbesModuleAndTheWavefrontsTogether) {
-  EXPECT_EQ(firstFrameModules({}), (Modules{ProgramModule::Rays, ProgramModule::Megakernel, ProgramModule::Wavefront}));
+  EXPECT_EQ(firstFrameModules({}),
+            (Modules{ProgramModule::Rays, ProgramModule::LeanMegakernel, ProgramModule::LeanWavefront}));
 }
 
 // The first frame waits for the megakernel alone where the schedule is Auto's, decided or not: the wavefront's
@@ -110,6 +114,41 @@ TEST(ProgramUse, EveryProgramIsLaunchedByThePipelineThatHoldsIt) {
   for (size_t k = 0; k < kPipelineKinds; ++k)
     for (RaygenProgram program : pipelinePrograms(PipelineKind(k)))
       EXPECT_EQ(pipelineLaunching(program), PipelineKind(k));
+}
+
+// What a scene needs is the lean kernel's unless the scene uses a part it leaves out (kernel/kernel_variant.h).
+TEST(ProgramUse, ASceneNeedsTheFullKernelOnlyForWhatTheLeanOneLeavesOut) {
+  Scene scene = test::tubeGrid(false, 0.5f);  // triangles, diffuse
+  EXPECT_TRUE(leanKernelSuffices(FlatScene::build(scene)));
+  for (MaterialType type :
+       {MaterialType::BlinnPhong, MaterialType::Pbr, MaterialType::Disney, MaterialType::Mirror, MaterialType::Glass}) {
+    scene.materials[0].type = type;
+    EXPECT_TRUE(leanKernelSuffices(FlatScene::build(scene))) << int(type);
+  }
+  for (MaterialType type : {MaterialType::Hair, MaterialType::DiffuseTransmission}) {
+    scene.materials[0].type = type;
+    EXPECT_FALSE(leanKernelSuffices(FlatScene::build(scene))) << int(type);
+  }
+  scene.materials[0].type = MaterialType::Pbr;
+  scene.materials[0].iridescence = 1.0f;
+  EXPECT_FALSE(leanKernelSuffices(FlatScene::build(scene)));
+  EXPECT_FALSE(leanKernelSuffices(FlatScene::build(test::tubeGrid(true, 0.5f))));  // curves, diffuse
+}
+
+TEST(ProgramUse, TheFullKernelsPathTracersAreModulesOfTheirOwn) {
+  ProgramUse full;
+  full.lean = false;
+  EXPECT_EQ(firstFrameModules(full),
+            (Modules{ProgramModule::Rays, ProgramModule::Megakernel, ProgramModule::Wavefront}));
+  full.aovs = true;
+  EXPECT_EQ(firstFrameModules(full), (Modules{ProgramModule::Rays, ProgramModule::AovMegakernel}));
+  for (size_t k = 0; k < kPipelineKinds; ++k)
+    for (RaygenProgram program : pipelinePrograms(PipelineKind(k))) {
+      const bool pathTracer = PipelineKind(k) == PipelineKind::Megakernel ||
+                              PipelineKind(k) == PipelineKind::AovMegakernel ||
+                              PipelineKind(k) == PipelineKind::Wavefront;
+      EXPECT_EQ(moduleHolding(program, true) != moduleHolding(program, false), pathTracer) << int(program);
+    }
 }
 
 }  // namespace

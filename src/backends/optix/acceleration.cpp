@@ -107,7 +107,7 @@ std::vector<uint8_t> sbtIndices(const FlatScene& flat, const MeshRecord& mesh) {
 // A mesh's curves as one build input of round cubic Bezier curves, read in place from the device copy of the flat
 // arrays (kernel/curve.h): the control points' xyz and, 12 bytes on, their radii (OptiX's widths), both 16 bytes
 // apart; each segment's first control point, sizeof(CurveSegment) apart. Curves take one SBT record (the
-// curves' hit groups, kCurveSbtOffset) and no any-hit program.
+// curves' hit groups, kCurveSbtOffset), whose any-hit program passes the tubes' inner walls.
 void setCurveInput(const FlatScene& flat, const MeshRecord& mesh, const SceneView& device, CUdeviceptr& vertices,
                    CUdeviceptr& widths, OptixBuildInput& input) {
   uint32_t vertexCount = 0;
@@ -127,7 +127,7 @@ void setCurveInput(const FlatScene& flat, const MeshRecord& mesh, const SceneVie
   curves.widthStrideInBytes = sizeof(Vec4);
   curves.indexBuffer = CUdeviceptr(device.curveSegments + mesh.firstCurveSegment) + offsetof(CurveSegment, firstVertex);
   curves.indexStrideInBytes = sizeof(CurveSegment);
-  curves.flag = OPTIX_GEOMETRY_FLAG_DISABLE_ANYHIT;
+  curves.flag = OPTIX_GEOMETRY_FLAG_NONE;  // their any-hit program passes the tubes' inner walls
   curves.endcapFlags = OPTIX_CURVE_ENDCAP_DEFAULT;
 }
 

@@ -90,11 +90,14 @@ struct OptixBackend::State {
   bool startDeferred;
   // Each compiled once something needs it (startNeeded), in the background.
   ProgramModules modules{context.get()};
-  std::array<std::unique_ptr<Pipeline>, kPipelineKinds> pipelines;  // made when first needed (makePipelines)
+  // Made when first needed (makePipelines): of the full kernel's modules, then of the lean kernel's (pipelineSlot).
+  std::array<std::unique_ptr<Pipeline>, 2 * kPipelineKinds> pipelines;
   FlatScene flat;
   DeviceScene scene;
   AccelerationStructures acceleration;
   bool hasScene = false;
+  // The scene needs only the lean kernel (program_use.h): so the modules compiled before a scene is set assume.
+  bool leanKernel = true;
   Camera camera;
   RenderSettings settings;
 
@@ -145,22 +148,30 @@ struct OptixBackend::State {
     reporter.finish();
   }
 
+  // The pipeline of `kind` for the scene's kernel, lean or full.
+  size_t pipelineIndex(PipelineKind kind) const { return size_t(kind) + (leanKernel ? kPipelineKinds : 0); }
+  std::unique_ptr<Pipeline>& pipelineSlot(PipelineKind kind) { return pipelines[pipelineIndex(kind)]; }
+
   // Makes the pipelines of `kinds` not made yet, once their modules are compiled.
   void makePipelines(const std::vector<PipelineKind>& kinds) {
-    whileCompiling(modulesOf(kinds), [&] {
+    whileCompiling(modulesOf(kinds, leanKernel), [&] {
       for (PipelineKind kind : kinds)
-        if (!pipelines[size_t(kind)])
-          pipelines[size_t(kind)] = std::make_unique<Pipeline>(context.get(), modules, pipelinePrograms(kind));
+        if (!pipelineSlot(kind))
+          pipelineSlot(kind) = std::make_unique<Pipeline>(context.get(), modules, pipelinePrograms(kind), leanKernel);
     });
   }
 
   // What the next frame renders, and so which pipelines it launches (program_use.h).
   ProgramUse use() const {
-    return {schedule.decided() ? schedule.next() : PathSchedule::Auto, aovsEnabled, settings.restir != RestirMode::Off,
-            !flat.media.empty(), schedule.requested() == PathSchedule::Auto};
+    return {schedule.decided() ? schedule.next() : PathSchedule::Auto,
+            aovsEnabled,
+            settings.restir != RestirMode::Off,
+            !flat.media.empty(),
+            schedule.requested() == PathSchedule::Auto,
+            leanKernel};
   }
-  std::vector<ProgramModule> neededModules() const { return modulesOf(pipelinesNeeded(use())); }
-  std::vector<ProgramModule> awaitedModules() const { return modulesOf(pipelinesAwaited(use())); }
+  std::vector<ProgramModule> neededModules() const { return modulesOf(pipelinesNeeded(use()), leanKernel); }
+  std::vector<ProgramModule> awaitedModules() const { return modulesOf(pipelinesAwaited(use()), leanKernel); }
 
   // Begins compiling the modules the next frame needs, where they have not begun: called wherever what it renders
   // may have changed, so that the compile runs while the caller sets up the rest (or renders on the CPU).
@@ -181,7 +192,8 @@ struct OptixBackend::State {
   // modules of what a control is likely to switch to, at low priority, so that the switch does not wait long.
   void prefetchLikely() {
     if (programStart != ProgramStart::InBackground) return;
-    for (ProgramModule module : modulesOf(pipelinesLikely(use()))) modules.start(module, CompilePriority::Prefetch);
+    for (ProgramModule module : modulesOf(pipelinesLikely(use()), leanKernel))
+      modules.start(module, CompilePriority::Prefetch);
   }
 
   // Waits for the compiles that have begun, which cannot be cancelled (OptiX destroys no module while its tasks
@@ -195,8 +207,8 @@ struct OptixBackend::State {
 
   const Pipeline& pipeline(RaygenProgram program) {
     const PipelineKind kind = pipelineLaunching(program);
-    if (!pipelines[size_t(kind)]) makePipelines({kind});
-    return *pipelines[size_t(kind)];
+    if (!pipelineSlot(kind)) makePipelines({kind});
+    return *pipelineSlot(kind);
   }
 
   // Uploads the parameters, launches one raygen program over `rows` rows of the image from p.firstRow on and
@@ -280,8 +292,9 @@ struct OptixBackend::State {
 
   // Whether the wavefront can launch without waiting, or must, where it was requested rather than Auto's choice.
   bool wavefrontCompiled() const {
-    if (schedule.requested() == PathSchedule::Wavefront || pipelines[size_t(PipelineKind::Wavefront)]) return true;
-    return modules.finished(modulesOf({PipelineKind::Wavefront}));
+    if (schedule.requested() == PathSchedule::Wavefront || pipelines[pipelineIndex(PipelineKind::Wavefront)])
+      return true;
+    return modules.finished(modulesOf({PipelineKind::Wavefront}, leanKernel));
   }
 
   // Says which schedule renders, when that changed; `standIn`: the megakernel renders while the wavefront that Auto
@@ -518,8 +531,10 @@ void OptixBackend::setScene(const Scene& scene) {
   // s.flat is the scene of the structures' last update until this one succeeds.
   s.acceleration.update(s.context.get(), s.context.stream(), &s.flat, flat, s.scene.view());
   s.flat = std::move(flat);
+  s.leanKernel = leanKernelSuffices(s.flat);
   s.hasScene = true;
   s.schedule.reset();
+  s.startNeeded();
   s.restart();
 }
 
@@ -531,6 +546,8 @@ bool OptixBackend::setMaterials(const std::vector<Material>& materials) {
     cutoutsChange = cutoutsChange || materialSbtIndex(materials[i]) != materialSbtIndex(s.flat.materials[i]);
   if (!s.flat.replaceMaterials(materials)) return false;
   s.scene.updateMaterials(s.flat);
+  s.leanKernel = leanKernelSuffices(s.flat);
+  s.startNeeded();
   if (cutoutsChange) s.acceleration.update(s.context.get(), s.context.stream(), &s.flat, s.flat, s.scene.view());
   s.restart();
   return true;

@@ -44,7 +44,8 @@ struct alignas(OPTIX_SBT_RECORD_ALIGNMENT) HeaderOnlyRecord {
 
 }  // namespace
 
-Pipeline::Pipeline(OptixDeviceContext context, ProgramModules& modules, const std::vector<RaygenProgram>& programs)
+Pipeline::Pipeline(OptixDeviceContext context, ProgramModules& modules, const std::vector<RaygenProgram>& programs,
+                   bool lean)
     : programs_(programs) {
   const OptixModule rays = modules.get(ProgramModule::Rays);
   const size_t raygens = programs.size();
@@ -53,7 +54,7 @@ Pipeline::Pipeline(OptixDeviceContext context, ProgramModules& modules, const st
   std::vector<OptixProgramGroupDesc> descriptions(raygens + 6);
   for (size_t i = 0; i < raygens; ++i) {
     descriptions[i].kind = OPTIX_PROGRAM_GROUP_KIND_RAYGEN;
-    descriptions[i].raygen.module = modules.get(moduleHolding(programs[i]));
+    descriptions[i].raygen.module = modules.get(moduleHolding(programs[i], lean));
     descriptions[i].raygen.entryFunctionName = raygenName(programs[i]);
   }
   // The radiance miss program would only restate the payload's "missed" sentinel, so it is absent.
@@ -72,14 +73,19 @@ Pipeline::Pipeline(OptixDeviceContext context, ProgramModules& modules, const st
   descriptions[shadowHit].kind = OPTIX_PROGRAM_GROUP_KIND_HITGROUP;
   descriptions[shadowHit].hitgroup.moduleAH = rays;
   descriptions[shadowHit].hitgroup.entryFunctionNameAH = "__anyhit__passThrough";
-  // Curves: OptiX's built-in intersection program, no any-hit (their materials' alpha is not applied).
+  // Curves: OptiX's built-in intersection program, and an any-hit program that passes the tubes' inner walls
+  // (their materials' alpha is not applied).
   const OptixModule curves = modules.curveIntersection();
   descriptions[curveRadianceHit].kind = OPTIX_PROGRAM_GROUP_KIND_HITGROUP;
   descriptions[curveRadianceHit].hitgroup.moduleIS = curves;
   descriptions[curveRadianceHit].hitgroup.moduleCH = rays;
   descriptions[curveRadianceHit].hitgroup.entryFunctionNameCH = "__closesthit__curve";
+  descriptions[curveRadianceHit].hitgroup.moduleAH = rays;
+  descriptions[curveRadianceHit].hitgroup.entryFunctionNameAH = "__anyhit__curveOutside";
   descriptions[curveShadowHit].kind = OPTIX_PROGRAM_GROUP_KIND_HITGROUP;
   descriptions[curveShadowHit].hitgroup.moduleIS = curves;
+  descriptions[curveShadowHit].hitgroup.moduleAH = rays;
+  descriptions[curveShadowHit].hitgroup.entryFunctionNameAH = "__anyhit__curveOutside";
   groups_.assign(descriptions.size(), nullptr);
   OptixProgramGroupOptions groupOptions{};
   checkWithLog("creating the program groups", [&](char* log, size_t* logSize) {

@@ -15,8 +15,9 @@ namespace candela::optix {
 // the miss and hit-group records.
 class Pipeline {
  public:
-  // Waits for the modules it needs (ProgramModules::get), and throws as it does.
-  Pipeline(OptixDeviceContext context, ProgramModules& modules, const std::vector<RaygenProgram>& programs);
+  // Waits for the modules it needs (ProgramModules::get), and throws as it does. `lean`: of the lean kernel's
+  // modules (moduleHolding).
+  Pipeline(OptixDeviceContext context, ProgramModules& modules, const std::vector<RaygenProgram>& programs, bool lean);
   ~Pipeline();
   Pipeline(const Pipeline&) = delete;
   Pipeline& operator=(const Pipeline&) = delete;

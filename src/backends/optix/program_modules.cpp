@@ -10,9 +10,11 @@
 
 // The device programs as OptiX-IR, embedded at build time (CMakeLists.txt).
 extern const unsigned char candelaRayPrograms[], candelaMegakernelPrograms[], candelaAovMegakernelPrograms[],
-    candelaWavefrontPrograms[], candelaRawTracePrograms[], candelaRestirPrograms[], candelaMediaPrograms[];
+    candelaWavefrontPrograms[], candelaRawTracePrograms[], candelaRestirPrograms[], candelaMediaPrograms[],
+    candelaLeanMegakernelPrograms[], candelaLeanAovMegakernelPrograms[], candelaLeanWavefrontPrograms[];
 extern const size_t candelaRayProgramsSize, candelaMegakernelProgramsSize, candelaAovMegakernelProgramsSize,
-    candelaWavefrontProgramsSize, candelaRawTraceProgramsSize, candelaRestirProgramsSize, candelaMediaProgramsSize;
+    candelaWavefrontProgramsSize, candelaRawTraceProgramsSize, candelaRestirProgramsSize, candelaMediaProgramsSize,
+    candelaLeanMegakernelProgramsSize, candelaLeanAovMegakernelProgramsSize, candelaLeanWavefrontProgramsSize;
 
 namespace candela::optix {
 
@@ -27,6 +29,10 @@ EmbeddedIr moduleIr(ProgramModule module) {
     case ProgramModule::RawTrace: return {candelaRawTracePrograms, candelaRawTraceProgramsSize};
     case ProgramModule::Restir: return {candelaRestirPrograms, candelaRestirProgramsSize};
     case ProgramModule::Media: return {candelaMediaPrograms, candelaMediaProgramsSize};
+    case ProgramModule::LeanMegakernel: return {candelaLeanMegakernelPrograms, candelaLeanMegakernelProgramsSize};
+    case ProgramModule::LeanAovMegakernel:
+      return {candelaLeanAovMegakernelPrograms, candelaLeanAovMegakernelProgramsSize};
+    case ProgramModule::LeanWavefront: return {candelaLeanWavefrontPrograms, candelaLeanWavefrontProgramsSize};
   }
   return {nullptr, 0};
 }

@@ -4,6 +4,8 @@
 #include <array>
 #include <stdexcept>
 
+#include "kernel/kernel_variant.h"
+
 namespace candela::optix {
 
 // Which raygen programs share a pipeline: the path tracer runs much faster beside the record program than alone
@@ -48,17 +50,17 @@ PipelineKind pipelineLaunching(RaygenProgram program) {
   throw std::logic_error("no pipeline launches the raygen program");
 }
 
-ProgramModule moduleHolding(RaygenProgram program) {
+ProgramModule moduleHolding(RaygenProgram program, bool lean) {
   switch (program) {
     case RaygenProgram::Render:
-    case RaygenProgram::Record: return ProgramModule::Megakernel;
+    case RaygenProgram::Record: return lean ? ProgramModule::LeanMegakernel : ProgramModule::Megakernel;
     case RaygenProgram::RawTrace: return ProgramModule::RawTrace;
     case RaygenProgram::RenderWithAovs:
-    case RaygenProgram::RecordBesideAovs: return ProgramModule::AovMegakernel;
+    case RaygenProgram::RecordBesideAovs: return lean ? ProgramModule::LeanAovMegakernel : ProgramModule::AovMegakernel;
     case RaygenProgram::PathTrace:
     case RaygenProgram::PathShade:
     case RaygenProgram::PathTail:
-    case RaygenProgram::PathFinish: return ProgramModule::Wavefront;
+    case RaygenProgram::PathFinish: return lean ? ProgramModule::LeanWavefront : ProgramModule::Wavefront;
     case RaygenProgram::RestirPrimary:
     case RaygenProgram::RestirPresample:
     case RaygenProgram::RestirCandidates:
@@ -70,13 +72,19 @@ ProgramModule moduleHolding(RaygenProgram program) {
   throw std::logic_error("no module holds the raygen program");
 }
 
-std::vector<ProgramModule> modulesOf(const std::vector<PipelineKind>& kinds) {
+std::vector<ProgramModule> modulesOf(const std::vector<PipelineKind>& kinds, bool lean) {
   std::vector<ProgramModule> modules{ProgramModule::Rays};
   for (PipelineKind kind : kinds)
     for (RaygenProgram program : pipelinePrograms(kind))
-      if (std::find(modules.begin(), modules.end(), moduleHolding(program)) == modules.end())
-        modules.push_back(moduleHolding(program));
+      if (std::find(modules.begin(), modules.end(), moduleHolding(program, lean)) == modules.end())
+        modules.push_back(moduleHolding(program, lean));
   return modules;
+}
+
+bool leanKernelSuffices(const FlatScene& scene) {
+  if (!scene.curveSegments.empty()) return false;
+  return std::all_of(scene.materials.begin(), scene.materials.end(),
+                     [](const Material& m) { return leanKernelRenders(m); });
 }
 
 std::vector<PipelineKind> pipelinesNeeded(const ProgramUse& use) {
@@ -98,7 +106,7 @@ std::vector<PipelineKind> pipelinesAwaited(const ProgramUse& use) {
 
 std::vector<PipelineKind> pipelinesLikely(const ProgramUse& use) {
   if (use.restir || use.media) return {};
-  if (use.aovs) return pipelinesNeeded({use.schedule, false, false});
+  if (use.aovs) return pipelinesNeeded({use.schedule, false, false, false, true, use.lean});
   return {PipelineKind::AovMegakernel};
 }
 

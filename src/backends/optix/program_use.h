@@ -6,11 +6,13 @@
 #include <vector>
 
 #include "backends/path_schedule.h"
+#include "scene/flat_scene.h"
 
 namespace candela::optix {
 
-// The modules of the device programs: each .cu file of device/ is one (program_modules.h). A new module is an entry
-// here and its OptiX-IR's in program_modules.cpp (moduleIr).
+// The modules of the device programs: each .cu file of device/ is one (program_modules.h), and the path tracers'
+// are also compiled as the lean kernel (kernel/kernel_variant.h). A new module is an entry here and its OptiX-IR's
+// in program_modules.cpp (moduleIr).
 enum class ProgramModule {
   Rays,           // closest-hit, any-hit and miss programs, which every pipeline holds (device/ray_programs.cu)
   Megakernel,     // device/megakernel_programs.cu
@@ -19,8 +21,11 @@ enum class ProgramModule {
   RawTrace,       // device/raw_trace_programs.cu
   Restir,         // device/restir_programs.cu
   Media,          // device/media_programs.cu
+  LeanMegakernel,
+  LeanAovMegakernel,
+  LeanWavefront,
 };
-constexpr size_t kProgramModuleCount = size_t(ProgramModule::Media) + 1;
+constexpr size_t kProgramModuleCount = size_t(ProgramModule::LeanWavefront) + 1;
 
 enum class RaygenProgram {
   Render,
@@ -54,9 +59,14 @@ constexpr size_t kPipelineKinds = 6;
 const std::vector<RaygenProgram>& pipelinePrograms(PipelineKind kind);
 // The pipeline that launches `program`.
 PipelineKind pipelineLaunching(RaygenProgram program);
-ProgramModule moduleHolding(RaygenProgram program);
+// `lean`: the scene needs only the lean kernel (leanKernelSuffices), whose module then holds the path tracers.
+ProgramModule moduleHolding(RaygenProgram program, bool lean);
 // The modules the pipelines of `kinds` are made of: the ray programs' and each raygen program's, once.
-std::vector<ProgramModule> modulesOf(const std::vector<PipelineKind>& kinds);
+std::vector<ProgramModule> modulesOf(const std::vector<PipelineKind>& kinds, bool lean);
+
+// Whether the lean kernel renders `scene` as the full kernel does (kernel/kernel_variant.h): no material of a model
+// it leaves out, no thin film and no curves. Its path tracers compile in less time on a first start.
+bool leanKernelSuffices(const FlatScene& scene);
 
 // What the next frames render.
 struct ProgramUse {
@@ -70,6 +80,7 @@ struct ProgramUse {
   // the wavefront's place while the wavefront's programs compile, since both draw the same samples
   // (backends/path_schedule.h).
   bool megakernelMayStandIn = true;
+  bool lean = true;  // the scene needs only the lean kernel (leanKernelSuffices)
 };
 
 // The pipelines the next frames launch, whose modules compile at once.

@@ -1,6 +1,7 @@
 #pragma once
 #include "kernel/bsdf/material_models.h"
 #include "kernel/interaction.h"
+#include "kernel/kernel_variant.h"
 #include "kernel/material.h"
 
 namespace candela {
@@ -25,7 +26,7 @@ class Bsdf {
     switch (m.type) {
 #define CANDELA_BUILD_MODEL_CASE(type, Model, name, shadingName) \
   case MaterialType::type:                                       \
-    if (MaterialType::type == kFallbackType) break;              \
+    if (isFallback(MaterialType::type)) break;                   \
     model_.as##type = Model::fromMaterial(m, eta, si.uv);        \
     return;
       CANDELA_MATERIAL_MODELS(CANDELA_BUILD_MODEL_CASE)
@@ -47,7 +48,7 @@ class Bsdf {
     switch (type_) {
 #define CANDELA_VISIT_MODEL_CASE(type, Model, name, shadingName) \
   case MaterialType::type:                                       \
-    if (MaterialType::type == kFallbackType) break;              \
+    if (isFallback(MaterialType::type)) break;                   \
     return f(model_.as##type);
       CANDELA_MATERIAL_MODELS(CANDELA_VISIT_MODEL_CASE)
 #undef CANDELA_VISIT_MODEL_CASE
@@ -86,6 +87,11 @@ class Bsdf {
  private:
   // The model built for a mix or a type outside the list: a diffuse surface, asDiffuse.
   static constexpr MaterialType kFallbackType = MaterialType::Diffuse;
+  // Whether `type` is built as the fallback: the fallback itself, and a model this compile of the kernel leaves out
+  // (kernel/kernel_variant.h), whose code then folds away.
+  CANDELA_FN static constexpr bool isFallback(MaterialType type) {
+    return type == kFallbackType || !kernelHasModel(type);
+  }
 
   // The one model type_ names (the member as<type>: asDiffuse, asDisney, ...); the others are never read. Each is
   // plain data, so assigning one begins its life.

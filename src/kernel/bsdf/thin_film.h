@@ -1,5 +1,6 @@
 #pragma once
 #include "kernel/bsdf/fresnel.h"
+#include "kernel/kernel_variant.h"
 
 namespace candela {
 
@@ -98,7 +99,8 @@ struct ThinFilm {
     return film;
   }
 
-  CANDELA_FN bool present() const { return weight > 0.0f; }
+  // Never in the lean kernel (kernel/kernel_variant.h), whose scenes have no films.
+  CANDELA_FN bool present() const { return !kLeanKernel && weight > 0.0f; }
 
   // The film's reflectance at cosTheta over the dielectric base alone: what the diffuse base sees.
   CANDELA_FN Vec3 overDielectric(float cosTheta) const {

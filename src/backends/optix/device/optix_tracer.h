@@ -10,10 +10,13 @@ namespace candela::optix {
 class OptixTracer {
  public:
   // `cutouts`: the scene has cut-outs (SceneView::hasCutouts). Then rays cull back faces, which only the
-  // triangles of materials that cull them allow (acceleration.cpp); without, rays skip any-hit programs.
-  __device__ OptixTracer(OptixTraversableHandle traversable, bool cutouts)
+  // triangles of materials that cull them allow (acceleration.cpp). `curves`: the scene has curves, whose any-hit
+  // program passes their inner walls. With neither, rays skip any-hit programs.
+  __device__ OptixTracer(OptixTraversableHandle traversable, bool cutouts, bool curves)
       : traversable_(traversable),
-        cutoutFlags_(cutouts ? OPTIX_RAY_FLAG_CULL_BACK_FACING_TRIANGLES : OPTIX_RAY_FLAG_DISABLE_ANYHIT) {}
+        cutoutFlags_(cutouts  ? OPTIX_RAY_FLAG_CULL_BACK_FACING_TRIANGLES
+                     : curves ? OPTIX_RAY_FLAG_NONE
+                              : OPTIX_RAY_FLAG_DISABLE_ANYHIT) {}
 
   // Closest hit: payload register 0 carries the random bits to the any-hit program (kernel/pass_through.h); then
   // the radiance closest-hit program writes t, barycentrics and ids into the five registers. The radiance miss

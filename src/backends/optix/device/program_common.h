@@ -25,5 +25,6 @@ inline __device__ uint32_t launchPixel() {
 }
 
 inline __device__ candela::optix::OptixTracer sceneTracer() {
-  return candela::optix::OptixTracer(params.traversable, params.scene.hasCutouts != 0);
+  return candela::optix::OptixTracer(params.traversable, params.scene.hasCutouts != 0,
+                                     params.scene.curveSegments != nullptr);
 }

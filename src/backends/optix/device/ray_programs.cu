@@ -1,7 +1,8 @@
 // The programs that answer ray queries, shared by every pipeline: closest-hit (of triangles and of curves),
-// any-hit and the shadow miss. Each
+// any-hit (of triangles and of curves) and the shadow miss. Each
 // pipeline's raygen programs are modules of their own (the other .cu files here).
 #include "backends/optix/device/program_common.h"
+#include "kernel/curve_attributes.h"
 
 using namespace candela;
 using namespace candela::optix;
@@ -50,6 +51,19 @@ extern "C" __global__ void __anyhit__passThrough() {
   hit.primitiveId = optixGetPrimitiveIndex();
   if (passesThrough(
           params.scene, hit, [] { return false; }, optixGetPayload_0()))
+    optixIgnoreIntersection();
+}
+
+// Any-hit for both ray types on curves: drops a hit on a tube's inner wall, so that light a hair fibre transmits
+// (its BSDF accounts for both walls) and shadow rays leave it, as the CPU backend's Embree filter does.
+extern "C" __global__ void __anyhit__curveOutside() {
+  Hit hit;
+  hit.t = optixGetRayTmax();
+  hit.b1 = optixGetCurveParameter();
+  hit.instanceId = optixGetInstanceId();
+  hit.primitiveId = optixGetPrimitiveIndex();
+  const float3 origin = optixGetObjectRayOrigin(), direction = optixGetObjectRayDirection();
+  if (meetsTubeFromInside(params.scene, hit, {origin.x, origin.y, origin.z}, {direction.x, direction.y, direction.z}))
     optixIgnoreIntersection();
 }
 
