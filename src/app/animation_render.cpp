@@ -117,9 +117,11 @@ int runAnimatedRender(const RenderJob& job, const AnimationRequest& request, con
     if (hidden > 0 && writes)
       std::fprintf(stderr, "candela: warning: at %g s, %zu animated instances would lie beyond +-1e8 and are hidden\n",
                    seconds, hidden);
-    if (first)
-      backend->setScene(scene);
-    else if (!player.deformedMeshes().empty())
+    if (first) {
+      std::string fellBack;
+      setSceneOrFallBack(backend, hinted.backend, scene, fellBack);
+      if (!fellBack.empty() && writes) std::fprintf(stderr, "%s\n", fellBack.c_str());
+    } else if (!player.deformedMeshes().empty())
       backend->setDeformedMeshes(scene, player.deformedMeshes());
     else
       backend->setInstanceTransforms(scene);

@@ -90,6 +90,18 @@ std::unique_ptr<Backend> createBackend(const std::string& name, std::string& why
 #endif
 }
 
+void setSceneOrFallBack(std::unique_ptr<Backend>& backend, const std::string& name, const Scene& scene,
+                        std::string& why) {
+  try {
+    backend->setScene(scene);
+  } catch (const SceneUnsupported& e) {
+    if (name != "auto" || backend->name() == "cpu") throw;
+    backend = std::make_unique<CpuBackend>();
+    backend->setScene(scene);
+    why = std::string("backend: cpu (auto: the GPU backend cannot render this scene: ") + e.what() + ")";
+  }
+}
+
 std::unique_ptr<Backend> createBackend(const std::string& name, std::string& why, [[maybe_unused]] int deviceIndex,
                                        [[maybe_unused]] const ProgramCompileListener& compileProgress,
                                        [[maybe_unused]] ProgramStart start) {

@@ -25,6 +25,12 @@ std::string availableBackends();
 std::unique_ptr<Backend> createBackend(const std::string& name, std::string& why, const DeviceRequest& devices = {},
                                        const ProgramCompileListener& compileProgress = compileProgressOnStderr(),
                                        ProgramStart start = ProgramStart::Wait);
+// Gives `backend`, made for the request `name`, the scene. Where `name` is "auto" and the backend is a GPU's that
+// cannot render the scene (SceneUnsupported), the CPU backend takes its place, is given the scene, and `why` says
+// so in one sentence; with any other request the refusal is thrown on. `why` is left alone otherwise.
+void setSceneOrFallBack(std::unique_ptr<Backend>& backend, const std::string& name, const Scene& scene,
+                        std::string& why);
+
 // The same on the one GPU `deviceIndex` modulo the GPUs it sees (the processes of a distributed render on one
 // node take one each).
 std::unique_ptr<Backend> createBackend(const std::string& name, std::string& why, int deviceIndex,

@@ -41,7 +41,9 @@ void runCameraPathRender(const RenderJob& pathJob, const TemporalParams& tempora
   std::string why;
   std::unique_ptr<Backend> backend = createBackend(job.backend, why, job.devices);
   if (!why.empty()) std::fprintf(stderr, "%s\n", why.c_str());
-  backend->setScene(scene);
+  why.clear();
+  setSceneOrFallBack(backend, job.backend, scene, why);
+  if (!why.empty()) std::fprintf(stderr, "%s\n", why.c_str());
   backend->setSettings(job.settings);
   backend->setAovsEnabled(needsAovs(job.denoiser));
   const float aspect = float(job.settings.width) / float(job.settings.height);

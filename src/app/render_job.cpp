@@ -131,12 +131,16 @@ RenderOutcome renderLoadedScene(const RenderJob& job, const Scene& scene, bool s
     });
     if (!job.team || job.team->writes()) std::fprintf(stderr, "%s\n", why.c_str());
   }
-  Backend* backend = given ? given : created.get();
   outcome.backendStartSeconds = secondsSince(backendStart);
+  const auto setupStart = Clock::now();
+  if (!given) {
+    std::string why;
+    setSceneOrFallBack(created, job.backend, scene, why);
+    if (!why.empty() && (!job.team || job.team->writes())) std::fprintf(stderr, "%s\n", why.c_str());
+  }
+  Backend* backend = given ? given : created.get();
   if (job.rawTrace && !backend->supportsRawTrace())
     throw std::runtime_error("the raw-trace mode needs the optix backend, not " + backend->name());
-  const auto setupStart = Clock::now();
-  if (!given) backend->setScene(scene);
   backend->setSettings(job.settings);
   backend->setAovsEnabled(needsAovs(job));
   const Camera camera = scene.camera.toCamera(float(job.settings.width) / float(job.settings.height));

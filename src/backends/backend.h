@@ -47,6 +47,13 @@ struct ProgramCompileStatus {
 // for the schedule they measure.
 enum class ProgramWait { NextFrame, EveryFrame };
 
+// Thrown by Backend::setScene where this backend cannot render the scene though the CPU backend, which renders every
+// valid scene, can: `--backend auto` then renders it on the CPU (app/backend_factory.h, setSceneOrFallBack).
+class SceneUnsupported : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
 // A renderer of one scene: owns traversal structures, memory and launches; shading is the shared kernel code.
 // Every render() call adds samples to a progressive film; changing the camera or the settings restarts it.
 class Backend {
@@ -56,6 +63,7 @@ class Backend {
   virtual std::string name() const = 0;        // "cpu", "optix"
   virtual std::string deviceName() const = 0;  // the processor or GPU that runs it
 
+  // Throws SceneUnsupported where the scene uses what this backend does not render.
   virtual void setScene(const Scene& scene) = 0;
   // Cheap edits of the scene last set, for interactive controls: the traversal structures stay, the film
   // restarts. setMaterials returns false, changing nothing, when the change needs setScene instead (see

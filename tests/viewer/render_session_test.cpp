@@ -26,7 +26,8 @@ struct BackendLog {
   int renders = 0;
   Camera lastCamera;
   RenderSettings lastSettings;
-  bool compiling = false;  // whether startingCompile() says the programs of a frame are still compiling
+  bool compiling = false;     // whether startingCompile() says the programs of a frame are still compiling
+  bool refuseScenes = false;  // whether setScene throws SceneUnsupported, as a GPU backend does for what it lacks
 };
 
 class RecordingBackend final : public Backend {
@@ -35,6 +36,7 @@ class RecordingBackend final : public Backend {
   std::string name() const override { return "recording"; }
   std::string deviceName() const override { return "none"; }
   void setScene(const Scene& scene) override {
+    if (log_.refuseScenes) throw SceneUnsupported("the recording backend refuses every scene");
     ++log_.scenes;
     log_.intensity = scene.environment.intensity;
     log_.rotation = scene.environment.rotationDegrees;
@@ -120,6 +122,41 @@ struct SessionTest : ::testing::Test {
     settings.height = 24;
   }
 };
+
+// --backend auto: a scene the GPU backend refuses renders on the CPU backend, which takes over the session with the
+// AOVs, settings and camera the frames ask for.
+TEST(SessionFallBack, AnAutoSessionMovesToTheCpuWhereItsBackendRefusesTheScene) {
+  BackendLog log, meanwhileLog;
+  log.refuseScenes = true;
+  log.compiling = true;  // a GPU backend's first start: the CPU renders meanwhile
+  RenderSession session(std::make_unique<RecordingBackend>(log), std::make_unique<RecordingBackend>(meanwhileLog),
+                        "auto");
+  session.setAovsEnabled(true);
+  session.setScene(makeWhiteFurnace());
+  RenderSettings settings;
+  settings.width = 16;
+  settings.height = 8;
+  const Camera camera = Camera::lookAt({0, 0, -1}, {0, 0, 0}, {0, 1, 0}, 40.0f, 2.0f);
+  session.renderFrame(camera, settings, 2, true);
+  EXPECT_EQ(session.backend().name(), "cpu");
+  EXPECT_EQ(session.backendChanges(), 1u);
+  EXPECT_TRUE(session.backend().aovsEnabled());
+  EXPECT_EQ(session.accumulatedSamples(), 2u);
+  EXPECT_EQ(session.image().width, 16u);
+  EXPECT_EQ(meanwhileLog.renders, 0);  // dropped with the refusing backend
+}
+
+TEST(SessionFallBack, ARefusalOfARequestedBackendIsThrownOn) {
+  for (const char* requested : {"optix", ""}) {
+    BackendLog log;
+    log.refuseScenes = true;
+    RenderSession session(std::make_unique<RecordingBackend>(log), nullptr, requested);
+    session.setScene(makeWhiteFurnace());
+    RenderSettings settings;
+    settings.width = settings.height = 8;
+    EXPECT_THROW(session.renderFrame(Camera{}, settings, 1, true), SceneUnsupported) << requested;
+  }
+}
 
 TEST_F(SessionTest, AccumulatesWhileNothingChanges) {
   for (int i = 0; i < 5; ++i) session.renderFrame(camera, settings, 2, true);

@@ -28,7 +28,7 @@ InteractiveRenderer::Backends InteractiveRenderer::makeBackends(const Interactiv
 }
 
 InteractiveRenderer::InteractiveRenderer(const InteractiveOptions& options, Backends backends)
-    : options_(options), session_(std::move(backends.backend), std::move(backends.meanwhile)) {}
+    : options_(options), session_(std::move(backends.backend), std::move(backends.meanwhile), options.backend) {}
 
 InteractiveRenderer::InteractiveRenderer(const InteractiveOptions& options)
     : InteractiveRenderer(options, makeBackends(options)) {

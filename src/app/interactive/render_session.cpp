@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <utility>
 
+#include "app/backend_factory.h"
+
 namespace candela {
 
 namespace {
@@ -22,8 +24,9 @@ bool sameCamera(const Camera& a, const Camera& b) {
          a.orthographic == b.orthographic;
 }
 
-RenderSession::RenderSession(std::unique_ptr<Backend> backend, std::unique_ptr<Backend> meanwhile)
-    : backend_(std::move(backend)), meanwhile_(std::move(meanwhile)) {}
+RenderSession::RenderSession(std::unique_ptr<Backend> backend, std::unique_ptr<Backend> meanwhile,
+                             std::string requested)
+    : backend_(std::move(backend)), meanwhile_(std::move(meanwhile)), requested_(std::move(requested)) {}
 
 template <class Change>
 void RenderSession::toEach(const Change& change) {
@@ -33,6 +36,22 @@ void RenderSession::toEach(const Change& change) {
 
 std::optional<ProgramCompileStatus> RenderSession::startingCompile() const {
   return meanwhile_ ? backend_->startingCompile() : std::nullopt;
+}
+
+bool RenderSession::setSceneOnEach() {
+  const bool aovs = backend().aovsEnabled();
+  const Backend* before = backend_.get();
+  std::string why;
+  setSceneOrFallBack(backend_, requested_, scene_, why);
+  if (backend_.get() == before) {
+    if (meanwhile_) meanwhileArena_.execute([&] { meanwhile_->setScene(scene_); });
+    return false;
+  }
+  std::fprintf(stderr, "%s\n", why.c_str());
+  meanwhile_.reset();
+  ++backendChanges_;
+  backend_->setAovsEnabled(aovs);
+  return true;
 }
 
 bool RenderSession::handOverWhenReady() {
@@ -114,7 +133,8 @@ FrameStats RenderSession::renderFrame(const Camera& camera, const RenderSettings
     else
       toEach([&](Backend& b) { b.setInstanceTransforms(scene_); });
   }
-  if (sceneChanged_) toEach([&](Backend& b) { b.setScene(scene_); });
+  // A backend that took over has none of the settings and camera yet.
+  if (sceneChanged_ && setSceneOnEach()) haveFrame_ = false;
   if (sceneChanged_ || materialsChanged_ || environmentChanged_ || instancesChanged_) restart = true;
   sceneChanged_ = materialsChanged_ = environmentChanged_ = instancesChanged_ = false;
   if (!haveFrame_ || !sameSettings(wanted, applied_)) {

@@ -24,9 +24,13 @@ bool sameCamera(const Camera& a, const Camera& b);
 // scene, camera and settings when its compile ends, and the frames render on the meanwhile one. The first frame
 // after the compile has ended renders on the GPU backend, from an empty film (a restart), and the meanwhile one
 // is dropped: the one handover a session has.
+//
+// `requested`: the backend the session was asked for (--backend). Where it is "auto" and the GPU backend cannot
+// render a scene (SceneUnsupported), the CPU backend renders the session from then on (setSceneOrFallBack).
 class RenderSession {
  public:
-  explicit RenderSession(std::unique_ptr<Backend> backend, std::unique_ptr<Backend> meanwhile = nullptr);
+  explicit RenderSession(std::unique_ptr<Backend> backend, std::unique_ptr<Backend> meanwhile = nullptr,
+                         std::string requested = "");
 
   void setScene(Scene scene);
   const Scene& scene() const { return scene_; }
@@ -66,7 +70,7 @@ class RenderSession {
   const Backend& backend() const { return meanwhile_ ? *meanwhile_ : *backend_; }
   // While the frames render meanwhile: how the compile they wait for goes (nothing once it has ended).
   std::optional<ProgramCompileStatus> startingCompile() const;
-  // Times the frames moved to another backend: 1 after the handover, 0 before it or without one.
+  // Times the frames moved to another backend: the handover, and a move to the CPU (see the class).
   uint64_t backendChanges() const { return backendChanges_; }
 
  private:
@@ -75,9 +79,12 @@ class RenderSession {
   // Applies `change` to every backend held; on the meanwhile one in its arena.
   template <class Change>
   void toEach(const Change& change);
+  // Gives every backend held the scene, or moves the session to the CPU (see the class); returns whether it moved.
+  bool setSceneOnEach();
 
   std::unique_ptr<Backend> backend_;
   std::unique_ptr<Backend> meanwhile_;
+  std::string requested_;
   // The meanwhile backend's work runs at low priority, so that the compile it waits for keeps the threads it can
   // use, and the frames take the rest.
   tbb::task_arena meanwhileArena_{tbb::task_arena::automatic, 1, tbb::task_arena::priority::low};

@@ -526,7 +526,7 @@ void OptixBackend::setScene(const Scene& scene) {
   // OptiX's curves are round: flat and ribbon curves have no primitive of their own there (docs/design.md).
   for (const CurveSegment& segment : flat.curveSegments)
     if (segment.type != CurveType::Cylinder)
-      throw std::invalid_argument("flat and ribbon curves are rendered by the CPU backend only: use --backend cpu");
+      throw SceneUnsupported("flat and ribbon curves are rendered by the CPU backend only (--backend cpu or auto)");
   s.scene.upload(flat);
   // s.flat is the scene of the structures' last update until this one succeeds.
   s.acceleration.update(s.context.get(), s.context.stream(), &s.flat, flat, s.scene.view());
