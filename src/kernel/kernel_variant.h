@@ -28,8 +28,6 @@ CANDELA_FN constexpr bool isLeanKernelModel(MaterialType type) {
 CANDELA_FN constexpr bool kernelHasModel(MaterialType type) { return !kLeanKernel || isLeanKernelModel(type); }
 
 // Whether the lean kernel renders `m` as the full kernel does: its model is there, and it has no thin film.
-CANDELA_FN bool leanKernelRenders(const Material& m) {
-  return isLeanKernelModel(m.type) && !(m.iridescence > 0.0f);
-}
+CANDELA_FN bool leanKernelRenders(const Material& m) { return isLeanKernelModel(m.type) && !(m.iridescence > 0.0f); }
 
 }  // namespace candela

@@ -81,11 +81,11 @@ Pipeline::Pipeline(OptixDeviceContext context, ProgramModules& modules, const st
   descriptions[curveRadianceHit].hitgroup.moduleCH = rays;
   descriptions[curveRadianceHit].hitgroup.entryFunctionNameCH = "__closesthit__curve";
   descriptions[curveRadianceHit].hitgroup.moduleAH = rays;
-  descriptions[curveRadianceHit].hitgroup.entryFunctionNameAH = "__anyhit__curveOutside";
+  descriptions[curveRadianceHit].hitgroup.entryFunctionNameAH = "__anyhit__curveRadiance";
   descriptions[curveShadowHit].kind = OPTIX_PROGRAM_GROUP_KIND_HITGROUP;
   descriptions[curveShadowHit].hitgroup.moduleIS = curves;
   descriptions[curveShadowHit].hitgroup.moduleAH = rays;
-  descriptions[curveShadowHit].hitgroup.entryFunctionNameAH = "__anyhit__curveOutside";
+  descriptions[curveShadowHit].hitgroup.entryFunctionNameAH = "__anyhit__curveShadow";
   groups_.assign(descriptions.size(), nullptr);
   OptixProgramGroupOptions groupOptions{};
   checkWithLog("creating the program groups", [&](char* log, size_t* logSize) {

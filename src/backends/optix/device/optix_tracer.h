@@ -11,12 +11,16 @@ class OptixTracer {
  public:
   // `cutouts`: the scene has cut-outs (SceneView::hasCutouts). Then rays cull back faces, which only the
   // triangles of materials that cull them allow (acceleration.cpp). `curves`: the scene has curves, whose any-hit
-  // program passes their inner walls. With neither, rays skip any-hit programs.
+  // programs pass their inner walls; its shadow rays then go without OPTIX_RAY_FLAG_TERMINATE_ON_FIRST_HIT, under
+  // which OptiX reports curve hits imprecisely (NVIDIA says so), and the curves' any-hit program ends them instead.
+  // With neither, rays skip any-hit programs.
   __device__ OptixTracer(OptixTraversableHandle traversable, bool cutouts, bool curves)
       : traversable_(traversable),
         cutoutFlags_(cutouts  ? OPTIX_RAY_FLAG_CULL_BACK_FACING_TRIANGLES
                      : curves ? OPTIX_RAY_FLAG_NONE
-                              : OPTIX_RAY_FLAG_DISABLE_ANYHIT) {}
+                              : OPTIX_RAY_FLAG_DISABLE_ANYHIT),
+        shadowFlags_(OPTIX_RAY_FLAG_DISABLE_CLOSESTHIT | cutoutFlags_ |
+                     (curves ? OPTIX_RAY_FLAG_NONE : OPTIX_RAY_FLAG_TERMINATE_ON_FIRST_HIT)) {}
 
   // Closest hit: payload register 0 carries the random bits to the any-hit program (kernel/pass_through.h); then
   // the radiance closest-hit program writes t, barycentrics and ids into the five registers. The radiance miss
@@ -35,14 +39,13 @@ class OptixTracer {
     return true;
   }
 
-  // Any hit that does not pass through: traversal stops at the first one and runs no closest-hit program; only
-  // the shadow miss program clears register 1. Register 0 carries the random bits, as for intersect.
+  // Any hit that does not pass through: traversal stops at the first one (but see the constructor) and runs no
+  // closest-hit program; only the shadow miss program clears register 1. Register 0 carries the random bits, as
+  // for intersect.
   __device__ bool occluded(const Ray& ray, uint32_t randomBits) const {
     uint32_t occluded = 1;
     optixTrace(traversable_, toFloat3(ray.origin), toFloat3(ray.direction), ray.tMin, ray.tMax, 0.0f,
-               OptixVisibilityMask(0xFF),
-               OPTIX_RAY_FLAG_TERMINATE_ON_FIRST_HIT | OPTIX_RAY_FLAG_DISABLE_CLOSESTHIT | cutoutFlags_, kShadowRay,
-               kRayTypeCount, kShadowRay, randomBits, occluded);
+               OptixVisibilityMask(0xFF), shadowFlags_, kShadowRay, kRayTypeCount, kShadowRay, randomBits, occluded);
     return occluded != 0;
   }
 
@@ -51,6 +54,7 @@ class OptixTracer {
 
   OptixTraversableHandle traversable_;
   unsigned int cutoutFlags_;
+  unsigned int shadowFlags_;
 };
 
 // An OptixTracer that also writes every ray it traces into a RayRecording, for the raw-trace mode.

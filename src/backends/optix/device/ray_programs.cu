@@ -54,17 +54,27 @@ extern "C" __global__ void __anyhit__passThrough() {
     optixIgnoreIntersection();
 }
 
-// Any-hit for both ray types on curves: drops a hit on a tube's inner wall, so that light a hair fibre transmits
-// (its BSDF accounts for both walls) and shadow rays leave it, as the CPU backend's Embree filter does.
-extern "C" __global__ void __anyhit__curveOutside() {
+// Any-hit on curves: drops a hit on a tube's inner wall, so that light a hair fibre transmits (its BSDF accounts for
+// both walls) and shadow rays leave it, as the CPU backend's Embree filter does. Returns whether it kept the hit.
+__device__ bool keepCurveHit() {
   Hit hit;
   hit.t = optixGetRayTmax();
   hit.b1 = optixGetCurveParameter();
   hit.instanceId = optixGetInstanceId();
   hit.primitiveId = optixGetPrimitiveIndex();
   const float3 origin = optixGetObjectRayOrigin(), direction = optixGetObjectRayDirection();
-  if (meetsTubeFromInside(params.scene, hit, {origin.x, origin.y, origin.z}, {direction.x, direction.y, direction.z}))
-    optixIgnoreIntersection();
+  if (!meetsTubeFromInside(params.scene, hit, {origin.x, origin.y, origin.z}, {direction.x, direction.y, direction.z}))
+    return true;
+  optixIgnoreIntersection();
+  return false;
+}
+
+extern "C" __global__ void __anyhit__curveRadiance() { keepCurveHit(); }
+
+// Shadow rays of a scene with curves traverse without OPTIX_RAY_FLAG_TERMINATE_ON_FIRST_HIT, under which OptiX finds
+// curve hits with less precision than the inner-wall test needs (optix_tracer.h): a kept hit ends them here.
+extern "C" __global__ void __anyhit__curveShadow() {
+  if (keepCurveHit()) optixTerminateRay();
 }
 
 extern "C" __global__ void __miss__shadow() { optixSetPayload_1(0); }
