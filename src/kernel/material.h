@@ -63,81 +63,94 @@ enum class AlphaMode : uint32_t { Opaque = 0, Mask, Blend };
 
 constexpr int32_t kNoTexture = -1;
 
+// The two materials of a mix (Material::mixedMaterials).
+using MixedMaterials = uint32_t[2];
+
+// Material's members, declared once: the struct below and the checks that scene validation (scene/scene.cpp) and the
+// scene cache's (scene/cache/cached_scene_validation.cpp) make of them are generated from this list, so that a
+// model's new parameter is one line here. The order is the struct's layout, which device buffers and the scene
+// cache store (a change here changes the cache's layout: bump kCacheFormatVersion).
+//
+// X(Type, name, default, check), with `check`
+//   Finite        a number or colour that must be finite
+//   NonNegative   a colour that must be finite and at least 0 in every channel
+//   TextureIndex  kNoTexture or the index of one of the scene's textures
+//   ByHand        checked where it is used: the type, flags, the alpha mode and the mix's own members
+#define CANDELA_MATERIAL_MEMBERS(X)                                                                               \
+  X(MaterialType, type, MaterialType::Diffuse, ByHand)                                                            \
+  X(Vec3, baseColor, (Vec3{0.8f, 0.8f, 0.8f}), Finite)                                                            \
+  /* emitted radiance, W/(m^2 sr), already scaled by any strength factor */                                       \
+  X(Vec3, emission, (Vec3{0.0f, 0.0f, 0.0f}), Finite)                                                             \
+  /* Blinn-Phong and mirror */                                                                                    \
+  X(Vec3, specularColor, (Vec3{0.04f, 0.04f, 0.04f}), Finite)                                                     \
+  X(float, shininess, 32.0f, Finite)                                                                              \
+  /* metallic-roughness and Disney */                                                                             \
+  X(float, metallic, 0.0f, Finite)                                                                                \
+  X(float, roughness, 0.5f, Finite)                                                                               \
+  X(float, anisotropic, 0.0f, Finite)                                                                             \
+  X(float, specular, 0.5f, Finite)                                                                                \
+  X(float, specularTint, 0.0f, Finite)                                                                            \
+  X(float, subsurface, 0.0f, Finite)                                                                              \
+  X(float, sheen, 0.0f, Finite)                                                                                   \
+  X(float, sheenTint, 0.5f, Finite)                                                                               \
+  X(float, clearcoat, 0.0f, Finite)                                                                               \
+  X(float, clearcoatGloss, 1.0f, Finite)                                                                          \
+  X(float, specTrans, 0.0f, Finite)                                                                               \
+  X(float, ior, 1.5f, Finite)                                                                                     \
+  /* KHR_materials_iridescence: a thin dielectric film over the specular lobe (kernel/bsdf/thin_film.h), of       \
+     strength `iridescence` (0: none), index iridescenceIor and a thickness in nanometres: iridescenceThickness   \
+     without a thickness texture, else mix(iridescenceThicknessMinimum, iridescenceThickness, texel's G) */       \
+  X(float, iridescence, 0.0f, Finite)                                                                             \
+  X(float, iridescenceIor, 1.3f, Finite)                                                                          \
+  X(float, iridescenceThickness, 400.0f, Finite)                                                                  \
+  X(float, iridescenceThicknessMinimum, 100.0f, Finite)                                                           \
+  /* inside a transmissive material: the absorption coefficient per unit of world length, per channel, by         \
+     which light decays between entering and leaving a closed object (Beer-Lambert;                               \
+     kernel/volume_absorption.h); zero: none, as for a thin-walled surface */                                     \
+  X(Vec3, absorption, (Vec3{0.0f, 0.0f, 0.0f}), NonNegative)                                                      \
+  /* diffuse transmission: the Lambertian transmittance to the far side (baseColor is the reflectance); zero,     \
+     a diffuse reflector */                                                                                       \
+  X(Vec3, transmittance, (Vec3{0.0f, 0.0f, 0.0f}), NonNegative)                                                   \
+  /* hair (kernel/bsdf/hair.h), with `ior` the fibre's index and `roughness` its longitudinal roughness beta_m:   \
+     the absorption inside the fibre per unit of its radius (pbrt-v4's sigma_a; by default pbrt's brown hair,     \
+     eumelanin 1.3), the azimuthal roughness beta_n and the tilt of the cuticle's scales in degrees (alpha) */    \
+  X(Vec3, fibreAbsorption, (Vec3{0.5447f, 0.9061f, 1.781f}), NonNegative)                                         \
+  X(float, azimuthalRoughness, 0.3f, Finite)                                                                      \
+  X(float, scaleTilt, 2.0f, Finite)                                                                               \
+  /* pbrt's `interface` material: the surface only bounds participating media (the instances'                     \
+     MediumInterface) and rays cross it unchanged. Its coverage is an alpha mask of opacity 0, so that the        \
+     backends ask passesThrough about it: where a scene has no media it is a cut-out that lets every ray          \
+     through; in a scene with media the integrator meets it and crosses it into the medium on the far side        \
+     (kernel/pass_through.h) */                                                                                   \
+  X(uint32_t, interfaceOnly, 0u, ByHand)                                                                          \
+  /* coverage */                                                                                                  \
+  X(AlphaMode, alphaMode, AlphaMode::Opaque, ByHand)                                                              \
+  X(float, opacity, 1.0f, Finite)                                                                                 \
+  X(float, alphaCutoff, 0.5f, Finite)                                                                             \
+  X(uint32_t, doubleSided, 1u, ByHand)                                                                            \
+  /* indices into the scene's textures, kNoTexture when absent */                                                 \
+  X(int32_t, baseColorTexture, kNoTexture, TextureIndex)         /* sRGB; alpha channel multiplies opacity */     \
+  X(int32_t, metallicRoughnessTexture, kNoTexture, TextureIndex) /* glTF packing: G = roughness, B = metallic */  \
+  X(int32_t, roughnessTexture, kNoTexture, TextureIndex)         /* R */                                          \
+  X(int32_t, metallicTexture, kNoTexture, TextureIndex)          /* R */                                          \
+  X(int32_t, emissionTexture, kNoTexture, TextureIndex)          /* sRGB, multiplies emission */                  \
+  X(int32_t, normalTexture, kNoTexture, TextureIndex)            /* tangent space */                              \
+  X(int32_t, opacityTexture, kNoTexture, TextureIndex)           /* R */                                          \
+  X(int32_t, iridescenceTexture, kNoTexture, TextureIndex)       /* R, multiplies iridescence */                  \
+  /* G, between the minimum and maximum thickness */                                                              \
+  X(int32_t, iridescenceThicknessTexture, kNoTexture, TextureIndex)                                               \
+  /* mix: a shading point scatters as mixedMaterials[1] with probability mixAmount (times the R channel of        \
+     mixAmountTexture), else as mixedMaterials[0], pbrt-v4's convention. Emission and coverage (alpha,            \
+     culling) are the mix's own, as in pbrt, where both belong to the shape; the mixed materials' are not used */ \
+  X(MixedMaterials, mixedMaterials, {}, ByHand)                                                                   \
+  X(float, mixAmount, 0.5f, ByHand)                                                                               \
+  X(int32_t, mixAmountTexture, kNoTexture, TextureIndex) /* R */
+
 // Flat parameters that a device buffer can hold. Not every model reads every field.
 struct Material {
-  MaterialType type = MaterialType::Diffuse;
-  Vec3 baseColor{0.8f, 0.8f, 0.8f};
-  Vec3 emission{0.0f, 0.0f, 0.0f};  // emitted radiance, W/(m^2 sr), already scaled by any strength factor
-
-  // Blinn-Phong and mirror.
-  Vec3 specularColor{0.04f, 0.04f, 0.04f};
-  float shininess = 32.0f;
-
-  // Metallic-roughness and Disney.
-  float metallic = 0.0f;
-  float roughness = 0.5f;
-  float anisotropic = 0.0f;
-  float specular = 0.5f;
-  float specularTint = 0.0f;
-  float subsurface = 0.0f;
-  float sheen = 0.0f;
-  float sheenTint = 0.5f;
-  float clearcoat = 0.0f;
-  float clearcoatGloss = 1.0f;
-  float specTrans = 0.0f;
-  float ior = 1.5f;
-  // KHR_materials_iridescence: a thin dielectric film over the specular lobe (kernel/bsdf/thin_film.h), of
-  // strength `iridescence` (0: none), index iridescenceIor and a thickness in nanometres: iridescenceThickness
-  // without a thickness texture, else mix(iridescenceThicknessMinimum, iridescenceThickness, texel's G).
-  float iridescence = 0.0f;
-  float iridescenceIor = 1.3f;
-  float iridescenceThickness = 400.0f;
-  float iridescenceThicknessMinimum = 100.0f;
-  // Inside a transmissive material: the absorption coefficient per unit of world length, per channel, by which
-  // light decays between entering and leaving a closed object (Beer-Lambert; kernel/volume_absorption.h). Zero:
-  // none, as for a thin-walled surface.
-  Vec3 absorption{0.0f, 0.0f, 0.0f};
-
-  // Diffuse transmission: the Lambertian transmittance to the far side (baseColor is the reflectance); zero, a
-  // diffuse reflector.
-  Vec3 transmittance{0.0f, 0.0f, 0.0f};
-
-  // Hair (kernel/bsdf/hair.h), with `ior` the fibre's index and `roughness` its longitudinal roughness beta_m:
-  // the absorption inside the fibre per unit of its radius (pbrt-v4's sigma_a; by default pbrt's brown hair,
-  // eumelanin 1.3), the azimuthal roughness beta_n and the tilt of the cuticle's scales in degrees (alpha).
-  Vec3 fibreAbsorption{0.5447f, 0.9061f, 1.781f};
-  float azimuthalRoughness = 0.3f;
-  float scaleTilt = 2.0f;
-
-  // pbrt's `interface` material: the surface only bounds participating media (the instances' MediumInterface) and
-  // rays cross it unchanged. Its coverage is an alpha mask of opacity 0, so that the backends ask passesThrough
-  // about it: where a scene has no media it is a cut-out that lets every ray through; in a scene with media the
-  // integrator meets it and crosses it into the medium on the far side (kernel/pass_through.h).
-  uint32_t interfaceOnly = 0;
-
-  // Coverage.
-  AlphaMode alphaMode = AlphaMode::Opaque;
-  float opacity = 1.0f;
-  float alphaCutoff = 0.5f;
-  uint32_t doubleSided = 1;
-
-  // Indices into the scene's textures, kNoTexture when absent.
-  int32_t baseColorTexture = kNoTexture;             // sRGB; alpha channel multiplies opacity
-  int32_t metallicRoughnessTexture = kNoTexture;     // glTF packing: G = roughness, B = metallic
-  int32_t roughnessTexture = kNoTexture;             // R
-  int32_t metallicTexture = kNoTexture;              // R
-  int32_t emissionTexture = kNoTexture;              // sRGB, multiplies emission
-  int32_t normalTexture = kNoTexture;                // tangent space
-  int32_t opacityTexture = kNoTexture;               // R
-  int32_t iridescenceTexture = kNoTexture;           // R, multiplies iridescence
-  int32_t iridescenceThicknessTexture = kNoTexture;  // G, between the minimum and maximum thickness
-
-  // Mix: a shading point scatters as mixedMaterials[1] with probability mixAmount (times the R channel of
-  // mixAmountTexture), else as mixedMaterials[0], pbrt-v4's convention. Emission and coverage (alpha, culling)
-  // are the mix's own, as in pbrt, where both belong to the shape; the mixed materials' are not used.
-  uint32_t mixedMaterials[2] = {0, 0};
-  float mixAmount = 0.5f;
-  int32_t mixAmountTexture = kNoTexture;  // R
+#define CANDELA_MATERIAL_MEMBER(Type, name, value, check) Type name = value;
+  CANDELA_MATERIAL_MEMBERS(CANDELA_MATERIAL_MEMBER)
+#undef CANDELA_MATERIAL_MEMBER
 };
 
 }  // namespace candela

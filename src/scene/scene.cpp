@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "scene/material_checks.h"
 #include "scene/medium_grids.h"
 
 namespace candela {
@@ -117,18 +118,7 @@ void validateScene(const Scene& scene) {
   if (std::string problem = mediumGridValuesProblem(scene.mediumGridValues); !problem.empty()) fail(problem);
   bool anyMix = false;
   for (const Material& m : scene.materials) {
-    if (!finite(m.baseColor) || !finite(m.emission)) fail("a material has non-finite parameters");
-    if (!finite(m.absorption) || m.absorption.x < 0.0f || m.absorption.y < 0.0f || m.absorption.z < 0.0f)
-      fail("a material has an invalid absorption");
-    if (!finite(m.transmittance) || m.transmittance.x < 0.0f || m.transmittance.y < 0.0f || m.transmittance.z < 0.0f)
-      fail("a material has an invalid transmittance");
-    if (!finite(m.fibreAbsorption) || m.fibreAbsorption.x < 0.0f || m.fibreAbsorption.y < 0.0f ||
-        m.fibreAbsorption.z < 0.0f)
-      fail("a material has an invalid fibre absorption");
-    for (int32_t t :
-         {m.baseColorTexture, m.metallicRoughnessTexture, m.roughnessTexture, m.metallicTexture, m.emissionTexture,
-          m.normalTexture, m.opacityTexture, m.mixAmountTexture, m.iridescenceTexture, m.iridescenceThicknessTexture})
-      if (t != kNoTexture && (t < 0 || size_t(t) >= scene.textures.size())) fail("a material uses a missing texture");
+    if (std::string problem = materialMemberProblem(m, scene.textures.size()); !problem.empty()) fail(problem);
     if (m.type != MaterialType::Mix) continue;
     anyMix = true;
     if (m.mixedMaterials[0] >= scene.materials.size() || m.mixedMaterials[1] >= scene.materials.size())

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "kernel/scene_arrays.h"
+#include "scene/material_checks.h"
 
 namespace candela {
 
@@ -74,31 +75,7 @@ void checkMaterials(const Scene& scene) {
     if (uint32_t(m.alphaMode) > uint32_t(AlphaMode::Blend)) fail("a material has an unknown alpha mode");
     if (m.doubleSided > 1) fail("a material's double-sided flag is neither 0 nor 1");
     if (m.interfaceOnly > 1) fail("a material's interface flag is neither 0 nor 1");
-    if (!finite(m.baseColor) || !finite(m.emission) || !finite(m.specularColor) || !finite(m.transmittance) ||
-        !finite(m.fibreAbsorption))
-      fail("a material has non-finite colours");
-    for (float x : {m.shininess,
-                    m.metallic,
-                    m.roughness,
-                    m.anisotropic,
-                    m.specular,
-                    m.specularTint,
-                    m.subsurface,
-                    m.sheen,
-                    m.sheenTint,
-                    m.clearcoat,
-                    m.clearcoatGloss,
-                    m.specTrans,
-                    m.ior,
-                    m.opacity,
-                    m.alphaCutoff,
-                    m.iridescence,
-                    m.iridescenceIor,
-                    m.iridescenceThickness,
-                    m.iridescenceThicknessMinimum,
-                    m.azimuthalRoughness,
-                    m.scaleTilt})
-      if (!finite(x)) fail("a material has non-finite parameters");
+    if (std::string problem = materialMemberProblem(m, scene.textures.size()); !problem.empty()) fail(problem);
   }
   if (!scene.materialNames.empty() && scene.materialNames.size() != scene.materials.size())
     fail(std::to_string(scene.materialNames.size()) + " material names for " + std::to_string(scene.materials.size()) +
