@@ -14,7 +14,7 @@ const char* NonNegative(Vec3 v, size_t) {
 }
 const char* TextureIndex(int32_t texture, size_t textureCount) {
   return texture == kNoTexture || (texture >= 0 && size_t(texture) < textureCount) ? nullptr
-                                                                                    : "names a missing texture";
+                                                                                   : "names a missing texture";
 }
 template <class T>
 const char* ByHand(const T&, size_t) {

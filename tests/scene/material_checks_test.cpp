@@ -19,9 +19,12 @@ bool spoil(float& member, const char* check) {
   return true;
 }
 bool spoil(Vec3& member, const char* check) {
-  if (std::string(check) == "Finite") member.y = std::numeric_limits<float>::infinity();
-  else if (std::string(check) == "NonNegative") member.z = -0.25f;
-  else return false;
+  if (std::string(check) == "Finite")
+    member.y = std::numeric_limits<float>::infinity();
+  else if (std::string(check) == "NonNegative")
+    member.z = -0.25f;
+  else
+    return false;
   return true;
 }
 bool spoil(int32_t& member, const char* check) {
@@ -38,15 +41,15 @@ TEST(MaterialChecks, ADefaultMaterialPasses) { EXPECT_EQ(materialMemberProblem(M
 
 TEST(MaterialChecks, EveryCheckedMemberIsRefusedByName) {
   int checked = 0, expected = 0;
-#define CANDELA_SPOIL_MEMBER(Type, name, value, check)                                                  \
-  {                                                                                                      \
-    Material m;                                                                                          \
-    if (std::string(#check) != "ByHand") ++expected;                                                    \
-    if (spoil(m.name, #check)) {                                                                         \
-      ++checked;                                                                                         \
-      const std::string problem = materialMemberProblem(m, kTextures);                                   \
+#define CANDELA_SPOIL_MEMBER(Type, name, value, check)                                                         \
+  {                                                                                                            \
+    Material m;                                                                                                \
+    if (std::string(#check) != "ByHand") ++expected;                                                           \
+    if (spoil(m.name, #check)) {                                                                               \
+      ++checked;                                                                                               \
+      const std::string problem = materialMemberProblem(m, kTextures);                                         \
       EXPECT_EQ(problem.rfind(std::string("a material's ") + #name + " ", 0), 0u) << #name << ": " << problem; \
-    }                                                                                                    \
+    }                                                                                                          \
   }
   CANDELA_MATERIAL_MEMBERS(CANDELA_SPOIL_MEMBER)
 #undef CANDELA_SPOIL_MEMBER

@@ -76,21 +76,37 @@ Vec3 blackbodyRgb(float kelvin) {
   return clampNegative(xyzToLinearSrgb(xyz / xyz.y));
 }
 
-Vec3 peakNormalisedBlackbodyRgb(double kelvin) {
-  if (!(kelvin > 0.0) || !std::isfinite(kelvin)) return {0, 0, 0};
-  constexpr double c2 = 1.4387769e7;            // second radiation constant in nm K
-  constexpr double wien = 2.8977721e6;          // Wien's displacement constant in nm K
-  const double peak = wien / kelvin;            // the peak wavelength
-  const double atPeak = std::expm1(c2 / wien);  // Planck's denominator there, less the wavelength's power
-  Vec3 xyz{0, 0, 0};
+Vec3 peakNormalisedBlackbodyRgb(double kelvin) { return peakNormalisedBlackbodyRgbs({kelvin})[0]; }
+
+std::vector<Vec3> peakNormalisedBlackbodyRgbs(const std::vector<double>& kelvins) {
+  std::vector<double> wavelengths;
+  std::vector<Vec3> matches;
   double ySum = 0.0;
   for (double lambda = kFirstWavelength; lambda <= kLastWavelength; lambda += 1.0) {
-    const double ratio = std::pow(peak / lambda, 5.0) * atPeak / std::expm1(c2 / (lambda * kelvin));
-    const Vec3 match = cieXyz(lambda);
-    if (std::isfinite(ratio)) xyz += match * float(ratio);
-    ySum += match.y;
+    wavelengths.push_back(lambda);
+    matches.push_back(cieXyz(lambda));
+    ySum += matches.back().y;
   }
-  return clampNegative(xyzToLinearSrgb(xyz / float(ySum)));
+  constexpr double c2 = 1.4387769e7;            // second radiation constant in nm K
+  constexpr double wien = 2.8977721e6;          // Wien's displacement constant in nm K
+  const double atPeak = std::expm1(c2 / wien);  // Planck's denominator there, less the wavelength's power
+  std::vector<Vec3> colours;
+  colours.reserve(kelvins.size());
+  for (double kelvin : kelvins) {
+    if (!(kelvin > 0.0) || !std::isfinite(kelvin)) {
+      colours.push_back({0, 0, 0});
+      continue;
+    }
+    const double peak = wien / kelvin;  // the peak wavelength
+    Vec3 xyz{0, 0, 0};
+    for (size_t i = 0; i < wavelengths.size(); ++i) {
+      const double r = peak / wavelengths[i];
+      const double ratio = r * r * r * r * r * atPeak / std::expm1(c2 / (wavelengths[i] * kelvin));
+      if (std::isfinite(ratio)) xyz += matches[i] * float(ratio);
+    }
+    colours.push_back(clampNegative(xyzToLinearSrgb(xyz / float(ySum))));
+  }
+  return colours;
 }
 
 Vec3 sampledSpectrumRgb(const std::vector<double>& pairs) {

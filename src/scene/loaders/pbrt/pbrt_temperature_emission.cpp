@@ -19,9 +19,15 @@ TemperatureToKelvin readTemperatureToKelvin(const PbrtParameters& params) {
   return toKelvin;
 }
 
-Vec3 blackbodyTableEntry(uint32_t i) {
-  return peakNormalisedBlackbodyRgb(double(kBlackbodyCutoffKelvin) * std::exp2(double(i) / kBlackbodyStepsPerOctave));
+namespace {
+
+double blackbodyTableKelvin(uint32_t i) {
+  return double(kBlackbodyCutoffKelvin) * std::exp2(double(i) / kBlackbodyStepsPerOctave);
 }
+
+}  // namespace
+
+Vec3 blackbodyTableEntry(uint32_t i) { return peakNormalisedBlackbodyRgb(blackbodyTableKelvin(i)); }
 
 bool emitFromTemperature(const PbrtParameters& params, const std::string& name, uint32_t offset,
                          const TemperatureToKelvin& toKelvin, MediumGrid& grid, Scene& scene) {
@@ -42,10 +48,9 @@ bool emitFromTemperature(const PbrtParameters& params, const std::string& name, 
     }
   checkGridValuesRoom(params, name, values.size() + 3 * uint64_t(kBlackbodyTableSize));
   grid.blackbody = uint32_t(values.size());
-  for (uint32_t i = 0; i < kBlackbodyTableSize; ++i) {
-    const Vec3 rgb = blackbodyTableEntry(i);
-    values.insert(values.end(), {rgb.x, rgb.y, rgb.z});
-  }
+  std::vector<double> kelvins(kBlackbodyTableSize);
+  for (uint32_t i = 0; i < kBlackbodyTableSize; ++i) kelvins[i] = blackbodyTableKelvin(i);
+  for (const Vec3& rgb : peakNormalisedBlackbodyRgbs(kelvins)) values.insert(values.end(), {rgb.x, rgb.y, rgb.z});
   return true;
 }
 
