@@ -92,8 +92,9 @@ async function canvasAtSamples(args, stream, samples, orMore = false) {
       });
     }, { wanted: samples, orMore });
     await page.goto(withQuery(server.url, 'stream', stream));
+    // Rendering the samples is the wait: a sanitizer build on a loaded machine takes more than 20 s for 48.
     captured = await until(`a frame of ${samples} samples`, () => page.evaluate(() =>
-      Promise.race([window.captured, new Promise((r) => setTimeout(() => r(null), 200))])));
+      Promise.race([window.captured, new Promise((r) => setTimeout(() => r(null), 200))])), 60000);
   });
   return captured;
 }
