@@ -15,7 +15,7 @@ using Kinds = std::vector<PipelineKind>;
 using Modules = std::vector<ProgramModule>;
 
 // What `render` and `bench` compile before their first frame: the modules of the pipelines that frame needs.
-Modules firstFrameModules(const ProgramUse& use) { return modulesOf(pipelinesNeeded(use), use.lean); }
+Modules firstFrameModules(const ProgramUse& use, bool lean = true) { return modulesOf(pipelinesNeeded(use), lean); }
 
 TEST(ProgramUse, AutoScheduleNeedsTheProbeAndItsLikelyChoice) {
   EXPECT_EQ(pipelinesNeeded({}), (Kinds{PipelineKind::Megakernel, PipelineKind::Wavefront}));
@@ -136,12 +136,11 @@ TEST(ProgramUse, ASceneNeedsTheFullKernelOnlyForWhatTheLeanOneLeavesOut) {
 }
 
 TEST(ProgramUse, TheFullKernelsPathTracersAreModulesOfTheirOwn) {
-  ProgramUse full;
-  full.lean = false;
-  EXPECT_EQ(firstFrameModules(full),
+  ProgramUse use;
+  EXPECT_EQ(firstFrameModules(use, false),
             (Modules{ProgramModule::Rays, ProgramModule::Megakernel, ProgramModule::Wavefront}));
-  full.aovs = true;
-  EXPECT_EQ(firstFrameModules(full), (Modules{ProgramModule::Rays, ProgramModule::AovMegakernel}));
+  use.aovs = true;
+  EXPECT_EQ(firstFrameModules(use, false), (Modules{ProgramModule::Rays, ProgramModule::AovMegakernel}));
   for (size_t k = 0; k < kPipelineKinds; ++k)
     for (RaygenProgram program : pipelinePrograms(PipelineKind(k))) {
       const bool pathTracer = PipelineKind(k) == PipelineKind::Megakernel ||

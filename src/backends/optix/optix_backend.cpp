@@ -163,12 +163,8 @@ struct OptixBackend::State {
 
   // What the next frame renders, and so which pipelines it launches (program_use.h).
   ProgramUse use() const {
-    return {schedule.decided() ? schedule.next() : PathSchedule::Auto,
-            aovsEnabled,
-            settings.restir != RestirMode::Off,
-            !flat.media.empty(),
-            schedule.requested() == PathSchedule::Auto,
-            leanKernel};
+    return {schedule.decided() ? schedule.next() : PathSchedule::Auto, aovsEnabled, settings.restir != RestirMode::Off,
+            !flat.media.empty(), schedule.requested() == PathSchedule::Auto};
   }
   std::vector<ProgramModule> neededModules() const { return modulesOf(pipelinesNeeded(use()), leanKernel); }
   std::vector<ProgramModule> awaitedModules() const { return modulesOf(pipelinesAwaited(use()), leanKernel); }

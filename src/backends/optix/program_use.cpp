@@ -106,7 +106,7 @@ std::vector<PipelineKind> pipelinesAwaited(const ProgramUse& use) {
 
 std::vector<PipelineKind> pipelinesLikely(const ProgramUse& use) {
   if (use.restir || use.media) return {};
-  if (use.aovs) return pipelinesNeeded({use.schedule, false, false, false, true, use.lean});
+  if (use.aovs) return pipelinesNeeded({use.schedule, false, false});
   return {PipelineKind::AovMegakernel};
 }
 

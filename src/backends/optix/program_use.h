@@ -80,7 +80,6 @@ struct ProgramUse {
   // the wavefront's place while the wavefront's programs compile, since both draw the same samples
   // (backends/path_schedule.h).
   bool megakernelMayStandIn = true;
-  bool lean = true;  // the scene needs only the lean kernel (leanKernelSuffices)
 };
 
 // The pipelines the next frames launch, whose modules compile at once.
