@@ -1,6 +1,5 @@
 #pragma once
 #include "kernel/bsdf/material_models.h"
-#include "kernel/kernel_variant.h"
 #include "kernel/material.h"
 
 namespace candela {
@@ -14,18 +13,6 @@ struct PathAovs {
   Vec3 normal;         // shading normal, world space, turned towards the arriving path; zero where it escaped
   float depth = 0.0f;  // length of the path from the camera to the vertex; zero where it escaped
 };
-
-// A material's reflectance for the albedo guide: the colour its lobes scale light by at normal incidence,
-// clamped to [0, 1]; for hair, the colour its absorption gives (HairBsdf::reflectanceOfAbsorption). Delta
-// materials never reach it (the AOVs follow them).
-CANDELA_FN Vec3 materialAlbedo(const Material& m) {
-  Vec3 a = kernelHasModel(MaterialType::Hair) && m.type == MaterialType::Hair
-               ? HairBsdf::reflectanceOfAbsorption(m.fibreAbsorption, m.azimuthalRoughness)
-               : m.baseColor;
-  if (m.type == MaterialType::BlinnPhong) a += m.specularColor;
-  if (m.type == MaterialType::DiffuseTransmission) a += m.transmittance;
-  return {clampf(a.x, 0.0f, 1.0f), clampf(a.y, 0.0f, 1.0f), clampf(a.z, 0.0f, 1.0f)};
-}
 
 CANDELA_FN bool isSpecularMaterial(const Material& m) { return isDeltaModel(m.type); }
 

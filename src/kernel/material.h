@@ -36,6 +36,9 @@ namespace candela {
 //                                                   its other side: rays then meet both sides (pass_through.h)
 //   static bool orientedByTangent(const Material&); whether its lobes turn with the surface's tangent, which the
 //                                                   scene then provides (anisotropy)
+//   static constexpr bool kInLeanKernel;           whether the GPU's lean kernel has it (kernel/kernel_variant.h)
+//   static Vec3 guideAlbedo(const Material&);       its reflectance for the denoisers' albedo guide: the colour its
+//                                                   lobes scale light by at normal incidence
 //   static Model fromMaterial(const Material&, float eta, Vec2 uv);  the model of a material with its textures
 //                                                   applied, eta the relative index across the surface seen from
 //                                                   wo, uv the surface's texture coordinates at the point (which

@@ -14,6 +14,7 @@
 #include "kernel/bsdf/material_type_names.h"
 #include "kernel/pass_through.h"
 #include "scene/material_overrides.h"
+#include "support/vector_expectations.h"
 
 namespace candela::test {
 namespace {
@@ -165,6 +166,48 @@ TEST(MaterialModels, MixIsNoModel) {
   EXPECT_EQ(bsdf.eval(wo, wi).x, mix.baseColor.x * kInvPi);
   EXPECT_FALSE(isTransmissive(mix));
   EXPECT_FALSE(isOrientedByTangent(mix));
+}
+
+// Each model gives the albedo guide its own reflectance: the sum of its lobes' colours where it has several, the
+// colour hair's absorption gives; clamped to [0, 1].
+TEST(MaterialModels, EachModelGivesTheAlbedoGuideItsReflectance) {
+  for (uint32_t t = 0; t < kMaterialModelCount; ++t) {
+    Material m = materialOfType(MaterialType(t));
+    m.baseColor = {0.25f, 0.5f, 0.75f};
+    m.specularColor = {0.5f, 0.125f, 0.5f};
+    m.transmittance = {0.125f, 0.25f, 0.0f};
+    const Vec3 albedo = materialAlbedo(m);
+    SCOPED_TRACE(materialTypeName(m.type));
+    switch (m.type) {
+      case MaterialType::BlinnPhong:
+        expectNear(albedo, Vec3{0.75f, 0.625f, 1.0f}, 0.0f);  // 0.75 + 0.5 clamped to 1
+        break;
+      case MaterialType::DiffuseTransmission: expectNear(albedo, Vec3{0.375f, 0.75f, 0.75f}, 0.0f); break;
+      case MaterialType::Hair:
+        expectNear(albedo, HairBsdf::reflectanceOfAbsorption(m.fibreAbsorption, m.azimuthalRoughness), 0.0f);
+        break;
+      default: expectNear(albedo, m.baseColor, 0.0f);
+    }
+  }
+  Material bright = materialOfType(MaterialType::Pbr);
+  bright.baseColor = {2.0f, -1.0f, 0.5f};
+  expectNear(materialAlbedo(bright), {1.0f, 0.0f, 0.5f}, 0.0f);
+}
+
+// The GPU's lean kernel has the models the viewers switch between, diffuse, mirror, glass and a mix; the CPU's
+// kernel, compiled in full, has every model.
+TEST(MaterialModels, TheLeanKernelHasTheViewersModelsAndTheSimpleOnes) {
+  for (uint32_t t = 0; t <= kMaterialModelCount; ++t) {
+    const MaterialType type = MaterialType(t);
+    const bool lean = type != MaterialType::DiffuseTransmission && type != MaterialType::Hair;
+    EXPECT_EQ(isLeanKernelModel(type), lean) << t;
+    EXPECT_TRUE(kernelHasModel(type)) << t;
+  }
+  Material film = materialOfType(MaterialType::Pbr);
+  EXPECT_TRUE(leanKernelRenders(film));
+  film.iridescence = 1.0f;
+  EXPECT_FALSE(leanKernelRenders(film));
+  EXPECT_FALSE(leanKernelRenders(materialOfType(MaterialType::Hair)));
 }
 
 }  // namespace

@@ -4,7 +4,7 @@
 #include <array>
 #include <stdexcept>
 
-#include "kernel/kernel_variant.h"
+#include "kernel/bsdf/material_models.h"
 
 namespace candela::optix {
 

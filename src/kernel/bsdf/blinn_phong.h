@@ -65,6 +65,8 @@ struct BlinnPhongBsdf {
   CANDELA_FN bool hasTransmission() const { return false; }
   CANDELA_FN static bool transmits(const Material&) { return false; }
   CANDELA_FN static bool orientedByTangent(const Material&) { return false; }
+  static constexpr bool kInLeanKernel = true;
+  CANDELA_FN static Vec3 guideAlbedo(const Material& m) { return m.baseColor + m.specularColor; }
   CANDELA_FN static BlinnPhongBsdf fromMaterial(const Material& m, float /*eta*/, Vec2 /*uv*/) {
     return {m.baseColor, m.specularColor, m.shininess};
   }

@@ -18,6 +18,8 @@ struct DiffuseTransmissionBsdf {
   CANDELA_FN bool hasTransmission() const { return maxComponent(transmittance) > 0.0f; }
   CANDELA_FN static bool transmits(const Material& m) { return maxComponent(m.transmittance) > 0.0f; }
   CANDELA_FN static bool orientedByTangent(const Material&) { return false; }
+  static constexpr bool kInLeanKernel = false;
+  CANDELA_FN static Vec3 guideAlbedo(const Material& m) { return m.baseColor + m.transmittance; }
   CANDELA_FN static DiffuseTransmissionBsdf fromMaterial(const Material& m, float /*eta*/, Vec2 /*uv*/) {
     return {m.baseColor, m.transmittance};
   }

@@ -51,6 +51,8 @@ struct DisneyBsdf {
   CANDELA_FN bool hasTransmission() const { return glassWeight > 0.0f; }
   CANDELA_FN static bool transmits(const Material& m) { return m.specTrans > 0.0f; }
   CANDELA_FN static bool orientedByTangent(const Material& m) { return m.anisotropic > 0.0f; }
+  static constexpr bool kInLeanKernel = true;
+  CANDELA_FN static Vec3 guideAlbedo(const Material& m) { return m.baseColor; }
   CANDELA_FN static DisneyBsdf fromMaterial(const Material& m, float eta, Vec2 /*uv*/) { return DisneyBsdf(m, eta); }
 
   // Lobes: 0 diffuse and sheen, 1 specular, 2 glass, 3 clearcoat.

@@ -56,6 +56,10 @@ struct HairBsdf {
   CANDELA_FN bool hasTransmission() const { return true; }
   CANDELA_FN static bool transmits(const Material&) { return true; }
   CANDELA_FN static bool orientedByTangent(const Material&) { return true; }
+  static constexpr bool kInLeanKernel = false;
+  CANDELA_FN static Vec3 guideAlbedo(const Material& m) {
+    return reflectanceOfAbsorption(m.fibreAbsorption, m.azimuthalRoughness);
+  }
   // h from the surface's v coordinate, as pbrt-v4 takes it from a curve's (-1 + 2v): candela's v runs down the
   // image where pbrt's runs up (loaders flip it), so pbrt's -1 + 2v is 1 - 2v here. eta is the fibre's own, not
   // relative to the side wo lies on.

@@ -13,6 +13,8 @@ struct LambertianBsdf {
   CANDELA_FN bool hasTransmission() const { return false; }
   CANDELA_FN static bool transmits(const Material&) { return false; }
   CANDELA_FN static bool orientedByTangent(const Material&) { return false; }
+  static constexpr bool kInLeanKernel = true;
+  CANDELA_FN static Vec3 guideAlbedo(const Material& m) { return m.baseColor; }
   CANDELA_FN static LambertianBsdf fromMaterial(const Material& m, float /*eta*/, Vec2 /*uv*/) { return {m.baseColor}; }
 
   CANDELA_FN Vec3 eval(Vec3 wo, Vec3 wi) const {

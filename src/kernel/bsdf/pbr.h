@@ -42,6 +42,8 @@ struct PbrBsdf {
   CANDELA_FN bool hasTransmission() const { return false; }
   CANDELA_FN static bool transmits(const Material&) { return false; }
   CANDELA_FN static bool orientedByTangent(const Material&) { return false; }
+  static constexpr bool kInLeanKernel = true;
+  CANDELA_FN static Vec3 guideAlbedo(const Material& m) { return m.baseColor; }
   CANDELA_FN static PbrBsdf fromMaterial(const Material& m, float /*eta*/, Vec2 /*uv*/) {
     return {m.baseColor, m.metallic, m.roughness, m.specular, m.iridescence, m.iridescenceIor, m.iridescenceThickness};
   }

@@ -17,6 +17,8 @@ struct MirrorBsdf {
   CANDELA_FN bool hasTransmission() const { return false; }
   CANDELA_FN static bool transmits(const Material&) { return false; }
   CANDELA_FN static bool orientedByTangent(const Material&) { return false; }
+  static constexpr bool kInLeanKernel = true;
+  CANDELA_FN static Vec3 guideAlbedo(const Material& m) { return m.baseColor; }
   CANDELA_FN static MirrorBsdf fromMaterial(const Material& m, float /*eta*/, Vec2 /*uv*/) { return {m.specularColor}; }
 
   CANDELA_FN Vec3 eval(Vec3, Vec3) const { return {0, 0, 0}; }
@@ -45,6 +47,8 @@ struct SmoothDielectricBsdf {
   CANDELA_FN bool hasTransmission() const { return true; }
   CANDELA_FN static bool transmits(const Material&) { return true; }
   CANDELA_FN static bool orientedByTangent(const Material&) { return false; }
+  static constexpr bool kInLeanKernel = true;
+  CANDELA_FN static Vec3 guideAlbedo(const Material& m) { return m.baseColor; }
   // Tinted by the square root of the base colour at each crossing, so that a closed object transmits the base
   // colour.
   CANDELA_FN static SmoothDielectricBsdf fromMaterial(const Material& m, float eta, Vec2 /*uv*/) {
