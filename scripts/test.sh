@@ -8,10 +8,12 @@
 #                       parts need (device threads, stop signals, candela serve's hub and server), and those tests
 #   check-format.sh     every C++ file as .clang-format says (scripts/format.sh applies it)
 # Both test suites replay every fuzz seed and regression input (tests/fuzz). Stops at the first stage that fails.
+# Each stage, and each step within it, ends with a line of its wall and CPU time (scripts/run-step.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-./scripts/install-dependencies.sh
-./scripts/test-release.sh
-./scripts/test-sanitized.sh
-./scripts/test-thread-sanitized.sh
-./scripts/check-format.sh
+source scripts/run-step.sh
+step ./scripts/install-dependencies.sh
+step ./scripts/test-release.sh
+step ./scripts/test-sanitized.sh
+step ./scripts/test-thread-sanitized.sh
+step ./scripts/check-format.sh
