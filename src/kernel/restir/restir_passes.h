@@ -31,8 +31,16 @@ namespace candela {
 // The counts and sizes below are measured choices (docs/performance.md, 'ReSTIR DI'): a light candidate costs its
 // target (a BSDF evaluation) and no walk down the light BVH (the tile's presampled lights have walked it), each
 // spatial neighbour a rebuilt BSDF and two shadow rays.
-// Light-sampling candidates per pixel and sample (plus one BSDF sample).
+// Light-sampling candidates per pixel and sample (plus one BSDF sample): many where the scene has many bounded
+// lights, for the resampling to choose among; few where it has a handful or none (the Cornell box's one light, an
+// environment map), where more candidates only pick other points of the same lights at the same cost each.
 constexpr uint32_t kRestirLightCandidates = 16;
+constexpr uint32_t kRestirFewLightCandidates = 4;
+constexpr uint32_t kRestirFewLights = 8;
+
+CANDELA_FN uint32_t restirLightCandidates(const SceneView& scene) {
+  return boundedLightCount(scene) <= kRestirFewLights ? kRestirFewLightCandidates : kRestirLightCandidates;
+}
 // Spatial reuse: neighbours tried, within this radius in pixels (closer neighbours share more of their lights).
 constexpr uint32_t kRestirSpatialNeighbours = 2;
 constexpr float kRestirSpatialRadius = 8.0f;
@@ -100,7 +108,7 @@ CANDELA_FN bool restirVisible(const SceneView& scene, const Tracer& tracer, cons
   return !tracer.occluded(vertex.shadowRay(light), passThroughBits(scene, random));
 }
 
-// Resamples kRestirLightCandidates light samples and one BSDF sample at `vertex` with the target function, each
+// Resamples restirLightCandidates(scene) light samples and one BSDF sample at `vertex` with the target function, each
 // candidate weighted by the balance heuristic over the two strategies (with the light strategy's count): its
 // resampling weight is then target / (M p_light + p_bsdf), both densities in solid angle (the measure's Jacobian
 // cancels), and a punctual light, which the BSDF cannot sample, has target / (M p_light). The light strategy is
@@ -115,13 +123,14 @@ CANDELA_FN Reservoir initialReservoir(const SceneView& scene, const Tracer& trac
   if (!vertex.usable) return {};
   ReservoirStream stream;
   const LightSampleContext ctx{vertex.position, vertex.bsdf.normal()};
-  const float candidates = float(kRestirLightCandidates);
+  const uint32_t candidateCount = restirLightCandidates(scene);
+  const float candidates = float(candidateCount);
   const float pOthers =
       scene.environmentSelectProbability +
       scene.directionalSelectProbability * float(scene.punctualLightCount - scene.boundedPunctualLightCount);
   const bool anyBounded = scene.boundedSelectProbability > 0.0f;
   const uint32_t start = uint32_t(random.next1D() * float(tilePixels)) % tilePixels;
-  for (uint32_t i = 0; i < kRestirLightCandidates; ++i) {
+  for (uint32_t i = 0; i < candidateCount; ++i) {
     const float uSelect = random.next1D();
     const float uKeep = random.next1D();
     RestirSample sample;
@@ -134,7 +143,7 @@ CANDELA_FN Reservoir initialReservoir(const SceneView& scene, const Tracer& trac
       light = restirLightAt(scene, sample, vertex.position);
       lightPdf = ls.pdf;
     } else {
-      const PresampledLight& presampled = tile.lights[(start + i * tilePixels / kRestirLightCandidates) % tilePixels];
+      const PresampledLight& presampled = tile.lights[(start + i * tilePixels / candidateCount) % tilePixels];
       if (presampled.light == kRestirNoLight) continue;
       sample.light = presampled.light;
       sample.coordinates = {presampled.barycentrics.x, presampled.barycentrics.y, 0.0f};
