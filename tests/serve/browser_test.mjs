@@ -15,11 +15,11 @@ const serverArgs = ['cornell-box', ...serverOptions];
 const viewport = { width: 560, height: 300 };  // the image gets what the 340-pixel panel leaves
 
 async function until(what, predicate, timeoutMs = 20000) {
-  const start = Date.now();
+  const start = performance.now();  // monotonic: a wall clock set forward mid-test ends no wait early
   for (;;) {
     const value = await predicate();
     if (value) return value;
-    if (Date.now() - start > timeoutMs) throw new Error(`timed out waiting for ${what}`);
+    if (performance.now() - start > timeoutMs) throw new Error(`timed out waiting for ${what}`);
     await new Promise((r) => setTimeout(r, 50));
   }
 }
