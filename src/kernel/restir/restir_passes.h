@@ -41,6 +41,7 @@ constexpr uint32_t kRestirFewLights = 8;
 CANDELA_FN uint32_t restirLightCandidates(const SceneView& scene) {
   return boundedLightCount(scene) <= kRestirFewLights ? kRestirFewLightCandidates : kRestirLightCandidates;
 }
+
 // Spatial reuse: neighbours tried, within this radius in pixels (closer neighbours share more of their lights).
 constexpr uint32_t kRestirSpatialNeighbours = 2;
 constexpr float kRestirSpatialRadius = 8.0f;
