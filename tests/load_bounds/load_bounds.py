@@ -122,26 +122,28 @@ def case_spheres(candela, workdir):
     return "shared", "spheres-1.pbrt", "spheres-3600.pbrt"
 
 
-def mix_textures_scene(workdir, name, count, image_size, shared_images, materials, shape_per_material):
+def mix_textures_scene(workdir, name, count, image_size, shared_images, materials, shape_per_material,
+                       value_type="spectrum", material='Material "diffuse" "texture reflectance" "%s"'):
     """A pbrt scene of `count` mix textures of two PNG images of image_size^2 zero pixels, written to workdir/name.
     shared_images: every mix blends the same two image textures, else each its own pair (one of them scaled, so
-    that no two are alike); materials: a material names each mix; shape_per_material: a sphere follows each
-    material, else one sphere ends the scene."""
+    that no two are alike); materials: a material names each mix (`material`, the mix's name in place of %s);
+    shape_per_material: a sphere follows each material, else one sphere ends the scene. value_type: the
+    textures' pbrt type, "spectrum" or "float"."""
     write(os.path.join(workdir, "a.png"), png_bytes(image_size, image_size))
     write(os.path.join(workdir, "b.png"), png_bytes(image_size, image_size))
     lines = [SCENE_HEAD]
     if shared_images:
-        lines.append('Texture "a" "spectrum" "imagemap" "string filename" "a.png"\n'
-                     'Texture "b" "spectrum" "imagemap" "string filename" "b.png"\n')
+        lines.append('Texture "a" "%s" "imagemap" "string filename" "a.png"\n'
+                     'Texture "b" "%s" "imagemap" "string filename" "b.png"\n' % (value_type, value_type))
     for i in range(count):
         a, b = ("a", "b") if shared_images else ("a%d" % i, "b%d" % i)
         if not shared_images:
-            lines.append('Texture "%s" "spectrum" "imagemap" "string filename" "a.png" "float uscale" %d\n'
-                         % (a, i + 1))
-            lines.append('Texture "%s" "spectrum" "imagemap" "string filename" "b.png"\n' % b)
-        lines.append('Texture "m%d" "spectrum" "mix" "texture tex1" "%s" "texture tex2" "%s"\n' % (i, a, b))
+            lines.append('Texture "%s" "%s" "imagemap" "string filename" "a.png" "float uscale" %d\n'
+                         % (a, value_type, i + 1))
+            lines.append('Texture "%s" "%s" "imagemap" "string filename" "b.png"\n' % (b, value_type))
+        lines.append('Texture "m%d" "%s" "mix" "texture tex1" "%s" "texture tex2" "%s"\n' % (i, value_type, a, b))
         if materials:
-            lines.append('Material "diffuse" "texture reflectance" "m%d"\n' % i)
+            lines.append(material % ("m%d" % i) + "\n")
         if shape_per_material:
             lines.append('Shape "sphere"\n')
     if not shape_per_material:
@@ -163,6 +165,19 @@ def case_used_mix_textures(candela, workdir):
     # were baked before the refusal.
     return ("refused", "used-mix.pbrt", ["--max-memory", "4G"],
             r"used-mix\.pbrt:\d+: mix texture 'm\d+' baked at 4096x4096 texels needs about 192 MiB")
+
+
+def case_roughness_mix_textures(candela, workdir):
+    """200 distinct float mixes that materials use as roughness: the mix and the roughness made of it are both
+    charged, and refused, before any is baked."""
+    mix_textures_scene(workdir, "roughness-mix.pbrt", 200, 4096, shared_images=False, materials=True,
+                       shape_per_material=True, value_type="float",
+                       material='Material "conductor" "texture roughness" "%s"')
+    # A budget of about 2 GiB, which seven bakes of 192 MiB with their roughness of 64 MiB would fit, and break the
+    # bound on memory, if each mix were baked when its roughness is made.
+    return ("refused", "roughness-mix.pbrt", ["--max-memory", "4G"],
+            r"roughness-mix\.pbrt:\d+: (mix texture 'm\d+' baked|the roughness of texture 'm\d+') at 4096x4096 "
+            r"texels needs about")
 
 
 def case_shared_mix_textures(candela, workdir):

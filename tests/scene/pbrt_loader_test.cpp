@@ -900,6 +900,28 @@ TEST(PbrtLoader, MixTexturesBeyondTheLoadBudgetAreRefusedNamingTheTexture) {
       << error;
 }
 
+// A roughness made from a mix is charged as the mix is, when a material first names it, and refused in one line
+// naming where, before the mix is baked (a bake of 4096x4096 texels is 192 MiB).
+TEST(PbrtLoader, RoughnessOfAMixBeyondTheLoadBudgetIsRefusedNamingTheTexture) {
+  const std::string text =
+      std::string(kMirroredCamera) +
+      "Texture \"c\" \"float\" \"checkerboard\" \"float tex1\" 1 \"float uscale\" 64 \"float vscale\" 64\n"
+      "Texture \"m\" \"float\" \"mix\" \"texture tex1\" \"c\" \"float tex2\" 0\n"
+      "Material \"conductor\" \"texture roughness\" \"m\"\n" +
+      kTriangle;
+  beginLoadBudget();
+  // Room for the mix's 48 MiB and not for its roughness's 16 MiB more.
+  const uint64_t room = uint64_t(56) << 20;
+  const uint64_t taken = loadMemoryLeft() - room;
+  chargeLoadMemory(taken, "test", "the rest of the scene");
+  const std::string error = loadError(text);
+  releaseLoadMemory(taken);
+  beginLoadBudget();
+  EXPECT_NE(error.find("test.pbrt:6: the roughness of texture 'm' at 2048x2048 texels needs about 16 MiB"),
+            std::string::npos)
+      << error;
+}
+
 TEST(PbrtLoader, RoughnessTexturesBecomeCandelasRoughness) {
   TempFolder folder;
   folder.write("grey.pfm", std::string("Pf\n2 1\n-1.0\n") + std::string("\0\0\0\x3f\0\0\x80\x3f", 8));

@@ -165,7 +165,7 @@ class PbrtReader {
   Scene finish() {
     if (!worldBegun_) chooseWorldMirror();
     assignPendingMaterials();
-    textures_.bakeMixes();
+    textures_.bakeImages();
     Scene& scene = context_.scene;
     PbrtFilm film = readPbrtFilm(film_ ? &*film_ : nullptr, camera_ ? &*camera_ : nullptr, context_);
     scene.renderHints.width = film.width;

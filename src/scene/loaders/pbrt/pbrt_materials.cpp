@@ -104,9 +104,10 @@ Material PbrtMaterials::translate(const std::string& type, const PbrtParameters&
     PbrtTexture t = textures_.value(params, name, {fallbackValue, fallbackValue, fallbackValue});
     if (t.image == kNoTexture) return candelaRoughness(t.factor.x, remap);
     float scale = t.factor.x;
-    m.roughnessTexture =
-        textures_.mappedImage(t.image, "roughness " + std::to_string(scale) + (remap ? " remapped" : ""),
-                              [=](float v) { return candelaRoughness(scale * v, remap); });
+    m.roughnessTexture = textures_.mappedImage(
+        t.image, "roughness " + std::to_string(scale) + (remap ? " remapped" : ""),
+        [=](float v) { return candelaRoughness(scale * v, remap); }, params.file + ":" + std::to_string(params.line),
+        "the roughness of texture '" + *params.getTexture(name) + "'");
     return 1.0f;
   };
   // pbrt's DielectricBxDF of index `eta`: smooth glass, or the Disney model's rough transmission.

@@ -46,6 +46,10 @@ Vec3 PbrtTextures::colourAt(const PbrtTexture& t, float u, float v) const {
   return t.factor * texelAt(image, t.uvScale.x * u + t.uvOffset.x, t.uvScale.y * v + t.uvOffset.y);
 }
 
+Vec3 PbrtTextures::colourAt(const Mix& mix, float u, float v) const {
+  return lerp(colourAt(mix.amount, u, v).x, colourAt(mix.first, u, v), colourAt(mix.second, u, v));
+}
+
 int32_t PbrtTextures::mixedImage(const PbrtTexture& first, const PbrtTexture& second, const PbrtTexture& amount,
                                  const std::string& where, const std::string& name) {
   // A key of every number the image depends on; numbers that are not finite would break its ordering, and such a
@@ -80,31 +84,47 @@ int32_t PbrtTextures::mixedImage(const PbrtTexture& first, const PbrtTexture& se
   out.channels = 3;
   const int32_t index = int32_t(context_.scene.textures.size());
   context_.scene.textures.push_back(std::move(out));
-  unbakedMixes_[index] = {first, second, amount};
+  unbaked_[index] = Mix{first, second, amount};
   if (finite) mixes_[key] = index;
   return index;
 }
 
-void PbrtTextures::bakeMixesThrough(int32_t image) {
-  while (!unbakedMixes_.empty() && unbakedMixes_.begin()->first <= image) {
-    const auto [index, mix] = *unbakedMixes_.begin();
-    unbakedMixes_.erase(unbakedMixes_.begin());
-    Texture& out = context_.scene.textures[size_t(index)];
-    const uint32_t width = out.width, height = out.height;
-    noteLoadProgress(context_.mainFile,
-                     "baking a mix texture of " + std::to_string(width) + "x" + std::to_string(height) + " texels");
-    std::vector<float> texels(size_t(width) * height * 3);
-    for (uint32_t y = 0; y < height; ++y)
-      for (uint32_t x = 0; x < width; ++x) {
-        const float u = (float(x) + 0.5f) / float(width), v = 1.0f - (float(y) + 0.5f) / float(height);
-        const Vec3 c = lerp(colourAt(mix.amount, u, v).x, colourAt(mix.first, u, v), colourAt(mix.second, u, v));
-        float* texel = texels.data() + (size_t(y) * width + x) * 3;
-        texel[0] = c.x;
-        texel[1] = c.y;
-        texel[2] = c.z;
-      }
-    out.floats = std::move(texels);
+void PbrtTextures::bakeThrough(int32_t image) {
+  while (!unbaked_.empty() && unbaked_.begin()->first <= image) {
+    auto node = unbaked_.extract(unbaked_.begin());
+    Texture& out = context_.scene.textures[size_t(node.key())];
+    std::visit([&](const auto& how) { bake(out, how); }, node.mapped());
   }
+}
+
+void PbrtTextures::bake(Texture& out, const Mix& mix) const {
+  const uint32_t width = out.width, height = out.height;
+  noteLoadProgress(context_.mainFile,
+                   "baking a mix texture of " + std::to_string(width) + "x" + std::to_string(height) + " texels");
+  std::vector<float> texels(size_t(width) * height * 3);
+  for (uint32_t y = 0; y < height; ++y)
+    for (uint32_t x = 0; x < width; ++x) {
+      const float u = (float(x) + 0.5f) / float(width), v = 1.0f - (float(y) + 0.5f) / float(height);
+      const Vec3 c = colourAt(mix, u, v);
+      float* texel = texels.data() + (size_t(y) * width + x) * 3;
+      texel[0] = c.x;
+      texel[1] = c.y;
+      texel[2] = c.z;
+    }
+  out.floats = std::move(texels);
+}
+
+void PbrtTextures::bake(Texture& out, const Mapping& mapping) const {
+  const Texture& source = context_.scene.textures[size_t(mapping.source)];
+  const size_t pixels = size_t(source.width) * source.height;
+  std::vector<float> texels(pixels);
+  for (size_t i = 0; i < pixels; ++i) {
+    const size_t at = i * source.channels;
+    float v = source.floats.empty() ? float(source.bytes[at]) / 255.0f : source.floats[at];
+    if (source.floats.empty() && source.srgb) v = srgbToLinear(v);
+    texels[i] = mapping.map(v);
+  }
+  out.floats = std::move(texels);
 }
 
 int32_t PbrtTextures::loadImage(const std::string& path, bool srgb, const std::string& file, size_t line) {
@@ -218,12 +238,15 @@ int32_t PbrtTextures::checkerboardImage(Vec3 first, Vec3 second) {
   return index;
 }
 
-int32_t PbrtTextures::mappedImage(int32_t image, const std::string& key, const std::function<float(float)>& map) {
+int32_t PbrtTextures::mappedImage(int32_t image, const std::string& key, const std::function<float(float)>& map,
+                                  const std::string& where, const std::string& element) {
   auto cacheKey = std::make_pair(image, key);
   if (auto found = mapped_.find(cacheKey); found != mapped_.end()) return found->second;
-  bakeMixesThrough(image);
+  // The source's size and wrap are known before its texels are (a mix not baked yet); its wrap is taken now, as a
+  // later imagemap of the same file may change the shared image's.
   const Texture& source = context_.scene.textures[size_t(image)];
-  chargeLoadMemory(uint64_t(source.width) * source.height * sizeof(float), source.name, "its " + key + " copy");
+  chargeLoadMemory(uint64_t(source.width) * source.height * sizeof(float), where,
+                   element + " at " + std::to_string(source.width) + "x" + std::to_string(source.height) + " texels");
   Texture out;
   out.name = source.name + " (" + key + ")";
   out.width = source.width;
@@ -231,23 +254,16 @@ int32_t PbrtTextures::mappedImage(int32_t image, const std::string& key, const s
   out.channels = 1;
   out.wrapU = source.wrapU;
   out.wrapV = source.wrapV;
-  size_t pixels = size_t(source.width) * source.height;
-  out.floats.resize(pixels);
-  for (size_t i = 0; i < pixels; ++i) {
-    size_t at = i * source.channels;
-    float v = source.floats.empty() ? float(source.bytes[at]) / 255.0f : source.floats[at];
-    if (source.floats.empty() && source.srgb) v = srgbToLinear(v);
-    out.floats[i] = map(v);
-  }
-  int32_t index = int32_t(context_.scene.textures.size());
+  const int32_t index = int32_t(context_.scene.textures.size());
   context_.scene.textures.push_back(std::move(out));
+  unbaked_[index] = Mapping{image, map};
   mapped_[cacheKey] = index;
   return index;
 }
 
 Vec3 PbrtTextures::meanColour(const PbrtTexture& texture) {
   if (texture.image == kNoTexture) return texture.factor;
-  bakeMixesThrough(texture.image);
+  bakeThrough(texture.image);
   const Texture& image = context_.scene.textures[size_t(texture.image)];
   const size_t pixels = size_t(image.width) * image.height;
   if (pixels == 0 || image.channels == 0) return texture.factor;

@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 #include <tuple>
+#include <variant>
 
 #include "scene/loaders/pbrt/pbrt_context.h"
 #include "scene/loaders/pbrt/pbrt_parameters.h"
@@ -38,8 +39,12 @@ class PbrtTextures {
   // An image file as a scene texture (cached by file and encoding); kNoTexture after a warning when unreadable.
   int32_t loadImage(const std::string& path, bool srgb, const std::string& file, size_t line);
   // A one-channel float image of `map` applied to the first channel (as a linear value) of `image`: the form a
-  // material needs where its parameter is not linear in pbrt's texture value (roughness). Cached by `key`.
-  int32_t mappedImage(int32_t image, const std::string& key, const std::function<float(float)>& map);
+  // material needs where its parameter is not linear in pbrt's texture value (roughness). Cached by `key`. As a
+  // mix image, it is charged now (a refusal names `where`, "file:line", and `element`) but made only by
+  // bakeImages, after the image it reads: a roughness of a mix does not bake the mix before the scene is known
+  // to fit.
+  int32_t mappedImage(int32_t image, const std::string& key, const std::function<float(float)>& map,
+                      const std::string& where, const std::string& element);
   // The mean colour of `texture`: its factor times the mean of its image's texels (linear), for a material
   // parameter that takes one colour.
   Vec3 meanColour(const PbrtTexture& texture);
@@ -49,12 +54,12 @@ class PbrtTextures {
   // An image of (1 - amount) first + amount second over pbrt's unit (u, v) square, each input looked up (nearest
   // texel) through its own uv mapping, as fine as the finest input there (at most 4096 texels a side, and
   // within --max-texture-size). Identical mixes share one image. The image is charged to the load's budget now
-  // (a refusal names `where`, "file:line", and the texture's `name`) but baked only by bakeMixes, or when its
+  // (a refusal names `where`, "file:line", and the texture's `name`) but baked only by bakeImages, or when its
   // texels are needed first: a scene whose mixes would not fit is refused before the time of baking any of them.
   int32_t mixedImage(const PbrtTexture& first, const PbrtTexture& second, const PbrtTexture& amount,
                      const std::string& where, const std::string& name);
-  // Bakes every mix image not baked yet; the loader calls it once the scene is read.
-  void bakeMixes() { bakeMixesThrough(INT32_MAX); }
+  // Bakes every mix and mapped image not baked yet; the loader calls it once the scene is read.
+  void bakeImages() { bakeThrough(INT32_MAX); }
 
  private:
   // A Texture directive, kept until something uses it, with the definitions its texture parameters named then.
@@ -69,10 +74,23 @@ class PbrtTextures {
   PbrtTexture make(const Definition& definition);
   // A parameter of a texture being made: a texture among its inputs, a colour or number, or `fallback`.
   PbrtTexture input(const Definition& definition, const std::string& name, Vec3 fallback);
+
+  // Bakes the mix and mapped images charged so far up to scene texture `image`, in order: the images a bake
+  // reads (a mix's inputs, a mapped image's source) come before it.
+  void bakeThrough(int32_t image);
+  struct Mix {
+    PbrtTexture first, second, amount;
+  };
+  struct Mapping {
+    int32_t source;
+    std::function<float(float)> map;
+  };
   // The linear colour of `t` at pbrt's (u, v): its factor, times its image's nearest texel through its uv mapping.
   Vec3 colourAt(const PbrtTexture& t, float u, float v) const;
-  // Bakes the mix images charged so far up to scene texture `image`, in order: a mix's inputs come before it.
-  void bakeMixesThrough(int32_t image);
+  // The colour of `mix` at (u, v), from its inputs (which must be baked).
+  Vec3 colourAt(const Mix& mix, float u, float v) const;
+  void bake(Texture& out, const Mix& mix) const;
+  void bake(Texture& out, const Mapping& mapping) const;
   // A float copy of an image with its colour channels (as linear values) turned into 1 - value, for `invert`.
   int32_t invertedImage(int32_t image);
 
@@ -83,10 +101,7 @@ class PbrtTextures {
   static constexpr size_t kMaxCheckerboardImages = 1024;
   std::map<std::tuple<float, float, float, float, float, float>, int32_t> checkerboards_;
   std::map<std::pair<int32_t, std::string>, int32_t> mapped_;
-  struct Mix {
-    PbrtTexture first, second, amount;
-  };
-  std::map<int32_t, Mix> unbakedMixes_;  // by the index of the image each fills
+  std::map<int32_t, std::variant<Mix, Mapping>> unbaked_;  // by the index of the image each fills
   std::map<std::array<float, 24>, int32_t> mixes_;
 };
 
