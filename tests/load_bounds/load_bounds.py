@@ -180,6 +180,17 @@ def case_roughness_mix_textures(candela, workdir):
             r"texels needs about")
 
 
+def case_mean_mix_textures(candela, workdir):
+    """200 distinct mixes whose mean colour materials take (diffusetransmission's transmittance): read from the
+    mixes' inputs, and the mixes refused when charged, before any is baked."""
+    mix_textures_scene(workdir, "mean-mix.pbrt", 200, 4096, shared_images=False, materials=True,
+                       shape_per_material=True, material='Material "diffusetransmission" "texture transmittance" "%s"')
+    # A budget of about 2 GiB: ten bakes of 192 MiB would fit it, and break the bound on memory, if each mix were
+    # baked for its mean.
+    return ("refused", "mean-mix.pbrt", ["--max-memory", "4G"],
+            r"mean-mix\.pbrt:\d+: mix texture 'm\d+' baked at 4096x4096 texels needs about 192 MiB")
+
+
 def case_shared_mix_textures(candela, workdir):
     """The same mix defined under 200 names, each used by a material: one bake."""
     for count in (1, 200):

@@ -922,6 +922,25 @@ TEST(PbrtLoader, RoughnessOfAMixBeyondTheLoadBudgetIsRefusedNamingTheTexture) {
       << error;
 }
 
+// A material that takes one colour of a mix (diffusetransmission's transmittance, hair, subsurface) reads the
+// mix's mean from its inputs, as the baked image's mean, without baking it then.
+TEST(PbrtLoader, MeanOfAMixTextureIsTheMeanOfItsBake) {
+  TempFolder folder;
+  folder.write("grey.pfm", std::string("Pf\n2 1\n-1.0\n") + std::string("\0\0\0\x3f\0\0\x80\x3f", 8));
+  const std::string path =
+      folder.write("scene.pbrt", std::string(kMirroredCamera) +
+                                     "Texture \"g\" \"spectrum\" \"imagemap\" \"string filename\" \"grey.pfm\"\n"
+                                     "Texture \"m\" \"spectrum\" \"mix\" \"texture tex1\" \"g\" \"rgb tex2\" [0 0 0]\n"
+                                     "Material \"diffusetransmission\" \"texture transmittance\" \"m\"\n" +
+                                     kTriangle);
+  LoadWarnings warnings;
+  Scene scene = loadPbrt(path, warnings);
+  const Material& m = scene.materials[scene.meshes[0].triangleMaterials[0]];
+  // Half of the texels 0.5 and 1, in the mean.
+  EXPECT_NEAR(m.transmittance.x, 0.375f, 1e-6f);
+  EXPECT_NEAR(m.transmittance.z, 0.375f, 1e-6f);
+}
+
 TEST(PbrtLoader, RoughnessTexturesBecomeCandelasRoughness) {
   TempFolder folder;
   folder.write("grey.pfm", std::string("Pf\n2 1\n-1.0\n") + std::string("\0\0\0\x3f\0\0\x80\x3f", 8));

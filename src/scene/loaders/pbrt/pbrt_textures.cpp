@@ -261,8 +261,27 @@ int32_t PbrtTextures::mappedImage(int32_t image, const std::string& key, const s
   return index;
 }
 
+Vec3 PbrtTextures::meanOfMix(const Texture& out, const Mix& mix) {
+  bakeThrough(std::max({mix.first.image, mix.second.image, mix.amount.image}));
+  const uint32_t width = std::min(out.width, kMeanGrid), height = std::min(out.height, kMeanGrid);
+  double sum[3] = {0, 0, 0};
+  for (uint32_t y = 0; y < height; ++y)
+    for (uint32_t x = 0; x < width; ++x) {
+      const float u = (float(x) + 0.5f) / float(width), v = 1.0f - (float(y) + 0.5f) / float(height);
+      const Vec3 c = colourAt(mix, u, v);
+      sum[0] += c.x;
+      sum[1] += c.y;
+      sum[2] += c.z;
+    }
+  const double n = double(width) * height;
+  return {float(sum[0] / n), float(sum[1] / n), float(sum[2] / n)};
+}
+
 Vec3 PbrtTextures::meanColour(const PbrtTexture& texture) {
   if (texture.image == kNoTexture) return texture.factor;
+  if (auto found = unbaked_.find(texture.image); found != unbaked_.end())
+    if (const Mix* mix = std::get_if<Mix>(&found->second))
+      return texture.factor * meanOfMix(context_.scene.textures[size_t(texture.image)], *mix);
   bakeThrough(texture.image);
   const Texture& image = context_.scene.textures[size_t(texture.image)];
   const size_t pixels = size_t(image.width) * image.height;

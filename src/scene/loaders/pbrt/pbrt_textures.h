@@ -46,7 +46,7 @@ class PbrtTextures {
   int32_t mappedImage(int32_t image, const std::string& key, const std::function<float(float)>& map,
                       const std::string& where, const std::string& element);
   // The mean colour of `texture`: its factor times the mean of its image's texels (linear), for a material
-  // parameter that takes one colour.
+  // parameter that takes one colour. A mix not baked yet is not baked for it (meanOfMix).
   Vec3 meanColour(const PbrtTexture& texture);
   // A 64 x 64 image of one period of a 2D checkerboard of two colours (the first where pbrt's tex1 goes), shared
   // by every checkerboard of the same colours; kNoTexture (after a warning) beyond kMaxCheckerboardImages.
@@ -91,6 +91,12 @@ class PbrtTextures {
   Vec3 colourAt(const Mix& mix, float u, float v) const;
   void bake(Texture& out, const Mix& mix) const;
   void bake(Texture& out, const Mapping& mapping) const;
+  // The mean of the mix that fills `out` once baked, from its inputs at the texel centres of a grid as fine as
+  // its image, at most kMeanGrid texels a side: a material that takes one colour (hair, subsurface) does not bake
+  // a mix before the scene is known to fit, and a mean needs no finer grid. Inputs that are mixes themselves are
+  // baked first.
+  Vec3 meanOfMix(const Texture& out, const Mix& mix);
+  static constexpr uint32_t kMeanGrid = 512;
   // A float copy of an image with its colour channels (as linear values) turned into 1 - value, for `invert`.
   int32_t invertedImage(int32_t image);
 
