@@ -367,6 +367,21 @@ TEST(GltfMorphTargets, TooManyDeformedVerticesAreRefusedWithOneLine) {
   EXPECT_NE(loadError(copies).find(limit), std::string::npos) << loadError(copies);
 }
 
+// A morph target's delta that is not finite is refused in one line naming it (a fuzzing input's POSITION deltas
+// shared a bufferView with normals that held not-a-number, which the player then failed to pose).
+TEST(GltfMorphTargets, NonFiniteDeltasAreOneLineNamingTheTarget) {
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  for (const char* attribute : {"POSITION", "NORMAL"}) {
+    GltfFile file = morphedQuad();
+    file.gltf["meshes"][0]["primitives"][0]["targets"][0][attribute] =
+        file.floats({0, 0, 0, 0, 0, 0, 0, nan, 1, 0, inf, 0}, "VEC3");
+    EXPECT_NE(loadError(file).find("meshes[0].primitives[0].targets[0]." + std::string(attribute) +
+                                   ": value 2 is not finite"),
+              std::string::npos)
+        << loadError(file);
+  }
+}
+
 TEST(GltfMorphTargets, TheSceneCacheKeepsDeformations) {
   TempFolder folder;
   const test::GltfCacheRoundTrip cache(folder, skinnedQuad().write(folder));

@@ -78,6 +78,10 @@ void readGltfMorphTargets(const tinygltf::Model& model, const GltfAccessorReader
         if (values.size() != count)
           failLoad(file, where + ": " + std::to_string(values.size()) + " elements for " + std::to_string(count) +
                              " positions");
+        // A delta that is not finite would move its vertex to not-a-number at any weight but zero, which the
+        // player cannot pose; it is refused as non-finite animation values are (gltf_animation.cpp).
+        for (size_t k = 0; k < values.size(); ++k)
+          if (!isFinite(values[k])) failLoad(file, where + ": value " + std::to_string(k) + " is not finite");
         return values;
       });
     };
