@@ -136,17 +136,21 @@ CANDELA_FN Vec4 bilinearLookup(const TexelArrays& arrays, const TextureView& t, 
           mix(c00.w, c10.w, c01.w, c11.w)};
 }
 
-// Bilinear lookup in the finest level.
+// Bilinear lookup in the finest level. On the device, through the texture's texture object: the GPU backend makes
+// one for every texture with texels (backends/optix/device_textures.h), so a texture without one has none, and the
+// host's lookup stays out of the device programs. Inlined at every lookup of every program, its texel formats and
+// wrap modes were the larger part of the path tracer's compiled code, and of the compile that a machine's first
+// start waits for (docs/performance.md, 'The first start').
 CANDELA_FN Vec4 sampleTexture(const TexelArrays& arrays, int32_t index, Vec2 uv) {
   const TextureView& t = arrays.textures[index];
 #if defined(__CUDA_ARCH__)
-  if (t.deviceTexture != 0) {
-    float4 v = tex2DLod<float4>(cudaTextureObject_t(t.deviceTexture), uv.x, uv.y, 0.0f);
-    return {v.x, v.y, v.z, v.w};
-  }
-#endif
+  if (t.deviceTexture == 0) return {1, 1, 1, 1};
+  float4 v = tex2DLod<float4>(cudaTextureObject_t(t.deviceTexture), uv.x, uv.y, 0.0f);
+  return {v.x, v.y, v.z, v.w};
+#else
   if (t.width == 0 || t.height == 0) return {1, 1, 1, 1};
   return bilinearLookup(arrays, t, textureLevel(t, 0), uv);
+#endif
 }
 
 }  // namespace candela
