@@ -17,3 +17,12 @@
 #else
 #define CANDELA_FN_ALWAYS_INLINE inline __attribute__((always_inline))
 #endif
+
+// Called rather than inlined on the device (inlined on the host, as CANDELA_FN): for a function that one GPU program
+// calls from many places. Inlined, each place held a copy of it, which multiplied the program's code and the compile
+// that a machine's first start waits for (docs/performance.md, 'The first start').
+#if defined(__CUDA_ARCH__)
+#define CANDELA_FN_CALLED CANDELA_HD inline __noinline__
+#else
+#define CANDELA_FN_CALLED CANDELA_FN
+#endif

@@ -93,8 +93,9 @@ struct RestirVertex {
       : bsdf(rebuild(scene, settings, surface)) {}
 
   // The unshadowed contribution f * Le * |cos| of `light` (not yet in the sample space's measure: times
-  // light.jacobian for that); black where the BSDF cannot send light that way, as in next-event estimation.
-  CANDELA_FN BsdfEval contribution(const RestirLightAt& light, Vec3& value) const {
+  // light.jacobian for that); black where the BSDF cannot send light that way, as in next-event estimation. Called,
+  // not inlined, on the device: every candidate and every MIS term of the reuse evaluates it.
+  CANDELA_FN_CALLED BsdfEval contribution(const RestirLightAt& light, Vec3& value) const {
     value = {};
     BsdfEval e;
     if (!usable || !light.valid) return e;
@@ -124,7 +125,9 @@ struct RestirVertex {
   }
 
  private:
-  CANDELA_FN Bsdf rebuild(const SceneView& scene, const RenderSettings& settings, const PrimarySurface& surface) {
+  // Called, not inlined, on the device: the pixel's own vertex and every reused neighbour's are rebuilt.
+  CANDELA_FN_CALLED Bsdf rebuild(const SceneView& scene, const RenderSettings& settings,
+                                 const PrimarySurface& surface) {
     SurfaceInteraction si;
     Material material;
     if (surface.found) {
