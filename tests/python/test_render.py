@@ -133,6 +133,34 @@ class RenderTest(unittest.TestCase):
         self.assertGreater(elapsed, 0.3, "the render was too quick to tell")
         self.assertLess(longest, elapsed / 4)
 
+    def test_renders_from_several_threads_at_once_give_each_its_own_image(self):
+        # Four threads render at the same time, two scenes and two seeds, one scene object shared by two of them:
+        # each gets exactly the image it gets alone.
+        shared = candela.load("cornell-box")
+        jobs = [(shared, 0), (shared, 5), ("cornell-spheres", 0), ("cornell-spheres", 5)]
+        alone = [candela.render(scene, **dict(TINY, seed=seed, threads=1)) for scene, seed in jobs]
+        together = [None] * len(jobs)
+        errors = []
+        start = threading.Barrier(len(jobs))
+
+        def work(i):
+            scene, seed = jobs[i]
+            try:
+                start.wait()
+                together[i] = candela.render(scene, **dict(TINY, seed=seed, threads=1))
+            except Exception as e:  # reported below: an assertion in a thread would pass unseen
+                errors.append(e)
+
+        workers = [threading.Thread(target=work, args=(i,)) for i in range(len(jobs))]
+        for w in workers:
+            w.start()
+        for w in workers:
+            w.join()
+        self.assertEqual(errors, [])
+        for i in range(len(jobs)):
+            np.testing.assert_array_equal(together[i], alone[i])
+        self.assertFalse(np.array_equal(alone[0], alone[1]))
+
     def test_ctrl_c_ends_the_render_with_keyboard_interrupt(self):
         interrupt = threading.Timer(0.3, os.kill, (os.getpid(), signal.SIGINT))
         start = time.monotonic()
