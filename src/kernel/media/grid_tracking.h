@@ -37,9 +37,10 @@ class TrackingRandom {
 CANDELA_FN float meanComponent(Vec3 v) { return (v.x + v.y + v.z) * (1.0f / 3.0f); }
 
 // Samples where a ray (world space) in grid medium m, whose segment ends at tMax (infinite where it escapes),
-// first collides for real; the result reads as distance_sampling.h's.
-CANDELA_FN MediumStep sampleGridMediumDistance(const Medium& m, const MediumGrid& grid, const float* values,
-                                               const Ray& ray, float tMax, float uSeed, float uDistance) {
+// first collides for real; the result reads as distance_sampling.h's. Called, not inlined, on the device, as is
+// gridMediumTransmittance: the media path tracks at every segment of the path and of its shadow rays.
+CANDELA_FN_CALLED MediumStep sampleGridMediumDistance(const Medium& m, const MediumGrid& grid, const float* values,
+                                                      const Ray& ray, float tMax, float uSeed, float uDistance) {
   MediumStep step;
   step.t = tMax;
   step.weight = {1, 1, 1};
@@ -85,8 +86,8 @@ CANDELA_FN MediumStep sampleGridMediumDistance(const Medium& m, const MediumGrid
 
 // The transmittance of grid medium m along a ray (world space) from 0 to tMax, by ratio tracking: an unbiased
 // estimate per channel.
-CANDELA_FN Vec3 gridMediumTransmittance(const Medium& m, const MediumGrid& grid, const float* values, const Ray& ray,
-                                        float tMax) {
+CANDELA_FN_CALLED Vec3 gridMediumTransmittance(const Medium& m, const MediumGrid& grid, const float* values,
+                                               const Ray& ray, float tMax) {
   MajorantWalk walk(grid, values, ray, tMax);
   auto bits = [](float f) { return uint32_t(floatAsInt(f)); };
   const Uint4 h = pcg4d({bits(ray.origin.x), bits(ray.origin.y), bits(ray.origin.z), bits(ray.direction.x)});

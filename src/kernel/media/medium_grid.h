@@ -110,8 +110,9 @@ CANDELA_FN Vec3 gridUnitPoint(const MediumGrid& grid, Vec3 mediumPoint) {
 }
 
 // The coefficients of grid medium m at world point p: vacuum outside its box, as pbrt's media are (their lookups
-// near the faces would otherwise reach half a voxel beyond them).
-CANDELA_FN MediumPoint gridMediumAt(const Medium& m, const MediumGrid& grid, const float* values, Vec3 p) {
+// near the faces would otherwise reach half a voxel beyond them). Called, not inlined, on the device: every tracking
+// step and scattering vertex in a grid asks for it.
+CANDELA_FN_CALLED MediumPoint gridMediumAt(const Medium& m, const MediumGrid& grid, const float* values, Vec3 p) {
   const Vec3 local = grid.mediumFromWorld.point(p);
   MediumPoint out;
   if (!(local.x >= grid.p0.x && local.y >= grid.p0.y && local.z >= grid.p0.z && local.x <= grid.p1.x &&
