@@ -29,8 +29,12 @@ def main():
     parser.add_argument("--seconds", type=float, default=90.0, help="the longest wait for the handover")
     parser.add_argument("--width", type=int, default=1920)
     parser.add_argument("--height", type=int, default=1080)
-    parser.add_argument("serve_args", nargs="*")
-    args = parser.parse_args()
+    # serve's arguments are those after "--", split off by hand: argparse would take the positional `candela` and an
+    # empty list of them together at the first positional, and then refuse the rest after the options.
+    argv = sys.argv[1:]
+    split = argv.index("--") if "--" in argv else len(argv)
+    args = parser.parse_args(argv[:split])
+    args.serve_args = argv[split + 1:]
 
     start = time.monotonic()
     serve = subprocess.Popen([args.candela, "serve", "--port", "0", *args.serve_args], stdout=subprocess.PIPE,
