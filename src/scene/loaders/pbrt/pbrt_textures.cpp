@@ -17,6 +17,15 @@ namespace {
 
 Vec3 meanOf(const PbrtTexture& t) { return t.factor * (t.image == kNoTexture ? 1.0f : 0.5f); }
 
+// Calls f(x, y, (u, v)) at the centre of each texel of a width x height image over pbrt's unit (u, v) square, row by
+// row from the top (v runs up, the rows down): where a mix's bake and its mean both look at its inputs.
+template <class F>
+void forEachTexelCentre(uint32_t width, uint32_t height, F&& f) {
+  for (uint32_t y = 0; y < height; ++y)
+    for (uint32_t x = 0; x < width; ++x)
+      f(x, y, Vec2{(float(x) + 0.5f) / float(width), 1.0f - (float(y) + 0.5f) / float(height)});
+}
+
 // The texel of `image` nearest to (s, t) in pbrt's texture space (t runs up, the image's rows down), as linear
 // colour, wrapped as the image says.
 Vec3 texelAt(const Texture& image, float s, float t) {
@@ -102,15 +111,13 @@ void PbrtTextures::bake(Texture& out, const Mix& mix) const {
   noteLoadProgress(context_.mainFile,
                    "baking a mix texture of " + std::to_string(width) + "x" + std::to_string(height) + " texels");
   std::vector<float> texels(size_t(width) * height * 3);
-  for (uint32_t y = 0; y < height; ++y)
-    for (uint32_t x = 0; x < width; ++x) {
-      const float u = (float(x) + 0.5f) / float(width), v = 1.0f - (float(y) + 0.5f) / float(height);
-      const Vec3 c = colourAt(mix, u, v);
-      float* texel = texels.data() + (size_t(y) * width + x) * 3;
-      texel[0] = c.x;
-      texel[1] = c.y;
-      texel[2] = c.z;
-    }
+  forEachTexelCentre(width, height, [&](uint32_t x, uint32_t y, Vec2 uv) {
+    const Vec3 c = colourAt(mix, uv.x, uv.y);
+    float* texel = texels.data() + (size_t(y) * width + x) * 3;
+    texel[0] = c.x;
+    texel[1] = c.y;
+    texel[2] = c.z;
+  });
   out.floats = std::move(texels);
 }
 
@@ -265,14 +272,12 @@ Vec3 PbrtTextures::meanOfMix(const Texture& out, const Mix& mix) {
   bakeThrough(std::max({mix.first.image, mix.second.image, mix.amount.image}));
   const uint32_t width = std::min(out.width, kMeanGrid), height = std::min(out.height, kMeanGrid);
   double sum[3] = {0, 0, 0};
-  for (uint32_t y = 0; y < height; ++y)
-    for (uint32_t x = 0; x < width; ++x) {
-      const float u = (float(x) + 0.5f) / float(width), v = 1.0f - (float(y) + 0.5f) / float(height);
-      const Vec3 c = colourAt(mix, u, v);
-      sum[0] += c.x;
-      sum[1] += c.y;
-      sum[2] += c.z;
-    }
+  forEachTexelCentre(width, height, [&](uint32_t, uint32_t, Vec2 uv) {
+    const Vec3 c = colourAt(mix, uv.x, uv.y);
+    sum[0] += c.x;
+    sum[1] += c.y;
+    sum[2] += c.z;
+  });
   const double n = double(width) * height;
   return {float(sum[0] / n), float(sum[1] / n), float(sum[2] / n)};
 }
